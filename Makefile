@@ -1,0 +1,42 @@
+# Thin wrapper over CMake presets. The README's two commands:
+#   make run   install deps if missing, build, run the main job
+#   make test  install deps if missing, build, run every test
+JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+SCENE ?= assets/scenes/default.json
+OUT ?= out/default
+
+.PHONY: all deps configure build run test sanitize clean assets
+
+all: build
+
+deps:
+	@./scripts/install-deps.sh
+
+configure: deps
+	@cmake --preset default >/dev/null
+
+build: configure
+	@cmake --build --preset default -j $(JOBS)
+
+# With a display: the desktop app. Headless: compare both renderers on the default scene.
+run: build
+	@if [ -n "$$DISPLAY" ] && [ -x build/app/twinraster-gui ]; then \
+	  ./build/app/twinraster-gui $(SCENE); \
+	else \
+	  ./build/app/twinraster compare $(SCENE) --out-dir $(OUT); \
+	fi
+
+test: build
+	@ctest --preset default
+
+sanitize: deps
+	@cmake --preset sanitize >/dev/null
+	@cmake --build --preset sanitize -j $(JOBS)
+	@ctest --preset sanitize
+
+# Regenerates assets/textures/*.png (deterministic; the committed files must match).
+assets: build
+	@./build/app/twinraster-assets --out assets/textures
+
+clean:
+	@rm -rf build build-sanitize out

@@ -1,0 +1,45 @@
+// The one interface the app sees: the CPU and the GL renderer both implement it.
+#pragma once
+
+#include "scene/scene.h"
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace twr {
+
+// Triangle id written where no triangle covers a pixel.
+inline constexpr std::uint32_t kNoTriangle = std::numeric_limits<std::uint32_t>::max();
+
+struct RenderStats {
+  std::uint64_t trianglesIn = 0;        // submitted to the clipper
+  std::uint64_t trianglesClipped = 0;   // touched by at least one clip plane
+  std::uint64_t trianglesCulled = 0;    // removed by face culling or zero area after snapping
+  std::uint64_t trianglesProduced = 0;  // reaching the rasterizer (after fan triangulation)
+  std::uint64_t pixelsShaded = 0;       // fragments that passed the depth test and were shaded
+  double milliseconds = 0.0;            // wall time of render(), excluding readback to files
+};
+
+// All buffers are top row first (row 0 is the top of the image), width * height entries.
+struct RenderOutput {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgba;          // RGBA8; alpha 255 where geometry was drawn, 0 elsewhere
+  std::vector<float> depth;                // window depth in [0, 1], 1 where nothing was drawn
+  std::vector<std::uint32_t> triangleId;   // global triangle id (DrawItem::firstTriangleId + i)
+  std::vector<std::uint8_t> lineMask;      // 1 where a TBN debug line was drawn (compare skips)
+  RenderStats stats;
+};
+
+class Renderer {
+ public:
+  virtual ~Renderer() = default;
+  virtual std::string name() const = 0;  // "cpu" or "gl"
+  // Renders `scene` with `settings` (usually scene.settings) at width x height.
+  // Throws InputError for inputs it cannot draw.
+  virtual RenderOutput render(const Scene& scene, const RenderSettings& settings, int width, int height) = 0;
+};
+
+}  // namespace twr

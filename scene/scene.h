@@ -1,0 +1,90 @@
+// The scene graph both renderers draw: nodes with TRS transforms, meshes, materials,
+// point lights, one camera, render settings.
+#pragma once
+
+#include "scene/camera.h"
+#include "scene/conventions.h"
+#include "scene/mesh.h"
+#include "scene/settings.h"
+#include "scene/texture.h"
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace twr {
+
+struct Material {
+  std::string name;
+  vec3 ka{1.0f};  // ambient reflectance (scaled by the diffuse map, see docs/shading.md)
+  vec3 kd{1.0f};  // diffuse reflectance (scaled by the diffuse map)
+  vec3 ks{0.0f};  // specular reflectance (scaled by the specular map)
+  float shininess = 32.0f;  // Phong exponent, >= 0
+  // Optional maps; null when the material does not use the feature, so both renderers
+  // compile that path out.
+  std::shared_ptr<const Texture> diffuseMap;
+  std::shared_ptr<const Texture> normalMap;
+  std::shared_ptr<const Texture> specularMap;
+};
+
+struct PointLight {
+  vec3 posWorld{2.0f, 3.0f, 4.0f};
+  vec3 diffuse{1.0f};   // Id
+  vec3 specular{1.0f};  // Is
+  // If = 1 / (A_C + A_L d + A_Q d^2), d in world units.
+  vec3 attenuation{1.0f, 0.09f, 0.032f};
+};
+
+struct OutputDesc {
+  int width = 640;   // pixels
+  int height = 480;  // pixels
+  vec3 background{0.05f, 0.05f, 0.08f};  // linear RGB in [0, 1], written with alpha 0
+};
+
+struct Node {
+  std::string name;
+  vec3 translate{0.0f};
+  vec3 rotateDeg{0.0f};  // applied X, then Y, then Z (right-handed), degrees
+  vec3 scale{1.0f};
+  int meshIndex = -1;      // into Scene::meshes, -1 for none
+  int materialIndex = -1;  // into Scene::materials, -1 for the default material
+  std::vector<Node> children;
+};
+
+struct Scene {
+  std::string sourcePath;  // the scene file, empty when built in code
+  OutputDesc output;
+  Camera camera;
+  vec3 ambient{0.1f};  // Ia
+  std::vector<PointLight> lights;
+  std::vector<Material> materials;
+  std::vector<MeshDesc> meshDescs;  // parallel to meshes
+  std::vector<Mesh> meshes;
+  std::vector<Node> nodes;  // roots
+  RenderSettings settings;
+};
+
+// parentFromNode = T * Rz * Ry * Rx * S (so X rotates first, then Y, then Z).
+mat4 localFromNodeTrs(const vec3& translate, const vec3& rotateDeg, const vec3& scale);
+
+// One mesh instance ready to draw: the flattened scene graph.
+struct DrawItem {
+  const Mesh* mesh = nullptr;
+  const Material* material = nullptr;  // never null (default material when unset)
+  mat4 worldFromModel{1.0f};
+  std::string nodeName;
+  std::uint32_t firstTriangleId = 0;  // triangle ids are global across the draw list, from 0
+};
+
+// Depth-first, parents before children, in file order. worldFromModel = parent * child.
+std::vector<DrawItem> flattenScene(const Scene& scene);
+
+// The material used when a node names none: white diffuse, no maps.
+const Material& defaultMaterial();
+
+std::size_t countTriangles(const Scene& scene);
+std::size_t countVertices(const Scene& scene);
+
+}  // namespace twr

@@ -1,0 +1,76 @@
+#include "scene/settings.h"
+
+#include <array>
+#include <utility>
+
+namespace twr {
+
+namespace {
+
+template <typename E, std::size_t N>
+using NameTable = std::array<std::pair<E, std::string_view>, N>;
+
+constexpr NameTable<CullMode, 3> kCull{{{CullMode::None, "none"}, {CullMode::Back, "back"}, {CullMode::Front, "front"}}};
+constexpr NameTable<FrontFace, 2> kFront{{{FrontFace::Ccw, "ccw"}, {FrontFace::Cw, "cw"}}};
+constexpr NameTable<View, 10> kView{{{View::Shaded, "shaded"},
+                                     {View::Albedo, "albedo"},
+                                     {View::Normal, "normal"},
+                                     {View::Tangent, "tangent"},
+                                     {View::Bitangent, "bitangent"},
+                                     {View::MappedNormal, "mapped_normal"},
+                                     {View::Uv, "uv"},
+                                     {View::Depth, "depth"},
+                                     {View::LightTangent, "light_tangent"},
+                                     {View::EyeTangent, "eye_tangent"}}};
+constexpr NameTable<LightingSpace, 2> kSpace{{{LightingSpace::World, "world"}, {LightingSpace::Tangent, "tangent"}}};
+constexpr NameTable<TangentTransform, 2> kTangent{
+    {{TangentTransform::Model, "model"}, {TangentTransform::InverseTranspose, "inverse_transpose"}}};
+constexpr NameTable<TextureFilter, 2> kFilter{{{TextureFilter::Nearest, "nearest"}, {TextureFilter::Bilinear, "bilinear"}}};
+constexpr NameTable<LineMode, 2> kLine{{{LineMode::Core, "core"}, {LineMode::Immediate, "immediate"}}};
+
+template <typename E, std::size_t N>
+std::string_view nameOf(const NameTable<E, N>& table, E value) {
+  for (const auto& [v, name] : table)
+    if (v == value) return name;
+  return "?";
+}
+
+template <typename E, std::size_t N>
+bool valueOf(const NameTable<E, N>& table, std::string_view s, E& out) {
+  for (const auto& [v, name] : table) {
+    if (name == s) {
+      out = v;
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+std::string_view toString(CullMode v) { return nameOf(kCull, v); }
+std::string_view toString(FrontFace v) { return nameOf(kFront, v); }
+std::string_view toString(View v) { return nameOf(kView, v); }
+std::string_view toString(LightingSpace v) { return nameOf(kSpace, v); }
+std::string_view toString(TangentTransform v) { return nameOf(kTangent, v); }
+std::string_view toString(TextureFilter v) { return nameOf(kFilter, v); }
+std::string_view toString(LineMode v) { return nameOf(kLine, v); }
+
+bool parse(std::string_view s, CullMode& out) { return valueOf(kCull, s, out); }
+bool parse(std::string_view s, FrontFace& out) { return valueOf(kFront, s, out); }
+bool parse(std::string_view s, View& out) { return valueOf(kView, s, out); }
+bool parse(std::string_view s, LightingSpace& out) { return valueOf(kSpace, s, out); }
+bool parse(std::string_view s, TangentTransform& out) { return valueOf(kTangent, s, out); }
+bool parse(std::string_view s, TextureFilter& out) { return valueOf(kFilter, s, out); }
+bool parse(std::string_view s, LineMode& out) { return valueOf(kLine, s, out); }
+
+std::string allViewNames() {
+  std::string names;
+  for (const auto& [v, name] : kView) {
+    if (!names.empty()) names += '|';
+    names += name;
+  }
+  return names;
+}
+
+}  // namespace twr
