@@ -1,0 +1,54 @@
+#include "app/cli/common.h"
+
+#include "scene/errors.h"
+#include "scene/image.h"
+#include "scene/scene_file.h"
+
+namespace twr::cli {
+
+namespace {
+
+template <typename E>
+void applyOverride(const std::string& text, const char* option, E& target, const std::string& allowed) {
+  if (text.empty()) return;
+  if (!parse(text, target)) {
+    throw InputError(std::string(option) + ": expected one of " + allowed + ", got '" + text + "'");
+  }
+}
+
+}  // namespace
+
+void addRenderOptions(CLI::App& cmd, RenderRequest& request) {
+  cmd.add_option("scene", request.scenePath, "Scene file (JSON, see docs/scene-format.md)")->required();
+  cmd.add_option("--width", request.width, "Image width in pixels (default: the scene's output.width)")
+      ->check(CLI::Range(1, kMaxImageSide));
+  cmd.add_option("--height", request.height, "Image height in pixels (default: the scene's output.height)")
+      ->check(CLI::Range(1, kMaxImageSide));
+  cmd.add_option("--view", request.view, "Debug colour view: " + allViewNames() + " (default: the scene's)");
+  cmd.add_option("--cull", request.cull, "Override settings.cull: none|back|front");
+  cmd.add_option("--lighting-space", request.lightingSpace, "Override settings.lighting_space: world|tangent");
+  cmd.add_option("--tangent-transform", request.tangentTransform,
+                 "Override settings.tangent_transform: model|inverse_transpose");
+  cmd.add_option("--filter", request.textureFilter, "Override settings.texture_filter: nearest|bilinear");
+  cmd.add_flag("--verbose,-v", request.verbose, "Print GL_VERSION, GL_RENDERER and timings on stderr");
+}
+
+Scene loadRequestedScene(const RenderRequest& request) {
+  Scene scene = loadSceneFile(request.scenePath);
+  RenderSettings& s = scene.settings;
+  applyOverride(request.view, "--view", s.view, allViewNames());
+  applyOverride(request.cull, "--cull", s.cull, "none|back|front");
+  applyOverride(request.lightingSpace, "--lighting-space", s.lightingSpace, "world|tangent");
+  applyOverride(request.tangentTransform, "--tangent-transform", s.tangentTransform, "model|inverse_transpose");
+  applyOverride(request.textureFilter, "--filter", s.textureFilter, "nearest|bilinear");
+  return scene;
+}
+
+int requestedWidth(const RenderRequest& request, const Scene& scene) {
+  return request.width.value_or(scene.output.width);
+}
+int requestedHeight(const RenderRequest& request, const Scene& scene) {
+  return request.height.value_or(scene.output.height);
+}
+
+}  // namespace twr::cli
