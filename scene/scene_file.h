@@ -5,6 +5,7 @@
 #include "scene/scene.h"
 
 #include <string>
+#include <string_view>
 
 namespace twr {
 
@@ -13,5 +14,8 @@ Scene loadSceneFile(const std::string& path);
 // Parses from a string; `nameForMessages` stands in for the file name, `baseDir` for
 // resolving relative paths.
 Scene parseScene(const std::string& json, const std::string& nameForMessages, const std::string& baseDir);
+
+// Mesh type names as written in scene files ("cube", "sphere", ..., "triangles").
+std::string_view toString(MeshType type);
 
 }  // namespace twr

@@ -1,0 +1,739 @@
+// JSON scene files; docs/scene-format.md is the contract. Every value is checked where it
+// is read, so each message names the file, the JSON path of the value and what was expected.
+#include "scene/scene_file.h"
+
+#include "scene/errors.h"
+#include "scene/obj_loader.h"
+#include "scene/primitives.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string_view>
+#include <utility>
+
+namespace twr {
+
+namespace {
+
+// Keeps keys in file order, so materials get indices in the order they are written.
+using Json = nlohmann::ordered_json;
+
+// Deepest node nesting accepted (inclusive); root nodes are at depth 1.
+constexpr int kMaxNodeDepth = 64;
+// Longest rendering of an offending value quoted in a message, in characters.
+constexpr std::size_t kMaxQuotedChars = 60;
+// Smallest segment counts (inclusive) that still give a closed, non-degenerate primitive.
+constexpr int kMinSphereStacks = 2;
+constexpr int kMinRoundSegments = 3;  // sphere slices, cylinder slices, torus rings and sides
+
+constexpr std::array<std::pair<MeshType, std::string_view>, 7> kMeshTypeNames{{
+    {MeshType::Cube, "cube"},
+    {MeshType::Sphere, "sphere"},
+    {MeshType::Plane, "plane"},
+    {MeshType::Cylinder, "cylinder"},
+    {MeshType::Torus, "torus"},
+    {MeshType::Obj, "obj"},
+    {MeshType::Triangles, "triangles"},
+}};
+
+// "a.b" for identifier-like keys, a["odd key"] otherwise, so paths stay unambiguous.
+std::string childPath(const std::string& path, const std::string& key) {
+  const bool plain = !key.empty() && std::all_of(key.begin(), key.end(), [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
+  });
+  if (!plain) return path + "[" + Json(key).dump() + "]";
+  return path.empty() ? key : path + "." + key;
+}
+
+std::string indexPath(const std::string& path, std::size_t index) {
+  return path + "[" + std::to_string(index) + "]";
+}
+
+// Containers are summarised, never dumped whole: dump() recurses, and a file of 100000 nested
+// '[' must give a message, not a stack overflow.
+std::string quote(const Json& value) {
+  std::string text;
+  if (value.is_object()) {
+    text = "an object {...} with " + std::to_string(value.size()) + " keys";
+  } else if (value.is_array() && std::any_of(value.begin(), value.end(), [](const Json& e) { return e.is_structured(); })) {
+    text = "an array of " + std::to_string(value.size()) + " arrays or objects";
+  } else {
+    text = value.dump(-1, ' ', false, Json::error_handler_t::replace);
+  }
+  if (text.size() > kMaxQuotedChars) text = text.substr(0, kMaxQuotedChars) + "...";
+  return text;
+}
+
+// "none|back|front": every name toString() knows, in enum order (enums count from 0).
+template <typename E>
+std::string enumNames() {
+  std::string names;
+  for (int i = 0;; ++i) {
+    const std::string_view name = toString(static_cast<E>(i));
+    if (name == "?") break;
+    if (!names.empty()) names += '|';
+    names += name;
+  }
+  return names;
+}
+
+std::string joinNames(std::initializer_list<std::string_view> names) {
+  std::string joined;
+  for (std::string_view name : names) {
+    if (!joined.empty()) joined += ", ";
+    joined += name;
+  }
+  return joined;
+}
+
+// Constraints a number may carry; each has a description for the message.
+enum class NumberRule { Finite, Positive, NonNegative, UnitInterval, NonZero };
+
+std::string describe(NumberRule rule) {
+  switch (rule) {
+    case NumberRule::Finite: return "a finite number";
+    case NumberRule::Positive: return "a number > 0";
+    case NumberRule::NonNegative: return "a number >= 0";
+    case NumberRule::UnitInterval: return "a number in [0, 1]";
+    case NumberRule::NonZero: return "a non-zero number";
+  }
+  return "a number";
+}
+
+bool satisfies(float v, NumberRule rule) {
+  switch (rule) {
+    case NumberRule::Finite: return true;
+    case NumberRule::Positive: return v > 0.0f;
+    case NumberRule::NonNegative: return v >= 0.0f;
+    case NumberRule::UnitInterval: return v >= 0.0f && v <= 1.0f;
+    case NumberRule::NonZero: return v != 0.0f;
+  }
+  return false;
+}
+
+// nlohmann keeps the last of two equal keys silently; a scene with "radius" twice is almost
+// certainly a mistake, so the parse callback tracks the JSON path and refuses duplicates.
+class DuplicateKeyCheck {
+ public:
+  explicit DuplicateKeyCheck(std::string fileName) : fileName_(std::move(fileName)) {}
+
+  bool operator()(int /*depth*/, Json::parse_event_t event, Json& parsed) {
+    switch (event) {
+      case Json::parse_event_t::object_start: frames_.push_back({false, 0, {}, {}}); break;
+      case Json::parse_event_t::array_start: frames_.push_back({true, 0, {}, {}}); break;
+      case Json::parse_event_t::key: {
+        Frame& top = frames_.back();
+        std::string key = parsed.get<std::string>();
+        if (!top.keys.insert(key).second) {
+          throw InputError(fileName_ + ": " + pathTo(key) + ": duplicate key; each key may appear once");
+        }
+        top.key = std::move(key);
+        break;
+      }
+      case Json::parse_event_t::object_end:
+      case Json::parse_event_t::array_end:
+        frames_.pop_back();
+        elementDone();
+        break;
+      case Json::parse_event_t::value: elementDone(); break;
+    }
+    return true;
+  }
+
+ private:
+  struct Frame {
+    bool isArray;
+    std::size_t index;          // arrays: index of the element being read
+    std::string key;            // objects: key of the value being read
+    std::set<std::string> keys;  // objects: keys seen so far
+  };
+
+  void elementDone() {
+    if (!frames_.empty() && frames_.back().isArray) ++frames_.back().index;
+  }
+
+  std::string pathTo(const std::string& key) const {
+    std::string path;
+    for (std::size_t i = 0; i + 1 < frames_.size(); ++i) {
+      path = frames_[i].isArray ? indexPath(path, frames_[i].index) : childPath(path, frames_[i].key);
+    }
+    return childPath(path, key);
+  }
+
+  std::string fileName_;
+  std::vector<Frame> frames_;
+};
+
+class SceneReader {
+ public:
+  SceneReader(std::string fileName, std::string baseDir) : fileName_(std::move(fileName)), baseDir_(std::move(baseDir)) {}
+
+  Scene read(const Json& root) {
+    requireObject(root, "");
+    checkKeys(root, "", {"output", "camera", "ambient", "lights", "materials", "nodes", "settings"}, "the top level");
+    if (const Json* j = find(root, "output")) readOutput(*j, "output");
+    if (const Json* j = find(root, "camera")) readCamera(*j, "camera");
+    if (const Json* j = find(root, "ambient")) scene_.ambient = readColour(*j, "ambient", NumberRule::NonNegative);
+    if (const Json* j = find(root, "lights")) readLights(*j, "lights");
+    if (const Json* j = find(root, "materials")) readMaterials(*j, "materials");
+    if (const Json* j = find(root, "settings")) readSettings(*j, "settings");
+    const Json* nodes = find(root, "nodes");
+    if (!nodes) fail("nodes", "missing; expected an array of nodes (it may be empty)");
+    requireArray(*nodes, "nodes");
+    for (std::size_t i = 0; i < nodes->size(); ++i) {
+      scene_.nodes.push_back(readNode((*nodes)[i], indexPath("nodes", i), 1));
+    }
+    return std::move(scene_);
+  }
+
+ private:
+  // ---- messages and generic checks ----
+
+  [[noreturn]] void fail(const std::string& path, const std::string& what) const {
+    throw InputError(fileName_ + ": " + (path.empty() ? "" : path + ": ") + what);
+  }
+
+  static const Json* find(const Json& object, const char* key) {
+    const auto it = object.find(key);
+    return it == object.end() ? nullptr : &*it;
+  }
+
+  void requireObject(const Json& j, const std::string& path) const {
+    if (!j.is_object()) fail(path, "expected an object {...}, got " + quote(j));
+  }
+
+  void requireArray(const Json& j, const std::string& path) const {
+    if (!j.is_array()) fail(path, "expected an array [...], got " + quote(j));
+  }
+
+  void checkKeys(const Json& object, const std::string& path, std::initializer_list<std::string_view> allowed,
+                 const std::string& where) const {
+    for (auto it = object.begin(); it != object.end(); ++it) {
+      if (std::find(allowed.begin(), allowed.end(), it.key()) == allowed.end()) {
+        fail(childPath(path, it.key()), "unknown key in " + where + "; expected one of: " + joinNames(allowed));
+      }
+    }
+  }
+
+  float readNumber(const Json& j, const std::string& path, NumberRule rule) const {
+    if (!j.is_number()) fail(path, "expected " + describe(rule) + ", got " + quote(j));
+    const float v = static_cast<float>(j.get<double>());
+    // JSON has no NaN or Inf, but 1e999 parses to Inf and 1e300 overflows a float.
+    if (!std::isfinite(v)) fail(path, "expected " + describe(rule) + ", got a number outside the float range");
+    if (!satisfies(v, rule)) fail(path, "expected " + describe(rule) + ", got " + quote(j));
+    return v;
+  }
+
+  int readInt(const Json& j, const std::string& path, int minInclusive, int maxInclusive) const {
+    const std::string expected =
+        "expected an integer in [" + std::to_string(minInclusive) + ", " + std::to_string(maxInclusive) + "]";
+    if (!j.is_number_integer()) fail(path, expected + ", got " + quote(j));
+    if (j.is_number_unsigned()) {
+      const auto v = j.get<std::uint64_t>();
+      if (v > static_cast<std::uint64_t>(maxInclusive) || static_cast<std::int64_t>(v) < minInclusive) {
+        fail(path, expected + ", got " + quote(j));
+      }
+      return static_cast<int>(v);
+    }
+    const auto v = j.get<std::int64_t>();
+    if (v < minInclusive || v > maxInclusive) fail(path, expected + ", got " + quote(j));
+    return static_cast<int>(v);
+  }
+
+  bool readBool(const Json& j, const std::string& path) const {
+    if (!j.is_boolean()) fail(path, "expected true or false, got " + quote(j));
+    return j.get<bool>();
+  }
+
+  std::string readString(const Json& j, const std::string& path, const std::string& what) const {
+    if (!j.is_string() || j.get_ref<const std::string&>().empty()) {
+      fail(path, "expected " + what + " (a non-empty string), got " + quote(j));
+    }
+    return j.get<std::string>();
+  }
+
+  template <typename E>
+  E readEnum(const Json& j, const std::string& path) const {
+    E value{};
+    if (!j.is_string() || !parse(j.get_ref<const std::string&>(), value)) {
+      fail(path, "expected one of " + enumNames<E>() + ", got " + quote(j));
+    }
+    return value;
+  }
+
+  template <int N>
+  glm::vec<N, float> readVector(const Json& j, const std::string& path, NumberRule rule) const {
+    if (!j.is_array() || j.size() != static_cast<std::size_t>(N)) {
+      fail(path, "expected an array of " + std::to_string(N) + " numbers (each " + describe(rule) + "), got " +
+                     quote(j));
+    }
+    glm::vec<N, float> v(0.0f);
+    for (int i = 0; i < N; ++i) v[i] = readNumber(j[static_cast<std::size_t>(i)], indexPath(path, static_cast<std::size_t>(i)), rule);
+    return v;
+  }
+
+  vec3 readColour(const Json& j, const std::string& path, NumberRule rule) const {
+    return readVector<3>(j, path, rule);
+  }
+
+  std::string resolvePath(const std::string& relative) const {
+    const std::filesystem::path p(relative);
+    if (p.is_absolute() || baseDir_.empty()) return p.lexically_normal().string();
+    return (std::filesystem::path(baseDir_) / p).lexically_normal().string();
+  }
+
+  // ---- sections ----
+
+  void readOutput(const Json& j, const std::string& path) {
+    requireObject(j, path);
+    checkKeys(j, path, {"width", "height", "background"}, "output");
+    if (const Json* v = find(j, "width")) scene_.output.width = readInt(*v, childPath(path, "width"), 1, kMaxImageSide);
+    if (const Json* v = find(j, "height")) scene_.output.height = readInt(*v, childPath(path, "height"), 1, kMaxImageSide);
+    if (const Json* v = find(j, "background")) {
+      scene_.output.background = readColour(*v, childPath(path, "background"), NumberRule::UnitInterval);
+    }
+  }
+
+  void readCamera(const Json& j, const std::string& path) {
+    requireObject(j, path);
+    checkKeys(j, path, {"position", "target", "fov_deg", "near", "far"}, "camera");
+    Camera& camera = scene_.camera;
+    if (const Json* v = find(j, "position")) camera.position = readVector<3>(*v, childPath(path, "position"), NumberRule::Finite);
+    if (const Json* v = find(j, "target")) camera.target = readVector<3>(*v, childPath(path, "target"), NumberRule::Finite);
+    if (const Json* v = find(j, "fov_deg")) camera.fovDeg = readNumber(*v, childPath(path, "fov_deg"), NumberRule::Finite);
+    if (const Json* v = find(j, "near")) camera.near = readNumber(*v, childPath(path, "near"), NumberRule::Finite);
+    if (const Json* v = find(j, "far")) camera.far = readNumber(*v, childPath(path, "far"), NumberRule::Finite);
+    if (const std::string error = validateCamera(camera); !error.empty()) fail(path, error);
+  }
+
+  void readLights(const Json& j, const std::string& path) {
+    requireArray(j, path);
+    if (j.size() > static_cast<std::size_t>(kMaxLights)) {
+      fail(path, "expected at most " + std::to_string(kMaxLights) + " lights, got " + std::to_string(j.size()));
+    }
+    for (std::size_t i = 0; i < j.size(); ++i) {
+      const std::string lightPath = indexPath(path, i);
+      const Json& lj = j[i];
+      requireObject(lj, lightPath);
+      checkKeys(lj, lightPath, {"position", "diffuse", "specular", "attenuation"}, "a light");
+      PointLight light;
+      if (const Json* v = find(lj, "position")) light.posWorld = readVector<3>(*v, childPath(lightPath, "position"), NumberRule::Finite);
+      if (const Json* v = find(lj, "diffuse")) light.diffuse = readColour(*v, childPath(lightPath, "diffuse"), NumberRule::NonNegative);
+      if (const Json* v = find(lj, "specular")) light.specular = readColour(*v, childPath(lightPath, "specular"), NumberRule::NonNegative);
+      if (const Json* v = find(lj, "attenuation")) {
+        const std::string attenuationPath = childPath(lightPath, "attenuation");
+        light.attenuation = readVector<3>(*v, attenuationPath, NumberRule::NonNegative);
+        if (light.attenuation == vec3(0.0f)) {
+          fail(attenuationPath, "expected [A_C, A_L, A_Q] not all zero (the light would be infinitely bright), got " + quote(*v));
+        }
+      }
+      scene_.lights.push_back(light);
+    }
+  }
+
+  void readMaterials(const Json& j, const std::string& path) {
+    requireObject(j, path);
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      const std::string materialPath = childPath(path, it.key());
+      if (it.key().empty()) fail(path, "a material name must not be empty");
+      const Json& mj = it.value();
+      requireObject(mj, materialPath);
+      checkKeys(mj, materialPath, {"ka", "kd", "ks", "shininess", "diffuse_map", "normal_map", "specular_map"}, "a material");
+      Material material;
+      material.name = it.key();
+      if (const Json* v = find(mj, "ka")) material.ka = readColour(*v, childPath(materialPath, "ka"), NumberRule::NonNegative);
+      if (const Json* v = find(mj, "kd")) material.kd = readColour(*v, childPath(materialPath, "kd"), NumberRule::NonNegative);
+      if (const Json* v = find(mj, "ks")) material.ks = readColour(*v, childPath(materialPath, "ks"), NumberRule::NonNegative);
+      if (const Json* v = find(mj, "shininess")) material.shininess = readNumber(*v, childPath(materialPath, "shininess"), NumberRule::NonNegative);
+      if (const Json* v = find(mj, "diffuse_map")) material.diffuseMap = readTexture(*v, childPath(materialPath, "diffuse_map"));
+      if (const Json* v = find(mj, "normal_map")) material.normalMap = readTexture(*v, childPath(materialPath, "normal_map"));
+      if (const Json* v = find(mj, "specular_map")) material.specularMap = readTexture(*v, childPath(materialPath, "specular_map"));
+      materialIndex_[material.name] = static_cast<int>(scene_.materials.size());
+      scene_.materials.push_back(std::move(material));
+    }
+  }
+
+  // Materials naming the same file share one Texture.
+  std::shared_ptr<const Texture> readTexture(const Json& j, const std::string& path) {
+    const std::string file = resolvePath(readString(j, path, "a PNG file path relative to the scene file"));
+    if (const auto it = textures_.find(file); it != textures_.end()) return it->second;
+    std::shared_ptr<const Texture> texture;
+    try {
+      texture = std::make_shared<const Texture>(loadTexture(file));
+    } catch (const InputError& e) {
+      fail(path, e.what());
+    }
+    textures_.emplace(file, texture);
+    return texture;
+  }
+
+  void readSettings(const Json& j, const std::string& path) {
+    requireObject(j, path);
+    checkKeys(j, path,
+              {"cull", "front_face", "clip", "user_clip_planes", "view", "lighting_space", "tangent_transform",
+               "texture_filter", "tbn_lines"},
+              "settings");
+    RenderSettings& s = scene_.settings;
+    if (const Json* v = find(j, "cull")) s.cull = readEnum<CullMode>(*v, childPath(path, "cull"));
+    if (const Json* v = find(j, "front_face")) s.frontFace = readEnum<FrontFace>(*v, childPath(path, "front_face"));
+    if (const Json* v = find(j, "clip")) readClip(*v, childPath(path, "clip"));
+    if (const Json* v = find(j, "user_clip_planes")) readClipPlanes(*v, childPath(path, "user_clip_planes"));
+    if (const Json* v = find(j, "view")) s.view = readEnum<View>(*v, childPath(path, "view"));
+    if (const Json* v = find(j, "lighting_space")) s.lightingSpace = readEnum<LightingSpace>(*v, childPath(path, "lighting_space"));
+    if (const Json* v = find(j, "tangent_transform")) {
+      s.tangentTransform = readEnum<TangentTransform>(*v, childPath(path, "tangent_transform"));
+    }
+    if (const Json* v = find(j, "texture_filter")) s.textureFilter = readEnum<TextureFilter>(*v, childPath(path, "texture_filter"));
+    if (const Json* v = find(j, "tbn_lines")) readTbnLines(*v, childPath(path, "tbn_lines"));
+  }
+
+  void readClip(const Json& j, const std::string& path) {
+    requireObject(j, path);
+    checkKeys(j, path, {"left", "right", "bottom", "top", "near", "far"}, "settings.clip");
+    ClipSwitches& clip = scene_.settings.clip;
+    const std::pair<const char*, bool*> switches[] = {{"left", &clip.left},     {"right", &clip.right},
+                                                      {"bottom", &clip.bottom}, {"top", &clip.top},
+                                                      {"near", &clip.near},     {"far", &clip.far}};
+    for (const auto& [key, target] : switches) {
+      if (const Json* v = find(j, key)) *target = readBool(*v, childPath(path, key));
+    }
+  }
+
+  void readClipPlanes(const Json& j, const std::string& path) {
+    requireArray(j, path);
+    if (j.size() > static_cast<std::size_t>(kMaxUserClipPlanes)) {
+      fail(path, "expected at most " + std::to_string(kMaxUserClipPlanes) + " planes, got " + std::to_string(j.size()));
+    }
+    scene_.settings.userClipPlanes.clear();
+    for (std::size_t i = 0; i < j.size(); ++i) {
+      const vec4 plane = readVector<4>(j[i], indexPath(path, i), NumberRule::Finite);
+      if (vec3(plane) == vec3(0.0f)) {
+        fail(indexPath(path, i), "expected a plane [a, b, c, d] with (a, b, c) not all zero, got " + quote(j[i]));
+      }
+      scene_.settings.userClipPlanes.push_back(plane);
+    }
+  }
+
+  void readTbnLines(const Json& j, const std::string& path) {
+    requireObject(j, path);
+    checkKeys(j, path, {"enabled", "length", "mode"}, "settings.tbn_lines");
+    TbnLines& lines = scene_.settings.tbnLines;
+    if (const Json* v = find(j, "enabled")) lines.enabled = readBool(*v, childPath(path, "enabled"));
+    if (const Json* v = find(j, "length")) lines.length = readNumber(*v, childPath(path, "length"), NumberRule::Positive);
+    if (const Json* v = find(j, "mode")) lines.mode = readEnum<LineMode>(*v, childPath(path, "mode"));
+  }
+
+  // ---- nodes and meshes ----
+
+  Node readNode(const Json& j, const std::string& path, int depth) {
+    requireObject(j, path);
+    checkKeys(j, path, {"name", "material", "mesh", "translate", "rotate_deg", "scale", "children"}, "a node");
+    Node node;
+    node.name = path;
+    if (const Json* v = find(j, "name")) node.name = readString(*v, childPath(path, "name"), "a node name");
+    if (const Json* v = find(j, "translate")) node.translate = readVector<3>(*v, childPath(path, "translate"), NumberRule::Finite);
+    if (const Json* v = find(j, "rotate_deg")) node.rotateDeg = readVector<3>(*v, childPath(path, "rotate_deg"), NumberRule::Finite);
+    // A zero scale makes the normal matrix singular (1/det = 1/0); negative mirrors, which is fine.
+    if (const Json* v = find(j, "scale")) node.scale = readVector<3>(*v, childPath(path, "scale"), NumberRule::NonZero);
+
+    const Json* materialJson = find(j, "material");
+    const Json* meshJson = find(j, "mesh");
+    if (materialJson) {
+      const std::string materialPath = childPath(path, "material");
+      if (!meshJson) fail(materialPath, "a material needs a mesh on the same node (materials are not inherited)");
+      const std::string name = readString(*materialJson, materialPath, "a material name");
+      const auto it = materialIndex_.find(name);
+      if (it == materialIndex_.end()) fail(materialPath, "unknown material " + quote(*materialJson) + "; " + definedMaterials());
+      node.materialIndex = it->second;
+    }
+    if (meshJson) readNodeMesh(*meshJson, childPath(path, "mesh"), depth, node);
+
+    if (const Json* v = find(j, "children")) {
+      const std::string childrenPath = childPath(path, "children");
+      requireArray(*v, childrenPath);
+      if (!v->empty() && depth + 1 > kMaxNodeDepth) {
+        fail(indexPath(childrenPath, 0), "nodes nest deeper than " + std::to_string(kMaxNodeDepth) + " levels");
+      }
+      for (std::size_t i = 0; i < v->size(); ++i) node.children.push_back(readNode((*v)[i], indexPath(childrenPath, i), depth + 1));
+    }
+    return node;
+  }
+
+  std::string definedMaterials() const {
+    if (scene_.materials.empty()) return "no materials are defined in \"materials\"";
+    std::string names;
+    for (const Material& m : scene_.materials) names += (names.empty() ? "" : ", ") + Json(m.name).dump();
+    return "defined: " + names;
+  }
+
+  void readNodeMesh(const Json& j, const std::string& path, int depth, Node& node) {
+    MeshDesc desc = readMeshDesc(j, path);
+    if (desc.type == MeshType::Obj) {
+      readObjParts(desc, path, depth, node);
+      return;
+    }
+    checkTriangleBudget(plannedTriangleCount(desc), path);  // before building: a typo must not allocate gigabytes
+    Mesh mesh;
+    try {
+      mesh = buildMesh(desc);
+    } catch (const InputError& e) {
+      fail(path, e.what());
+    }
+    addTriangles(mesh.triangleCount(), path);
+    node.meshIndex = static_cast<int>(scene_.meshes.size());
+    scene_.meshes.push_back(std::move(mesh));
+    scene_.meshDescs.push_back(std::move(desc));
+  }
+
+  // The OBJ's parts (one per material) become child nodes "<node>/<part>", placed before
+  // the node's own children; the node's material, when given, overrides the MTL ones.
+  void readObjParts(const MeshDesc& desc, const std::string& path, int depth, Node& node) {
+    const std::string filePath = childPath(path, "path");
+    ObjModel model;
+    try {
+      model = loadObj(desc.path);
+    } catch (const InputError& e) {
+      fail(filePath, e.what());
+    }
+    if (model.meshes.empty()) fail(filePath, desc.path + ": the OBJ holds no faces");
+    if (depth + 1 > kMaxNodeDepth) {
+      fail(path, "an obj mesh adds a level of child nodes, which would nest deeper than " +
+                     std::to_string(kMaxNodeDepth) + " levels");
+    }
+    std::size_t objTriangles = 0;
+    for (const Mesh& m : model.meshes) objTriangles += m.triangleCount();
+    addTriangles(objTriangles, path);
+
+    std::vector<Node> parts;
+    for (std::size_t i = 0; i < model.meshes.size(); ++i) {
+      const bool hasMaterial = i < model.hasMaterial.size() && model.hasMaterial[i] && i < model.materials.size();
+      const std::string partName =
+          hasMaterial && !model.materials[i].name.empty() ? model.materials[i].name : "part" + std::to_string(i);
+      Node part;
+      part.name = node.name + "/" + partName;
+      part.meshIndex = static_cast<int>(scene_.meshes.size());
+      scene_.meshes.push_back(std::move(model.meshes[i]));
+      scene_.meshDescs.push_back(desc);
+      if (node.materialIndex >= 0) {
+        part.materialIndex = node.materialIndex;
+      } else if (hasMaterial) {
+        Material material = std::move(model.materials[i]);
+        material.name = part.name;
+        part.materialIndex = static_cast<int>(scene_.materials.size());
+        scene_.materials.push_back(std::move(material));
+      }
+      parts.push_back(std::move(part));
+    }
+    node.materialIndex = -1;  // the node itself draws nothing; its parts carry the material
+    node.children.insert(node.children.begin(), std::make_move_iterator(parts.begin()),
+                         std::make_move_iterator(parts.end()));
+  }
+
+  MeshDesc readMeshDesc(const Json& j, const std::string& path) {
+    requireObject(j, path);
+    const Json* typeJson = find(j, "type");
+    std::string typeNames;
+    for (const auto& [type, name] : kMeshTypeNames) typeNames += (typeNames.empty() ? "" : "|") + std::string(name);
+    if (!typeJson) fail(childPath(path, "type"), "missing; expected one of " + typeNames);
+    MeshDesc desc;
+    const auto typeIt = std::find_if(kMeshTypeNames.begin(), kMeshTypeNames.end(), [&](const auto& entry) {
+      return typeJson->is_string() && typeJson->get_ref<const std::string&>() == entry.second;
+    });
+    if (typeIt == kMeshTypeNames.end()) fail(childPath(path, "type"), "expected one of " + typeNames + ", got " + quote(*typeJson));
+    desc.type = typeIt->first;
+    const std::string where = "a " + std::string(typeIt->second) + " mesh";
+    const auto at = [&](const char* key) { return childPath(path, key); };
+
+    switch (desc.type) {
+      case MeshType::Cube:
+        checkKeys(j, path, {"type", "size"}, where);
+        if (const Json* v = find(j, "size")) desc.size = readNumber(*v, at("size"), NumberRule::Positive);
+        break;
+      case MeshType::Sphere:
+        checkKeys(j, path, {"type", "radius", "stacks", "slices"}, where);
+        if (const Json* v = find(j, "radius")) desc.radius = readNumber(*v, at("radius"), NumberRule::Positive);
+        if (const Json* v = find(j, "stacks")) desc.stacks = readInt(*v, at("stacks"), kMinSphereStacks, kMaxSegments);
+        if (const Json* v = find(j, "slices")) desc.slices = readInt(*v, at("slices"), kMinRoundSegments, kMaxSegments);
+        break;
+      case MeshType::Plane:
+        checkKeys(j, path, {"type", "size", "uv_scale"}, where);
+        if (const Json* v = find(j, "size")) desc.planeSize = readVector<2>(*v, at("size"), NumberRule::Positive);
+        if (const Json* v = find(j, "uv_scale")) desc.uvScale = readNumber(*v, at("uv_scale"), NumberRule::Positive);
+        break;
+      case MeshType::Cylinder:
+        checkKeys(j, path, {"type", "radius", "height", "slices"}, where);
+        if (const Json* v = find(j, "radius")) desc.radius = readNumber(*v, at("radius"), NumberRule::Positive);
+        if (const Json* v = find(j, "height")) desc.height = readNumber(*v, at("height"), NumberRule::Positive);
+        if (const Json* v = find(j, "slices")) desc.slices = readInt(*v, at("slices"), kMinRoundSegments, kMaxSegments);
+        break;
+      case MeshType::Torus:
+        checkKeys(j, path, {"type", "major", "minor", "rings", "sides"}, where);
+        if (const Json* v = find(j, "major")) desc.major = readNumber(*v, at("major"), NumberRule::Positive);
+        if (const Json* v = find(j, "minor")) desc.minor = readNumber(*v, at("minor"), NumberRule::Positive);
+        if (const Json* v = find(j, "rings")) desc.rings = readInt(*v, at("rings"), kMinRoundSegments, kMaxSegments);
+        if (const Json* v = find(j, "sides")) desc.sides = readInt(*v, at("sides"), kMinRoundSegments, kMaxSegments);
+        // minor >= major self-intersects: the surface has no well-defined outside.
+        if (!(desc.minor < desc.major)) {
+          fail(at("minor"), "expected minor < major, got minor " + Json(desc.minor).dump() + " and major " +
+                                Json(desc.major).dump());
+        }
+        break;
+      case MeshType::Obj: {
+        checkKeys(j, path, {"type", "path"}, where);
+        const Json* v = find(j, "path");
+        if (!v) fail(at("path"), "missing; expected the OBJ file path relative to the scene file");
+        desc.path = resolvePath(readString(*v, at("path"), "an OBJ file path relative to the scene file"));
+        break;
+      }
+      case MeshType::Triangles:
+        checkKeys(j, path, {"type", "positions", "uvs", "normals"}, where);
+        readTriangles(j, path, desc);
+        break;
+    }
+    return desc;
+  }
+
+  void readTriangles(const Json& j, const std::string& path, MeshDesc& desc) {
+    const std::string positionsPath = childPath(path, "positions");
+    const Json* positions = find(j, "positions");
+    if (!positions) fail(positionsPath, "missing; expected [[x, y, z], ...], three positions per triangle");
+    requireArray(*positions, positionsPath);
+    const std::size_t count = positions->size();
+    if (count == 0 || count % 3 != 0) {
+      fail(positionsPath, "expected a non-zero multiple of 3 positions (three per triangle), got " + std::to_string(count));
+    }
+    checkTriangleBudget(count / 3, positionsPath);  // refuse an oversized list before converting it
+    desc.positions.reserve(count);
+    for (std::size_t i = 0; i < count; ++i) {
+      desc.positions.push_back(readVector<3>((*positions)[i], indexPath(positionsPath, i), NumberRule::Finite));
+    }
+    if (const Json* uvs = find(j, "uvs")) {
+      const std::string uvsPath = childPath(path, "uvs");
+      requireArray(*uvs, uvsPath);
+      if (uvs->size() != count) {
+        fail(uvsPath, "expected " + std::to_string(count) + " uvs (one per position), got " + std::to_string(uvs->size()));
+      }
+      for (std::size_t i = 0; i < count; ++i) desc.uvs.push_back(readVector<2>((*uvs)[i], indexPath(uvsPath, i), NumberRule::Finite));
+    }
+    if (const Json* normals = find(j, "normals")) {
+      const std::string normalsPath = childPath(path, "normals");
+      requireArray(*normals, normalsPath);
+      if (normals->size() != count) {
+        fail(normalsPath,
+             "expected " + std::to_string(count) + " normals (one per position), got " + std::to_string(normals->size()));
+      }
+      for (std::size_t i = 0; i < count; ++i) {
+        const vec3 n = readVector<3>((*normals)[i], indexPath(normalsPath, i), NumberRule::Finite);
+        if (!(glm::dot(n, n) > kMinLengthSquared)) fail(indexPath(normalsPath, i), "expected a non-zero normal, got " + quote((*normals)[i]));
+        desc.normals.push_back(n);
+      }
+    }
+  }
+
+  // Triangles a primitive will have, known from its parameters (primitives.h).
+  static std::size_t plannedTriangleCount(const MeshDesc& d) {
+    const auto n = [](int v) { return static_cast<std::size_t>(v); };
+    switch (d.type) {
+      case MeshType::Cube: return 12;
+      case MeshType::Sphere: return n(d.slices) * (2 * n(d.stacks) - 2);  // pole rows have one triangle per slice
+      case MeshType::Plane: return 2;
+      case MeshType::Cylinder: return 4 * n(d.slices);
+      case MeshType::Torus: return 2 * n(d.rings) * n(d.sides);
+      case MeshType::Triangles: return d.positions.size() / 3;
+      case MeshType::Obj: return 0;
+    }
+    return 0;
+  }
+
+  void checkTriangleBudget(std::size_t count, const std::string& path) const {
+    if (count > kMaxSceneTriangles - trianglesSoFar_) {
+      fail(path, "this mesh brings the scene to " + std::to_string(trianglesSoFar_ + count) +
+                     " triangles; at most " + std::to_string(kMaxSceneTriangles) + " are allowed");
+    }
+  }
+
+  void addTriangles(std::size_t count, const std::string& path) {
+    checkTriangleBudget(count, path);
+    trianglesSoFar_ += count;
+  }
+
+  std::string fileName_;
+  std::string baseDir_;
+  Scene scene_;
+  std::map<std::string, int> materialIndex_;
+  std::map<std::string, std::shared_ptr<const Texture>> textures_;
+  std::size_t trianglesSoFar_ = 0;
+};
+
+// nlohmann says "[json.exception.parse_error.101] parse error at line 3, column 5: syntax
+// error ..."; keep "line 3, column 5: syntax error ...". The column is where the offending
+// token ends.
+std::string describeParseError(const std::string& what) {
+  const std::size_t at = what.find("at line ");
+  if (at != std::string::npos) return what.substr(at + 3);
+  return what;
+}
+
+// nlohmann refuses a number beyond the double range (1e999) with "[...out_of_range.406]
+// number overflow parsing '1e999'" and no position; find the first such token to give one.
+std::string describeNumberOverflow(const std::string& what, const std::string& text) {
+  const std::size_t open = what.find('\'');
+  const std::size_t close = what.rfind('\'');
+  if (open == std::string::npos || close <= open + 1) return "invalid JSON: " + what;
+  const std::string token = what.substr(open + 1, close - open - 1);
+  const auto isNumberChar = [](char c) { return (c >= '0' && c <= '9') || c == '.' || c == 'e' || c == 'E' || c == '-' || c == '+'; };
+  for (std::size_t pos = text.find(token); pos != std::string::npos; pos = text.find(token, pos + 1)) {
+    const std::size_t end = pos + token.size();
+    if ((pos > 0 && isNumberChar(text[pos - 1])) || (end < text.size() && isNumberChar(text[end]))) continue;
+    const std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(pos), '\n'));
+    const std::size_t lineStart = text.rfind('\n', pos == 0 ? 0 : pos - 1);
+    const std::size_t column = (lineStart == std::string::npos || pos == 0) ? pos + 1 : pos - lineStart;
+    return "line " + std::to_string(line) + ", column " + std::to_string(column) + ": number " + token +
+           " is outside the range of a double, expected a finite number";
+  }
+  return "number " + token + " is outside the range of a double, expected a finite number";
+}
+
+}  // namespace
+
+std::string_view toString(MeshType type) {
+  for (const auto& [t, name] : kMeshTypeNames)
+    if (t == type) return name;
+  return "?";
+}
+
+Scene parseScene(const std::string& json, const std::string& nameForMessages, const std::string& baseDir) {
+  Json root;
+  try {
+    root = Json::parse(json, DuplicateKeyCheck(nameForMessages), /*allow_exceptions=*/true, /*ignore_comments=*/true);
+  } catch (const Json::parse_error& e) {
+    throw InputError(nameForMessages + ": " + describeParseError(e.what()) + " (invalid JSON)");
+  } catch (const Json::out_of_range& e) {
+    throw InputError(nameForMessages + ": " + describeNumberOverflow(e.what(), json));
+  }
+  return SceneReader(nameForMessages, baseDir).read(root);
+}
+
+Scene loadSceneFile(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": cannot open scene file (no such file)");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open scene file (not readable)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  const std::string baseDir = std::filesystem::path(path).parent_path().string();
+  Scene scene = parseScene(text.str(), path, baseDir.empty() ? "." : baseDir);
+  scene.sourcePath = path;
+  return scene;
+}
+
+}  // namespace twr

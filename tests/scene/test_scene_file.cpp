@@ -1,0 +1,515 @@
+// Scene files: one test per class of bad input (each message must name the file and the
+// key or line), then the good paths: defaults, every key, relative paths, OBJ parts, the
+// shipped scenes.
+#include "scene/errors.h"
+#include "scene/scene_file.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <initializer_list>
+#include <string>
+
+namespace twr {
+namespace {
+
+const std::string kDataDir = std::string(TWINRASTER_SOURCE_DIR) + "/tests/scene/data_scenes/";
+const std::string kInline = "inline.json";  // the file name parseScene reports for inline JSON
+
+// The InputError message `f` throws; a test failure when it throws nothing.
+template <typename F>
+std::string errorOf(F&& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "expected an InputError";
+  return {};
+}
+
+std::string parseError(const std::string& json) {
+  return errorOf([&] { parseScene(json, kInline, kDataDir); });
+}
+
+std::string loadError(const std::string& path) {
+  return errorOf([&] { loadSceneFile(path); });
+}
+
+void expectContains(const std::string& message, std::initializer_list<std::string> parts) {
+  for (const std::string& part : parts) {
+    EXPECT_NE(message.find(part), std::string::npos) << "missing \"" << part << "\" in: " << message;
+  }
+}
+
+// A scene with one node whose mesh is `mesh` (JSON text).
+std::string withMesh(const std::string& mesh) { return R"({"nodes": [{"name": "n", "mesh": )" + mesh + "}]}"; }
+
+// ---- bad input, one class per test ----
+
+TEST(SceneFileErrors, MissingFile) {
+  const std::string path = kDataDir + "no_such_scene.json";
+  EXPECT_EQ(loadError(path).rfind(path + ": cannot open scene file", 0), 0u) << loadError(path);
+}
+
+TEST(SceneFileErrors, BadJsonNamesLineAndColumn) {
+  // Line 3 lacks its trailing comma, so the parser stops at the string "nodes" on line 4;
+  // nlohmann gives the column where that token ends: 2 spaces + 7 characters = column 9.
+  const std::string path = kDataDir + "syntax_error.json";
+  const std::string message = loadError(path);
+  EXPECT_EQ(message.rfind(path + ": line 4, column 9:", 0), 0u) << message;
+  expectContains(message, {"invalid JSON"});
+}
+
+TEST(SceneFileErrors, WrongType) {
+  EXPECT_EQ(parseError(R"({"output": {"width": "640"}, "nodes": []})"),
+            "inline.json: output.width: expected an integer in [1, 16384], got \"640\"");
+  expectContains(parseError(R"({"nodes": {}})"), {"inline.json: nodes: expected an array"});
+  expectContains(parseError(R"({"ambient": [0.1, "x", 0.1], "nodes": []})"),
+                 {"inline.json: ambient[1]: expected a number >= 0, got \"x\""});
+  expectContains(parseError(R"({"nodes": [], "settings": {"clip": {"near": 1}}})"),
+                 {"inline.json: settings.clip.near: expected true or false, got 1"});
+  expectContains(parseError("[1, 2]"), {"inline.json: expected an object"});
+}
+
+TEST(SceneFileErrors, UnknownKeyAtTopLevel) {
+  expectContains(parseError(R"({"nodes": [], "lightz": []})"),
+                 {"inline.json: lightz: unknown key in the top level; expected one of: output, camera"});
+}
+
+TEST(SceneFileErrors, UnknownKeyInNode) {
+  expectContains(parseError(R"({"nodes": [{"name": "a"}, {"name": "b", "colour": [1, 0, 0]}]})"),
+                 {"inline.json: nodes[1].colour: unknown key in a node"});
+}
+
+TEST(SceneFileErrors, UnknownKeyInSettings) {
+  expectContains(parseError(R"({"nodes": [], "settings": {"shadows": true}})"),
+                 {"inline.json: settings.shadows: unknown key in settings"});
+  expectContains(parseError(R"({"nodes": [], "settings": {"clip": {"nearr": false}}})"),
+                 {"inline.json: settings.clip.nearr: unknown key"});
+  expectContains(parseError(R"({"nodes": [], "settings": {"tbn_lines": {"colour": [1, 1, 1]}}})"),
+                 {"inline.json: settings.tbn_lines.colour: unknown key"});
+}
+
+TEST(SceneFileErrors, UnknownKeyInMesh) {
+  // "size" is a cube key, not a sphere key.
+  expectContains(parseError(withMesh(R"({"type": "sphere", "size": 2})")),
+                 {"inline.json: nodes[0].mesh.size: unknown key in a sphere mesh; expected one of: type, radius, "
+                  "stacks, slices"});
+  expectContains(parseError(withMesh(R"({"type": "blob"})")),
+                 {"inline.json: nodes[0].mesh.type: expected one of cube|sphere|plane|cylinder|torus|obj|triangles, "
+                  "got \"blob\""});
+  expectContains(parseError(withMesh(R"({"radius": 1})")), {"inline.json: nodes[0].mesh.type: missing"});
+}
+
+TEST(SceneFileErrors, UnknownKeyInOtherSections) {
+  expectContains(parseError(R"({"nodes": [], "output": {"depth": 8}})"), {"inline.json: output.depth: unknown key"});
+  expectContains(parseError(R"({"nodes": [], "camera": {"up": [0, 1, 0]}})"), {"inline.json: camera.up: unknown key"});
+  expectContains(parseError(R"({"nodes": [], "lights": [{"colour": [1, 1, 1]}]})"),
+                 {"inline.json: lights[0].colour: unknown key"});
+  expectContains(parseError(R"({"nodes": [], "materials": {"m": {"bump_map": "x.png"}}})"),
+                 {"inline.json: materials.m.bump_map: unknown key"});
+}
+
+TEST(SceneFileErrors, DuplicateKey) {
+  expectContains(parseError(R"({"nodes": [{"mesh": {"type": "sphere", "radius": 1, "radius": 2}}]})"),
+                 {"inline.json: nodes[0].mesh.radius: duplicate key"});
+}
+
+TEST(SceneFileErrors, NegativeSize) {
+  EXPECT_EQ(parseError(withMesh(R"({"type": "cube", "size": -1})")),
+            "inline.json: nodes[0].mesh.size: expected a number > 0, got -1");
+  expectContains(parseError(withMesh(R"({"type": "plane", "size": [2, 0]})")),
+                 {"inline.json: nodes[0].mesh.size[1]: expected a number > 0, got 0"});
+  expectContains(parseError(withMesh(R"({"type": "cylinder", "height": -0.5})")),
+                 {"inline.json: nodes[0].mesh.height: expected a number > 0"});
+  expectContains(parseError(withMesh(R"({"type": "torus", "major": 1, "minor": 1.5})")),
+                 {"inline.json: nodes[0].mesh.minor: expected minor < major"});
+  expectContains(parseError(R"({"nodes": [{"scale": [1, 0, 1]}]})"),
+                 {"inline.json: nodes[0].scale[1]: expected a non-zero number, got 0"});
+}
+
+TEST(SceneFileErrors, OutOfRangeCount) {
+  EXPECT_EQ(parseError(withMesh(R"({"type": "sphere", "stacks": -3})")),
+            "inline.json: nodes[0].mesh.stacks: expected an integer in [2, 4096], got -3");
+  expectContains(parseError(withMesh(R"({"type": "torus", "sides": 5000})")),
+                 {"inline.json: nodes[0].mesh.sides: expected an integer in [3, 4096], got 5000"});
+  expectContains(parseError(withMesh(R"({"type": "cylinder", "slices": 12.5})")),
+                 {"inline.json: nodes[0].mesh.slices: expected an integer in [3, 4096], got 12.5"});
+  expectContains(parseError(R"({"nodes": [], "output": {"height": 0}})"),
+                 {"inline.json: output.height: expected an integer in [1, 16384], got 0"});
+}
+
+TEST(SceneFileErrors, TriangleBudgetRefusedBeforeBuilding) {
+  // 4096 * (2 * 4096 - 2) = 33,546,240 triangles > 20,000,000.
+  expectContains(parseError(withMesh(R"({"type": "sphere", "stacks": 4096, "slices": 4096})")),
+                 {"inline.json: nodes[0].mesh: this mesh brings the scene to 33546240 triangles; at most 20000000"});
+}
+
+TEST(SceneFileErrors, BadEnumValue) {
+  expectContains(parseError(R"({"nodes": [], "settings": {"view": "shiny"}})"),
+                 {"inline.json: settings.view: expected one of shaded|albedo|normal|tangent|bitangent|mapped_normal|"
+                  "uv|depth|light_tangent|eye_tangent, got \"shiny\""});
+  expectContains(parseError(R"({"nodes": [], "settings": {"cull": "sideways"}})"),
+                 {"inline.json: settings.cull: expected one of none|back|front, got \"sideways\""});
+  expectContains(parseError(R"({"nodes": [], "settings": {"tbn_lines": {"mode": "legacy"}}})"),
+                 {"inline.json: settings.tbn_lines.mode: expected one of core|immediate"});
+}
+
+TEST(SceneFileErrors, UnknownMaterial) {
+  expectContains(parseError(R"({"materials": {"red": {}, "blue": {}},
+                                "nodes": [{"material": "green", "mesh": {"type": "cube"}}]})"),
+                 {"inline.json: nodes[0].material: unknown material \"green\"; defined: \"red\", \"blue\""});
+  expectContains(parseError(R"({"materials": {"red": {}}, "nodes": [{"material": "red"}]})"),
+                 {"inline.json: nodes[0].material: a material needs a mesh on the same node"});
+}
+
+TEST(SceneFileErrors, MissingTexture) {
+  const std::string path = kDataDir + "missing_texture.json";
+  expectContains(loadError(path), {path + ": materials.bricks.diffuse_map: ", "no_such_texture.png", "not found"});
+}
+
+TEST(SceneFileErrors, BadTextureNotAPng) {
+  const std::string path = kDataDir + "bad_texture.json";
+  expectContains(loadError(path), {path + ": materials.bricks.normal_map: ", "not_a_png.png", "not a readable image"});
+}
+
+TEST(SceneFileErrors, MalformedObj) {
+  // Line 6 of malformed.obj is "f 1 2 9" and the file has 3 vertices.
+  const std::string path = kDataDir + "malformed_obj.json";
+  expectContains(loadError(path), {path + ": nodes[0].mesh.path: ", "malformed.obj:6:"});
+  expectContains(parseError(withMesh(R"({"type": "obj", "path": "models/none.obj"})")),
+                 {"inline.json: nodes[0].mesh.path: ", "none.obj"});
+}
+
+TEST(SceneFileErrors, TooManyLights) {
+  std::string lights;
+  for (int i = 0; i < kMaxLights + 1; ++i) lights += std::string(i ? ", " : "") + R"({"position": [0, 1, 0]})";
+  EXPECT_EQ(parseError(R"({"nodes": [], "lights": [)" + lights + "]}"),
+            "inline.json: lights: expected at most 8 lights, got 9");
+  const std::string plane = "[0, 1, 0, 0]";
+  std::string planes;
+  for (int i = 0; i < kMaxUserClipPlanes + 1; ++i) planes += std::string(i ? ", " : "") + plane;
+  expectContains(parseError(R"({"nodes": [], "settings": {"user_clip_planes": [)" + planes + "]}}"),
+                 {"inline.json: settings.user_clip_planes: expected at most 8 planes, got 9"});
+}
+
+// `levels` nodes, each the only child of the one before.
+std::string nestedNodes(int levels) {
+  std::string json = R"({"nodes": [)";
+  for (int i = 0; i < levels; ++i) json += std::string(R"({"name": "level)") + std::to_string(i + 1) + R"(", "children": [)";
+  for (int i = 0; i < levels; ++i) json += "]}";
+  return json + "]}";
+}
+
+TEST(SceneFileErrors, NestingTooDeep) {
+  EXPECT_NO_THROW(parseScene(nestedNodes(64), kInline, kDataDir));
+  const std::string message = parseError(nestedNodes(65));
+  std::string path = "nodes[0]";
+  for (int i = 1; i < 65; ++i) path += ".children[0]";
+  EXPECT_EQ(message, "inline.json: " + path + ": nodes nest deeper than 64 levels");
+
+  // Deeply nested JSON that is not nodes must give a message, not a stack overflow.
+  const std::size_t depth = 100000;
+  const std::string deep = R"({"nodes": )" + std::string(depth, '[') + std::string(depth, ']') + "}";
+  expectContains(parseError(deep), {"inline.json: nodes[0]: expected an object {...}, got an array"});
+}
+
+TEST(SceneFileErrors, NonFiniteNumber) {
+  // JSON has no NaN/Inf literal; 1e300 is a double but overflows a float, 1e999 overflows
+  // even a double, so nlohmann refuses it while parsing (no key yet; line and column instead:
+  // the token starts at column 30).
+  expectContains(parseError(R"({"nodes": [{"translate": [0, 1e300, 0]}]})"),
+                 {"inline.json: nodes[0].translate[1]: expected a finite number, got a number outside the float range"});
+  EXPECT_EQ(parseError(R"({"nodes": [{"translate": [0, 1e999, 0]}]})"),
+            "inline.json: line 1, column 30: number 1e999 is outside the range of a double, expected a finite number");
+  expectContains(parseError(R"({"nodes": [], "camera": {"far": 1e300}})"),
+                 {"inline.json: camera.far: expected a finite number"});
+  expectContains(parseError(R"({"nodes": [], "camera": {"position": NaN}})"), {"inline.json: line 1, column"});
+}
+
+TEST(SceneFileErrors, TrianglesPositionsNotMultipleOfThree) {
+  EXPECT_EQ(parseError(withMesh(R"({"type": "triangles", "positions": [[0,0,0], [1,0,0], [0,1,0], [1,1,0]]})")),
+            "inline.json: nodes[0].mesh.positions: expected a non-zero multiple of 3 positions (three per triangle), "
+            "got 4");
+  expectContains(parseError(withMesh(R"({"type": "triangles", "positions": [[0,0,0], [1,0,0], [0,1]]})")),
+                 {"inline.json: nodes[0].mesh.positions[2]: expected an array of 3 numbers"});
+  expectContains(
+      parseError(withMesh(R"({"type": "triangles", "positions": [[0,0,0], [1,0,0], [0,1,0]], "uvs": [[0,0]]})")),
+      {"inline.json: nodes[0].mesh.uvs: expected 3 uvs (one per position), got 1"});
+  expectContains(parseError(withMesh(
+                     R"({"type": "triangles", "positions": [[0,0,0], [1,0,0], [0,1,0]],
+                         "normals": [[0,0,1], [0,0,0], [0,0,1]]})")),
+                 {"inline.json: nodes[0].mesh.normals[1]: expected a non-zero normal"});
+}
+
+TEST(SceneFileErrors, BadLightCameraAndColours) {
+  expectContains(parseError(R"({"nodes": [], "lights": [{"attenuation": [0, 0, 0]}]})"),
+                 {"inline.json: lights[0].attenuation: expected [A_C, A_L, A_Q] not all zero"});
+  expectContains(parseError(R"({"nodes": [], "lights": [{"attenuation": [1, -0.1, 0]}]})"),
+                 {"inline.json: lights[0].attenuation[1]: expected a number >= 0, got -0.1"});
+  expectContains(parseError(R"({"nodes": [], "camera": {"near": 0}})"), {"inline.json: camera: near must be > 0"});
+  expectContains(parseError(R"({"nodes": [], "camera": {"position": [0, 5, 0], "target": [0, 0, 0]}})"),
+                 {"inline.json: camera: position - target must not be parallel"});
+  expectContains(parseError(R"({"nodes": [], "output": {"background": [0.1, 0.2]}})"),
+                 {"inline.json: output.background: expected an array of 3 numbers"});
+  expectContains(parseError(R"({"nodes": [], "output": {"background": [0.1, 0.2, 1.5]}})"),
+                 {"inline.json: output.background[2]: expected a number in [0, 1], got 1.5"});
+  expectContains(parseError(R"({"nodes": [], "materials": {"m": {"shininess": -1}}})"),
+                 {"inline.json: materials.m.shininess: expected a number >= 0, got -1"});
+  expectContains(parseError(R"({"nodes": [], "settings": {"user_clip_planes": [[0, 0, 0, 1]]}})"),
+                 {"inline.json: settings.user_clip_planes[0]: expected a plane [a, b, c, d] with (a, b, c) not all zero"});
+  expectContains(parseError(R"({"nodes": [], "settings": {"tbn_lines": {"length": 0}}})"),
+                 {"inline.json: settings.tbn_lines.length: expected a number > 0, got 0"});
+}
+
+TEST(SceneFileErrors, MissingNodes) {
+  EXPECT_EQ(parseError("{}"), "inline.json: nodes: missing; expected an array of nodes (it may be empty)");
+}
+
+// ---- good paths ----
+
+TEST(SceneFile, DefaultsForEveryKeyButNodes) {
+  const Scene scene = parseScene(R"({"nodes": []})", kInline, kDataDir);
+  const Scene reference;  // the struct defaults docs/scene-format.md lists
+  EXPECT_EQ(scene.output.width, 640);
+  EXPECT_EQ(scene.output.height, 480);
+  EXPECT_EQ(scene.output.background, reference.output.background);
+  EXPECT_EQ(scene.camera.position, vec3(0, 1, 4));
+  EXPECT_EQ(scene.camera.target, vec3(0, 0, 0));
+  EXPECT_FLOAT_EQ(scene.camera.fovDeg, 60.0f);
+  EXPECT_FLOAT_EQ(scene.camera.near, 0.1f);
+  EXPECT_FLOAT_EQ(scene.camera.far, 100.0f);
+  EXPECT_EQ(scene.ambient, vec3(0.1f));
+  EXPECT_TRUE(scene.lights.empty());
+  EXPECT_TRUE(scene.materials.empty());
+  EXPECT_TRUE(scene.nodes.empty());
+  const RenderSettings& s = scene.settings;
+  EXPECT_EQ(s.cull, CullMode::Back);
+  EXPECT_EQ(s.frontFace, FrontFace::Ccw);
+  EXPECT_TRUE(s.clip.left && s.clip.right && s.clip.bottom && s.clip.top && s.clip.near && s.clip.far);
+  EXPECT_TRUE(s.userClipPlanes.empty());
+  EXPECT_EQ(s.view, View::Shaded);
+  EXPECT_EQ(s.lightingSpace, LightingSpace::World);
+  EXPECT_EQ(s.tangentTransform, TangentTransform::Model);
+  EXPECT_EQ(s.textureFilter, TextureFilter::Bilinear);
+  EXPECT_FALSE(s.tbnLines.enabled);
+  EXPECT_FLOAT_EQ(s.tbnLines.length, 0.1f);
+  EXPECT_EQ(s.tbnLines.mode, LineMode::Core);
+
+  // A light with no keys gets the documented defaults; a node with no keys is named by its path.
+  const Scene one = parseScene(R"({"lights": [{}], "nodes": [{}, {"children": [{}]}]})", kInline, kDataDir);
+  ASSERT_EQ(one.lights.size(), 1u);
+  EXPECT_EQ(one.lights[0].posWorld, vec3(2, 3, 4));
+  EXPECT_EQ(one.lights[0].attenuation, vec3(1.0f, 0.09f, 0.032f));
+  ASSERT_EQ(one.nodes.size(), 2u);
+  EXPECT_EQ(one.nodes[0].name, "nodes[0]");
+  EXPECT_EQ(one.nodes[1].children.at(0).name, "nodes[1].children[0]");
+  EXPECT_EQ(one.nodes[0].meshIndex, -1);
+  EXPECT_EQ(one.nodes[0].scale, vec3(1.0f));
+}
+
+TEST(SceneFile, EveryKeyIsRead) {
+  const Scene scene = parseScene(R"({
+    // comments are allowed
+    "output": {"width": 320, "height": 200, "background": [0.5, 0.25, 1]},
+    "camera": {"position": [1, 2, 3], "target": [0, 1, 0], "fov_deg": 45, "near": 0.5, "far": 20},
+    "ambient": [0.2, 0.3, 0.4],
+    "lights": [{"position": [5, 6, 7], "diffuse": [0.9, 0.8, 0.7], "specular": [0.6, 0.5, 0.4],
+                "attenuation": [1, 0, 0.5]}],
+    "materials": {"zeta": {"ka": [0.1, 0.2, 0.3], "kd": [0.4, 0.5, 0.6], "ks": [0.7, 0.8, 0.9], "shininess": 0},
+                  "alpha": {}},
+    "nodes": [{"name": "root", "translate": [1, 2, 3], "rotate_deg": [10, 20, 30], "scale": [-1, 2, 3],
+               "children": [{"name": "tri", "material": "alpha",
+                             "mesh": {"type": "triangles", "positions": [[0,0,0], [1,0,0], [0,1,0]],
+                                      "uvs": [[0,0], [1,0], [0,1]], "normals": [[0,0,1], [0,0,1], [0,0,2]]}}]}],
+    "settings": {"cull": "front", "front_face": "cw",
+                 "clip": {"left": false, "right": false, "bottom": false, "top": false, "near": false, "far": false},
+                 "user_clip_planes": [[1, 0, 0, 0.5], [0, -1, 0, 2]], "view": "eye_tangent",
+                 "lighting_space": "tangent", "tangent_transform": "inverse_transpose",
+                 "texture_filter": "nearest", "tbn_lines": {"enabled": true, "length": 0.25, "mode": "immediate"}}
+  })",
+                                 kInline, kDataDir);
+  EXPECT_EQ(scene.output.width, 320);
+  EXPECT_EQ(scene.output.height, 200);
+  EXPECT_EQ(scene.output.background, vec3(0.5f, 0.25f, 1.0f));
+  EXPECT_EQ(scene.camera.position, vec3(1, 2, 3));
+  EXPECT_EQ(scene.camera.target, vec3(0, 1, 0));
+  EXPECT_FLOAT_EQ(scene.camera.fovDeg, 45.0f);
+  EXPECT_FLOAT_EQ(scene.camera.near, 0.5f);
+  EXPECT_FLOAT_EQ(scene.camera.far, 20.0f);
+  EXPECT_EQ(scene.ambient, vec3(0.2f, 0.3f, 0.4f));
+  ASSERT_EQ(scene.lights.size(), 1u);
+  EXPECT_EQ(scene.lights[0].posWorld, vec3(5, 6, 7));
+  EXPECT_EQ(scene.lights[0].diffuse, vec3(0.9f, 0.8f, 0.7f));
+  EXPECT_EQ(scene.lights[0].specular, vec3(0.6f, 0.5f, 0.4f));
+  EXPECT_EQ(scene.lights[0].attenuation, vec3(1.0f, 0.0f, 0.5f));
+  // File order, not alphabetical.
+  ASSERT_EQ(scene.materials.size(), 2u);
+  EXPECT_EQ(scene.materials[0].name, "zeta");
+  EXPECT_EQ(scene.materials[0].ka, vec3(0.1f, 0.2f, 0.3f));
+  EXPECT_EQ(scene.materials[0].kd, vec3(0.4f, 0.5f, 0.6f));
+  EXPECT_EQ(scene.materials[0].ks, vec3(0.7f, 0.8f, 0.9f));
+  EXPECT_FLOAT_EQ(scene.materials[0].shininess, 0.0f);
+  EXPECT_EQ(scene.materials[1].name, "alpha");
+  EXPECT_FALSE(scene.materials[1].diffuseMap || scene.materials[1].normalMap || scene.materials[1].specularMap);
+
+  ASSERT_EQ(scene.nodes.size(), 1u);
+  const Node& root = scene.nodes[0];
+  EXPECT_EQ(root.name, "root");
+  EXPECT_EQ(root.translate, vec3(1, 2, 3));
+  EXPECT_EQ(root.rotateDeg, vec3(10, 20, 30));
+  EXPECT_EQ(root.scale, vec3(-1, 2, 3));
+  ASSERT_EQ(root.children.size(), 1u);
+  const Node& tri = root.children[0];
+  EXPECT_EQ(tri.materialIndex, 1);
+  ASSERT_EQ(tri.meshIndex, 0);
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  ASSERT_EQ(scene.meshDescs.size(), 1u);
+  EXPECT_EQ(scene.meshDescs[0].type, MeshType::Triangles);
+  EXPECT_EQ(scene.meshDescs[0].positions.size(), 3u);
+  EXPECT_EQ(scene.meshDescs[0].uvs.at(2), vec2(0, 1));
+  EXPECT_EQ(scene.meshDescs[0].normals.at(2), vec3(0, 0, 2));
+  EXPECT_EQ(scene.meshes[0].triangleCount(), 1u);
+
+  const RenderSettings& s = scene.settings;
+  EXPECT_EQ(s.cull, CullMode::Front);
+  EXPECT_EQ(s.frontFace, FrontFace::Cw);
+  EXPECT_FALSE(s.clip.left || s.clip.right || s.clip.bottom || s.clip.top || s.clip.near || s.clip.far);
+  ASSERT_EQ(s.userClipPlanes.size(), 2u);
+  EXPECT_EQ(s.userClipPlanes[1], vec4(0, -1, 0, 2));
+  EXPECT_EQ(s.view, View::EyeTangent);
+  EXPECT_EQ(s.lightingSpace, LightingSpace::Tangent);
+  EXPECT_EQ(s.tangentTransform, TangentTransform::InverseTranspose);
+  EXPECT_EQ(s.textureFilter, TextureFilter::Nearest);
+  EXPECT_TRUE(s.tbnLines.enabled);
+  EXPECT_FLOAT_EQ(s.tbnLines.length, 0.25f);
+  EXPECT_EQ(s.tbnLines.mode, LineMode::Immediate);
+}
+
+TEST(SceneFile, MeshParametersReachTheDescsAndMeshes) {
+  const Scene scene = parseScene(R"({"nodes": [
+      {"mesh": {"type": "cube", "size": 2}},
+      {"mesh": {"type": "sphere", "radius": 0.5, "stacks": 3, "slices": 4}},
+      {"mesh": {"type": "plane", "size": [4, 2], "uv_scale": 3}},
+      {"mesh": {"type": "cylinder", "radius": 0.25, "height": 2, "slices": 5}},
+      {"mesh": {"type": "torus", "major": 2, "minor": 0.5, "rings": 6, "sides": 4}}]})",
+                                 kInline, kDataDir);
+  ASSERT_EQ(scene.meshes.size(), 5u);
+  ASSERT_EQ(scene.meshDescs.size(), 5u);
+  for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(scene.nodes[i].meshIndex, static_cast<int>(i));
+  EXPECT_FLOAT_EQ(scene.meshDescs[0].size, 2.0f);
+  EXPECT_EQ(scene.meshDescs[1].stacks, 3);
+  EXPECT_EQ(scene.meshDescs[1].slices, 4);
+  EXPECT_EQ(scene.meshDescs[2].planeSize, vec2(4, 2));
+  EXPECT_FLOAT_EQ(scene.meshDescs[2].uvScale, 3.0f);
+  EXPECT_FLOAT_EQ(scene.meshDescs[3].height, 2.0f);
+  EXPECT_EQ(scene.meshDescs[4].rings, 6);
+  // Hand-counted triangles: cube 12; sphere slices * (2 * stacks - 2) = 4 * 4 = 16 (the pole
+  // rows have one triangle per slice); plane 2; cylinder side 2 * 5 + caps 2 * 5 = 20;
+  // torus 2 * 6 * 4 = 48.
+  EXPECT_EQ(scene.meshes[0].triangleCount(), 12u);
+  EXPECT_EQ(scene.meshes[1].triangleCount(), 16u);
+  EXPECT_EQ(scene.meshes[2].triangleCount(), 2u);
+  EXPECT_EQ(scene.meshes[3].triangleCount(), 20u);
+  EXPECT_EQ(scene.meshes[4].triangleCount(), 48u);
+  EXPECT_EQ(countTriangles(scene), 12u + 16u + 2u + 20u + 48u);
+  EXPECT_EQ(toString(MeshType::Torus), "torus");
+}
+
+TEST(SceneFile, DefaultSceneLoads) {
+  const std::string path = std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes/default.json";
+  const Scene scene = loadSceneFile(path);
+  EXPECT_EQ(scene.sourcePath, path);
+  EXPECT_EQ(scene.output.width, 640);
+  EXPECT_EQ(scene.output.height, 480);
+  EXPECT_EQ(scene.lights.size(), 2u);
+  ASSERT_EQ(scene.nodes.size(), 3u);
+  int sphereCount = 0, cubeCount = 0, planeCount = 0;
+  for (const Node& node : scene.nodes) {
+    ASSERT_GE(node.meshIndex, 0);
+    ASSERT_GE(node.materialIndex, 0);
+    const Material& material = scene.materials[static_cast<std::size_t>(node.materialIndex)];
+    EXPECT_TRUE(material.diffuseMap && material.normalMap) << node.name << " is not normal-mapped bricks";
+    switch (scene.meshDescs[static_cast<std::size_t>(node.meshIndex)].type) {
+      case MeshType::Sphere: ++sphereCount; break;
+      case MeshType::Cube: ++cubeCount; break;
+      case MeshType::Plane: ++planeCount; break;
+      default: break;
+    }
+  }
+  EXPECT_EQ(sphereCount, 1);
+  EXPECT_EQ(cubeCount, 1);
+  EXPECT_EQ(planeCount, 1);
+  // Plane 2 + sphere 64 * (2 * 32 - 2) = 3968 + cube 12.
+  EXPECT_EQ(countTriangles(scene), 2u + 3968u + 12u);
+  // Materials naming the same file share one texture.
+  EXPECT_EQ(scene.materials[0].diffuseMap, scene.materials[1].diffuseMap);
+}
+
+TEST(SceneFile, EveryShippedSceneLoads) {
+  int count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes")) {
+    if (entry.path().extension() != ".json") continue;
+    ++count;
+    EXPECT_NO_THROW(loadSceneFile(entry.path().string())) << entry.path();
+  }
+  EXPECT_GE(count, 1);
+}
+
+TEST(SceneFile, PathsAreRelativeToTheSceneFile) {
+  const std::string subdir = kDataDir + "sub";
+  const Scene fromAbsolute = loadSceneFile(subdir + "/relative_paths.json");
+  ASSERT_EQ(fromAbsolute.materials.size(), 4u);  // bricks, same_maps, model/red, model/blue
+  EXPECT_TRUE(fromAbsolute.materials[0].normalMap);
+  EXPECT_EQ(fromAbsolute.materials[0].diffuseMap, fromAbsolute.materials[1].diffuseMap);
+  EXPECT_EQ(fromAbsolute.materials[0].diffuseMap->width, 512);
+
+  // The same file opened through a relative path from another working directory.
+  const std::filesystem::path previous = std::filesystem::current_path();
+  std::filesystem::current_path(kDataDir);
+  std::string message;
+  try {
+    const Scene fromRelative = loadSceneFile("sub/relative_paths.json");
+    EXPECT_EQ(fromRelative.materials.size(), 4u);
+    EXPECT_EQ(countTriangles(fromRelative), countTriangles(fromAbsolute));
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  std::filesystem::current_path(previous);
+  EXPECT_EQ(message, "");
+}
+
+TEST(SceneFile, ObjPartsBecomeChildNodes) {
+  const Scene scene = loadSceneFile(kDataDir + "obj_parts.json");
+  ASSERT_EQ(scene.nodes.size(), 2u);
+
+  // The MTL materials are added as "<node>/<material>", the parts come before the node's own children.
+  const Node& model = scene.nodes[0];
+  EXPECT_EQ(model.meshIndex, -1);
+  ASSERT_EQ(model.children.size(), 3u);
+  EXPECT_EQ(model.children[0].name, "model/red");
+  EXPECT_EQ(model.children[1].name, "model/blue");
+  EXPECT_EQ(model.children[2].name, "extra");
+  const Material& red = scene.materials.at(static_cast<std::size_t>(model.children[0].materialIndex));
+  EXPECT_EQ(red.name, "model/red");
+  EXPECT_EQ(red.kd, vec3(0.8f, 0.1f, 0.1f));
+  const Material& blue = scene.materials.at(static_cast<std::size_t>(model.children[1].materialIndex));
+  EXPECT_FLOAT_EQ(blue.shininess, 64.0f);
+  EXPECT_EQ(scene.meshes.at(static_cast<std::size_t>(model.children[0].meshIndex)).triangleCount(), 2u);
+  EXPECT_EQ(scene.meshDescs.at(static_cast<std::size_t>(model.children[0].meshIndex)).type, MeshType::Obj);
+
+  // A node material overrides every part, and no MTL material is added for them.
+  const Node& gilded = scene.nodes[1];
+  ASSERT_EQ(gilded.children.size(), 2u);
+  EXPECT_EQ(gilded.children[0].name, "gilded/red");
+  EXPECT_EQ(gilded.children[0].materialIndex, 0);
+  EXPECT_EQ(gilded.children[1].materialIndex, 0);
+  EXPECT_EQ(scene.materials[0].name, "gold");
+  EXPECT_EQ(scene.materials.size(), 3u);  // gold, model/red, model/blue
+  EXPECT_EQ(scene.meshes.size(), scene.meshDescs.size());
+  EXPECT_EQ(countTriangles(scene), 2u + 2u + 12u + 2u + 2u);
+}
+
+}  // namespace
+}  // namespace twr
