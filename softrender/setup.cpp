@@ -1,0 +1,101 @@
+#include "softrender/setup.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace twr {
+
+namespace {
+
+// Pixel centres sit at +0.5; removing it before snapping puts them on integer multiples of 256.
+constexpr float kPixelCentreOffset = 0.5f;
+
+// Floor division of 24.8 fixed point by 256 (an arithmetic shift rounds towards -infinity).
+int pixelFloor(std::int32_t fixed) { return static_cast<int>(fixed >> kSubpixelBits); }
+
+}  // namespace
+
+WindowVertex windowFromClip(const vec4& posClip, const Viewport& viewport) {
+  const float halfWidth = 0.5f * static_cast<float>(viewport.width);
+  const float halfHeight = 0.5f * static_cast<float>(viewport.height);
+  WindowVertex out;
+  out.invW = 1.0f / posClip.w;
+  out.x = posClip.x * out.invW * halfWidth + halfWidth;
+  out.y = posClip.y * out.invW * halfHeight + halfHeight;
+  out.z = windowDepthFromNdc(posClip.z * out.invW);
+  return out;
+}
+
+std::int32_t snapToSubpixel(float windowCoord) {
+  // fmax/fmin also map NaN to the bound, so nothing undefined reaches the conversion.
+  const float bounded = std::fmin(std::fmax(windowCoord, -kMaxWindowCoord), kMaxWindowCoord);
+  return static_cast<std::int32_t>(std::lrint((bounded - kPixelCentreOffset) * static_cast<float>(kSubpixelScale)));
+}
+
+SetupResult setupTriangle(const std::array<WindowVertex, 3>& window, CullMode cull, FrontFace frontFace,
+                          const Viewport& viewport, TriangleSetup& out) {
+  out = TriangleSetup{};
+  for (int i = 0; i < 3; ++i) {
+    out.xFixed[static_cast<std::size_t>(i)] = snapToSubpixel(window[static_cast<std::size_t>(i)].x);
+    out.yFixed[static_cast<std::size_t>(i)] = snapToSubpixel(window[static_cast<std::size_t>(i)].y);
+  }
+  const std::int64_t x0 = out.xFixed[0], x1 = out.xFixed[1], x2 = out.xFixed[2];
+  const std::int64_t y0 = out.yFixed[0], y1 = out.yFixed[1], y2 = out.yFixed[2];
+  // Twice the signed area, positive for counter-clockwise in GL window coordinates (y up).
+  const std::int64_t doubleAreaCcw = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
+  if (doubleAreaCcw == 0) return SetupResult::ZeroArea;
+
+  const bool counterClockwise = doubleAreaCcw > 0;
+  out.frontFacing = (frontFace == FrontFace::Ccw) == counterClockwise;
+  if (cull == CullMode::Back && !out.frontFacing) return SetupResult::CulledBack;
+  if (cull == CullMode::Front && out.frontFacing) return SetupResult::CulledFront;
+
+  // Order the corners clockwise (llvmpipe swaps the first two), so the inside of every edge
+  // is where E > 0.
+  if (counterClockwise) {
+    std::swap(out.xFixed[0], out.xFixed[1]);
+    std::swap(out.yFixed[0], out.yFixed[1]);
+    std::swap(out.corner[0], out.corner[1]);
+  }
+  out.doubleAreaFixed = counterClockwise ? doubleAreaCcw : -doubleAreaCcw;
+
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    const std::int64_t xi = out.xFixed[static_cast<std::size_t>(i)], yi = out.yFixed[static_cast<std::size_t>(i)];
+    const std::int64_t xj = out.xFixed[static_cast<std::size_t>(j)], yj = out.yFixed[static_cast<std::size_t>(j)];
+    const std::int64_t dcdx = yi - yj;
+    const std::int64_t dcdy = xi - xj;
+    EdgeFunction& edge = out.edges[static_cast<std::size_t>(i)];
+    // Left edges (going up in a clockwise triangle) and bottom edges (horizontal, going
+    // left) own the pixel centres exactly on them.
+    edge.ownsPixelsOnIt = dcdx < 0 || (dcdx == 0 && dcdy > 0);
+    edge.c = dcdx * xi - dcdy * yi + (edge.ownsPixelsOnIt ? 1 : 0);
+    edge.stepX = -dcdx * kSubpixelScale;
+    edge.stepY = dcdy * kSubpixelScale;
+  }
+
+  // Bounding box as llvmpipe computes it: x from min X (inclusive) to max X (exclusive); the
+  // same for y.
+  const std::int32_t minX = std::min({out.xFixed[0], out.xFixed[1], out.xFixed[2]});
+  const std::int32_t maxX = std::max({out.xFixed[0], out.xFixed[1], out.xFixed[2]});
+  const std::int32_t minY = std::min({out.yFixed[0], out.yFixed[1], out.yFixed[2]});
+  const std::int32_t maxY = std::max({out.yFixed[0], out.yFixed[1], out.yFixed[2]});
+  out.x0 = std::max(pixelFloor(minX), 0);
+  out.x1 = std::min(pixelFloor(maxX - 1), viewport.width - 1);
+  out.y0 = std::max(pixelFloor(minY), 0);
+  out.y1 = std::min(pixelFloor(maxY - 1), viewport.height - 1);
+  return SetupResult::Ready;
+}
+
+const char* toString(SetupResult result) {
+  switch (result) {
+    case SetupResult::Ready: return "ready";
+    case SetupResult::ZeroArea: return "zero area after snapping";
+    case SetupResult::CulledBack: return "culled (back face)";
+    case SetupResult::CulledFront: return "culled (front face)";
+  }
+  return "?";
+}
+
+}  // namespace twr

@@ -1,0 +1,84 @@
+// Stage 3, setup: divide by w, viewport transform, snap to the sub-pixel grid, face culling,
+// and the three integer edge functions the rasterizer evaluates. Mirrors llvmpipe
+// (lp_setup_tri.c) so that coverage matches GL on llvmpipe pixel for pixel:
+//
+//   x_ndc = x_clip * (1 / w_clip)                 (the reciprocal first, as llvmpipe)
+//   x_win = x_ndc * (W / 2) + W / 2,  y_win = y_ndc * (H / 2) + H / 2   (GL: origin bottom-left)
+//   z_win = 0.5 z_ndc + 0.5
+//   X = rint((x_win - 0.5) * 256),    Y = rint((y_win - 0.5) * 256)     (24.8 fixed point,
+//       round half to even; subtracting the pixel-centre offset first puts pixel (px, py)'s
+//       centre at the integer point (256 px, 256 py))
+//
+// Edge i runs from corner i to corner j = i + 1 (mod 3) of a triangle ordered clockwise in
+// window coordinates (setup swaps corners 0 and 1 of a counter-clockwise one):
+//   E_i(px, py) = (Y_i - Y_j)(X_i - 256 px) - (X_i - X_j)(Y_i - 256 py) + bias_i
+// and pixel (px, py) is covered when E_i > 0 for all three edges. bias_i = 1 for a left edge
+// (Y_i < Y_j) and for a bottom edge (Y_i == Y_j, X_i > X_j), else 0: a pixel centre exactly on
+// an edge belongs to the triangle on its right or above, so a shared edge is covered exactly
+// once (GL's rule on llvmpipe for a bottom-left-origin window).
+//
+// Integer ranges: window coordinates are clamped to +-kMaxWindowCoord = 2^16 px (the guard
+// band keeps real ones within [-2^14, 2^15]), so |X|, |Y| <= 2^24, edge deltas < 2^25, the
+// constant term < 2^51 and E for any pixel of a 2^14 x 2^14 image < 2^52: int64 never overflows.
+#pragma once
+
+#include "scene/conventions.h"
+#include "scene/settings.h"
+
+#include <array>
+#include <cstdint>
+
+namespace twr {
+
+struct Viewport {
+  int width = 0;   // pixels
+  int height = 0;  // pixels
+};
+
+// A vertex after the divide by w and the viewport transform.
+struct WindowVertex {
+  float x = 0.0f, y = 0.0f;  // pixels, GL window coordinates (origin bottom-left)
+  float z = 0.0f;            // window depth 0.5 z_ndc + 0.5 (not yet clamped)
+  float invW = 0.0f;         // 1 / w_clip, for perspective-correct interpolation
+};
+
+// Largest |window coordinate| setup snaps (pixels, inclusive); see the range note above.
+inline constexpr float kMaxWindowCoord = 65536.0f;
+
+// Requires w_clip > 0 (the clipper guarantees w >= kMinClipW).
+WindowVertex windowFromClip(const vec4& posClip, const Viewport& viewport);
+
+// Window coordinate to 24.8 fixed point, pixel-centre offset removed (clamped to the range).
+std::int32_t snapToSubpixel(float windowCoord);
+
+// E(px, py) = c + stepX * px + stepY * py; the pixel is covered when E > 0 for all edges.
+struct EdgeFunction {
+  std::int64_t c = 0;
+  std::int64_t stepX = 0;  // -(Y_i - Y_j) * 256
+  std::int64_t stepY = 0;  //  (X_i - X_j) * 256
+  bool ownsPixelsOnIt = false;  // left or bottom edge (bias 1)
+
+  std::int64_t at(int px, int py) const { return c + stepX * px + stepY * py; }
+};
+
+enum class SetupResult { Ready, ZeroArea, CulledBack, CulledFront };
+
+struct TriangleSetup {
+  std::array<std::int32_t, 3> xFixed{}, yFixed{};  // 1/256 px, pixel-centre offset removed
+  std::array<int, 3> corner{0, 1, 2};              // input vertex of each corner (0/1 may swap)
+  std::array<EdgeFunction, 3> edges;
+  std::int64_t doubleAreaFixed = 0;  // twice the snapped area, 1/65536 px^2, > 0 once ordered
+  bool frontFacing = true;
+  // Pixels that may be covered (inclusive), clipped to the viewport; empty when x0 > x1.
+  int x0 = 0, x1 = -1, y0 = 0, y1 = -1;
+};
+
+// Snaps, orders clockwise, culls and builds the edge functions. Front faces are those
+// counter-clockwise (FrontFace::Ccw) or clockwise (Cw) in GL window coordinates, decided on
+// the snapped positions like llvmpipe; zero snapped area is always rejected.
+SetupResult setupTriangle(const std::array<WindowVertex, 3>& window, CullMode cull, FrontFace frontFace,
+                          const Viewport& viewport, TriangleSetup& out);
+
+const char* toString(SetupResult result);
+
+}  // namespace twr
