@@ -1,44 +1,237 @@
-// First step of the GL path: the entry points exist so the CLI links; rendering follows.
+// The GL renderer: owns its contexts (OSMesa core, and compatibility once immediate-mode
+// lines are asked for) or borrows the caller's, and runs one frame per render():
+// clear, surfaces, TBN lines (colour pass, then mask pass), read-back.
 #include "glrender/gl_renderer.h"
 
+#include "glrender/context_osmesa.h"
+#include "glrender/gl_context.h"
+#include "glrender/gl_program.h"
+#include "glrender/gl_scene_draw.h"
+#include "glrender/gl_targets.h"
+#include "glrender/tbn_lines.h"
+#include "glrender/tbn_lines_core.h"
+#include "glrender/tbn_lines_immediate.h"
+#include "scene/camera.h"
+#include "scene/errors.h"
+#include "scene/image.h"
+
+#include <glad/gl.h>
+
+#include <array>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
 
 namespace twr {
 namespace {
 
+// Everything that belongs to one GL context: GL objects die with their context.
+struct GlDevice {
+  std::unique_ptr<OsMesaContext> osmesa;  // null when drawing in the caller's context
+  GlProcFunction procAddress;
+  GlContextInfo info;
+  ProgramCache programs;
+  RenderTargets targets;
+  std::unique_ptr<ImmediateTbnLines> immediateLines;  // loaded on first use
+
+  GlDevice(std::unique_ptr<OsMesaContext> context, GlProcFunction proc, const std::string& shaderDir)
+      : osmesa(std::move(context)), procAddress(std::move(proc)), programs(ShaderLibrary(shaderDir)) {}
+  GlDevice(const GlDevice&) = delete;
+  GlDevice& operator=(const GlDevice&) = delete;
+  ~GlDevice() {
+    // The members' GL objects are deleted after this body, in this context.
+    if (!osmesa) return;
+    try {
+      osmesa->makeCurrent();
+      loadCoreGl(procAddress, "OSMesa context");
+    } catch (const std::exception&) {
+      // Nothing sensible to do in a destructor; the context goes with the objects.
+    }
+  }
+
+  // Binds the context and points glad's global functions at it (another context, e.g.
+  // a GLFW window, may have loaded them since).
+  void makeCurrent() {
+    if (osmesa) osmesa->makeCurrent();
+    loadCoreGl(procAddress, osmesa ? "OSMesa context" : "current context");
+  }
+};
+
+std::string describeError(GLenum error) {
+  switch (error) {
+    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
+    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
+    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
+    default: return "GL error " + std::to_string(error);
+  }
+}
+
+// A GL error here is a bug in this renderer, not bad input.
+void checkGlErrors(const char* where) {
+  const GLenum error = glGetError();
+  if (error != GL_NO_ERROR) throw std::logic_error(std::string("GL: ") + describeError(error) + " after " + where);
+}
+
+void validateRequest(const Scene& scene, const RenderSettings& settings, int width, int height) {
+  if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide) {
+    throw InputError("GL: image size " + std::to_string(width) + " x " + std::to_string(height) +
+                     ", expected each side in [1, " + std::to_string(kMaxImageSide) + "]");
+  }
+  if (scene.lights.size() > static_cast<std::size_t>(kMaxLights)) {
+    throw InputError("GL: scene '" + scene.sourcePath + "' has " + std::to_string(scene.lights.size()) +
+                     " lights, at most " + std::to_string(kMaxLights) + " are supported");
+  }
+  if (settings.userClipPlanes.size() > static_cast<std::size_t>(kMaxUserClipPlanes)) {
+    throw InputError("GL: scene '" + scene.sourcePath + "' has " + std::to_string(settings.userClipPlanes.size()) +
+                     " user clip planes, at most " + std::to_string(kMaxUserClipPlanes) + " are supported");
+  }
+  if (settings.tbnLines.enabled && !(settings.tbnLines.length >= 0.0f && std::isfinite(settings.tbnLines.length))) {
+    throw InputError("GL: tbn_lines.length " + std::to_string(settings.tbnLines.length) +
+                     ", expected a finite length >= 0 in world units");
+  }
+}
+
 class GlRenderer final : public Renderer {
  public:
   explicit GlRenderer(const GlOptions& options) : options_(options) {}
+
   std::string name() const override { return "gl"; }
 
-  RenderOutput render(const Scene& scene, const RenderSettings&, int width, int height) override {
-    RenderOutput out;
-    out.width = width;
-    out.height = height;
-    const std::size_t pixelCount = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-    out.rgba.resize(pixelCount * 4);
-    for (std::size_t i = 0; i < pixelCount; ++i) {
-      for (int c = 0; c < 3; ++c) {
-        const float v = glm::clamp(scene.output.background[c], 0.0f, 1.0f);
-        out.rgba[i * 4 + static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(std::lround(v * 255.0f));
-      }
-      out.rgba[i * 4 + 3] = 0;
+  RenderOutput render(const Scene& scene, const RenderSettings& settings, int width, int height) override {
+    validateRequest(scene, settings, width, height);
+    const bool immediateLines = settings.tbnLines.enabled && settings.tbnLines.mode == LineMode::Immediate;
+    GlDevice& device = deviceFor(immediateLines);
+    device.makeCurrent();
+    if (immediateLines && !device.immediateLines) {
+      device.immediateLines = std::make_unique<ImmediateTbnLines>(device.procAddress);
     }
-    out.depth.assign(pixelCount, 1.0f);
-    out.triangleId.assign(pixelCount, kNoTriangle);
-    out.lineMask.assign(pixelCount, 0);
+
+    // Keep the caller's framebuffer and viewport when drawing in its context.
+    GLint previousDrawFramebuffer = 0, previousReadFramebuffer = 0;
+    std::array<GLint, 4> previousViewport{};
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousDrawFramebuffer);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previousReadFramebuffer);
+    glGetIntegerv(GL_VIEWPORT, previousViewport.data());
+
+    const auto start = std::chrono::steady_clock::now();
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    const mat4 viewFromWorldMatrix = viewFromWorld(scene.camera);
+    const mat4 clipFromViewMatrix = clipFromView(scene.camera, aspect);
+    const mat4 clipFromWorld = clipFromViewMatrix * viewFromWorldMatrix;
+    const std::vector<DrawItem> items = flattenScene(scene);
+
+    device.targets.prepare(width, height);
+    device.targets.bind();
+    device.targets.clear(scene.output.background);
+    device.targets.drawSurfaces();
+    const SceneDrawStats drawStats = drawScene(device.programs, scene, settings, items, clipFromWorld);
+    checkGlErrors("drawing the scene");
+
+    if (settings.tbnLines.enabled) {
+      drawLines(device, items, settings, viewFromWorldMatrix, clipFromViewMatrix, clipFromWorld);
+      checkGlErrors("drawing the TBN lines");
+    }
+    // Leave nothing enabled that a caller's shaders do not expect.
+    for (int j = 0; j < kMaxUserClipPlanes; ++j) glDisable(static_cast<GLenum>(GL_CLIP_DISTANCE0 + j));
+    glDisable(GL_DEPTH_CLAMP);
+    glUseProgram(0);
+    glFinish();
+
+    RenderOutput out;
+    device.targets.readBack(out);
+    checkGlErrors("reading back");
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(previousDrawFramebuffer));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(previousReadFramebuffer));
+    glViewport(previousViewport[0], previousViewport[1], previousViewport[2], previousViewport[3]);
+
+    out.stats.trianglesIn = drawStats.trianglesIn;
+    out.stats.pixelsShaded = drawStats.samplesPassed;
+    out.stats.milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return out;
   }
 
  private:
+  GlDevice& deviceFor(bool compatibility) {
+    if (options_.currentContextLoader) {
+      if (!current_) {
+        const GlProcLoader loader = options_.currentContextLoader;
+        current_ = std::make_unique<GlDevice>(nullptr, [loader](const char* name) { return loader(name); },
+                                              options_.shaderDir);
+        current_->makeCurrent();
+        current_->info = describeCurrentContext();
+        report(*current_, "current context");
+      }
+      return *current_;
+    }
+    std::unique_ptr<GlDevice>& slot = compatibility ? compatibility_ : core_;
+    if (!slot) {
+      OsMesaContextDesc desc;
+      desc.library = options_.osmesaLibrary;
+      desc.compatibility = compatibility;
+      desc.fastSampling = options_.fastSampling;
+      auto context = std::make_unique<OsMesaContext>(desc);
+      OsMesaContext* raw = context.get();
+      auto device = std::make_unique<GlDevice>(std::move(context),
+                                               [raw](const char* name) { return raw->procAddress(name); },
+                                               options_.shaderDir);
+      device->makeCurrent();
+      device->info = describeCurrentContext();
+      report(*device, compatibility ? "OSMesa 3.3 compatibility context" : "OSMesa 3.3 core context");
+      slot = std::move(device);
+    }
+    return *slot;
+  }
+
+  void report(const GlDevice& device, const char* what) const {
+    if (!options_.verbose) return;
+    const char* perf = std::getenv("GALLIVM_PERF");
+    std::fprintf(stderr, "gl: %s: GL_VERSION %s, GL_RENDERER %s, %s profile; texture sampling %s (GALLIVM_PERF=%s)\n",
+                 what, device.info.version.c_str(), device.info.renderer.c_str(),
+                 device.info.compatibility ? "compatibility" : "core",
+                 device.osmesa ? osmesaSamplingMode().c_str() : "as the driver chooses", perf ? perf : "");
+  }
+
+  void drawLines(GlDevice& device, const std::vector<DrawItem>& items, const RenderSettings& settings,
+                 const mat4& viewFromWorldMatrix, const mat4& clipFromViewMatrix, const mat4& clipFromWorld) {
+    const std::vector<TbnLineVertex> lines = buildTbnLines(items, settings);
+    if (lines.empty()) return;
+    // Lines are tested against the surfaces but leave the depth buffer (and so the
+    // read-back depth) as the surfaces made it; user clip planes do not cut them.
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_CULL_FACE);
+    for (int j = 0; j < kMaxUserClipPlanes; ++j) glDisable(static_cast<GLenum>(GL_CLIP_DISTANCE0 + j));
+    if (settings.tbnLines.mode == LineMode::Immediate) {
+      device.targets.drawLineColour();
+      device.immediateLines->draw(lines, clipFromViewMatrix, viewFromWorldMatrix, false);
+      device.targets.drawLineMask();
+      device.immediateLines->draw(lines, clipFromViewMatrix, viewFromWorldMatrix, true);
+    } else {
+      const CoreTbnLines coreLines(lines);
+      device.targets.drawLineColour();
+      coreLines.draw(device.programs, clipFromWorld, false);
+      device.targets.drawLineMask();
+      coreLines.draw(device.programs, clipFromWorld, true);
+    }
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+  }
+
   GlOptions options_;
+  std::unique_ptr<GlDevice> core_;           // OSMesa core profile
+  std::unique_ptr<GlDevice> compatibility_;  // OSMesa compatibility profile
+  std::unique_ptr<GlDevice> current_;        // the caller's context
 };
 
 }  // namespace
 
 std::unique_ptr<Renderer> makeGlRenderer(const GlOptions& options) { return std::make_unique<GlRenderer>(options); }
 
-std::string glVersionString() { return ""; }
-std::string glRendererString() { return ""; }
+std::string glSamplingMode() { return osmesaSamplingMode(); }
 
 }  // namespace twr

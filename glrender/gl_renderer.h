@@ -1,5 +1,6 @@
 // The OpenGL 3.3 renderer behind the Renderer interface. Headless through OSMesa
-// (llvmpipe); the GUI renders through its own GLFW context instead.
+// (llvmpipe) by default; the GUI can instead draw in its own current GLFW context
+// (GlOptions::currentContextLoader, see glrender/context_glfw.h).
 #pragma once
 
 #include "scene/renderer.h"
@@ -9,21 +10,36 @@
 
 namespace twr {
 
+// A GL entry point and a function that finds one by name (glfwGetProcAddress has this type).
+using GlProc = void (*)();
+using GlProcLoader = GlProc (*)(const char* name);
+
 struct GlOptions {
   bool verbose = false;  // print GL_VERSION / GL_RENDERER on stderr
   // llvmpipe's fast texture path (8-bit bilinear weights, one LOD per quad). Off by default
   // for a fair comparison: GALLIVM_PERF=no_aos_sampling,no_quad_lod is set before the
-  // first context is created unless this is true.
+  // first context is created unless this is true. llvmpipe reads the variable once per
+  // process, so the first OSMesa context fixes the mode for the whole process.
   bool fastSampling = false;
   std::string shaderDir;  // empty: embedded shaders; else load shaders from this folder
+  // The OSMesa library, opened at run time so a missing library is a clean error.
+  std::string osmesaLibrary = "libOSMesa.so.8";
+  // Non-null: draw in the caller's current context (e.g. a GLFW window) loaded through
+  // this function instead of creating OSMesa contexts. Immediate-mode TBN lines then
+  // need that context to be a compatibility profile.
+  GlProcLoader currentContextLoader = nullptr;
 };
 
 // Throws InputError (exit 2) when OSMesa is missing, the context cannot be created or a
-// shader fails to compile or link (with the GLSL log and file/line).
+// shader fails to compile or link (with the GLSL log and file/line). Contexts are created
+// on the first render (core 3.3; compatibility 3.3 once immediate-mode lines are asked for).
 std::unique_ptr<Renderer> makeGlRenderer(const GlOptions& options = {});
 
 // GL_VERSION and GL_RENDERER of the last created context ("" before one exists).
 std::string glVersionString();
 std::string glRendererString();
+// "precise" or "fast": how llvmpipe samples textures in this process ("" before the first
+// OSMesa context exists). Precise means GALLIVM_PERF held no_aos_sampling and no_quad_lod.
+std::string glSamplingMode();
 
 }  // namespace twr

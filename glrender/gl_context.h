@@ -1,0 +1,28 @@
+// Loading glad's core 3.3 entry points into whatever context is current (OSMesa or GLFW),
+// and what that context says about itself.
+#pragma once
+
+#include "glrender/gl_renderer.h"
+
+#include <functional>
+#include <string>
+
+namespace twr {
+
+using GlProcFunction = std::function<GlProc(const char* name)>;
+
+// Loads the global glad pointers for the current context. Throws InputError when the
+// context does not offer OpenGL 3.3; `what` names the context in the message.
+void loadCoreGl(const GlProcFunction& procAddress, const std::string& what);
+
+struct GlContextInfo {
+  std::string version;   // GL_VERSION
+  std::string renderer;  // GL_RENDERER
+  bool compatibility = false;  // GL_CONTEXT_PROFILE_MASK has the compatibility bit
+};
+
+// Queries the current context (glad must be loaded) and remembers the answer for
+// glVersionString() / glRendererString().
+GlContextInfo describeCurrentContext();
+
+}  // namespace twr

@@ -1,0 +1,163 @@
+#include "glrender/gl_program.h"
+
+#include "glrender/embedded_shaders.h"
+#include "scene/conventions.h"
+#include "scene/errors.h"
+
+#include <cstdio>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+namespace twr {
+namespace {
+
+// Constants the GLSL shares with the C++ side, so neither writes a second copy.
+std::string sharedConstants() {
+  char buffer[512];
+  std::snprintf(buffer, sizeof buffer,
+                "#define MAX_LIGHTS %d\n"
+                "#define MAX_CLIP_PLANES %d\n"
+                "#define MIN_LENGTH_SQUARED %.9e\n"
+                "#define MIN_ATTENUATION_DENOMINATOR %.9e\n",
+                kMaxLights, kMaxUserClipPlanes, static_cast<double>(kMinLengthSquared),
+                static_cast<double>(kMinAttenuationDenominator));
+  return buffer;
+}
+
+std::string describeDefines(const std::vector<std::string>& defines) {
+  if (defines.empty()) return "no defines";
+  std::string text = "defines:";
+  for (const std::string& define : defines) text += " " + define;
+  return text;
+}
+
+// Source string 0 is the prelude, file k of the stage is source string k + 1, so the
+// log's "S:L(C)" locations name the file (Mesa writes "0:12(7): error: ...").
+std::string assembleStage(const ShaderLibrary& library, const std::vector<std::string>& files,
+                          const std::vector<std::string>& defines) {
+  std::string source = "#version 330 core\n" + sharedConstants();
+  for (const std::string& define : defines) source += "#define " + define + "\n";
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    source += "#line 1 " + std::to_string(i + 1) + "\n";
+    source += library.text(files[i]);
+    if (!source.empty() && source.back() != '\n') source += '\n';
+  }
+  return source;
+}
+
+std::string mapLog(const ShaderLibrary& library, const std::vector<std::string>& files, const std::string& log) {
+  static const std::regex location(R"(^(\d+):(\d+)\((\d+)\):\s*(.*)$)");
+  std::stringstream in(log);
+  std::string line;
+  std::string mapped;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    std::smatch match;
+    if (std::regex_match(line, match, location)) {
+      const std::size_t sourceNumber = std::stoul(match[1].str());
+      const std::string file = sourceNumber == 0 ? "<prelude>"
+                               : sourceNumber <= files.size() ? library.displayName(files[sourceNumber - 1])
+                                                              : "<source " + match[1].str() + ">";
+      mapped += file + ":" + match[2].str() + ":" + match[3].str() + ": " + match[4].str() + "\n";
+    } else {
+      mapped += line + "\n";
+    }
+  }
+  return mapped;
+}
+
+std::string infoLog(GLuint object, bool isProgram) {
+  GLint length = 0;
+  if (isProgram) {
+    glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
+  } else {
+    glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+  }
+  if (length <= 0) return "";
+  std::string log(static_cast<std::size_t>(length), '\0');
+  if (isProgram) {
+    glGetProgramInfoLog(object, length, nullptr, log.data());
+  } else {
+    glGetShaderInfoLog(object, length, nullptr, log.data());
+  }
+  while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
+  return log;
+}
+
+GlShader compileStage(const ShaderLibrary& library, const ProgramDesc& desc, GLenum stage,
+                      const std::vector<std::string>& files) {
+  const std::string source = assembleStage(library, files, desc.defines);
+  GlShader shader(glCreateShader(stage));
+  const char* text = source.c_str();
+  glShaderSource(shader.id(), 1, &text, nullptr);
+  glCompileShader(shader.id());
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    const std::string stageName = stage == GL_VERTEX_SHADER ? "vertex" : "fragment";
+    throw InputError("GL: GLSL " + stageName + " shader of program '" + desc.name + "' (" +
+                     describeDefines(desc.defines) + ") failed to compile:\n" +
+                     mapLog(library, files, infoLog(shader.id(), false)));
+  }
+  return shader;
+}
+
+std::string joinFiles(const ShaderLibrary& library, const std::vector<std::string>& files) {
+  std::string text;
+  for (const std::string& file : files) text += (text.empty() ? "" : ", ") + library.displayName(file);
+  return text;
+}
+
+}  // namespace
+
+std::string ShaderLibrary::text(const std::string& file) const {
+  if (shaderDir_.empty()) {
+    for (const EmbeddedShader& shader : embeddedShaders()) {
+      if (file == shader.name) return shader.source;
+    }
+    throw InputError("GL: no embedded shader named '" + file + "' (is it in shaders/?)");
+  }
+  const std::string path = displayName(file);
+  std::ifstream stream(path, std::ios::binary);
+  if (!stream) throw InputError("GL: cannot read shader file '" + path + "'");
+  std::stringstream text;
+  text << stream.rdbuf();
+  return text.str();
+}
+
+std::string ShaderLibrary::displayName(const std::string& file) const {
+  if (shaderDir_.empty()) return "shaders/" + file + " (embedded)";
+  return shaderDir_ + "/" + file;
+}
+
+GLuint ProgramCache::get(const ProgramDesc& desc) {
+  std::string key = desc.name;
+  for (const auto& list : {desc.vertexFiles, desc.fragmentFiles, desc.defines}) {
+    key += "|";
+    for (const std::string& item : list) key += item + ";";
+  }
+  if (auto found = programs_.find(key); found != programs_.end()) return found->second.id();
+
+  const GlShader vertex = compileStage(library_, desc, GL_VERTEX_SHADER, desc.vertexFiles);
+  const GlShader fragment = compileStage(library_, desc, GL_FRAGMENT_SHADER, desc.fragmentFiles);
+  GlProgram program(glCreateProgram());
+  glAttachShader(program.id(), vertex.id());
+  glAttachShader(program.id(), fragment.id());
+  glLinkProgram(program.id());
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    throw InputError("GL: GLSL program '" + desc.name + "' (" + describeDefines(desc.defines) +
+                     ") failed to link (vertex: " + joinFiles(library_, desc.vertexFiles) +
+                     "; fragment: " + joinFiles(library_, desc.fragmentFiles) + "):\n" +
+                     infoLog(program.id(), true));
+  }
+  glDetachShader(program.id(), vertex.id());
+  glDetachShader(program.id(), fragment.id());
+  const GLuint id = program.id();
+  programs_.emplace(std::move(key), std::move(program));
+  return id;
+}
+
+}  // namespace twr

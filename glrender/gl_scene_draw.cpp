@@ -1,0 +1,233 @@
+#include "glrender/gl_scene_draw.h"
+
+#include "glrender/model_transforms.h"
+#include "scene/errors.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstddef>
+#include <map>
+
+namespace twr {
+namespace {
+
+// layout(location) of the inputs in shaders/phong.vert.
+constexpr GLuint kPosModelLocation = 0;
+constexpr GLuint kNormalModelLocation = 1;
+constexpr GLuint kTangentModelLocation = 2;
+constexpr GLuint kUvLocation = 3;
+
+// Texture units of the material maps.
+constexpr GLint kDiffuseUnit = 0;
+constexpr GLint kNormalUnit = 1;
+constexpr GLint kSpecularUnit = 2;
+
+struct GlMesh {
+  GlVertexArray vertexArray;
+  GlBuffer vertices;
+  GlBuffer indices;
+  GLsizei indexCount = 0;
+};
+
+// One interleaved VBO of twr::Vertex (position, normal, tangent with sign, uv) + an IBO.
+GlMesh uploadMesh(const Mesh& mesh) {
+  GlMesh out{makeGlVertexArray(), makeGlBuffer(), makeGlBuffer(), static_cast<GLsizei>(mesh.indices.size())};
+  glBindVertexArray(out.vertexArray.id());
+  glBindBuffer(GL_ARRAY_BUFFER, out.vertices.id());
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.vertices.size() * sizeof(Vertex)),
+               mesh.vertices.data(), GL_STATIC_DRAW);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, out.indices.id());
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)),
+               mesh.indices.data(), GL_STATIC_DRAW);
+  constexpr GLsizei kStride = sizeof(Vertex);
+  const auto attribute = [&](GLuint location, GLint components, std::size_t offset) {
+    glEnableVertexAttribArray(location);
+    glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, kStride, reinterpret_cast<const void*>(offset));
+  };
+  attribute(kPosModelLocation, 3, offsetof(Vertex, posModel));
+  attribute(kNormalModelLocation, 3, offsetof(Vertex, nModel));
+  attribute(kTangentModelLocation, 4, offsetof(Vertex, tangentModel));
+  attribute(kUvLocation, 2, offsetof(Vertex, uv));
+  glBindVertexArray(0);
+  return out;
+}
+
+// RGBA8, rows bottom first as stored, GL_REPEAT, no mipmaps, no sRGB.
+GlTexture uploadTexture(const Texture& texture, TextureFilter filter) {
+  const std::size_t expectedBytes = static_cast<std::size_t>(texture.width) * static_cast<std::size_t>(texture.height) * 4;
+  if (texture.width <= 0 || texture.height <= 0 || texture.rgba.size() != expectedBytes) {
+    throw InputError("GL: texture '" + texture.path + "' has " + std::to_string(texture.rgba.size()) +
+                     " bytes for " + std::to_string(texture.width) + " x " + std::to_string(texture.height) +
+                     " RGBA8 texels (expected width * height * 4, both sides > 0)");
+  }
+  GlTexture out = makeGlTexture();
+  glBindTexture(GL_TEXTURE_2D, out.id());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, texture.width, texture.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+               texture.rgba.data());
+  const GLint glFilter = filter == TextureFilter::Nearest ? GL_NEAREST : GL_LINEAR;
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, glFilter);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, glFilter);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+  return out;
+}
+
+// GL does not check indices; one past the vertex array would read outside the buffer.
+void checkIndices(const Mesh& mesh, const std::string& nodeName) {
+  const std::uint32_t vertexCount = static_cast<std::uint32_t>(mesh.vertices.size());
+  for (std::uint32_t index : mesh.indices) {
+    if (index >= vertexCount) {
+      throw InputError("GL: mesh of node '" + nodeName + "' has vertex index " + std::to_string(index) +
+                       ", expected below its vertex count " + std::to_string(vertexCount));
+    }
+  }
+  if (mesh.indices.size() % 3 != 0) {
+    throw InputError("GL: mesh of node '" + nodeName + "' has " + std::to_string(mesh.indices.size()) +
+                     " indices, expected a multiple of 3");
+  }
+}
+
+std::string viewDefine(View view) {
+  std::string name(toString(view));
+  std::transform(name.begin(), name.end(), name.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  return "VIEW_" + name;
+}
+
+void applyPipelineState(const RenderSettings& settings) {
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_STENCIL_TEST);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  glFrontFace(settings.frontFace == FrontFace::Ccw ? GL_CCW : GL_CW);
+  if (settings.cull == CullMode::None) {
+    glDisable(GL_CULL_FACE);
+  } else {
+    glEnable(GL_CULL_FACE);
+    glCullFace(settings.cull == CullMode::Back ? GL_BACK : GL_FRONT);
+  }
+  // GL clips near and far together, or with depth clamp neither (docs/gl-path.md).
+  if (settings.clip.near && settings.clip.far) {
+    glDisable(GL_DEPTH_CLAMP);
+  } else {
+    glEnable(GL_DEPTH_CLAMP);
+  }
+  const int planeCount = static_cast<int>(settings.userClipPlanes.size());
+  for (int j = 0; j < kMaxUserClipPlanes; ++j) {
+    if (j < planeCount) {
+      glEnable(static_cast<GLenum>(GL_CLIP_DISTANCE0 + j));
+    } else {
+      glDisable(static_cast<GLenum>(GL_CLIP_DISTANCE0 + j));
+    }
+  }
+}
+
+void setUniforms(GLuint program, const Scene& scene, const RenderSettings& settings, const DrawItem& item,
+                 const mat4& clipFromWorld) {
+  const ModelTransforms transforms = makeModelTransforms(item.worldFromModel, settings.tangentTransform);
+  glUniformMatrix4fv(uniformLocation(program, "worldFromModel"), 1, GL_FALSE, &transforms.worldFromModel[0][0]);
+  glUniformMatrix4fv(uniformLocation(program, "clipFromWorld"), 1, GL_FALSE, &clipFromWorld[0][0]);
+  glUniformMatrix3fv(uniformLocation(program, "normalFromModel"), 1, GL_FALSE, &transforms.normalFromModel[0][0]);
+  glUniformMatrix3fv(uniformLocation(program, "tangentFromModel"), 1, GL_FALSE,
+                     &transforms.tangentFromModel[0][0]);
+  glUniform1f(uniformLocation(program, "mirrorSign"), transforms.mirrorSign);
+  glUniform3fv(uniformLocation(program, "eyePosWorld"), 1, &scene.camera.position.x);
+
+  std::vector<vec3> lightPos, lightDiffuse, lightSpecular, lightAttenuation;
+  for (const PointLight& light : scene.lights) {
+    lightPos.push_back(light.posWorld);
+    lightDiffuse.push_back(light.diffuse);
+    lightSpecular.push_back(light.specular);
+    lightAttenuation.push_back(light.attenuation);
+  }
+  const GLsizei lightCount = static_cast<GLsizei>(scene.lights.size());
+  glUniform1i(uniformLocation(program, "lightCount"), lightCount);
+  if (lightCount > 0) {
+    glUniform3fv(uniformLocation(program, "lightPosWorld"), lightCount, &lightPos[0].x);
+    glUniform3fv(uniformLocation(program, "lightDiffuse"), lightCount, &lightDiffuse[0].x);
+    glUniform3fv(uniformLocation(program, "lightSpecular"), lightCount, &lightSpecular[0].x);
+    glUniform3fv(uniformLocation(program, "lightAttenuation"), lightCount, &lightAttenuation[0].x);
+  }
+  const GLsizei planeCount = static_cast<GLsizei>(settings.userClipPlanes.size());
+  glUniform1i(uniformLocation(program, "userClipPlaneCount"), planeCount);
+  if (planeCount > 0) {
+    glUniform4fv(uniformLocation(program, "userClipPlanes"), planeCount, &settings.userClipPlanes[0].x);
+  }
+
+  const Material& material = *item.material;
+  glUniform3fv(uniformLocation(program, "ka"), 1, &material.ka.x);
+  glUniform3fv(uniformLocation(program, "kd"), 1, &material.kd.x);
+  glUniform3fv(uniformLocation(program, "ks"), 1, &material.ks.x);
+  glUniform1f(uniformLocation(program, "shininess"), material.shininess);
+  glUniform3fv(uniformLocation(program, "ambient"), 1, &scene.ambient.x);
+  glUniform1ui(uniformLocation(program, "firstTriangleId"), item.firstTriangleId);
+  glUniform1i(uniformLocation(program, "diffuseMap"), kDiffuseUnit);
+  glUniform1i(uniformLocation(program, "normalMap"), kNormalUnit);
+  glUniform1i(uniformLocation(program, "specularMap"), kSpecularUnit);
+}
+
+}  // namespace
+
+std::vector<std::string> phongDefines(const Material& material, const RenderSettings& settings) {
+  std::vector<std::string> defines;
+  if (material.diffuseMap) defines.push_back("HAS_DIFFUSE_MAP");
+  if (material.normalMap) defines.push_back("HAS_NORMAL_MAP");
+  if (material.specularMap) defines.push_back("HAS_SPECULAR_MAP");
+  if (settings.lightingSpace == LightingSpace::Tangent) defines.push_back("LIGHTING_TANGENT");
+  defines.push_back(viewDefine(settings.view));
+  return defines;
+}
+
+SceneDrawStats drawScene(ProgramCache& programs, const Scene& scene, const RenderSettings& settings,
+                         const std::vector<DrawItem>& items, const mat4& clipFromWorld) {
+  SceneDrawStats stats;
+  applyPipelineState(settings);
+
+  // Shared textures upload once per render.
+  std::map<const Texture*, GlTexture> textures;
+  const auto bindMap = [&](const std::shared_ptr<const Texture>& map, GLint unit) {
+    if (!map) return;
+    auto found = textures.find(map.get());
+    if (found == textures.end()) {
+      found = textures.emplace(map.get(), uploadTexture(*map, settings.textureFilter)).first;
+    }
+    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
+    glBindTexture(GL_TEXTURE_2D, found->second.id());
+  };
+
+  const GlQuery samples = makeGlQuery();
+  glBeginQuery(GL_SAMPLES_PASSED, samples.id());
+  for (const DrawItem& item : items) {
+    if (item.mesh->indices.empty()) continue;
+    checkIndices(*item.mesh, item.nodeName);
+    stats.trianglesIn += item.mesh->triangleCount();
+    const Material& material = *item.material;
+    const ProgramDesc desc{"phong", {"common.glsl", "phong.vert"}, {"common.glsl", "phong.frag"},
+                           phongDefines(material, settings)};
+    const GLuint program = programs.get(desc);
+    glUseProgram(program);
+    setUniforms(program, scene, settings, item, clipFromWorld);
+    bindMap(material.diffuseMap, kDiffuseUnit);
+    bindMap(material.normalMap, kNormalUnit);
+    bindMap(material.specularMap, kSpecularUnit);
+    const GlMesh mesh = uploadMesh(*item.mesh);
+    glBindVertexArray(mesh.vertexArray.id());
+    glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+    glBindVertexArray(0);
+  }
+  glEndQuery(GL_SAMPLES_PASSED);
+  GLuint64 passed = 0;
+  glGetQueryObjectui64v(samples.id(), GL_QUERY_RESULT, &passed);
+  stats.samplesPassed = passed;
+  glActiveTexture(GL_TEXTURE0);
+  return stats;
+}
+
+}  // namespace twr

@@ -1,0 +1,124 @@
+#include "glrender/gl_targets.h"
+
+#include "scene/errors.h"
+
+#include <array>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+namespace twr {
+namespace {
+
+constexpr GLenum kColourAttachment = GL_COLOR_ATTACHMENT0;
+constexpr GLenum kTriangleIdAttachment = GL_COLOR_ATTACHMENT1;
+constexpr GLenum kLineMaskAttachment = GL_COLOR_ATTACHMENT2;
+
+GlRenderbuffer makeStorage(GLenum internalFormat, int width, int height) {
+  GlRenderbuffer buffer = makeGlRenderbuffer();
+  glBindRenderbuffer(GL_RENDERBUFFER, buffer.id());
+  glRenderbufferStorage(GL_RENDERBUFFER, internalFormat, width, height);
+  return buffer;
+}
+
+// GL rows are bottom first; `out` rows top first. rowBytes bytes per row.
+void flipRows(const std::vector<std::uint8_t>& bottomFirst, std::uint8_t* topFirst, std::size_t rowBytes,
+              int height) {
+  for (int row = 0; row < height; ++row) {
+    const std::size_t sourceRow = static_cast<std::size_t>(height - 1 - row);
+    std::memcpy(topFirst + static_cast<std::size_t>(row) * rowBytes, bottomFirst.data() + sourceRow * rowBytes,
+                rowBytes);
+  }
+}
+
+template <typename T>
+void readAttachment(GLenum attachment, GLenum format, GLenum type, int width, int height, std::size_t channels,
+                    std::vector<T>& out) {
+  const std::size_t rowBytes = static_cast<std::size_t>(width) * channels * sizeof(T);
+  std::vector<std::uint8_t> raw(rowBytes * static_cast<std::size_t>(height));
+  if (attachment != GL_NONE) glReadBuffer(attachment);
+  glReadPixels(0, 0, width, height, format, type, raw.data());
+  out.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * channels);
+  flipRows(raw, reinterpret_cast<std::uint8_t*>(out.data()), rowBytes, height);
+}
+
+}  // namespace
+
+void RenderTargets::prepare(int width, int height) {
+  if (framebuffer_.id() != 0 && width == width_ && height == height_) return;
+  GLint maxRenderbuffer = 0;
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxRenderbuffer);
+  std::array<GLint, 2> maxViewport{};
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport.data());
+  if (width > maxRenderbuffer || height > maxRenderbuffer || width > maxViewport[0] || height > maxViewport[1]) {
+    throw InputError("GL: " + std::to_string(width) + " x " + std::to_string(height) +
+                     " exceeds this context's largest framebuffer (" + std::to_string(maxRenderbuffer) + " px, " +
+                     "viewport " + std::to_string(maxViewport[0]) + " x " + std::to_string(maxViewport[1]) + ")");
+  }
+  width_ = width;
+  height_ = height;
+  colour_ = makeStorage(GL_RGBA8, width, height);
+  triangleId_ = makeStorage(GL_R32UI, width, height);
+  lineMask_ = makeStorage(GL_R8, width, height);
+  depth_ = makeStorage(GL_DEPTH_COMPONENT24, width, height);
+  framebuffer_ = makeGlFramebuffer();
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, kColourAttachment, GL_RENDERBUFFER, colour_.id());
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, kTriangleIdAttachment, GL_RENDERBUFFER, triangleId_.id());
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, kLineMaskAttachment, GL_RENDERBUFFER, lineMask_.id());
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    throw std::runtime_error("GL: offscreen framebuffer incomplete (status " + std::to_string(status) + ")");
+  }
+}
+
+void RenderTargets::bind() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+  glViewport(0, 0, width_, height_);
+}
+
+void RenderTargets::clear(const vec3& background) const {
+  // glClearBuffer addresses draw buffers, so all three attachments are selected first.
+  const std::array<GLenum, 3> all = {kColourAttachment, kTriangleIdAttachment, kLineMaskAttachment};
+  glDrawBuffers(static_cast<GLsizei>(all.size()), all.data());
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_TRUE);
+  const std::array<GLfloat, 4> colour = {background.r, background.g, background.b, 0.0f};
+  glClearBufferfv(GL_COLOR, 0, colour.data());
+  const std::array<GLuint, 4> noTriangle = {kNoTriangle, 0, 0, 0};
+  glClearBufferuiv(GL_COLOR, 1, noTriangle.data());
+  const std::array<GLfloat, 4> noLine = {0.0f, 0.0f, 0.0f, 0.0f};
+  glClearBufferfv(GL_COLOR, 2, noLine.data());
+  const GLfloat farDepth = 1.0f;
+  glClearBufferfv(GL_DEPTH, 0, &farDepth);
+}
+
+void RenderTargets::drawSurfaces() const {
+  const std::array<GLenum, 2> buffers = {kColourAttachment, kTriangleIdAttachment};
+  glDrawBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
+}
+
+void RenderTargets::drawLineColour() const {
+  const GLenum buffer = kColourAttachment;
+  glDrawBuffers(1, &buffer);
+}
+
+void RenderTargets::drawLineMask() const {
+  const GLenum buffer = kLineMaskAttachment;
+  glDrawBuffers(1, &buffer);
+}
+
+void RenderTargets::readBack(RenderOutput& out) const {
+  out.width = width_;
+  out.height = height_;
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.id());
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  readAttachment(kColourAttachment, GL_RGBA, GL_UNSIGNED_BYTE, width_, height_, 4, out.rgba);
+  readAttachment(kTriangleIdAttachment, GL_RED_INTEGER, GL_UNSIGNED_INT, width_, height_, 1, out.triangleId);
+  readAttachment(kLineMaskAttachment, GL_RED, GL_UNSIGNED_BYTE, width_, height_, 1, out.lineMask);
+  for (std::uint8_t& mask : out.lineMask) mask = mask != 0 ? 1 : 0;
+  readAttachment(GL_NONE, GL_DEPTH_COMPONENT, GL_FLOAT, width_, height_, 1, out.depth);
+}
+
+}  // namespace twr

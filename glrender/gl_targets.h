@@ -1,0 +1,42 @@
+// The offscreen framebuffer every GL render draws into, and its read-back into
+// RenderOutput (GL rows are bottom row first; RenderOutput is top row first).
+//   colour attachment 0: RGBA8, cleared to (background, 0); surfaces and lines write alpha 1
+//   colour attachment 1: R32UI triangle id, cleared to kNoTriangle
+//   colour attachment 2: R8 TBN-line mask, cleared to 0, 1 where a line was drawn
+//   depth: DEPTH_COMPONENT24, cleared to 1, read back as float window depth
+#pragma once
+
+#include "glrender/gl_objects.h"
+#include "scene/conventions.h"
+#include "scene/renderer.h"
+
+namespace twr {
+
+class RenderTargets {
+ public:
+  // (Re)creates the attachments when the size changes; throws InputError above the
+  // context's limits (GL_MAX_RENDERBUFFER_SIZE, GL_MAX_VIEWPORT_DIMS).
+  void prepare(int width, int height);
+  // Binds the framebuffer and sets the viewport to the whole target.
+  void bind() const;
+  void clear(const vec3& background) const;
+
+  // Which attachments fragment outputs go to (location 0, 1 in the shaders).
+  void drawSurfaces() const;    // location 0 -> colour, location 1 -> triangle id
+  void drawLineColour() const;  // location 0 -> colour
+  void drawLineMask() const;    // location 0 -> line mask (its red channel)
+
+  // Reads every attachment into `out` (sizes set here), flipping rows to top first.
+  void readBack(RenderOutput& out) const;
+
+ private:
+  int width_ = 0;
+  int height_ = 0;
+  GlFramebuffer framebuffer_;
+  GlRenderbuffer colour_;
+  GlRenderbuffer triangleId_;
+  GlRenderbuffer lineMask_;
+  GlRenderbuffer depth_;
+};
+
+}  // namespace twr

@@ -1,0 +1,26 @@
+// TBN lines from a VBO with a tiny shader (shaders/tbn_lines.*): the core-profile way.
+#pragma once
+
+#include "glrender/gl_program.h"
+#include "glrender/tbn_lines.h"
+
+#include <vector>
+
+namespace twr {
+
+class CoreTbnLines {
+ public:
+  // Uploads `lines` (world space) once; draw() may then run several passes.
+  explicit CoreTbnLines(const std::vector<TbnLineVertex>& lines);
+
+  // Draws into the current draw buffers; maskPass draws every line white (for the
+  // line-mask attachment) through a constant colour attribute.
+  void draw(ProgramCache& programs, const mat4& clipFromWorld, bool maskPass) const;
+
+ private:
+  GlVertexArray vertexArray_;
+  GlBuffer vertices_;
+  GLsizei vertexCount_ = 0;
+};
+
+}  // namespace twr

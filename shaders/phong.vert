@@ -1,0 +1,59 @@
+// Vertex stage of the shading contract (docs/shading.md); C++ twin: softrender/vertex.cpp.
+// Permutation defines: LIGHTING_TANGENT (else world lighting space).
+
+layout(location = 0) in vec3 posModel;
+layout(location = 1) in vec3 nModel;
+layout(location = 2) in vec4 tangentModel;  // w: handedness sign
+layout(location = 3) in vec2 uvModel;
+
+uniform mat4 worldFromModel;
+uniform mat4 clipFromWorld;
+uniform mat3 normalFromModel;   // inverse transpose of the upper 3x3 of worldFromModel
+uniform mat3 tangentFromModel;  // upper 3x3 of worldFromModel, or normalFromModel
+uniform float mirrorSign;       // -1 when det(upper 3x3 of worldFromModel) < 0, else +1
+uniform vec3 eyePosWorld;
+uniform vec3 lightPosWorld[MAX_LIGHTS];
+uniform int lightCount;                       // in [0, MAX_LIGHTS]
+uniform vec4 userClipPlanes[MAX_CLIP_PLANES];  // world space, keeps dot(plane, (p, 1)) >= 0
+uniform int userClipPlaneCount;                // in [0, MAX_CLIP_PLANES]
+
+out vec3 posWorld;
+out vec3 nWorld;
+out vec3 tWorld;
+out vec3 bWorld;
+out vec2 uv;
+#ifdef LIGHTING_TANGENT
+out vec3 lightDirTangent[MAX_LIGHTS];
+out vec3 eyeDirTangent;
+#endif
+
+out float gl_ClipDistance[MAX_CLIP_PLANES];
+
+void main() {
+  posWorld = (worldFromModel * vec4(posModel, 1.0)).xyz;
+  gl_Position = clipFromWorld * vec4(posWorld, 1.0);
+  nWorld = normalFromModel * nModel;
+  tWorld = tangentFromModel * tangentModel.xyz;
+  // A mirroring transform reverses the (T, B, N) frame, so the sign flips with it.
+  float handedness = tangentModel.w * mirrorSign;
+  bWorld = handedness * cross(nWorld, tWorld);
+  uv = uvModel;
+
+#ifdef LIGHTING_TANGENT
+  // The tutorial's vertex shader: light and eye directions in the vertex's tangent frame,
+  // unnormalised so that interpolating them is the tutorial's behaviour.
+  vec3 T = safeNormalize(tWorld);
+  vec3 B = safeNormalize(bWorld);
+  vec3 N = safeNormalize(nWorld);
+  for (int i = 0; i < MAX_LIGHTS; ++i) {
+    vec3 Lw = lightPosWorld[i] - posWorld;
+    lightDirTangent[i] = i < lightCount ? vec3(dot(T, Lw), dot(B, Lw), dot(N, Lw)) : vec3(0.0);
+  }
+  vec3 Ew = eyePosWorld - posWorld;
+  eyeDirTangent = vec3(dot(T, Ew), dot(B, Ew), dot(N, Ew));
+#endif
+
+  for (int j = 0; j < MAX_CLIP_PLANES; ++j) {
+    gl_ClipDistance[j] = j < userClipPlaneCount ? dot(userClipPlanes[j], vec4(posWorld, 1.0)) : 0.0;
+  }
+}
