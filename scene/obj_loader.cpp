@@ -37,15 +37,21 @@ std::string trimmed(const std::string& text) {
   return text.substr(begin, end - begin + 1);
 }
 
-// Our own pass over the vertex-data lines before tinyobjloader parses the file:
-// tinyobjloader reads "nan", "inf" or "abc" as 0 without a word, and we want the line.
-// Also returns the directory of the first mtllib (texture paths are relative to the MTL).
-void prescanObj(const std::string& path, fs::path& mtlDirectory) {
+// What our own pass over the file learns before tinyobjloader parses it.
+struct ObjPrescan {
+  fs::path mtlDirectory;  // of the first mtllib: texture paths are relative to the MTL
+  bool hasMtllib = false;
+};
+
+// Checks the vertex-data lines before tinyobjloader parses the file: tinyobjloader reads
+// "nan", "inf" or "abc" as 0 without a word, and we want the line number.
+ObjPrescan prescanObj(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open the OBJ file");
+  ObjPrescan result;
+  result.mtlDirectory = fs::path(path).parent_path();
   std::string line;
   long long lineNumber = 0;
-  bool mtlFound = false;
   while (std::getline(in, line)) {
     ++lineNumber;
     std::istringstream tokens(line);
@@ -58,11 +64,11 @@ void prescanObj(const std::string& path, fs::path& mtlDirectory) {
       minimumValues = 3;
     } else if (keyword == "vt") {
       minimumValues = 1;
-    } else if (keyword == "mtllib" && !mtlFound) {
-      std::string rest;
-      std::getline(tokens, rest);
-      mtlDirectory = (fs::path(path).parent_path() / fs::path(trimmed(rest))).parent_path();
-      mtlFound = true;
+    } else if (keyword == "mtllib" && !result.hasMtllib) {
+      std::string firstName;  // "mtllib a.mtl b.mtl" may name several; the first decides
+      tokens >> firstName;
+      result.mtlDirectory = (fs::path(path).parent_path() / fs::path(firstName)).parent_path();
+      result.hasMtllib = true;
       continue;
     } else {
       continue;
@@ -84,6 +90,7 @@ void prescanObj(const std::string& path, fs::path& mtlDirectory) {
                        std::to_string(minimumValues) + " numbers, got " + std::to_string(values));
     }
   }
+  return result;
 }
 
 // An OBJ index (1-based, or negative = relative to the lines so far) is in range.
@@ -140,6 +147,16 @@ std::string oneLine(const std::string& text) {
     if (character == '\n') character = ' ';
   }
   return result;
+}
+
+// The first line of tinyobjloader's warnings that contains `needle`, or "".
+std::string warningLine(const std::string& warnings, const std::string& needle) {
+  std::istringstream lines(warnings);
+  std::string line;
+  while (std::getline(lines, line)) {
+    if (line.find(needle) != std::string::npos) return trimmed(line);
+  }
+  return {};
 }
 
 vec3 toVec3(const tinyobj::real_t* values) { return vec3(values[0], values[1], values[2]); }
@@ -209,8 +226,7 @@ struct MeshBuilder {
 }  // namespace
 
 ObjModel loadObj(const std::string& path) {
-  fs::path mtlDirectory = fs::path(path).parent_path();
-  prescanObj(path, mtlDirectory);
+  const ObjPrescan prescan = prescanObj(path);
 
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
@@ -219,10 +235,15 @@ ObjModel loadObj(const std::string& path) {
   if (!reader.ParseFromFile(path, config)) {
     throw InputError(path + ": " + oneLine(reader.Error().empty() ? "cannot parse the OBJ file" : reader.Error()));
   }
-  // A missing MTL file is only a warning to tinyobjloader; a scene that names materials
-  // it cannot find would silently render white, so it is an error here.
-  if (const std::string& warning = reader.Warning(); warning.find("Material file [") != std::string::npos) {
-    throw InputError(path + ": " + oneLine(warning));
+  // A missing MTL file, or a usemtl naming a material the MTL lacks, is only a warning to
+  // tinyobjloader; the model would silently render white, so both are errors here. (A
+  // usemtl in a file without any mtllib is common in exports and just means no material.)
+  if (const std::string missingFile = warningLine(reader.Warning(), "Material file ["); !missingFile.empty()) {
+    throw InputError(path + ": mtllib: " + missingFile);
+  }
+  if (const std::string missingMaterial = warningLine(reader.Warning(), "not found in .mtl");
+      prescan.hasMtllib && !missingMaterial.empty()) {
+    throw InputError(path + ": usemtl: " + missingMaterial);
   }
 
   const tinyobj::attrib_t& attrib = reader.GetAttrib();
@@ -231,7 +252,7 @@ ObjModel loadObj(const std::string& path) {
                                static_cast<long long>(attrib.normals.size() / 3)};
   const std::vector<tinyobj::material_t>& sourceMaterials = reader.GetMaterials();
 
-  TextureCache textures(path, mtlDirectory);
+  TextureCache textures(path, prescan.mtlDirectory);
   std::vector<Material> materials;
   materials.reserve(sourceMaterials.size());
   for (const tinyobj::material_t& source : sourceMaterials) {
