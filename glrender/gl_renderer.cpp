@@ -1,6 +1,6 @@
 // The GL renderer: owns its contexts (OSMesa core, and compatibility once immediate-mode
 // lines are asked for) or borrows the caller's, and runs one frame per render():
-// clear, surfaces, TBN lines (colour pass, then mask pass), read-back.
+// clear, surfaces, TBN lines (colour and line mask in one pass), read-back.
 #include "glrender/gl_renderer.h"
 
 #include "glrender/context_osmesa.h"
@@ -200,26 +200,15 @@ class GlRenderer final : public Renderer {
                  const mat4& viewFromWorldMatrix, const mat4& clipFromViewMatrix, const mat4& clipFromWorld) {
     const std::vector<TbnLineVertex> lines = buildTbnLines(items, settings);
     if (lines.empty()) return;
-    // Lines are tested against the surfaces but leave the depth buffer (and so the
-    // read-back depth) as the surfaces made it; user clip planes do not cut them.
-    glDepthFunc(GL_LEQUAL);
-    glDepthMask(GL_FALSE);
-    glDisable(GL_CULL_FACE);
-    for (int j = 0; j < kMaxUserClipPlanes; ++j) glDisable(static_cast<GLenum>(GL_CLIP_DISTANCE0 + j));
+    // The surfaces' state carries over, as in the tutorial: GL_LESS with depth writes,
+    // the same user clip planes and depth clamp (softrender/debug_lines.h does the same).
+    device.targets.bindForLines();
     if (settings.tbnLines.mode == LineMode::Immediate) {
-      device.targets.drawLineColour();
-      device.immediateLines->draw(lines, clipFromViewMatrix, viewFromWorldMatrix, false);
-      device.targets.drawLineMask();
-      device.immediateLines->draw(lines, clipFromViewMatrix, viewFromWorldMatrix, true);
+      device.immediateLines->draw(lines, clipFromViewMatrix, viewFromWorldMatrix, settings.userClipPlanes);
     } else {
       const CoreTbnLines coreLines(lines);
-      device.targets.drawLineColour();
-      coreLines.draw(device.programs, clipFromWorld, false);
-      device.targets.drawLineMask();
-      coreLines.draw(device.programs, clipFromWorld, true);
+      coreLines.draw(device.programs, clipFromWorld, settings.userClipPlanes);
     }
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
   }
 
   GlOptions options_;

@@ -31,6 +31,13 @@ void flipRows(const std::vector<std::uint8_t>& bottomFirst, std::uint8_t* topFir
   }
 }
 
+void checkComplete(const char* what) {
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    throw std::logic_error(std::string("GL: ") + what + " incomplete (status " + std::to_string(status) + ")");
+  }
+}
+
 template <typename T>
 void readAttachment(GLenum attachment, GLenum format, GLenum type, int width, int height, std::size_t channels,
                     std::vector<T>& out) {
@@ -59,7 +66,7 @@ void RenderTargets::prepare(int width, int height) {
   height_ = height;
   colour_ = makeStorage(GL_RGBA8, width, height);
   triangleId_ = makeStorage(GL_R32UI, width, height);
-  lineMask_ = makeStorage(GL_R8, width, height);
+  lineMask_ = makeStorage(GL_RGBA8, width, height);
   depth_ = makeStorage(GL_DEPTH_COMPONENT24, width, height);
   framebuffer_ = makeGlFramebuffer();
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
@@ -67,10 +74,14 @@ void RenderTargets::prepare(int width, int height) {
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, kTriangleIdAttachment, GL_RENDERBUFFER, triangleId_.id());
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, kLineMaskAttachment, GL_RENDERBUFFER, lineMask_.id());
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
-  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE) {
-    throw std::runtime_error("GL: offscreen framebuffer incomplete (status " + std::to_string(status) + ")");
-  }
+  checkComplete("offscreen framebuffer");
+
+  lineFramebuffer_ = makeGlFramebuffer();
+  glBindFramebuffer(GL_FRAMEBUFFER, lineFramebuffer_.id());
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_.id());
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, lineMask_.id());
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
+  checkComplete("line framebuffer");
 }
 
 void RenderTargets::bind() const {
@@ -99,14 +110,10 @@ void RenderTargets::drawSurfaces() const {
   glDrawBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
 }
 
-void RenderTargets::drawLineColour() const {
-  const GLenum buffer = kColourAttachment;
-  glDrawBuffers(1, &buffer);
-}
-
-void RenderTargets::drawLineMask() const {
-  const GLenum buffer = kLineMaskAttachment;
-  glDrawBuffers(1, &buffer);
+void RenderTargets::bindForLines() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, lineFramebuffer_.id());
+  const std::array<GLenum, 2> buffers = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glDrawBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
 }
 
 void RenderTargets::readBack(RenderOutput& out) const {
@@ -116,8 +123,10 @@ void RenderTargets::readBack(RenderOutput& out) const {
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   readAttachment(kColourAttachment, GL_RGBA, GL_UNSIGNED_BYTE, width_, height_, 4, out.rgba);
   readAttachment(kTriangleIdAttachment, GL_RED_INTEGER, GL_UNSIGNED_INT, width_, height_, 1, out.triangleId);
-  readAttachment(kLineMaskAttachment, GL_RED, GL_UNSIGNED_BYTE, width_, height_, 1, out.lineMask);
-  for (std::uint8_t& mask : out.lineMask) mask = mask != 0 ? 1 : 0;
+  std::vector<std::uint8_t> lineRgba;
+  readAttachment(kLineMaskAttachment, GL_RGBA, GL_UNSIGNED_BYTE, width_, height_, 4, lineRgba);
+  out.lineMask.resize(lineRgba.size() / 4);
+  for (std::size_t i = 0; i < out.lineMask.size(); ++i) out.lineMask[i] = lineRgba[i * 4 + 3] != 0 ? 1 : 0;
   readAttachment(GL_NONE, GL_DEPTH_COMPONENT, GL_FLOAT, width_, height_, 1, out.depth);
 }
 

@@ -2,7 +2,8 @@
 // RenderOutput (GL rows are bottom row first; RenderOutput is top row first).
 //   colour attachment 0: RGBA8, cleared to (background, 0); surfaces and lines write alpha 1
 //   colour attachment 1: R32UI triangle id, cleared to kNoTriangle
-//   colour attachment 2: R8 TBN-line mask, cleared to 0, 1 where a line was drawn
+//   colour attachment 2: RGBA8 TBN-line mask, cleared to 0; lines write their colour with
+//                        alpha 1 here too, so alpha != 0 marks a line pixel
 //   depth: DEPTH_COMPONENT24, cleared to 1, read back as float window depth
 #pragma once
 
@@ -22,9 +23,13 @@ class RenderTargets {
   void clear(const vec3& background) const;
 
   // Which attachments fragment outputs go to (location 0, 1 in the shaders).
-  void drawSurfaces() const;    // location 0 -> colour, location 1 -> triangle id
-  void drawLineColour() const;  // location 0 -> colour
-  void drawLineMask() const;    // location 0 -> line mask (its red channel)
+  void drawSurfaces() const;  // location 0 -> colour, location 1 -> triangle id
+  // Binds the line framebuffer: the same colour, mask and depth storage without the
+  // integer triangle-id attachment (Mesa refuses fixed-function drawing, immediate mode,
+  // into a framebuffer with any integer attachment). location 0 -> colour, location 1 ->
+  // line mask; fixed-function fragments replicate their one colour to both, so one pass
+  // fills colour and mask alike.
+  void bindForLines() const;
 
   // Reads every attachment into `out` (sizes set here), flipping rows to top first.
   void readBack(RenderOutput& out) const;
@@ -33,6 +38,7 @@ class RenderTargets {
   int width_ = 0;
   int height_ = 0;
   GlFramebuffer framebuffer_;
+  GlFramebuffer lineFramebuffer_;
   GlRenderbuffer colour_;
   GlRenderbuffer triangleId_;
   GlRenderbuffer lineMask_;

@@ -22,9 +22,9 @@ std::vector<TbnLineVertex> buildTbnLines(const std::vector<DrawItem>& items, con
         lines.push_back({posWorld, colour});
         lines.push_back({posWorld + lengthWorld * safeNormalize(direction), colour});
       };
+      addSegment(nWorld, kNormalLineColour);
       addSegment(tWorld, kTangentLineColour);
       addSegment(bWorld, kBitangentLineColour);
-      addSegment(nWorld, kNormalLineColour);
     }
   }
   return lines;

@@ -18,7 +18,8 @@ inline constexpr vec3 kTangentLineColour{1.0f, 0.0f, 0.0f};    // T red
 inline constexpr vec3 kBitangentLineColour{0.0f, 1.0f, 0.0f};  // B green
 inline constexpr vec3 kNormalLineColour{0.0f, 0.0f, 1.0f};     // N blue
 
-// Two vertices per segment. For every mesh vertex, in draw-list and vertex order: T, B, N,
+// Two vertices per segment. For every mesh vertex, in draw-list and vertex order: N, T, B
+// (the CPU's order, so overlapping pixels end up alike),
 // each from posWorld to posWorld + lengthWorld * safeNormalize(direction in world space),
 // with the directions the vertex stage computes (so tangent_transform applies). Offsetting
 // in world space keeps the length in world units under any scale.

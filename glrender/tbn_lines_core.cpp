@@ -20,24 +20,22 @@ CoreTbnLines::CoreTbnLines(const std::vector<TbnLineVertex>& lines)
   glEnableVertexAttribArray(kPositionLocation);
   glVertexAttribPointer(kPositionLocation, 3, GL_FLOAT, GL_FALSE, kStride,
                         reinterpret_cast<const void*>(offsetof(TbnLineVertex, posWorld)));
+  glEnableVertexAttribArray(kColourLocation);
   glVertexAttribPointer(kColourLocation, 3, GL_FLOAT, GL_FALSE, kStride,
                         reinterpret_cast<const void*>(offsetof(TbnLineVertex, colour)));
   glBindVertexArray(0);
 }
 
-void CoreTbnLines::draw(ProgramCache& programs, const mat4& clipFromWorld, bool maskPass) const {
+void CoreTbnLines::draw(ProgramCache& programs, const mat4& clipFromWorld,
+                        const std::vector<vec4>& userClipPlanes) const {
   const ProgramDesc desc{"tbn_lines", {"tbn_lines.vert"}, {"tbn_lines.frag"}, {}};
   const GLuint program = programs.get(desc);
   glUseProgram(program);
   glUniformMatrix4fv(uniformLocation(program, "clipFromWorld"), 1, GL_FALSE, &clipFromWorld[0][0]);
+  const GLsizei planeCount = static_cast<GLsizei>(userClipPlanes.size());
+  glUniform1i(uniformLocation(program, "userClipPlaneCount"), planeCount);
+  if (planeCount > 0) glUniform4fv(uniformLocation(program, "userClipPlanes"), planeCount, &userClipPlanes[0].x);
   glBindVertexArray(vertexArray_.id());
-  if (maskPass) {
-    // A disabled attribute array reads the current generic value: white everywhere.
-    glDisableVertexAttribArray(kColourLocation);
-    glVertexAttrib3f(kColourLocation, 1.0f, 1.0f, 1.0f);
-  } else {
-    glEnableVertexAttribArray(kColourLocation);
-  }
   glDrawArrays(GL_LINES, 0, vertexCount_);
   glBindVertexArray(0);
 }

@@ -13,9 +13,9 @@ class CoreTbnLines {
   // Uploads `lines` (world space) once; draw() may then run several passes.
   explicit CoreTbnLines(const std::vector<TbnLineVertex>& lines);
 
-  // Draws into the current draw buffers; maskPass draws every line white (for the
-  // line-mask attachment) through a constant colour attribute.
-  void draw(ProgramCache& programs, const mat4& clipFromWorld, bool maskPass) const;
+  // Draws into the current draw buffers, cut by `userClipPlanes` (world space) when
+  // their GL_CLIP_DISTANCE switches are on.
+  void draw(ProgramCache& programs, const mat4& clipFromWorld, const std::vector<vec4>& userClipPlanes) const;
 
  private:
   GlVertexArray vertexArray_;

@@ -35,7 +35,7 @@ ImmediateTbnLines::ImmediateTbnLines(const GlProcFunction& procAddress) : impl_(
 ImmediateTbnLines::~ImmediateTbnLines() = default;
 
 void ImmediateTbnLines::draw(const std::vector<TbnLineVertex>& lines, const mat4& clipFromView,
-                             const mat4& viewFromWorld, bool maskPass) const {
+                             const mat4& viewFromWorld, const std::vector<vec4>& userClipPlanes) const {
   const GladGLContext& gl = impl_->gl;
   // The tutorial's steps. Its modelview is View * Model with model-space vertices; these
   // vertices are already in world space (see tbn_lines.h), so the modelview is View.
@@ -43,15 +43,18 @@ void ImmediateTbnLines::draw(const std::vector<TbnLineVertex>& lines, const mat4
   gl.LoadMatrixf(&clipFromView[0][0]);
   gl.MatrixMode(GL_MODELVIEW);
   gl.LoadMatrixf(&viewFromWorld[0][0]);
+  // Fixed function clips with glClipPlane planes, given in the coordinates the current
+  // modelview maps from (world here); GL_CLIP_PLANEi is the switch GL_CLIP_DISTANCEi.
+  for (std::size_t j = 0; j < userClipPlanes.size(); ++j) {
+    const vec4& plane = userClipPlanes[j];
+    const GLdouble equation[4] = {plane.x, plane.y, plane.z, plane.w};
+    gl.ClipPlane(static_cast<GLenum>(GL_CLIP_PLANE0 + j), equation);
+  }
   gl.UseProgram(0);
   gl.BindVertexArray(0);
   gl.Begin(GL_LINES);
   for (const TbnLineVertex& vertex : lines) {
-    if (maskPass) {
-      gl.Color3f(1.0f, 1.0f, 1.0f);
-    } else {
-      gl.Color3fv(&vertex.colour.x);
-    }
+    gl.Color3fv(&vertex.colour.x);
     gl.Vertex3fv(&vertex.posWorld.x);
   }
   gl.End();

@@ -23,10 +23,11 @@ class ImmediateTbnLines {
   ImmediateTbnLines(const ImmediateTbnLines&) = delete;
   ImmediateTbnLines& operator=(const ImmediateTbnLines&) = delete;
 
-  // Draws `lines` (world space) into the current draw buffers; maskPass draws them white
-  // (for the line-mask attachment). Leaves the fixed-function matrices loaded.
+  // Draws `lines` (world space) into the current draw buffers, cut by `userClipPlanes`
+  // (world space) through glClipPlane when their switches are on. Leaves the
+  // fixed-function matrices loaded.
   void draw(const std::vector<TbnLineVertex>& lines, const mat4& clipFromView, const mat4& viewFromWorld,
-            bool maskPass) const;
+            const std::vector<vec4>& userClipPlanes) const;
 
  private:
   struct Impl;
