@@ -1,0 +1,91 @@
+#include "compare/report_json.h"
+
+#include "scene/errors.h"
+
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+namespace twr {
+namespace {
+constexpr int kJsonIndent = 2;  // spaces
+}  // namespace
+
+nlohmann::json metricsToJson(const CompareMetrics& m) {
+  nlohmann::json json = nlohmann::json::object();
+  json["width"] = m.width;
+  json["height"] = m.height;
+  json["compared_pixels"] = m.comparedPixels;
+  json["excluded_line_pixels"] = m.excludedLinePixels;
+  json["covered_cpu"] = m.coveredCpu;
+  json["covered_gl"] = m.coveredGl;
+  json["both_covered"] = m.bothCovered;
+  json["coverage_cpu_only"] = m.coverageCpuOnly;
+  json["coverage_gl_only"] = m.coverageGlOnly;
+  json["coverage_mismatch"] = m.coverageMismatch;
+  json["coverage_mismatch_per_10k"] = m.coverageMismatchPer10k();
+  json["max_abs_diff"] = m.maxAbsDiff;
+  json["max_abs_diff_at"] =
+      m.hasMaxAbsDiffAt() ? nlohmann::json::array({m.maxAbsDiffX, m.maxAbsDiffY}) : nlohmann::json(nullptr);
+  json["mean_abs_diff"] = m.meanAbsDiff;
+  json["rmse"] = m.rmse;
+  json["psnr"] = m.psnr;
+  json["over_1"] = m.over1;
+  json["over_3"] = m.over3;
+  json["over_12"] = m.over12;
+  json["over_1_pct"] = m.over1Pct();
+  json["depth_available"] = m.depthAvailable;
+  json["depth_max_diff"] = m.depthMaxDiff;
+  json["nan_pixels"] = m.nanPixels;
+  json["triangle_ids_available"] = m.triangleIdsAvailable;
+  json["class_coverage"] = m.classCoverage;
+  json["class_depth"] = m.classDepth;
+  json["class_shading"] = m.classShading;
+  json["differ_min_levels"] = m.options.differMinLevels;
+  json["depth_tolerance"] = m.options.depthTolerance;
+  return json;
+}
+
+nlohmann::json runInfoToJson(const CompareRunInfo& info) {
+  nlohmann::json json = nlohmann::json::object();
+  if (info.cpuMs) json["cpu_ms"] = *info.cpuMs;
+  if (info.glMs) json["gl_ms"] = *info.glMs;
+  if (info.repeat) json["repeat"] = *info.repeat;
+  if (!info.glRenderer.empty()) json["gl_renderer"] = info.glRenderer;
+  if (!info.glVersion.empty()) json["gl_version"] = info.glVersion;
+  if (!info.glSampling.empty()) json["gl_sampling"] = info.glSampling;
+  return json;
+}
+
+nlohmann::json thresholdsToJson(const Thresholds& thresholds, const std::vector<ThresholdViolation>& violations) {
+  nlohmann::json limits = nlohmann::json::object();
+  for (const ThresholdLimit& limit : setLimits(thresholds)) limits[limit.key] = limit.limit;
+  nlohmann::json violationList = nlohmann::json::array();
+  for (const ThresholdViolation& v : violations) {
+    violationList.push_back({{"key", v.key}, {"value", v.value}, {"limit", v.limit}, {"message", v.message}});
+  }
+  return {{"limits", limits}, {"violations", violationList}, {"passed", violations.empty()}};
+}
+
+void mergeExtraKeys(nlohmann::json& target, const nlohmann::json& extra) {
+  if (!target.is_object() || !extra.is_object()) {
+    throw std::invalid_argument("mergeExtraKeys: both arguments must be JSON objects");
+  }
+  for (const auto& [key, value] : extra.items()) {
+    if (target.contains(key)) throw std::invalid_argument("mergeExtraKeys: key \"" + key + "\" already present");
+  }
+  for (const auto& [key, value] : extra.items()) target[key] = value;
+}
+
+void writeJsonFile(const std::string& path, const nlohmann::json& json) {
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  std::error_code ec;
+  if (!parent.empty()) std::filesystem::create_directories(parent, ec);
+  std::ofstream file(path, std::ios::binary | std::ios::trunc);
+  if (!file) throw InputError(path + ": cannot open for writing");
+  file << json.dump(kJsonIndent) << '\n';
+  file.close();
+  if (!file) throw InputError(path + ": cannot write JSON");
+}
+
+}  // namespace twr

@@ -1,0 +1,142 @@
+#include "compare/thresholds.h"
+
+#include "scene/errors.h"
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+
+namespace twr {
+namespace {
+
+// Issue 5 targets (CPU versus llvmpipe, precise sampling).
+constexpr double kTargetMaxOver1Pct = 0.1;                 // percent of both-covered pixels
+constexpr double kTargetMaxAbsDiff = 3.0;                  // levels
+constexpr double kTargetMaxCoverageMismatchPer10k = 1.0;   // per 10,000 covered pixels, clipped scenes
+// Largest magnitude printed as a plain integer (beyond it %g keeps messages short).
+constexpr double kMaxPlainInteger = 1e15;
+
+std::string formatNumber(double value) {
+  char text[64];
+  if (std::isfinite(value) && value == std::floor(value) && std::abs(value) < kMaxPlainInteger) {
+    std::snprintf(text, sizeof text, "%.0f", value);
+  } else {
+    std::snprintf(text, sizeof text, "%.6g", value);
+  }
+  return text;
+}
+
+struct LimitSpec {
+  const char* key;
+  const char* metricKey;
+  bool isMinimum;
+  std::optional<double> Thresholds::*limit;
+  std::function<double(const CompareMetrics&)> value;
+  // Unit and context after the value, e.g. " levels at (3, 4, top-left origin)".
+  std::function<std::string(const CompareMetrics&)> detail;
+};
+
+const std::vector<LimitSpec>& limitSpecs() {
+  static const std::vector<LimitSpec> specs = {
+      {"max_over_1_pct", "over_1_pct", false, &Thresholds::maxOver1Pct,
+       [](const CompareMetrics& m) { return m.over1Pct(); },
+       [](const CompareMetrics& m) {
+         return "% (" + formatNumber(double(m.over1)) + " of " + formatNumber(double(m.bothCovered)) +
+                " pixels both covered differ by more than 1 level)";
+       }},
+      {"max_over_1", "over_1", false, &Thresholds::maxOver1, [](const CompareMetrics& m) { return double(m.over1); },
+       [](const CompareMetrics&) { return std::string(" pixels"); }},
+      {"max_over_3", "over_3", false, &Thresholds::maxOver3, [](const CompareMetrics& m) { return double(m.over3); },
+       [](const CompareMetrics&) { return std::string(" pixels"); }},
+      {"max_over_12", "over_12", false, &Thresholds::maxOver12,
+       [](const CompareMetrics& m) { return double(m.over12); },
+       [](const CompareMetrics&) { return std::string(" pixels"); }},
+      {"max_abs_diff", "max_abs_diff", false, &Thresholds::maxAbsDiff,
+       [](const CompareMetrics& m) { return double(m.maxAbsDiff); },
+       [](const CompareMetrics& m) {
+         return " levels at (" + std::to_string(m.maxAbsDiffX) + ", " + std::to_string(m.maxAbsDiffY) +
+                ", top-left origin)";
+       }},
+      {"max_mean_abs_diff", "mean_abs_diff", false, &Thresholds::maxMeanAbsDiff,
+       [](const CompareMetrics& m) { return m.meanAbsDiff; },
+       [](const CompareMetrics&) { return std::string(" levels"); }},
+      {"max_rmse", "rmse", false, &Thresholds::maxRmse, [](const CompareMetrics& m) { return m.rmse; },
+       [](const CompareMetrics&) { return std::string(" levels"); }},
+      {"min_psnr", "psnr", true, &Thresholds::minPsnr, [](const CompareMetrics& m) { return m.psnr; },
+       [](const CompareMetrics&) { return std::string(" dB"); }},
+      {"max_coverage_mismatch", "coverage_mismatch", false, &Thresholds::maxCoverageMismatch,
+       [](const CompareMetrics& m) { return double(m.coverageMismatch); },
+       [](const CompareMetrics& m) {
+         return " pixels (" + formatNumber(double(m.coverageCpuOnly)) + " CPU only, " +
+                formatNumber(double(m.coverageGlOnly)) + " GL only)";
+       }},
+      {"max_coverage_mismatch_per_10k", "coverage_mismatch_per_10k", false, &Thresholds::maxCoverageMismatchPer10k,
+       [](const CompareMetrics& m) { return m.coverageMismatchPer10k(); },
+       [](const CompareMetrics& m) {
+         return " per 10,000 (" + formatNumber(double(m.coverageMismatch)) + " of " +
+                formatNumber(double(m.coveredEither())) + " pixels covered by either backend)";
+       }},
+      {"max_depth_max_diff", "depth_max_diff", false, &Thresholds::maxDepthMaxDiff,
+       [](const CompareMetrics& m) { return m.depthMaxDiff; },
+       [](const CompareMetrics&) { return std::string(" (window depth)"); }},
+      {"max_nan_pixels", "nan_pixels", false, &Thresholds::maxNanPixels,
+       [](const CompareMetrics& m) { return double(m.nanPixels); },
+       [](const CompareMetrics&) { return std::string(" pixels with NaN or Inf CPU depth"); }},
+      {"max_class_depth", "class_depth", false, &Thresholds::maxClassDepth,
+       [](const CompareMetrics& m) { return double(m.classDepth); },
+       [](const CompareMetrics&) { return std::string(" pixels where a different surface won"); }},
+  };
+  return specs;
+}
+
+}  // namespace
+
+std::vector<ThresholdLimit> setLimits(const Thresholds& thresholds) {
+  std::vector<ThresholdLimit> limits;
+  for (const LimitSpec& spec : limitSpecs()) {
+    const std::optional<double>& limit = thresholds.*spec.limit;
+    if (limit) limits.push_back({spec.key, spec.metricKey, spec.isMinimum, *limit});
+  }
+  return limits;
+}
+
+void validateThresholds(const Thresholds& thresholds) {
+  for (const ThresholdLimit& limit : setLimits(thresholds)) {
+    if (!std::isfinite(limit.limit) || limit.limit < 0.0) {
+      throw InputError("threshold " + limit.key + " is " + formatNumber(limit.limit) +
+                       ", expected a finite number >= 0");
+    }
+  }
+}
+
+std::vector<ThresholdViolation> checkThresholds(const CompareMetrics& metrics, const Thresholds& thresholds) {
+  std::vector<ThresholdViolation> violations;
+  for (const LimitSpec& spec : limitSpecs()) {
+    const std::optional<double>& limit = thresholds.*spec.limit;
+    if (!limit) continue;
+    const double value = spec.value(metrics);
+    // Written so that a NaN limit or value fails rather than passes silently.
+    const bool passes = spec.isMinimum ? value >= *limit : value <= *limit;
+    if (passes) continue;
+    const std::string message = std::string(spec.metricKey) + " is " + formatNumber(value) + spec.detail(metrics) +
+                                (spec.isMinimum ? ", below the minimum " : ", above the limit ") +
+                                formatNumber(*limit) + " (" + spec.key + ")";
+    violations.push_back({spec.key, value, *limit, message});
+  }
+  return violations;
+}
+
+Thresholds issueTargets(bool trianglesClipped) {
+  Thresholds targets;
+  targets.maxOver1Pct = kTargetMaxOver1Pct;
+  targets.maxAbsDiff = kTargetMaxAbsDiff;
+  targets.maxNanPixels = 0.0;
+  if (trianglesClipped) {
+    targets.maxCoverageMismatchPer10k = kTargetMaxCoverageMismatchPer10k;
+  } else {
+    targets.maxCoverageMismatch = 0.0;
+  }
+  return targets;
+}
+
+}  // namespace twr
