@@ -194,11 +194,12 @@ SceneDrawStats drawScene(ProgramCache& programs, const Scene& scene, const Rende
   std::map<const Texture*, GlTexture> textures;
   const auto bindMap = [&](const std::shared_ptr<const Texture>& map, GLint unit) {
     if (!map) return;
+    // Select the unit first: uploading binds the new texture to the active unit.
+    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
     auto found = textures.find(map.get());
     if (found == textures.end()) {
       found = textures.emplace(map.get(), uploadTexture(*map, settings.textureFilter)).first;
     }
-    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
     glBindTexture(GL_TEXTURE_2D, found->second.id());
   };
 

@@ -192,6 +192,57 @@ TEST(GlRender, TexturesAreUploadedBottomRowFirstAndSampledNearest) {
   expectColour(56, 8, 255, 255, 255);  // top right
 }
 
+std::shared_ptr<Texture> solid(const std::string& name, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+  auto texture = std::make_shared<Texture>();
+  texture->path = name;
+  texture->width = 2;
+  texture->height = 2;
+  for (int i = 0; i < 4; ++i) texture->rgba.insert(texture->rgba.end(), {r, g, b, 255});
+  return texture;
+}
+
+// Each map reaches its own sampler: albedo shows the diffuse map, mapped_normal the
+// normal map, shaded with only specular light the specular map.
+TEST(GlRender, EachMaterialMapIsBoundToItsOwnSampler) {
+  Scene scene = emptyScene();
+  Material material;
+  material.ka = vec3(0.0f);
+  material.kd = vec3(1.0f);
+  material.ks = vec3(0.0f);
+  material.diffuseMap = solid("diffuse", 200, 40, 10);
+  material.normalMap = solid("normal", 128, 128, 255);
+  material.specularMap = solid("specular", 30, 90, 250);
+  scene.materials.push_back(material);
+  addNode(scene, quadAt(-2.0f, -2.0f, -2.0f, 2.0f, 2.0f), "mapped", 0);
+  const auto renderer = makeGlRenderer();
+  RenderSettings settings = scene.settings;
+  settings.view = View::Albedo;
+  RenderOutput out = renderer->render(scene, settings, kSide, kSide);
+  EXPECT_EQ(pixel(out, 32, 32)[0], 200);
+  EXPECT_EQ(pixel(out, 32, 32)[1], 40);
+  EXPECT_EQ(pixel(out, 32, 32)[2], 10);
+
+  // Normal texel (128, 128, 255): 2 * c / 255 - 1 = (0.00392, 0.00392, 1), normalised
+  // (0.00392, 0.00392, 0.99998), encoded (0.50196, 0.50196, 0.99999) -> 128, 128, 255.
+  settings.view = View::MappedNormal;
+  settings.lightingSpace = LightingSpace::Tangent;
+  out = renderer->render(scene, settings, kSide, kSide);
+  EXPECT_EQ(pixel(out, 32, 32)[0], 128);
+  EXPECT_EQ(pixel(out, 32, 32)[1], 128);
+  EXPECT_EQ(pixel(out, 32, 32)[2], 255);
+
+  // Only specular: ks = 1, shininess 0 makes pow(RdotV, 0) = 1 wherever N.L > 0, the light
+  // at the eye with If = 1: colour = specScale = the specular texel.
+  scene.materials[0].kd = vec3(0.0f);
+  scene.materials[0].ks = vec3(1.0f);
+  scene.materials[0].shininess = 0.0f;
+  settings.view = View::Shaded;
+  out = renderer->render(scene, settings, kSide, kSide);
+  EXPECT_EQ(pixel(out, 32, 32)[0], 30);
+  EXPECT_EQ(pixel(out, 32, 32)[1], 90);
+  EXPECT_EQ(pixel(out, 32, 32)[2], 250);
+}
+
 std::shared_ptr<Texture> checker(const std::string& name, std::uint8_t a, std::uint8_t b) {
   auto texture = std::make_shared<Texture>();
   texture->path = name;
