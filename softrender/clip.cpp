@@ -18,10 +18,10 @@ ClipConfig makeClipConfig(const ClipSwitches& frustum, int userPlaneCount, int v
 float clipDistanceTo(const ClipVertex& vertex, int plane, const ClipConfig& config) {
   const vec4& p = vertex.posClip;
   switch (plane) {
-    case kClipPlaneLeft: return (config.frustum.left ? p.w : config.guardBandX * p.w) + p.x;
     case kClipPlaneRight: return (config.frustum.right ? p.w : config.guardBandX * p.w) - p.x;
-    case kClipPlaneBottom: return (config.frustum.bottom ? p.w : config.guardBandY * p.w) + p.y;
+    case kClipPlaneLeft: return (config.frustum.left ? p.w : config.guardBandX * p.w) + p.x;
     case kClipPlaneTop: return (config.frustum.top ? p.w : config.guardBandY * p.w) - p.y;
+    case kClipPlaneBottom: return (config.frustum.bottom ? p.w : config.guardBandY * p.w) + p.y;
     case kClipPlaneNear: return p.w + p.z;
     case kClipPlaneFar: return p.w - p.z;
     case kClipPlaneMinW: return p.w - kMinClipW;
@@ -34,8 +34,11 @@ namespace {
 bool planeActive(int plane, const ClipConfig& config) {
   if (plane == kClipPlaneNear) return config.frustum.near;
   if (plane == kClipPlaneFar) return config.frustum.far;
+  // With near on, near and the side planes already give w >= 0 (w > 0 but at the apex of
+  // the frustum); clipping at kMinClipW as well would cut triangles GL draws.
+  if (plane == kClipPlaneMinW) return !config.frustum.near;
   if (plane >= kClipPlaneUser0) return plane - kClipPlaneUser0 < config.userPlaneCount;
-  return true;  // side planes fall back to the guard band; w >= kMinClipW is always on
+  return true;  // side planes fall back to the guard band
 }
 
 bool finitePosition(const ClipVertex& v) {
@@ -59,12 +62,16 @@ void clipPolygonByPlane(const ClipPolygon& in, int plane, const ClipConfig& conf
     const bool nextInside = dNext >= 0.0f;
     if (currentInside) out.v[static_cast<std::size_t>(out.count++)] = current;
     if (currentInside != nextInside) {
-      // Signs differ, so dOutside - dInside is strictly negative: no division by zero.
-      if (currentInside) {
-        out.v[static_cast<std::size_t>(out.count++)] = interpolateClipVertex(following, current, dNext / (dNext - dCurrent));
-      } else {
-        out.v[static_cast<std::size_t>(out.count++)] = interpolateClipVertex(current, following, dCurrent / (dCurrent - dNext));
-      }
+      // Start from the endpoint nearer to the plane (the smaller |d|), as Mesa does: the new
+      // vertex is then the same whichever way round a shared edge is walked. The signs
+      // differ, so dNear - dFar is never zero.
+      const bool currentNearer = std::fabs(dCurrent) < std::fabs(dNext) ||
+                                 (std::fabs(dCurrent) == std::fabs(dNext) && currentInside);
+      const ClipVertex& nearer = currentNearer ? current : following;
+      const ClipVertex& farther = currentNearer ? following : current;
+      const float dNearer = currentNearer ? dCurrent : dNext;
+      const float dFarther = currentNearer ? dNext : dCurrent;
+      out.v[static_cast<std::size_t>(out.count++)] = interpolateClipVertex(nearer, farther, dNearer / (dNearer - dFarther));
     }
   }
   if (out.count < 3) out.count = 0;
@@ -74,26 +81,27 @@ void clipPolygonByPlane(const ClipPolygon& in, int plane, const ClipConfig& conf
 
 std::uint32_t outcode(const ClipVertex& vertex, const ClipConfig& config) {
   std::uint32_t code = 0;
-  for (int plane = 0; plane < kClipPlaneUser0 + config.userPlaneCount; ++plane) {
+  for (int plane = 0; plane < kClipPlaneCount; ++plane) {
     if (planeActive(plane, config) && clipDistanceTo(vertex, plane, config) < 0.0f) code |= 1u << plane;
   }
   return code;
 }
 
-ClipVertex interpolateClipVertex(const ClipVertex& outside, const ClipVertex& inside, float t) {
+ClipVertex interpolateClipVertex(const ClipVertex& from, const ClipVertex& to, float t) {
   ClipVertex r;
-  r.posClip = outside.posClip + t * (inside.posClip - outside.posClip);
-  r.posWorld = outside.posWorld + t * (inside.posWorld - outside.posWorld);
-  r.nWorld = outside.nWorld + t * (inside.nWorld - outside.nWorld);
-  r.tWorld = outside.tWorld + t * (inside.tWorld - outside.tWorld);
-  r.bWorld = outside.bWorld + t * (inside.bWorld - outside.bWorld);
-  r.uv = outside.uv + t * (inside.uv - outside.uv);
+  r.fromClipper = true;
+  r.posClip = from.posClip + t * (to.posClip - from.posClip);
+  r.posWorld = from.posWorld + t * (to.posWorld - from.posWorld);
+  r.nWorld = from.nWorld + t * (to.nWorld - from.nWorld);
+  r.tWorld = from.tWorld + t * (to.tWorld - from.tWorld);
+  r.bWorld = from.bWorld + t * (to.bWorld - from.bWorld);
+  r.uv = from.uv + t * (to.uv - from.uv);
   for (std::size_t i = 0; i < r.lightDirTangent.size(); ++i) {
-    r.lightDirTangent[i] = outside.lightDirTangent[i] + t * (inside.lightDirTangent[i] - outside.lightDirTangent[i]);
+    r.lightDirTangent[i] = from.lightDirTangent[i] + t * (to.lightDirTangent[i] - from.lightDirTangent[i]);
   }
-  r.eyeDirTangent = outside.eyeDirTangent + t * (inside.eyeDirTangent - outside.eyeDirTangent);
+  r.eyeDirTangent = from.eyeDirTangent + t * (to.eyeDirTangent - from.eyeDirTangent);
   for (std::size_t j = 0; j < r.clipDistance.size(); ++j) {
-    r.clipDistance[j] = outside.clipDistance[j] + t * (inside.clipDistance[j] - outside.clipDistance[j]);
+    r.clipDistance[j] = from.clipDistance[j] + t * (to.clipDistance[j] - from.clipDistance[j]);
   }
   return r;
 }
@@ -138,28 +146,30 @@ bool clipSegment(ClipVertex& a, ClipVertex& b, const ClipConfig& config, std::ui
     planesCut = kClipNonFiniteBit;
     return false;
   }
-  for (int plane = 0; plane < kClipPlaneUser0 + config.userPlaneCount; ++plane) {
+  // tA, tB: how much of the segment each plane cuts off from that end; keep the largest.
+  float tA = 0.0f, tB = 0.0f;
+  for (int plane = 0; plane < kClipPlaneCount; ++plane) {
     if (!planeActive(plane, config)) continue;
     const float dA = clipDistanceTo(a, plane, config);
     const float dB = clipDistanceTo(b, plane, config);
-    const bool insideA = dA >= 0.0f, insideB = dB >= 0.0f;
-    if (insideA && insideB) continue;
+    if (dA >= 0.0f && dB >= 0.0f) continue;
     planesCut |= 1u << plane;
-    if (!insideA && !insideB) return false;
-    if (insideA) {
-      b = interpolateClipVertex(b, a, dB / (dB - dA));
-    } else {
-      a = interpolateClipVertex(a, b, dA / (dA - dB));
-    }
+    if (dA < 0.0f && dB < 0.0f) return false;
+    if (dB < 0.0f) tB = std::fmax(tB, dB / (dB - dA));
+    if (dA < 0.0f) tA = std::fmax(tA, dA / (dA - dB));
+    if (tA + tB >= 1.0f) return false;
   }
+  const ClipVertex originalA = a, originalB = b;
+  if (tA > 0.0f) a = interpolateClipVertex(originalA, originalB, tA);
+  if (tB > 0.0f) b = interpolateClipVertex(originalB, originalA, tB);
   return true;
 }
 
 const char* clipPlaneName(int plane) {
   static_assert(kClipPlaneCount == 15, "one name per plane");
-  static const char* const kNames[kClipPlaneCount] = {"left",  "right", "bottom", "top",   "near",
-                                                      "far",   "w>=eps", "user0", "user1", "user2",
-                                                      "user3", "user4",  "user5", "user6", "user7"};
+  static const char* const kNames[kClipPlaneCount] = {"right", "left",  "top",   "bottom", "near",
+                                                      "far",   "user0", "user1", "user2",  "user3",
+                                                      "user4", "user5", "user6", "user7",  "w>=eps"};
   return plane >= 0 && plane < kClipPlaneCount ? kNames[plane] : "?";
 }
 

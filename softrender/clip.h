@@ -1,12 +1,14 @@
 // Stage 2, clip: Sutherland-Hodgman in homogeneous clip space, before the divide by w.
 //
-// Planes, in the order they are applied (bit i of a plane mask is plane i):
-//   0 left   w + x >= 0      1 right  w - x >= 0
-//   2 bottom w + y >= 0      3 top    w - y >= 0
+// Planes, in the order they are applied (bit i of a plane mask is plane i; the order and the
+// arithmetic follow Mesa's draw module, so clipped triangles snap to the same positions as
+// on llvmpipe):
+//   0 right  w - x >= 0      1 left   w + x >= 0
+//   2 top    w - y >= 0      3 bottom w + y >= 0
 //   4 near   w + z >= 0      5 far    w - z >= 0
-//   6 w >= kMinClipW (never divide by w <= 0; only ever cuts when near is off)
-//   7.. user planes: clipDistance[j] >= 0 (world space, as gl_ClipDistance)
-// A switched-off left/right/bottom/top plane is replaced by its guard-band plane
+//   6..13 user planes: clipDistance[j] >= 0 (world space, as gl_ClipDistance)
+//   14 w >= kMinClipW (only when near is off: never divide by w <= 0)
+// A switched-off right/left/top/bottom plane is replaced by its guard-band plane
 // (g w -/+ x >= 0, g = ClipConfig::guardBandX or Y), so window x and y stay bounded.
 // A switched-off near or far plane is dropped (GL depth clamp); setup clamps depth to [0, 1].
 // A vertex exactly on a plane (distance 0) is inside.
@@ -19,23 +21,23 @@
 
 namespace twr {
 
-inline constexpr int kClipPlaneLeft = 0;
-inline constexpr int kClipPlaneRight = 1;
-inline constexpr int kClipPlaneBottom = 2;
-inline constexpr int kClipPlaneTop = 3;
+inline constexpr int kClipPlaneRight = 0;
+inline constexpr int kClipPlaneLeft = 1;
+inline constexpr int kClipPlaneTop = 2;
+inline constexpr int kClipPlaneBottom = 3;
 inline constexpr int kClipPlaneNear = 4;
 inline constexpr int kClipPlaneFar = 5;
-inline constexpr int kClipPlaneMinW = 6;
-inline constexpr int kClipPlaneUser0 = 7;
-inline constexpr int kClipPlaneCount = kClipPlaneUser0 + kMaxUserClipPlanes;  // 15
+inline constexpr int kClipPlaneUser0 = 6;
+inline constexpr int kClipPlaneMinW = kClipPlaneUser0 + kMaxUserClipPlanes;  // 14
+inline constexpr int kClipPlaneCount = kClipPlaneMinW + 1;                   // 15
 
-// Smallest w the clipper lets through (clip-space units, world units for a perspective
-// camera); far below any sensible near plane, so it only cuts when near is off.
+// Smallest w the clipper lets through when the near plane is off (clip-space units, world
+// units for a perspective camera).
 inline constexpr float kMinClipW = 1e-5f;
 
 // Each plane cuts a convex polygon into a convex polygon with at most one more vertex, so a
-// triangle leaves the clipper with at most 3 + 6 (frustum or guard band) + 1 (w) +
-// kMaxUserClipPlanes (8) = 18 vertices (inclusive bound).
+// triangle leaves the clipper with at most 3 + 6 (frustum or guard band) +
+// kMaxUserClipPlanes (8) + 1 (w) = 18 vertices (inclusive bound).
 inline constexpr int kMaxClipVertices = 3 + kClipPlaneCount;
 
 struct ClipConfig {
@@ -63,11 +65,12 @@ float clipDistanceTo(const ClipVertex& vertex, int plane, const ClipConfig& conf
 // Bit `plane` set for each active plane the vertex is outside of.
 std::uint32_t outcode(const ClipVertex& vertex, const ClipConfig& config);
 
-// The point where edge (outside, inside) crosses a plane: outside + t (inside - outside) with
-// t = dOutside / (dOutside - dInside), every varying interpolated with the same t. Always
-// interpolated from the outside vertex, so an edge shared by two triangles gets the same
-// new vertex whichever way round the triangles walk it (no cracks).
-ClipVertex interpolateClipVertex(const ClipVertex& outside, const ClipVertex& inside, float t);
+// from + t (to - from) for the position and every varying (the new vertex is marked
+// fromClipper). The clipper calls it with `from` the edge endpoint nearer to the plane and
+// t = dFrom / (dFrom - dTo), as Mesa's draw clipper does, so an edge shared by two triangles
+// gets the same new vertex whichever way round the triangles walk it (no cracks), and the
+// snapped positions equal llvmpipe's.
+ClipVertex interpolateClipVertex(const ClipVertex& from, const ClipVertex& to, float t);
 
 // Set in a returned plane mask when a vertex had a non-finite clip position (removed).
 inline constexpr std::uint32_t kClipNonFiniteBit = 1u << 31;
@@ -78,7 +81,7 @@ inline constexpr std::uint32_t kClipNonFiniteBit = 1u << 31;
 std::uint32_t clipTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, const ClipConfig& config,
                            ClipPolygon& out, ClipPolygon& scratch);
 
-// Clips segment (a, b) in place; returns false when nothing is left. `planesCut` gets the
+// Clips segment (a, b) in place (Mesa's line clipper: the largest cut from each end); returns false when nothing is left. `planesCut` gets the
 // mask of planes that cut it.
 bool clipSegment(ClipVertex& a, ClipVertex& b, const ClipConfig& config, std::uint32_t& planesCut);
 

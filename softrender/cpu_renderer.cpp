@@ -56,8 +56,8 @@ struct DrawState {
 template <typename Features>
 void drawClippedTriangle(const DrawState& s, const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2,
                          std::uint32_t triangleId, Framebuffer& fb, RenderStats& stats) {
-  const std::array<WindowVertex, 3> window{windowFromClip(v0.posClip, s.viewport), windowFromClip(v1.posClip, s.viewport),
-                                           windowFromClip(v2.posClip, s.viewport)};
+  const std::array<WindowVertex, 3> window{windowFromClip(v0, s.viewport), windowFromClip(v1, s.viewport),
+                                           windowFromClip(v2, s.viewport)};
   TriangleSetup setup;
   if (setupTriangle(window, s.cull, s.frontFace, s.viewport, setup) != SetupResult::Ready) {
     ++stats.trianglesCulled;

@@ -57,7 +57,7 @@ std::uint64_t drawWorldLine(Framebuffer& fb, vec3 aWorld, vec3 bWorld, vec3 colo
   }
   std::uint32_t planesCut = 0;
   if (!clipSegment(a, b, clipConfig, planesCut)) return 0;
-  return drawWindowLine(fb, windowFromClip(a.posClip, viewport), windowFromClip(b.posClip, viewport), colour);
+  return drawWindowLine(fb, windowFromClip(a, viewport), windowFromClip(b, viewport), colour);
 }
 
 std::uint64_t drawTbnLines(Framebuffer& fb, const ClipVertex& vertex, float length, const VertexUniforms& uniforms,

@@ -1,5 +1,7 @@
 #include "softrender/setup.h"
 
+#include "softrender/clip.h"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -16,14 +18,24 @@ int pixelFloor(std::int32_t fixed) { return static_cast<int>(fixed >> kSubpixelB
 
 }  // namespace
 
-WindowVertex windowFromClip(const vec4& posClip, const Viewport& viewport) {
+WindowVertex windowFromClip(const vec4& posClip, const Viewport& viewport, bool fusedMultiplyAdd) {
   const float halfWidth = 0.5f * static_cast<float>(viewport.width);
   const float halfHeight = 0.5f * static_cast<float>(viewport.height);
+  constexpr float kHalfDepthRange = 0.5f;  // glDepthRange(0, 1): scale and offset 0.5
   WindowVertex out;
-  out.invW = 1.0f / posClip.w;
-  out.x = posClip.x * out.invW * halfWidth + halfWidth;
-  out.y = posClip.y * out.invW * halfHeight + halfHeight;
-  out.z = windowDepthFromNdc(posClip.z * out.invW);
+  // The clipper leaves w > 0 everywhere except the frustum's apex (x = y = z = w = 0, a
+  // degenerate triangle); keep that case finite instead of dividing by zero.
+  out.invW = posClip.w > 0.0f ? 1.0f / posClip.w : 1.0f / kMinClipW;
+  const float xNdc = posClip.x * out.invW, yNdc = posClip.y * out.invW, zNdc = posClip.z * out.invW;
+  if (fusedMultiplyAdd) {
+    out.x = std::fma(xNdc, halfWidth, halfWidth);
+    out.y = std::fma(yNdc, halfHeight, halfHeight);
+    out.z = std::fma(zNdc, kHalfDepthRange, kHalfDepthRange);
+  } else {
+    out.x = xNdc * halfWidth + halfWidth;
+    out.y = yNdc * halfHeight + halfHeight;
+    out.z = zNdc * kHalfDepthRange + kHalfDepthRange;
+  }
   return out;
 }
 

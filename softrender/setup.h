@@ -3,7 +3,9 @@
 // (lp_setup_tri.c) so that coverage matches GL on llvmpipe pixel for pixel:
 //
 //   x_ndc = x_clip * (1 / w_clip)                 (the reciprocal first, as llvmpipe)
-//   x_win = x_ndc * (W / 2) + W / 2,  y_win = y_ndc * (H / 2) + H / 2   (GL: origin bottom-left)
+//   x_win = x_ndc * (W / 2) + W / 2,  y_win = y_ndc * (H / 2) + H / 2   (GL: origin bottom-left;
+//       one fused multiply-add for vertex-stage vertices, a rounded multiply then an add for
+//       clipper-made ones, exactly as llvmpipe computes each kind)
 //   z_win = 0.5 z_ndc + 0.5
 //   X = rint((x_win - 0.5) * 256),    Y = rint((y_win - 0.5) * 256)     (24.8 fixed point,
 //       round half to even; subtracting the pixel-centre offset first puts pixel (px, py)'s
@@ -24,6 +26,7 @@
 
 #include "scene/conventions.h"
 #include "scene/settings.h"
+#include "softrender/vertex.h"
 
 #include <array>
 #include <cstdint>
@@ -45,8 +48,12 @@ struct WindowVertex {
 // Largest |window coordinate| setup snaps (pixels, inclusive); see the range note above.
 inline constexpr float kMaxWindowCoord = 65536.0f;
 
-// Requires w_clip > 0 (the clipper guarantees w >= kMinClipW).
-WindowVertex windowFromClip(const vec4& posClip, const Viewport& viewport);
+// Requires w_clip > 0 (the clipper guarantees w >= kMinClipW). `fusedMultiplyAdd`: see above
+// (true for vertices straight from the vertex stage).
+WindowVertex windowFromClip(const vec4& posClip, const Viewport& viewport, bool fusedMultiplyAdd);
+inline WindowVertex windowFromClip(const ClipVertex& vertex, const Viewport& viewport) {
+  return windowFromClip(vertex.posClip, viewport, !vertex.fromClipper);
+}
 
 // Window coordinate to 24.8 fixed point, pixel-centre offset removed (clamped to the range).
 std::int32_t snapToSubpixel(float windowCoord);

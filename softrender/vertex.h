@@ -39,6 +39,10 @@ struct ClipVertex {
   std::array<vec3, kMaxLights> lightDirTangent{};  // tangent lighting space only
   vec3 eyeDirTangent{0.0f};                        // tangent lighting space only
   std::array<float, kMaxUserClipPlanes> clipDistance{};  // gl_ClipDistance[j]
+  // Made by the clipper rather than the vertex stage. llvmpipe maps such vertices to the
+  // window with a separate multiply and add (Mesa's C clipper) but original vertices with a
+  // fused multiply-add (its JIT vertex shader); setup does the same to snap identically.
+  bool fromClipper = false;
 };
 
 // m * vec4(p, 1) summed column by column from the left, ((c0 x + c1 y) + c2 z) + c3, the
