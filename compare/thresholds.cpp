@@ -31,60 +31,60 @@ struct LimitSpec {
   const char* metricKey;
   bool isMinimum;
   std::optional<double> Thresholds::*limit;
+  const char* unit;  // printed after the value and the limit, e.g. " levels"
   std::function<double(const CompareMetrics&)> value;
-  // Unit and context after the value, e.g. " levels at (3, 4, top-left origin)".
-  std::function<std::string(const CompareMetrics&)> detail;
+  // Printed after the value's unit, e.g. " at (3, 4, top-left origin)"; may be empty.
+  std::function<std::string(const CompareMetrics&)> context;
 };
+
+std::string noContext(const CompareMetrics&) { return {}; }
 
 const std::vector<LimitSpec>& limitSpecs() {
   static const std::vector<LimitSpec> specs = {
-      {"max_over_1_pct", "over_1_pct", false, &Thresholds::maxOver1Pct,
+      {"max_over_1_pct", "over_1_pct", false, &Thresholds::maxOver1Pct, "%",
        [](const CompareMetrics& m) { return m.over1Pct(); },
        [](const CompareMetrics& m) {
-         return "% (" + formatNumber(double(m.over1)) + " of " + formatNumber(double(m.bothCovered)) +
+         return " (" + formatNumber(double(m.over1)) + " of " + formatNumber(double(m.bothCovered)) +
                 " pixels both covered differ by more than 1 level)";
        }},
-      {"max_over_1", "over_1", false, &Thresholds::maxOver1, [](const CompareMetrics& m) { return double(m.over1); },
-       [](const CompareMetrics&) { return std::string(" pixels"); }},
-      {"max_over_3", "over_3", false, &Thresholds::maxOver3, [](const CompareMetrics& m) { return double(m.over3); },
-       [](const CompareMetrics&) { return std::string(" pixels"); }},
-      {"max_over_12", "over_12", false, &Thresholds::maxOver12,
-       [](const CompareMetrics& m) { return double(m.over12); },
-       [](const CompareMetrics&) { return std::string(" pixels"); }},
-      {"max_abs_diff", "max_abs_diff", false, &Thresholds::maxAbsDiff,
+      {"max_over_1", "over_1", false, &Thresholds::maxOver1, " pixels",
+       [](const CompareMetrics& m) { return double(m.over1); }, noContext},
+      {"max_over_3", "over_3", false, &Thresholds::maxOver3, " pixels",
+       [](const CompareMetrics& m) { return double(m.over3); }, noContext},
+      {"max_over_12", "over_12", false, &Thresholds::maxOver12, " pixels",
+       [](const CompareMetrics& m) { return double(m.over12); }, noContext},
+      {"max_abs_diff", "max_abs_diff", false, &Thresholds::maxAbsDiff, " levels",
        [](const CompareMetrics& m) { return double(m.maxAbsDiff); },
        [](const CompareMetrics& m) {
-         return " levels at (" + std::to_string(m.maxAbsDiffX) + ", " + std::to_string(m.maxAbsDiffY) +
+         return " at (" + std::to_string(m.maxAbsDiffX) + ", " + std::to_string(m.maxAbsDiffY) +
                 ", top-left origin)";
        }},
-      {"max_mean_abs_diff", "mean_abs_diff", false, &Thresholds::maxMeanAbsDiff,
-       [](const CompareMetrics& m) { return m.meanAbsDiff; },
-       [](const CompareMetrics&) { return std::string(" levels"); }},
-      {"max_rmse", "rmse", false, &Thresholds::maxRmse, [](const CompareMetrics& m) { return m.rmse; },
-       [](const CompareMetrics&) { return std::string(" levels"); }},
-      {"min_psnr", "psnr", true, &Thresholds::minPsnr, [](const CompareMetrics& m) { return m.psnr; },
-       [](const CompareMetrics&) { return std::string(" dB"); }},
-      {"max_coverage_mismatch", "coverage_mismatch", false, &Thresholds::maxCoverageMismatch,
+      {"max_mean_abs_diff", "mean_abs_diff", false, &Thresholds::maxMeanAbsDiff, " levels",
+       [](const CompareMetrics& m) { return m.meanAbsDiff; }, noContext},
+      {"max_rmse", "rmse", false, &Thresholds::maxRmse, " levels", [](const CompareMetrics& m) { return m.rmse; },
+       noContext},
+      {"min_psnr", "psnr", true, &Thresholds::minPsnr, " dB", [](const CompareMetrics& m) { return m.psnr; },
+       noContext},
+      {"max_coverage_mismatch", "coverage_mismatch", false, &Thresholds::maxCoverageMismatch, " pixels",
        [](const CompareMetrics& m) { return double(m.coverageMismatch); },
        [](const CompareMetrics& m) {
-         return " pixels (" + formatNumber(double(m.coverageCpuOnly)) + " CPU only, " +
+         return " (" + formatNumber(double(m.coverageCpuOnly)) + " CPU only, " +
                 formatNumber(double(m.coverageGlOnly)) + " GL only)";
        }},
       {"max_coverage_mismatch_per_10k", "coverage_mismatch_per_10k", false, &Thresholds::maxCoverageMismatchPer10k,
-       [](const CompareMetrics& m) { return m.coverageMismatchPer10k(); },
+       " per 10,000", [](const CompareMetrics& m) { return m.coverageMismatchPer10k(); },
        [](const CompareMetrics& m) {
-         return " per 10,000 (" + formatNumber(double(m.coverageMismatch)) + " of " +
-                formatNumber(double(m.coveredEither())) + " pixels covered by either backend)";
+         return " (" + formatNumber(double(m.coverageMismatch)) + " of " + formatNumber(double(m.coveredEither())) +
+                " pixels covered by either backend)";
        }},
-      {"max_depth_max_diff", "depth_max_diff", false, &Thresholds::maxDepthMaxDiff,
-       [](const CompareMetrics& m) { return m.depthMaxDiff; },
-       [](const CompareMetrics&) { return std::string(" (window depth)"); }},
-      {"max_nan_pixels", "nan_pixels", false, &Thresholds::maxNanPixels,
+      {"max_depth_max_diff", "depth_max_diff", false, &Thresholds::maxDepthMaxDiff, " (window depth)",
+       [](const CompareMetrics& m) { return m.depthMaxDiff; }, noContext},
+      {"max_nan_pixels", "nan_pixels", false, &Thresholds::maxNanPixels, " pixels",
        [](const CompareMetrics& m) { return double(m.nanPixels); },
-       [](const CompareMetrics&) { return std::string(" pixels with NaN or Inf CPU depth"); }},
-      {"max_class_depth", "class_depth", false, &Thresholds::maxClassDepth,
+       [](const CompareMetrics&) { return std::string(" with a NaN or Inf CPU depth"); }},
+      {"max_class_depth", "class_depth", false, &Thresholds::maxClassDepth, " pixels",
        [](const CompareMetrics& m) { return double(m.classDepth); },
-       [](const CompareMetrics&) { return std::string(" pixels where a different surface won"); }},
+       [](const CompareMetrics&) { return std::string(" where a different surface won"); }},
   };
   return specs;
 }
@@ -118,9 +118,9 @@ std::vector<ThresholdViolation> checkThresholds(const CompareMetrics& metrics, c
     // Written so that a NaN limit or value fails rather than passes silently.
     const bool passes = spec.isMinimum ? value >= *limit : value <= *limit;
     if (passes) continue;
-    const std::string message = std::string(spec.metricKey) + " is " + formatNumber(value) + spec.detail(metrics) +
-                                (spec.isMinimum ? ", below the minimum " : ", above the limit ") +
-                                formatNumber(*limit) + " (" + spec.key + ")";
+    const std::string message = std::string(spec.metricKey) + " is " + formatNumber(value) + spec.unit +
+                                spec.context(metrics) + (spec.isMinimum ? ", below the minimum " : ", above the limit ") +
+                                formatNumber(*limit) + spec.unit + " (" + spec.key + ")";
     violations.push_back({spec.key, value, *limit, message});
   }
   return violations;
