@@ -1,6 +1,248 @@
-// Placeholder until the asset generator lands (issue 2); replaced in this session.
-#include <cstdio>
-int main() {
-  std::fprintf(stderr, "twinraster-assets: not built yet\n");
-  return 2;
+// twinraster-assets: generates the brick textures in assets/textures deterministically.
+//
+// Everything is computed from integer hashes with a fixed seed and IEEE +, -, *, /, sqrt
+// (no std::rand, no libm transcendental functions), so the PNGs are identical on every run;
+// tests/cli/test_assets_tool.cpp checks the committed files byte for byte.
+//
+// Coordinates. Texel (x, y) of an N x N image (y = 0 is the top row of the file) has its
+// centre at u = (x + 0.5) / N, v = 1 - (y + 0.5) / N: textures are stored bottom row first
+// (scene/texture.h), so the file's top row is v = 1. Every pattern is periodic with period
+// 1 in u and v, so the textures tile under GL_REPEAT at any size.
+//
+// Normal map sign convention (tangent space, as docs/shading.md decodes it):
+//   +x = +u (right in the image), +y = +v (UP in the image, "OpenGL style"), +z = out of the
+//   surface. The surface is p(u, v) = (u, v, depth * h(u, v)), so
+//   n = normalize(-depth * dh/du, -depth * dh/dv, 1), encoded as rgb = round((n + 1) / 2 * 255).
+//   A brick's left edge, where h rises with u, therefore leans to -x (red < 128); its bottom
+//   edge, where h rises with v, leans to -y (green < 128).
+// dh/du and dh/dv are central differences over two texels with wrap-around, taken from the
+// 8-bit heights exactly as written to bricks_height.png, so the normal map can be re-derived
+// from that file alone.
+#include "scene/errors.h"
+#include "scene/image.h"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using twr::Image;
+
+// ---- layout, in texture units (1 = the whole texture) ----
+constexpr int kBrickRows = 8;                              // courses per texture; even so odd rows tile
+constexpr int kBricksPerRow = 4;                           // a brick is 1/4 wide, 1/8 tall (2:1)
+constexpr double kBrickWidthUv = 1.0 / kBricksPerRow;
+constexpr double kBrickHeightUv = 1.0 / kBrickRows;
+constexpr double kMortarHalfWidthUv = 0.007;               // half the mortar joint
+constexpr double kBevelWidthUv = 0.012;                    // rounded brick edge, mortar to face
+constexpr double kEdgeJitterUv = 0.004;                    // irregular brick outlines
+// Relief depth: how far a brick face stands above the mortar floor, in texture units.
+// Also written in tests/cli/test_assets_tool.cpp, which re-derives the normal map.
+constexpr double kReliefDepthUv = 0.012;
+
+// ---- heights (unitless, [0, 1]) ----
+constexpr double kMortarHeight = 0.12;
+constexpr double kBrickHeight = 0.78;
+constexpr double kBrickHeightVariation = 0.08;  // per brick, +-
+constexpr double kMortarRoughness = 0.10;       // noise amplitude in the joints
+constexpr double kBrickRoughness = 0.06;        // noise amplitude on the faces
+
+// ---- colours (linear RGB) and specular ----
+constexpr double kBrickColour[3] = {0.56, 0.25, 0.16};
+constexpr double kMortarColour[3] = {0.66, 0.63, 0.58};
+constexpr double kBrickTintVariation = 0.22;  // per brick brightness, +-
+constexpr double kBrickSpecular = 0.28;
+constexpr double kMortarSpecular = 0.05;
+
+constexpr std::uint32_t kSeed = 0x7b1c5a3du;  // fixed: the assets are committed
+constexpr int kDefaultSize = 512;             // pixels
+constexpr int kMinSize = 16;                  // pixels, inclusive
+constexpr int kMaxSize = 4096;                // pixels, inclusive
+
+// 32-bit integer mix (xorshift-multiply), good enough to decorrelate neighbouring lattice points.
+std::uint32_t hash32(std::uint32_t x) {
+  x ^= x >> 16;
+  x *= 0x7feb352du;
+  x ^= x >> 15;
+  x *= 0x846ca68bu;
+  x ^= x >> 16;
+  return x;
+}
+
+std::uint32_t hash3(std::uint32_t a, std::uint32_t b, std::uint32_t c) { return hash32(a ^ hash32(b ^ hash32(c))); }
+
+// Uniform in [0, 1] from a hash.
+double unit(std::uint32_t h) { return static_cast<double>(h) / 4294967295.0; }
+
+// Uniform in [-1, 1] for lattice point (i, j) of layer `layer`.
+double latticeValue(int i, int j, std::uint32_t layer) {
+  return 2.0 * unit(hash3(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j), kSeed + layer)) - 1.0;
+}
+
+double smooth(double t) { return t * t * (3.0 - 2.0 * t); }
+
+int wrap(int i, int n) { return ((i % n) + n) % n; }
+
+// Value noise on a cells x cells lattice that wraps at u, v = 1, in [-1, 1].
+double periodicNoise(double u, double v, int cells, std::uint32_t layer) {
+  const double x = u * cells, y = v * cells;
+  const double fx = std::floor(x), fy = std::floor(y);
+  const int i = static_cast<int>(fx), j = static_cast<int>(fy);
+  const double tx = smooth(x - fx), ty = smooth(y - fy);
+  const double v00 = latticeValue(wrap(i, cells), wrap(j, cells), layer);
+  const double v10 = latticeValue(wrap(i + 1, cells), wrap(j, cells), layer);
+  const double v01 = latticeValue(wrap(i, cells), wrap(j + 1, cells), layer);
+  const double v11 = latticeValue(wrap(i + 1, cells), wrap(j + 1, cells), layer);
+  const double bottom = v00 + (v10 - v00) * tx;
+  const double top = v01 + (v11 - v01) * tx;
+  return bottom + (top - bottom) * ty;
+}
+
+// Sum of octaves, amplitudes 1, 1/2, 1/4, ..., normalised back to [-1, 1].
+double fractalNoise(double u, double v, int baseCells, int octaves, std::uint32_t layer) {
+  double sum = 0.0, amplitude = 1.0, total = 0.0;
+  int cells = baseCells;
+  for (int o = 0; o < octaves; ++o) {
+    sum += amplitude * periodicNoise(u, v, cells, layer + static_cast<std::uint32_t>(o) * 101u);
+    total += amplitude;
+    amplitude *= 0.5;
+    cells *= 2;
+  }
+  return sum / total;
+}
+
+struct BrickSample {
+  double faceWeight;  // 0 in the mortar, 1 on the flat brick face, smooth across the bevel
+  int row, column;    // which brick (column already wrapped into [0, kBricksPerRow))
+};
+
+BrickSample brickAt(double u, double v) {
+  const double rowF = std::floor(v * kBrickRows);
+  const int row = wrap(static_cast<int>(rowF), kBrickRows);
+  // Running bond: every other course shifted by half a brick.
+  const double uShifted = u + ((row % 2 == 1) ? 0.5 * kBrickWidthUv : 0.0);
+  const double columnF = std::floor(uShifted * kBricksPerRow);
+  const int column = wrap(static_cast<int>(columnF), kBricksPerRow);
+  const double du = (uShifted * kBricksPerRow - columnF) * kBrickWidthUv;  // from the brick's left edge
+  const double dv = (v * kBrickRows - rowF) * kBrickHeightUv;              // from the brick's bottom edge
+  const double edgeDistance = std::min(std::min(du, kBrickWidthUv - du), std::min(dv, kBrickHeightUv - dv)) +
+                              kEdgeJitterUv * fractalNoise(u, v, 16, 3, 11u);
+  const double t = std::clamp((edgeDistance - kMortarHalfWidthUv) / kBevelWidthUv, 0.0, 1.0);
+  return {smooth(t), row, column};
+}
+
+// Per-brick random number in [-1, 1], different for each `channel`.
+double brickRandom(const BrickSample& b, std::uint32_t channel) {
+  return 2.0 * unit(hash3(static_cast<std::uint32_t>(b.row), static_cast<std::uint32_t>(b.column), kSeed ^ channel)) - 1.0;
+}
+
+std::uint8_t toByte(double c) { return static_cast<std::uint8_t>(std::floor(std::clamp(c, 0.0, 1.0) * 255.0 + 0.5)); }
+
+void setPixel(Image& image, int x, int y, double r, double g, double b) {
+  std::uint8_t* p = image.pixel(x, y);
+  p[0] = toByte(r);
+  p[1] = toByte(g);
+  p[2] = toByte(b);
+  p[3] = 255;
+}
+
+struct BrickTextures {
+  Image diffuse, height, normal, specular;
+};
+
+BrickTextures generate(int size) {
+  BrickTextures t{twr::makeImage(size, size), twr::makeImage(size, size), twr::makeImage(size, size),
+                  twr::makeImage(size, size)};
+  std::vector<std::uint8_t> height8(static_cast<std::size_t>(size) * size);
+  for (int y = 0; y < size; ++y) {
+    for (int x = 0; x < size; ++x) {
+      const double u = (x + 0.5) / size;
+      const double v = 1.0 - (y + 0.5) / size;
+      const BrickSample b = brickAt(u, v);
+      const double w = b.faceWeight;
+
+      const double mortarHeight = kMortarHeight + kMortarRoughness * fractalNoise(u, v, 32, 4, 21u);
+      const double faceHeight = kBrickHeight + kBrickHeightVariation * brickRandom(b, 1u) +
+                                kBrickRoughness * fractalNoise(u, v, 16, 5, 31u);
+      const double h = mortarHeight + (faceHeight - mortarHeight) * w;
+      height8[static_cast<std::size_t>(y) * size + x] = toByte(h);
+      const double hq = height8[static_cast<std::size_t>(y) * size + x] / 255.0;
+      setPixel(t.height, x, y, hq, hq, hq);
+
+      const double grime = fractalNoise(u, v, 8, 4, 41u);
+      const double brickTint = 1.0 + kBrickTintVariation * brickRandom(b, 2u) + 0.10 * grime;
+      const double redShift = 0.05 * brickRandom(b, 3u);  // some bricks redder, some browner
+      const double brick[3] = {kBrickColour[0] * brickTint + redShift, kBrickColour[1] * brickTint,
+                               kBrickColour[2] * brickTint - 0.5 * redShift};
+      const double mortarTint = 1.0 + 0.08 * fractalNoise(u, v, 32, 2, 51u);
+      double rgb[3];
+      for (int c = 0; c < 3; ++c) rgb[c] = kMortarColour[c] * mortarTint + (brick[c] - kMortarColour[c] * mortarTint) * w;
+      setPixel(t.diffuse, x, y, rgb[0], rgb[1], rgb[2]);
+
+      const double brickSpecular = kBrickSpecular * (1.0 + 0.3 * brickRandom(b, 4u) + 0.3 * grime);
+      const double s = kMortarSpecular + (brickSpecular - kMortarSpecular) * w;
+      setPixel(t.specular, x, y, s, s, s);
+    }
+  }
+
+  // Central differences over two texels (2 / size in texture units), wrapping at the edges.
+  const double texelsToUv = 2.0 / size;
+  const auto h8 = [&](int x, int y) { return height8[static_cast<std::size_t>(wrap(y, size)) * size + wrap(x, size)] / 255.0; };
+  for (int y = 0; y < size; ++y) {
+    for (int x = 0; x < size; ++x) {
+      const double dhdu = (h8(x + 1, y) - h8(x - 1, y)) / texelsToUv;
+      const double dhdv = (h8(x, y - 1) - h8(x, y + 1)) / texelsToUv;  // row y - 1 is higher v
+      const double nx = -kReliefDepthUv * dhdu, ny = -kReliefDepthUv * dhdv, nz = 1.0;
+      const double length = std::sqrt(nx * nx + ny * ny + nz * nz);  // >= 1, never zero
+      setPixel(t.normal, x, y, 0.5 * (nx / length + 1.0), 0.5 * (ny / length + 1.0), 0.5 * (nz / length + 1.0));
+    }
+  }
+  return t;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "twinraster-assets: writes the brick textures (bricks_diffuse.png, bricks_height.png, "
+      "bricks_normal.png, bricks_specular.png) deterministically into DIR.\n"
+      "The normal map is tangent space, +x = +u, +y = +v (up in the image), encoded (n + 1) / 2.\n"
+      "Exit codes: 0 ok, 2 bad arguments or a file that cannot be written."};
+  std::string outDir;
+  int size = kDefaultSize;
+  app.add_option("--out", outDir, "Directory to write the PNGs into (created if missing)")->required();
+  app.add_option("--size", size, "Width and height of every texture, in pixels")
+      ->check(CLI::Range(kMinSize, kMaxSize))
+      ->capture_default_str();
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? twr::kExitOk : twr::kExitBadInput;
+  }
+
+  try {
+    const BrickTextures textures = generate(size);
+    const std::filesystem::path dir(outDir);
+    const std::pair<const char*, const Image*> files[] = {{"bricks_diffuse.png", &textures.diffuse},
+                                                          {"bricks_height.png", &textures.height},
+                                                          {"bricks_normal.png", &textures.normal},
+                                                          {"bricks_specular.png", &textures.specular}};
+    for (const auto& [name, image] : files) {
+      const std::string path = (dir / name).string();
+      twr::savePng(path, *image);
+      std::cout << "wrote " << path << " (" << size << "x" << size << ")\n";
+    }
+  } catch (const twr::InputError& e) {
+    std::cerr << "twinraster-assets: error: " << e.what() << "\n";
+    return twr::kExitBadInput;
+  }
+  return twr::kExitOk;
 }
