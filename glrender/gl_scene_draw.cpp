@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstddef>
 #include <map>
 
@@ -75,6 +76,11 @@ GlTexture uploadTexture(const Texture& texture, TextureFilter filter) {
   return out;
 }
 
+// A map without texels is treated as absent, as the CPU does (softrender/shade.cpp).
+bool usableMap(const std::shared_ptr<const Texture>& map) {
+  return map && map->width > 0 && map->height > 0 && !map->rgba.empty();
+}
+
 // GL does not check indices; one past the vertex array would read outside the buffer.
 void checkIndices(const Mesh& mesh, const std::string& nodeName) {
   const std::uint32_t vertexCount = static_cast<std::uint32_t>(mesh.vertices.size());
@@ -140,20 +146,20 @@ void setUniforms(GLuint program, const Scene& scene, const RenderSettings& setti
   glUniform1f(uniformLocation(program, "mirrorSign"), transforms.mirrorSign);
   glUniform3fv(uniformLocation(program, "eyePosWorld"), 1, &scene.camera.position.x);
 
-  std::vector<vec3> lightPos, lightDiffuse, lightSpecular, lightAttenuation;
-  for (const PointLight& light : scene.lights) {
-    lightPos.push_back(light.posWorld);
-    lightDiffuse.push_back(light.diffuse);
-    lightSpecular.push_back(light.specular);
-    lightAttenuation.push_back(light.attenuation);
-  }
+  // The vertex stage reads lightPosWorld[], the fragment stage lights[] (as the C++
+  // VertexUniforms and ShadeUniforms do).
+  std::vector<vec3> lightPos;
+  for (const PointLight& light : scene.lights) lightPos.push_back(light.posWorld);
   const GLsizei lightCount = static_cast<GLsizei>(scene.lights.size());
   glUniform1i(uniformLocation(program, "lightCount"), lightCount);
-  if (lightCount > 0) {
-    glUniform3fv(uniformLocation(program, "lightPosWorld"), lightCount, &lightPos[0].x);
-    glUniform3fv(uniformLocation(program, "lightDiffuse"), lightCount, &lightDiffuse[0].x);
-    glUniform3fv(uniformLocation(program, "lightSpecular"), lightCount, &lightSpecular[0].x);
-    glUniform3fv(uniformLocation(program, "lightAttenuation"), lightCount, &lightAttenuation[0].x);
+  if (lightCount > 0) glUniform3fv(uniformLocation(program, "lightPosWorld"), lightCount, &lightPos[0].x);
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    const PointLight& light = scene.lights[i];
+    const std::string prefix = "lights[" + std::to_string(i) + "].";
+    glUniform3fv(uniformLocation(program, (prefix + "posWorld").c_str()), 1, &light.posWorld.x);
+    glUniform3fv(uniformLocation(program, (prefix + "diffuse").c_str()), 1, &light.diffuse.x);
+    glUniform3fv(uniformLocation(program, (prefix + "specular").c_str()), 1, &light.specular.x);
+    glUniform3fv(uniformLocation(program, (prefix + "attenuation").c_str()), 1, &light.attenuation.x);
   }
   const GLsizei planeCount = static_cast<GLsizei>(settings.userClipPlanes.size());
   glUniform1i(uniformLocation(program, "userClipPlaneCount"), planeCount);
@@ -165,7 +171,7 @@ void setUniforms(GLuint program, const Scene& scene, const RenderSettings& setti
   glUniform3fv(uniformLocation(program, "ka"), 1, &material.ka.x);
   glUniform3fv(uniformLocation(program, "kd"), 1, &material.kd.x);
   glUniform3fv(uniformLocation(program, "ks"), 1, &material.ks.x);
-  glUniform1f(uniformLocation(program, "shininess"), material.shininess);
+  glUniform1f(uniformLocation(program, "shininess"), std::fmax(material.shininess, 0.0f));
   glUniform3fv(uniformLocation(program, "ambient"), 1, &scene.ambient.x);
   glUniform1ui(uniformLocation(program, "firstTriangleId"), item.firstTriangleId);
   glUniform1i(uniformLocation(program, "diffuseMap"), kDiffuseUnit);
@@ -177,9 +183,9 @@ void setUniforms(GLuint program, const Scene& scene, const RenderSettings& setti
 
 std::vector<std::string> phongDefines(const Material& material, const RenderSettings& settings) {
   std::vector<std::string> defines;
-  if (material.diffuseMap) defines.push_back("HAS_DIFFUSE_MAP");
-  if (material.normalMap) defines.push_back("HAS_NORMAL_MAP");
-  if (material.specularMap) defines.push_back("HAS_SPECULAR_MAP");
+  if (usableMap(material.diffuseMap)) defines.push_back("HAS_DIFFUSE_MAP");
+  if (usableMap(material.normalMap)) defines.push_back("HAS_NORMAL_MAP");
+  if (usableMap(material.specularMap)) defines.push_back("HAS_SPECULAR_MAP");
   if (settings.lightingSpace == LightingSpace::Tangent) defines.push_back("LIGHTING_TANGENT");
   defines.push_back(viewDefine(settings.view));
   return defines;
@@ -193,7 +199,7 @@ SceneDrawStats drawScene(ProgramCache& programs, const Scene& scene, const Rende
   // Shared textures upload once per render.
   std::map<const Texture*, GlTexture> textures;
   const auto bindMap = [&](const std::shared_ptr<const Texture>& map, GLint unit) {
-    if (!map) return;
+    if (!usableMap(map)) return;
     // Select the unit first: uploading binds the new texture to the active unit.
     glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
     auto found = textures.find(map.get());

@@ -1,4 +1,5 @@
-// Helpers both phong stages use; C++ twins in scene/conventions.h and softrender/shade.cpp.
+// Helpers both phong stages use, each with a C++ twin of the same name and body:
+// safeNormalize in scene/conventions.h, phongPow and vectorAsColour in softrender/shade.*.
 // The prelude before this file defines MAX_LIGHTS, MAX_CLIP_PLANES, MIN_LENGTH_SQUARED and
 // MIN_ATTENUATION_DENOMINATOR from the C++ constants (glrender/gl_program.cpp).
 
@@ -11,7 +12,13 @@ vec3 safeNormalize(vec3 v) {
   return v / sqrt(lengthSquared);
 }
 
-// A direction in [-1, 1]^3 shown as a colour in [0, 1]^3.
-vec3 encodeDirection(vec3 v) {
-  return (v + 1.0) / 2.0;
+// pow(x, s) for x >= 0 with 0^s = 0 for s > 0 and 0^0 = 1 (GLSL leaves both undefined).
+float phongPow(float x, float s) {
+  if (!(x > 0.0)) return s > 0.0 ? 0.0 : 1.0;
+  return pow(x, s);
+}
+
+// (v + 1) / 2 with alpha 1: how the debug views show a vector.
+vec4 vectorAsColour(vec3 v) {
+  return vec4((v + 1.0) * 0.5, 1.0);
 }
