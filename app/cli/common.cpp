@@ -26,6 +26,7 @@ void addRenderOptions(CLI::App& cmd, RenderRequest& request) {
       ->check(CLI::Range(1, kMaxImageSide));
   cmd.add_option("--view", request.view, "Debug colour view: " + allViewNames() + " (default: the scene's)");
   cmd.add_option("--cull", request.cull, "Override settings.cull: none|back|front");
+  cmd.add_option("--front-face", request.frontFace, "Override settings.front_face: ccw|cw");
   cmd.add_option("--lighting-space", request.lightingSpace, "Override settings.lighting_space: world|tangent");
   cmd.add_option("--tangent-transform", request.tangentTransform,
                  "Override settings.tangent_transform: model|inverse_transpose");
@@ -38,6 +39,7 @@ Scene loadRequestedScene(const RenderRequest& request) {
   RenderSettings& s = scene.settings;
   applyOverride(request.view, "--view", s.view, allViewNames());
   applyOverride(request.cull, "--cull", s.cull, "none|back|front");
+  applyOverride(request.frontFace, "--front-face", s.frontFace, "ccw|cw");
   applyOverride(request.lightingSpace, "--lighting-space", s.lightingSpace, "world|tangent");
   applyOverride(request.tangentTransform, "--tangent-transform", s.tangentTransform, "model|inverse_transpose");
   applyOverride(request.textureFilter, "--filter", s.textureFilter, "nearest|bilinear");

@@ -14,7 +14,7 @@ struct RenderRequest {
   std::string scenePath;
   std::optional<int> width, height;  // default: the scene's output size
   std::string view;                   // default: the scene's settings.view
-  std::string cull, lightingSpace, tangentTransform, textureFilter;  // optional overrides
+  std::string cull, frontFace, lightingSpace, tangentTransform, textureFilter;  // optional overrides
   bool verbose = false;
 };
 

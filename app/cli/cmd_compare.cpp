@@ -1,0 +1,167 @@
+// `twinraster compare SCENE --out-dir DIR`: render with both backends at the same size,
+// measure the per-pixel difference, write the images and metrics.json, and optionally fail
+// (exit 1) over thresholds.
+#include "app/cli/commands.h"
+#include "app/cli/common.h"
+#include "compare/artifacts.h"
+#include "compare/metrics.h"
+#include "compare/report_json.h"
+#include "compare/thresholds.h"
+#include "glrender/gl_renderer.h"
+#include "scene/errors.h"
+#include "softrender/cpu_renderer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
+namespace twr::cli {
+namespace {
+
+struct CompareArgs {
+  RenderRequest request;
+  std::string outDir;
+  bool json = false;
+  int repeat = 3;
+  bool glFastSampling = false;
+  bool issueTargets = false;
+  Thresholds limits;
+};
+
+double medianOf(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// Renders `repeat` times and keeps the last output; returns the median wall time in ms.
+double renderTimed(Renderer& renderer, const Scene& scene, int width, int height, int repeat, RenderOutput& out) {
+  std::vector<double> ms;
+  for (int i = 0; i < repeat; ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    out = renderer.render(scene, scene.settings, width, height);
+    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  }
+  return medianOf(ms);
+}
+
+void printSummary(const CompareMetrics& m, const nlohmann::json& json, const ArtifactPaths& paths) {
+  std::cout << std::fixed << std::setprecision(3);
+  std::cout << "compared " << m.width << "x" << m.height << ": covered cpu " << m.coveredCpu << ", gl " << m.coveredGl
+            << ", coverage mismatch " << m.coverageMismatch << "\n";
+  std::cout << "  max abs diff " << m.maxAbsDiff << " levels";
+  if (m.maxAbsDiff > 0) std::cout << " at (" << m.maxAbsDiffX << ", " << m.maxAbsDiffY << ")";
+  std::cout << ", mean " << m.meanAbsDiff << ", rmse " << m.rmse << ", psnr " << m.psnr << " dB\n";
+  std::cout << "  pixels over 1 / 3 / 12 levels: " << m.over1 << " / " << m.over3 << " / " << m.over12 << "\n";
+  std::cout << "  differing pixels by cause: coverage " << m.classCoverage << ", depth " << m.classDepth
+            << ", shading " << m.classShading << "; excluded line pixels " << m.excludedLinePixels << "\n";
+  std::cout << "  depth max diff " << std::setprecision(6) << m.depthMaxDiff << ", NaN pixels " << m.nanPixels
+            << "\n";
+  std::cout << std::setprecision(2) << "  time: cpu " << json.value("cpu_ms", 0.0) << " ms, gl "
+            << json.value("gl_ms", 0.0) << " ms (median of " << json.value("repeat", 0) << ")\n";
+  std::cout << "  gl: " << json.value("gl_renderer", std::string()) << ", " << json.value("gl_version", std::string())
+            << ", texture sampling " << json.value("gl_sampling", std::string()) << "\n";
+  std::cout << "wrote " << paths.sideBySide << "\n      " << paths.diff << "\n      " << paths.classes << "\n      "
+            << paths.cpu << "\n      " << paths.gl << "\n      " << paths.metrics << "\n";
+}
+
+void runCompare(CompareArgs& args) {
+  validateThresholds(args.limits);
+  if (args.repeat < 1) throw InputError("--repeat: expected an integer >= 1");
+  const Scene scene = loadRequestedScene(args.request);
+  const int width = requestedWidth(args.request, scene);
+  const int height = requestedHeight(args.request, scene);
+
+  GlOptions glOptions;
+  glOptions.verbose = args.request.verbose;
+  glOptions.fastSampling = args.glFastSampling;
+  std::unique_ptr<Renderer> gl = makeGlRenderer(glOptions);
+  std::unique_ptr<Renderer> cpu = makeCpuRenderer();
+
+  RenderOutput glOut, cpuOut;
+  CompareRunInfo info;
+  info.glMs = renderTimed(*gl, scene, width, height, args.repeat, glOut);
+  info.cpuMs = renderTimed(*cpu, scene, width, height, args.repeat, cpuOut);
+  info.repeat = args.repeat;
+  info.glRenderer = glRendererString();
+  info.glVersion = glVersionString();
+  info.glSampling = glSamplingMode();
+
+  const CompareResult result = compareDetailed(cpuOut, glOut);
+  Thresholds limits = args.limits;
+  if (args.issueTargets) {
+    const Thresholds targets = twr::issueTargets(cpuOut.stats.trianglesClipped > 0);
+    // Explicit options win over the built-in targets.
+    auto fill = [](std::optional<double>& mine, const std::optional<double>& target) {
+      if (!mine) mine = target;
+    };
+    fill(limits.maxOver1Pct, targets.maxOver1Pct);
+    fill(limits.maxAbsDiff, targets.maxAbsDiff);
+    fill(limits.maxNanPixels, targets.maxNanPixels);
+    fill(limits.maxCoverageMismatch, targets.maxCoverageMismatch);
+    fill(limits.maxCoverageMismatchPer10k, targets.maxCoverageMismatchPer10k);
+  }
+  const std::vector<ThresholdViolation> violations = checkThresholds(result.metrics, limits);
+
+  nlohmann::json json = metricsToJson(result.metrics);
+  mergeExtraKeys(json, runInfoToJson(info));
+  mergeExtraKeys(json, {{"scene", args.request.scenePath},
+                        {"view", std::string(toString(scene.settings.view))},
+                        {"triangles_clipped_cpu", cpuOut.stats.trianglesClipped}});
+  mergeExtraKeys(json, {{"thresholds", thresholdsToJson(limits, violations)}});
+  const ArtifactPaths paths = writeCompareArtifacts(args.outDir, cpuOut, glOut, result, json);
+
+  if (args.json) {
+    std::cout << json.dump(2) << "\n";
+  } else {
+    printSummary(result.metrics, json, paths);
+  }
+  for (const ThresholdViolation& v : violations) std::cerr << "twinraster: threshold exceeded: " << v.message << "\n";
+  exitCode() = violations.empty() ? kExitOk : kExitThreshold;
+}
+
+const bool registered = registerCommand(30, [](CLI::App& app) {
+  auto args = std::make_shared<CompareArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "compare",
+      "Render with both backends at the same size and compare per pixel. Writes DIR/cpu.png, gl.png, "
+      "side_by_side.png, diff.png (heat map with legend), classes.png (why pixels differ) and metrics.json. "
+      "llvmpipe runs in its precise texture-sampling mode unless --gl-fast-sampling. Exit 1 when a threshold "
+      "is exceeded, 2 for bad input.");
+  addRenderOptions(*cmd, args->request);
+  cmd->add_option("--out-dir,-o", args->outDir, "Folder for the images and metrics.json (created)")->required();
+  cmd->add_flag("--json", args->json, "Print the metrics JSON object on stdout instead of the summary");
+  cmd->add_option("--repeat", args->repeat, "Renders per backend; cpu_ms and gl_ms are their median")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
+  cmd->add_flag("--gl-fast-sampling", args->glFastSampling,
+                "Let llvmpipe use its fast texture path (8-bit bilinear weights, one LOD per 2x2 quad) to see "
+                "what the shortcut costs");
+  cmd->add_flag("--targets", args->issueTargets,
+                "Apply the project's CPU-vs-llvmpipe targets: over_1 <= 0.1%, max_abs_diff <= 3, no NaN, "
+                "coverage mismatch 0 (at most 1 per 10,000 covered pixels when triangles are clipped)");
+  Thresholds& t = args->limits;
+  const auto limit = [cmd](const char* name, std::optional<double>& field, const char* help) {
+    cmd->add_option(name, field, help)->group("Thresholds (exit 1 when exceeded; inclusive)");
+  };
+  limit("--max-over-1-pct", t.maxOver1Pct, "Most pixels differing by more than 1 level, % of pixels both covered");
+  limit("--max-over-1", t.maxOver1, "Most pixels differing by more than 1 level");
+  limit("--max-over-3", t.maxOver3, "Most pixels differing by more than 3 levels");
+  limit("--max-over-12", t.maxOver12, "Most pixels differing by more than 12 levels");
+  limit("--max-abs-diff", t.maxAbsDiff, "Largest channel difference, levels 0-255");
+  limit("--max-mean-abs-diff", t.maxMeanAbsDiff, "Largest mean channel difference, levels");
+  limit("--max-rmse", t.maxRmse, "Largest RMSE, levels");
+  limit("--min-psnr", t.minPsnr, "Smallest PSNR, dB");
+  limit("--max-coverage-mismatch", t.maxCoverageMismatch, "Most pixels covered by exactly one backend");
+  limit("--max-coverage-mismatch-per-10k", t.maxCoverageMismatchPer10k,
+        "Most coverage mismatches per 10,000 covered pixels");
+  limit("--max-depth-diff", t.maxDepthMaxDiff, "Largest window-depth difference");
+  limit("--max-nan-pixels", t.maxNanPixels, "Most CPU pixels with NaN depth");
+  limit("--max-depth-class", t.maxClassDepth, "Most pixels where a different surface won the depth test");
+  cmd->callback([args] { runCompare(*args); });
+});
+
+}  // namespace
+}  // namespace twr::cli

@@ -1,0 +1,66 @@
+// `twinraster render SCENE --backend cpu|gl --out FILE.png`: one image from one backend.
+#include "app/cli/commands.h"
+#include "app/cli/common.h"
+#include "glrender/gl_renderer.h"
+#include "scene/errors.h"
+#include "scene/image.h"
+#include "softrender/cpu_renderer.h"
+
+#include <cstring>
+#include <iostream>
+#include <memory>
+
+namespace twr::cli {
+namespace {
+
+struct RenderArgs {
+  RenderRequest request;
+  std::string backend = "cpu";
+  std::string outPath;
+  bool glFastSampling = false;
+};
+
+Image imageFromOutput(const RenderOutput& output) {
+  Image image = makeImage(output.width, output.height);
+  std::memcpy(image.rgba.data(), output.rgba.data(), image.rgba.size());
+  return image;
+}
+
+void runRender(const RenderArgs& args) {
+  Scene scene = loadRequestedScene(args.request);
+  const int width = requestedWidth(args.request, scene);
+  const int height = requestedHeight(args.request, scene);
+  std::unique_ptr<Renderer> renderer;
+  if (args.backend == "cpu") {
+    renderer = makeCpuRenderer();
+  } else {
+    GlOptions options;
+    options.verbose = args.request.verbose;
+    options.fastSampling = args.glFastSampling;
+    renderer = makeGlRenderer(options);
+  }
+  const RenderOutput output = renderer->render(scene, scene.settings, width, height);
+  savePng(args.outPath, imageFromOutput(output));
+  if (args.request.verbose) {
+    std::cerr << renderer->name() << ": " << width << "x" << height << ", " << output.stats.milliseconds
+              << " ms, triangles in " << output.stats.trianglesIn << ", clipped " << output.stats.trianglesClipped
+              << ", culled " << output.stats.trianglesCulled << ", drawn " << output.stats.trianglesProduced << "\n";
+  }
+  std::cout << "wrote " << args.outPath << " (" << width << "x" << height << ", " << renderer->name() << ")\n";
+}
+
+const bool registered = registerCommand(20, [](CLI::App& app) {
+  auto args = std::make_shared<RenderArgs>();
+  CLI::App* cmd = app.add_subcommand("render", "Render a scene with one backend into a PNG (top row first)");
+  addRenderOptions(*cmd, args->request);
+  cmd->add_option("--backend,-b", args->backend, "cpu (the software pipeline) or gl (OpenGL 3.3 via OSMesa)")
+      ->check(CLI::IsMember({"cpu", "gl"}))
+      ->capture_default_str();
+  cmd->add_option("--out,-o", args->outPath, "Output PNG file")->required();
+  cmd->add_flag("--gl-fast-sampling", args->glFastSampling,
+                "Let llvmpipe use its fast 8-bit bilinear path (default: the precise mode, see docs/compare.md)");
+  cmd->callback([args] { runRender(*args); });
+});
+
+}  // namespace
+}  // namespace twr::cli
