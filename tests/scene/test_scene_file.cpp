@@ -7,7 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <initializer_list>
+#include <sstream>
 #include <string>
 
 namespace twr {
@@ -445,6 +447,24 @@ TEST(SceneFile, DefaultSceneLoads) {
   EXPECT_EQ(countTriangles(scene), 2u + 3968u + 12u);
   // Materials naming the same file share one texture.
   EXPECT_EQ(scene.materials[0].diffuseMap, scene.materials[1].diffuseMap);
+}
+
+TEST(SceneFile, TheDocumentedExampleLoads) {
+  // The first ```jsonc block of docs/scene-format.md, with paths relative to assets/scenes.
+  std::ifstream in(std::string(TWINRASTER_SOURCE_DIR) + "/docs/scene-format.md");
+  std::stringstream doc;
+  doc << in.rdbuf();
+  const std::string text = doc.str();
+  const std::string fence = "```jsonc\n";
+  const std::size_t begin = text.find(fence);
+  ASSERT_NE(begin, std::string::npos);
+  const std::size_t end = text.find("```", begin + fence.size());
+  ASSERT_NE(end, std::string::npos);
+  const Scene scene = parseScene(text.substr(begin + fence.size(), end - begin - fence.size()), "scene-format.md",
+                                 std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes");
+  ASSERT_EQ(scene.nodes.size(), 3u);
+  EXPECT_EQ(scene.nodes[0].children.at(0).name, "moon");
+  EXPECT_TRUE(scene.materials.at(0).specularMap);
 }
 
 TEST(SceneFile, EveryShippedSceneLoads) {

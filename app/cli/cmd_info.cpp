@@ -1,0 +1,306 @@
+// `twinraster info SCENE [--json]`: what a scene file holds, after loading it exactly as the
+// renderers will (meshes built, textures and OBJ files read), so counts are the real ones.
+#include "app/cli/commands.h"
+#include "scene/scene.h"
+#include "scene/scene_file.h"
+
+#include <nlohmann/json.hpp>
+
+#include <charconv>
+#include <cstdlib>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+
+namespace twr::cli {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Spaces per level of the node tree in the text output.
+constexpr int kTreeIndent = 2;
+
+// The double nearest the float's shortest round-trip decimal, so 0.05f prints as 0.05 and
+// not as 0.05000000074505806 (nlohmann stores numbers as double).
+double clean(float v) {
+  char buffer[32];
+  const auto [end, error] = std::to_chars(buffer, buffer + sizeof(buffer), v);
+  if (error != std::errc()) return v;
+  return std::strtod(std::string(buffer, end).c_str(), nullptr);
+}
+
+Json toJson(vec2 v) { return Json::array({clean(v.x), clean(v.y)}); }
+Json toJson(vec3 v) { return Json::array({clean(v.x), clean(v.y), clean(v.z)}); }
+Json toJson(vec4 v) { return Json::array({clean(v.x), clean(v.y), clean(v.z), clean(v.w)}); }
+
+// Six significant digits, as %g: short and readable for the text listing.
+std::string num(float v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+std::string text(vec3 v) { return "(" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ")"; }
+
+// The mesh as a scene file would write it; triangles lists are summarised, not repeated.
+Json meshJson(const MeshDesc& d) {
+  Json j;
+  j["type"] = std::string(toString(d.type));
+  switch (d.type) {
+    case MeshType::Cube: j["size"] = clean(d.size); break;
+    case MeshType::Sphere:
+      j["radius"] = clean(d.radius);
+      j["stacks"] = d.stacks;
+      j["slices"] = d.slices;
+      break;
+    case MeshType::Plane:
+      j["size"] = toJson(d.planeSize);
+      j["uv_scale"] = clean(d.uvScale);
+      break;
+    case MeshType::Cylinder:
+      j["radius"] = clean(d.radius);
+      j["height"] = clean(d.height);
+      j["slices"] = d.slices;
+      break;
+    case MeshType::Torus:
+      j["major"] = clean(d.major);
+      j["minor"] = clean(d.minor);
+      j["rings"] = d.rings;
+      j["sides"] = d.sides;
+      break;
+    case MeshType::Obj: j["path"] = d.path; break;
+    case MeshType::Triangles:
+      j["position_count"] = d.positions.size();
+      j["has_uvs"] = !d.uvs.empty();
+      j["has_normals"] = !d.normals.empty();
+      break;
+  }
+  return j;
+}
+
+std::string meshText(const MeshDesc& d) {
+  switch (d.type) {
+    case MeshType::Cube: return "cube size " + num(d.size);
+    case MeshType::Sphere:
+      return "sphere radius " + num(d.radius) + ", " + std::to_string(d.stacks) + " stacks x " +
+             std::to_string(d.slices) + " slices";
+    case MeshType::Plane:
+      return "plane " + num(d.planeSize.x) + " x " + num(d.planeSize.y) + ", uv_scale " + num(d.uvScale);
+    case MeshType::Cylinder:
+      return "cylinder radius " + num(d.radius) + ", height " + num(d.height) + ", " + std::to_string(d.slices) +
+             " slices";
+    case MeshType::Torus:
+      return "torus major " + num(d.major) + ", minor " + num(d.minor) + ", " + std::to_string(d.rings) +
+             " rings x " + std::to_string(d.sides) + " sides";
+    case MeshType::Obj: return "obj part of " + d.path;
+    case MeshType::Triangles: return "triangles";
+  }
+  return "?";
+}
+
+std::string materialName(const Scene& scene, int index) {
+  if (index < 0 || index >= static_cast<int>(scene.materials.size())) return "(" + defaultMaterial().name + ")";
+  return scene.materials[static_cast<std::size_t>(index)].name;
+}
+
+const Mesh* meshOf(const Scene& scene, const Node& node) {
+  if (node.meshIndex < 0 || node.meshIndex >= static_cast<int>(scene.meshes.size())) return nullptr;
+  return &scene.meshes[static_cast<std::size_t>(node.meshIndex)];
+}
+
+Json nodeJson(const Scene& scene, const Node& node) {
+  Json j;
+  j["name"] = node.name;
+  j["translate"] = toJson(node.translate);
+  j["rotate_deg"] = toJson(node.rotateDeg);
+  j["scale"] = toJson(node.scale);
+  if (const Mesh* mesh = meshOf(scene, node)) {
+    j["mesh"] = meshJson(scene.meshDescs[static_cast<std::size_t>(node.meshIndex)]);
+    j["triangles"] = mesh->triangleCount();
+    j["vertices"] = mesh->vertices.size();
+    j["material"] = node.materialIndex >= 0 ? Json(materialName(scene, node.materialIndex)) : Json(nullptr);
+  } else {
+    j["mesh"] = nullptr;
+    j["triangles"] = 0;
+    j["vertices"] = 0;
+    j["material"] = nullptr;
+  }
+  Json children = Json::array();
+  for (const Node& child : node.children) children.push_back(nodeJson(scene, child));
+  j["children"] = std::move(children);
+  return j;
+}
+
+void printNode(std::ostream& out, const Scene& scene, const Node& node, int depth) {
+  out << std::string(static_cast<std::size_t>(kTreeIndent * (depth + 1)), ' ') << node.name;
+  if (const Mesh* mesh = meshOf(scene, node)) {
+    out << ": " << meshText(scene.meshDescs[static_cast<std::size_t>(node.meshIndex)]) << "; "
+        << mesh->triangleCount() << " triangles, " << mesh->vertices.size() << " vertices; material "
+        << materialName(scene, node.materialIndex);
+  } else {
+    out << ": (no mesh)";
+  }
+  if (node.translate != vec3(0.0f)) out << "; translate " << text(node.translate);
+  if (node.rotateDeg != vec3(0.0f)) out << "; rotate_deg " << text(node.rotateDeg);
+  if (node.scale != vec3(1.0f)) out << "; scale " << text(node.scale);
+  out << "\n";
+  for (const Node& child : node.children) printNode(out, scene, child, depth + 1);
+}
+
+Json mapJson(const std::shared_ptr<const Texture>& map) {
+  if (!map) return nullptr;
+  return Json{{"path", map->path}, {"width", map->width}, {"height", map->height}};
+}
+
+Json settingsJson(const RenderSettings& s) {
+  Json j;
+  j["cull"] = std::string(toString(s.cull));
+  j["front_face"] = std::string(toString(s.frontFace));
+  j["clip"] = Json{{"left", s.clip.left}, {"right", s.clip.right}, {"bottom", s.clip.bottom},
+                   {"top", s.clip.top},   {"near", s.clip.near},   {"far", s.clip.far}};
+  Json planes = Json::array();
+  for (const vec4& plane : s.userClipPlanes) planes.push_back(toJson(plane));
+  j["user_clip_planes"] = std::move(planes);
+  j["view"] = std::string(toString(s.view));
+  j["lighting_space"] = std::string(toString(s.lightingSpace));
+  j["tangent_transform"] = std::string(toString(s.tangentTransform));
+  j["texture_filter"] = std::string(toString(s.textureFilter));
+  j["tbn_lines"] = Json{{"enabled", s.tbnLines.enabled}, {"length", clean(s.tbnLines.length)},
+                        {"mode", std::string(toString(s.tbnLines.mode))}};
+  return j;
+}
+
+Json sceneJson(const Scene& scene) {
+  Json j;
+  j["scene"] = scene.sourcePath;
+  Json nodes = Json::array();
+  for (const Node& node : scene.nodes) nodes.push_back(nodeJson(scene, node));
+  j["nodes"] = std::move(nodes);
+  j["triangles"] = countTriangles(scene);
+  j["vertices"] = countVertices(scene);
+  Json materials = Json::array();
+  for (const Material& m : scene.materials) {
+    materials.push_back(Json{{"name", m.name},
+                             {"ka", toJson(m.ka)},
+                             {"kd", toJson(m.kd)},
+                             {"ks", toJson(m.ks)},
+                             {"shininess", clean(m.shininess)},
+                             {"diffuse_map", mapJson(m.diffuseMap)},
+                             {"normal_map", mapJson(m.normalMap)},
+                             {"specular_map", mapJson(m.specularMap)}});
+  }
+  j["materials"] = std::move(materials);
+  Json lights = Json::array();
+  for (const PointLight& l : scene.lights) {
+    lights.push_back(Json{{"position", toJson(l.posWorld)},
+                          {"diffuse", toJson(l.diffuse)},
+                          {"specular", toJson(l.specular)},
+                          {"attenuation", toJson(l.attenuation)}});
+  }
+  j["lights"] = std::move(lights);
+  j["ambient"] = toJson(scene.ambient);
+  j["camera"] = Json{{"position", toJson(scene.camera.position)},
+                     {"target", toJson(scene.camera.target)},
+                     {"fov_deg", clean(scene.camera.fovDeg)},
+                     {"near", clean(scene.camera.near)},
+                     {"far", clean(scene.camera.far)}};
+  j["settings"] = settingsJson(scene.settings);
+  j["output"] = Json{{"width", scene.output.width},
+                     {"height", scene.output.height},
+                     {"background", toJson(scene.output.background)}};
+  return j;
+}
+
+std::string mapsText(const Material& m) {
+  std::string maps;
+  const std::pair<const char*, const std::shared_ptr<const Texture>*> entries[] = {
+      {"diffuse", &m.diffuseMap}, {"normal", &m.normalMap}, {"specular", &m.specularMap}};
+  for (const auto& [name, map] : entries) {
+    if (!*map) continue;
+    maps += std::string(maps.empty() ? "" : ", ") + name + " " + (*map)->path + " (" + std::to_string((*map)->width) +
+            "x" + std::to_string((*map)->height) + ")";
+  }
+  return maps.empty() ? "none" : maps;
+}
+
+void printScene(std::ostream& out, const Scene& scene) {
+  const RenderSettings& s = scene.settings;
+  out << "scene: " << scene.sourcePath << "\n";
+  out << "output: " << scene.output.width << "x" << scene.output.height << ", background "
+      << text(scene.output.background) << "\n";
+  out << "camera: position " << text(scene.camera.position) << ", target " << text(scene.camera.target)
+      << ", fov_deg " << num(scene.camera.fovDeg) << ", near " << num(scene.camera.near) << ", far "
+      << num(scene.camera.far) << "\n";
+
+  out << "\nnodes:\n";
+  if (scene.nodes.empty()) out << "  (none)\n";
+  for (const Node& node : scene.nodes) printNode(out, scene, node, 0);
+  const std::vector<DrawItem> items = flattenScene(scene);
+  out << "total: " << countTriangles(scene) << " triangles, " << countVertices(scene) << " vertices in "
+      << items.size() << " drawn meshes\n";
+
+  out << "\nmaterials (" << scene.materials.size() << "):\n";
+  if (scene.materials.empty()) out << "  (none: every mesh uses the default material)\n";
+  for (const Material& m : scene.materials) {
+    out << "  " << m.name << ": ka " << text(m.ka) << ", kd " << text(m.kd) << ", ks " << text(m.ks)
+        << ", shininess " << num(m.shininess) << "; maps: " << mapsText(m) << "\n";
+  }
+
+  out << "\nlights (" << scene.lights.size() << "), ambient " << text(scene.ambient) << ":\n";
+  if (scene.lights.empty()) out << "  (none: only ambient light)\n";
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    const PointLight& l = scene.lights[i];
+    out << "  [" << i << "] position " << text(l.posWorld) << ", diffuse " << text(l.diffuse) << ", specular "
+        << text(l.specular) << ", attenuation " << text(l.attenuation) << "\n";
+  }
+
+  std::string clipOff;
+  const std::pair<const char*, bool> planes[] = {{"left", s.clip.left}, {"right", s.clip.right},
+                                                 {"bottom", s.clip.bottom}, {"top", s.clip.top},
+                                                 {"near", s.clip.near}, {"far", s.clip.far}};
+  for (const auto& [name, on] : planes) {
+    if (!on) clipOff += std::string(clipOff.empty() ? "" : " ") + name;
+  }
+  out << "\nsettings:\n"
+      << "  cull " << toString(s.cull) << ", front_face " << toString(s.frontFace) << "\n"
+      << "  clip: " << (clipOff.empty() ? "all six frustum planes on" : "off: " + clipOff) << "; "
+      << s.userClipPlanes.size() << " user clip planes\n";
+  for (const vec4& p : s.userClipPlanes) {
+    out << "    " << num(p.x) << " x + " << num(p.y) << " y + " << num(p.z) << " z + " << num(p.w) << " >= 0\n";
+  }
+  out << "  view " << toString(s.view) << ", lighting_space " << toString(s.lightingSpace) << ", tangent_transform "
+      << toString(s.tangentTransform) << ", texture_filter " << toString(s.textureFilter) << "\n"
+      << "  tbn_lines " << (s.tbnLines.enabled ? "on" : "off") << ", length " << num(s.tbnLines.length) << ", mode "
+      << toString(s.tbnLines.mode) << "\n";
+}
+
+struct InfoRequest {
+  std::string scenePath;
+  bool json = false;
+};
+
+const bool registered = registerCommand(10, [](CLI::App& app) {
+  auto request = std::make_shared<InfoRequest>();
+  CLI::App* cmd = app.add_subcommand(
+      "info",
+      "Load a scene file (building every mesh, reading every texture and OBJ) and print its node tree with "
+      "mesh type, triangle and vertex counts and material per node, the totals, the materials with their "
+      "maps, the lights, the camera, the output size and the render settings. Exit 2 on a bad scene file.");
+  cmd->add_option("scene", request->scenePath, "Scene file (JSON, see docs/scene-format.md)")->required();
+  cmd->add_flag("--json", request->json,
+                "Print one JSON object instead (keys: scene, nodes, triangles, vertices, materials, lights, "
+                "ambient, camera, settings, output)");
+  cmd->callback([request] {
+    const Scene scene = loadSceneFile(request->scenePath);
+    if (request->json) {
+      std::cout << sceneJson(scene).dump(2) << "\n";
+    } else {
+      printScene(std::cout, scene);
+    }
+  });
+});
+
+}  // namespace
+
+}  // namespace twr::cli

@@ -1,0 +1,147 @@
+// `twinraster info`: runs the built CLI and checks exit codes, the text listing, the JSON
+// object, and that bad scenes exit 2 naming the file.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+const std::string kSource = TWINRASTER_SOURCE_DIR;
+const std::string kDefaultScene = kSource + "/assets/scenes/default.json";
+
+struct RunResult {
+  int exitCode = -1;
+  std::string out, err;
+};
+
+std::string readFile(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Runs `twinraster <args>` with stdout and stderr captured in files under TWINRASTER_TEST_OUT.
+RunResult runCli(const std::string& args) {
+  const std::filesystem::path dir = std::filesystem::path(TWINRASTER_TEST_OUT) / "cli_info";
+  std::filesystem::create_directories(dir);
+  const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const std::filesystem::path out = dir / (name + ".out"), err = dir / (name + ".err");
+  const std::string command =
+      "\"" + std::string(TWINRASTER_CLI) + "\" " + args + " >\"" + out.string() + "\" 2>\"" + err.string() + "\"";
+  const int status = std::system(command.c_str());
+  RunResult result;
+  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  result.out = readFile(out);
+  result.err = readFile(err);
+  return result;
+}
+
+void expectContains(const std::string& text, const std::string& part) {
+  EXPECT_NE(text.find(part), std::string::npos) << "missing \"" << part << "\" in:\n" << text;
+}
+
+TEST(CliInfo, TextListingOfTheDefaultScene) {
+  const RunResult r = runCli("info \"" + kDefaultScene + "\"");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  // Hand-counted: sphere 32 stacks x 64 slices has (32 + 1) * (64 + 1) = 2145 vertices and
+  // 64 * (2 * 32 - 2) = 3968 triangles; the plane 4 and 2, the cube 24 and 12.
+  expectContains(r.out, "  floor: plane 8 x 8, uv_scale 4; 2 triangles, 4 vertices; material floor");
+  expectContains(r.out, "  ball: sphere radius 0.8, 32 stacks x 64 slices; 3968 triangles, 2145 vertices; material bricks");
+  expectContains(r.out, "  box: cube size 1.2; 12 triangles, 24 vertices; material bricks");
+  expectContains(r.out, "total: 3982 triangles, 2173 vertices in 3 drawn meshes");
+  expectContains(r.out, "materials (2):");
+  expectContains(r.out, "shininess 32; maps: diffuse " + kSource + "/assets/textures/bricks_diffuse.png (512x512), normal " +
+                            kSource + "/assets/textures/bricks_normal.png (512x512), specular ");
+  expectContains(r.out, "lights (2)");
+  expectContains(r.out, "[1] position (-4, 2.5, 1)");
+  expectContains(r.out, "camera: position (0.4, 2.1, 4.6), target (0, 0.55, 0), fov_deg 50");
+  expectContains(r.out, "output: 640x480");
+  expectContains(r.out, "view shaded, lighting_space world, tangent_transform model, texture_filter bilinear");
+}
+
+TEST(CliInfo, ObjPartsShowAsAChildTree) {
+  const RunResult r = runCli("info \"" + kSource + "/tests/scene/data_scenes/obj_parts.json\"");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  expectContains(r.out, "  model: (no mesh)\n    model/red: obj part of ");
+  expectContains(r.out, "    extra: cube size 1; 12 triangles, 24 vertices; material (default)");
+  expectContains(r.out, "total: 20 triangles, 40 vertices in 5 drawn meshes");
+}
+
+TEST(CliInfo, JsonIsOneObjectWithTheDocumentedKeys) {
+  const RunResult r = runCli("info --json \"" + kDefaultScene + "\"");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  nlohmann::json j;
+  ASSERT_NO_THROW(j = nlohmann::json::parse(r.out)) << r.out;
+  ASSERT_TRUE(j.is_object());
+  for (const char* key : {"nodes", "triangles", "vertices", "materials", "lights", "camera", "settings", "output"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_EQ(j["triangles"], 3982);
+  EXPECT_EQ(j["vertices"], 2173);
+  ASSERT_EQ(j["nodes"].size(), 3u);
+  EXPECT_EQ(j["nodes"][1]["name"], "ball");
+  EXPECT_EQ(j["nodes"][1]["mesh"]["type"], "sphere");
+  EXPECT_EQ(j["nodes"][1]["mesh"]["stacks"], 32);
+  EXPECT_EQ(j["nodes"][1]["triangles"], 3968);
+  EXPECT_EQ(j["nodes"][1]["material"], "bricks");
+  EXPECT_EQ(j["nodes"][1]["translate"], nlohmann::json::parse("[-1.0, 0.8, 0.0]"));
+  ASSERT_EQ(j["materials"].size(), 2u);
+  EXPECT_EQ(j["materials"][0]["name"], "bricks");
+  EXPECT_EQ(j["materials"][0]["normal_map"]["width"], 512);
+  EXPECT_TRUE(j["materials"][1]["specular_map"].is_null());
+  ASSERT_EQ(j["lights"].size(), 2u);
+  EXPECT_EQ(j["lights"][0]["attenuation"], nlohmann::json::parse("[1.0, 0.045, 0.0075]"));
+  EXPECT_EQ(j["camera"]["fov_deg"], 50.0);
+  EXPECT_EQ(j["settings"]["cull"], "back");
+  EXPECT_EQ(j["settings"]["tbn_lines"]["mode"], "core");
+  EXPECT_EQ(j["output"]["width"], 640);
+  EXPECT_EQ(j["output"]["height"], 480);
+}
+
+TEST(CliInfo, BadSceneExitsTwoNamingTheFileAndKey) {
+  const std::string scene = kSource + "/tests/scene/data_scenes/bad_texture.json";
+  const RunResult r = runCli("info \"" + scene + "\"");
+  EXPECT_EQ(r.exitCode, 2);
+  expectContains(r.err, scene + ": materials.bricks.normal_map: ");
+  EXPECT_EQ(r.out, "");
+}
+
+TEST(CliInfo, SyntaxErrorExitsTwoWithLine) {
+  const std::string scene = kSource + "/tests/scene/data_scenes/syntax_error.json";
+  const RunResult r = runCli("info --json \"" + scene + "\"");
+  EXPECT_EQ(r.exitCode, 2);
+  expectContains(r.err, scene + ": line 4, column 9:");
+}
+
+TEST(CliInfo, MissingFileExitsTwo) {
+  const RunResult r = runCli("info /nonexistent/scene.json");
+  EXPECT_EQ(r.exitCode, 2);
+  expectContains(r.err, "/nonexistent/scene.json: cannot open scene file");
+}
+
+TEST(CliInfo, MissingArgumentExitsTwo) {
+  const RunResult r = runCli("info");
+  EXPECT_EQ(r.exitCode, 2);
+  expectContains(r.err, "scene is required");
+}
+
+TEST(CliInfo, HelpDescribesTheCommand) {
+  const RunResult r = runCli("info --help");
+  EXPECT_EQ(r.exitCode, 0);
+  expectContains(r.out, "--json");
+  expectContains(r.out, "triangle and vertex counts");
+  const RunResult top = runCli("--help");
+  EXPECT_EQ(top.exitCode, 0);
+  expectContains(top.out, "info");
+}
+
+}  // namespace
