@@ -1,0 +1,322 @@
+#include "softrender/pixel_trace.h"
+
+#include "scene/errors.h"
+#include "softrender/cpu_renderer.h"
+#include "softrender/framebuffer.h"
+#include "softrender/output_merge.h"
+#include "softrender/raster.h"
+#include "softrender/vertex.h"
+
+#include <cstdio>
+#include <sstream>
+
+namespace twr {
+
+const char* toString(TraceOutcome outcome) {
+  switch (outcome) {
+    case TraceOutcome::Shaded: return "shaded";
+    case TraceOutcome::FailedDepthTest: return "failed the depth test (GL_LESS)";
+    case TraceOutcome::CulledBack: return "culled (back face)";
+    case TraceOutcome::CulledFront: return "culled (front face)";
+    case TraceOutcome::ClippedAway: return "clipped away at this pixel";
+  }
+  return "?";
+}
+
+namespace {
+
+// Window positions of a fan triangle, as the renderer computes them.
+std::array<WindowVertex, 3> windowTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
+                                           const Viewport& viewport) {
+  return {windowFromClip(a, viewport), windowFromClip(b, viewport), windowFromClip(c, viewport)};
+}
+
+// Replays one triangle of a draw item for pixel (x, yGl); appends a visit when the triangle
+// reaches the pixel and updates `depth` as the depth buffer would be.
+void traceTriangle(const DrawItem& item, std::size_t t, const VertexUniforms& vertexUniforms,
+                   const ShadeUniforms& shadeUniforms, const ShaderKey& key, const ClipConfig& clipConfig,
+                   const RenderSettings& settings, const Viewport& viewport, int x, int yGl, float& depth,
+                   std::vector<TriangleVisit>& visits) {
+  const Mesh& mesh = *item.mesh;
+  std::array<ClipVertex, 3> v;
+  TriangleVisit visit;
+  visit.triangleId = item.firstTriangleId + static_cast<std::uint32_t>(t);
+  visit.nodeName = item.nodeName;
+  visit.triangleInMesh = t;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const Vertex& vertex = mesh.vertices[mesh.indices[3 * t + k]];
+    v[k] = runVertexStage(vertex, vertexUniforms);
+    visit.posModel[k] = vertex.posModel;
+    visit.posClip[k] = v[k].posClip;
+  }
+  ClipPolygon polygon, scratch;
+  visit.planesCut = clipTriangle(v[0], v[1], v[2], clipConfig, polygon, scratch);
+  for (int i = 0; i < polygon.count; ++i) visit.clippedPolygon.push_back(polygon.v[static_cast<std::size_t>(i)].posClip);
+
+  const bool tangentLighting = vertexUniforms.tangentLighting;
+  for (int i = 1; i + 1 < polygon.count; ++i) {
+    const ClipVertex& a = polygon.v[0];
+    const ClipVertex& b = polygon.v[static_cast<std::size_t>(i)];
+    const ClipVertex& c = polygon.v[static_cast<std::size_t>(i + 1)];
+    const std::array<WindowVertex, 3> window = windowTriangle(a, b, c, viewport);
+    TriangleSetup setup;
+    // Coverage does not depend on culling, so set up without it and decide culling after.
+    if (setupTriangle(window, CullMode::None, settings.frontFace, viewport, setup) != SetupResult::Ready) continue;
+    if (!coversPixel(setup, x, yGl)) continue;
+    visit.fanTriangle = i;
+    visit.window = window;
+    visit.xFixed = setup.xFixed;
+    visit.yFixed = setup.yFixed;
+    for (std::size_t e = 0; e < 3; ++e) visit.edgeValue[e] = setup.edges[e].at(x, yGl);
+    visit.frontFacing = setup.frontFacing;
+    visit.weights = pixelWeights(makeInterpolationSetup(window, setup), x, yGl);
+    visit.fragment =
+        interpolateFragment(a, b, c, visit.weights, tangentLighting, tangentLighting ? shadeUniforms.lightCount : 0);
+    visit.depthBefore = depth;
+    if (settings.cull == CullMode::Back && !setup.frontFacing) {
+      visit.outcome = TraceOutcome::CulledBack;
+    } else if (settings.cull == CullMode::Front && setup.frontFacing) {
+      visit.outcome = TraceOutcome::CulledFront;
+    } else if (!depthTestLess(visit.weights.depth, depth)) {
+      visit.outcome = TraceOutcome::FailedDepthTest;
+    } else {
+      visit.outcome = TraceOutcome::Shaded;
+      shadeFragmentDynamic(key, visit.fragment, shadeUniforms, &visit.terms);
+      depth = visit.weights.depth;
+    }
+    visits.push_back(std::move(visit));
+    return;  // the fill rule gives a pixel to exactly one fan triangle
+  }
+
+  // Not covered after clipping: say so if the unclipped triangle (all w > 0, so it can be
+  // projected) would have covered the pixel.
+  if (visit.planesCut == 0 || !(v[0].posClip.w > 0.0f && v[1].posClip.w > 0.0f && v[2].posClip.w > 0.0f)) return;
+  const std::array<WindowVertex, 3> window = windowTriangle(v[0], v[1], v[2], viewport);
+  TriangleSetup setup;
+  if (setupTriangle(window, CullMode::None, settings.frontFace, viewport, setup) != SetupResult::Ready) return;
+  if (!coversPixel(setup, x, yGl)) return;
+  visit.window = window;
+  visit.xFixed = setup.xFixed;
+  visit.yFixed = setup.yFixed;
+  for (std::size_t e = 0; e < 3; ++e) visit.edgeValue[e] = setup.edges[e].at(x, yGl);
+  visit.frontFacing = setup.frontFacing;
+  visit.depthBefore = depth;
+  visit.outcome = TraceOutcome::ClippedAway;
+  visits.push_back(std::move(visit));
+}
+
+std::string fmt(float v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", static_cast<double>(v));
+  return buf;
+}
+template <int N>
+std::string fmt(const glm::vec<N, float>& v) {
+  std::string s = "(";
+  for (int i = 0; i < N; ++i) s += (i ? ", " : "") + fmt(v[i]);
+  return s + ")";
+}
+
+std::string planeList(std::uint32_t mask) {
+  if (mask == 0) return "none";
+  if (mask & kClipNonFiniteBit) return "removed: non-finite clip position";
+  std::string s;
+  for (int p = 0; p < kClipPlaneCount; ++p) {
+    if (mask & (1u << p)) s += (s.empty() ? "" : ", ") + std::string(clipPlaneName(p));
+  }
+  return s;
+}
+
+template <int N>
+nlohmann::json toJson(const glm::vec<N, float>& v) {
+  nlohmann::json a = nlohmann::json::array();
+  for (int i = 0; i < N; ++i) a.push_back(v[i]);
+  return a;
+}
+
+}  // namespace
+
+PixelTrace tracePixel(const Scene& scene, const RenderSettings& settings, int width, int height, int x, int yTop) {
+  // The full render gives the final pixel (and validates the size and the meshes).
+  const RenderOutput output = makeCpuRenderer()->render(scene, settings, width, height);
+  if (x < 0 || x >= width || yTop < 0 || yTop >= height) {
+    throw InputError("trace: pixel (" + std::to_string(x) + ", " + std::to_string(yTop) + ") is outside the " +
+                     std::to_string(width) + "x" + std::to_string(height) + " image (x in [0, " +
+                     std::to_string(width) + "), y in [0, " + std::to_string(height) + "))");
+  }
+  PixelTrace trace;
+  trace.x = x;
+  trace.yTop = yTop;
+  trace.yGl = height - 1 - yTop;
+  trace.width = width;
+  trace.height = height;
+  trace.view = settings.view;
+  trace.lightingSpace = settings.lightingSpace;
+  const std::size_t i = static_cast<std::size_t>(yTop) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
+  for (std::size_t c = 0; c < 4; ++c) trace.rgba[c] = output.rgba[i * 4 + c];
+  trace.depth = output.depth[i];
+  trace.triangleId = output.triangleId[i];
+  trace.debugLine = output.lineMask[i] != 0;
+
+  const Viewport viewport{width, height};
+  const mat4 clipFromWorld = clipFromWorldFor(scene.camera, width, height);
+  float depth = kClearDepth;
+  for (const DrawItem& item : flattenScene(scene)) {
+    const VertexUniforms vertexUniforms = makeVertexUniforms(item.worldFromModel, clipFromWorld, scene, settings);
+    const ShadeUniforms shadeUniforms = makeShadeUniforms(*item.material, scene, settings);
+    const ShaderKey key = shaderKeyFor(shadeUniforms, settings);
+    const ClipConfig clipConfig = makeClipConfig(settings.clip, vertexUniforms.userClipPlaneCount, width, height);
+    for (std::size_t t = 0; t < item.mesh->triangleCount(); ++t) {
+      traceTriangle(item, t, vertexUniforms, shadeUniforms, key, clipConfig, settings, viewport, x, trace.yGl, depth,
+                    trace.visits);
+    }
+  }
+  return trace;
+}
+
+std::string formatPixelTrace(const PixelTrace& tr) {
+  std::ostringstream o;
+  o << "pixel (" << tr.x << ", " << tr.yTop << ") of " << tr.width << "x" << tr.height
+    << " (x from the left, y from the top as in the image; GL window row " << tr.yGl << ", centre ("
+    << tr.x + 0.5 << ", " << tr.yGl + 0.5 << "))\n";
+  o << "view " << toString(tr.view) << ", lighting space " << toString(tr.lightingSpace) << "\n";
+  o << "final: rgba (" << int(tr.rgba[0]) << ", " << int(tr.rgba[1]) << ", " << int(tr.rgba[2]) << ", "
+    << int(tr.rgba[3]) << "), depth " << fmt(tr.depth) << ", triangle "
+    << (tr.triangleId == kNoTriangle ? std::string("none (background)") : std::to_string(tr.triangleId))
+    << (tr.debugLine ? ", a TBN debug line was drawn over it" : "") << "\n";
+  if (tr.visits.empty()) o << "no triangle reaches this pixel\n";
+  for (std::size_t n = 0; n < tr.visits.size(); ++n) {
+    const TriangleVisit& v = tr.visits[n];
+    o << "\n#" << n + 1 << " triangle " << v.triangleId << " (node '" << v.nodeName << "', triangle "
+      << v.triangleInMesh << " of its mesh): " << toString(v.outcome) << "\n";
+    for (std::size_t k = 0; k < 3; ++k) {
+      o << "  v" << k << " posModel " << fmt(v.posModel[k]) << " -> posClip " << fmt(v.posClip[k]) << "\n";
+    }
+    o << "  clip planes that cut it: " << planeList(v.planesCut) << "\n";
+    if (v.planesCut != 0) {
+      o << "  clipped polygon (" << v.clippedPolygon.size() << " vertices):";
+      for (const vec4& p : v.clippedPolygon) o << " " << fmt(p);
+      o << "\n";
+    }
+    if (v.fanTriangle >= 0 && v.planesCut != 0) {
+      o << "  covered by fan triangle (0, " << v.fanTriangle << ", " << v.fanTriangle + 1 << ")\n";
+    }
+    for (std::size_t k = 0; k < 3; ++k) {
+      o << "  window v" << k << " (" << fmt(v.window[k].x) << ", " << fmt(v.window[k].y) << ") z "
+        << fmt(v.window[k].z) << " 1/w " << fmt(v.window[k].invW) << "\n";
+    }
+    o << "  snapped corners (1/256 px, centre offset removed, clockwise):";
+    for (std::size_t k = 0; k < 3; ++k) o << " (" << v.xFixed[k] << ", " << v.yFixed[k] << ")";
+    o << "\n  edge functions at the pixel (covered when all > 0): " << v.edgeValue[0] << ", " << v.edgeValue[1]
+      << ", " << v.edgeValue[2] << "\n";
+    o << "  faces the camera: " << (v.frontFacing ? "front" : "back") << "\n";
+    if (v.outcome == TraceOutcome::ClippedAway) continue;
+    o << "  barycentrics (screen) " << fmt(v.weights.screen[0]) << ", " << fmt(v.weights.screen[1]) << ", "
+      << fmt(v.weights.screen[2]) << "; perspective weights " << fmt(v.weights.perspective[0]) << ", "
+      << fmt(v.weights.perspective[1]) << ", " << fmt(v.weights.perspective[2]) << "\n";
+    o << "  depth " << fmt(v.weights.depth) << " vs stored " << fmt(v.depthBefore) << "\n";
+    const Fragment& f = v.fragment;
+    o << "  posWorld " << fmt(f.posWorld) << " uv " << fmt(f.uv) << "\n";
+    o << "  nWorld " << fmt(f.nWorld) << " tWorld " << fmt(f.tWorld) << " bWorld " << fmt(f.bWorld) << "\n";
+    if (v.outcome != TraceOutcome::Shaded) continue;
+    const ShadeTerms& s = v.terms;
+    o << "  N " << fmt(s.n) << " T " << fmt(s.t) << " B " << fmt(s.b) << "\n";
+    o << "  albedo " << fmt(s.albedo) << " specScale " << fmt(s.specScale) << " normal texel " << fmt(s.normalTexel)
+      << " mapped (tangent) " << fmt(s.mappedTangent) << "\n";
+    o << "  Nl (lighting normal) " << fmt(s.nl) << "\n";
+    if (tr.view == View::Shaded) {
+      o << "  ambient ka*albedo*Ia " << fmt(s.ambient) << "\n";
+      for (int l = 0; l < s.lightCount; ++l) {
+        const LightTerms& t = s.lights[static_cast<std::size_t>(l)];
+        o << "  light " << l << ": d " << fmt(t.distance) << " L " << fmt(t.l) << " V " << fmt(t.v) << " R " << fmt(t.r)
+          << "\n           N.L " << fmt(t.nDotL) << " R.V " << fmt(t.rDotV) << " If " << fmt(t.attenuation)
+          << " diffuse " << fmt(t.diffuse) << " specular " << fmt(t.specular) << "\n";
+      }
+    }
+    o << "  colour " << fmt(s.colour) << "\n";
+  }
+  return o.str();
+}
+
+nlohmann::json pixelTraceToJson(const PixelTrace& tr) {
+  using nlohmann::json;
+  json j;
+  j["x"] = tr.x;
+  j["y"] = tr.yTop;
+  j["y_gl"] = tr.yGl;
+  j["width"] = tr.width;
+  j["height"] = tr.height;
+  j["view"] = std::string(toString(tr.view));
+  j["lighting_space"] = std::string(toString(tr.lightingSpace));
+  j["final"] = {{"rgba", {tr.rgba[0], tr.rgba[1], tr.rgba[2], tr.rgba[3]}},
+                {"depth", tr.depth},
+                {"triangle", tr.triangleId == kNoTriangle ? json(nullptr) : json(tr.triangleId)},
+                {"debug_line", tr.debugLine}};
+  json visits = json::array();
+  for (const TriangleVisit& v : tr.visits) {
+    json jv;
+    jv["triangle"] = v.triangleId;
+    jv["node"] = v.nodeName;
+    jv["triangle_in_mesh"] = v.triangleInMesh;
+    jv["outcome"] = std::string(toString(v.outcome));
+    json verts = json::array();
+    for (std::size_t k = 0; k < 3; ++k) verts.push_back({{"pos_model", toJson(v.posModel[k])}, {"pos_clip", toJson(v.posClip[k])}});
+    jv["vertices"] = verts;
+    json planes = json::array();
+    for (int p = 0; p < kClipPlaneCount; ++p)
+      if (v.planesCut & (1u << p)) planes.push_back(clipPlaneName(p));
+    jv["clip_planes"] = planes;
+    json poly = json::array();
+    for (const vec4& p : v.clippedPolygon) poly.push_back(toJson(p));
+    jv["clipped_polygon"] = poly;
+    jv["fan_triangle"] = v.fanTriangle;
+    json window = json::array(), snapped = json::array();
+    for (std::size_t k = 0; k < 3; ++k) {
+      window.push_back({v.window[k].x, v.window[k].y, v.window[k].z, v.window[k].invW});
+      snapped.push_back({v.xFixed[k], v.yFixed[k]});
+    }
+    jv["window_xyz_invw"] = window;
+    jv["snapped_fixed_8"] = snapped;
+    jv["edge_values"] = {v.edgeValue[0], v.edgeValue[1], v.edgeValue[2]};
+    jv["front_facing"] = v.frontFacing;
+    jv["depth_before"] = v.depthBefore;
+    if (v.outcome != TraceOutcome::ClippedAway) {
+      jv["barycentrics"] = {v.weights.screen[0], v.weights.screen[1], v.weights.screen[2]};
+      jv["perspective_weights"] = {v.weights.perspective[0], v.weights.perspective[1], v.weights.perspective[2]};
+      jv["depth"] = v.weights.depth;
+      jv["pos_world"] = toJson(v.fragment.posWorld);
+      jv["uv"] = toJson(v.fragment.uv);
+      jv["n_world"] = toJson(v.fragment.nWorld);
+      jv["t_world"] = toJson(v.fragment.tWorld);
+      jv["b_world"] = toJson(v.fragment.bWorld);
+    }
+    if (v.outcome == TraceOutcome::Shaded) {
+      const ShadeTerms& s = v.terms;
+      json js;
+      js["N"] = toJson(s.n);
+      js["T"] = toJson(s.t);
+      js["B"] = toJson(s.b);
+      js["albedo"] = toJson(s.albedo);
+      js["spec_scale"] = toJson(s.specScale);
+      js["normal_texel"] = toJson(s.normalTexel);
+      js["mapped_tangent"] = toJson(s.mappedTangent);
+      js["Nl"] = toJson(s.nl);
+      js["ambient"] = toJson(s.ambient);
+      json lights = json::array();
+      for (int l = 0; l < s.lightCount; ++l) {
+        const LightTerms& t = s.lights[static_cast<std::size_t>(l)];
+        lights.push_back({{"distance", t.distance}, {"L", toJson(t.l)}, {"V", toJson(t.v)}, {"R", toJson(t.r)},
+                          {"NdotL", t.nDotL}, {"RdotV", t.rDotV}, {"attenuation", t.attenuation},
+                          {"diffuse", toJson(t.diffuse)}, {"specular", toJson(t.specular)}});
+      }
+      js["lights"] = lights;
+      js["colour"] = toJson(s.colour);
+      jv["shading"] = js;
+    }
+    visits.push_back(jv);
+  }
+  j["triangles"] = visits;
+  return j;
+}
+
+}  // namespace twr

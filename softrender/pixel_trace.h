@@ -1,0 +1,77 @@
+// Pixel trace: the story of one pixel, told by re-running each pipeline stage for the
+// triangles that reach it. For every triangle (in draw order) whose projection covers the
+// pixel it records the clip planes that cut it, the clipped polygon, the fan triangle that
+// covers the pixel, its window and snapped positions and edge values, the barycentrics and
+// perspective weights, the interpolated varyings, every shading term, the depth, and what
+// happened: shaded, failed the depth test, culled, or clipped away. The replay follows the
+// same code as the renderer, so the last shaded visit is the pixel's final colour (unless a
+// TBN debug line was drawn over it, which the trace reports too).
+#pragma once
+
+#include "scene/renderer.h"
+#include "scene/scene.h"
+#include "softrender/clip.h"
+#include "softrender/interpolate.h"
+#include "softrender/setup.h"
+#include "softrender/shade.h"
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace twr {
+
+enum class TraceOutcome {
+  Shaded,            // passed the depth test and was shaded
+  FailedDepthTest,   // covered the pixel, but something nearer was already there
+  CulledBack,        // would cover the pixel, removed by back-face culling
+  CulledFront,       // would cover the pixel, removed by front-face culling
+  ClippedAway,       // the unclipped triangle covers the pixel, the clipped one does not
+};
+const char* toString(TraceOutcome outcome);
+
+struct TriangleVisit {
+  std::uint32_t triangleId = 0;  // global id (as in RenderOutput::triangleId)
+  std::string nodeName;
+  std::size_t triangleInMesh = 0;
+  std::array<vec3, 3> posModel{};
+  std::array<vec4, 3> posClip{};       // vertex stage output
+  std::uint32_t planesCut = 0;         // mask, see clip.h
+  std::vector<vec4> clippedPolygon;    // posClip of each vertex after clipping
+  int fanTriangle = -1;                // i: fan triangle (0, i, i+1) that covers the pixel
+  std::array<WindowVertex, 3> window{};
+  std::array<std::int32_t, 3> xFixed{}, yFixed{};  // after setup's corner ordering
+  std::array<std::int64_t, 3> edgeValue{};         // E_i at the pixel (> 0 inside)
+  bool frontFacing = true;
+  PixelWeights weights;      // barycentrics, perspective weights, depth
+  Fragment fragment;         // interpolated varyings
+  float depthBefore = 1.0f;  // depth buffer value when this triangle arrived
+  TraceOutcome outcome = TraceOutcome::Shaded;
+  ShadeTerms terms;          // filled when shaded
+};
+
+struct PixelTrace {
+  int x = 0, yTop = 0;  // the pixel, top-left image coordinates (as in the PNG files)
+  int yGl = 0;          // the same row in GL window coordinates (origin bottom-left)
+  int width = 0, height = 0;
+  View view = View::Shaded;
+  LightingSpace lightingSpace = LightingSpace::World;
+  std::vector<TriangleVisit> visits;
+  // What the renderer wrote to the pixel.
+  std::array<std::uint8_t, 4> rgba{};
+  float depth = 1.0f;
+  std::uint32_t triangleId = kNoTriangle;
+  bool debugLine = false;
+};
+
+// Throws InputError when the pixel is outside the image or the size is invalid.
+PixelTrace tracePixel(const Scene& scene, const RenderSettings& settings, int width, int height, int x, int yTop);
+
+// A readable multi-line report.
+std::string formatPixelTrace(const PixelTrace& trace);
+nlohmann::json pixelTraceToJson(const PixelTrace& trace);
+
+}  // namespace twr
