@@ -62,8 +62,8 @@ TEST(CliInfo, TextListingOfTheDefaultScene) {
   expectContains(r.out, "shininess 32; maps: diffuse " + kSource + "/assets/textures/bricks_diffuse.png (512x512), normal " +
                             kSource + "/assets/textures/bricks_normal.png (512x512), specular ");
   expectContains(r.out, "lights (2)");
-  expectContains(r.out, "[1] position (-4, 2.5, 1)");
-  expectContains(r.out, "camera: position (0.4, 2.1, 4.6), target (0, 0.55, 0), fov_deg 50");
+  expectContains(r.out, "[1] position (-4, 3, -1)");
+  expectContains(r.out, "camera: position (0.3, 1.7, 4.4), target (0, 0.5, 0), fov_deg 50");
   expectContains(r.out, "output: 640x480");
   expectContains(r.out, "view shaded, lighting_space world, tangent_transform model, texture_filter bilinear");
 }
