@@ -4,6 +4,7 @@
 #include "glrender/gl_renderer.h"
 
 #include "glrender/context_osmesa.h"
+#include "glrender/gl_clip_state.h"
 #include "glrender/gl_context.h"
 #include "glrender/gl_program.h"
 #include "glrender/gl_scene_draw.h"
@@ -128,16 +129,16 @@ class GlRenderer final : public Renderer {
     device.targets.bind();
     device.targets.clear(scene.output.background);
     device.targets.drawSurfaces();
-    const SceneDrawStats drawStats = drawScene(device.programs, scene, settings, items, clipFromWorld);
+    const GlClipState clipState = makeGlClipState(settings, scene.camera);
+    const SceneDrawStats drawStats = drawScene(device.programs, scene, settings, clipState, items, clipFromWorld);
     checkGlErrors("drawing the scene");
 
     if (settings.tbnLines.enabled) {
-      drawLines(device, items, settings, viewFromWorldMatrix, clipFromViewMatrix, clipFromWorld);
+      drawLines(device, items, settings, clipState, viewFromWorldMatrix, clipFromViewMatrix, clipFromWorld);
       checkGlErrors("drawing the TBN lines");
     }
     // Leave nothing enabled that a caller's shaders do not expect.
-    for (int j = 0; j < kMaxUserClipPlanes; ++j) glDisable(static_cast<GLenum>(GL_CLIP_DISTANCE0 + j));
-    glDisable(GL_DEPTH_CLAMP);
+    resetGlClipState();
     glUseProgram(0);
     glFinish();
 
@@ -197,17 +198,17 @@ class GlRenderer final : public Renderer {
   }
 
   void drawLines(GlDevice& device, const std::vector<DrawItem>& items, const RenderSettings& settings,
-                 const mat4& viewFromWorldMatrix, const mat4& clipFromViewMatrix, const mat4& clipFromWorld) {
+                 const GlClipState& clipState, const mat4& viewFromWorldMatrix, const mat4& clipFromViewMatrix, const mat4& clipFromWorld) {
     const std::vector<TbnLineVertex> lines = buildTbnLines(items, settings);
     if (lines.empty()) return;
     // The surfaces' state carries over, as in the tutorial: GL_LESS with depth writes,
-    // the same user clip planes and depth clamp (softrender/debug_lines.h does the same).
+    // the same clip planes and depth clamp (softrender/debug_lines.h does the same).
     device.targets.bindForLines();
     if (settings.tbnLines.mode == LineMode::Immediate) {
-      device.immediateLines->draw(lines, clipFromViewMatrix, viewFromWorldMatrix, settings.userClipPlanes);
+      device.immediateLines->draw(lines, clipFromViewMatrix, viewFromWorldMatrix, clipState, settings.userClipPlanes);
     } else {
       const CoreTbnLines coreLines(lines);
-      coreLines.draw(device.programs, clipFromWorld, settings.userClipPlanes);
+      coreLines.draw(device.programs, clipFromWorld, clipState, settings.userClipPlanes);
     }
   }
 

@@ -119,24 +119,10 @@ void applyPipelineState(const RenderSettings& settings) {
     glEnable(GL_CULL_FACE);
     glCullFace(settings.cull == CullMode::Back ? GL_BACK : GL_FRONT);
   }
-  // GL clips near and far together, or with depth clamp neither (docs/gl-path.md).
-  if (settings.clip.near && settings.clip.far) {
-    glDisable(GL_DEPTH_CLAMP);
-  } else {
-    glEnable(GL_DEPTH_CLAMP);
-  }
-  const int planeCount = static_cast<int>(settings.userClipPlanes.size());
-  for (int j = 0; j < kMaxUserClipPlanes; ++j) {
-    if (j < planeCount) {
-      glEnable(static_cast<GLenum>(GL_CLIP_DISTANCE0 + j));
-    } else {
-      glDisable(static_cast<GLenum>(GL_CLIP_DISTANCE0 + j));
-    }
-  }
 }
 
-void setUniforms(GLuint program, const Scene& scene, const RenderSettings& settings, const DrawItem& item,
-                 const mat4& clipFromWorld) {
+void setUniforms(GLuint program, const Scene& scene, const RenderSettings& settings, const GlClipState& clipState,
+                 const DrawItem& item, const mat4& clipFromWorld) {
   const ModelTransforms transforms = makeModelTransforms(item.worldFromModel, settings.tangentTransform);
   glUniformMatrix4fv(uniformLocation(program, "worldFromModel"), 1, GL_FALSE, &transforms.worldFromModel[0][0]);
   glUniformMatrix4fv(uniformLocation(program, "clipFromWorld"), 1, GL_FALSE, &clipFromWorld[0][0]);
@@ -161,11 +147,7 @@ void setUniforms(GLuint program, const Scene& scene, const RenderSettings& setti
     glUniform3fv(uniformLocation(program, (prefix + "specular").c_str()), 1, &light.specular.x);
     glUniform3fv(uniformLocation(program, (prefix + "attenuation").c_str()), 1, &light.attenuation.x);
   }
-  const GLsizei planeCount = static_cast<GLsizei>(settings.userClipPlanes.size());
-  glUniform1i(uniformLocation(program, "userClipPlaneCount"), planeCount);
-  if (planeCount > 0) {
-    glUniform4fv(uniformLocation(program, "userClipPlanes"), planeCount, &settings.userClipPlanes[0].x);
-  }
+  setGlClipUniforms(program, clipState, settings.userClipPlanes);
 
   const Material& material = *item.material;
   glUniform3fv(uniformLocation(program, "ka"), 1, &material.ka.x);
@@ -192,9 +174,10 @@ std::vector<std::string> phongDefines(const Material& material, const RenderSett
 }
 
 SceneDrawStats drawScene(ProgramCache& programs, const Scene& scene, const RenderSettings& settings,
-                         const std::vector<DrawItem>& items, const mat4& clipFromWorld) {
+                         const GlClipState& clipState, const std::vector<DrawItem>& items, const mat4& clipFromWorld) {
   SceneDrawStats stats;
   applyPipelineState(settings);
+  applyGlClipState(clipState);
 
   // Shared textures upload once per render.
   std::map<const Texture*, GlTexture> textures;
@@ -220,7 +203,7 @@ SceneDrawStats drawScene(ProgramCache& programs, const Scene& scene, const Rende
                            phongDefines(material, settings)};
     const GLuint program = programs.get(desc);
     glUseProgram(program);
-    setUniforms(program, scene, settings, item, clipFromWorld);
+    setUniforms(program, scene, settings, clipState, item, clipFromWorld);
     bindMap(material.diffuseMap, kDiffuseUnit);
     bindMap(material.normalMap, kNormalUnit);
     bindMap(material.specularMap, kSpecularUnit);

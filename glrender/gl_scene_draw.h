@@ -3,6 +3,7 @@
 // glDrawElements per draw item. Everything uploaded here is freed when the call returns.
 #pragma once
 
+#include "glrender/gl_clip_state.h"
 #include "glrender/gl_program.h"
 #include "scene/renderer.h"
 
@@ -22,6 +23,6 @@ std::vector<std::string> phongDefines(const Material& material, const RenderSett
 // Draws `items` into the bound framebuffer's current draw buffers. Throws InputError for
 // textures it cannot upload.
 SceneDrawStats drawScene(ProgramCache& programs, const Scene& scene, const RenderSettings& settings,
-                         const std::vector<DrawItem>& items, const mat4& clipFromWorld);
+                         const GlClipState& clipState, const std::vector<DrawItem>& items, const mat4& clipFromWorld);
 
 }  // namespace twr

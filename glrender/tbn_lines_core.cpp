@@ -26,15 +26,13 @@ CoreTbnLines::CoreTbnLines(const std::vector<TbnLineVertex>& lines)
   glBindVertexArray(0);
 }
 
-void CoreTbnLines::draw(ProgramCache& programs, const mat4& clipFromWorld,
+void CoreTbnLines::draw(ProgramCache& programs, const mat4& clipFromWorld, const GlClipState& clipState,
                         const std::vector<vec4>& userClipPlanes) const {
   const ProgramDesc desc{"tbn_lines", {"tbn_lines.vert"}, {"tbn_lines.frag"}, {}};
   const GLuint program = programs.get(desc);
   glUseProgram(program);
   glUniformMatrix4fv(uniformLocation(program, "clipFromWorld"), 1, GL_FALSE, &clipFromWorld[0][0]);
-  const GLsizei planeCount = static_cast<GLsizei>(userClipPlanes.size());
-  glUniform1i(uniformLocation(program, "userClipPlaneCount"), planeCount);
-  if (planeCount > 0) glUniform4fv(uniformLocation(program, "userClipPlanes"), planeCount, &userClipPlanes[0].x);
+  setGlClipUniforms(program, clipState, userClipPlanes);
   glBindVertexArray(vertexArray_.id());
   glDrawArrays(GL_LINES, 0, vertexCount_);
   glBindVertexArray(0);

@@ -1,6 +1,7 @@
 // TBN lines from a VBO with a tiny shader (shaders/tbn_lines.*): the core-profile way.
 #pragma once
 
+#include "glrender/gl_clip_state.h"
 #include "glrender/gl_program.h"
 #include "glrender/tbn_lines.h"
 
@@ -13,9 +14,9 @@ class CoreTbnLines {
   // Uploads `lines` (world space) once; draw() may then run several passes.
   explicit CoreTbnLines(const std::vector<TbnLineVertex>& lines);
 
-  // Draws into the current draw buffers, cut by `userClipPlanes` (world space) when
-  // their GL_CLIP_DISTANCE switches are on.
-  void draw(ProgramCache& programs, const mat4& clipFromWorld, const std::vector<vec4>& userClipPlanes) const;
+  // Draws into the current draw buffers, clipped as `clipState` says (applied by the caller).
+  void draw(ProgramCache& programs, const mat4& clipFromWorld, const GlClipState& clipState,
+            const std::vector<vec4>& userClipPlanes) const;
 
  private:
   GlVertexArray vertexArray_;

@@ -35,20 +35,26 @@ ImmediateTbnLines::ImmediateTbnLines(const GlProcFunction& procAddress) : impl_(
 ImmediateTbnLines::~ImmediateTbnLines() = default;
 
 void ImmediateTbnLines::draw(const std::vector<TbnLineVertex>& lines, const mat4& clipFromView,
-                             const mat4& viewFromWorld, const std::vector<vec4>& userClipPlanes) const {
+                             const mat4& viewFromWorld, const GlClipState& clipState,
+                             const std::vector<vec4>& userClipPlanes) const {
   const GladGLContext& gl = impl_->gl;
   // The tutorial's steps. Its modelview is View * Model with model-space vertices; these
   // vertices are already in world space (see tbn_lines.h), so the modelview is View.
   gl.MatrixMode(GL_PROJECTION);
   gl.LoadMatrixf(&clipFromView[0][0]);
   gl.MatrixMode(GL_MODELVIEW);
-  gl.LoadMatrixf(&viewFromWorld[0][0]);
-  // Fixed function clips with glClipPlane planes, given in the coordinates the current
-  // modelview maps from (world here); GL_CLIP_PLANEi is the switch GL_CLIP_DISTANCEi.
-  for (std::size_t j = 0; j < userClipPlanes.size(); ++j) {
-    const vec4& plane = userClipPlanes[j];
+  // Fixed function clips with glClipPlane planes, given in the coordinates the modelview
+  // of the moment maps from: view space under the identity, world space under the view
+  // matrix. GL_CLIP_PLANEi is the same switch as GL_CLIP_DISTANCEi.
+  const auto clipPlane = [&](int slot, const vec4& plane) {
     const GLdouble equation[4] = {plane.x, plane.y, plane.z, plane.w};
-    gl.ClipPlane(static_cast<GLenum>(GL_CLIP_PLANE0 + j), equation);
+    gl.ClipPlane(static_cast<GLenum>(GL_CLIP_PLANE0 + slot), equation);
+  };
+  gl.LoadIdentity();
+  if (clipState.frustumPlaneInSlot0) clipPlane(0, clipState.frustumPlaneView);
+  gl.LoadMatrixf(&viewFromWorld[0][0]);
+  for (std::size_t j = 0; j < userClipPlanes.size(); ++j) {
+    clipPlane(clipState.firstUserSlot + static_cast<int>(j), userClipPlanes[j]);
   }
   gl.UseProgram(0);
   gl.BindVertexArray(0);

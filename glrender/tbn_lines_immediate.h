@@ -7,6 +7,7 @@
 // compatibility loader (glad_compat/gl.h, a GladGLContext instead of global pointers).
 #pragma once
 
+#include "glrender/gl_clip_state.h"
 #include "glrender/gl_context.h"
 #include "glrender/tbn_lines.h"
 
@@ -23,11 +24,11 @@ class ImmediateTbnLines {
   ImmediateTbnLines(const ImmediateTbnLines&) = delete;
   ImmediateTbnLines& operator=(const ImmediateTbnLines&) = delete;
 
-  // Draws `lines` (world space) into the current draw buffers, cut by `userClipPlanes`
-  // (world space) through glClipPlane when their switches are on. Leaves the
-  // fixed-function matrices loaded.
+  // Draws `lines` (world space) into the current draw buffers, clipped as `clipState`
+  // says (applied by the caller) through glClipPlane. Leaves the fixed-function matrices
+  // loaded.
   void draw(const std::vector<TbnLineVertex>& lines, const mat4& clipFromView, const mat4& viewFromWorld,
-            const std::vector<vec4>& userClipPlanes) const;
+            const GlClipState& clipState, const std::vector<vec4>& userClipPlanes) const;
 
  private:
   struct Impl;

@@ -16,6 +16,10 @@ uniform vec3 lightPosWorld[MAX_LIGHTS];
 uniform int lightCount;                       // in [0, MAX_LIGHTS]
 uniform vec4 userClipPlanes[MAX_CLIP_PLANES];  // world space, keeps dot(plane, (p, 1)) >= 0
 uniform int userClipPlaneCount;                // in [0, MAX_CLIP_PLANES]
+// When one of near/far is off, GL's depth clamp drops both and the other one returns as
+// clip distance 0 (glrender/gl_clip_state.h); user plane j then is clip distance j + 1.
+uniform vec4 frustumClipPlane;  // clip space: keeps dot(plane, gl_Position) >= 0
+uniform int firstUserClipSlot;  // 0, or 1 when slot 0 holds frustumClipPlane
 
 out vec3 posWorld;
 out vec3 nWorld;
@@ -53,7 +57,14 @@ void main() {
   eyeDirTangent = vec3(dot(T, Ew), dot(B, Ew), dot(N, Ew));
 #endif
 
-  for (int j = 0; j < MAX_CLIP_PLANES; ++j) {
-    gl_ClipDistance[j] = j < userClipPlaneCount ? dot(userClipPlanes[j], vec4(posWorld, 1.0)) : 0.0;
+  for (int slot = 0; slot < MAX_CLIP_PLANES; ++slot) {
+    int j = slot - firstUserClipSlot;
+    float clipDistance = 0.0;
+    if (j < 0) {
+      clipDistance = dot(frustumClipPlane, gl_Position);
+    } else if (j < userClipPlaneCount) {
+      clipDistance = dot(userClipPlanes[j], vec4(posWorld, 1.0));
+    }
+    gl_ClipDistance[slot] = clipDistance;
   }
 }

@@ -162,6 +162,40 @@ TEST(GlRender, NearPlaneOffClampsDepthInsteadOfClipping) {
   EXPECT_EQ(out.depth[index(out, 32, 32)], 0.0f);
 }
 
+// GL has no switch for one of near/far alone: with far off the near plane must still cut
+// (it returns as a clip distance), and with near off the far plane still... is GL_LESS
+// against the cleared depth 1, which hides what depth clamp pushes to 1.
+TEST(GlRender, NearAndFarSwitchAlone) {
+  Scene scene = emptyScene();
+  // A floor at y = -0.5 from z = -0.2 (in front of near = 1) to z = -20 (beyond far = 10).
+  addNode(scene,
+          makeTriangles({{-2.0f, -0.5f, -0.2f}, {2.0f, -0.5f, -0.2f}, {2.0f, -0.5f, -20.0f},
+                         {-2.0f, -0.5f, -0.2f}, {2.0f, -0.5f, -20.0f}, {-2.0f, -0.5f, -20.0f}},
+                        {}, {}),
+          "floor");
+  scene.settings.cull = CullMode::None;
+  const auto renderer = makeGlRenderer();
+  const RenderOutput bothOn = renderer->render(scene, scene.settings, kSide, kSide);
+  RenderSettings farOff = scene.settings;
+  farOff.clip.far = false;
+  const RenderOutput onlyNear = renderer->render(scene, farOff, kSide, kSide);
+  RenderSettings nearOff = scene.settings;
+  nearOff.clip.near = false;
+  const RenderOutput onlyFar = renderer->render(scene, nearOff, kSide, kSide);
+
+  EXPECT_EQ(onlyNear.rgba, bothOn.rgba);
+  // Depth agrees to rounding: where the far plane cut, the triangles interpolate from
+  // the clipper's new vertices instead of the original ones.
+  constexpr float kDepthTolerance = 1.0f / (1 << 20);
+  for (std::size_t i = 0; i < bothOn.depth.size(); ++i) ASSERT_NEAR(onlyNear.depth[i], bothOn.depth[i], kDepthTolerance) << i;
+  // Near off draws the floor down to the image's bottom row, where near on cut it: the
+  // near plane meets the floor at y_ndc = -0.5 / 1 -> rows below 63 - 16 = 47 are empty.
+  EXPECT_FALSE(covered(bothOn, 32, 60));
+  EXPECT_TRUE(covered(onlyFar, 32, 60));
+  EXPECT_EQ(onlyFar.depth[index(onlyFar, 32, 60)], 0.0f);
+  EXPECT_GT(gltest::coveredCount(onlyFar), gltest::coveredCount(bothOn));
+}
+
 TEST(GlRender, TexturesAreUploadedBottomRowFirstAndSampledNearest) {
   auto texture = std::make_shared<Texture>();
   texture->path = "2x2 in code";
