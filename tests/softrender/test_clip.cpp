@@ -1,0 +1,192 @@
+// Homogeneous clipping: hand-checked polygons, planes, attributes and vertex bounds.
+#include "softrender/clip.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace twr {
+namespace {
+
+constexpr float kEps = 1e-5f;
+
+ClipVertex at(vec4 posClip, vec2 uv = vec2(0.0f)) {
+  ClipVertex v;
+  v.posClip = posClip;
+  v.posWorld = vec3(posClip);
+  v.uv = uv;
+  return v;
+}
+
+ClipConfig allPlanes(int userPlanes = 0) { return makeClipConfig(ClipSwitches{}, userPlanes, 100, 100); }
+
+void expectNear(vec4 a, vec4 b, float eps = kEps) {
+  EXPECT_NEAR(a.x, b.x, eps);
+  EXPECT_NEAR(a.y, b.y, eps);
+  EXPECT_NEAR(a.z, b.z, eps);
+  EXPECT_NEAR(a.w, b.w, eps);
+}
+
+TEST(Clip, TriangleInsideIsUntouched) {
+  ClipPolygon out, scratch;
+  const ClipVertex a = at({-0.5f, -0.5f, 0, 1}), b = at({0.5f, -0.5f, 0, 1}), c = at({0, 0.5f, 0, 1});
+  EXPECT_EQ(clipTriangle(a, b, c, allPlanes(), out, scratch), 0u);
+  ASSERT_EQ(out.count, 3);
+  EXPECT_EQ(out.v[0].posClip, a.posClip);
+  EXPECT_EQ(out.v[2].posClip, c.posClip);
+  EXPECT_FALSE(out.v[1].fromClipper);
+}
+
+TEST(Clip, VertexExactlyOnAPlaneIsInside) {
+  ClipPolygon out, scratch;
+  // x = w (right plane) and z = -w (near plane), distance exactly 0.
+  const ClipVertex a = at({1, 0, 0, 1}), b = at({0, 0.5f, -1, 1}), c = at({0, -0.5f, 0, 1});
+  EXPECT_EQ(outcode(a, allPlanes()), 0u);
+  EXPECT_EQ(outcode(b, allPlanes()), 0u);
+  EXPECT_EQ(clipTriangle(a, b, c, allPlanes(), out, scratch), 0u);
+  EXPECT_EQ(out.count, 3);
+}
+
+TEST(Clip, TriangleEntirelyOutsideOnePlaneIsRemoved) {
+  ClipPolygon out, scratch;
+  const std::uint32_t cut =
+      clipTriangle(at({2, 0, 0, 1}), at({3, 1, 0, 1}), at({2.5f, -1, 0, 1}), allPlanes(), out, scratch);
+  EXPECT_EQ(out.count, 0);
+  EXPECT_EQ(cut, 1u << kClipPlaneRight);
+}
+
+TEST(Clip, TriangleCrossingWZeroBecomesTheRightQuad) {
+  // A and B in front of the camera (w = 1), C behind it (w = -1). Only near (w + z >= 0)
+  // bounds the visible part: gamma <= 0.2 in barycentric terms, where |x|, |y| <= w holds.
+  // The cuts land at B + 0.2 (C - B) = (0.4, 0, -0.6, 0.6) and A + 0.2 (C - A) = (-0.4, 0, -0.6, 0.6).
+  const ClipVertex a = at({-0.5f, 0, 0, 1}, {0, 0}), b = at({0.5f, 0, 0, 1}, {1, 0}), c = at({0, 0, -3, -1}, {0, 1});
+  ClipPolygon out, scratch;
+  const std::uint32_t cut = clipTriangle(a, b, c, allPlanes(), out, scratch);
+  EXPECT_NE(cut & (1u << kClipPlaneNear), 0u);
+  ASSERT_EQ(out.count, 4);
+  expectNear(out.v[0].posClip, a.posClip);
+  expectNear(out.v[1].posClip, b.posClip);
+  expectNear(out.v[2].posClip, {0.4f, 0, -0.6f, 0.6f});
+  expectNear(out.v[3].posClip, {-0.4f, 0, -0.6f, 0.6f});
+  // Varyings follow the same parameter: uv = B + 0.2 (C - B) and A + 0.2 (C - A).
+  EXPECT_NEAR(out.v[2].uv.x, 0.8f, kEps);
+  EXPECT_NEAR(out.v[2].uv.y, 0.2f, kEps);
+  EXPECT_NEAR(out.v[3].uv.x, 0.0f, kEps);
+  EXPECT_NEAR(out.v[3].uv.y, 0.2f, kEps);
+  EXPECT_NEAR(out.v[2].posWorld.z, -0.6f, kEps);
+  EXPECT_TRUE(out.v[2].fromClipper);
+  for (int i = 0; i < out.count; ++i) EXPECT_GT(out.v[static_cast<std::size_t>(i)].posClip.w, 0.0f);
+}
+
+TEST(Clip, TriangleGainsOneVertexFromEachOfTheSixPlanes) {
+  // In the plane x + y + z = 0 the cube |x|,|y|,|z| <= 1 is a hexagon; this triangle's edges
+  // (at distance 1.3 from the centre, below the hexagon's circumradius sqrt 2) each cut off one
+  // corner, so the result has 6 + 3 = 9 = 3 + 6 vertices.
+  const float r = 2.6f / std::sqrt(2.0f);
+  const ClipVertex a = at({-r, r, 0, 1}), b = at({0, -r, r, 1}), c = at({r, 0, -r, 1});
+  ClipPolygon out, scratch;
+  const std::uint32_t cut = clipTriangle(a, b, c, allPlanes(), out, scratch);
+  EXPECT_EQ(cut, 0x3Fu);  // all six frustum planes
+  ASSERT_EQ(out.count, 9);
+  EXPECT_LE(out.count, kMaxClipVertices);
+  for (int i = 0; i < out.count; ++i) {
+    const vec4 p = out.v[static_cast<std::size_t>(i)].posClip;
+    EXPECT_LE(std::fabs(p.x), 1.0f + kEps);
+    EXPECT_LE(std::fabs(p.y), 1.0f + kEps);
+    EXPECT_LE(std::fabs(p.z), 1.0f + kEps);
+    EXPECT_NEAR(p.x + p.y + p.z, 0.0f, kEps);
+  }
+}
+
+TEST(Clip, UserPlanesAddVerticesWithinTheBound) {
+  // Eight user planes each cutting a corner of an already hexagon-clipped triangle still fit.
+  const float r = 2.6f / std::sqrt(2.0f);
+  ClipVertex a = at({-r, r, 0, 1}), b = at({0, -r, r, 1}), c = at({r, 0, -r, 1});
+  const ClipConfig config = allPlanes(kMaxUserClipPlanes);
+  for (int j = 0; j < kMaxUserClipPlanes; ++j) {
+    // Planes 1.25 - dot(dir_j, p) >= 0: an octagon a little wider than the 9-gon (clipDistance is linear in p).
+    const float angle = 6.2831853f * static_cast<float>(j) / kMaxUserClipPlanes;
+    const vec3 dir = glm::normalize(vec3(std::cos(angle), std::sin(angle), -std::cos(angle) - std::sin(angle)));
+    for (ClipVertex* v : {&a, &b, &c}) v->clipDistance[static_cast<std::size_t>(j)] = 1.25f - glm::dot(dir, vec3(v->posClip));
+  }
+  ClipPolygon out, scratch;
+  clipTriangle(a, b, c, config, out, scratch);
+  EXPECT_GT(out.count, 9) << "the octagon cuts the 9-gon into more pieces";
+  EXPECT_LE(out.count, kMaxClipVertices);
+  for (int i = 0; i < out.count; ++i) {
+    for (int j = 0; j < kMaxUserClipPlanes; ++j) {
+      EXPECT_GE(out.v[static_cast<std::size_t>(i)].clipDistance[static_cast<std::size_t>(j)], -kEps);
+    }
+  }
+}
+
+TEST(Clip, UserPlaneKeepsThePositiveSide) {
+  ClipVertex a = at({-0.5f, -0.5f, 0, 1}), b = at({0.5f, -0.5f, 0, 1}), c = at({0.5f, 0.5f, 0, 1});
+  for (ClipVertex* v : {&a, &b, &c}) v->clipDistance[0] = v->posWorld.x;  // keep x >= 0
+  ClipPolygon out, scratch;
+  const std::uint32_t cut = clipTriangle(a, b, c, allPlanes(1), out, scratch);
+  EXPECT_EQ(cut, 1u << kClipPlaneUser0);
+  ASSERT_EQ(out.count, 4);
+  for (int i = 0; i < out.count; ++i) EXPECT_GE(out.v[static_cast<std::size_t>(i)].posWorld.x, -kEps);
+}
+
+TEST(Clip, SharedEdgeGetsTheSameNewVertexEitherWay) {
+  const ClipVertex p = at({0.3f, -0.7f, 0.1f, 1}), q = at({2.9f, 0.4f, -0.2f, 1.3f});
+  const ClipVertex other1 = at({0, 0.5f, 0, 1}), other2 = at({0.2f, -0.9f, 0, 1});
+  ClipPolygon one, two, scratch;
+  clipTriangle(p, q, other1, allPlanes(), one, scratch);  // walks p -> q
+  clipTriangle(q, p, other2, allPlanes(), two, scratch);  // walks q -> p
+  bool found = false;
+  for (int i = 0; i < one.count; ++i) {
+    for (int j = 0; j < two.count; ++j) {
+      if (one.v[static_cast<std::size_t>(i)].fromClipper && one.v[static_cast<std::size_t>(i)].posClip == two.v[static_cast<std::size_t>(j)].posClip) found = true;
+    }
+  }
+  EXPECT_TRUE(found) << "the vertex where edge pq meets x = w must be bit-identical";
+}
+
+TEST(Clip, NearOffStillNeverLetsWReachZero) {
+  ClipSwitches frustum;
+  frustum.near = false;
+  const ClipConfig config = makeClipConfig(frustum, 0, 100, 100);
+  ClipPolygon out, scratch;
+  clipTriangle(at({-0.1f, 0, 0.5f, 1}), at({0.1f, 0, 0.5f, 1}), at({0, 0.05f, -3, -1}), config, out, scratch);
+  ASSERT_GE(out.count, 3);
+  for (int i = 0; i < out.count; ++i) EXPECT_GE(out.v[static_cast<std::size_t>(i)].posClip.w, kMinClipW * 0.999f);
+}
+
+TEST(Clip, SidePlaneOffFallsBackToTheGuardBand) {
+  ClipSwitches frustum;
+  frustum.right = false;
+  const ClipConfig config = makeClipConfig(frustum, 0, 100, 100);
+  // x_ndc up to 1 + 2 * 16384 / 100 is kept; a vertex at x_ndc = 1000 is cut to that bound.
+  ClipPolygon out, scratch;
+  const std::uint32_t cut = clipTriangle(at({0, -0.5f, 0, 1}), at({1000, 0, 0, 1}), at({0, 0.5f, 0, 1}), config, out, scratch);
+  EXPECT_EQ(cut, 1u << kClipPlaneRight);
+  float maxX = 0.0f;
+  for (int i = 0; i < out.count; ++i) maxX = std::fmax(maxX, out.v[static_cast<std::size_t>(i)].posClip.x);
+  EXPECT_NEAR(maxX, config.guardBandX, 1e-3f);
+  EXPECT_GT(maxX, 300.0f);
+}
+
+TEST(Clip, NonFiniteVerticesRemoveTheTriangle) {
+  ClipPolygon out, scratch;
+  const float inf = std::numeric_limits<float>::infinity();
+  EXPECT_EQ(clipTriangle(at({inf, 0, 0, 1}), at({0, 0, 0, 1}), at({0, 1, 0, 1}), allPlanes(), out, scratch),
+            kClipNonFiniteBit);
+  EXPECT_EQ(out.count, 0);
+}
+
+TEST(Clip, SegmentIsCutFromBothEnds) {
+  ClipVertex a = at({-3, 0, 0, 1}), b = at({3, 0, 0, 1});
+  std::uint32_t cut = 0;
+  ASSERT_TRUE(clipSegment(a, b, allPlanes(), cut));
+  EXPECT_EQ(cut, (1u << kClipPlaneLeft) | (1u << kClipPlaneRight));
+  EXPECT_NEAR(a.posClip.x, -1.0f, kEps);
+  EXPECT_NEAR(b.posClip.x, 1.0f, kEps);
+  ClipVertex c = at({2, 0, 0, 1}), d = at({3, 0, 0, 1});
+  EXPECT_FALSE(clipSegment(c, d, allPlanes(), cut));
+}
+
+}  // namespace
+}  // namespace twr
