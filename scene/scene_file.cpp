@@ -725,6 +725,7 @@ Scene parseScene(const std::string& json, const std::string& nameForMessages, co
 
 Scene loadSceneFile(const std::string& path) {
   std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": cannot open scene file (it is a directory)");
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": cannot open scene file (no such file)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open scene file (not readable)");

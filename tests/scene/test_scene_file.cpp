@@ -51,7 +51,8 @@ std::string withMesh(const std::string& mesh) { return R"({"nodes": [{"name": "n
 
 TEST(SceneFileErrors, MissingFile) {
   const std::string path = kDataDir + "no_such_scene.json";
-  EXPECT_EQ(loadError(path).rfind(path + ": cannot open scene file", 0), 0u) << loadError(path);
+  EXPECT_EQ(loadError(path), path + ": cannot open scene file (no such file)");
+  EXPECT_EQ(loadError(kDataDir + "sub"), kDataDir + "sub: cannot open scene file (it is a directory)");
 }
 
 TEST(SceneFileErrors, BadJsonNamesLineAndColumn) {
