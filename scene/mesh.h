@@ -39,6 +39,7 @@ struct MeshDesc {
   float major = 1.0f, minor = 0.25f;  // torus radii
   int rings = 32, sides = 16;       // torus segments around the major / minor circle
   std::string path;                 // obj: resolved path
+  int objPart = -1;                 // obj: which part (one per material) to build; -1 merges all
   std::vector<vec3> positions;      // triangles: three per triangle
   std::vector<vec2> uvs;            // triangles: optional, one per position
   std::vector<vec3> normals;        // triangles: optional, one per position

@@ -350,6 +350,13 @@ Mesh buildMesh(const MeshDesc& desc) {
       return makeTriangles(desc.positions, desc.uvs, desc.normals);
     case MeshType::Obj: {
       ObjModel model = loadObj(desc.path);
+      if (desc.objPart >= 0) {
+        if (desc.objPart >= static_cast<int>(model.meshes.size())) {
+          throw InputError(desc.path + ": has " + std::to_string(model.meshes.size()) + " parts, part " +
+                           std::to_string(desc.objPart) + " was asked for");
+        }
+        return std::move(model.meshes[static_cast<std::size_t>(desc.objPart)]);
+      }
       Mesh merged;
       for (const Mesh& part : model.meshes) {
         const std::uint32_t base = index32(merged.vertices.size());

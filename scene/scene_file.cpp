@@ -523,6 +523,7 @@ class SceneReader {
       part.meshIndex = static_cast<int>(scene_.meshes.size());
       scene_.meshes.push_back(std::move(model.meshes[i]));
       scene_.meshDescs.push_back(desc);
+      scene_.meshDescs.back().objPart = static_cast<int>(i);  // so the GUI rebuilds just this part
       if (node.materialIndex >= 0) {
         part.materialIndex = node.materialIndex;
       } else if (hasMaterial) {

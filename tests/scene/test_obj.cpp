@@ -187,6 +187,19 @@ TEST(ObjLoad, BuildMeshMergesAllParts) {
   for (std::size_t i = 6; i < 12; ++i) EXPECT_GE(merged.indices[i], 4u);
 }
 
+TEST(ObjLoad, BuildMeshBuildsOnePartWhenAsked) {
+  MeshDesc desc;
+  desc.type = MeshType::Obj;
+  desc.path = kDataDir + "/textured.obj";
+  desc.objPart = 1;
+  const Mesh part = buildMesh(desc);
+  EXPECT_EQ(part.vertices.size(), 4u);
+  EXPECT_EQ(part.triangleCount(), 2u);
+  for (std::uint32_t index : part.indices) EXPECT_LT(index, 4u);
+  desc.objPart = 2;  // the file has two parts
+  EXPECT_THROW(buildMesh(desc), InputError);
+}
+
 TEST(ObjErrors, MissingFile) {
   expectLoadError(kDataDir + "/does_not_exist.obj", {"cannot open"});
 }

@@ -1,0 +1,42 @@
+// Tolerances for the scene suite, CPU versus llvmpipe in precise sampling mode: one place,
+// one row per scene. None may be looser than the project's targets (issue 5):
+//   coverage_mismatch = 0 where no triangle is clipped, <= 1 per 10,000 covered pixels where
+//   clipping happens; over_1 <= 0.1 % of pixels both covered; max_abs_diff <= 3; no NaN.
+// Measured on 2026-11-21 (Mesa 22.3.6 llvmpipe): every scene and view at coverage mismatch 0
+// and max_abs_diff 1 with over_1 = 0. The defaults below keep one level (and 0.01 %) of
+// headroom over that measurement for code-generation differences between x86 machines
+// (llvmpipe fuses multiply-adds where the CPU has FMA); coverage stays exact.
+#pragma once
+
+#include <string_view>
+
+namespace twr::suite {
+
+struct SceneTolerance {
+  std::string_view scene;              // file name in assets/scenes/
+  int maxAbsDiff = 2;                  // levels, inclusive (target: 3)
+  double maxOver1Pct = 0.01;           // % of pixels both covered, inclusive (target: 0.1)
+  double maxCoverageMismatchPer10k = 0.0;  // per 10,000 covered pixels, inclusive (target: 0 / 1)
+};
+
+inline constexpr SceneTolerance kSceneTolerances[] = {
+    {"default.json"},
+    {"cylinder_tutorial.json"},
+    {"cube_faces.json"},
+    {"sphere_coarse.json"},
+    {"sphere_fine.json"},
+    {"culling.json"},
+    {"inside_near.json"},
+    {"user_clip.json"},
+    {"nonuniform_scale.json"},
+    {"mirrored_uvs.json"},
+    {"uv_wrap.json"},
+    {"many_lights.json"},
+    {"light_touching.json"},
+    {"filter_nearest.json"},
+    {"tangent_space.json"},
+    {"tbn_lines.json"},
+    {"obj_model.json"},
+};
+
+}  // namespace twr::suite

@@ -1,0 +1,145 @@
+// The scene suite: every scene in assets/scenes/ rendered by both backends headless and held
+// to its row in scene_tolerances.h; every debug view on the default and tangent-space scenes;
+// every cull mode with both front faces on the culling scene. On failure the images and
+// metrics stay under TWINRASTER_TEST_OUT/suite/<case>/ and the test prints their paths.
+#include "compare/scene_tolerances.h"
+
+#include "compare/artifacts.h"
+#include "compare/metrics.h"
+#include "compare/report_json.h"
+#include "compare/thresholds.h"
+#include "glrender/gl_renderer.h"
+#include "scene/scene_file.h"
+#include "softrender/cpu_renderer.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace twr {
+namespace {
+
+// Sanitizer builds run a smaller matrix at half size: the same code paths, a fraction of the time.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kQuickSuite = true;
+#else
+constexpr bool kQuickSuite = false;
+#endif
+
+struct SuiteCase {
+  std::string scene;
+  View view = View::Shaded;
+  bool overrideView = false;
+  std::string cull, frontFace;  // empty: the scene's own
+  std::string name;
+};
+
+std::vector<SuiteCase> suiteCases() {
+  std::vector<SuiteCase> cases;
+  auto stem = [](const std::string& scene) { return scene.substr(0, scene.find('.')); };
+  for (const suite::SceneTolerance& row : suite::kSceneTolerances) {
+    SuiteCase c;
+    c.scene = std::string(row.scene);
+    c.name = stem(c.scene);
+    cases.push_back(c);
+  }
+  for (const char* scene : {"default.json", "tangent_space.json"}) {
+    for (View view : kAllViews) {
+      if (view == View::Shaded) continue;
+      if (kQuickSuite && std::string(scene) != "default.json") continue;
+      SuiteCase c;
+      c.scene = scene;
+      c.view = view;
+      c.overrideView = true;
+      c.name = stem(scene) + "_view_" + std::string(toString(view));
+      cases.push_back(c);
+    }
+  }
+  for (const char* cull : {"none", "back", "front"}) {
+    for (const char* front : {"ccw", "cw"}) {
+      SuiteCase c;
+      c.scene = "culling.json";
+      c.cull = cull;
+      c.frontFace = front;
+      c.name = std::string("culling_") + cull + "_" + front;
+      cases.push_back(c);
+    }
+  }
+  return cases;
+}
+
+const suite::SceneTolerance& toleranceFor(const std::string& scene) {
+  for (const suite::SceneTolerance& row : suite::kSceneTolerances)
+    if (row.scene == scene) return row;
+  static const suite::SceneTolerance fallback{};
+  return fallback;
+}
+
+class SceneSuite : public ::testing::TestWithParam<SuiteCase> {};
+
+TEST_P(SceneSuite, CpuMatchesLlvmpipeWithinTolerance) {
+  const SuiteCase& c = GetParam();
+  Scene scene = loadSceneFile(std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes/" + c.scene);
+  if (c.overrideView) scene.settings.view = c.view;
+  if (!c.cull.empty()) {
+    ASSERT_TRUE(parse(c.cull, scene.settings.cull));
+  }
+  if (!c.frontFace.empty()) {
+    ASSERT_TRUE(parse(c.frontFace, scene.settings.frontFace));
+  }
+  const int divisor = kQuickSuite ? 2 : 1;
+  const int width = scene.output.width / divisor, height = scene.output.height / divisor;
+
+  const RenderOutput cpu = makeCpuRenderer()->render(scene, scene.settings, width, height);
+  const RenderOutput gl = makeGlRenderer()->render(scene, scene.settings, width, height);
+  ASSERT_EQ(glSamplingMode(), "precise") << "the suite compares against llvmpipe's precise sampling";
+  const CompareResult result = compareDetailed(cpu, gl);
+  const CompareMetrics& m = result.metrics;
+
+  const suite::SceneTolerance& row = toleranceFor(c.scene);
+  const bool clipped = cpu.stats.trianglesClipped > 0;
+  // The row, never looser than the project's targets.
+  Thresholds limits = issueTargets(clipped);
+  limits.maxAbsDiff = std::min<double>(row.maxAbsDiff, *limits.maxAbsDiff);
+  limits.maxOver1Pct = std::min(row.maxOver1Pct, *limits.maxOver1Pct);
+  if (clipped) {
+    limits.maxCoverageMismatchPer10k = std::min(row.maxCoverageMismatchPer10k, *limits.maxCoverageMismatchPer10k);
+  } else {
+    limits.maxCoverageMismatch = 0.0;
+  }
+  const std::vector<ThresholdViolation> violations = checkThresholds(m, limits);
+
+  EXPECT_GT(m.coveredCpu, 0u) << "the scene draws nothing: the test would prove nothing";
+  EXPECT_EQ(m.nanPixels, 0u);
+  if (!violations.empty() || HasFailure()) {
+    nlohmann::json json = metricsToJson(m);
+    mergeExtraKeys(json, {{"thresholds", thresholdsToJson(limits, violations)}});
+    const std::string dir = std::string(TWINRASTER_TEST_OUT) + "/suite/" + c.name;
+    const ArtifactPaths paths = writeCompareArtifacts(dir, cpu, gl, result, json);
+    std::string message = "scene " + c.scene + " (" + c.name + ") exceeds its tolerance:\n";
+    for (const ThresholdViolation& v : violations) message += "  " + v.message + "\n";
+    message += "images and metrics kept:\n";
+    for (const std::string& path : paths.all()) message += "  " + path + "\n";
+    ADD_FAILURE() << message;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, SceneSuite, ::testing::ValuesIn(suiteCases()),
+                         [](const ::testing::TestParamInfo<SuiteCase>& info) { return info.param.name; });
+
+// Every scene file in assets/scenes/ has a row: a new scene cannot skip the suite.
+TEST(SceneSuiteTable, EverySceneFileHasATolerance) {
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes")) {
+    if (entry.path().extension() != ".json") continue;
+    const std::string name = entry.path().filename().string();
+    const bool listed = std::any_of(std::begin(suite::kSceneTolerances), std::end(suite::kSceneTolerances),
+                                    [&](const suite::SceneTolerance& row) { return row.scene == name; });
+    EXPECT_TRUE(listed) << name << " has no row in tests/compare/scene_tolerances.h";
+  }
+}
+
+}  // namespace
+}  // namespace twr
