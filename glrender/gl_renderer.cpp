@@ -96,6 +96,33 @@ void validateRequest(const Scene& scene, const RenderSettings& settings, int wid
   }
 }
 
+// Puts back what a caller drawing in its own context (the GUI) relies on, also when a
+// render throws: framebuffer bindings and viewport; and switches off what the caller's
+// shaders do not expect (clip distances, depth clamp, our program).
+class CallerStateGuard {
+ public:
+  CallerStateGuard() {
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer_);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer_);
+    glGetIntegerv(GL_VIEWPORT, viewport_.data());
+  }
+  ~CallerStateGuard() {
+    resetGlClipState();
+    glUseProgram(0);
+    glBindVertexArray(0);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(drawFramebuffer_));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(readFramebuffer_));
+    glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+  }
+  CallerStateGuard(const CallerStateGuard&) = delete;
+  CallerStateGuard& operator=(const CallerStateGuard&) = delete;
+
+ private:
+  GLint drawFramebuffer_ = 0;
+  GLint readFramebuffer_ = 0;
+  std::array<GLint, 4> viewport_{};
+};
+
 class GlRenderer final : public Renderer {
  public:
   explicit GlRenderer(const GlOptions& options) : options_(options) {}
@@ -111,12 +138,7 @@ class GlRenderer final : public Renderer {
       device.immediateLines = std::make_unique<ImmediateTbnLines>(device.procAddress);
     }
 
-    // Keep the caller's framebuffer and viewport when drawing in its context.
-    GLint previousDrawFramebuffer = 0, previousReadFramebuffer = 0;
-    std::array<GLint, 4> previousViewport{};
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousDrawFramebuffer);
-    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previousReadFramebuffer);
-    glGetIntegerv(GL_VIEWPORT, previousViewport.data());
+    const CallerStateGuard callerState;
 
     const auto start = std::chrono::steady_clock::now();
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
@@ -137,17 +159,11 @@ class GlRenderer final : public Renderer {
       drawLines(device, items, settings, clipState, viewFromWorldMatrix, clipFromViewMatrix, clipFromWorld);
       checkGlErrors("drawing the TBN lines");
     }
-    // Leave nothing enabled that a caller's shaders do not expect.
-    resetGlClipState();
-    glUseProgram(0);
     glFinish();
 
     RenderOutput out;
     device.targets.readBack(out);
     checkGlErrors("reading back");
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(previousDrawFramebuffer));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(previousReadFramebuffer));
-    glViewport(previousViewport[0], previousViewport[1], previousViewport[2], previousViewport[3]);
 
     out.stats.trianglesIn = drawStats.trianglesIn;
     out.stats.pixelsShaded = drawStats.samplesPassed;
