@@ -1,0 +1,111 @@
+// Interpolation: screen-space barycentrics, linear depth, perspective-correct varyings.
+#include "softrender/interpolate.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace twr {
+namespace {
+
+constexpr float kEps = 1e-6f;
+
+WindowVertex win(float x, float y, float z, float invW) {
+  WindowVertex v;
+  v.x = x;
+  v.y = y;
+  v.z = z;
+  v.invW = invW;
+  return v;
+}
+
+InterpolationSetup setupFor(const std::array<WindowVertex, 3>& w) {
+  TriangleSetup s;
+  EXPECT_EQ(setupTriangle(w, CullMode::None, FrontFace::Ccw, Viewport{64, 64}, s), SetupResult::Ready);
+  return makeInterpolationSetup(w, s);
+}
+
+TEST(Interpolate, BarycentricsAtTheCornersArePure) {
+  // Corners on pixel centres (0.5, 0.5), (10.5, 0.5), (0.5, 10.5).
+  const InterpolationSetup s = setupFor({win(0.5f, 0.5f, 0.1f, 1), win(10.5f, 0.5f, 0.2f, 1), win(0.5f, 10.5f, 0.3f, 1)});
+  const PixelWeights a = pixelWeights(s, 0, 0), b = pixelWeights(s, 10, 0), c = pixelWeights(s, 0, 10);
+  EXPECT_NEAR(a.screen[0], 1.0f, kEps);
+  EXPECT_NEAR(b.screen[1], 1.0f, kEps);
+  EXPECT_NEAR(c.screen[2], 1.0f, kEps);
+  EXPECT_NEAR(b.depth, 0.2f, kEps);
+  // Pixel (5, 0): halfway along the bottom edge.
+  const PixelWeights m = pixelWeights(s, 5, 0);
+  EXPECT_NEAR(m.screen[0], 0.5f, kEps);
+  EXPECT_NEAR(m.screen[1], 0.5f, kEps);
+  EXPECT_NEAR(m.screen[2], 0.0f, kEps);
+  EXPECT_NEAR(m.depth, 0.15f, kEps);  // depth is linear in screen space
+}
+
+TEST(Interpolate, VaryingsArePerspectiveCorrect) {
+  // w = 1 at corner 0, w = 2 at corner 1: halfway in screen space the weights are
+  // (0.5 / 1, 0.5 / 2) / (0.5 + 0.25) = (2/3, 1/3), not (1/2, 1/2).
+  const InterpolationSetup s = setupFor({win(0.5f, 0.5f, 0.0f, 1.0f), win(10.5f, 0.5f, 1.0f, 0.5f), win(0.5f, 10.5f, 0.0f, 1.0f)});
+  const PixelWeights w = pixelWeights(s, 5, 0);
+  EXPECT_NEAR(w.perspective[0], 2.0f / 3.0f, 1e-6f);
+  EXPECT_NEAR(w.perspective[1], 1.0f / 3.0f, 1e-6f);
+  ClipVertex v0, v1, v2;
+  v0.uv = vec2(0, 0);
+  v1.uv = vec2(3, 0);
+  v2.uv = vec2(0, 3);
+  v0.nWorld = vec3(0, 0, 1);
+  v1.nWorld = vec3(0, 0, 1);
+  v2.nWorld = vec3(0, 0, 1);
+  const Fragment f = interpolateFragment(v0, v1, v2, w, false, 0);
+  EXPECT_NEAR(f.uv.x, 1.0f, 1e-5f);  // 3 * 1/3
+  EXPECT_NEAR(f.depth, 0.5f, 1e-6f);
+}
+
+TEST(Interpolate, DepthIsClampedToTheDepthRange) {
+  // Window depths outside [0, 1] (near/far planes off, GL depth clamp) clamp per pixel.
+  const InterpolationSetup s = setupFor({win(0.5f, 0.5f, -0.5f, 1), win(10.5f, 0.5f, 1.5f, 1), win(0.5f, 10.5f, -0.5f, 1)});
+  EXPECT_EQ(pixelWeights(s, 0, 0).depth, 0.0f);
+  EXPECT_EQ(pixelWeights(s, 10, 0).depth, 1.0f);
+  EXPECT_NEAR(pixelWeights(s, 5, 0).depth, 0.5f, kEps);
+}
+
+TEST(Interpolate, DegenerateUvsStayConstantAndFinite) {
+  const InterpolationSetup s = setupFor({win(0.5f, 0.5f, 0.5f, 1), win(30.5f, 2.5f, 0.5f, 0.25f), win(3.5f, 40.5f, 0.5f, 2)});
+  ClipVertex v0, v1, v2;
+  v0.uv = v1.uv = v2.uv = vec2(0.25f, 0.75f);
+  for (int py = 0; py < 40; py += 7) {
+    for (int px = 0; px < 30; px += 5) {
+      const Fragment f = interpolateFragment(v0, v1, v2, pixelWeights(s, px, py), false, 0);
+      EXPECT_NEAR(f.uv.x, 0.25f, 1e-5f);
+      EXPECT_NEAR(f.uv.y, 0.75f, 1e-5f);
+    }
+  }
+}
+
+TEST(Interpolate, TangentSpaceVaryingsOnlyWhenAsked) {
+  const InterpolationSetup s = setupFor({win(0.5f, 0.5f, 0, 1), win(10.5f, 0.5f, 0, 1), win(0.5f, 10.5f, 0, 1)});
+  ClipVertex v0, v1, v2;
+  v0.lightDirTangent[0] = v1.lightDirTangent[0] = v2.lightDirTangent[0] = vec3(1, 2, 3);
+  v0.eyeDirTangent = v1.eyeDirTangent = v2.eyeDirTangent = vec3(4, 5, 6);
+  const PixelWeights w = pixelWeights(s, 2, 2);
+  const Fragment tangent = interpolateFragment(v0, v1, v2, w, true, 1);
+  EXPECT_NEAR(tangent.lightDirTangent[0].z, 3.0f, 1e-5f);
+  EXPECT_NEAR(tangent.eyeDirTangent.y, 5.0f, 1e-5f);
+  const Fragment world = interpolateFragment(v0, v1, v2, w, false, 0);
+  EXPECT_EQ(world.eyeDirTangent, vec3(0.0f));
+}
+
+TEST(Interpolate, CollinearFloatPositionsFallBackToTheSnappedOnes) {
+  // Float positions on one line (no area), but they snap to a triangle with area.
+  const std::array<WindowVertex, 3> w{win(1.0f, 1.0f, 0.2f, 1), win(9.0f, 9.0f, 0.4f, 1), win(5.0f, 5.0f, 0.6f, 1)};
+  TriangleSetup snapped;
+  snapped.xFixed = {128, 2176, 1152};  // (1, 1), (9, 9), (5.0039, 5) px minus the centre offset
+  snapped.yFixed = {128, 2176, 1151};
+  const InterpolationSetup s = makeInterpolationSetup(w, snapped);
+  const PixelWeights p = pixelWeights(s, 4, 4);
+  EXPECT_TRUE(std::isfinite(p.screen[0]) && std::isfinite(p.screen[1]) && std::isfinite(p.screen[2]));
+  EXPECT_NEAR(p.screen[0] + p.screen[1] + p.screen[2], 1.0f, 1e-5f);
+  EXPECT_TRUE(std::isfinite(p.depth));
+}
+
+}  // namespace
+}  // namespace twr

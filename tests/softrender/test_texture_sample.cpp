@@ -1,0 +1,94 @@
+// Texture sampling: GL_REPEAT, texel centres at +0.5, nearest and bilinear by hand.
+#include "softrender/texture_sample.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace twr {
+namespace {
+
+// 2 x 2 texture, red channel: row 0 (v = 0) holds 0 and 100, row 1 holds 200 and 255.
+Texture twoByTwo() {
+  Texture t;
+  t.width = 2;
+  t.height = 2;
+  const std::uint8_t red[4] = {0, 100, 200, 255};
+  for (std::uint8_t r : red) {
+    t.rgba.insert(t.rgba.end(), {r, 0, 0, 255});
+  }
+  return t;
+}
+
+float red(vec4 c) { return c.r * 255.0f; }
+
+TEST(TextureSample, NearestPicksTheTexelUnderTheCoordinate) {
+  const Texture t = twoByTwo();
+  EXPECT_FLOAT_EQ(red(sampleNearest(t, {0.25f, 0.25f})), 0.0f);    // texel (0, 0)'s centre
+  EXPECT_FLOAT_EQ(red(sampleNearest(t, {0.75f, 0.25f})), 100.0f);  // texel (1, 0)
+  EXPECT_FLOAT_EQ(red(sampleNearest(t, {0.25f, 0.75f})), 200.0f);  // texel (0, 1): rows are bottom first
+  EXPECT_FLOAT_EQ(red(sampleNearest(t, {0.5f, 0.5f})), 255.0f);    // floor(1) = texel 1 on both axes
+}
+
+TEST(TextureSample, NearestWrapsAtTheEdges) {
+  const Texture t = twoByTwo();
+  EXPECT_FLOAT_EQ(red(sampleNearest(t, {1.0f, 0.0f})), 0.0f);     // floor(2) = 2 wraps to 0
+  EXPECT_FLOAT_EQ(red(sampleNearest(t, {-0.25f, 0.25f})), 100.0f);  // floor(-0.5) = -1 wraps to 1
+  // u: floor(7.5) = 7 -> 1; v: floor(-2.5) = -3 -> 1: texel (1, 1).
+  EXPECT_FLOAT_EQ(red(sampleNearest(t, {3.75f, -1.25f})), 255.0f);
+  // u: floor(-2.5) = -3 -> 1; v: floor(0.5) = 0: texel (1, 0).
+  EXPECT_FLOAT_EQ(red(sampleNearest(t, {-1.25f, 0.25f})), 100.0f);
+}
+
+TEST(TextureSample, BilinearAtTexelCentresIsTheTexel) {
+  const Texture t = twoByTwo();
+  EXPECT_NEAR(red(sampleBilinear(t, {0.25f, 0.25f})), 0.0f, 1e-4f);
+  EXPECT_NEAR(red(sampleBilinear(t, {0.75f, 0.75f})), 255.0f, 1e-4f);
+}
+
+TEST(TextureSample, BilinearWeightsAsGlDefinesThem) {
+  const Texture t = twoByTwo();
+  // u = 0.5: u' = 0.5 * 2 - 0.5 = 0.5 -> i0 = 0, alpha = 0.5, on row 0 (v = 0.25).
+  EXPECT_NEAR(red(sampleBilinear(t, {0.5f, 0.25f})), 50.0f, 1e-4f);
+  // The centre of the texture: all four texels with weight 1/4.
+  EXPECT_NEAR(red(sampleBilinear(t, {0.5f, 0.5f})), (0.0f + 100 + 200 + 255) / 4, 1e-3f);
+  // u = 0.375: u' = 0.25 -> alpha 0.25: 0.75 * 0 + 0.25 * 100.
+  EXPECT_NEAR(red(sampleBilinear(t, {0.375f, 0.25f})), 25.0f, 1e-4f);
+}
+
+TEST(TextureSample, BilinearWrapsAcrossTheEdge) {
+  const Texture t = twoByTwo();
+  // u = 0: u' = -0.5 -> i0 = -1 (wraps to 1), i1 = 0, alpha = 0.5: mean of texels 1 and 0.
+  EXPECT_NEAR(red(sampleBilinear(t, {0.0f, 0.25f})), 50.0f, 1e-4f);
+  // u = 1 is the same point as u = 0 under GL_REPEAT.
+  EXPECT_NEAR(red(sampleBilinear(t, {1.0f, 0.25f})), 50.0f, 1e-4f);
+  const SampleFootprint f = sampleFootprint(t, {0.0f, 0.25f}, TextureFilter::Bilinear);
+  EXPECT_EQ(f.x0, 1);
+  EXPECT_EQ(f.x1, 0);
+  EXPECT_FLOAT_EQ(f.alpha, 0.5f);
+}
+
+TEST(TextureSample, HugeAndNonFiniteCoordinatesStayInRange) {
+  const Texture t = twoByTwo();
+  for (float u : {1e9f, -1e9f, 3e38f, std::numeric_limits<float>::infinity(), std::numeric_limits<float>::quiet_NaN()}) {
+    for (TextureFilter filter : {TextureFilter::Nearest, TextureFilter::Bilinear}) {
+      const SampleFootprint f = sampleFootprint(t, {u, u}, filter);
+      EXPECT_GE(f.x0, 0);
+      EXPECT_LT(f.x0, 2);
+      EXPECT_GE(f.y1, 0);
+      EXPECT_LT(f.y1, 2);
+      const vec4 c = sampleTexture(t, {u, u}, filter);
+      EXPECT_TRUE(std::isfinite(c.r) && std::isfinite(c.a));
+    }
+  }
+}
+
+TEST(TextureSample, NearestIndexFloorsTheProductInFloat) {
+  EXPECT_EQ(nearestTexelIndex(0.999999f, 4), 3);
+  EXPECT_EQ(nearestTexelIndex(-0.000001f, 4), 3);
+  EXPECT_EQ(nearestTexelIndex(2.5f, 4), 2);
+}
+
+}  // namespace
+}  // namespace twr
