@@ -1,0 +1,390 @@
+#include "app/gui/app.h"
+
+#include "compare/heatmap.h"
+#include "compare/side_by_side.h"
+#include "glrender/gl_renderer.h"
+#include "scene/errors.h"
+
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <glad/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <ctime>
+#include <filesystem>
+#include <iostream>
+#include <thread>
+
+namespace twr::gui {
+namespace {
+
+// How long the loop sleeps while the window is minimised (zero-size framebuffer), seconds.
+constexpr double kMinimisedWaitSeconds = 0.1;
+// While --frames waits for the CPU frame, how long each wait for the worker lasts.
+constexpr std::chrono::milliseconds kSettlePoll{10};
+// Text sizes at content scale 1, pixels.
+constexpr float kBaseFontPixels = 15.0f;
+constexpr float kMonoFontPixels = 14.0f;
+// Largest UI scale honoured (a content scale above this is a misreport), inclusive.
+constexpr float kMaxUiScale = 4.0f;
+// Window background behind the panels (linear RGB).
+constexpr float kClearColour[3] = {0.08f, 0.08f, 0.10f};
+
+const char* const kUiFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+const char* const kMonoFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf";
+
+bool fileExists(const char* path) {
+  std::error_code code;
+  return std::filesystem::is_regular_file(path, code);
+}
+
+std::string timestamp() {
+  const std::time_t now = std::time(nullptr);
+  std::tm local{};
+  localtime_r(&now, &local);
+  char buffer[32];
+  std::strftime(buffer, sizeof buffer, "%Y%m%d-%H%M%S", &local);
+  return buffer;
+}
+
+// A split-view image: CPU columns left of the divider, GL columns from it on, and a white
+// one-pixel divider column, as on screen.
+Image composeSplit(const Image& cpu, const Image& gl, float fraction) {
+  Image out = cpu;
+  const int splitX = std::clamp(static_cast<int>(std::lround(fraction * static_cast<float>(cpu.width))), 0, cpu.width);
+  for (int y = 0; y < out.height; ++y) {
+    for (int x = splitX; x < out.width; ++x) std::memcpy(out.pixel(x, y), gl.pixel(x, y), 4);
+    if (splitX < out.width) {
+      std::uint8_t* divider = out.pixel(splitX, y);
+      divider[0] = divider[1] = divider[2] = divider[3] = 255;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+GuiApp::GuiApp(GuiOptions options) : options_(std::move(options)) {
+  paths_ = prefsPaths();
+  if (options_.reset) std::cerr << "twinraster-gui: --reset: " << resetPrefs(paths_) << "\n";
+  prefs_ = loadPrefs(paths_.prefs, prefsWarning_);
+  if (!prefsWarning_.empty()) std::cerr << "twinraster-gui: warning: " << prefsWarning_ << "\n";
+  if (options_.viewMode) prefs_.viewMode = *options_.viewMode;
+  if (!paths_.dir.empty()) {
+    std::error_code code;
+    std::filesystem::create_directories(paths_.dir, code);
+    iniPath_ = paths_.imguiIni.string();
+  }
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = iniPath_.empty() ? nullptr : iniPath_.c_str();
+  io.ConfigWindowsMoveFromTitleBarOnly = true;
+
+  createWindow(false);
+
+  float scaleX = 1.0f, scaleY = 1.0f;
+  glfwGetWindowContentScale(window_->window(), &scaleX, &scaleY);
+  uiScale_ = std::clamp(std::max(scaleX, scaleY), 1.0f, kMaxUiScale);
+  setUpImGuiStyle(uiScale_);
+
+  const std::string startScene = options_.scenePath.empty() ? findStartupScene(prefs_.lastScene) : options_.scenePath;
+  if (startScene.empty()) {
+    doc_ = emptySceneDoc();
+    sceneError_ = "No scene opened: type the path of a scene file (JSON) above and press Open.";
+  } else {
+    openScene(startScene);
+  }
+  if (options_.pin) {
+    pin_.pixel = options_.pin;
+  }
+  flickerStart_ = glfwGetTime();
+}
+
+GuiApp::~GuiApp() {
+  std::string error;
+  if (!paths_.prefs.empty() && !savePrefs(paths_.prefs, prefs_, error)) {
+    std::cerr << "twinraster-gui: warning: " << error << "\n";
+  }
+  destroyWindow();
+  ImGui::DestroyContext();
+}
+
+void GuiApp::createWindow(bool compatibility) {
+  GlfwWindowDesc desc;
+  desc.width = options_.width;
+  desc.height = options_.height;
+  desc.title = "twinraster";
+  desc.compatibility = compatibility;
+  window_ = std::make_unique<GlfwContext>(desc);
+  ImGui_ImplGlfw_InitForOpenGL(window_->window(), true);
+  ImGui_ImplOpenGL3_Init("#version 330");
+  GlOptions glOptions;
+  glOptions.currentContextLoader = glfwProcAddress();
+  glOptions.fastSampling = options_.glFastSampling;
+  glRenderer_ = makeGlRenderer(glOptions);
+  // Everything GL lives in the new context: upload and render again.
+  cpuTextureStale_ = glTextureStale_ = diff_.texturesStale = true;
+  glFrame_.revision = 0;
+  pin_.glRevision = 0;
+}
+
+void GuiApp::destroyWindow() {
+  if (!window_) return;
+  window_->makeCurrent();
+  cpuTexture_.reset();
+  glTexture_.reset();
+  heatTexture_.reset();
+  classTexture_.reset();
+  glRenderer_.reset();
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  window_.reset();
+}
+
+void GuiApp::setUpImGuiStyle(float uiScale) {
+  ImGuiIO& io = ImGui::GetIO();
+  io.Fonts->Clear();
+  ImFontConfig config;
+  config.OversampleH = 2;
+  if (fileExists(kUiFontPath)) {
+    io.Fonts->AddFontFromFileTTF(kUiFontPath, std::round(kBaseFontPixels * uiScale), &config);
+  } else {
+    ImFontConfig fallback;
+    fallback.SizePixels = std::round(13.0f * uiScale);
+    io.Fonts->AddFontDefault(&fallback);
+  }
+  monoFont_ = fileExists(kMonoFontPath)
+                  ? io.Fonts->AddFontFromFileTTF(kMonoFontPath, std::round(kMonoFontPixels * uiScale), &config)
+                  : nullptr;
+
+  ImGui::StyleColorsDark();
+  ImGuiStyle& style = ImGui::GetStyle();
+  style.WindowRounding = 0.0f;
+  style.FrameRounding = 3.0f;
+  style.GrabRounding = 3.0f;
+  style.TabRounding = 3.0f;
+  style.WindowBorderSize = 1.0f;
+  style.FramePadding = ImVec2(6.0f, 3.0f);
+  style.ItemSpacing = ImVec2(8.0f, 5.0f);
+  style.IndentSpacing = 14.0f;
+  ImVec4* colours = style.Colors;
+  colours[ImGuiCol_WindowBg] = ImVec4(0.11f, 0.11f, 0.13f, 1.0f);
+  colours[ImGuiCol_ChildBg] = ImVec4(0.0f, 0.0f, 0.0f, 0.0f);
+  colours[ImGuiCol_TitleBg] = ImVec4(0.15f, 0.16f, 0.20f, 1.0f);
+  colours[ImGuiCol_TitleBgActive] = ImVec4(0.18f, 0.22f, 0.32f, 1.0f);
+  colours[ImGuiCol_Header] = ImVec4(0.22f, 0.28f, 0.40f, 0.75f);
+  colours[ImGuiCol_HeaderHovered] = ImVec4(0.28f, 0.36f, 0.52f, 0.85f);
+  colours[ImGuiCol_FrameBg] = ImVec4(0.18f, 0.19f, 0.23f, 1.0f);
+  colours[ImGuiCol_Tab] = ImVec4(0.16f, 0.18f, 0.24f, 1.0f);
+  colours[ImGuiCol_TabActive] = ImVec4(0.26f, 0.34f, 0.52f, 1.0f);
+  colours[ImGuiCol_TabHovered] = ImVec4(0.32f, 0.42f, 0.62f, 1.0f);
+  style.ScaleAllSizes(uiScale);
+}
+
+void GuiApp::recreateWindowIfNeeded() {
+  const TbnLines& lines = doc_.scene.settings.tbnLines;
+  const bool wantsCompatibility = lines.enabled && lines.mode == LineMode::Immediate;
+  if (!wantsCompatibility || window_->compatibility() || compatibilityFailed_) return;
+  int width = options_.width, height = options_.height;
+  glfwGetWindowSize(window_->window(), &width, &height);
+  if (width > 0 && height > 0) {
+    options_.width = width;
+    options_.height = height;
+  }
+  ImGui::SaveIniSettingsToDisk(iniPath_.empty() ? nullptr : iniPath_.c_str());
+  destroyWindow();
+  try {
+    createWindow(true);
+    contextMessage_ = "The window was recreated with an OpenGL 3.3 compatibility profile (" + window_->glVersion() +
+                      ") so the GL side can draw the lines with glBegin/glEnd.";
+  } catch (const std::exception& e) {
+    compatibilityFailed_ = true;
+    contextMessage_ = std::string("Immediate mode needs an OpenGL 3.3 compatibility profile, and this display "
+                                  "could not create one: ") +
+                      e.what() + ". The lines stay in core mode (VBO + shader).";
+    doc_.scene.settings.tbnLines.mode = LineMode::Core;
+    doc_.touch();
+    createWindow(false);
+  }
+}
+
+void GuiApp::openScene(const std::string& path) {
+  try {
+    SceneDoc loaded = loadSceneDoc(path);
+    loaded.revision = doc_.revision + 1;  // revisions only grow, so no old frame matches
+    doc_ = std::move(loaded);
+    sceneError_.clear();
+    meshError_.clear();
+    meshErrorIndex_ = -1;
+    std::error_code code;
+    const std::filesystem::path absolute = std::filesystem::absolute(path, code);
+    prefs_.lastScene = code ? path : absolute.lexically_normal().string();
+    scenePathInput_ = path;
+    pin_ = PinState{};
+    if (window_) {
+      const std::string title = "twinraster - " + std::filesystem::path(path).filename().string();
+      glfwSetWindowTitle(window_->window(), title.c_str());
+    }
+  } catch (const std::exception& e) {
+    sceneError_ = e.what();
+    if (scenePathInput_.empty()) scenePathInput_ = path;
+    std::cerr << "twinraster-gui: could not open the scene: " << e.what() << "\n";
+  }
+}
+
+bool GuiApp::settled() const {
+  if (!renderInputsValid()) return true;
+  if (!worker_.idle()) return false;
+  const std::uint64_t now = doc_.revision;
+  if (cpuFrame_.revision != now || glFrame_.revision != now) return false;
+  if (cpuFrame_.output && glFrame_.output && diff_.revision != now) return false;
+  if (pin_.pixel) {
+    if (!pin_.cpu || pin_.cpuRevision != now) return false;
+    if (pin_.glError.empty() && std::any_of(pin_.gl.begin(), pin_.gl.end(), [](const auto& s) { return !s; }))
+      return false;
+  }
+  return true;
+}
+
+void GuiApp::frame(bool& finalFrame) {
+  syncRenders();
+  if (finalFrame) finalFrame = settled();
+
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  drawLayout();
+  ImGui::Render();
+
+  int width = 0, height = 0;
+  glfwGetFramebufferSize(window_->window(), &width, &height);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, width, height);
+  glClearColor(kClearColour[0], kClearColour[1], kClearColour[2], 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+int GuiApp::run() {
+  int framesDrawn = 0;
+  std::optional<Clock::time_point> settleStart;
+  int exitCode = kExitOk;
+  while (!glfwWindowShouldClose(window_->window())) {
+    recreateWindowIfNeeded();
+    glfwPollEvents();
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window_->window(), &width, &height);
+    if (width <= 0 || height <= 0) {
+      // Minimised: nothing to draw into. Keep taking finished CPU frames so the worker
+      // does not hold them, and sleep until something happens.
+      takeCpuFrames();
+      glfwWaitEventsTimeout(kMinimisedWaitSeconds);
+      continue;
+    }
+    const bool limitReached = options_.frames > 0 && framesDrawn + 1 >= options_.frames;
+    bool finalFrame = limitReached;
+    if (limitReached && !settleStart) settleStart = Clock::now();
+    const bool timedOut =
+        settleStart && Clock::now() - *settleStart > std::chrono::milliseconds(kSettleTimeoutMs);
+    frame(finalFrame);
+    if (limitReached && timedOut && !finalFrame) {
+      std::cerr << "twinraster-gui: warning: the frames did not settle within " << kSettleTimeoutMs / 1000
+                << " s; the last frame shows what had finished\n";
+      finalFrame = true;
+    }
+    if (finalFrame && !options_.screenshotPath.empty()) {
+      try {
+        saveWindowScreenshot(options_.screenshotPath);
+      } catch (const std::exception& e) {
+        std::cerr << "twinraster-gui: error: " << e.what() << "\n";
+        exitCode = kExitBadInput;
+      }
+    }
+    glfwSwapBuffers(window_->window());
+    ++framesDrawn;
+    if (finalFrame) break;
+    if (limitReached) worker_.waitIdle(kSettlePoll);
+  }
+  return exitCode;
+}
+
+void GuiApp::saveWindowScreenshot(const std::string& path) {
+  int width = 0, height = 0;
+  glfwGetFramebufferSize(window_->window(), &width, &height);
+  Image image = makeImage(width, height);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glReadBuffer(GL_BACK);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  std::vector<std::uint8_t> bottomFirst(image.rgba.size());
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bottomFirst.data());
+  const std::size_t rowBytes = static_cast<std::size_t>(width) * 4;
+  for (int y = 0; y < height; ++y) {
+    std::memcpy(image.pixel(0, y), bottomFirst.data() + static_cast<std::size_t>(height - 1 - y) * rowBytes, rowBytes);
+  }
+  for (std::size_t i = 3; i < image.rgba.size(); i += 4) image.rgba[i] = 255;  // the window is opaque
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty()) {
+    std::error_code code;
+    std::filesystem::create_directories(parent, code);
+  }
+  savePng(path, image);
+}
+
+void GuiApp::saveViewScreenshots() {
+  const std::shared_ptr<const RenderOutput> cpu = cpuFrame_.output, gl = glFrame_.output;
+  if (!cpu || !gl) {
+    screenshotMessage_ = "Nothing to save yet: both backends need a finished frame.";
+    return;
+  }
+  try {
+    const BackgroundMode background = prefs_.checkerBackground ? BackgroundMode::Checker : BackgroundMode::RendererColour;
+    const std::filesystem::path dir = prefs_.screenshotDir.empty() ? "." : prefs_.screenshotDir;
+    std::error_code code;
+    std::filesystem::create_directories(dir, code);
+    const std::string stem = (dir / ("twinraster-" + timestamp())).string();
+    ViewMode shown = prefs_.viewMode;
+    if (shown == ViewMode::Flicker) {
+      const double phase = (glfwGetTime() - flickerStart_) * prefs_.flickerHz;
+      shown = static_cast<long long>(std::floor(phase)) % 2 == 0 ? ViewMode::Cpu : ViewMode::Gl;
+    }
+    Image view;
+    if (shown == ViewMode::Cpu) {
+      view = viewImage(*cpu, background);
+    } else if (shown == ViewMode::Gl) {
+      view = viewImage(*gl, background);
+    } else if (shown == ViewMode::SideBySide) {
+      SideBySideOptions sideOptions;
+      sideOptions.background = background;
+      view = makeSideBySide(*cpu, *gl, sideOptions);
+    } else if (shown == ViewMode::Split) {
+      if (cpu->width != gl->width || cpu->height != gl->height) {
+        throw InputError("the CPU frame is still being rendered at the new size; try again in a moment");
+      }
+      view = composeSplit(viewImage(*cpu, background), viewImage(*gl, background), prefs_.splitFraction);
+    } else {  // the diff
+      if (!diff_.result) throw InputError("no diff yet: the CPU frame is still being rendered");
+      if (prefs_.diffShowClasses) {
+        view = makeClassMap(diff_.result->pixels);
+      } else {
+        HeatMapOptions heatOptions;
+        heatOptions.ramp = HeatRamp{prefs_.heatMaxLevels, prefs_.heatScale};
+        view = makeHeatMap(diff_.result->pixels, heatOptions);
+      }
+    }
+    const std::string viewPath = stem + "-" + std::string(toString(prefs_.viewMode)) + ".png";
+    savePng(viewPath, view);
+    savePng(stem + "-cpu.png", rawImage(*cpu));
+    savePng(stem + "-gl.png", rawImage(*gl));
+    screenshotMessage_ = "Saved " + viewPath + " and the -cpu.png / -gl.png beside it.";
+  } catch (const std::exception& e) {
+    screenshotMessage_ = std::string("Screenshot failed: ") + e.what();
+  }
+}
+
+}  // namespace twr::gui

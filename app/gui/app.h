@@ -1,0 +1,158 @@
+// The desktop app: one window (glrender's GlfwContext), Dear ImGui panels around an image
+// view, the GL renderer drawing in the window's context on the UI thread and the CPU
+// renderer on a worker thread. The member functions are spread over files by concern:
+// app.cpp (window, loop, screenshots), app_renders.cpp (frames, diff, probes),
+// panel_*.cpp (one per panel).
+#pragma once
+
+#include "app/gui/cpu_worker.h"
+#include "app/gui/gui_options.h"
+#include "app/gui/image_texture.h"
+#include "app/gui/moving_median.h"
+#include "app/gui/pixel_probe.h"
+#include "app/gui/prefs.h"
+#include "app/gui/scene_doc.h"
+#include "compare/metrics.h"
+#include "glrender/context_glfw.h"
+
+#include <imgui.h>
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace twr::gui {
+
+// Frame times kept for the moving median (samples).
+inline constexpr std::size_t kTimingWindow = 31;
+
+// A finished frame of one backend as the UI shows it.
+struct BackendFrame {
+  std::uint64_t revision = 0;                  // 0: none yet
+  std::shared_ptr<const RenderOutput> output;  // null when the render threw
+  std::string error;
+  Clock::time_point finishedAt{};
+};
+
+struct DiffState {
+  std::uint64_t revision = 0;  // the revision both compared frames were rendered at; 0: none
+  std::optional<CompareResult> result;
+  std::shared_ptr<const RenderOutput> cpu, gl;  // the compared pair
+  std::string error;
+  bool texturesStale = true;  // heat/class map textures need rebuilding
+};
+
+// The pinned pixel and what each backend says about it.
+struct PinState {
+  std::optional<PixelPos> pixel;
+  int width = 0, height = 0;  // the render size the pixel was pinned at
+  std::uint64_t cpuRevision = 0;  // revision of `cpu`; 0: not probed yet
+  std::optional<CpuProbe> cpu;
+  std::uint64_t cpuAskedRevision = 0;  // the last probe job sent to the worker
+  std::optional<PixelPos> cpuAskedPixel;
+  std::uint64_t glRevision = 0;  // revision of `gl`
+  ViewSamples gl;
+  std::string glError;
+};
+
+enum class DragMode { None, Orbit, Pan, Divider };
+
+class GuiApp {
+ public:
+  explicit GuiApp(GuiOptions options);
+  ~GuiApp();
+  GuiApp(const GuiApp&) = delete;
+  GuiApp& operator=(const GuiApp&) = delete;
+
+  // Runs until the window closes or --frames is reached; returns the exit code.
+  int run();
+
+ private:
+  // ---- app.cpp ----
+  void createWindow(bool compatibility);
+  void destroyWindow();
+  void setUpImGuiStyle(float uiScale);
+  void recreateWindowIfNeeded();
+  void openScene(const std::string& path);
+  void frame(bool& finalFrame);
+  bool settled() const;
+  void saveWindowScreenshot(const std::string& path);
+  void saveViewScreenshots();
+
+  // ---- app_renders.cpp ----
+  void syncRenders();
+  void takeCpuFrames();
+  void renderGl();
+  void submitCpu();
+  void updateDiff();
+  void probeGl();
+  void refreshTextures();
+  PixelSample glSampleAt(View view, PixelPos pixel);
+  bool renderInputsValid() const { return renderBlocker_.empty(); }
+  void pinPixel(std::optional<PixelPos> pixel);
+
+  // ---- panels ----
+  void drawLayout();
+  void drawControlsPanel();
+  void drawRenderingTab();
+  void drawSceneTab();
+  void drawNode(Node& node);
+  void drawMeshEditor(int meshIndex);
+  void drawMaterialsSection();
+  void drawLightsSection();
+  void drawCameraTab();
+  void drawViewPanel();
+  void drawViewToolbar();
+  void drawDiffLegend();
+  void drawImages(ImVec2 regionMin, ImVec2 regionSize);
+  void handleImageMouse(ImVec2 regionMin, ImVec2 regionSize);
+  void drawStatusLine();
+  void drawStatsPanel();
+  void drawInspectorPanel();
+  void drawTraceSection(const PixelTrace& trace);
+
+  GuiOptions options_;
+  PrefsPaths paths_;
+  GuiPrefs prefs_;
+  std::string iniPath_;  // ImGui keeps a pointer to it
+  std::string prefsWarning_;
+
+  std::unique_ptr<GlfwContext> window_;
+  float uiScale_ = 1.0f;  // the window's content scale when the fonts were built
+  ImFont* monoFont_ = nullptr;  // the trace report; null: the default font
+  std::string contextMessage_;     // why immediate mode is not available, or what happened
+  bool compatibilityFailed_ = false;
+  std::unique_ptr<Renderer> glRenderer_;
+  CpuWorker worker_;
+
+  SceneDoc doc_;
+  std::string scenePathInput_;
+  std::string sceneError_;
+  std::string meshError_;
+  int meshErrorIndex_ = -1;
+  std::string renderBlocker_;  // why nothing is rendered right now (invalid camera), else empty
+
+  int renderWidth_ = 0, renderHeight_ = 0;  // the size both backends render at
+  ImVec2 imagePanelPixels_{0.0f, 0.0f};       // one image panel on screen, framebuffer pixels
+
+  BackendFrame cpuFrame_, glFrame_;
+  std::uint64_t cpuSubmitted_ = 0;  // revision of the last full CPU job
+  std::map<std::uint64_t, std::shared_ptr<const RenderOutput>> glForCpu_;  // GL frames awaiting their CPU twin
+  MovingMedian cpuMs_{kTimingWindow}, glMs_{kTimingWindow};
+  DiffState diff_;
+  PinState pin_;
+
+  ImageTexture cpuTexture_, glTexture_, heatTexture_, classTexture_;
+  bool cpuTextureStale_ = true, glTextureStale_ = true;
+
+  DragMode dragMode_ = DragMode::None;
+  ImVec2 pressPos_{0.0f, 0.0f};
+  bool dragged_ = false;
+  std::optional<PixelPos> hovered_;
+  std::string screenshotMessage_;
+  double flickerStart_ = 0.0;
+  float leftPanelWidth_ = 0.0f, bottomPanelHeight_ = 0.0f;
+};
+
+}  // namespace twr::gui

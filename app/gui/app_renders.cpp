@@ -1,0 +1,213 @@
+// Keeping both backends' frames, the diff and the pinned pixel's probes in step with the
+// scene: GL renders on this (the UI) thread in the window's context, the CPU on the worker.
+#include "app/gui/app.h"
+
+#include "compare/heatmap.h"
+#include "compare/side_by_side.h"
+#include "scene/camera.h"
+#include "scene/errors.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace twr::gui {
+namespace {
+
+// Smallest side a render may have, pixels (inclusive): below it the images say nothing.
+constexpr int kMinRenderSide = 8;
+
+int scaledSide(float side, float scale) {
+  const long rounded = std::lround(static_cast<double>(side) * static_cast<double>(scale));
+  return static_cast<int>(std::clamp<long>(rounded, kMinRenderSide, kMaxImageSide));
+}
+
+PixelSample sampleAt(const RenderOutput& output, PixelPos pixel) {
+  PixelSample sample;
+  const std::size_t i = static_cast<std::size_t>(pixel.yTop) * static_cast<std::size_t>(output.width) +
+                        static_cast<std::size_t>(pixel.x);
+  for (std::size_t c = 0; c < 4; ++c) sample.rgba[c] = output.rgba[i * 4 + c];
+  sample.depth = output.depth[i];
+  return sample;
+}
+
+}  // namespace
+
+void GuiApp::syncRenders() {
+  takeCpuFrames();
+
+  int width = 0, height = 0;
+  if (prefs_.resolution == ResolutionSource::FitView && imagePanelPixels_.x > 0.0f && imagePanelPixels_.y > 0.0f) {
+    width = scaledSide(imagePanelPixels_.x, prefs_.resolutionScale);
+    height = scaledSide(imagePanelPixels_.y, prefs_.resolutionScale);
+  } else {
+    width = scaledSide(static_cast<float>(doc_.scene.output.width), prefs_.resolutionScale);
+    height = scaledSide(static_cast<float>(doc_.scene.output.height), prefs_.resolutionScale);
+  }
+  if (width != renderWidth_ || height != renderHeight_) {
+    // Keep a pinned pixel on the same spot of the picture.
+    if (pin_.pixel && renderWidth_ > 0 && renderHeight_ > 0) {
+      pin_.pixel->x = std::min(width - 1, pin_.pixel->x * width / renderWidth_);
+      pin_.pixel->yTop = std::min(height - 1, pin_.pixel->yTop * height / renderHeight_);
+    }
+    renderWidth_ = width;
+    renderHeight_ = height;
+    doc_.touch();
+  }
+  if (pin_.pixel && (pin_.pixel->x < 0 || pin_.pixel->x >= width || pin_.pixel->yTop < 0 || pin_.pixel->yTop >= height)) {
+    pinPixel(std::nullopt);
+  }
+
+  renderBlocker_ = validateCamera(doc_.scene.camera);
+  if (!renderBlocker_.empty()) renderBlocker_ = "camera: " + renderBlocker_;
+  if (renderBlocker_.empty()) {
+    if (glFrame_.revision != doc_.revision) renderGl();
+    submitCpu();
+    updateDiff();
+    probeGl();
+  }
+  refreshTextures();
+}
+
+void GuiApp::pinPixel(std::optional<PixelPos> pixel) {
+  pin_ = PinState{};
+  pin_.pixel = pixel;
+  pin_.width = renderWidth_;
+  pin_.height = renderHeight_;
+}
+
+void GuiApp::takeCpuFrames() {
+  for (CpuFrame& frame : worker_.takeFinished()) {
+    if (frame.rendered) {
+      cpuFrame_.revision = frame.revision;
+      cpuFrame_.output = frame.output;
+      cpuFrame_.error = frame.error;
+      cpuFrame_.finishedAt = frame.finishedAt;
+      if (frame.output) cpuMs_.add(frame.output->stats.milliseconds);
+      cpuTextureStale_ = true;
+    }
+    if (frame.probe && pin_.pixel && frame.probe->pixel == *pin_.pixel && frame.width == renderWidth_ &&
+        frame.height == renderHeight_) {
+      pin_.cpu = std::move(frame.probe);
+      pin_.cpuRevision = frame.revision;
+    }
+  }
+}
+
+void GuiApp::renderGl() {
+  glFrame_ = BackendFrame{};
+  glFrame_.revision = doc_.revision;
+  try {
+    glFrame_.output = std::make_shared<const RenderOutput>(
+        glRenderer_->render(doc_.scene, doc_.scene.settings, renderWidth_, renderHeight_));
+    glMs_.add(glFrame_.output->stats.milliseconds);
+  } catch (const std::exception& e) {
+    glFrame_.error = e.what();
+  }
+  glFrame_.finishedAt = Clock::now();
+  glTextureStale_ = true;
+}
+
+void GuiApp::submitCpu() {
+  // One job runs and at most one waits: the scene is copied once per job start, not once
+  // per UI frame while a slider is dragged.
+  if (worker_.hasQueued()) return;
+  const std::uint64_t now = doc_.revision;
+  const bool needFrame = cpuSubmitted_ != now;
+  const bool needProbe = pin_.pixel && (pin_.cpuAskedRevision != now || pin_.cpuAskedPixel != pin_.pixel);
+  if (!needFrame && !needProbe) return;
+  CpuJob job;
+  job.revision = now;
+  job.scene = doc_.scene;
+  job.settings = doc_.scene.settings;
+  job.width = renderWidth_;
+  job.height = renderHeight_;
+  job.renderFrame = needFrame;
+  job.probePixel = pin_.pixel;
+  if (needFrame) {
+    cpuSubmitted_ = now;
+    if (glFrame_.revision == now) glForCpu_[now] = glFrame_.output;
+  }
+  if (pin_.pixel) {
+    pin_.cpuAskedRevision = now;
+    pin_.cpuAskedPixel = pin_.pixel;
+  }
+  worker_.submit(std::move(job));
+}
+
+void GuiApp::updateDiff() {
+  if (cpuFrame_.revision == 0 || cpuFrame_.revision == diff_.revision) return;
+  const auto twin = glForCpu_.find(cpuFrame_.revision);
+  const std::shared_ptr<const RenderOutput> gl = twin != glForCpu_.end() ? twin->second : nullptr;
+  // Older GL frames can no longer meet their CPU twin.
+  std::erase_if(glForCpu_, [this](const auto& entry) { return entry.first <= cpuFrame_.revision; });
+  diff_.revision = cpuFrame_.revision;
+  diff_.texturesStale = true;
+  diff_.result.reset();
+  diff_.cpu = cpuFrame_.output;
+  diff_.gl = gl;
+  diff_.error.clear();
+  if (!cpuFrame_.output || !gl) {
+    diff_.error = "no diff: one backend has no image for this frame (see its error)";
+    return;
+  }
+  try {
+    diff_.result = compareDetailed(*cpuFrame_.output, *gl);
+  } catch (const std::exception& e) {
+    diff_.error = e.what();
+  }
+}
+
+PixelSample GuiApp::glSampleAt(View view, PixelPos pixel) {
+  RenderSettings settings = doc_.scene.settings;
+  settings.view = view;
+  settings.tbnLines.enabled = false;  // lines could cover the pixel
+  return sampleAt(glRenderer_->render(doc_.scene, settings, renderWidth_, renderHeight_), pixel);
+}
+
+void GuiApp::probeGl() {
+  if (!pin_.pixel) return;
+  if (pin_.glRevision != doc_.revision) {
+    pin_.gl = ViewSamples{};
+    pin_.glError.clear();
+    pin_.glRevision = doc_.revision;
+  }
+  if (!pin_.glError.empty()) return;
+  // One view per UI frame, so pinning never stalls the UI for ten renders at once.
+  const auto next = std::find_if(pin_.gl.begin(), pin_.gl.end(), [](const auto& sample) { return !sample; });
+  if (next == pin_.gl.end()) return;
+  const std::size_t i = static_cast<std::size_t>(next - pin_.gl.begin());
+  try {
+    pin_.gl[i] = glSampleAt(kAllViews[i], *pin_.pixel);
+  } catch (const std::exception& e) {
+    pin_.glError = e.what();
+  }
+}
+
+void GuiApp::refreshTextures() {
+  const BackgroundMode background = prefs_.checkerBackground ? BackgroundMode::Checker : BackgroundMode::RendererColour;
+  if (cpuTextureStale_) {
+    if (cpuFrame_.output) cpuTexture_.upload(viewImage(*cpuFrame_.output, background));
+    cpuTextureStale_ = false;
+  }
+  if (glTextureStale_) {
+    if (glFrame_.output) glTexture_.upload(viewImage(*glFrame_.output, background));
+    glTextureStale_ = false;
+  }
+  if (diff_.texturesStale) {
+    if (diff_.result) {
+      HeatMapOptions heatOptions;
+      heatOptions.ramp = HeatRamp{prefs_.heatMaxLevels, prefs_.heatScale};
+      heatOptions.legend = false;
+      heatTexture_.upload(makeHeatMap(diff_.result->pixels, heatOptions));
+      ClassMapOptions classOptions;
+      classOptions.legend = false;
+      classTexture_.upload(makeClassMap(diff_.result->pixels, classOptions));
+    } else {
+      heatTexture_.reset();
+      classTexture_.reset();
+    }
+    diff_.texturesStale = false;
+  }
+}
+
+}  // namespace twr::gui

@@ -1,0 +1,133 @@
+#include "app/gui/cpu_worker.h"
+
+#include "softrender/cpu_renderer.h"
+
+#include <exception>
+
+namespace twr::gui {
+namespace {
+
+PixelSample sampleAt(const RenderOutput& output, PixelPos pixel) {
+  PixelSample sample;
+  const std::size_t i = static_cast<std::size_t>(pixel.yTop) * static_cast<std::size_t>(output.width) +
+                        static_cast<std::size_t>(pixel.x);
+  for (std::size_t c = 0; c < 4; ++c) sample.rgba[c] = output.rgba[i * 4 + c];
+  sample.depth = output.depth[i];
+  return sample;
+}
+
+}  // namespace
+
+CpuWorker::CpuWorker() : thread_([this] { run(); }) {}
+
+CpuWorker::~CpuWorker() {
+  {
+    const std::lock_guard lock(mutex_);
+    stopping_ = true;
+    queued_.reset();
+  }
+  changed_.notify_all();
+  thread_.join();
+}
+
+void CpuWorker::submit(CpuJob job) {
+  {
+    const std::lock_guard lock(mutex_);
+    queued_ = std::move(job);
+  }
+  changed_.notify_all();
+}
+
+bool CpuWorker::idle() const {
+  const std::lock_guard lock(mutex_);
+  return !queued_ && !running_;
+}
+
+bool CpuWorker::hasQueued() const {
+  const std::lock_guard lock(mutex_);
+  return queued_.has_value();
+}
+
+std::vector<CpuFrame> CpuWorker::takeFinished() {
+  const std::lock_guard lock(mutex_);
+  std::vector<CpuFrame> frames = std::move(finished_);
+  finished_.clear();
+  return frames;
+}
+
+bool CpuWorker::waitIdle(std::chrono::milliseconds timeout) const {
+  std::unique_lock lock(mutex_);
+  return changed_.wait_for(lock, timeout, [this] { return !queued_ && !running_; });
+}
+
+bool CpuWorker::superseded() const {
+  const std::lock_guard lock(mutex_);
+  return queued_.has_value() || stopping_;
+}
+
+CpuProbe CpuWorker::probe(Renderer& renderer, const CpuJob& job) const {
+  CpuProbe result;
+  result.pixel = *job.probePixel;
+  try {
+    result.trace = std::make_shared<const PixelTrace>(
+        tracePixel(job.scene, job.settings, job.width, job.height, result.pixel.x, result.pixel.yTop));
+  } catch (const std::exception& e) {
+    result.traceError = e.what();
+    return result;
+  }
+  // Every debug view at the pixel, lines off so they cannot cover it.
+  RenderSettings viewSettings = job.settings;
+  viewSettings.tbnLines.enabled = false;
+  for (std::size_t i = 0; i < kViewCount; ++i) {
+    if (superseded()) return result;
+    viewSettings.view = kAllViews[i];
+    try {
+      result.views[i] = sampleAt(renderer.render(job.scene, viewSettings, job.width, job.height), result.pixel);
+    } catch (const std::exception&) {
+      return result;  // the frame's own render reports the error
+    }
+  }
+  result.complete = true;
+  return result;
+}
+
+void CpuWorker::run() {
+  // The renderer lives on this thread only.
+  const std::unique_ptr<Renderer> renderer = makeCpuRenderer();
+  for (;;) {
+    CpuJob job;
+    {
+      std::unique_lock lock(mutex_);
+      changed_.wait(lock, [this] { return stopping_ || queued_.has_value(); });
+      if (stopping_) return;
+      job = std::move(*queued_);
+      queued_.reset();
+      running_ = true;
+    }
+    CpuFrame frame;
+    frame.revision = job.revision;
+    frame.width = job.width;
+    frame.height = job.height;
+    frame.rendered = job.renderFrame;
+    const Clock::time_point start = Clock::now();
+    if (job.renderFrame) {
+      try {
+        frame.output =
+            std::make_shared<const RenderOutput>(renderer->render(job.scene, job.settings, job.width, job.height));
+      } catch (const std::exception& e) {
+        frame.error = e.what();
+      }
+    }
+    if (job.probePixel && frame.error.empty()) frame.probe = probe(*renderer, job);
+    frame.finishedAt = Clock::now();
+    frame.wallMilliseconds = std::chrono::duration<double, std::milli>(frame.finishedAt - start).count();
+    {
+      const std::lock_guard lock(mutex_);
+      finished_.push_back(std::move(frame));
+      running_ = false;
+    }
+    changed_.notify_all();
+  }
+}
+
+}  // namespace twr::gui

@@ -1,0 +1,85 @@
+// Renders CPU frames on a worker thread so a slow frame never blocks the UI. Each job owns
+// its copy of the scene and settings (no mutable state is shared with the UI thread); the
+// newest submitted job wins: a job not yet started is replaced by a newer one, and a
+// pixel probe still running stops early when a newer job is queued.
+#pragma once
+
+#include "app/gui/pixel_probe.h"
+#include "scene/renderer.h"
+#include "softrender/pixel_trace.h"
+
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+namespace twr::gui {
+
+using Clock = std::chrono::steady_clock;
+
+struct CpuJob {
+  std::uint64_t revision = 0;  // the UI's edit counter when the job was made
+  Scene scene;                 // own copy
+  RenderSettings settings;
+  int width = 0;   // pixels
+  int height = 0;  // pixels
+  bool renderFrame = true;           // false: only the probe (a new pinned pixel, same frame)
+  std::optional<PixelPos> probePixel;  // trace this pixel and read it in every debug view
+};
+
+struct CpuProbe {
+  PixelPos pixel;
+  std::shared_ptr<const PixelTrace> trace;  // null when tracing threw
+  std::string traceError;
+  ViewSamples views;  // the CPU image at the pixel in each debug view (TBN lines off)
+  bool complete = false;  // false when a newer job cut the view renders short
+};
+
+struct CpuFrame {
+  std::uint64_t revision = 0;
+  int width = 0, height = 0;
+  bool rendered = false;                       // renderFrame was set (output or error is new)
+  std::shared_ptr<const RenderOutput> output;  // null when the render threw or was not asked for
+  std::string error;                           // what the render threw, else empty
+  std::optional<CpuProbe> probe;
+  Clock::time_point finishedAt{};
+  double wallMilliseconds = 0.0;  // job start to finish on the worker, probe included
+};
+
+class CpuWorker {
+ public:
+  CpuWorker();
+  ~CpuWorker();  // finishes the running render, drops a queued job, joins
+  CpuWorker(const CpuWorker&) = delete;
+  CpuWorker& operator=(const CpuWorker&) = delete;
+
+  // Queues `job`, replacing a queued job that has not started.
+  void submit(CpuJob job);
+  // True when no job is queued or running.
+  bool idle() const;
+  // True when a job waits for the running one to finish.
+  bool hasQueued() const;
+  // Finished jobs not yet taken, oldest first (at most a few: the UI takes them every frame).
+  std::vector<CpuFrame> takeFinished();
+  // Blocks until idle or `timeout` passes; true when idle.
+  bool waitIdle(std::chrono::milliseconds timeout) const;
+
+ private:
+  void run();
+  bool superseded() const;
+  CpuProbe probe(Renderer& renderer, const CpuJob& job) const;
+
+  mutable std::mutex mutex_;
+  mutable std::condition_variable changed_;
+  std::optional<CpuJob> queued_;
+  bool running_ = false;
+  bool stopping_ = false;
+  std::vector<CpuFrame> finished_;
+  std::thread thread_;  // last member: starts once the others exist
+};
+
+}  // namespace twr::gui

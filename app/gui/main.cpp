@@ -1,0 +1,107 @@
+// twinraster-gui: the desktop app. See `twinraster-gui --help` and docs/gui.md.
+#include "app/gui/app.h"
+#include "app/gui/gui_options.h"
+#include "scene/errors.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+
+namespace {
+
+// llvmpipe's precise texture path (per-pixel LOD, float bilinear weights), as the CLI's
+// OSMesa contexts use, so the window's GL images match `twinraster compare`. llvmpipe reads
+// GALLIVM_PERF once, when the first context is created: this runs before the window exists.
+constexpr const char* kPerfVariable = "GALLIVM_PERF";
+constexpr const char* kPreciseSamplingFlags[] = {"no_aos_sampling", "no_quad_lod"};
+
+void requestPreciseSampling() {
+  const char* existing = std::getenv(kPerfVariable);
+  std::string flags = existing ? existing : "";
+  for (const char* flag : kPreciseSamplingFlags) {
+    std::stringstream list(flags);
+    std::string item;
+    bool present = false;
+    while (std::getline(list, item, ',')) present = present || item == flag;
+    if (present) continue;
+    if (!flags.empty()) flags += ",";
+    flags += flag;
+  }
+  setenv(kPerfVariable, flags.c_str(), 1);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace twr;
+  gui::GuiOptions options;
+  std::string viewMode, pin;
+  CLI::App app{
+      "twinraster-gui: the desktop app. Renders SCENE with the CPU software pipeline (on a worker thread) and "
+      "with OpenGL 3.3 in the window's own context, and shows them side by side, split, flickering or diffed, "
+      "with panels for every render setting, the scene, the camera, stats and a pixel inspector.\n"
+      "Remembers its view settings in $XDG_CONFIG_HOME/twinraster (else ~/.config/twinraster): gui.json and "
+      "imgui.ini.\nExit codes: 0 ok, 2 bad command line, no display or no usable OpenGL 3.3, or the screenshot "
+      "could not be written. A scene file that does not load is shown as an error in the window (exit 0)."};
+  app.add_option("SCENE", options.scenePath,
+                 "Scene file (JSON, docs/scenes.md). Default: the last scene opened, else "
+                 "assets/scenes/default.json");
+  app.add_flag("--reset", options.reset, "Forget the remembered settings and window layout before starting");
+  app.add_option("--frames", options.frames,
+                 "Quit after N frames (for tests and scripts); the last frame waits until the CPU frame, the diff "
+                 "and any pinned pixel's probes for the final settings are done (at most 120 s)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--screenshot", options.screenshotPath,
+                 "With --frames: save the whole window as this PNG on the last frame");
+  app.add_option("--view-mode", viewMode, "Start in this view: " + gui::allViewModeNames())
+      ->check(CLI::IsMember({"cpu", "gl", "side", "split", "diff", "flicker"}));
+  app.add_option("--pin", pin, "Pin the pixel X,Y (from the top-left, at the render size) in the inspector");
+  app.add_option("--window-size", [&options](const CLI::results_t& values) {
+                   const bool ok = CLI::detail::lexical_cast(values[0], options.width) &&
+                                   CLI::detail::lexical_cast(values[1], options.height) && options.width > 0 &&
+                                   options.height > 0;
+                   return ok;
+                 },
+                 "Window size W H in screen coordinates (default 1280 800)")
+      ->expected(2);
+  app.add_flag("--gl-fast-sampling", options.glFastSampling,
+               "Let llvmpipe use its fast 8-bit bilinear path (default: the precise mode, as `twinraster compare`)");
+
+  try {
+    app.parse(argc, argv);
+    if (!options.screenshotPath.empty() && options.frames <= 0) {
+      throw CLI::ValidationError("--screenshot", "needs --frames N (the screenshot is taken on the last frame)");
+    }
+    if (!viewMode.empty()) {
+      gui::ViewMode mode{};
+      gui::parse(viewMode, mode);
+      options.viewMode = mode;
+    }
+    if (!pin.empty()) {
+      gui::PixelPos pixel;
+      char comma = 0;
+      std::istringstream in(pin);
+      if (!(in >> pixel.x >> comma >> pixel.yTop) || comma != ',' || pixel.x < 0 || pixel.yTop < 0 || !in.eof()) {
+        throw CLI::ValidationError("--pin", "expected X,Y with X, Y >= 0, got '" + pin + "'");
+      }
+      options.pin = pixel;
+    }
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitBadInput;
+  }
+
+  if (!options.glFastSampling) requestPreciseSampling();
+  try {
+    gui::GuiApp gui(options);
+    return gui.run();
+  } catch (const InputError& e) {
+    std::cerr << "twinraster-gui: error: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "twinraster-gui: error: " << e.what() << "\n";
+    return kExitBadInput;
+  }
+}

@@ -1,0 +1,40 @@
+// Median of the last few samples: frame times jump (page faults, the other thread), and a
+// median ignores single spikes where a mean would not.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <deque>
+#include <optional>
+#include <vector>
+
+namespace twr::gui {
+
+class MovingMedian {
+ public:
+  explicit MovingMedian(std::size_t window) : window_(window < 1 ? 1 : window) {}
+
+  void add(double sample) {
+    samples_.push_back(sample);
+    while (samples_.size() > window_) samples_.pop_front();
+  }
+  void clear() { samples_.clear(); }
+  std::size_t count() const { return samples_.size(); }
+  double last() const { return samples_.empty() ? 0.0 : samples_.back(); }
+
+  // The middle sample (the mean of the two middle ones for an even count); empty before any.
+  std::optional<double> median() const {
+    if (samples_.empty()) return std::nullopt;
+    std::vector<double> sorted(samples_.begin(), samples_.end());
+    std::sort(sorted.begin(), sorted.end());
+    const std::size_t middle = sorted.size() / 2;
+    if (sorted.size() % 2 == 1) return sorted[middle];
+    return 0.5 * (sorted[middle - 1] + sorted[middle]);
+  }
+
+ private:
+  std::size_t window_;
+  std::deque<double> samples_;
+};
+
+}  // namespace twr::gui

@@ -1,0 +1,237 @@
+// The pixel inspector: the pinned pixel in both backends (colour, depth, triangle), every
+// debug view read back from both at that pixel, and the CPU pixel trace (which triangles
+// reach it, clipping, barycentrics, uv, T/B/N, the normal-map texel, each lighting term).
+#include "app/gui/app.h"
+#include "app/gui/ui_widgets.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace twr::gui {
+namespace {
+
+bool isVectorView(View view) {
+  return view == View::Normal || view == View::Tangent || view == View::Bitangent || view == View::MappedNormal ||
+         view == View::LightTangent || view == View::EyeTangent;
+}
+
+// A debug view's colour back as the vector it shows: c / 255 * 2 - 1.
+vec3 decodeVector(const std::array<std::uint8_t, 4>& rgba) {
+  return vec3(rgba[0], rgba[1], rgba[2]) / 255.0f * 2.0f - 1.0f;
+}
+
+int maxChannelDifference(const std::array<std::uint8_t, 4>& a, const std::array<std::uint8_t, 4>& b) {
+  int largest = 0;
+  for (std::size_t c = 0; c < 3; ++c) largest = std::max(largest, std::abs(int(a[c]) - int(b[c])));
+  return largest;
+}
+
+void sampleCell(const std::optional<PixelSample>& sample, View view) {
+  if (!sample) {
+    ImGui::TextDisabled("...");
+    return;
+  }
+  rgbaValue(sample->rgba.data(), false);
+  if (isVectorView(view)) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("(%s)", formatVec(decodeVector(sample->rgba), 2).c_str());
+  }
+}
+
+// The planes that cut a triangle, by name, and what was left.
+std::string clipText(const TriangleVisit& visit) {
+  if (visit.planesCut == 0) return "none";
+  if (visit.planesCut & kClipNonFiniteBit) return "removed (non-finite clip position)";
+  std::string names;
+  for (int plane = 0; plane < kClipPlaneCount; ++plane) {
+    if (visit.planesCut & (1u << plane)) names += (names.empty() ? "" : ", ") + std::string(clipPlaneName(plane));
+  }
+  return names + " (" + std::to_string(visit.clippedPolygon.size()) + " vertices after)";
+}
+
+std::string triangleText(std::uint32_t id) { return id == kNoTriangle ? "none" : std::to_string(id); }
+
+}  // namespace
+
+void GuiApp::drawInspectorPanel() {
+  if (!pin_.pixel) {
+    sectionTitle("Pixel inspector");
+    hintText("Click a pixel in the view (without dragging) to pin it. The inspector then shows what both backends "
+             "wrote there, every debug view at that pixel from both, and the CPU pipeline's trace of it: the "
+             "triangles that reach it, clipping, barycentrics, uv, T/B/N, the normal-map texel and each "
+             "lighting term.");
+    return;
+  }
+  const PixelPos p = *pin_.pixel;
+  ImGui::Text("Pixel (%d, %d) of %d x %d", p.x, p.yTop, renderWidth_, renderHeight_);
+  helpMarker("x from the left, y from the top, as in the PNG files. GL's window row is height - 1 - y.");
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Unpin")) {
+    pinPixel(std::nullopt);
+    return;
+  }
+
+  // What each backend wrote in the frame on screen.
+  if (ImGui::BeginTable("##written", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+    ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch, 0.8f);
+    ImGui::TableSetupColumn("CPU", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+    ImGui::TableSetupColumn("GL", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+    ImGui::TableHeadersRow();
+    const std::shared_ptr<const RenderOutput> outputs[2] = {cpuFrame_.output, glFrame_.output};
+    const auto usable = [this](const std::shared_ptr<const RenderOutput>& output) {
+      return output && output->width == renderWidth_ && output->height == renderHeight_;
+    };
+    const std::size_t i = static_cast<std::size_t>(p.yTop) * static_cast<std::size_t>(renderWidth_) +
+                          static_cast<std::size_t>(p.x);
+    const char* rows[] = {"colour", "depth", "triangle"};
+    for (int r = 0; r < 3; ++r) {
+      ImGui::TableNextRow();
+      ImGui::TableSetColumnIndex(0);
+      ImGui::TextUnformatted(rows[r]);
+      for (int b = 0; b < 2; ++b) {
+        ImGui::TableSetColumnIndex(b + 1);
+        const std::shared_ptr<const RenderOutput>& output = outputs[b];
+        if (!usable(output)) {
+          ImGui::TextDisabled("-");
+          continue;
+        }
+        if (r == 0) rgbaValue(&output->rgba[i * 4], true);
+        if (r == 1) ImGui::Text("%.7f", static_cast<double>(output->depth[i]));
+        if (r == 2) ImGui::TextUnformatted(triangleText(output->triangleId[i]).c_str());
+      }
+    }
+    ImGui::EndTable();
+  }
+  if (diff_.result && diff_.result->pixels.width == renderWidth_ && diff_.result->pixels.height == renderHeight_) {
+    const std::size_t i = diff_.result->pixels.index(p.x, p.yTop);
+    ImGui::Text("diff %d levels, class %s", diff_.result->pixels.diffLevels[i],
+                std::string(toString(diff_.result->pixels.pixelClass[i])).c_str());
+  }
+
+  // Every debug view at this pixel.
+  const bool cpuCurrent = pin_.cpu && pin_.cpuRevision == doc_.revision;
+  const std::size_t glRead =
+      static_cast<std::size_t>(std::count_if(pin_.gl.begin(), pin_.gl.end(), [](const auto& s) { return s.has_value(); }));
+  std::string title = "Debug views at this pixel";
+  if (glRead < kViewCount && pin_.glError.empty()) title += " (GL " + std::to_string(glRead) + "/" + std::to_string(kViewCount) + ")";
+  if (!cpuCurrent) title += " (CPU updating...)";
+  title += "###views";
+  if (ImGui::CollapsingHeader(title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
+    hintText("Each view rendered by both backends with TBN lines off; vectors decoded as c / 255 * 2 - 1.");
+    if (!pin_.glError.empty()) errorText("GL: " + pin_.glError);
+    if (ImGui::BeginTable("##views", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+      ImGui::TableSetupColumn("view", ImGuiTableColumnFlags_WidthStretch, 0.7f);
+      ImGui::TableSetupColumn("CPU", ImGuiTableColumnFlags_WidthStretch, 1.3f);
+      ImGui::TableSetupColumn("GL", ImGuiTableColumnFlags_WidthStretch, 1.3f);
+      ImGui::TableSetupColumn("diff", ImGuiTableColumnFlags_WidthStretch, 0.3f);
+      ImGui::TableHeadersRow();
+      for (std::size_t v = 0; v < kViewCount; ++v) {
+        const View view = kAllViews[v];
+        ImGui::TableNextRow();
+        ImGui::TableSetColumnIndex(0);
+        const std::string name(toString(view));
+        if (view == doc_.scene.settings.view) ImGui::TextColored(ImVec4(0.55f, 0.72f, 1.0f, 1.0f), "%s", name.c_str());
+        else ImGui::TextUnformatted(name.c_str());
+        const std::optional<PixelSample> cpuSample = cpuCurrent ? pin_.cpu->views[v] : std::nullopt;
+        ImGui::TableSetColumnIndex(1);
+        sampleCell(cpuSample, view);
+        ImGui::TableSetColumnIndex(2);
+        sampleCell(pin_.gl[v], view);
+        ImGui::TableSetColumnIndex(3);
+        if (cpuSample && pin_.gl[v]) {
+          const int difference = maxChannelDifference(cpuSample->rgba, pin_.gl[v]->rgba);
+          if (difference > 0) ImGui::TextColored(kWarningColour, "%d", difference);
+          else ImGui::TextDisabled("0");
+        }
+      }
+      ImGui::EndTable();
+    }
+  }
+
+  if (!pin_.cpu) {
+    hintText("CPU trace: waiting for the worker...");
+    return;
+  }
+  if (!pin_.cpu->traceError.empty()) {
+    errorText("CPU trace: " + pin_.cpu->traceError);
+    return;
+  }
+  if (pin_.cpu->trace) drawTraceSection(*pin_.cpu->trace);
+}
+
+void GuiApp::drawTraceSection(const PixelTrace& trace) {
+  std::string title = "CPU pixel trace: " + std::to_string(trace.visits.size()) + " triangle(s) reach it";
+  if (pin_.cpuRevision != doc_.revision) title += " (updating...)";
+  title += "###trace";
+  if (!ImGui::CollapsingHeader(title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (trace.debugLine) warningText("A TBN debug line was drawn over this pixel after shading.");
+
+  // The visit that wrote the pixel: the last shaded one.
+  const TriangleVisit* winner = nullptr;
+  for (const TriangleVisit& visit : trace.visits) {
+    if (visit.outcome == TraceOutcome::Shaded) winner = &visit;
+  }
+  for (std::size_t n = 0; n < trace.visits.size(); ++n) {
+    const TriangleVisit& visit = trace.visits[n];
+    ImGui::PushID(static_cast<int>(n));
+    const bool isWinner = &visit == winner;
+    const std::string label = "#" + std::to_string(n + 1) + " triangle " + std::to_string(visit.triangleId) + " ('" +
+                              visit.nodeName + "' " + std::to_string(visit.triangleInMesh) + "): " +
+                              toString(visit.outcome) + (isWinner ? "  <- wrote the pixel" : "");
+    if (isWinner) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.6f, 1.0f, 0.6f, 1.0f));
+    const bool open = ImGui::TreeNodeEx("##visit", isWinner ? ImGuiTreeNodeFlags_DefaultOpen : 0, "%s", label.c_str());
+    if (isWinner) ImGui::PopStyleColor();
+    if (open) {
+      if (monoFont_) ImGui::PushFont(monoFont_);
+      ImGui::Text("faces %s; clip planes cutting it: %s", visit.frontFacing ? "front" : "back", clipText(visit).c_str());
+      ImGui::Text("edges %lld %lld %lld (inside when all > 0)", static_cast<long long>(visit.edgeValue[0]),
+                  static_cast<long long>(visit.edgeValue[1]), static_cast<long long>(visit.edgeValue[2]));
+      if (visit.outcome != TraceOutcome::ClippedAway) {
+        const PixelWeights& w = visit.weights;
+        ImGui::Text("barycentric  %.4f %.4f %.4f", static_cast<double>(w.screen[0]), static_cast<double>(w.screen[1]),
+                    static_cast<double>(w.screen[2]));
+        ImGui::Text("perspective  %.4f %.4f %.4f", static_cast<double>(w.perspective[0]),
+                    static_cast<double>(w.perspective[1]), static_cast<double>(w.perspective[2]));
+        ImGui::Text("depth %.7f vs stored %.7f", static_cast<double>(w.depth), static_cast<double>(visit.depthBefore));
+        const Fragment& f = visit.fragment;
+        ImGui::Text("posWorld %s", formatVec(f.posWorld).c_str());
+        ImGui::Text("uv       %s", formatVec(f.uv, 4).c_str());
+      }
+      if (visit.outcome == TraceOutcome::Shaded) {
+        const ShadeTerms& s = visit.terms;
+        ImGui::Text("T %s", formatVec(s.t).c_str());
+        ImGui::Text("B %s", formatVec(s.b).c_str());
+        ImGui::Text("N %s", formatVec(s.n).c_str());
+        ImGui::Text("normal texel %s -> tangent %s", formatVec(vec3(s.normalTexel)).c_str(),
+                    formatVec(s.mappedTangent).c_str());
+        ImGui::Text("Nl (lighting) %s", formatVec(s.nl).c_str());
+        ImGui::Text("albedo %s  spec scale %s", formatVec(s.albedo).c_str(), formatVec(s.specScale).c_str());
+        if (trace.view == View::Shaded) {
+          ImGui::Text("ambient ka*albedo*Ia %s", formatVec(s.ambient).c_str());
+          for (int l = 0; l < s.lightCount; ++l) {
+            const LightTerms& t = s.lights[static_cast<std::size_t>(l)];
+            ImGui::Text("light %d: d %.3f  N.L %.4f  R.V %.4f  If %.4f", l, static_cast<double>(t.distance),
+                        static_cast<double>(t.nDotL), static_cast<double>(t.rDotV), static_cast<double>(t.attenuation));
+            ImGui::Text("  diffuse %s  specular %s", formatVec(t.diffuse).c_str(), formatVec(t.specular).c_str());
+          }
+        }
+        ImGui::Text("colour %s", formatVec(s.colour).c_str());
+      }
+      if (monoFont_) ImGui::PopFont();
+      ImGui::TreePop();
+    }
+    ImGui::PopID();
+  }
+  if (ImGui::TreeNode("Full report")) {
+    const std::string report = formatPixelTrace(trace);
+    if (ImGui::SmallButton("Copy to clipboard")) ImGui::SetClipboardText(report.c_str());
+    if (monoFont_) ImGui::PushFont(monoFont_);
+    ImGui::TextUnformatted(report.c_str());
+    if (monoFont_) ImGui::PopFont();
+    ImGui::TreePop();
+  }
+}
+
+}  // namespace twr::gui

@@ -1,0 +1,110 @@
+// The Rendering tab: every field of RenderSettings, applied to both backends.
+#include "app/gui/app.h"
+#include "app/gui/ui_widgets.h"
+
+#include <string>
+
+namespace twr::gui {
+namespace {
+
+constexpr CullMode kCullModes[] = {CullMode::None, CullMode::Back, CullMode::Front};
+constexpr FrontFace kFrontFaces[] = {FrontFace::Ccw, FrontFace::Cw};
+constexpr LightingSpace kLightingSpaces[] = {LightingSpace::World, LightingSpace::Tangent};
+constexpr TangentTransform kTangentTransforms[] = {TangentTransform::Model, TangentTransform::InverseTranspose};
+constexpr TextureFilter kTextureFilters[] = {TextureFilter::Nearest, TextureFilter::Bilinear};
+constexpr LineMode kLineModes[] = {LineMode::Core, LineMode::Immediate};
+
+// TBN line length range offered by the slider, world units (inclusive).
+constexpr float kMinLineLength = 0.005f;
+constexpr float kMaxLineLength = 1.0f;
+// Drag speed of the clip plane coefficients, units per pixel of mouse travel.
+constexpr float kPlaneDragSpeed = 0.01f;
+
+// A new user plane keeps the half space y >= 0 (a horizontal cut at the floor).
+const vec4 kNewUserPlane{0.0f, 1.0f, 0.0f, 0.0f};
+
+}  // namespace
+
+void GuiApp::drawRenderingTab() {
+  RenderSettings& settings = doc_.scene.settings;
+  bool changed = false;
+
+  sectionTitle("Debug view");
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  changed |= enumCombo("##view", settings.view, kAllViews);
+  itemTooltip("What both backends write per pixel: the shaded colour, or one shading input as a colour "
+              "(vectors as (v + 1) / 2, see docs/shading.md).");
+
+  sectionTitle("Rasterizer");
+  changed |= enumRadio("Cull      ", settings.cull, kCullModes);
+  changed |= enumRadio("Front face", settings.frontFace, kFrontFaces);
+
+  sectionTitle("Clipping");
+  ImGui::TextUnformatted("Frustum planes");
+  helpMarker("A switched-off near or far plane becomes depth clamping (GL_DEPTH_CLAMP); a switched-off side "
+             "plane leaves the guard band to the rasterizer.");
+  if (ImGui::BeginTable("##frustum", 3)) {
+    const std::pair<const char*, bool*> planes[] = {
+        {"left", &settings.clip.left}, {"bottom", &settings.clip.bottom}, {"near", &settings.clip.near},
+        {"right", &settings.clip.right}, {"top", &settings.clip.top}, {"far", &settings.clip.far}};
+    for (const auto& [name, value] : planes) {
+      ImGui::TableNextColumn();
+      changed |= ImGui::Checkbox(name, value);
+    }
+    ImGui::EndTable();
+  }
+  ImGui::Text("User clip planes (%zu of %d)", settings.userClipPlanes.size(), kMaxUserClipPlanes);
+  helpMarker("World space. Each keeps the points with a*x + b*y + c*z + d >= 0 (GL: gl_ClipDistance).");
+  int removeIndex = -1;
+  for (std::size_t i = 0; i < settings.userClipPlanes.size(); ++i) {
+    ImGui::PushID(static_cast<int>(i));
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::GetFrameHeight() - ImGui::GetStyle().ItemSpacing.x);
+    changed |= ImGui::DragFloat4("##plane", &settings.userClipPlanes[i].x, kPlaneDragSpeed, -100.0f, 100.0f, "%.2f");
+    ImGui::SameLine();
+    if (ImGui::Button("x", ImVec2(ImGui::GetFrameHeight(), 0.0f))) removeIndex = static_cast<int>(i);
+    itemTooltip("Remove this plane");
+    ImGui::PopID();
+  }
+  if (removeIndex >= 0) {
+    settings.userClipPlanes.erase(settings.userClipPlanes.begin() + removeIndex);
+    changed = true;
+  }
+  ImGui::BeginDisabled(settings.userClipPlanes.size() >= static_cast<std::size_t>(kMaxUserClipPlanes));
+  if (ImGui::Button("Add plane")) {
+    settings.userClipPlanes.push_back(kNewUserPlane);
+    changed = true;
+  }
+  ImGui::EndDisabled();
+
+  sectionTitle("Shading");
+  changed |= enumRadio("Lighting space   ", settings.lightingSpace, kLightingSpaces);
+  itemTooltip("world: N from the normal map is rotated to world space per pixel. tangent: L and V are rotated "
+              "into tangent space per vertex and interpolated (the tutorial's way).");
+  changed |= enumRadio("Tangent transform", settings.tangentTransform, kTangentTransforms);
+  itemTooltip("model: tangents transform with the model matrix (they lie in the surface). inverse_transpose: "
+              "like normals (wrong under non-uniform scale: compare the two).");
+  changed |= enumRadio("Texture filter   ", settings.textureFilter, kTextureFilters);
+
+  sectionTitle("TBN lines");
+  changed |= ImGui::Checkbox("Draw T (red), B (green), N (blue) at every vertex", &settings.tbnLines.enabled);
+  ImGui::BeginDisabled(!settings.tbnLines.enabled);
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+  changed |= ImGui::SliderFloat("Length (world units)", &settings.tbnLines.length, kMinLineLength, kMaxLineLength,
+                                "%.3f", ImGuiSliderFlags_Logarithmic);
+  ImGui::BeginDisabled(compatibilityFailed_);
+  changed |= enumRadio("GL drawing", settings.tbnLines.mode, kLineModes);
+  ImGui::EndDisabled();
+  itemTooltip("core: a VBO and a tiny shader. immediate: glBegin(GL_LINES) as the tutorial does, which needs a "
+              "compatibility-profile context: choosing it recreates the window's context.");
+  ImGui::EndDisabled();
+  ImGui::TextDisabled("Window context: OpenGL %s profile", window_->compatibility() ? "compatibility" : "core");
+  if (!contextMessage_.empty()) {
+    if (compatibilityFailed_) warningText(contextMessage_);
+    else hintText(contextMessage_.c_str());
+  }
+  hintText("Line pixels are left out of the diff metrics (grey in the diff views).");
+
+  if (changed) doc_.touch();
+}
+
+}  // namespace twr::gui

@@ -1,0 +1,290 @@
+// The Scene tab: open a file, the node tree with transforms and live mesh parameters,
+// materials, lights, ambient and the output size.
+#include "app/gui/app.h"
+#include "app/gui/ui_widgets.h"
+
+#include "scene/errors.h"
+#include "scene/primitives.h"
+#include "scene/scene_file.h"
+
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <string>
+
+namespace twr::gui {
+namespace {
+
+// Drag speeds, units per pixel of mouse travel.
+constexpr float kTranslateDragSpeed = 0.01f;  // world units
+constexpr float kRotateDragSpeed = 0.5f;      // degrees
+constexpr float kScaleDragSpeed = 0.005f;
+constexpr float kSizeDragSpeed = 0.005f;      // world units
+constexpr float kAttenuationDragSpeed = 0.001f;
+// Largest magnitude the transform and size fields accept (inclusive), world units or degrees.
+constexpr float kMaxCoordinate = 1000.0f;
+constexpr float kMaxShininess = 512.0f;
+// Largest output side the Scene tab offers, pixels (inclusive; the renderers go further).
+constexpr int kMaxOutputSide = 4096;
+// Segment sliders stop here (inclusive); Ctrl+click types any count, and buildMesh says
+// when one is out of its range [minimum, kMaxSegments].
+constexpr int kSegmentSliderMax = 256;
+// Fewest segments buildMesh accepts (inclusive): sphere stacks, and every round count.
+constexpr int kMinStacks = 2;
+constexpr int kMinRoundSegments = 3;
+// Smallest primitive dimension the fields allow, world units (exclusive bound in buildMesh: > 0).
+constexpr float kMinDimension = 0.001f;
+
+const char* const kMapNames[] = {"diffuse map", "normal map", "specular map"};
+
+std::shared_ptr<const Texture>& mapSlot(Material& material, std::size_t which) {
+  if (which == 0) return material.diffuseMap;
+  if (which == 1) return material.normalMap;
+  return material.specularMap;
+}
+
+bool segmentsField(const char* label, int& value, int minimum) {
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+  return ImGui::SliderInt(label, &value, minimum, kSegmentSliderMax);
+}
+
+bool dimensionField(const char* label, float& value) {
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+  return ImGui::DragFloat(label, &value, kSizeDragSpeed, kMinDimension, kMaxCoordinate, "%.3f",
+                          ImGuiSliderFlags_AlwaysClamp);
+}
+
+int countNodesUsingMesh(const std::vector<Node>& nodes, int meshIndex) {
+  int count = 0;
+  for (const Node& node : nodes) {
+    if (node.meshIndex == meshIndex) ++count;
+    count += countNodesUsingMesh(node.children, meshIndex);
+  }
+  return count;
+}
+
+}  // namespace
+
+void GuiApp::drawSceneTab() {
+  sectionTitle("Scene file");
+  const float openWidth = ImGui::CalcTextSize("Open").x + 2.0f * ImGui::GetStyle().FramePadding.x;
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - openWidth - ImGui::GetStyle().ItemSpacing.x);
+  const bool entered = ImGui::InputTextWithHint("##scenePath", "path/to/scene.json", &scenePathInput_,
+                                                ImGuiInputTextFlags_EnterReturnsTrue);
+  ImGui::SameLine();
+  if (ImGui::Button("Open") || entered) openScene(scenePathInput_);
+  if (!doc_.scene.sourcePath.empty()) {
+    ImGui::TextDisabled("%s", doc_.scene.sourcePath.c_str());
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Reload")) openScene(doc_.scene.sourcePath);
+    itemTooltip("Read the file again, dropping every edit made here.");
+  }
+  if (!sceneError_.empty()) errorText(sceneError_);
+
+  bool changed = false;
+  sectionTitle("Output");
+  int size[2] = {doc_.scene.output.width, doc_.scene.output.height};
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+  if (ImGui::DragInt2("Size (pixels)", size, 1.0f, 1, kMaxOutputSide, "%d", ImGuiSliderFlags_AlwaysClamp)) {
+    doc_.scene.output.width = size[0];
+    doc_.scene.output.height = size[1];
+    changed = true;
+  }
+  itemTooltip("The render size when the view's resolution is 'scene output' (times the scale).");
+  changed |= ImGui::ColorEdit3("Background", &doc_.scene.output.background.x);
+  changed |= ImGui::ColorEdit3("Ambient Ia", &doc_.scene.ambient.x);
+
+  sectionTitle("Nodes");
+  if (doc_.scene.nodes.empty()) hintText("No nodes.");
+  for (std::size_t i = 0; i < doc_.scene.nodes.size(); ++i) {
+    ImGui::PushID(static_cast<int>(i));
+    drawNode(doc_.scene.nodes[i]);
+    ImGui::PopID();
+  }
+
+  drawMaterialsSection();
+  drawLightsSection();
+  if (changed) doc_.touch();
+}
+
+void GuiApp::drawNode(Node& node) {
+  const std::string label = (node.name.empty() ? std::string("(unnamed)") : node.name) + "###node";
+  if (!ImGui::TreeNode(label.c_str())) return;
+  bool changed = false;
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+  changed |= ImGui::DragFloat3("Translate", &node.translate.x, kTranslateDragSpeed, -kMaxCoordinate, kMaxCoordinate,
+                               "%.3f");
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+  changed |= ImGui::DragFloat3("Rotate (deg)", &node.rotateDeg.x, kRotateDragSpeed, -720.0f, 720.0f, "%.1f");
+  itemTooltip("Applied X, then Y, then Z (right-handed).");
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+  changed |= ImGui::DragFloat3("Scale", &node.scale.x, kScaleDragSpeed, -kMaxCoordinate, kMaxCoordinate, "%.3f");
+  itemTooltip("A negative scale mirrors: the bitangent sign flips (see the tangent_transform setting).");
+
+  const auto& materials = doc_.scene.materials;
+  const std::string current = node.materialIndex >= 0 && node.materialIndex < static_cast<int>(materials.size())
+                                  ? materials[static_cast<std::size_t>(node.materialIndex)].name
+                                  : std::string("(default white)");
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+  if (ImGui::BeginCombo("Material", current.c_str())) {
+    if (ImGui::Selectable("(default white)", node.materialIndex < 0)) {
+      node.materialIndex = -1;
+      changed = true;
+    }
+    for (std::size_t m = 0; m < materials.size(); ++m) {
+      ImGui::PushID(static_cast<int>(m));
+      if (ImGui::Selectable(materials[m].name.c_str(), node.materialIndex == static_cast<int>(m))) {
+        node.materialIndex = static_cast<int>(m);
+        changed = true;
+      }
+      ImGui::PopID();
+    }
+    ImGui::EndCombo();
+  }
+  if (changed) doc_.touch();
+  if (node.meshIndex >= 0 && node.meshIndex < static_cast<int>(doc_.scene.meshes.size())) drawMeshEditor(node.meshIndex);
+  for (std::size_t i = 0; i < node.children.size(); ++i) {
+    ImGui::PushID(static_cast<int>(i));
+    drawNode(node.children[i]);
+    ImGui::PopID();
+  }
+  ImGui::TreePop();
+}
+
+void GuiApp::drawMeshEditor(int meshIndex) {
+  const std::size_t index = static_cast<std::size_t>(meshIndex);
+  MeshDesc& desc = doc_.scene.meshDescs[index];
+  const MeshDesc before = desc;
+  const int users = countNodesUsingMesh(doc_.scene.nodes, meshIndex);
+  ImGui::TextDisabled("mesh %d: %s, %zu triangles%s", meshIndex, std::string(toString(desc.type)).c_str(),
+                      doc_.scene.meshes[index].triangleCount(), users > 1 ? " (shared: edits change every user)" : "");
+  bool edited = false;
+  switch (desc.type) {
+    case MeshType::Cube:
+      edited |= dimensionField("Size", desc.size);
+      break;
+    case MeshType::Sphere:
+      edited |= dimensionField("Radius", desc.radius);
+      edited |= segmentsField("Stacks", desc.stacks, kMinStacks);
+      edited |= segmentsField("Slices", desc.slices, kMinRoundSegments);
+      break;
+    case MeshType::Plane:
+      ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+      edited |= ImGui::DragFloat2("Size", &desc.planeSize.x, kSizeDragSpeed, kMinDimension, kMaxCoordinate, "%.3f",
+                                  ImGuiSliderFlags_AlwaysClamp);
+      edited |= dimensionField("uv scale", desc.uvScale);
+      break;
+    case MeshType::Cylinder:
+      edited |= dimensionField("Radius", desc.radius);
+      edited |= dimensionField("Height", desc.height);
+      edited |= segmentsField("Slices", desc.slices, kMinRoundSegments);
+      break;
+    case MeshType::Torus:
+      edited |= dimensionField("Major radius", desc.major);
+      edited |= dimensionField("Minor radius", desc.minor);
+      edited |= segmentsField("Rings", desc.rings, kMinRoundSegments);
+      edited |= segmentsField("Sides", desc.sides, kMinRoundSegments);
+      break;
+    case MeshType::Obj:
+      ImGui::TextDisabled("%s", desc.path.c_str());
+      break;
+    case MeshType::Triangles:
+      ImGui::TextDisabled("%zu positions from the scene file", desc.positions.size());
+      break;
+  }
+  if (edited) {
+    try {
+      doc_.scene.meshes[index] = buildMesh(desc);
+      if (meshErrorIndex_ == meshIndex) meshError_.clear();
+      doc_.touch();
+    } catch (const InputError& e) {
+      // Keep the last mesh that built; say why this one did not.
+      desc = before;
+      meshError_ = e.what();
+      meshErrorIndex_ = meshIndex;
+    }
+  }
+  if (meshErrorIndex_ == meshIndex && !meshError_.empty()) errorText(meshError_);
+}
+
+void GuiApp::drawMaterialsSection() {
+  sectionTitle("Materials");
+  if (doc_.scene.materials.empty()) hintText("No materials: nodes use the default white one.");
+  bool changed = false;
+  for (std::size_t m = 0; m < doc_.scene.materials.size(); ++m) {
+    Material& material = doc_.scene.materials[m];
+    ImGui::PushID(static_cast<int>(m));
+    if (ImGui::TreeNode("##material", "%s", material.name.c_str())) {
+      changed |= ImGui::ColorEdit3("ka", &material.ka.x);
+      itemTooltip("Ambient reflectance (times the diffuse map).");
+      changed |= ImGui::ColorEdit3("kd", &material.kd.x);
+      itemTooltip("Diffuse reflectance (times the diffuse map).");
+      changed |= ImGui::ColorEdit3("ks", &material.ks.x);
+      itemTooltip("Specular reflectance (times the specular map).");
+      ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+      changed |= ImGui::SliderFloat("Shininess", &material.shininess, 0.0f, kMaxShininess, "%.1f",
+                                    ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+      for (std::size_t which = 0; which < 3; ++which) {
+        const std::shared_ptr<const Texture>& loaded =
+            m < doc_.loadedMaps.size() ? doc_.loadedMaps[m][which] : std::shared_ptr<const Texture>();
+        if (!loaded) continue;
+        std::shared_ptr<const Texture>& slot = mapSlot(material, which);
+        bool on = slot != nullptr;
+        const std::string label = std::string(kMapNames[which]) + " (" + std::to_string(loaded->width) + "x" +
+                                  std::to_string(loaded->height) + ")";
+        if (ImGui::Checkbox(label.c_str(), &on)) {
+          slot = on ? loaded : nullptr;
+          changed = true;
+        }
+        itemTooltip(loaded->path.c_str());
+      }
+      ImGui::TreePop();
+    }
+    ImGui::PopID();
+  }
+  if (changed) doc_.touch();
+}
+
+void GuiApp::drawLightsSection() {
+  sectionTitle("Lights");
+  std::vector<PointLight>& lights = doc_.scene.lights;
+  bool changed = false;
+  int removeIndex = -1;
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    PointLight& light = lights[i];
+    ImGui::PushID(static_cast<int>(i));
+    const bool open = ImGui::TreeNodeEx("##light", ImGuiTreeNodeFlags_DefaultOpen, "light %zu", i);
+    ImGui::SameLine(ImGui::GetContentRegionAvail().x + ImGui::GetCursorPosX() - ImGui::CalcTextSize("Remove").x -
+                    2.0f * ImGui::GetStyle().FramePadding.x);
+    if (ImGui::SmallButton("Remove")) removeIndex = static_cast<int>(i);
+    if (open) {
+      ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+      changed |= ImGui::DragFloat3("Position", &light.posWorld.x, kTranslateDragSpeed, -kMaxCoordinate,
+                                   kMaxCoordinate, "%.2f");
+      itemTooltip("World space. Drag the numbers to move the light.");
+      changed |= ImGui::ColorEdit3("Diffuse Id", &light.diffuse.x);
+      changed |= ImGui::ColorEdit3("Specular Is", &light.specular.x);
+      ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+      changed |= ImGui::DragFloat3("A_C A_L A_Q", &light.attenuation.x, kAttenuationDragSpeed, 0.0f, 10.0f,
+                                   "%.4f", ImGuiSliderFlags_AlwaysClamp);
+      itemTooltip("Attenuation If = 1 / (A_C + A_L d + A_Q d^2), d in world units.");
+      ImGui::TreePop();
+    }
+    ImGui::PopID();
+  }
+  if (removeIndex >= 0) {
+    lights.erase(lights.begin() + removeIndex);
+    changed = true;
+  }
+  ImGui::BeginDisabled(lights.size() >= static_cast<std::size_t>(kMaxLights));
+  if (ImGui::Button("Add light")) {
+    lights.push_back(PointLight{});
+    changed = true;
+  }
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::TextDisabled("%zu of %d", lights.size(), kMaxLights);
+  if (changed) doc_.touch();
+}
+
+}  // namespace twr::gui

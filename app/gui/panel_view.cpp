@@ -1,0 +1,469 @@
+// The view panel: toolbar, the images in the chosen view mode, mouse camera control and
+// pixel pinning, and a status line about the frames on screen.
+#include "app/gui/app.h"
+#include "app/gui/camera_control.h"
+#include "app/gui/ui_widgets.h"
+
+#include "compare/colours.h"
+#include "compare/heatmap.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace twr::gui {
+namespace {
+
+// Gap between the two images of the side-by-side view, points.
+constexpr float kSideGapPoints = 6.0f;
+// Mouse travel below which a press and release is a click, not a drag, points (inclusive).
+constexpr float kClickSlopPoints = 3.0f;
+// How close to the split divider a press grabs it, points (inclusive).
+constexpr float kDividerGrabPoints = 6.0f;
+// Smallest side of the pinned-pixel marker, points: a pixel can be smaller than a point.
+constexpr float kMinMarkerPoints = 9.0f;
+// Steps of the heat ramp drawn in the legend.
+constexpr int kLegendRampSteps = 64;
+
+const ImU32 kMarkerColour = IM_COL32(255, 230, 40, 255);
+const ImU32 kMarkerShadow = IM_COL32(0, 0, 0, 200);
+const ImU32 kLabelBackground = IM_COL32(0, 0, 0, 170);
+
+struct Rect {
+  ImVec2 min{0.0f, 0.0f}, max{0.0f, 0.0f};
+  float width() const { return max.x - min.x; }
+  float height() const { return max.y - min.y; }
+  bool contains(ImVec2 p) const { return p.x >= min.x && p.x < max.x && p.y >= min.y && p.y < max.y; }
+};
+
+// The largest rect of aspect imageWidth:imageHeight centred in the slot.
+Rect fitRect(const Rect& slot, int imageWidth, int imageHeight) {
+  if (imageWidth < 1 || imageHeight < 1 || slot.width() <= 0.0f || slot.height() <= 0.0f) return Rect{slot.min, slot.min};
+  const float scale = std::min(slot.width() / static_cast<float>(imageWidth), slot.height() / static_cast<float>(imageHeight));
+  const float width = scale * static_cast<float>(imageWidth), height = scale * static_cast<float>(imageHeight);
+  const ImVec2 min(std::floor(slot.min.x + 0.5f * (slot.width() - width)),
+                   std::floor(slot.min.y + 0.5f * (slot.height() - height)));
+  return Rect{min, ImVec2(min.x + width, min.y + height)};
+}
+
+// The slots images go in for a mode: two for side by side, one otherwise.
+std::vector<Rect> slotsFor(ViewMode mode, ImVec2 regionMin, ImVec2 regionSize) {
+  if (mode != ViewMode::SideBySide) return {Rect{regionMin, ImVec2(regionMin.x + regionSize.x, regionMin.y + regionSize.y)}};
+  const float half = std::max(1.0f, 0.5f * (regionSize.x - kSideGapPoints));
+  return {Rect{regionMin, ImVec2(regionMin.x + half, regionMin.y + regionSize.y)},
+          Rect{ImVec2(regionMin.x + half + kSideGapPoints, regionMin.y),
+               ImVec2(regionMin.x + 2.0f * half + kSideGapPoints, regionMin.y + regionSize.y)}};
+}
+
+void drawTexture(ImDrawList* draw, const ImageTexture& texture, const Rect& rect, float u0 = 0.0f, float u1 = 1.0f) {
+  if (texture.empty()) return;
+  const ImVec2 min(rect.min.x + u0 * rect.width(), rect.min.y);
+  const ImVec2 max(rect.min.x + u1 * rect.width(), rect.max.y);
+  draw->AddImage(texture.id(), min, max, ImVec2(u0, 0.0f), ImVec2(u1, 1.0f));
+}
+
+// A small tag with a coloured name and grey details at `corner` (top-left).
+void drawTag(ImDrawList* draw, ImVec2 corner, const char* name, ImU32 colour, const std::string& details) {
+  const ImVec2 padding(6.0f, 3.0f);
+  const ImVec2 nameSize = ImGui::CalcTextSize(name);
+  const ImVec2 detailSize = ImGui::CalcTextSize(details.c_str());
+  const float gap = details.empty() ? 0.0f : 8.0f;
+  const ImVec2 max(corner.x + 2.0f * padding.x + nameSize.x + gap + detailSize.x, corner.y + 2.0f * padding.y + nameSize.y);
+  draw->AddRectFilled(corner, max, kLabelBackground, 3.0f);
+  draw->AddText(ImVec2(corner.x + padding.x, corner.y + padding.y), colour, name);
+  if (!details.empty()) {
+    draw->AddText(ImVec2(corner.x + padding.x + nameSize.x + gap, corner.y + padding.y), IM_COL32(210, 210, 210, 255),
+                  details.c_str());
+  }
+}
+
+// A line of centred grey text in the middle of a rect (waiting, errors).
+void drawCentredMessage(ImDrawList* draw, const Rect& rect, const std::string& text, ImU32 colour) {
+  const float wrap = std::max(100.0f, rect.width() - 40.0f);
+  const ImVec2 size = ImGui::CalcTextSize(text.c_str(), nullptr, false, wrap);
+  const ImVec2 at(rect.min.x + 0.5f * (rect.width() - size.x), rect.min.y + 0.5f * (rect.height() - size.y));
+  draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), at, colour, text.c_str(), nullptr, wrap);
+}
+
+std::string ageText(const BackendFrame& frame) {
+  if (frame.revision == 0) return "";
+  const double seconds = std::chrono::duration<double>(Clock::now() - frame.finishedAt).count();
+  char buffer[48];
+  if (seconds < 1.0) std::snprintf(buffer, sizeof buffer, "%.0f ms old", seconds * 1000.0);
+  else std::snprintf(buffer, sizeof buffer, "%.1f s old", seconds);
+  return buffer;
+}
+
+}  // namespace
+
+void GuiApp::drawViewPanel() {
+  drawViewToolbar();
+  if (prefs_.viewMode == ViewMode::Diff) drawDiffLegend();
+  ImGui::Separator();
+  const float statusHeight = ImGui::GetFrameHeightWithSpacing();
+  const ImVec2 regionMin = ImGui::GetCursorScreenPos();
+  ImVec2 regionSize = ImGui::GetContentRegionAvail();
+  regionSize.x = std::max(1.0f, regionSize.x);
+  regionSize.y = std::max(1.0f, regionSize.y - statusHeight);
+
+  // The per-image slot in framebuffer pixels decides the "fit view" resolution.
+  const ImVec2 framebufferScale = ImGui::GetIO().DisplayFramebufferScale;
+  const Rect slot = slotsFor(prefs_.viewMode, regionMin, regionSize).front();
+  imagePanelPixels_ = ImVec2(std::floor(slot.width() * framebufferScale.x), std::floor(slot.height() * framebufferScale.y));
+
+  drawImages(regionMin, regionSize);
+  handleImageMouse(regionMin, regionSize);
+  ImGui::SetCursorScreenPos(ImVec2(regionMin.x, regionMin.y + regionSize.y + ImGui::GetStyle().ItemSpacing.y));
+  drawStatusLine();
+}
+
+void GuiApp::drawViewToolbar() {
+  // Row 1: the view modes as one segmented control, the screenshot button on the right.
+  for (ViewMode mode : kAllViewModes) {
+    const bool selected = prefs_.viewMode == mode;
+    if (selected) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+    if (ImGui::Button(label(mode))) {
+      prefs_.viewMode = mode;
+      flickerStart_ = glfwGetTime();
+    }
+    if (selected) ImGui::PopStyleColor();
+    ImGui::SameLine(0.0f, 2.0f);
+  }
+  const char* shotLabel = "Screenshot";
+  const float shotWidth = ImGui::CalcTextSize(shotLabel).x + 2.0f * ImGui::GetStyle().FramePadding.x;
+  ImGui::SameLine(std::max(ImGui::GetCursorPosX() + 8.0f, ImGui::GetWindowContentRegionMax().x - shotWidth));
+  if (ImGui::Button(shotLabel)) saveViewScreenshots();
+  if (ImGui::BeginPopupContextItem("##shotFolder")) {
+    ImGui::TextUnformatted("Screenshot folder");
+    ImGui::SetNextItemWidth(260.0f * uiScale_);
+    ImGui::InputText("##folder", &prefs_.screenshotDir);
+    ImGui::EndPopup();
+  }
+  const std::string shotHelp = "Saves the current view and both backend images (alpha 0 where nothing was drawn) "
+                               "as PNGs in '" + prefs_.screenshotDir + "'. Right-click to change the folder.";
+  itemTooltip(shotHelp.c_str());
+
+  // Row 2: resolution, then what the current mode needs.
+  ImGui::SetNextItemWidth(ImGui::CalcTextSize("Scene output").x + ImGui::GetFrameHeight() * 2.0f);
+  const char* sources[] = {"Scene output", "Fit view"};
+  int source = prefs_.resolution == ResolutionSource::FitView ? 1 : 0;
+  if (ImGui::Combo("##resolution", &source, sources, 2)) {
+    prefs_.resolution = source == 1 ? ResolutionSource::FitView : ResolutionSource::SceneOutput;
+  }
+  itemTooltip("Both backends always render at the same size: the scene's output size or the size of the image "
+              "panel on screen, times the scale.");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(110.0f * uiScale_);
+  ImGui::SliderFloat("##scale", &prefs_.resolutionScale, kMinResolutionScale, kMaxResolutionScale, "x %.3g",
+                     ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+  itemTooltip("Resolution scale. Small scales make single pixels (and the fill rule) easy to see.");
+  ImGui::SameLine();
+  ImGui::TextDisabled("%d x %d px", renderWidth_, renderHeight_);
+  ImGui::SameLine();
+  if (ImGui::Checkbox("Checker bg", &prefs_.checkerBackground)) cpuTextureStale_ = glTextureStale_ = true;
+  itemTooltip("Show pixels no triangle covered as a checker, so coverage is visible against any background colour.");
+
+  if (prefs_.viewMode == ViewMode::Flicker) {
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(120.0f * uiScale_);
+    ImGui::SliderFloat("##flicker", &prefs_.flickerHz, kMinFlickerHz, kMaxFlickerHz, "%.2g Hz",
+                       ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    itemTooltip("Switches per second between the CPU and the GL image: the eye catches what moves.");
+  } else if (prefs_.viewMode == ViewMode::Split) {
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(120.0f * uiScale_);
+    ImGui::SliderFloat("##split", &prefs_.splitFraction, 0.0f, 1.0f, "divider %.2f", ImGuiSliderFlags_AlwaysClamp);
+  } else if (prefs_.viewMode == ViewMode::Diff) {
+    ImGui::SameLine();
+    if (ImGui::RadioButton("Heat map", !prefs_.diffShowClasses)) prefs_.diffShowClasses = false;
+    ImGui::SameLine();
+    if (ImGui::RadioButton("Class map", prefs_.diffShowClasses)) prefs_.diffShowClasses = true;
+  }
+  if (!screenshotMessage_.empty()) {
+    hintText(screenshotMessage_.c_str());
+  }
+}
+
+void GuiApp::drawDiffLegend() {
+  if (!prefs_.diffShowClasses) {
+    // The heat ramp: black for 0, then inferno up to maxLevels.
+    ImGui::TextUnformatted("|CPU - GL| per pixel, max over RGB, levels:");
+    ImGui::SameLine();
+    const ImVec2 corner = ImGui::GetCursorScreenPos();
+    const float width = 160.0f * uiScale_, height = ImGui::GetTextLineHeight();
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const HeatRamp ramp{prefs_.heatMaxLevels, prefs_.heatScale};
+    for (int i = 0; i < kLegendRampSteps; ++i) {
+      const int levels = (i * ramp.maxLevels + kLegendRampSteps / 2) / (kLegendRampSteps - 1);
+      const float x0 = corner.x + width * static_cast<float>(i) / kLegendRampSteps;
+      const float x1 = corner.x + width * static_cast<float>(i + 1) / kLegendRampSteps;
+      draw->AddRectFilled(ImVec2(x0, corner.y), ImVec2(x1, corner.y + height), toImColour(heatColour(levels, ramp)));
+    }
+    ImGui::Dummy(ImVec2(width, height));
+    ImGui::SameLine();
+    ImGui::Text("0 .. %d+", ramp.maxLevels);
+    ImGui::SameLine();
+    bool logScale = prefs_.heatScale == HeatScale::Log;
+    if (ImGui::Checkbox("log", &logScale)) {
+      prefs_.heatScale = logScale ? HeatScale::Log : HeatScale::Linear;
+      diff_.texturesStale = true;
+    }
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(90.0f * uiScale_);
+    if (ImGui::SliderInt("##maxlevels", &prefs_.heatMaxLevels, 1, 255, "top %d", ImGuiSliderFlags_AlwaysClamp)) {
+      diff_.texturesStale = true;
+    }
+    itemTooltip("Differences of this many levels or more get the brightest colour.");
+  }
+  // Per-class counts, with the class map's colours.
+  const CompareMetrics* metrics = diff_.result ? &diff_.result->metrics : nullptr;
+  struct Entry {
+    const char* name;
+    Rgb8 colour;
+    std::uint64_t count;
+    const char* help;
+  };
+  std::uint64_t same = 0, empty = 0;
+  if (diff_.result) {
+    for (PixelClass c : diff_.result->pixels.pixelClass) {
+      if (c == PixelClass::Same) ++same;
+      if (c == PixelClass::Empty) ++empty;
+    }
+  }
+  const Entry entries[] = {
+      {"same", kColourSame, same, "Both covered, no difference."},
+      {"shading", kColourShading, metrics ? metrics->classShading : 0,
+       "Both covered by the same triangle, other colour: interpolation, texture sampling, lighting."},
+      {"depth", kColourDepth, metrics ? metrics->classDepth : 0, "Both covered, but a different surface won the depth test."},
+      {"CPU only", kColourCpuOnly, metrics ? metrics->coverageCpuOnly : 0, "Covered by the CPU only: fill rule, clipping."},
+      {"GL only", kColourGlOnly, metrics ? metrics->coverageGlOnly : 0, "Covered by GL only: fill rule, clipping."},
+      {"TBN line", kColourExcludedLine, metrics ? metrics->excludedLinePixels : 0, "Debug line pixels, not compared."},
+      {"empty", kColourCheckerLight, empty, "Neither backend covered it."},
+  };
+  bool first = true;
+  for (const Entry& entry : entries) {
+    if (!first) ImGui::SameLine(0.0f, 14.0f);
+    first = false;
+    // The heat map shows shading and depth differences on its ramp, so they get no swatch there.
+    const bool onRamp = !prefs_.diffShowClasses && (entry.colour == kColourShading || entry.colour == kColourDepth);
+    if (!onRamp) colourSquare(toImColour(entry.colour));
+    ImGui::Text("%s %llu", entry.name, static_cast<unsigned long long>(entry.count));
+    itemTooltip(entry.help);
+  }
+  if (!diff_.error.empty()) warningText(diff_.error);
+}
+
+void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const std::vector<Rect> slots = slotsFor(prefs_.viewMode, regionMin, regionSize);
+  draw->AddRectFilled(regionMin, ImVec2(regionMin.x + regionSize.x, regionMin.y + regionSize.y), IM_COL32(16, 16, 20, 255));
+  const Rect image = fitRect(slots.front(), renderWidth_, renderHeight_);
+
+  const auto backendMessage = [this](const BackendFrame& frame, const char* name) -> std::string {
+    if (!renderBlocker_.empty()) return renderBlocker_;
+    if (!frame.error.empty()) return std::string(name) + " error: " + frame.error;
+    if (!frame.output) return std::string(name) + ": rendering the first frame...";
+    return "";
+  };
+  const auto cpuDetails = [this] {
+    std::string text = ageText(cpuFrame_);
+    if (cpuFrame_.revision != 0 && cpuFrame_.revision != doc_.revision) text += ", rendering the new one...";
+    return text;
+  };
+  const ImVec2 tagOffset(6.0f, 6.0f);
+  const auto tagAt = [&](const Rect& rect) { return ImVec2(rect.min.x + tagOffset.x, rect.min.y + tagOffset.y); };
+
+  switch (prefs_.viewMode) {
+    case ViewMode::Cpu:
+    case ViewMode::Gl: {
+      const bool cpu = prefs_.viewMode == ViewMode::Cpu;
+      const BackendFrame& frame = cpu ? cpuFrame_ : glFrame_;
+      const ImageTexture& texture = cpu ? cpuTexture_ : glTexture_;
+      const std::string message = backendMessage(frame, cpu ? "CPU" : "GL");
+      if (frame.output) drawTexture(draw, texture, fitRect(slots.front(), texture.width(), texture.height()));
+      if (!message.empty()) drawCentredMessage(draw, slots.front(), message, IM_COL32(230, 200, 120, 255));
+      drawTag(draw, tagAt(image), cpu ? "CPU" : "GL", cpu ? kCpuAccent : kGlAccent, cpu ? cpuDetails() : ageText(glFrame_));
+      break;
+    }
+    case ViewMode::SideBySide: {
+      const BackendFrame* frames[2] = {&cpuFrame_, &glFrame_};
+      const ImageTexture* textures[2] = {&cpuTexture_, &glTexture_};
+      for (std::size_t i = 0; i < 2; ++i) {
+        const Rect rect = fitRect(slots[i], renderWidth_, renderHeight_);
+        if (frames[i]->output) {
+          drawTexture(draw, *textures[i], fitRect(slots[i], textures[i]->width(), textures[i]->height()));
+        }
+        const std::string message = backendMessage(*frames[i], i == 0 ? "CPU" : "GL");
+        if (!message.empty()) drawCentredMessage(draw, slots[i], message, IM_COL32(230, 200, 120, 255));
+        drawTag(draw, tagAt(rect), i == 0 ? "CPU" : "GL", i == 0 ? kCpuAccent : kGlAccent,
+                i == 0 ? cpuDetails() : ageText(glFrame_));
+      }
+      break;
+    }
+    case ViewMode::Split: {
+      const float split = prefs_.splitFraction;
+      if (cpuFrame_.output) drawTexture(draw, cpuTexture_, image, 0.0f, split);
+      if (glFrame_.output) drawTexture(draw, glTexture_, image, split, 1.0f);
+      const float dividerX = image.min.x + split * image.width();
+      draw->AddLine(ImVec2(dividerX, image.min.y), ImVec2(dividerX, image.max.y), IM_COL32(255, 255, 255, 230), 2.0f);
+      const ImVec2 handle(dividerX, 0.5f * (image.min.y + image.max.y));
+      draw->AddCircleFilled(handle, 7.0f * uiScale_, IM_COL32(255, 255, 255, 230));
+      draw->AddText(ImVec2(handle.x - 4.0f * uiScale_, handle.y - 0.5f * ImGui::GetFontSize()), IM_COL32(0, 0, 0, 255), "|");
+      drawTag(draw, tagAt(image), "CPU", kCpuAccent, cpuDetails());
+      const char* glName = "GL";
+      const float glTagWidth = ImGui::CalcTextSize(glName).x + 12.0f;
+      drawTag(draw, ImVec2(image.max.x - glTagWidth - tagOffset.x, image.min.y + tagOffset.y), glName, kGlAccent, "");
+      const std::string message = !backendMessage(cpuFrame_, "CPU").empty() ? backendMessage(cpuFrame_, "CPU")
+                                                                           : backendMessage(glFrame_, "GL");
+      if (!message.empty()) drawCentredMessage(draw, slots.front(), message, IM_COL32(230, 200, 120, 255));
+      break;
+    }
+    case ViewMode::Diff: {
+      const ImageTexture& texture = prefs_.diffShowClasses ? classTexture_ : heatTexture_;
+      if (diff_.result) {
+        drawTexture(draw, texture, fitRect(slots.front(), texture.width(), texture.height()));
+        std::string details = diff_.revision == doc_.revision ? "current frame" : "previous frame; CPU is rendering...";
+        drawTag(draw, tagAt(image), prefs_.diffShowClasses ? "Classes" : "|CPU - GL|", IM_COL32(255, 255, 255, 255),
+                details);
+      } else {
+        std::string message = !renderBlocker_.empty() ? renderBlocker_
+                              : !diff_.error.empty()  ? diff_.error
+                                                      : "Waiting for both backends to finish a frame...";
+        drawCentredMessage(draw, slots.front(), message, IM_COL32(230, 200, 120, 255));
+      }
+      break;
+    }
+    case ViewMode::Flicker: {
+      const double phase = (glfwGetTime() - flickerStart_) * static_cast<double>(prefs_.flickerHz);
+      const bool cpu = static_cast<long long>(std::floor(phase)) % 2 == 0;
+      const ImageTexture& texture = cpu ? cpuTexture_ : glTexture_;
+      if ((cpu ? cpuFrame_ : glFrame_).output) drawTexture(draw, texture, fitRect(slots.front(), texture.width(), texture.height()));
+      char details[48];
+      std::snprintf(details, sizeof details, "flicker at %.2g Hz", static_cast<double>(prefs_.flickerHz));
+      drawTag(draw, tagAt(image), cpu ? "CPU" : "GL", cpu ? kCpuAccent : kGlAccent, details);
+      break;
+    }
+  }
+
+  // The pinned pixel, in every image.
+  if (pin_.pixel && renderWidth_ > 0 && renderHeight_ > 0) {
+    for (const Rect& slot : slots) {
+      const Rect rect = fitRect(slot, renderWidth_, renderHeight_);
+      const float pixelWidth = rect.width() / static_cast<float>(renderWidth_);
+      const float pixelHeight = rect.height() / static_cast<float>(renderHeight_);
+      const ImVec2 centre(rect.min.x + (static_cast<float>(pin_.pixel->x) + 0.5f) * pixelWidth,
+                          rect.min.y + (static_cast<float>(pin_.pixel->yTop) + 0.5f) * pixelHeight);
+      const float halfX = 0.5f * std::max(pixelWidth, kMinMarkerPoints * uiScale_);
+      const float halfY = 0.5f * std::max(pixelHeight, kMinMarkerPoints * uiScale_);
+      const ImVec2 min(centre.x - halfX, centre.y - halfY), max(centre.x + halfX, centre.y + halfY);
+      draw->AddRect(ImVec2(min.x - 1.0f, min.y - 1.0f), ImVec2(max.x + 1.0f, max.y + 1.0f), kMarkerShadow, 0.0f, 0, 3.0f);
+      draw->AddRect(min, max, kMarkerColour, 0.0f, 0, 1.5f);
+    }
+  }
+}
+
+void GuiApp::handleImageMouse(ImVec2 regionMin, ImVec2 regionSize) {
+  ImGuiIO& io = ImGui::GetIO();
+  const std::vector<Rect> slots = slotsFor(prefs_.viewMode, regionMin, regionSize);
+  const auto pixelAt = [&](ImVec2 point) -> std::optional<PixelPos> {
+    for (const Rect& slot : slots) {
+      const Rect rect = fitRect(slot, renderWidth_, renderHeight_);
+      if (!rect.contains(point)) continue;
+      PixelPos pixel;
+      pixel.x = std::clamp(static_cast<int>((point.x - rect.min.x) / rect.width() * static_cast<float>(renderWidth_)), 0,
+                           renderWidth_ - 1);
+      pixel.yTop = std::clamp(static_cast<int>((point.y - rect.min.y) / rect.height() * static_cast<float>(renderHeight_)),
+                              0, renderHeight_ - 1);
+      return pixel;
+    }
+    return std::nullopt;
+  };
+  const Rect image = fitRect(slots.front(), renderWidth_, renderHeight_);
+  const float dividerX = image.min.x + prefs_.splitFraction * image.width();
+  const auto nearDivider = [&](ImVec2 point) {
+    return prefs_.viewMode == ViewMode::Split && std::fabs(point.x - dividerX) <= kDividerGrabPoints * uiScale_ &&
+           point.y >= image.min.y && point.y < image.max.y;
+  };
+
+  ImGui::SetCursorScreenPos(regionMin);
+  ImGui::InvisibleButton("##image", regionSize,
+                         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                             ImGuiButtonFlags_MouseButtonMiddle);
+  const bool hovered = ImGui::IsItemHovered();
+  hovered_ = hovered ? pixelAt(io.MousePos) : std::nullopt;
+  if (hovered && (nearDivider(io.MousePos) || dragMode_ == DragMode::Divider)) {
+    ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
+  }
+
+  if (ImGui::IsItemActivated()) {
+    pressPos_ = io.MousePos;
+    dragged_ = false;
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+      dragMode_ = nearDivider(io.MousePos) ? DragMode::Divider : io.KeyShift ? DragMode::Pan : DragMode::Orbit;
+    } else {
+      dragMode_ = DragMode::Pan;
+    }
+  }
+  if (ImGui::IsItemActive() && dragMode_ != DragMode::None) {
+    const float travelX = io.MousePos.x - pressPos_.x, travelY = io.MousePos.y - pressPos_.y;
+    if (!dragged_ && travelX * travelX + travelY * travelY > kClickSlopPoints * kClickSlopPoints) {
+      dragged_ = true;
+    }
+    if (dragMode_ == DragMode::Divider) {
+      if (image.width() > 0.0f) prefs_.splitFraction = std::clamp((io.MousePos.x - image.min.x) / image.width(), 0.0f, 1.0f);
+    } else if (dragged_ && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
+      if (dragMode_ == DragMode::Orbit) orbitCamera(doc_.scene.camera, io.MouseDelta.x, io.MouseDelta.y);
+      else panCamera(doc_.scene.camera, io.MouseDelta.x, io.MouseDelta.y, image.height());
+      doc_.touch();
+    }
+  }
+  if (ImGui::IsItemDeactivated()) {
+    if (!dragged_ && dragMode_ == DragMode::Orbit) pinPixel(pixelAt(pressPos_));
+    dragMode_ = DragMode::None;
+  }
+  if (hovered && io.MouseWheel != 0.0f) {
+    zoomCamera(doc_.scene.camera, io.MouseWheel);
+    doc_.touch();
+  }
+}
+
+void GuiApp::drawStatusLine() {
+  if (!hovered_) {
+    ImGui::TextDisabled("%d x %d px, edit %llu.  Hover the image to read pixels; click to pin one.", renderWidth_,
+                        renderHeight_, static_cast<unsigned long long>(doc_.revision));
+    return;
+  }
+  const PixelPos p = *hovered_;
+  ImGui::Text("(%d, %d)", p.x, p.yTop);
+  const auto show = [&](const char* name, ImU32 accent, const std::shared_ptr<const RenderOutput>& output) {
+    ImGui::SameLine(0.0f, 14.0f);
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::ColorConvertU32ToFloat4(accent));
+    ImGui::TextUnformatted(name);
+    ImGui::PopStyleColor();
+    ImGui::SameLine();
+    if (!output || output->width != renderWidth_ || output->height != renderHeight_) {
+      ImGui::TextDisabled("-");
+      return;
+    }
+    const std::size_t i = static_cast<std::size_t>(p.yTop) * static_cast<std::size_t>(output->width) +
+                          static_cast<std::size_t>(p.x);
+    rgbaValue(&output->rgba[i * 4], false);
+    ImGui::SameLine();
+    ImGui::TextDisabled("z %.5f", static_cast<double>(output->depth[i]));
+  };
+  show("CPU", kCpuAccent, cpuFrame_.output);
+  show("GL", kGlAccent, glFrame_.output);
+  if (diff_.result && diff_.result->pixels.width == renderWidth_ && diff_.result->pixels.height == renderHeight_) {
+    const std::size_t i = diff_.result->pixels.index(p.x, p.yTop);
+    ImGui::SameLine(0.0f, 14.0f);
+    ImGui::Text("diff %d (%s)", diff_.result->pixels.diffLevels[i],
+                std::string(toString(diff_.result->pixels.pixelClass[i])).c_str());
+  }
+}
+
+}  // namespace twr::gui

@@ -1,0 +1,88 @@
+#include "app/gui/ui_widgets.h"
+
+#include <cstdio>
+
+namespace twr::gui {
+
+void sectionTitle(const char* title) {
+  ImGui::Spacing();
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.55f, 0.72f, 1.0f, 1.0f));
+  ImGui::TextUnformatted(title);
+  ImGui::PopStyleColor();
+  ImGui::Separator();
+}
+
+void helpMarker(const char* text) {
+  ImGui::SameLine();
+  ImGui::TextDisabled("(?)");
+  itemTooltip(text);
+}
+
+void itemTooltip(const char* text) {
+  if (!ImGui::IsItemHovered()) return;
+  ImGui::BeginTooltip();
+  ImGui::PushTextWrapPos(ImGui::GetFontSize() * 32.0f);
+  ImGui::TextUnformatted(text);
+  ImGui::PopTextWrapPos();
+  ImGui::EndTooltip();
+}
+
+ImU32 toImColour(Rgb8 colour, std::uint8_t alpha) { return IM_COL32(colour.r, colour.g, colour.b, alpha); }
+
+ImVec4 toImVec4(Rgb8 colour) { return ImVec4(colour.r / 255.0f, colour.g / 255.0f, colour.b / 255.0f, 1.0f); }
+
+void colourSquare(ImU32 colour) {
+  const float side = ImGui::GetTextLineHeight();
+  const ImVec2 corner = ImGui::GetCursorScreenPos();
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->AddRectFilled(corner, ImVec2(corner.x + side, corner.y + side), colour);
+  draw->AddRect(corner, ImVec2(corner.x + side, corner.y + side), IM_COL32(140, 140, 140, 255));
+  ImGui::Dummy(ImVec2(side, side));
+  ImGui::SameLine();
+}
+
+void rgbaValue(const std::uint8_t* rgba, bool withAlpha) {
+  colourSquare(IM_COL32(rgba[0], rgba[1], rgba[2], 255));
+  if (withAlpha) {
+    ImGui::Text("%3d %3d %3d  a %3d", rgba[0], rgba[1], rgba[2], rgba[3]);
+  } else {
+    ImGui::Text("%3d %3d %3d", rgba[0], rgba[1], rgba[2]);
+  }
+}
+
+void warningText(const std::string& text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, kWarningColour);
+  ImGui::TextWrapped("%s", text.c_str());
+  ImGui::PopStyleColor();
+}
+
+void errorText(const std::string& text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
+  ImGui::TextWrapped("%s", text.c_str());
+  ImGui::PopStyleColor();
+}
+
+void hintText(const char* text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, kHintColour);
+  ImGui::TextWrapped("%s", text);
+  ImGui::PopStyleColor();
+}
+
+namespace {
+template <int N>
+std::string formatComponents(const glm::vec<N, float>& v, int decimals) {
+  std::string text;
+  char buffer[32];
+  for (int i = 0; i < N; ++i) {
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, static_cast<double>(v[i]));
+    text += (i ? " " : "") + std::string(buffer);
+  }
+  return text;
+}
+}  // namespace
+
+std::string formatVec(const vec3& v, int decimals) { return formatComponents(v, decimals); }
+std::string formatVec(const vec4& v, int decimals) { return formatComponents(v, decimals); }
+std::string formatVec(const vec2& v, int decimals) { return formatComponents(v, decimals); }
+
+}  // namespace twr::gui

@@ -1,0 +1,85 @@
+// Small ImGui helpers shared by the panels: enum pickers from the settings' own names,
+// hover help, colour swatches matching compare/colours.h.
+#pragma once
+
+#include "compare/colours.h"
+#include "scene/conventions.h"
+
+#include <imgui.h>
+
+#include <string>
+#include <string_view>
+
+namespace twr::gui {
+
+// A titled separator between groups of controls.
+void sectionTitle(const char* title);
+// A "(?)" after the previous item that shows `text` on hover.
+void helpMarker(const char* text);
+// Tooltip on the previous item.
+void itemTooltip(const char* text);
+
+// One radio button per value, on one line; the label names the values with toString().
+// Returns true when the value changed.
+template <typename Enum, std::size_t N>
+bool enumRadio(const char* label, Enum& value, const Enum (&values)[N]) {
+  bool changed = false;
+  ImGui::PushID(label);
+  ImGui::TextUnformatted(label);
+  for (std::size_t i = 0; i < N; ++i) {
+    ImGui::SameLine();
+    const std::string name(toString(values[i]));
+    if (ImGui::RadioButton(name.c_str(), value == values[i]) && value != values[i]) {
+      value = values[i];
+      changed = true;
+    }
+  }
+  ImGui::PopID();
+  return changed;
+}
+
+// A combo box over `values`, named with toString().
+template <typename Enum, std::size_t N>
+bool enumCombo(const char* label, Enum& value, const Enum (&values)[N]) {
+  bool changed = false;
+  const std::string current(toString(value));
+  if (ImGui::BeginCombo(label, current.c_str())) {
+    for (std::size_t i = 0; i < N; ++i) {
+      const std::string name(toString(values[i]));
+      const bool selected = value == values[i];
+      if (ImGui::Selectable(name.c_str(), selected) && !selected) {
+        value = values[i];
+        changed = true;
+      }
+      if (selected) ImGui::SetItemDefaultFocus();
+    }
+    ImGui::EndCombo();
+  }
+  return changed;
+}
+
+ImU32 toImColour(Rgb8 colour, std::uint8_t alpha = 255);
+ImVec4 toImVec4(Rgb8 colour);
+// A filled square the height of a text line, then SameLine.
+void colourSquare(ImU32 colour);
+// A square of an 8-bit RGB value with its numbers, e.g. "[] 255 128 0".
+void rgbaValue(const std::uint8_t* rgba, bool withAlpha);
+// Text in the warning colour, wrapped.
+void warningText(const std::string& text);
+void errorText(const std::string& text);
+// Grey explanatory text, wrapped.
+void hintText(const char* text);
+
+// "x y z" with a fixed number of decimals.
+std::string formatVec(const vec3& v, int decimals = 3);
+std::string formatVec(const vec4& v, int decimals = 3);
+std::string formatVec(const vec2& v, int decimals = 3);
+
+// The UI's colours for the two backends (labels, plot lines).
+inline constexpr ImU32 kCpuAccent = IM_COL32(255, 170, 60, 255);
+inline constexpr ImU32 kGlAccent = IM_COL32(90, 180, 255, 255);
+inline const ImVec4 kWarningColour{1.0f, 0.75f, 0.25f, 1.0f};
+inline const ImVec4 kErrorColour{1.0f, 0.38f, 0.35f, 1.0f};
+inline const ImVec4 kHintColour{0.62f, 0.64f, 0.70f, 1.0f};
+
+}  // namespace twr::gui
