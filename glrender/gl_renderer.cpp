@@ -214,7 +214,8 @@ class GlRenderer final : public Renderer {
   }
 
   void drawLines(GlDevice& device, const std::vector<DrawItem>& items, const RenderSettings& settings,
-                 const GlClipState& clipState, const mat4& viewFromWorldMatrix, const mat4& clipFromViewMatrix, const mat4& clipFromWorld) {
+                 const GlClipState& clipState, const mat4& viewFromWorldMatrix, const mat4& clipFromViewMatrix,
+                 const mat4& clipFromWorld) {
     const std::vector<TbnLineVertex> lines = buildTbnLines(items, settings);
     if (lines.empty()) return;
     // The surfaces' state carries over, as in the tutorial: GL_LESS with depth writes,

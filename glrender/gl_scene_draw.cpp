@@ -55,7 +55,8 @@ GlMesh uploadMesh(const Mesh& mesh) {
 
 // RGBA8, rows bottom first as stored, GL_REPEAT, no mipmaps, no sRGB.
 GlTexture uploadTexture(const Texture& texture, TextureFilter filter) {
-  const std::size_t expectedBytes = static_cast<std::size_t>(texture.width) * static_cast<std::size_t>(texture.height) * 4;
+  const std::size_t expectedBytes =
+      static_cast<std::size_t>(texture.width) * static_cast<std::size_t>(texture.height) * 4;
   if (texture.width <= 0 || texture.height <= 0 || texture.rgba.size() != expectedBytes) {
     throw InputError("GL: texture '" + texture.path + "' has " + std::to_string(texture.rgba.size()) +
                      " bytes for " + std::to_string(texture.width) + " x " + std::to_string(texture.height) +

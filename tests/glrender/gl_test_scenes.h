@@ -53,12 +53,10 @@ inline Mesh quadAt(float z, float x0, float y0, float x1, float y1) {
                        {{0, 0}, {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}}, {});
 }
 
-inline const std::uint8_t* pixel(const RenderOutput& out, int x, int y) {
-  return &out.rgba[(static_cast<std::size_t>(y) * static_cast<std::size_t>(out.width) + static_cast<std::size_t>(x)) * 4];
-}
 inline std::size_t index(const RenderOutput& out, int x, int y) {
   return static_cast<std::size_t>(y) * static_cast<std::size_t>(out.width) + static_cast<std::size_t>(x);
 }
+inline const std::uint8_t* pixel(const RenderOutput& out, int x, int y) { return &out.rgba[index(out, x, y) * 4]; }
 inline bool covered(const RenderOutput& out, int x, int y) { return pixel(out, x, y)[3] == 255; }
 
 inline std::size_t coveredCount(const RenderOutput& out) {

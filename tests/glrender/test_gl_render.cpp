@@ -187,7 +187,9 @@ TEST(GlRender, NearAndFarSwitchAlone) {
   // Depth agrees to rounding: where the far plane cut, the triangles interpolate from
   // the clipper's new vertices instead of the original ones.
   constexpr float kDepthTolerance = 1.0f / (1 << 20);
-  for (std::size_t i = 0; i < bothOn.depth.size(); ++i) ASSERT_NEAR(onlyNear.depth[i], bothOn.depth[i], kDepthTolerance) << i;
+  for (std::size_t i = 0; i < bothOn.depth.size(); ++i) {
+    ASSERT_NEAR(onlyNear.depth[i], bothOn.depth[i], kDepthTolerance) << i;
+  }
   // Near off draws the floor down to the image's bottom row, where near on cut it: the
   // near plane meets the floor at y_ndc = -0.5 / 1 -> rows below 63 - 16 = 47 are empty.
   EXPECT_FALSE(covered(bothOn, 32, 60));
