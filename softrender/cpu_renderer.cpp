@@ -14,13 +14,19 @@
 #include "softrender/shade.h"
 #include "softrender/vertex.h"
 
+#include <algorithm>
 #include <chrono>
+#include <functional>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace twr {
 
 namespace {
+
+// Most worker threads a render uses (inclusive); more would only split rows finer.
+constexpr int kMaxThreads = 64;
 
 void validateSize(int width, int height) {
   if (width < 1 || width > kMaxImageSide || height < 1 || height > kMaxImageSide) {
@@ -40,10 +46,11 @@ void validateIndices(const DrawItem& item) {
   }
 }
 
-// Everything one draw item's triangles share.
+// Everything one draw item's triangles share (read-only while drawing).
 struct DrawState {
   const DrawItem* item = nullptr;
-  const std::vector<ClipVertex>* vertices = nullptr;  // vertex stage output, one per mesh vertex
+  std::vector<ClipVertex> vertices;  // vertex stage output, one per mesh vertex
+  ShaderKey shaderKey;
   ShadeUniforms shade;
   ClipConfig clip;
   CullMode cull = CullMode::Back;
@@ -52,21 +59,31 @@ struct DrawState {
   bool tangentLighting = false;
 };
 
+// The rows one worker owns, [rowBegin, rowEnd) (exclusive end). Every band sees every
+// triangle in submission order, so the image does not depend on the number of bands; only
+// band 0 counts triangles, so the statistics do not either.
+struct Band {
+  int rowBegin = 0;
+  int rowEnd = 0;
+  bool countsTriangles = true;
+};
+
 // Rasterizes and shades one triangle that survived clipping (v0, v1, v2 in fan order).
 template <typename Features>
 void drawClippedTriangle(const DrawState& s, const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2,
-                         std::uint32_t triangleId, Framebuffer& fb, RenderStats& stats) {
+                         std::uint32_t triangleId, const Band& band, Framebuffer& fb, RenderStats& stats) {
   const std::array<WindowVertex, 3> window{windowFromClip(v0, s.viewport), windowFromClip(v1, s.viewport),
                                            windowFromClip(v2, s.viewport)};
   TriangleSetup setup;
   if (setupTriangle(window, s.cull, s.frontFace, s.viewport, setup) != SetupResult::Ready) {
-    ++stats.trianglesCulled;
+    if (band.countsTriangles) ++stats.trianglesCulled;
     return;
   }
-  ++stats.trianglesProduced;
+  if (band.countsTriangles) ++stats.trianglesProduced;
+  if (setup.y1 < band.rowBegin || setup.y0 >= band.rowEnd) return;
   const InterpolationSetup interpolation = makeInterpolationSetup(window, setup);
   const int tangentLights = s.tangentLighting ? s.shade.lightCount : 0;
-  rasterizeTriangle(setup, 0, fb.height, [&](int py, Span span) {
+  rasterizeTriangle(setup, band.rowBegin, band.rowEnd, [&](int py, Span span) {
     for (int px = span.xBegin; px < span.xEnd; ++px) {
       const PixelWeights weights = pixelWeights(interpolation, px, py);
       if (!depthTestLess(weights.depth, fb.depth[fb.index(px, py)])) continue;
@@ -79,22 +96,22 @@ void drawClippedTriangle(const DrawState& s, const ClipVertex& v0, const ClipVer
 }
 
 template <typename Features>
-void drawItemTriangles(const DrawState& s, Framebuffer& fb, RenderStats& stats) {
+void drawItemTriangles(const DrawState& s, const Band& band, Framebuffer& fb, RenderStats& stats) {
   const Mesh& mesh = *s.item->mesh;
-  const std::vector<ClipVertex>& vertices = *s.vertices;
+  const std::vector<ClipVertex>& vertices = s.vertices;
   ClipPolygon polygon, scratch;
   for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-    ++stats.trianglesIn;
+    if (band.countsTriangles) ++stats.trianglesIn;
     const ClipVertex& a = vertices[mesh.indices[3 * t + 0]];
     const ClipVertex& b = vertices[mesh.indices[3 * t + 1]];
     const ClipVertex& c = vertices[mesh.indices[3 * t + 2]];
     const std::uint32_t planesCut = clipTriangle(a, b, c, s.clip, polygon, scratch);
-    if (planesCut != 0) ++stats.trianglesClipped;
+    if (planesCut != 0 && band.countsTriangles) ++stats.trianglesClipped;
     const std::uint32_t triangleId = s.item->firstTriangleId + static_cast<std::uint32_t>(t);
     // Fan triangulation of the convex clipped polygon around its first vertex.
     for (int i = 1; i + 1 < polygon.count; ++i) {
       drawClippedTriangle<Features>(s, polygon.v[0], polygon.v[static_cast<std::size_t>(i)],
-                                    polygon.v[static_cast<std::size_t>(i + 1)], triangleId, fb, stats);
+                                    polygon.v[static_cast<std::size_t>(i + 1)], triangleId, band, fb, stats);
     }
   }
 }
@@ -113,24 +130,48 @@ class CpuRenderer final : public Renderer {
     const mat4 clipFromWorld = clipFromWorldFor(scene.camera, width, height);
     const std::vector<DrawItem> items = flattenScene(scene);
 
-    std::vector<ClipVertex> vertices;  // reused across draw items
-    for (const DrawItem& item : items) {
+    // Vertex stage once per draw item, shared by all bands.
+    std::vector<DrawState> states(items.size());
+    for (std::size_t k = 0; k < items.size(); ++k) {
+      const DrawItem& item = items[k];
       validateIndices(item);
+      DrawState& s = states[k];
       const VertexUniforms vertexUniforms = makeVertexUniforms(item.worldFromModel, clipFromWorld, scene, settings);
-      vertices.resize(item.mesh->vertices.size());
-      for (std::size_t i = 0; i < vertices.size(); ++i) vertices[i] = runVertexStage(item.mesh->vertices[i], vertexUniforms);
-
-      DrawState s;
       s.item = &item;
-      s.vertices = &vertices;
+      s.vertices.resize(item.mesh->vertices.size());
+      for (std::size_t i = 0; i < s.vertices.size(); ++i) s.vertices[i] = runVertexStage(item.mesh->vertices[i], vertexUniforms);
       s.shade = makeShadeUniforms(*item.material, scene, settings);
+      s.shaderKey = shaderKeyFor(s.shade, settings);
       s.clip = makeClipConfig(settings.clip, vertexUniforms.userClipPlaneCount, width, height);
       s.cull = settings.cull;
       s.frontFace = settings.frontFace;
       s.viewport = viewport;
       s.tangentLighting = vertexUniforms.tangentLighting;
-      withShaderFeatures(shaderKeyFor(s.shade, settings),
-                         [&]<typename Features>() { drawItemTriangles<Features>(s, fb, stats); });
+    }
+
+    auto drawBand = [&](const Band& band, RenderStats& bandStats) {
+      for (const DrawState& s : states) {
+        withShaderFeatures(s.shaderKey, [&]<typename Features>() { drawItemTriangles<Features>(s, band, fb, bandStats); });
+      }
+    };
+    const int bandCount = std::clamp(options_.threads, 1, std::min(height, kMaxThreads));
+    std::vector<RenderStats> bandStats(static_cast<std::size_t>(bandCount));
+    std::vector<std::thread> workers;
+    for (int b = 0; b < bandCount; ++b) {
+      const Band band{height * b / bandCount, height * (b + 1) / bandCount, b == 0};
+      if (b + 1 == bandCount) {
+        drawBand(band, bandStats[static_cast<std::size_t>(b)]);  // the calling thread takes the last band
+      } else {
+        workers.emplace_back(drawBand, band, std::ref(bandStats[static_cast<std::size_t>(b)]));
+      }
+    }
+    for (std::thread& worker : workers) worker.join();
+    for (const RenderStats& b : bandStats) {
+      stats.trianglesIn += b.trianglesIn;
+      stats.trianglesClipped += b.trianglesClipped;
+      stats.trianglesCulled += b.trianglesCulled;
+      stats.trianglesProduced += b.trianglesProduced;
+      stats.pixelsShaded += b.pixelsShaded;
     }
 
     if (settings.tbnLines.enabled) {

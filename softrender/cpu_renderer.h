@@ -8,7 +8,9 @@
 namespace twr {
 
 struct CpuOptions {
-  int threads = 1;  // worker threads (later issues: tiles on both cores); >= 1
+  // Worker threads, each owning a band of rows (values below 1 mean 1). The image and the
+  // statistics are the same for any count: every band sees every triangle in order.
+  int threads = 1;
 };
 
 std::unique_ptr<Renderer> makeCpuRenderer(const CpuOptions& options = {});

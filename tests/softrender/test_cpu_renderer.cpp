@@ -265,6 +265,26 @@ TEST(CpuRenderer, TbnLinesMarkTheLineMaskInTheirColours) {
   for (std::uint8_t m : plain.lineMask) ASSERT_EQ(m, 0);
 }
 
+TEST(CpuRenderer, ThreadCountDoesNotChangeTheImageOrTheStatistics) {
+  Scene scene = sceneWith(makeSphere(1.0f, 12, 24), normalMapped());
+  scene.camera.position = vec3(0.5f, 0.3f, 1.6f);  // close enough that triangles are clipped
+  scene.settings.tbnLines.enabled = true;
+  const RenderOutput one = makeCpuRenderer(CpuOptions{1})->render(scene, scene.settings, 61, 47);
+  const RenderOutput three = makeCpuRenderer(CpuOptions{3})->render(scene, scene.settings, 61, 47);
+  EXPECT_EQ(one.rgba, three.rgba);
+  EXPECT_EQ(one.depth, three.depth);
+  EXPECT_EQ(one.triangleId, three.triangleId);
+  EXPECT_EQ(one.lineMask, three.lineMask);
+  EXPECT_EQ(one.stats.trianglesIn, three.stats.trianglesIn);
+  EXPECT_EQ(one.stats.trianglesClipped, three.stats.trianglesClipped);
+  EXPECT_GT(one.stats.trianglesClipped, 0u);
+  EXPECT_EQ(one.stats.trianglesCulled, three.stats.trianglesCulled);
+  EXPECT_EQ(one.stats.trianglesProduced, three.stats.trianglesProduced);
+  EXPECT_EQ(one.stats.pixelsShaded, three.stats.pixelsShaded);
+  const RenderOutput many = makeCpuRenderer(CpuOptions{1000})->render(scene, scene.settings, 8, 5);  // more threads than rows
+  EXPECT_EQ(many.rgba, makeCpuRenderer()->render(scene, scene.settings, 8, 5).rgba);
+}
+
 TEST(CpuRenderer, BadInputThrowsInputError) {
   const Scene scene = sceneWith(makeCube(1.0f));
   EXPECT_THROW(render(scene, scene.settings, 0, 10), InputError);
