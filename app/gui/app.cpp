@@ -96,7 +96,8 @@ GuiApp::GuiApp(GuiOptions options) : options_(std::move(options)) {
   const std::string startScene = options_.scenePath.empty() ? findStartupScene(prefs_.lastScene) : options_.scenePath;
   if (startScene.empty()) {
     doc_ = emptySceneDoc();
-    sceneError_ = "No scene opened: type the path of a scene file (JSON) above and press Open.";
+    sceneError_ = "No scene opened: type the path of a scene file (JSON) in the Scene tab and press Open.";
+    selectSceneTab_ = true;
   } else {
     openScene(startScene);
   }
@@ -122,6 +123,14 @@ void GuiApp::createWindow(bool compatibility) {
   desc.title = "twinraster";
   desc.compatibility = compatibility;
   window_ = std::make_unique<GlfwContext>(desc);
+  // Our key callback goes in first: ImGui's backend chains to it. A tap of F12 shorter than
+  // a frame still counts (ImGui 1.86 only sees keys held down at a frame's start).
+  glfwSetWindowUserPointer(window_->window(), this);
+  glfwSetKeyCallback(window_->window(), [](GLFWwindow* window, int key, int, int action, int) {
+    if (key == GLFW_KEY_F12 && action == GLFW_PRESS) {
+      static_cast<GuiApp*>(glfwGetWindowUserPointer(window))->windowShotRequested_ = true;
+    }
+  });
   ImGui_ImplGlfw_InitForOpenGL(window_->window(), true);
   ImGui_ImplOpenGL3_Init("#version 330");
   GlOptions glOptions;
@@ -233,6 +242,7 @@ void GuiApp::openScene(const std::string& path) {
     }
   } catch (const std::exception& e) {
     sceneError_ = e.what();
+    selectSceneTab_ = true;
     if (scenePathInput_.empty()) scenePathInput_ = path;
     std::cerr << "twinraster-gui: could not open the scene: " << e.what() << "\n";
   }
@@ -297,6 +307,17 @@ int GuiApp::run() {
       std::cerr << "twinraster-gui: warning: the frames did not settle within " << kSettleTimeoutMs / 1000
                 << " s; the last frame shows what had finished\n";
       finalFrame = true;
+    }
+    if (windowShotRequested_) {
+      windowShotRequested_ = false;
+      const std::filesystem::path dir = prefs_.screenshotDir.empty() ? "." : prefs_.screenshotDir;
+      const std::string path = (dir / ("twinraster-" + timestamp() + "-window.png")).string();
+      try {
+        saveWindowScreenshot(path);
+        screenshotMessage_ = "Saved the window as " + path;
+      } catch (const std::exception& e) {
+        screenshotMessage_ = std::string("Window screenshot failed: ") + e.what();
+      }
     }
     if (finalFrame && !options_.screenshotPath.empty()) {
       try {

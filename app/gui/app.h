@@ -151,6 +151,8 @@ class GuiApp {
   bool dragged_ = false;
   std::optional<PixelPos> hovered_;
   std::string screenshotMessage_;
+  bool windowShotRequested_ = false;  // F12: save the whole window after this frame is drawn
+  bool selectSceneTab_ = false;       // show the Scene tab once (a scene failed to open)
   double flickerStart_ = 0.0;
   float leftPanelWidth_ = 0.0f, bottomPanelHeight_ = 0.0f;
 };

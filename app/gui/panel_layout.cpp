@@ -76,7 +76,9 @@ void GuiApp::drawControlsPanel() {
     drawRenderingTab();
     ImGui::EndTabItem();
   }
-  if (ImGui::BeginTabItem("Scene")) {
+  const ImGuiTabItemFlags sceneFlags = selectSceneTab_ ? ImGuiTabItemFlags_SetSelected : 0;
+  selectSceneTab_ = false;
+  if (ImGui::BeginTabItem("Scene", nullptr, sceneFlags)) {
     drawSceneTab();
     ImGui::EndTabItem();
   }

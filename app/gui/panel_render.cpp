@@ -28,6 +28,7 @@ const vec4 kNewUserPlane{0.0f, 1.0f, 0.0f, 0.0f};
 void GuiApp::drawRenderingTab() {
   RenderSettings& settings = doc_.scene.settings;
   bool changed = false;
+  const float labelWidth = ImGui::CalcTextSize("Tangent transform").x + 2.0f * ImGui::GetStyle().ItemSpacing.x;
 
   sectionTitle("Debug view");
   ImGui::SetNextItemWidth(-FLT_MIN);
@@ -36,8 +37,8 @@ void GuiApp::drawRenderingTab() {
               "(vectors as (v + 1) / 2, see docs/shading.md).");
 
   sectionTitle("Rasterizer");
-  changed |= enumRadio("Cull      ", settings.cull, kCullModes);
-  changed |= enumRadio("Front face", settings.frontFace, kFrontFaces);
+  changed |= enumRadio("Cull", settings.cull, kCullModes, labelWidth);
+  changed |= enumRadio("Front face", settings.frontFace, kFrontFaces, labelWidth);
 
   sectionTitle("Clipping");
   ImGui::TextUnformatted("Frustum planes");
@@ -77,13 +78,13 @@ void GuiApp::drawRenderingTab() {
   ImGui::EndDisabled();
 
   sectionTitle("Shading");
-  changed |= enumRadio("Lighting space   ", settings.lightingSpace, kLightingSpaces);
+  changed |= enumRadio("Lighting space", settings.lightingSpace, kLightingSpaces, labelWidth);
   itemTooltip("world: N from the normal map is rotated to world space per pixel. tangent: L and V are rotated "
               "into tangent space per vertex and interpolated (the tutorial's way).");
-  changed |= enumRadio("Tangent transform", settings.tangentTransform, kTangentTransforms);
+  changed |= enumRadio("Tangent transform", settings.tangentTransform, kTangentTransforms, labelWidth);
   itemTooltip("model: tangents transform with the model matrix (they lie in the surface). inverse_transpose: "
               "like normals (wrong under non-uniform scale: compare the two).");
-  changed |= enumRadio("Texture filter   ", settings.textureFilter, kTextureFilters);
+  changed |= enumRadio("Texture filter", settings.textureFilter, kTextureFilters, labelWidth);
 
   sectionTitle("TBN lines");
   changed |= ImGui::Checkbox("Draw T (red), B (green), N (blue) at every vertex", &settings.tbnLines.enabled);
@@ -92,7 +93,7 @@ void GuiApp::drawRenderingTab() {
   changed |= ImGui::SliderFloat("Length (world units)", &settings.tbnLines.length, kMinLineLength, kMaxLineLength,
                                 "%.3f", ImGuiSliderFlags_Logarithmic);
   ImGui::BeginDisabled(compatibilityFailed_);
-  changed |= enumRadio("GL drawing", settings.tbnLines.mode, kLineModes);
+  changed |= enumRadio("GL drawing", settings.tbnLines.mode, kLineModes, labelWidth);
   ImGui::EndDisabled();
   itemTooltip("core: a VBO and a tiny shader. immediate: glBegin(GL_LINES) as the tutorial does, which needs a "
               "compatibility-profile context: choosing it recreates the window's context.");

@@ -35,6 +35,9 @@ constexpr int kMinRoundSegments = 3;
 // Smallest primitive dimension the fields allow, world units (exclusive bound in buildMesh: > 0).
 constexpr float kMinDimension = 0.001f;
 
+// Colours as the scene file writes them (floats; light colours may exceed 1).
+constexpr ImGuiColorEditFlags kColourFlags = ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR;
+
 const char* const kMapNames[] = {"diffuse map", "normal map", "specular map"};
 
 std::shared_ptr<const Texture>& mapSlot(Material& material, std::size_t which) {
@@ -91,8 +94,8 @@ void GuiApp::drawSceneTab() {
     changed = true;
   }
   itemTooltip("The render size when the view's resolution is 'scene output' (times the scale).");
-  changed |= ImGui::ColorEdit3("Background", &doc_.scene.output.background.x);
-  changed |= ImGui::ColorEdit3("Ambient Ia", &doc_.scene.ambient.x);
+  changed |= ImGui::ColorEdit3("Background", &doc_.scene.output.background.x, kColourFlags);
+  changed |= ImGui::ColorEdit3("Ambient Ia", &doc_.scene.ambient.x, kColourFlags);
 
   sectionTitle("Nodes");
   if (doc_.scene.nodes.empty()) hintText("No nodes.");
@@ -215,11 +218,11 @@ void GuiApp::drawMaterialsSection() {
     Material& material = doc_.scene.materials[m];
     ImGui::PushID(static_cast<int>(m));
     if (ImGui::TreeNode("##material", "%s", material.name.c_str())) {
-      changed |= ImGui::ColorEdit3("ka", &material.ka.x);
+      changed |= ImGui::ColorEdit3("ka", &material.ka.x, kColourFlags);
       itemTooltip("Ambient reflectance (times the diffuse map).");
-      changed |= ImGui::ColorEdit3("kd", &material.kd.x);
+      changed |= ImGui::ColorEdit3("kd", &material.kd.x, kColourFlags);
       itemTooltip("Diffuse reflectance (times the diffuse map).");
-      changed |= ImGui::ColorEdit3("ks", &material.ks.x);
+      changed |= ImGui::ColorEdit3("ks", &material.ks.x, kColourFlags);
       itemTooltip("Specular reflectance (times the specular map).");
       ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
       changed |= ImGui::SliderFloat("Shininess", &material.shininess, 0.0f, kMaxShininess, "%.1f",
@@ -262,8 +265,8 @@ void GuiApp::drawLightsSection() {
       changed |= ImGui::DragFloat3("Position", &light.posWorld.x, kTranslateDragSpeed, -kMaxCoordinate,
                                    kMaxCoordinate, "%.2f");
       itemTooltip("World space. Drag the numbers to move the light.");
-      changed |= ImGui::ColorEdit3("Diffuse Id", &light.diffuse.x);
-      changed |= ImGui::ColorEdit3("Specular Is", &light.specular.x);
+      changed |= ImGui::ColorEdit3("Diffuse Id", &light.diffuse.x, kColourFlags);
+      changed |= ImGui::ColorEdit3("Specular Is", &light.specular.x, kColourFlags);
       ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
       changed |= ImGui::DragFloat3("A_C A_L A_Q", &light.attenuation.x, kAttenuationDragSpeed, 0.0f, 10.0f,
                                    "%.4f", ImGuiSliderFlags_AlwaysClamp);

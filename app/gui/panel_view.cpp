@@ -102,6 +102,17 @@ std::string ageText(const BackendFrame& frame) {
 }  // namespace
 
 void GuiApp::drawViewPanel() {
+  if (!sceneError_.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_ChildBg, ImVec4(0.35f, 0.08f, 0.08f, 1.0f));
+    const float wrapWidth = ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().WindowPadding.x;
+    const float textHeight = ImGui::CalcTextSize(sceneError_.c_str(), nullptr, false, wrapWidth).y;
+    ImGui::BeginChild("##sceneError", ImVec2(0.0f, textHeight + 2.0f * ImGui::GetStyle().WindowPadding.y), true);
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + wrapWidth);
+    ImGui::TextUnformatted(sceneError_.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndChild();
+    ImGui::PopStyleColor();
+  }
   drawViewToolbar();
   if (prefs_.viewMode == ViewMode::Diff) drawDiffLegend();
   ImGui::Separator();
@@ -138,6 +149,7 @@ void GuiApp::drawViewToolbar() {
   const float shotWidth = ImGui::CalcTextSize(shotLabel).x + 2.0f * ImGui::GetStyle().FramePadding.x;
   ImGui::SameLine(std::max(ImGui::GetCursorPosX() + 8.0f, ImGui::GetWindowContentRegionMax().x - shotWidth));
   if (ImGui::Button(shotLabel)) saveViewScreenshots();
+  // F12 saves the whole window (app.cpp).
   if (ImGui::BeginPopupContextItem("##shotFolder")) {
     ImGui::TextUnformatted("Screenshot folder");
     ImGui::SetNextItemWidth(260.0f * uiScale_);

@@ -35,7 +35,7 @@ struct GuiPrefs {
   bool diffShowClasses = false;    // diff view: class map instead of the heat map
   HeatScale heatScale = HeatScale::Log;
   int heatMaxLevels = 32;  // heat ramp top, levels in [1, 255]
-  std::string screenshotDir = "screenshots";
+  std::string screenshotDir = "out/screenshots";  // relative to the working folder
 };
 
 struct PrefsPaths {

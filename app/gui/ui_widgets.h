@@ -19,15 +19,18 @@ void helpMarker(const char* text);
 // Tooltip on the previous item.
 void itemTooltip(const char* text);
 
-// One radio button per value, on one line; the label names the values with toString().
+// One radio button per value, on one line after the label (the first button at labelWidth
+// from the line start when it is > 0, so rows line up); values are named with toString().
 // Returns true when the value changed.
 template <typename Enum, std::size_t N>
-bool enumRadio(const char* label, Enum& value, const Enum (&values)[N]) {
+bool enumRadio(const char* label, Enum& value, const Enum (&values)[N], float labelWidth = 0.0f) {
   bool changed = false;
   ImGui::PushID(label);
+  ImGui::AlignTextToFramePadding();
   ImGui::TextUnformatted(label);
   for (std::size_t i = 0; i < N; ++i) {
-    ImGui::SameLine();
+    if (i == 0 && labelWidth > 0.0f) ImGui::SameLine(labelWidth);
+    else ImGui::SameLine();
     const std::string name(toString(values[i]));
     if (ImGui::RadioButton(name.c_str(), value == values[i]) && value != values[i]) {
       value = values[i];
