@@ -6,7 +6,8 @@
 
 #include <cstdio>
 #include <fstream>
-#include <regex>
+#include <cctype>
+#include <optional>
 #include <sstream>
 
 namespace twr {
@@ -46,23 +47,51 @@ std::string assembleStage(const ShaderLibrary& library, const std::vector<std::s
   return source;
 }
 
+// A log line's location "S:L(C): " (source string, line, column), as Mesa writes it.
+struct LogLocation {
+  std::size_t source = 0;
+  std::string line, column, message;
+};
+
+// Reads digits from text[pos], advancing pos; empty when there are none.
+std::string readDigits(const std::string& text, std::size_t& pos) {
+  const std::size_t start = pos;
+  while (pos < text.size() && std::isdigit(static_cast<unsigned char>(text[pos]))) ++pos;
+  return text.substr(start, pos - start);
+}
+
+std::optional<LogLocation> parseLocation(const std::string& text) {
+  std::size_t pos = 0;
+  const std::string source = readDigits(text, pos);
+  if (source.empty() || pos >= text.size() || text[pos++] != ':') return std::nullopt;
+  LogLocation location;
+  location.line = readDigits(text, pos);
+  if (location.line.empty() || pos >= text.size() || text[pos++] != '(') return std::nullopt;
+  location.column = readDigits(text, pos);
+  if (location.column.empty() || text.compare(pos, 2, "):") != 0) return std::nullopt;
+  pos += 2;
+  while (pos < text.size() && text[pos] == ' ') ++pos;
+  location.source = std::stoul(source);
+  location.message = text.substr(pos);
+  return location;
+}
+
 std::string mapLog(const ShaderLibrary& library, const std::vector<std::string>& files, const std::string& log) {
-  static const std::regex location(R"(^(\d+):(\d+)\((\d+)\):\s*(.*)$)");
   std::stringstream in(log);
   std::string line;
   std::string mapped;
   while (std::getline(in, line)) {
     if (line.empty()) continue;
-    std::smatch match;
-    if (std::regex_match(line, match, location)) {
-      const std::size_t sourceNumber = std::stoul(match[1].str());
-      const std::string file = sourceNumber == 0 ? "<prelude>"
-                               : sourceNumber <= files.size() ? library.displayName(files[sourceNumber - 1])
-                                                              : "<source " + match[1].str() + ">";
-      mapped += file + ":" + match[2].str() + ":" + match[3].str() + ": " + match[4].str() + "\n";
-    } else {
+    const std::optional<LogLocation> location = parseLocation(line);
+    if (!location) {
       mapped += line + "\n";
+      continue;
     }
+    const std::size_t source = location->source;
+    const std::string file = source == 0             ? "<prelude>"
+                             : source <= files.size() ? library.displayName(files[source - 1])
+                                                      : "<source " + std::to_string(source) + ">";
+    mapped += file + ":" + location->line + ":" + location->column + ": " + location->message + "\n";
   }
   return mapped;
 }
