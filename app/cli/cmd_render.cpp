@@ -42,9 +42,15 @@ void runRender(const RenderArgs& args) {
   const RenderOutput output = renderer->render(scene, scene.settings, width, height);
   savePng(args.outPath, imageFromOutput(output));
   if (args.request.verbose) {
-    std::cerr << renderer->name() << ": " << width << "x" << height << ", " << output.stats.milliseconds
-              << " ms, triangles in " << output.stats.trianglesIn << ", clipped " << output.stats.trianglesClipped
-              << ", culled " << output.stats.trianglesCulled << ", drawn " << output.stats.trianglesProduced << "\n";
+    const RenderStats& s = output.stats;
+    std::cerr << renderer->name() << ": " << width << "x" << height << ", " << s.milliseconds << " ms, triangles in "
+              << s.trianglesIn;
+    // GL does not report its clipper's and culler's counts; only the CPU pipeline knows them.
+    if (args.backend == "cpu") {
+      std::cerr << ", clipped " << s.trianglesClipped << ", culled " << s.trianglesCulled << ", drawn "
+                << s.trianglesProduced;
+    }
+    std::cerr << ", pixels shaded " << s.pixelsShaded << "\n";
   }
   std::cout << "wrote " << args.outPath << " (" << width << "x" << height << ", " << renderer->name() << ")\n";
 }

@@ -1,52 +1,17 @@
 // `twinraster info`: runs the built CLI and checks exit codes, the text listing, the JSON
 // object, and that bad scenes exit 2 naming the file.
-#include <gtest/gtest.h>
+#include "cli_run.h"
+
 #include <nlohmann/json.hpp>
 
-#include <sys/wait.h>
-
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
+namespace twr::testcli {
 namespace {
 
-const std::string kSource = TWINRASTER_SOURCE_DIR;
 const std::string kDefaultScene = kSource + "/assets/scenes/default.json";
 
-struct RunResult {
-  int exitCode = -1;
-  std::string out, err;
-};
-
-std::string readFile(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// Runs `twinraster <args>` with stdout and stderr captured in files under TWINRASTER_TEST_OUT.
-RunResult runCli(const std::string& args) {
-  const std::filesystem::path dir = std::filesystem::path(TWINRASTER_TEST_OUT) / "cli_info";
-  std::filesystem::create_directories(dir);
-  const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  const std::filesystem::path out = dir / (name + ".out"), err = dir / (name + ".err");
-  const std::string command =
-      "\"" + std::string(TWINRASTER_CLI) + "\" " + args + " >\"" + out.string() + "\" 2>\"" + err.string() + "\"";
-  const int status = std::system(command.c_str());
-  RunResult result;
-  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  result.out = readFile(out);
-  result.err = readFile(err);
-  return result;
-}
-
-void expectContains(const std::string& text, const std::string& part) {
-  EXPECT_NE(text.find(part), std::string::npos) << "missing \"" << part << "\" in:\n" << text;
-}
+RunResult runCli(const std::string& args) { return runProgram(TWINRASTER_CLI, args, testDir("cli_info")); }
 
 TEST(CliInfo, TextListingOfTheDefaultScene) {
   const RunResult r = runCli("info \"" + kDefaultScene + "\"");
@@ -145,3 +110,4 @@ TEST(CliInfo, HelpDescribesTheCommand) {
 }
 
 }  // namespace
+}  // namespace twr::testcli

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -70,6 +71,9 @@ std::vector<SuiteCase> suiteCases() {
   }
   return cases;
 }
+
+// Readable names in ctest output instead of gtest's byte dump.
+void PrintTo(const SuiteCase& c, std::ostream* os) { *os << c.name; }
 
 const suite::SceneTolerance& toleranceFor(const std::string& scene) {
   for (const suite::SceneTolerance& row : suite::kSceneTolerances)

@@ -1,0 +1,106 @@
+// `twinraster render`, `compare` and `trace` as a user runs them: files written, JSON keys,
+// exit codes 0 / 1 (threshold) / 2 (bad input), messages that name the problem.
+#include "cli_run.h"
+
+#include "scene/image.h"
+
+#include <nlohmann/json.hpp>
+
+namespace twr::testcli {
+namespace {
+
+const std::string kDefaultScene = kSource + "/assets/scenes/default.json";
+
+RunResult runCli(const std::string& args, const std::filesystem::path& dir) {
+  return runProgram(TWINRASTER_CLI, args, dir);
+}
+
+TEST(CliRender, BothBackendsWriteAnImageOfTheRequestedSize) {
+  const auto dir = testDir("cli_render");
+  for (const std::string backend : {"cpu", "gl"}) {
+    const std::string png = (dir / (backend + ".png")).string();
+    const RunResult r = runCli("render \"" + kDefaultScene + "\" --backend " + backend + " --out \"" + png +
+                                   "\" --width 160 --height 120",
+                               dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const Image image = loadPng(png);
+    EXPECT_EQ(image.width, 160);
+    EXPECT_EQ(image.height, 120);
+    // The floor fills the bottom row; the sky at the top row is background (alpha 0).
+    EXPECT_EQ(image.pixel(80, 119)[3], 255);
+    EXPECT_EQ(image.pixel(80, 0)[3], 0);
+  }
+}
+
+TEST(CliRender, BadInputExitsTwoAndSaysWhy) {
+  const auto dir = testDir("cli_render");
+  RunResult r = runCli("render \"" + kSource + "/no/such.json\" --out \"" + (dir / "x.png").string() + "\"", dir);
+  EXPECT_EQ(r.exitCode, 2);
+  expectContains(r.err, "no/such.json");
+  r = runCli("render \"" + kDefaultScene + "\" --view sideways --out \"" + (dir / "x.png").string() + "\"", dir);
+  EXPECT_EQ(r.exitCode, 2);
+  expectContains(r.err, "--view");
+  expectContains(r.err, "mapped_normal");
+  r = runCli("render \"" + kDefaultScene + "\" --backend vulkan --out \"" + (dir / "x.png").string() + "\"", dir);
+  EXPECT_EQ(r.exitCode, 2);
+  r = runCli("render \"" + kDefaultScene + "\" --width 0 --out \"" + (dir / "x.png").string() + "\"", dir);
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+}
+
+TEST(CliCompare, WritesEveryArtefactAndTheDocumentedKeys) {
+  const auto dir = testDir("cli_compare");
+  const RunResult r = runCli("compare \"" + kDefaultScene + "\" --out-dir \"" + dir.string() +
+                                 "\" --width 200 --height 150 --repeat 1 --json",
+                             dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json json = nlohmann::json::parse(r.out);
+  for (const char* key : {"width", "height", "covered_cpu", "covered_gl", "coverage_mismatch", "max_abs_diff",
+                          "max_abs_diff_at", "mean_abs_diff", "rmse", "psnr", "over_1", "over_3", "over_12",
+                          "depth_max_diff", "nan_pixels", "cpu_ms", "gl_ms", "gl_renderer", "gl_version"}) {
+    EXPECT_TRUE(json.contains(key)) << key;
+  }
+  EXPECT_EQ(json["width"], 200);
+  EXPECT_EQ(json["height"], 150);
+  EXPECT_EQ(json["gl_sampling"], "precise");
+  EXPECT_EQ(nlohmann::json::parse(readFile(dir / "metrics.json")), json);
+  for (const char* file : {"cpu.png", "gl.png", "side_by_side.png", "diff.png"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
+  }
+  EXPECT_EQ(loadPng((dir / "cpu.png").string()).width, 200);
+  EXPECT_GT(loadPng((dir / "side_by_side.png").string()).width, 2 * 200 - 1);
+}
+
+TEST(CliCompare, ExitsOneOverAThreshold) {
+  const auto dir = testDir("cli_compare");
+  // The two renderers differ by at most 1 level on this scene, so a 0-level limit on a
+  // non-identical image fails, and a generous one passes.
+  RunResult r = runCli("compare \"" + kDefaultScene + "\" --out-dir \"" + dir.string() +
+                           "\" --width 200 --height 150 --repeat 1 --min-psnr 200",
+                       dir);
+  EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
+  expectContains(r.err, "min_psnr");
+  r = runCli("compare \"" + kDefaultScene + "\" --out-dir \"" + dir.string() +
+                 "\" --width 200 --height 150 --repeat 1 --targets --max-abs-diff 3",
+             dir);
+  EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+  r = runCli("compare \"" + kDefaultScene + "\" --out-dir \"" + dir.string() + "\" --max-over-1-pct -1", dir);
+  EXPECT_EQ(r.exitCode, 2) << r.out << r.err;
+}
+
+TEST(CliTrace, TellsTheStoryOfACoveredPixel) {
+  const auto dir = testDir("cli_trace");
+  // (80, 119) of a 160x120 image is on the floor in front of the camera.
+  RunResult r = runCli("trace \"" + kDefaultScene + "\" 80 119 --width 160 --height 120 --json", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json json = nlohmann::json::parse(r.out);
+  EXPECT_FALSE(json.empty());
+  r = runCli("trace \"" + kDefaultScene + "\" 80 119 --width 160 --height 120", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_FALSE(r.out.empty());
+  r = runCli("trace \"" + kDefaultScene + "\" 500 10 --width 160 --height 120", dir);
+  EXPECT_EQ(r.exitCode, 2);
+}
+
+}  // namespace
+}  // namespace twr::testcli
