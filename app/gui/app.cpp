@@ -29,6 +29,7 @@ constexpr std::chrono::milliseconds kSettlePoll{10};
 // Text sizes at content scale 1, pixels.
 constexpr float kBaseFontPixels = 15.0f;
 constexpr float kMonoFontPixels = 14.0f;
+constexpr float kDefaultFontPixels = 13.0f;  // ImGui's built-in font, when DejaVu is missing
 // Largest UI scale honoured (a content scale above this is a misreport), inclusive.
 constexpr float kMaxUiScale = 4.0f;
 // Window background behind the panels (linear RGB).
@@ -88,10 +89,22 @@ GuiApp::GuiApp(GuiOptions options) : options_(std::move(options)) {
 
   createWindow(false);
 
+  // HiDPI comes in two kinds. Where window coordinates are pixels (X11, Windows) the
+  // content scale says how much bigger everything must be drawn: scale the layout and the
+  // fonts. Where the framebuffer has more pixels than the window has coordinates (macOS,
+  // Wayland) ImGui already lays out in points: only rasterize the fonts finer.
   float scaleX = 1.0f, scaleY = 1.0f;
   glfwGetWindowContentScale(window_->window(), &scaleX, &scaleY);
-  uiScale_ = std::clamp(std::max(scaleX, scaleY), 1.0f, kMaxUiScale);
-  setUpImGuiStyle(uiScale_);
+  const float contentScale = std::clamp(std::max(scaleX, scaleY), 1.0f, kMaxUiScale);
+  int windowWidth = 0, windowHeight = 0, framebufferWidth = 0, framebufferHeight = 0;
+  glfwGetWindowSize(window_->window(), &windowWidth, &windowHeight);
+  glfwGetFramebufferSize(window_->window(), &framebufferWidth, &framebufferHeight);
+  const float framebufferRatio =
+      windowWidth > 0 ? std::clamp(static_cast<float>(framebufferWidth) / static_cast<float>(windowWidth), 1.0f, kMaxUiScale)
+                      : 1.0f;
+  const bool pointsLayout = framebufferRatio > 1.0f;
+  uiScale_ = pointsLayout ? 1.0f : contentScale;
+  setUpImGuiStyle(uiScale_, pointsLayout ? framebufferRatio : contentScale);
 
   const std::string startScene = options_.scenePath.empty() ? findStartupScene(prefs_.lastScene) : options_.scenePath;
   if (startScene.empty()) {
@@ -156,20 +169,22 @@ void GuiApp::destroyWindow() {
   window_.reset();
 }
 
-void GuiApp::setUpImGuiStyle(float uiScale) {
+void GuiApp::setUpImGuiStyle(float uiScale, float fontRasterScale) {
   ImGuiIO& io = ImGui::GetIO();
   io.Fonts->Clear();
+  // Glyphs rasterized at fontRasterScale pixels per point, drawn at uiScale.
+  io.FontGlobalScale = uiScale / fontRasterScale;
   ImFontConfig config;
   config.OversampleH = 2;
   if (fileExists(kUiFontPath)) {
-    io.Fonts->AddFontFromFileTTF(kUiFontPath, std::round(kBaseFontPixels * uiScale), &config);
+    io.Fonts->AddFontFromFileTTF(kUiFontPath, std::round(kBaseFontPixels * fontRasterScale), &config);
   } else {
     ImFontConfig fallback;
-    fallback.SizePixels = std::round(13.0f * uiScale);
+    fallback.SizePixels = std::round(kDefaultFontPixels * fontRasterScale);
     io.Fonts->AddFontDefault(&fallback);
   }
   monoFont_ = fileExists(kMonoFontPath)
-                  ? io.Fonts->AddFontFromFileTTF(kMonoFontPath, std::round(kMonoFontPixels * uiScale), &config)
+                  ? io.Fonts->AddFontFromFileTTF(kMonoFontPath, std::round(kMonoFontPixels * fontRasterScale), &config)
                   : nullptr;
 
   ImGui::StyleColorsDark();
@@ -314,9 +329,9 @@ int GuiApp::run() {
       const std::string path = (dir / ("twinraster-" + timestamp() + "-window.png")).string();
       try {
         saveWindowScreenshot(path);
-        screenshotMessage_ = "Saved the window as " + path;
+        showScreenshotMessage("Saved the window as " + path);
       } catch (const std::exception& e) {
-        screenshotMessage_ = std::string("Window screenshot failed: ") + e.what();
+        showScreenshotMessage(std::string("Window screenshot failed: ") + e.what());
       }
     }
     if (finalFrame && !options_.screenshotPath.empty()) {
@@ -333,6 +348,11 @@ int GuiApp::run() {
     if (limitReached) worker_.waitIdle(kSettlePoll);
   }
   return exitCode;
+}
+
+void GuiApp::showScreenshotMessage(std::string message) {
+  screenshotMessage_ = std::move(message);
+  screenshotMessageTime_ = glfwGetTime();
 }
 
 void GuiApp::saveWindowScreenshot(const std::string& path) {
@@ -360,7 +380,7 @@ void GuiApp::saveWindowScreenshot(const std::string& path) {
 void GuiApp::saveViewScreenshots() {
   const std::shared_ptr<const RenderOutput> cpu = cpuFrame_.output, gl = glFrame_.output;
   if (!cpu || !gl) {
-    screenshotMessage_ = "Nothing to save yet: both backends need a finished frame.";
+    showScreenshotMessage("Nothing to save yet: both backends need a finished frame.");
     return;
   }
   try {
@@ -402,9 +422,9 @@ void GuiApp::saveViewScreenshots() {
     savePng(viewPath, view);
     savePng(stem + "-cpu.png", rawImage(*cpu));
     savePng(stem + "-gl.png", rawImage(*gl));
-    screenshotMessage_ = "Saved " + viewPath + " and the -cpu.png / -gl.png beside it.";
+    showScreenshotMessage("Saved " + viewPath + " and the -cpu.png / -gl.png beside it.");
   } catch (const std::exception& e) {
-    screenshotMessage_ = std::string("Screenshot failed: ") + e.what();
+    showScreenshotMessage(std::string("Screenshot failed: ") + e.what());
   }
 }
 

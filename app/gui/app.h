@@ -72,13 +72,14 @@ class GuiApp {
   // ---- app.cpp ----
   void createWindow(bool compatibility);
   void destroyWindow();
-  void setUpImGuiStyle(float uiScale);
+  void setUpImGuiStyle(float uiScale, float fontRasterScale);
   void recreateWindowIfNeeded();
   void openScene(const std::string& path);
   void frame(bool& finalFrame);
   bool settled() const;
   void saveWindowScreenshot(const std::string& path);
   void saveViewScreenshots();
+  void showScreenshotMessage(std::string message);
 
   // ---- app_renders.cpp ----
   void syncRenders();
@@ -119,7 +120,7 @@ class GuiApp {
   std::string prefsWarning_;
 
   std::unique_ptr<GlfwContext> window_;
-  float uiScale_ = 1.0f;  // the window's content scale when the fonts were built
+  float uiScale_ = 1.0f;  // layout sizes in ImGui units per point at scale 1 (see the constructor)
   ImFont* monoFont_ = nullptr;  // the trace report; null: the default font
   std::string contextMessage_;     // why immediate mode is not available, or what happened
   bool compatibilityFailed_ = false;
@@ -151,6 +152,7 @@ class GuiApp {
   bool dragged_ = false;
   std::optional<PixelPos> hovered_;
   std::string screenshotMessage_;
+  double screenshotMessageTime_ = 0.0;  // glfwGetTime() when it was set
   bool windowShotRequested_ = false;  // F12: save the whole window after this frame is drawn
   bool selectSceneTab_ = false;       // show the Scene tab once (a scene failed to open)
   double flickerStart_ = 0.0;

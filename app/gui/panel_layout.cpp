@@ -13,8 +13,9 @@ constexpr float kLeftPanelDefault = 390.0f;
 constexpr float kLeftPanelMin = 280.0f;
 constexpr float kBottomPanelDefault = 270.0f;
 constexpr float kBottomPanelMin = 120.0f;
-// Largest share of the window either side panel may take (fraction, inclusive).
-constexpr float kMaxPanelShare = 0.6f;
+// Largest share of the window either side panel may take (fraction, inclusive), so the
+// image keeps most of a small window.
+constexpr float kMaxPanelShare = 0.45f;
 
 constexpr ImGuiWindowFlags kDockedFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse;
 

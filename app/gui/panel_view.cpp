@@ -27,6 +27,8 @@ constexpr float kClickSlopPoints = 3.0f;
 constexpr float kDividerGrabPoints = 6.0f;
 // Smallest side of the pinned-pixel marker, points: a pixel can be smaller than a point.
 constexpr float kMinMarkerPoints = 9.0f;
+// How long a screenshot message stays under the toolbar, seconds.
+constexpr double kMessageSeconds = 8.0;
 // Steps of the heat ramp drawn in the legend.
 constexpr int kLegendRampSteps = 64;
 
@@ -196,7 +198,7 @@ void GuiApp::drawViewToolbar() {
     ImGui::SameLine();
     if (ImGui::RadioButton("Class map", prefs_.diffShowClasses)) prefs_.diffShowClasses = true;
   }
-  if (!screenshotMessage_.empty()) {
+  if (!screenshotMessage_.empty() && glfwGetTime() - screenshotMessageTime_ < kMessageSeconds) {
     hintText(screenshotMessage_.c_str());
   }
 }
