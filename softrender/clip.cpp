@@ -15,16 +15,18 @@ ClipConfig makeClipConfig(const ClipSwitches& frustum, int userPlaneCount, int v
   return config;
 }
 
-float clipDistanceTo(const ClipVertex& vertex, int plane, const ClipConfig& config) {
-  const vec4& p = vertex.posClip;
+template <typename T>
+T clipDistanceTo(const ClipVertexT<T>& vertex, int plane, const ClipConfig& config) {
+  const Vec4T<T>& p = vertex.posClip;
+  const T guardBandX = static_cast<T>(config.guardBandX), guardBandY = static_cast<T>(config.guardBandY);
   switch (plane) {
-    case kClipPlaneRight: return (config.frustum.right ? p.w : config.guardBandX * p.w) - p.x;
-    case kClipPlaneLeft: return (config.frustum.left ? p.w : config.guardBandX * p.w) + p.x;
-    case kClipPlaneTop: return (config.frustum.top ? p.w : config.guardBandY * p.w) - p.y;
-    case kClipPlaneBottom: return (config.frustum.bottom ? p.w : config.guardBandY * p.w) + p.y;
+    case kClipPlaneRight: return (config.frustum.right ? p.w : guardBandX * p.w) - p.x;
+    case kClipPlaneLeft: return (config.frustum.left ? p.w : guardBandX * p.w) + p.x;
+    case kClipPlaneTop: return (config.frustum.top ? p.w : guardBandY * p.w) - p.y;
+    case kClipPlaneBottom: return (config.frustum.bottom ? p.w : guardBandY * p.w) + p.y;
     case kClipPlaneNear: return p.w + p.z;
     case kClipPlaneFar: return p.w - p.z;
-    case kClipPlaneMinW: return p.w - kMinClipW;
+    case kClipPlaneMinW: return p.w - static_cast<T>(kMinClipW);
     default: return vertex.clipDistance[static_cast<std::size_t>(plane - kClipPlaneUser0)];
   }
 }
@@ -41,25 +43,27 @@ bool planeActive(int plane, const ClipConfig& config) {
   return true;  // side planes fall back to the guard band
 }
 
-bool finitePosition(const ClipVertex& v) {
+template <typename T>
+bool finitePosition(const ClipVertexT<T>& v) {
   return std::isfinite(v.posClip.x) && std::isfinite(v.posClip.y) && std::isfinite(v.posClip.z) &&
          std::isfinite(v.posClip.w);
 }
 
 // Cuts `in` by one plane into `out` (Sutherland-Hodgman: keep inside vertices, add a vertex
 // where an edge crosses the plane).
-void clipPolygonByPlane(const ClipPolygon& in, int plane, const ClipConfig& config, ClipPolygon& out) {
-  std::array<float, kMaxClipVertices> distance{};
+template <typename T>
+void clipPolygonByPlane(const ClipPolygonT<T>& in, int plane, const ClipConfig& config, ClipPolygonT<T>& out) {
+  std::array<T, kMaxClipVertices> distance{};
   for (int i = 0; i < in.count; ++i) distance[static_cast<std::size_t>(i)] = clipDistanceTo(in.v[static_cast<std::size_t>(i)], plane, config);
   out.count = 0;
   for (int i = 0; i < in.count; ++i) {
     const int next = (i + 1) % in.count;
-    const ClipVertex& current = in.v[static_cast<std::size_t>(i)];
-    const ClipVertex& following = in.v[static_cast<std::size_t>(next)];
-    const float dCurrent = distance[static_cast<std::size_t>(i)];
-    const float dNext = distance[static_cast<std::size_t>(next)];
-    const bool currentInside = dCurrent >= 0.0f;
-    const bool nextInside = dNext >= 0.0f;
+    const ClipVertexT<T>& current = in.v[static_cast<std::size_t>(i)];
+    const ClipVertexT<T>& following = in.v[static_cast<std::size_t>(next)];
+    const T dCurrent = distance[static_cast<std::size_t>(i)];
+    const T dNext = distance[static_cast<std::size_t>(next)];
+    const bool currentInside = dCurrent >= T(0);
+    const bool nextInside = dNext >= T(0);
     if (currentInside) out.v[static_cast<std::size_t>(out.count++)] = current;
     if (currentInside != nextInside) {
       // Start from the endpoint nearer to the plane (the smaller |d|), as Mesa does: the new
@@ -67,10 +71,10 @@ void clipPolygonByPlane(const ClipPolygon& in, int plane, const ClipConfig& conf
       // differ, so dNear - dFar is never zero.
       const bool currentNearer = std::fabs(dCurrent) < std::fabs(dNext) ||
                                  (std::fabs(dCurrent) == std::fabs(dNext) && currentInside);
-      const ClipVertex& nearer = currentNearer ? current : following;
-      const ClipVertex& farther = currentNearer ? following : current;
-      const float dNearer = currentNearer ? dCurrent : dNext;
-      const float dFarther = currentNearer ? dNext : dCurrent;
+      const ClipVertexT<T>& nearer = currentNearer ? current : following;
+      const ClipVertexT<T>& farther = currentNearer ? following : current;
+      const T dNearer = currentNearer ? dCurrent : dNext;
+      const T dFarther = currentNearer ? dNext : dCurrent;
       out.v[static_cast<std::size_t>(out.count++)] = interpolateClipVertex(nearer, farther, dNearer / (dNearer - dFarther));
     }
   }
@@ -79,16 +83,18 @@ void clipPolygonByPlane(const ClipPolygon& in, int plane, const ClipConfig& conf
 
 }  // namespace
 
-std::uint32_t outcode(const ClipVertex& vertex, const ClipConfig& config) {
+template <typename T>
+std::uint32_t outcode(const ClipVertexT<T>& vertex, const ClipConfig& config) {
   std::uint32_t code = 0;
   for (int plane = 0; plane < kClipPlaneCount; ++plane) {
-    if (planeActive(plane, config) && clipDistanceTo(vertex, plane, config) < 0.0f) code |= 1u << plane;
+    if (planeActive(plane, config) && clipDistanceTo(vertex, plane, config) < T(0)) code |= 1u << plane;
   }
   return code;
 }
 
-ClipVertex interpolateClipVertex(const ClipVertex& from, const ClipVertex& to, float t) {
-  ClipVertex r;
+template <typename T>
+ClipVertexT<T> interpolateClipVertex(const ClipVertexT<T>& from, const ClipVertexT<T>& to, std::type_identity_t<T> t) {
+  ClipVertexT<T> r;
   r.fromClipper = true;
   r.posClip = from.posClip + t * (to.posClip - from.posClip);
   r.posWorld = from.posWorld + t * (to.posWorld - from.posWorld);
@@ -106,8 +112,9 @@ ClipVertex interpolateClipVertex(const ClipVertex& from, const ClipVertex& to, f
   return r;
 }
 
-std::uint32_t clipTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, const ClipConfig& config,
-                           ClipPolygon& out, ClipPolygon& scratch) {
+template <typename T>
+std::uint32_t clipTriangle(const ClipVertexT<T>& a, const ClipVertexT<T>& b, const ClipVertexT<T>& c,
+                           const ClipConfig& config, ClipPolygonT<T>& out, ClipPolygonT<T>& scratch) {
   if (!finitePosition(a) || !finitePosition(b) || !finitePosition(c)) {
     out.count = 0;
     return kClipNonFiniteBit;
@@ -124,8 +131,8 @@ std::uint32_t clipTriangle(const ClipVertex& a, const ClipVertex& b, const ClipV
   }
   std::uint32_t cut = 0;
   const std::uint32_t straddled = codeA | codeB | codeC;
-  ClipPolygon* current = &out;
-  ClipPolygon* next = &scratch;
+  ClipPolygonT<T>* current = &out;
+  ClipPolygonT<T>* next = &scratch;
   for (int plane = 0; plane < kClipPlaneCount; ++plane) {
     if ((straddled & (1u << plane)) == 0) continue;
     clipPolygonByPlane(*current, plane, config, *next);
@@ -140,30 +147,43 @@ std::uint32_t clipTriangle(const ClipVertex& a, const ClipVertex& b, const ClipV
   return cut;
 }
 
-bool clipSegment(ClipVertex& a, ClipVertex& b, const ClipConfig& config, std::uint32_t& planesCut) {
+template <typename T>
+bool clipSegment(ClipVertexT<T>& a, ClipVertexT<T>& b, const ClipConfig& config, std::uint32_t& planesCut) {
   planesCut = 0;
   if (!finitePosition(a) || !finitePosition(b)) {
     planesCut = kClipNonFiniteBit;
     return false;
   }
   // tA, tB: how much of the segment each plane cuts off from that end; keep the largest.
-  float tA = 0.0f, tB = 0.0f;
+  T tA = T(0), tB = T(0);
   for (int plane = 0; plane < kClipPlaneCount; ++plane) {
     if (!planeActive(plane, config)) continue;
-    const float dA = clipDistanceTo(a, plane, config);
-    const float dB = clipDistanceTo(b, plane, config);
-    if (dA >= 0.0f && dB >= 0.0f) continue;
+    const T dA = clipDistanceTo(a, plane, config);
+    const T dB = clipDistanceTo(b, plane, config);
+    if (dA >= T(0) && dB >= T(0)) continue;
     planesCut |= 1u << plane;
-    if (dA < 0.0f && dB < 0.0f) return false;
-    if (dB < 0.0f) tB = std::fmax(tB, dB / (dB - dA));
-    if (dA < 0.0f) tA = std::fmax(tA, dA / (dA - dB));
-    if (tA + tB >= 1.0f) return false;
+    if (dA < T(0) && dB < T(0)) return false;
+    if (dB < T(0)) tB = std::fmax(tB, dB / (dB - dA));
+    if (dA < T(0)) tA = std::fmax(tA, dA / (dA - dB));
+    if (tA + tB >= T(1)) return false;
   }
-  const ClipVertex originalA = a, originalB = b;
-  if (tA > 0.0f) a = interpolateClipVertex(originalA, originalB, tA);
-  if (tB > 0.0f) b = interpolateClipVertex(originalB, originalA, tB);
+  const ClipVertexT<T> originalA = a, originalB = b;
+  if (tA > T(0)) a = interpolateClipVertex(originalA, originalB, tA);
+  if (tB > T(0)) b = interpolateClipVertex(originalB, originalA, tB);
   return true;
 }
+
+// The two pipelines: float (matches GL) and double (the reference).
+#define TWR_INSTANTIATE_CLIP(T)                                                                               \
+  template T clipDistanceTo<T>(const ClipVertexT<T>&, int, const ClipConfig&);                                \
+  template std::uint32_t outcode<T>(const ClipVertexT<T>&, const ClipConfig&);                                \
+  template ClipVertexT<T> interpolateClipVertex<T>(const ClipVertexT<T>&, const ClipVertexT<T>&, T);          \
+  template std::uint32_t clipTriangle<T>(const ClipVertexT<T>&, const ClipVertexT<T>&, const ClipVertexT<T>&, \
+                                         const ClipConfig&, ClipPolygonT<T>&, ClipPolygonT<T>&);              \
+  template bool clipSegment<T>(ClipVertexT<T>&, ClipVertexT<T>&, const ClipConfig&, std::uint32_t&);
+TWR_INSTANTIATE_CLIP(float)
+TWR_INSTANTIATE_CLIP(double)
+#undef TWR_INSTANTIATE_CLIP
 
 const char* clipPlaneName(int plane) {
   static_assert(kClipPlaneCount == 15, "one name per plane");

@@ -12,12 +12,15 @@
 // (g w -/+ x >= 0, g = ClipConfig::guardBandX or Y), so window x and y stay bounded.
 // A switched-off near or far plane is dropped (GL depth clamp); setup clamps depth to [0, 1].
 // A vertex exactly on a plane (distance 0) is inside.
+//
+// Templated on the scalar T like the vertex stage (float: the pipeline, double: the reference).
 #pragma once
 
 #include "softrender/vertex.h"
 
 #include <array>
 #include <cstdint>
+#include <type_traits>
 
 namespace twr {
 
@@ -54,23 +57,28 @@ inline constexpr float kGuardBandPixels = 16384.0f;
 ClipConfig makeClipConfig(const ClipSwitches& frustum, int userPlaneCount, int viewportWidth, int viewportHeight);
 
 // A convex polygon in clip space; vertex i is v[i] for i in [0, count).
-struct ClipPolygon {
-  std::array<ClipVertex, kMaxClipVertices> v;
+template <typename T>
+struct ClipPolygonT {
+  std::array<ClipVertexT<T>, kMaxClipVertices> v;
   int count = 0;
 };
+using ClipPolygon = ClipPolygonT<float>;
 
 // Signed distance of a vertex from plane `plane` (inside when >= 0).
-float clipDistanceTo(const ClipVertex& vertex, int plane, const ClipConfig& config);
+template <typename T>
+T clipDistanceTo(const ClipVertexT<T>& vertex, int plane, const ClipConfig& config);
 
 // Bit `plane` set for each active plane the vertex is outside of.
-std::uint32_t outcode(const ClipVertex& vertex, const ClipConfig& config);
+template <typename T>
+std::uint32_t outcode(const ClipVertexT<T>& vertex, const ClipConfig& config);
 
 // from + t (to - from) for the position and every varying (the new vertex is marked
 // fromClipper). The clipper calls it with `from` the edge endpoint nearer to the plane and
 // t = dFrom / (dFrom - dTo), as Mesa's draw clipper does, so an edge shared by two triangles
 // gets the same new vertex whichever way round the triangles walk it (no cracks), and the
 // snapped positions equal llvmpipe's.
-ClipVertex interpolateClipVertex(const ClipVertex& from, const ClipVertex& to, float t);
+template <typename T>
+ClipVertexT<T> interpolateClipVertex(const ClipVertexT<T>& from, const ClipVertexT<T>& to, std::type_identity_t<T> t);
 
 // Set in a returned plane mask when a vertex had a non-finite clip position (removed).
 inline constexpr std::uint32_t kClipNonFiniteBit = 1u << 31;
@@ -78,12 +86,14 @@ inline constexpr std::uint32_t kClipNonFiniteBit = 1u << 31;
 // Clips triangle (a, b, c) into `out` (count 0 when nothing is left; otherwise the vertices
 // keep the triangle's winding). Returns the mask of planes that cut or removed it (0 when
 // the triangle was entirely inside). `scratch` is working space of the same size.
-std::uint32_t clipTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, const ClipConfig& config,
-                           ClipPolygon& out, ClipPolygon& scratch);
+template <typename T>
+std::uint32_t clipTriangle(const ClipVertexT<T>& a, const ClipVertexT<T>& b, const ClipVertexT<T>& c,
+                           const ClipConfig& config, ClipPolygonT<T>& out, ClipPolygonT<T>& scratch);
 
 // Clips segment (a, b) in place (Mesa's line clipper: the largest cut from each end); returns false when nothing is left. `planesCut` gets the
 // mask of planes that cut it.
-bool clipSegment(ClipVertex& a, ClipVertex& b, const ClipConfig& config, std::uint32_t& planesCut);
+template <typename T>
+bool clipSegment(ClipVertexT<T>& a, ClipVertexT<T>& b, const ClipConfig& config, std::uint32_t& planesCut);
 
 // Name of a plane for traces ("left", "near", "w>=eps", "user0", ...).
 const char* clipPlaneName(int plane);

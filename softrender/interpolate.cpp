@@ -9,7 +9,8 @@ namespace {
 constexpr double kPixelCentre = 0.5;  // pixel centres at +0.5
 
 // Plane equations of the barycentrics of triangle (x_i, y_i); false when it has no area.
-bool barycentricPlanes(const std::array<double, 3>& x, const std::array<double, 3>& y, InterpolationSetup& out) {
+template <typename T>
+bool barycentricPlanes(const std::array<double, 3>& x, const std::array<double, 3>& y, InterpolationSetupT<T>& out) {
   const double doubleArea = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
   if (doubleArea == 0.0 || !std::isfinite(doubleArea)) return false;
   for (int i = 0; i < 3; ++i) {
@@ -27,8 +28,10 @@ bool barycentricPlanes(const std::array<double, 3>& x, const std::array<double, 
 
 }  // namespace
 
-InterpolationSetup makeInterpolationSetup(const std::array<WindowVertex, 3>& window, const TriangleSetup& setup) {
-  InterpolationSetup out;
+template <typename T>
+InterpolationSetupT<T> makeInterpolationSetup(const std::array<WindowVertexT<T>, 3>& window,
+                                              const TriangleSetup& setup) {
+  InterpolationSetupT<T> out;
   std::array<double, 3> x{}, y{};
   for (std::size_t i = 0; i < 3; ++i) {
     x[i] = window[i].x;
@@ -53,14 +56,15 @@ InterpolationSetup makeInterpolationSetup(const std::array<WindowVertex, 3>& win
   return out;
 }
 
-PixelWeights pixelWeights(const InterpolationSetup& setup, int px, int py) {
-  PixelWeights w;
+template <typename T>
+PixelWeightsT<T> pixelWeights(const InterpolationSetupT<T>& setup, int px, int py) {
+  PixelWeightsT<T> w;
   double perspectiveSum = 0.0;
   std::array<double, 3> perspective{};
   double depth = 0.0;
   for (std::size_t i = 0; i < 3; ++i) {
     const double lambda = setup.atOrigin[i] + setup.dx[i] * px + setup.dy[i] * py;
-    w.screen[i] = static_cast<float>(lambda);
+    w.screen[i] = static_cast<T>(lambda);
     depth += lambda * setup.zWindow[i];
     perspective[i] = lambda * setup.invW[i];
     perspectiveSum += perspective[i];
@@ -68,17 +72,18 @@ PixelWeights pixelWeights(const InterpolationSetup& setup, int px, int py) {
   // 1/w is positive at every corner, so the sum is positive inside the triangle; a pixel
   // centre a hair outside the float triangle could still push it to zero.
   for (std::size_t i = 0; i < 3; ++i) {
-    w.perspective[i] = perspectiveSum > 0.0 ? static_cast<float>(perspective[i] / perspectiveSum) : w.screen[i];
+    w.perspective[i] = perspectiveSum > 0.0 ? static_cast<T>(perspective[i] / perspectiveSum) : w.screen[i];
   }
-  const float clamped = static_cast<float>(depth);
-  w.depth = std::isfinite(clamped) ? std::fmin(std::fmax(clamped, 0.0f), 1.0f) : 1.0f;
+  const T clamped = static_cast<T>(depth);
+  w.depth = std::isfinite(clamped) ? std::fmin(std::fmax(clamped, T(0)), T(1)) : T(1);
   return w;
 }
 
-Fragment interpolateFragment(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2,
-                             const PixelWeights& weights, bool tangentLighting, int tangentLightCount) {
-  const float p0 = weights.perspective[0], p1 = weights.perspective[1], p2 = weights.perspective[2];
-  Fragment f;
+template <typename T>
+FragmentT<T> interpolateFragment(const ClipVertexT<T>& v0, const ClipVertexT<T>& v1, const ClipVertexT<T>& v2,
+                                 const PixelWeightsT<T>& weights, bool tangentLighting, int tangentLightCount) {
+  const T p0 = weights.perspective[0], p1 = weights.perspective[1], p2 = weights.perspective[2];
+  FragmentT<T> f;
   f.posWorld = v0.posWorld * p0 + v1.posWorld * p1 + v2.posWorld * p2;
   f.nWorld = v0.nWorld * p0 + v1.nWorld * p1 + v2.nWorld * p2;
   f.tWorld = v0.tWorld * p0 + v1.tWorld * p1 + v2.tWorld * p2;
@@ -94,5 +99,19 @@ Fragment interpolateFragment(const ClipVertex& v0, const ClipVertex& v1, const C
   f.depth = weights.depth;
   return f;
 }
+
+// The two pipelines: float (matches GL) and double (the reference).
+template InterpolationSetupT<float> makeInterpolationSetup<float>(const std::array<WindowVertexT<float>, 3>&,
+                                                                  const TriangleSetup&);
+template InterpolationSetupT<double> makeInterpolationSetup<double>(const std::array<WindowVertexT<double>, 3>&,
+                                                                    const TriangleSetup&);
+template PixelWeightsT<float> pixelWeights<float>(const InterpolationSetupT<float>&, int, int);
+template PixelWeightsT<double> pixelWeights<double>(const InterpolationSetupT<double>&, int, int);
+template FragmentT<float> interpolateFragment<float>(const ClipVertexT<float>&, const ClipVertexT<float>&,
+                                                     const ClipVertexT<float>&, const PixelWeightsT<float>&, bool,
+                                                     int);
+template FragmentT<double> interpolateFragment<double>(const ClipVertexT<double>&, const ClipVertexT<double>&,
+                                                       const ClipVertexT<double>&, const PixelWeightsT<double>&,
+                                                       bool, int);
 
 }  // namespace twr

@@ -7,6 +7,8 @@
 //   attribute = sum p_i a_i
 // Barycentrics come from the unsnapped window positions (as llvmpipe's attribute setup),
 // in double precision; the snapped positions stand in when those have no area.
+//
+// Templated on the scalar T of the varyings (float: the pipeline, double: the reference).
 #pragma once
 
 #include "softrender/setup.h"
@@ -18,39 +20,49 @@ namespace twr {
 
 // lambda_i(px, py) = atOrigin[i] + dx[i] * px + dy[i] * py (pixel indices; the centre offset
 // is folded into atOrigin).
-struct InterpolationSetup {
+template <typename T>
+struct InterpolationSetupT {
   std::array<double, 3> atOrigin{}, dx{}, dy{};
-  std::array<float, 3> zWindow{};  // window depth of each corner
-  std::array<float, 3> invW{};     // 1 / w_clip of each corner
+  std::array<T, 3> zWindow{};  // window depth of each corner
+  std::array<T, 3> invW{};     // 1 / w_clip of each corner
 };
+using InterpolationSetup = InterpolationSetupT<float>;
 
 // Corner i of `window` is vertex i of the triangle (before setup's reordering).
-InterpolationSetup makeInterpolationSetup(const std::array<WindowVertex, 3>& window, const TriangleSetup& setup);
+template <typename T = float>
+InterpolationSetupT<T> makeInterpolationSetup(const std::array<WindowVertexT<T>, 3>& window,
+                                              const TriangleSetup& setup);
 
-struct PixelWeights {
-  std::array<float, 3> screen{};       // lambda_i, sum 1
-  std::array<float, 3> perspective{};  // p_i, sum 1
-  float depth = 0.0f;                  // window depth clamped to [0, 1] (GL clamps to the depth range)
+template <typename T>
+struct PixelWeightsT {
+  std::array<T, 3> screen{};       // lambda_i, sum 1
+  std::array<T, 3> perspective{};  // p_i, sum 1
+  T depth = T(0);                  // window depth clamped to [0, 1] (GL clamps to the depth range)
 };
+using PixelWeights = PixelWeightsT<float>;
 
-PixelWeights pixelWeights(const InterpolationSetup& setup, int px, int py);
+template <typename T>
+PixelWeightsT<T> pixelWeights(const InterpolationSetupT<T>& setup, int px, int py);
 
 // The interpolated varyings a fragment is shaded from (names as in phong.frag).
-struct Fragment {
-  vec3 posWorld{0.0f};
-  vec3 nWorld{0.0f};
-  vec3 tWorld{0.0f};
-  vec3 bWorld{0.0f};
-  vec2 uv{0.0f};
-  std::array<vec3, kMaxLights> lightDirTangent{};
-  vec3 eyeDirTangent{0.0f};
-  float depth = 0.0f;  // window depth
+template <typename T>
+struct FragmentT {
+  Vec3T<T> posWorld{T(0)};
+  Vec3T<T> nWorld{T(0)};
+  Vec3T<T> tWorld{T(0)};
+  Vec3T<T> bWorld{T(0)};
+  Vec2T<T> uv{T(0)};
+  std::array<Vec3T<T>, kMaxLights> lightDirTangent{};
+  Vec3T<T> eyeDirTangent{T(0)};
+  T depth = T(0);  // window depth
 };
+using Fragment = FragmentT<float>;
 
 // Perspective-correct varyings at one pixel. Tangent-space light and eye directions are
 // interpolated only for the first `tangentLightCount` lights (0 in world lighting space, and
 // then eyeDirTangent is left zero too).
-Fragment interpolateFragment(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2,
-                             const PixelWeights& weights, bool tangentLighting, int tangentLightCount);
+template <typename T>
+FragmentT<T> interpolateFragment(const ClipVertexT<T>& v0, const ClipVertexT<T>& v1, const ClipVertexT<T>& v2,
+                                 const PixelWeightsT<T>& weights, bool tangentLighting, int tangentLightCount);
 
 }  // namespace twr

@@ -11,22 +11,23 @@ namespace twr {
 namespace {
 
 // Pixel centres sit at +0.5; removing it before snapping puts them on integer multiples of 256.
-constexpr float kPixelCentreOffset = 0.5f;
+constexpr double kPixelCentreOffset = 0.5;
 
 // Floor division of 24.8 fixed point by 256 (an arithmetic shift rounds towards -infinity).
 int pixelFloor(std::int32_t fixed) { return static_cast<int>(fixed >> kSubpixelBits); }
 
 }  // namespace
 
-WindowVertex windowFromClip(const vec4& posClip, const Viewport& viewport, bool fusedMultiplyAdd) {
-  const float halfWidth = 0.5f * static_cast<float>(viewport.width);
-  const float halfHeight = 0.5f * static_cast<float>(viewport.height);
-  constexpr float kHalfDepthRange = 0.5f;  // glDepthRange(0, 1): scale and offset 0.5
-  WindowVertex out;
+template <typename T>
+WindowVertexT<T> windowFromClip(const Vec4T<T>& posClip, const Viewport& viewport, bool fusedMultiplyAdd) {
+  const T halfWidth = T(0.5) * static_cast<T>(viewport.width);
+  const T halfHeight = T(0.5) * static_cast<T>(viewport.height);
+  constexpr T kHalfDepthRange = T(0.5);  // glDepthRange(0, 1): scale and offset 0.5
+  WindowVertexT<T> out;
   // The clipper leaves w > 0 everywhere except the frustum's apex (x = y = z = w = 0, a
   // degenerate triangle); keep that case finite instead of dividing by zero.
-  out.invW = posClip.w > 0.0f ? 1.0f / posClip.w : 1.0f / kMinClipW;
-  const float xNdc = posClip.x * out.invW, yNdc = posClip.y * out.invW, zNdc = posClip.z * out.invW;
+  out.invW = posClip.w > T(0) ? T(1) / posClip.w : T(1) / static_cast<T>(kMinClipW);
+  const T xNdc = posClip.x * out.invW, yNdc = posClip.y * out.invW, zNdc = posClip.z * out.invW;
   if (fusedMultiplyAdd) {
     out.x = std::fma(xNdc, halfWidth, halfWidth);
     out.y = std::fma(yNdc, halfHeight, halfHeight);
@@ -39,13 +40,17 @@ WindowVertex windowFromClip(const vec4& posClip, const Viewport& viewport, bool 
   return out;
 }
 
-std::int32_t snapToSubpixel(float windowCoord) {
+template <typename T>
+std::int32_t snapToSubpixel(T windowCoord) {
   // fmax/fmin also map NaN to the bound, so nothing undefined reaches the conversion.
-  const float bounded = std::fmin(std::fmax(windowCoord, -kMaxWindowCoord), kMaxWindowCoord);
-  return static_cast<std::int32_t>(std::lrint((bounded - kPixelCentreOffset) * static_cast<float>(kSubpixelScale)));
+  const T maxCoord = static_cast<T>(kMaxWindowCoord);
+  const T bounded = std::fmin(std::fmax(windowCoord, -maxCoord), maxCoord);
+  return static_cast<std::int32_t>(
+      std::lrint((bounded - static_cast<T>(kPixelCentreOffset)) * static_cast<T>(kSubpixelScale)));
 }
 
-SetupResult setupTriangle(const std::array<WindowVertex, 3>& window, CullMode cull, FrontFace frontFace,
+template <typename T>
+SetupResult setupTriangle(const std::array<WindowVertexT<T>, 3>& window, CullMode cull, FrontFace frontFace,
                           const Viewport& viewport, TriangleSetup& out) {
   out = TriangleSetup{};
   for (int i = 0; i < 3; ++i) {
@@ -99,6 +104,16 @@ SetupResult setupTriangle(const std::array<WindowVertex, 3>& window, CullMode cu
   out.y1 = std::min(pixelFloor(maxY - 1), viewport.height - 1);
   return SetupResult::Ready;
 }
+
+// The two pipelines: float (matches GL) and double (the reference).
+template WindowVertexT<float> windowFromClip<float>(const vec4&, const Viewport&, bool);
+template WindowVertexT<double> windowFromClip<double>(const glm::dvec4&, const Viewport&, bool);
+template std::int32_t snapToSubpixel<float>(float);
+template std::int32_t snapToSubpixel<double>(double);
+template SetupResult setupTriangle<float>(const std::array<WindowVertexT<float>, 3>&, CullMode, FrontFace,
+                                          const Viewport&, TriangleSetup&);
+template SetupResult setupTriangle<double>(const std::array<WindowVertexT<double>, 3>&, CullMode, FrontFace,
+                                           const Viewport&, TriangleSetup&);
 
 const char* toString(SetupResult result) {
   switch (result) {

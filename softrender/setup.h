@@ -22,6 +22,9 @@
 // Integer ranges: window coordinates are clamped to +-kMaxWindowCoord = 2^16 px (the guard
 // band keeps real ones within [-2^14, 2^15]), so |X|, |Y| <= 2^24, edge deltas < 2^25, the
 // constant term < 2^51 and E for any pixel of a 2^14 x 2^14 image < 2^52: int64 never overflows.
+//
+// The window transform is templated on the scalar T (float: the pipeline, double: the
+// reference); snapping makes everything after it integer, the same for both.
 #pragma once
 
 #include "scene/conventions.h"
@@ -39,24 +42,29 @@ struct Viewport {
 };
 
 // A vertex after the divide by w and the viewport transform.
-struct WindowVertex {
-  float x = 0.0f, y = 0.0f;  // pixels, GL window coordinates (origin bottom-left)
-  float z = 0.0f;            // window depth 0.5 z_ndc + 0.5 (not yet clamped)
-  float invW = 0.0f;         // 1 / w_clip, for perspective-correct interpolation
+template <typename T>
+struct WindowVertexT {
+  T x = T(0), y = T(0);  // pixels, GL window coordinates (origin bottom-left)
+  T z = T(0);            // window depth 0.5 z_ndc + 0.5 (not yet clamped)
+  T invW = T(0);         // 1 / w_clip, for perspective-correct interpolation
 };
+using WindowVertex = WindowVertexT<float>;
 
 // Largest |window coordinate| setup snaps (pixels, inclusive); see the range note above.
 inline constexpr float kMaxWindowCoord = 65536.0f;
 
 // Requires w_clip > 0 (the clipper guarantees w >= kMinClipW). `fusedMultiplyAdd`: see above
 // (true for vertices straight from the vertex stage).
-WindowVertex windowFromClip(const vec4& posClip, const Viewport& viewport, bool fusedMultiplyAdd);
-inline WindowVertex windowFromClip(const ClipVertex& vertex, const Viewport& viewport) {
+template <typename T>
+WindowVertexT<T> windowFromClip(const Vec4T<T>& posClip, const Viewport& viewport, bool fusedMultiplyAdd);
+template <typename T>
+WindowVertexT<T> windowFromClip(const ClipVertexT<T>& vertex, const Viewport& viewport) {
   return windowFromClip(vertex.posClip, viewport, !vertex.fromClipper);
 }
 
 // Window coordinate to 24.8 fixed point, pixel-centre offset removed (clamped to the range).
-std::int32_t snapToSubpixel(float windowCoord);
+template <typename T>
+std::int32_t snapToSubpixel(T windowCoord);
 
 // E(px, py) = c + stepX * px + stepY * py; the pixel is covered when E > 0 for all edges.
 struct EdgeFunction {
@@ -83,7 +91,8 @@ struct TriangleSetup {
 // Snaps, orders clockwise, culls and builds the edge functions. Front faces are those
 // counter-clockwise (FrontFace::Ccw) or clockwise (Cw) in GL window coordinates, decided on
 // the snapped positions like llvmpipe; zero snapped area is always rejected.
-SetupResult setupTriangle(const std::array<WindowVertex, 3>& window, CullMode cull, FrontFace frontFace,
+template <typename T = float>
+SetupResult setupTriangle(const std::array<WindowVertexT<T>, 3>& window, CullMode cull, FrontFace frontFace,
                           const Viewport& viewport, TriangleSetup& out);
 
 const char* toString(SetupResult result);

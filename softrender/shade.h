@@ -6,7 +6,8 @@
 //   If = 1 / max(A_C + A_L d + A_Q d^2, kMinAttenuationDenominator),  R = 2 (N.L) N - L
 //
 // Templated on the material's features and the view, so a scene compiles (and pays for)
-// only the paths it uses, as the GLSL #define permutations do.
+// only the paths it uses, as the GLSL #define permutations do. Also templated on the scalar T
+// (float: the pipeline, double: the reference).
 #pragma once
 
 #include "scene/scene.h"
@@ -15,58 +16,75 @@
 
 #include <array>
 #include <cmath>
+#include <type_traits>
 
 namespace twr {
 
-struct LightUniform {
-  vec3 posWorld{0.0f};
-  vec3 diffuse{0.0f};      // Id
-  vec3 specular{0.0f};     // Is
-  vec3 attenuation{1.0f, 0.0f, 0.0f};  // A_C, A_L, A_Q
+template <typename T>
+struct LightUniformT {
+  Vec3T<T> posWorld{T(0)};
+  Vec3T<T> diffuse{T(0)};                         // Id
+  Vec3T<T> specular{T(0)};                        // Is
+  Vec3T<T> attenuation{T(1), T(0), T(0)};         // A_C, A_L, A_Q
 };
+using LightUniform = LightUniformT<float>;
 
 // What the fragment stage reads besides the fragment (the GLSL uniforms and samplers).
-struct ShadeUniforms {
-  vec3 ka{1.0f}, kd{1.0f}, ks{0.0f};
-  float shininess = 32.0f;
+template <typename T>
+struct ShadeUniformsT {
+  Vec3T<T> ka{T(1)}, kd{T(1)}, ks{T(0)};
+  T shininess = T(32);
   const Texture* diffuseMap = nullptr;
   const Texture* normalMap = nullptr;
   const Texture* specularMap = nullptr;
   TextureFilter filter = TextureFilter::Bilinear;
-  vec3 ambient{0.0f};  // Ia
-  std::array<LightUniform, kMaxLights> lights{};
+  Vec3T<T> ambient{T(0)};  // Ia
+  std::array<LightUniformT<T>, kMaxLights> lights{};
   int lightCount = 0;  // in [0, kMaxLights]
-  vec3 eyePosWorld{0.0f};
+  Vec3T<T> eyePosWorld{T(0)};
 };
+using ShadeUniforms = ShadeUniformsT<float>;
 
-ShadeUniforms makeShadeUniforms(const Material& material, const Scene& scene, const RenderSettings& settings);
+template <typename T = float>
+ShadeUniformsT<T> makeShadeUniforms(const Material& material, const Scene& scene, const RenderSettings& settings);
 
 // Every intermediate value of one shading, for the pixel trace.
-struct LightTerms {
-  vec3 lVec{0.0f}, vVec{0.0f};  // unnormalised light and eye directions (lighting space)
-  float distance = 0.0f;        // d, world units, always from posWorld
-  vec3 l{0.0f}, v{0.0f}, r{0.0f};
-  float nDotL = 0.0f, rDotV = 0.0f;
-  float attenuation = 0.0f;  // If
-  vec3 diffuse{0.0f}, specular{0.0f};
+template <typename T>
+struct LightTermsT {
+  Vec3T<T> lVec{T(0)}, vVec{T(0)};  // unnormalised light and eye directions (lighting space)
+  T distance = T(0);                // d, world units, always from posWorld
+  Vec3T<T> l{T(0)}, v{T(0)}, r{T(0)};
+  T nDotL = T(0), rDotV = T(0);
+  T attenuation = T(0);  // If
+  Vec3T<T> diffuse{T(0)}, specular{T(0)};
 };
-struct ShadeTerms {
-  vec3 n{0.0f}, t{0.0f}, b{0.0f};  // normalised interpolated frame (world space)
-  vec3 albedo{1.0f}, specScale{1.0f};
-  vec4 normalTexel{0.0f};          // raw normal-map sample in [0, 1] (0 without a map)
-  vec3 mappedTangent{0.0f, 0.0f, 1.0f};
-  vec3 nl{0.0f};                   // the normal lighting uses (lighting space)
-  vec3 ambient{0.0f};              // ka albedo Ia
-  std::array<LightTerms, kMaxLights> lights{};
+using LightTerms = LightTermsT<float>;
+template <typename T>
+struct ShadeTermsT {
+  Vec3T<T> n{T(0)}, t{T(0)}, b{T(0)};  // normalised interpolated frame (world space)
+  Vec3T<T> albedo{T(1)}, specScale{T(1)};
+  Vec4T<T> normalTexel{T(0)};          // raw normal-map sample in [0, 1] (0 without a map)
+  Vec3T<T> mappedTangent{T(0), T(0), T(1)};
+  Vec3T<T> nl{T(0)};                   // the normal lighting uses (lighting space)
+  Vec3T<T> ambient{T(0)};              // ka albedo Ia
+  std::array<LightTermsT<T>, kMaxLights> lights{};
   int lightCount = 0;
-  vec4 colour{0.0f};               // the fragment's output
+  Vec4T<T> colour{T(0)};               // the fragment's output
 };
+using ShadeTerms = ShadeTermsT<float>;
 
 // pow(x, s) for x >= 0 with 0^s = 0 for s > 0 and 0^0 = 1 (both renderers agree on it).
-float phongPow(float x, float s);
+template <typename T>
+T phongPow(T x, std::type_identity_t<T> s) {
+  if (!(x > T(0))) return s > T(0) ? T(0) : T(1);
+  return std::pow(x, s);
+}
 
 // (v + 1) / 2 with alpha 1: how the debug views show a vector.
-inline vec4 vectorAsColour(vec3 v) { return vec4((v + 1.0f) * 0.5f, 1.0f); }
+template <typename T>
+Vec4T<T> vectorAsColour(Vec3T<T> v) {
+  return Vec4T<T>((v + T(1)) * T(0.5), T(1));
+}
 
 // The compile-time feature set of one shader permutation.
 template <bool DiffuseMap, bool NormalMap, bool SpecularMap, LightingSpace Space, View ViewMode>
@@ -78,26 +96,27 @@ struct ShaderFeatures {
   static constexpr View kView = ViewMode;
 };
 
-// Shades one fragment; fills `terms` when it is not null (the pixel trace).
-template <typename Features>
-vec4 shadeFragment(const Fragment& f, const ShadeUniforms& u, ShadeTerms* terms) {
+// Shades one fragment; fills `terms` when it is not null (the pixel trace). T is the scalar
+// of the pipeline (float, or double for the reference).
+template <typename Features, typename T>
+Vec4T<T> shadeFragment(const FragmentT<T>& f, const ShadeUniformsT<T>& u, std::type_identity_t<ShadeTermsT<T>>* terms) {
   constexpr bool kTangentSpace = Features::kSpace == LightingSpace::Tangent;
-  const vec3 n = safeNormalize(f.nWorld);
-  const vec3 t = safeNormalize(f.tWorld);
-  const vec3 b = safeNormalize(f.bWorld);
+  const Vec3T<T> n = safeNormalize(f.nWorld);
+  const Vec3T<T> t = safeNormalize(f.tWorld);
+  const Vec3T<T> b = safeNormalize(f.bWorld);
 
-  vec3 albedo(1.0f);
-  if constexpr (Features::kHasDiffuseMap) albedo = vec3(sampleTexture(*u.diffuseMap, f.uv, u.filter));
-  vec3 specScale(1.0f);
-  if constexpr (Features::kHasSpecularMap) specScale = vec3(sampleTexture(*u.specularMap, f.uv, u.filter));
-  vec3 mappedTangent(0.0f, 0.0f, 1.0f);
-  vec4 normalTexel(0.0f);
+  Vec3T<T> albedo(T(1));
+  if constexpr (Features::kHasDiffuseMap) albedo = Vec3T<T>(sampleTexture(*u.diffuseMap, f.uv, u.filter));
+  Vec3T<T> specScale(T(1));
+  if constexpr (Features::kHasSpecularMap) specScale = Vec3T<T>(sampleTexture(*u.specularMap, f.uv, u.filter));
+  Vec3T<T> mappedTangent(T(0), T(0), T(1));
+  Vec4T<T> normalTexel(T(0));
   if constexpr (Features::kHasNormalMap) {
     normalTexel = sampleTexture(*u.normalMap, f.uv, u.filter);
-    mappedTangent = safeNormalize(2.0f * vec3(normalTexel) - 1.0f);
+    mappedTangent = safeNormalize(T(2) * Vec3T<T>(normalTexel) - T(1));
   }
 
-  vec3 nl = n;
+  Vec3T<T> nl = n;
   if constexpr (kTangentSpace) {
     nl = mappedTangent;
   } else if constexpr (Features::kHasNormalMap) {
@@ -115,12 +134,12 @@ vec4 shadeFragment(const Fragment& f, const ShadeUniforms& u, ShadeTerms* terms)
     terms->nl = nl;
   }
 
-  vec4 colour(0.0f);
+  Vec4T<T> colour(T(0));
   if constexpr (Features::kView == View::Shaded) {
-    vec3 sum(0.0f);
+    Vec3T<T> sum(T(0));
     for (int i = 0; i < u.lightCount; ++i) {
-      const LightUniform& light = u.lights[static_cast<std::size_t>(i)];
-      vec3 lVec, vVec;
+      const LightUniformT<T>& light = u.lights[static_cast<std::size_t>(i)];
+      Vec3T<T> lVec, vVec;
       if constexpr (kTangentSpace) {
         lVec = f.lightDirTangent[static_cast<std::size_t>(i)];
         vVec = f.eyeDirTangent;
@@ -128,21 +147,21 @@ vec4 shadeFragment(const Fragment& f, const ShadeUniforms& u, ShadeTerms* terms)
         lVec = light.posWorld - f.posWorld;
         vVec = u.eyePosWorld - f.posWorld;
       }
-      const float d = glm::length(light.posWorld - f.posWorld);
-      const vec3 l = safeNormalize(lVec);
-      const vec3 v = safeNormalize(vVec);
-      const float nDotL = glm::dot(nl, l);
-      const vec3 r = 2.0f * nDotL * nl - l;
-      const float rDotV = std::fmax(glm::dot(r, v), 0.0f);
-      const float attenuation =
-          1.0f / std::fmax(light.attenuation.x + light.attenuation.y * d + light.attenuation.z * d * d,
-                           kMinAttenuationDenominator);
-      const vec3 diffuse = u.kd * albedo * std::fmax(nDotL, 0.0f) * light.diffuse;
-      const vec3 specular =
-          nDotL > 0.0f ? u.ks * specScale * phongPow(rDotV, u.shininess) * light.specular : vec3(0.0f);
+      const T d = glm::length(light.posWorld - f.posWorld);
+      const Vec3T<T> l = safeNormalize(lVec);
+      const Vec3T<T> v = safeNormalize(vVec);
+      const T nDotL = glm::dot(nl, l);
+      const Vec3T<T> r = T(2) * nDotL * nl - l;
+      const T rDotV = std::fmax(glm::dot(r, v), T(0));
+      const T attenuation =
+          T(1) / std::fmax(light.attenuation.x + light.attenuation.y * d + light.attenuation.z * d * d,
+                           static_cast<T>(kMinAttenuationDenominator));
+      const Vec3T<T> diffuse = u.kd * albedo * std::fmax(nDotL, T(0)) * light.diffuse;
+      const Vec3T<T> specular =
+          nDotL > T(0) ? u.ks * specScale * phongPow(rDotV, u.shininess) * light.specular : Vec3T<T>(T(0));
       sum += (diffuse + specular) * attenuation;
       if (terms) {
-        LightTerms& lt = terms->lights[static_cast<std::size_t>(i)];
+        LightTermsT<T>& lt = terms->lights[static_cast<std::size_t>(i)];
         lt.lVec = lVec;
         lt.vVec = vVec;
         lt.distance = d;
@@ -156,14 +175,14 @@ vec4 shadeFragment(const Fragment& f, const ShadeUniforms& u, ShadeTerms* terms)
         lt.specular = specular;
       }
     }
-    const vec3 ambient = u.ka * albedo * u.ambient;
-    colour = vec4(ambient + sum, 1.0f);
+    const Vec3T<T> ambient = u.ka * albedo * u.ambient;
+    colour = Vec4T<T>(ambient + sum, T(1));
     if (terms) {
       terms->ambient = ambient;
       terms->lightCount = u.lightCount;
     }
   } else if constexpr (Features::kView == View::Albedo) {
-    colour = vec4(albedo * u.kd, 1.0f);
+    colour = Vec4T<T>(albedo * u.kd, T(1));
   } else if constexpr (Features::kView == View::Normal) {
     colour = vectorAsColour(n);
   } else if constexpr (Features::kView == View::Tangent) {
@@ -173,23 +192,23 @@ vec4 shadeFragment(const Fragment& f, const ShadeUniforms& u, ShadeTerms* terms)
   } else if constexpr (Features::kView == View::MappedNormal) {
     colour = vectorAsColour(nl);
   } else if constexpr (Features::kView == View::Uv) {
-    colour = vec4(f.uv.x - std::floor(f.uv.x), f.uv.y - std::floor(f.uv.y), 0.0f, 1.0f);
+    colour = Vec4T<T>(f.uv.x - std::floor(f.uv.x), f.uv.y - std::floor(f.uv.y), T(0), T(1));
   } else if constexpr (Features::kView == View::Depth) {
-    colour = vec4(f.depth, f.depth, f.depth, 1.0f);
+    colour = Vec4T<T>(f.depth, f.depth, f.depth, T(1));
   } else if constexpr (Features::kView == View::LightTangent || Features::kView == View::EyeTangent) {
     constexpr bool kLight = Features::kView == View::LightTangent;
-    vec3 dirTangent(0.0f);  // no light: (0, 0, 0), shown as grey 0.5
+    Vec3T<T> dirTangent(T(0));  // no light: (0, 0, 0), shown as grey 0.5
     if (!kLight || u.lightCount > 0) {
       if constexpr (kTangentSpace) {
         dirTangent = safeNormalize(kLight ? f.lightDirTangent[0] : f.eyeDirTangent);
       } else {
-        const vec3 w = (kLight ? u.lights[0].posWorld : u.eyePosWorld) - f.posWorld;
-        dirTangent = safeNormalize(vec3(glm::dot(t, w), glm::dot(b, w), glm::dot(n, w)));
+        const Vec3T<T> w = (kLight ? u.lights[0].posWorld : u.eyePosWorld) - f.posWorld;
+        dirTangent = safeNormalize(Vec3T<T>(glm::dot(t, w), glm::dot(b, w), glm::dot(n, w)));
       }
     }
     colour = vectorAsColour(dirTangent);
   }
-  colour = glm::clamp(colour, vec4(0.0f), vec4(1.0f));
+  colour = glm::clamp(colour, Vec4T<T>(T(0)), Vec4T<T>(T(1)));
   if (terms) terms->colour = colour;
   return colour;
 }
@@ -201,7 +220,16 @@ struct ShaderKey {
   View view = View::Shaded;
 };
 
-ShaderKey shaderKeyFor(const ShadeUniforms& uniforms, const RenderSettings& settings);
+template <typename T>
+ShaderKey shaderKeyFor(const ShadeUniformsT<T>& uniforms, const RenderSettings& settings) {
+  ShaderKey key;
+  key.diffuseMap = uniforms.diffuseMap != nullptr;
+  key.normalMap = uniforms.normalMap != nullptr;
+  key.specularMap = uniforms.specularMap != nullptr;
+  key.space = settings.lightingSpace;
+  key.view = settings.view;
+  return key;
+}
 
 // Calls body.template operator()<ShaderFeatures<...>>() for the permutation `key` names: the
 // one runtime branch per draw item, so nothing per pixel is dispatched at run time.

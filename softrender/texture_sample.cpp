@@ -6,8 +6,8 @@ namespace twr {
 
 namespace {
 
-constexpr float kTexelCentre = 0.5f;     // texel centres at +0.5
-constexpr float kByteToUnit = 1.0f / 255.0f;
+constexpr double kTexelCentre = 0.5;  // texel centres at +0.5
+constexpr int kMaxByte = 255;         // texels normalised as c / 255
 
 // floor(s) reduced modulo `size`, exact in double for any finite float s (|s| < 2^128 fits a
 // double's exponent; fmod is exact).
@@ -21,32 +21,35 @@ int wrappedFloor(double s, int size) {
 
 }  // namespace
 
-int nearestTexelIndex(float coord, int size) {
-  // The product is rounded to float as GL computes it, then floored and wrapped exactly.
-  return wrappedFloor(static_cast<double>(coord * static_cast<float>(size)), size);
+template <typename T>
+int nearestTexelIndex(T coord, int size) {
+  // The product is rounded to T (float as GL computes it), then floored and wrapped exactly.
+  return wrappedFloor(static_cast<double>(coord * static_cast<T>(size)), size);
 }
 
-vec4 texelAt(const Texture& texture, int x, int y) {
+template <typename T>
+Vec4T<T> texelAt(const Texture& texture, int x, int y) {
   const std::uint8_t* t = texture.texel(x, y);
-  return vec4(t[0], t[1], t[2], t[3]) * kByteToUnit;
+  return Vec4T<T>(t[0], t[1], t[2], t[3]) * (T(1) / T(kMaxByte));
 }
 
-SampleFootprint sampleFootprint(const Texture& texture, vec2 uv, TextureFilter filter) {
-  SampleFootprint f;
+template <typename T>
+SampleFootprintT<T> sampleFootprint(const Texture& texture, Vec2T<T> uv, TextureFilter filter) {
+  SampleFootprintT<T> f;
   if (filter == TextureFilter::Nearest) {
     f.x0 = nearestTexelIndex(uv.x, texture.width);
     f.y0 = nearestTexelIndex(uv.y, texture.height);
     return f;
   }
-  const float u = uv.x * static_cast<float>(texture.width) - kTexelCentre;
-  const float v = uv.y * static_cast<float>(texture.height) - kTexelCentre;
+  const T u = uv.x * static_cast<T>(texture.width) - static_cast<T>(kTexelCentre);
+  const T v = uv.y * static_cast<T>(texture.height) - static_cast<T>(kTexelCentre);
   if (std::isfinite(u)) {
-    const float fu = std::floor(u);
+    const T fu = std::floor(u);
     f.alpha = u - fu;
     f.x0 = wrappedFloor(fu, texture.width);
   }
   if (std::isfinite(v)) {
-    const float fv = std::floor(v);
+    const T fv = std::floor(v);
     f.beta = v - fv;
     f.y0 = wrappedFloor(fv, texture.height);
   }
@@ -55,22 +58,37 @@ SampleFootprint sampleFootprint(const Texture& texture, vec2 uv, TextureFilter f
   return f;
 }
 
-vec4 sampleNearest(const Texture& texture, vec2 uv) {
-  if (texture.width <= 0 || texture.height <= 0) return vec4(0.0f);
-  const SampleFootprint f = sampleFootprint(texture, uv, TextureFilter::Nearest);
-  return texelAt(texture, f.x0, f.y0);
+template <typename T>
+Vec4T<T> sampleNearest(const Texture& texture, Vec2T<T> uv) {
+  if (texture.width <= 0 || texture.height <= 0) return Vec4T<T>(T(0));
+  const SampleFootprintT<T> f = sampleFootprint(texture, uv, TextureFilter::Nearest);
+  return texelAt<T>(texture, f.x0, f.y0);
 }
 
-vec4 sampleBilinear(const Texture& texture, vec2 uv) {
-  if (texture.width <= 0 || texture.height <= 0) return vec4(0.0f);
-  const SampleFootprint f = sampleFootprint(texture, uv, TextureFilter::Bilinear);
-  const float a = f.alpha, b = f.beta;
-  return (1.0f - a) * (1.0f - b) * texelAt(texture, f.x0, f.y0) + a * (1.0f - b) * texelAt(texture, f.x1, f.y0) +
-         (1.0f - a) * b * texelAt(texture, f.x0, f.y1) + a * b * texelAt(texture, f.x1, f.y1);
+template <typename T>
+Vec4T<T> sampleBilinear(const Texture& texture, Vec2T<T> uv) {
+  if (texture.width <= 0 || texture.height <= 0) return Vec4T<T>(T(0));
+  const SampleFootprintT<T> f = sampleFootprint(texture, uv, TextureFilter::Bilinear);
+  const T a = f.alpha, b = f.beta;
+  return (T(1) - a) * (T(1) - b) * texelAt<T>(texture, f.x0, f.y0) + a * (T(1) - b) * texelAt<T>(texture, f.x1, f.y0) +
+         (T(1) - a) * b * texelAt<T>(texture, f.x0, f.y1) + a * b * texelAt<T>(texture, f.x1, f.y1);
 }
 
-vec4 sampleTexture(const Texture& texture, vec2 uv, TextureFilter filter) {
+template <typename T>
+Vec4T<T> sampleTexture(const Texture& texture, Vec2T<T> uv, TextureFilter filter) {
   return filter == TextureFilter::Nearest ? sampleNearest(texture, uv) : sampleBilinear(texture, uv);
 }
+
+// The two pipelines: float (matches GL) and double (the reference).
+#define TWR_INSTANTIATE_SAMPLING(T)                                                        \
+  template int nearestTexelIndex<T>(T, int);                                               \
+  template Vec4T<T> texelAt<T>(const Texture&, int, int);                                  \
+  template Vec4T<T> sampleNearest<T>(const Texture&, Vec2T<T>);                            \
+  template Vec4T<T> sampleBilinear<T>(const Texture&, Vec2T<T>);                           \
+  template Vec4T<T> sampleTexture<T>(const Texture&, Vec2T<T>, TextureFilter);             \
+  template SampleFootprintT<T> sampleFootprint<T>(const Texture&, Vec2T<T>, TextureFilter);
+TWR_INSTANTIATE_SAMPLING(float)
+TWR_INSTANTIATE_SAMPLING(double)
+#undef TWR_INSTANTIATE_SAMPLING
 
 }  // namespace twr

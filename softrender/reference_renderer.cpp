@@ -1,0 +1,337 @@
+// The reference renderer: the pipeline stages with T = double, N x N sub-pixel passes, box
+// filter. The draw loop is the CPU renderer's (cpu_renderer.cpp), writing unrounded double
+// colours into a sample target instead of the RGBA8 framebuffer.
+#include "softrender/reference_renderer.h"
+
+#include "scene/camera.h"
+#include "scene/errors.h"
+#include "scene/image.h"
+#include "softrender/clip.h"
+#include "softrender/framebuffer.h"
+#include "softrender/interpolate.h"
+#include "softrender/raster.h"
+#include "softrender/setup.h"
+#include "softrender/shade.h"
+#include "softrender/vertex.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <string>
+#include <thread>
+
+namespace twr {
+
+namespace {
+
+using ClipVertexD = ClipVertexT<double>;
+
+// Most worker threads a pass uses (inclusive), as the CPU renderer.
+constexpr int kMaxThreads = 64;
+constexpr double kPi = 3.14159265358979323846;
+const glm::dvec3 kWorldUp{0.0, 1.0, 0.0};
+
+glm::dmat4 localFromNodeTrsDouble(const Node& node) {
+  const glm::dmat4 identity(1.0);
+  const glm::dvec3 rotateRad = glm::dvec3(node.rotateDeg) * (kPi / 180.0);
+  const glm::dmat4 t = glm::translate(identity, glm::dvec3(node.translate));
+  const glm::dmat4 rx = glm::rotate(identity, rotateRad.x, glm::dvec3(1, 0, 0));
+  const glm::dmat4 ry = glm::rotate(identity, rotateRad.y, glm::dvec3(0, 1, 0));
+  const glm::dmat4 rz = glm::rotate(identity, rotateRad.z, glm::dvec3(0, 0, 1));
+  const glm::dmat4 s = glm::scale(identity, glm::dvec3(node.scale));
+  return t * rz * ry * rx * s;
+}
+
+// Same walk and same test for "has a mesh" as flattenScene, so the results line up.
+void flattenNodeDouble(const Scene& scene, const Node& node, const glm::dmat4& worldFromParent,
+                       std::vector<glm::dmat4>& out) {
+  const glm::dmat4 worldFromNode = worldFromParent * localFromNodeTrsDouble(node);
+  if (node.meshIndex >= 0 && node.meshIndex < static_cast<int>(scene.meshes.size())) out.push_back(worldFromNode);
+  for (const Node& child : node.children) flattenNodeDouble(scene, child, worldFromNode, out);
+}
+
+// One sub-pixel sample: offset from the pixel centre, pixels.
+struct SampleOffset {
+  double x = 0.0, y = 0.0;
+};
+
+// The N x N sample offsets, nearest the pixel centre first (ties in row order), so the first
+// pass that covers a pixel gives its depth and triangle id.
+std::vector<SampleOffset> sampleOffsets(int samplesPerAxis) {
+  std::vector<SampleOffset> offsets;
+  for (int j = 0; j < samplesPerAxis; ++j) {
+    for (int i = 0; i < samplesPerAxis; ++i) {
+      offsets.push_back({(i + 0.5) / samplesPerAxis - 0.5, (j + 0.5) / samplesPerAxis - 0.5});
+    }
+  }
+  std::stable_sort(offsets.begin(), offsets.end(), [](const SampleOffset& a, const SampleOffset& b) {
+    return a.x * a.x + a.y * a.y < b.x * b.x + b.y * b.y;
+  });
+  return offsets;
+}
+
+// One pass's buffers, GL order (row 0 at the bottom).
+struct SampleTarget {
+  int width = 0, height = 0;
+  std::vector<glm::dvec3> colour;
+  std::vector<double> depth;
+  std::vector<std::uint32_t> triangleId;
+
+  std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x); }
+};
+
+struct ReferenceDrawState {
+  std::vector<ClipVertexD> vertices;
+  std::uint32_t firstTriangleId = 0;
+  const Mesh* mesh = nullptr;
+  ShaderKey shaderKey;
+  ShadeUniformsT<double> shade;
+  ClipConfig clip;
+  CullMode cull = CullMode::Back;
+  FrontFace frontFace = FrontFace::Ccw;
+  Viewport viewport;
+  bool tangentLighting = false;
+};
+
+struct Band {
+  int rowBegin = 0;  // inclusive
+  int rowEnd = 0;    // exclusive
+  bool countsTriangles = true;
+};
+
+template <typename Features>
+void drawSampleTriangle(const ReferenceDrawState& s, const ClipVertexD& v0, const ClipVertexD& v1,
+                        const ClipVertexD& v2, std::uint32_t triangleId, const Band& band, SampleTarget& target,
+                        RenderStats& stats) {
+  const std::array<WindowVertexT<double>, 3> window{windowFromClip(v0, s.viewport), windowFromClip(v1, s.viewport),
+                                                    windowFromClip(v2, s.viewport)};
+  TriangleSetup setup;
+  if (setupTriangle(window, s.cull, s.frontFace, s.viewport, setup) != SetupResult::Ready) {
+    if (band.countsTriangles) ++stats.trianglesCulled;
+    return;
+  }
+  if (band.countsTriangles) ++stats.trianglesProduced;
+  if (setup.y1 < band.rowBegin || setup.y0 >= band.rowEnd) return;
+  const InterpolationSetupT<double> interpolation = makeInterpolationSetup(window, setup);
+  const int tangentLights = s.tangentLighting ? s.shade.lightCount : 0;
+  rasterizeTriangle(setup, band.rowBegin, band.rowEnd, [&](int py, Span span) {
+    for (int px = span.xBegin; px < span.xEnd; ++px) {
+      const PixelWeightsT<double> weights = pixelWeights(interpolation, px, py);
+      const std::size_t i = target.index(px, py);
+      if (!(weights.depth < target.depth[i])) continue;  // GL_LESS
+      const FragmentT<double> fragment = interpolateFragment(v0, v1, v2, weights, s.tangentLighting, tangentLights);
+      target.colour[i] = glm::dvec3(shadeFragment<Features>(fragment, s.shade, nullptr));
+      target.depth[i] = weights.depth;
+      target.triangleId[i] = triangleId;
+      ++stats.pixelsShaded;
+    }
+  });
+}
+
+template <typename Features>
+void drawItemSamples(const ReferenceDrawState& s, const Band& band, SampleTarget& target, RenderStats& stats) {
+  ClipPolygonT<double> polygon, scratch;
+  for (std::size_t t = 0; t < s.mesh->triangleCount(); ++t) {
+    if (band.countsTriangles) ++stats.trianglesIn;
+    const ClipVertexD& a = s.vertices[s.mesh->indices[3 * t + 0]];
+    const ClipVertexD& b = s.vertices[s.mesh->indices[3 * t + 1]];
+    const ClipVertexD& c = s.vertices[s.mesh->indices[3 * t + 2]];
+    const std::uint32_t planesCut = clipTriangle(a, b, c, s.clip, polygon, scratch);
+    if (planesCut != 0 && band.countsTriangles) ++stats.trianglesClipped;
+    const std::uint32_t triangleId = s.firstTriangleId + static_cast<std::uint32_t>(t);
+    for (int i = 1; i + 1 < polygon.count; ++i) {
+      drawSampleTriangle<Features>(s, polygon.v[0], polygon.v[static_cast<std::size_t>(i)],
+                                   polygon.v[static_cast<std::size_t>(i + 1)], triangleId, band, target, stats);
+    }
+  }
+}
+
+void validateSize(int width, int height) {
+  if (width < 1 || width > kMaxImageSide || height < 1 || height > kMaxImageSide) {
+    throw InputError("reference renderer: image size " + std::to_string(width) + "x" + std::to_string(height) +
+                     " must be within 1.." + std::to_string(kMaxImageSide) + " on each side");
+  }
+}
+
+void validateIndices(const DrawItem& item) {
+  const std::size_t vertexCount = item.mesh->vertices.size();
+  for (std::size_t i = 0; i < item.mesh->indices.size(); ++i) {
+    if (item.mesh->indices[i] >= vertexCount) {
+      throw InputError("node '" + item.nodeName + "': mesh index " + std::to_string(i) + " is " +
+                       std::to_string(item.mesh->indices[i]) + ", expected < vertex count " +
+                       std::to_string(vertexCount));
+    }
+  }
+}
+
+class ReferenceRenderer final : public Renderer {
+ public:
+  explicit ReferenceRenderer(const ReferenceOptions& options) : options_(options) {
+    if (options.samplesPerAxis < 1 || options.samplesPerAxis > kMaxReferenceSamplesPerAxis) {
+      throw InputError("reference renderer: samples per axis " + std::to_string(options.samplesPerAxis) +
+                       " must be within 1.." + std::to_string(kMaxReferenceSamplesPerAxis));
+    }
+  }
+  std::string name() const override { return "reference"; }
+
+  RenderOutput render(const Scene& scene, const RenderSettings& settings, int width, int height) override {
+    validateSize(width, height);
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<DrawItem> items = flattenScene(scene);
+    const std::vector<glm::dmat4> worldFromModel = referenceWorldFromModel(scene);
+    for (const DrawItem& item : items) validateIndices(item);
+    const glm::dmat4 clipFromWorldCentre = referenceClipFromWorld(scene.camera, width, height);
+    const Viewport viewport{width, height};
+    const std::vector<SampleOffset> offsets = sampleOffsets(options_.samplesPerAxis);
+    const std::size_t pixelCount = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    const glm::dvec3 background(scene.output.background);
+
+    std::vector<glm::dvec3> colourSum(pixelCount, glm::dvec3(0.0));
+    std::vector<int> coveredSamples(pixelCount, 0);
+    std::vector<double> firstDepth(pixelCount, static_cast<double>(kClearDepth));
+    std::vector<std::uint32_t> firstTriangleId(pixelCount, kNoTriangle);
+    SampleTarget target;
+    target.width = width;
+    target.height = height;
+    RenderStats stats;
+    std::vector<ReferenceDrawState> states(items.size());
+
+    for (std::size_t pass = 0; pass < offsets.size(); ++pass) {
+      // Moving the scene by -offset puts the pixel centre on the sample: window x shifts by
+      // -offset.x pixels when x_ndc shifts by -2 offset.x / W, i.e. x_clip by -2 offset.x w / W.
+      glm::dmat4 ndcShift(1.0);
+      ndcShift[3][0] = -2.0 * offsets[pass].x / width;
+      ndcShift[3][1] = -2.0 * offsets[pass].y / height;
+      const glm::dmat4 clipFromWorld = ndcShift * clipFromWorldCentre;
+      for (std::size_t k = 0; k < items.size(); ++k) {
+        ReferenceDrawState& s = states[k];
+        const VertexUniformsT<double> vertexUniforms =
+            makeVertexUniforms(worldFromModel[k], clipFromWorld, scene, settings);
+        s.mesh = items[k].mesh;
+        s.firstTriangleId = items[k].firstTriangleId;
+        s.vertices.resize(s.mesh->vertices.size());
+        for (std::size_t i = 0; i < s.vertices.size(); ++i) {
+          s.vertices[i] = runVertexStage(s.mesh->vertices[i], vertexUniforms);
+        }
+        s.shade = makeShadeUniforms<double>(*items[k].material, scene, settings);
+        s.shaderKey = shaderKeyFor(s.shade, settings);
+        s.clip = makeClipConfig(settings.clip, vertexUniforms.userClipPlaneCount, width, height);
+        s.cull = settings.cull;
+        s.frontFace = settings.frontFace;
+        s.viewport = viewport;
+        s.tangentLighting = vertexUniforms.tangentLighting;
+      }
+      target.colour.assign(pixelCount, background);
+      target.depth.assign(pixelCount, static_cast<double>(kClearDepth));
+      target.triangleId.assign(pixelCount, kNoTriangle);
+
+      const bool firstPass = pass == 0;
+      auto drawBand = [&](const Band& band, RenderStats& bandStats) {
+        for (const ReferenceDrawState& s : states) {
+          withShaderFeatures(s.shaderKey,
+                             [&]<typename Features>() { drawItemSamples<Features>(s, band, target, bandStats); });
+        }
+      };
+      const int bandCount = std::clamp(options_.threads, 1, std::min(height, kMaxThreads));
+      std::vector<RenderStats> bandStats(static_cast<std::size_t>(bandCount));
+      std::vector<std::thread> workers;
+      for (int b = 0; b < bandCount; ++b) {
+        const Band band{height * b / bandCount, height * (b + 1) / bandCount, firstPass && b == 0};
+        if (b + 1 == bandCount) {
+          drawBand(band, bandStats[static_cast<std::size_t>(b)]);
+        } else {
+          workers.emplace_back(drawBand, band, std::ref(bandStats[static_cast<std::size_t>(b)]));
+        }
+      }
+      for (std::thread& worker : workers) worker.join();
+      for (const RenderStats& b : bandStats) {
+        stats.trianglesIn += b.trianglesIn;
+        stats.trianglesClipped += b.trianglesClipped;
+        stats.trianglesCulled += b.trianglesCulled;
+        stats.trianglesProduced += b.trianglesProduced;
+        stats.pixelsShaded += b.pixelsShaded;
+      }
+
+      for (std::size_t i = 0; i < pixelCount; ++i) {
+        colourSum[i] += target.colour[i];
+        if (target.triangleId[i] == kNoTriangle) continue;
+        if (coveredSamples[i]++ == 0) {
+          firstDepth[i] = target.depth[i];
+          firstTriangleId[i] = target.triangleId[i];
+        }
+      }
+    }
+
+    RenderOutput out;
+    out.width = width;
+    out.height = height;
+    out.rgba.assign(pixelCount * 4, 0);
+    out.depth.assign(pixelCount, kClearDepth);
+    out.triangleId.assign(pixelCount, kNoTriangle);
+    out.lineMask.assign(pixelCount, 0);
+    const double sampleCount = static_cast<double>(offsets.size());
+    for (int y = 0; y < height; ++y) {
+      for (int x = 0; x < width; ++x) {
+        const std::size_t from = target.index(x, y);
+        const std::size_t to = static_cast<std::size_t>(height - 1 - y) * static_cast<std::size_t>(width) +
+                               static_cast<std::size_t>(x);  // top row first
+        const glm::dvec3 mean = colourSum[from] / sampleCount;
+        out.rgba[to * 4 + 0] = unitToByte(static_cast<float>(mean.r));
+        out.rgba[to * 4 + 1] = unitToByte(static_cast<float>(mean.g));
+        out.rgba[to * 4 + 2] = unitToByte(static_cast<float>(mean.b));
+        out.rgba[to * 4 + 3] = unitToByte(static_cast<float>(coveredSamples[from] / sampleCount));
+        out.depth[to] = static_cast<float>(firstDepth[from]);
+        out.triangleId[to] = firstTriangleId[from];
+      }
+    }
+    stats.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    out.stats = stats;
+    return out;
+  }
+
+ private:
+  ReferenceOptions options_;
+};
+
+}  // namespace
+
+std::vector<glm::dmat4> referenceWorldFromModel(const Scene& scene) {
+  std::vector<glm::dmat4> out;
+  for (const Node& node : scene.nodes) flattenNodeDouble(scene, node, glm::dmat4(1.0), out);
+  return out;
+}
+
+glm::dmat4 referenceClipFromWorld(const Camera& camera, int width, int height) {
+  // The formulas of scene/camera.cpp in double; validateCamera throws the same errors.
+  if (std::string error = validateCamera(camera); !error.empty()) throw InputError("camera: " + error);
+  const glm::dvec3 position(camera.position), target(camera.target);
+  const glm::dvec3 d = glm::normalize(position - target);
+  const glm::dvec3 r = glm::normalize(glm::cross(kWorldUp, d));
+  const glm::dvec3 u = glm::cross(d, r);
+  glm::dmat4 viewFromWorld(1.0);
+  for (int i = 0; i < 3; ++i) {
+    viewFromWorld[i][0] = r[i];
+    viewFromWorld[i][1] = u[i];
+    viewFromWorld[i][2] = d[i];
+  }
+  viewFromWorld[3] = glm::dvec4(-glm::dot(r, position), -glm::dot(u, position), -glm::dot(d, position), 1.0);
+  const double aspect = static_cast<double>(width) / static_cast<double>(height);
+  const double f = 1.0 / std::tan(0.5 * static_cast<double>(camera.fovDeg) * (kPi / 180.0));
+  const double n = camera.near, fa = camera.far;
+  glm::dmat4 clipFromView(0.0);
+  clipFromView[0][0] = f / aspect;
+  clipFromView[1][1] = f;
+  clipFromView[2][2] = (fa + n) / (n - fa);
+  clipFromView[2][3] = -1.0;
+  clipFromView[3][2] = 2.0 * fa * n / (n - fa);
+  return clipFromView * viewFromWorld;
+}
+
+std::unique_ptr<Renderer> makeReferenceRenderer(const ReferenceOptions& options) {
+  return std::make_unique<ReferenceRenderer>(options);
+}
+
+}  // namespace twr
