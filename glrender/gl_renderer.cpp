@@ -34,6 +34,7 @@ struct GlDevice {
   GlProcFunction procAddress;
   GlContextInfo info;
   ProgramCache programs;
+  GlUploadCache uploads;  // meshes and textures kept across renders
   RenderTargets targets;
   std::unique_ptr<ImmediateTbnLines> immediateLines;  // loaded on first use
 
@@ -152,7 +153,8 @@ class GlRenderer final : public Renderer {
     device.targets.clear(scene.output.background);
     device.targets.drawSurfaces();
     const GlClipState clipState = makeGlClipState(settings, scene.camera);
-    const SceneDrawStats drawStats = drawScene(device.programs, scene, settings, clipState, items, clipFromWorld);
+    const SceneDrawStats drawStats =
+        drawScene(device.programs, device.uploads, scene, settings, clipState, items, clipFromWorld);
     checkGlErrors("drawing the scene");
 
     if (settings.tbnLines.enabled) {

@@ -6,76 +6,14 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstddef>
-#include <map>
 
 namespace twr {
 namespace {
-
-// layout(location) of the inputs in shaders/phong.vert.
-constexpr GLuint kPosModelLocation = 0;
-constexpr GLuint kNormalModelLocation = 1;
-constexpr GLuint kTangentModelLocation = 2;
-constexpr GLuint kUvLocation = 3;
 
 // Texture units of the material maps.
 constexpr GLint kDiffuseUnit = 0;
 constexpr GLint kNormalUnit = 1;
 constexpr GLint kSpecularUnit = 2;
-
-struct GlMesh {
-  GlVertexArray vertexArray;
-  GlBuffer vertices;
-  GlBuffer indices;
-  GLsizei indexCount = 0;
-};
-
-// One interleaved VBO of twr::Vertex (position, normal, tangent with sign, uv) + an IBO.
-GlMesh uploadMesh(const Mesh& mesh) {
-  GlMesh out{makeGlVertexArray(), makeGlBuffer(), makeGlBuffer(), static_cast<GLsizei>(mesh.indices.size())};
-  glBindVertexArray(out.vertexArray.id());
-  glBindBuffer(GL_ARRAY_BUFFER, out.vertices.id());
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.vertices.size() * sizeof(Vertex)),
-               mesh.vertices.data(), GL_STATIC_DRAW);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, out.indices.id());
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)),
-               mesh.indices.data(), GL_STATIC_DRAW);
-  constexpr GLsizei kStride = sizeof(Vertex);
-  const auto attribute = [&](GLuint location, GLint components, std::size_t offset) {
-    glEnableVertexAttribArray(location);
-    glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, kStride, reinterpret_cast<const void*>(offset));
-  };
-  attribute(kPosModelLocation, 3, offsetof(Vertex, posModel));
-  attribute(kNormalModelLocation, 3, offsetof(Vertex, nModel));
-  attribute(kTangentModelLocation, 4, offsetof(Vertex, tangentModel));
-  attribute(kUvLocation, 2, offsetof(Vertex, uv));
-  glBindVertexArray(0);
-  return out;
-}
-
-// RGBA8, rows bottom first as stored, GL_REPEAT, no mipmaps, no sRGB.
-GlTexture uploadTexture(const Texture& texture, TextureFilter filter) {
-  const std::size_t expectedBytes =
-      static_cast<std::size_t>(texture.width) * static_cast<std::size_t>(texture.height) * 4;
-  if (texture.width <= 0 || texture.height <= 0 || texture.rgba.size() != expectedBytes) {
-    throw InputError("GL: texture '" + texture.path + "' has " + std::to_string(texture.rgba.size()) +
-                     " bytes for " + std::to_string(texture.width) + " x " + std::to_string(texture.height) +
-                     " RGBA8 texels (expected width * height * 4, both sides > 0)");
-  }
-  GlTexture out = makeGlTexture();
-  glBindTexture(GL_TEXTURE_2D, out.id());
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, texture.width, texture.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-               texture.rgba.data());
-  const GLint glFilter = filter == TextureFilter::Nearest ? GL_NEAREST : GL_LINEAR;
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, glFilter);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, glFilter);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-  return out;
-}
 
 // A map without texels is treated as absent, as the CPU does (softrender/shade.cpp).
 bool usableMap(const std::shared_ptr<const Texture>& map) {
@@ -174,23 +112,19 @@ std::vector<std::string> phongDefines(const Material& material, const RenderSett
   return defines;
 }
 
-SceneDrawStats drawScene(ProgramCache& programs, const Scene& scene, const RenderSettings& settings,
-                         const GlClipState& clipState, const std::vector<DrawItem>& items, const mat4& clipFromWorld) {
+SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const Scene& scene,
+                         const RenderSettings& settings, const GlClipState& clipState,
+                         const std::vector<DrawItem>& items, const mat4& clipFromWorld) {
   SceneDrawStats stats;
   applyPipelineState(settings);
   applyGlClipState(clipState);
 
-  // Shared textures upload once per render.
-  std::map<const Texture*, GlTexture> textures;
+  uploads.beginFrame();
   const auto bindMap = [&](const std::shared_ptr<const Texture>& map, GLint unit) {
     if (!usableMap(map)) return;
     // Select the unit first: uploading binds the new texture to the active unit.
     glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
-    auto found = textures.find(map.get());
-    if (found == textures.end()) {
-      found = textures.emplace(map.get(), uploadTexture(*map, settings.textureFilter)).first;
-    }
-    glBindTexture(GL_TEXTURE_2D, found->second.id());
+    uploads.texture(map, settings.textureFilter);
   };
 
   const GlQuery samples = makeGlQuery();
@@ -208,7 +142,7 @@ SceneDrawStats drawScene(ProgramCache& programs, const Scene& scene, const Rende
     bindMap(material.diffuseMap, kDiffuseUnit);
     bindMap(material.normalMap, kNormalUnit);
     bindMap(material.specularMap, kSpecularUnit);
-    const GlMesh mesh = uploadMesh(*item.mesh);
+    const GlMesh& mesh = uploads.mesh(*item.mesh);
     glBindVertexArray(mesh.vertexArray.id());
     glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
     glBindVertexArray(0);
@@ -218,6 +152,7 @@ SceneDrawStats drawScene(ProgramCache& programs, const Scene& scene, const Rende
   glGetQueryObjectui64v(samples.id(), GL_QUERY_RESULT, &passed);
   stats.samplesPassed = passed;
   glActiveTexture(GL_TEXTURE0);
+  uploads.endFrame();
   return stats;
 }
 

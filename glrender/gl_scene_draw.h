@@ -1,10 +1,11 @@
-// Draws the flattened scene with the phong program permutations: uploads meshes to
-// indexed VBOs and textures, sets the fixed pipeline state from the settings, issues one
-// glDrawElements per draw item. Everything uploaded here is freed when the call returns.
+// Draws the flattened scene with the phong program permutations: meshes and textures come
+// from the context's upload cache (uploaded once, kept while the scene uses them), the fixed
+// pipeline state from the settings, and one glDrawElements per draw item.
 #pragma once
 
 #include "glrender/gl_clip_state.h"
 #include "glrender/gl_program.h"
+#include "glrender/gl_upload_cache.h"
 #include "scene/renderer.h"
 
 #include <cstdint>
@@ -21,8 +22,9 @@ struct SceneDrawStats {
 std::vector<std::string> phongDefines(const Material& material, const RenderSettings& settings);
 
 // Draws `items` into the bound framebuffer's current draw buffers. Throws InputError for
-// textures it cannot upload.
-SceneDrawStats drawScene(ProgramCache& programs, const Scene& scene, const RenderSettings& settings,
-                         const GlClipState& clipState, const std::vector<DrawItem>& items, const mat4& clipFromWorld);
+// textures it cannot upload. Calls uploads.beginFrame() and, when it returns, endFrame().
+SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const Scene& scene,
+                         const RenderSettings& settings, const GlClipState& clipState,
+                         const std::vector<DrawItem>& items, const mat4& clipFromWorld);
 
 }  // namespace twr
