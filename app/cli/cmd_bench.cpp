@@ -1,0 +1,396 @@
+// `twinraster bench SCENE [--frames N] [--width W --height H] [--json] [--threads T] [--gl-precise]`:
+// times the CPU pipeline and llvmpipe in one process, frame by frame alternating, after a
+// warm-up, and reports the median and spread of each and their ratio. Each time is the wall
+// time of one Renderer::render() call: for GL that includes glFinish and the read-back into
+// the RenderOutput, for the CPU the same buffers; neither includes writing a PNG.
+//
+// Threads: llvmpipe gets as many rasterizer threads as the CPU pipeline gets workers
+// (LP_NUM_THREADS, which llvmpipe reads when the first context is created, so it is set
+// before the first GL render). The default is std::thread::hardware_concurrency(), the
+// online CPUs, which is also llvmpipe's own default, so `bench` without --threads times both
+// as a user gets them.
+//
+// Sampling: llvmpipe in its default (fast) texture sampling, what a user gets. It reads
+// GALLIVM_PERF once per process, so --gl-precise re-runs this command in a child process of
+// /proc/self/exe that times only the precise mode, and merges its figures (gl_precise_*).
+#include "app/cli/commands.h"
+#include "app/cli/common.h"
+#include "glrender/gl_renderer.h"
+#include "scene/errors.h"
+#include "scene/scene.h"
+#include "softrender/cpu_renderer.h"
+
+#include <nlohmann/json.hpp>
+
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+extern char** environ;
+
+namespace twr::cli {
+namespace {
+
+using Json = nlohmann::ordered_json;
+using Clock = std::chrono::steady_clock;
+
+// Most worker threads bench accepts (inclusive); the CPU renderer caps at the same count.
+constexpr int kMaxBenchThreads = 64;
+// Most timed frames (inclusive) and warm-up frames (inclusive).
+constexpr int kMaxFrames = 100000;
+constexpr int kMaxWarmup = 1000;
+// Progress lines on stderr start once a run has taken this long (seconds), one per interval.
+constexpr double kProgressAfterSeconds = 2.0;
+constexpr double kProgressIntervalSeconds = 1.0;
+// The environment variable llvmpipe reads its rasterizer thread count from.
+constexpr const char* kLlvmpipeThreadsVariable = "LP_NUM_THREADS";
+
+struct BenchArgs {
+  RenderRequest request;
+  int frames = 20;
+  int warmup = 2;
+  std::optional<int> threads;  // default: hardware_concurrency()
+  bool json = false;
+  bool glPrecise = false;
+  bool preciseChild = false;  // internal: time GL in precise sampling only, print JSON (see --gl-precise)
+};
+
+// Summary of one backend's frame times, milliseconds.
+struct Timing {
+  std::vector<double> frames;
+  double median = 0.0, min = 0.0, max = 0.0;
+  double q1 = 0.0, q3 = 0.0;  // quartiles: the spread is q3 - q1 (interquartile range)
+};
+
+// Linear interpolation between order statistics (the usual "type 7" quantile).
+double quantile(const std::vector<double>& sorted, double q) {
+  const double position = q * static_cast<double>(sorted.size() - 1);
+  const std::size_t below = static_cast<std::size_t>(position);
+  const std::size_t above = std::min(below + 1, sorted.size() - 1);
+  const double fraction = position - static_cast<double>(below);
+  return sorted[below] + (sorted[above] - sorted[below]) * fraction;
+}
+
+Timing summarise(std::vector<double> frames) {
+  Timing t;
+  t.frames = frames;
+  std::sort(frames.begin(), frames.end());
+  t.min = frames.front();
+  t.max = frames.back();
+  t.median = quantile(frames, 0.5);
+  t.q1 = quantile(frames, 0.25);
+  t.q3 = quantile(frames, 0.75);
+  return t;
+}
+
+void addTiming(Json& json, const std::string& prefix, const Timing& t) {
+  json[prefix + "_ms_median"] = t.median;
+  json[prefix + "_ms_min"] = t.min;
+  json[prefix + "_ms_max"] = t.max;
+  json[prefix + "_ms_q1"] = t.q1;
+  json[prefix + "_ms_q3"] = t.q3;
+  json[prefix + "_ms_frames"] = t.frames;
+}
+
+Timing timingFromJson(const Json& json, const std::string& prefix) {
+  Timing t;
+  t.median = json.at(prefix + "_ms_median").get<double>();
+  t.min = json.at(prefix + "_ms_min").get<double>();
+  t.max = json.at(prefix + "_ms_max").get<double>();
+  t.q1 = json.at(prefix + "_ms_q1").get<double>();
+  t.q3 = json.at(prefix + "_ms_q3").get<double>();
+  t.frames = json.at(prefix + "_ms_frames").get<std::vector<double>>();
+  return t;
+}
+
+double renderMs(Renderer& renderer, const Scene& scene, int width, int height, RenderOutput& out) {
+  const auto start = Clock::now();
+  out = renderer.render(scene, scene.settings, width, height);
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+std::uint64_t coveredPixels(const RenderOutput& out) {
+  std::uint64_t covered = 0;
+  for (std::size_t i = 3; i < out.rgba.size(); i += 4) covered += out.rgba[i] != 0 ? 1 : 0;
+  return covered;
+}
+
+int defaultThreads() {
+  const unsigned online = std::thread::hardware_concurrency();  // 0 when unknown
+  return std::clamp(static_cast<int>(online), 1, kMaxBenchThreads);
+}
+
+// Sets LP_NUM_THREADS unless the environment already asks for the same count; returns a note
+// for the report when it replaced a different value.
+std::string setLlvmpipeThreads(int threads) {
+  const std::string wanted = std::to_string(threads);
+  const char* existing = std::getenv(kLlvmpipeThreadsVariable);
+  std::string note;
+  if (existing && wanted != existing) {
+    note = std::string(kLlvmpipeThreadsVariable) + " was " + existing + ", set to " + wanted +
+           " to match the CPU pipeline";
+  }
+  setenv(kLlvmpipeThreadsVariable, wanted.c_str(), 1);
+  return note;
+}
+
+// Prints "bench: frame i/N ..." on stderr once a run is long, at most once per interval.
+class Progress {
+ public:
+  explicit Progress(int total) : total_(total), start_(Clock::now()), last_(start_) {}
+  void frame(int done, const char* what) {
+    const auto now = Clock::now();
+    const double sinceStart = std::chrono::duration<double>(now - start_).count();
+    const double sinceLast = std::chrono::duration<double>(now - last_).count();
+    if (sinceStart < kProgressAfterSeconds || (printed_ && sinceLast < kProgressIntervalSeconds)) return;
+    std::cerr << "bench: " << what << " frame " << done << "/" << total_ << " (" << std::fixed << std::setprecision(1)
+              << sinceStart << " s)\n";
+    last_ = now;
+    printed_ = true;
+  }
+
+ private:
+  int total_;
+  Clock::time_point start_, last_;
+  bool printed_ = false;
+};
+
+// The arguments that make a child `bench` see the same scene, size, settings and threads.
+std::vector<std::string> childArguments(const BenchArgs& args, int width, int height, int threads) {
+  const RenderRequest& r = args.request;
+  std::vector<std::string> argv = {"twinraster", "bench", r.scenePath,
+                                   "--width", std::to_string(width),
+                                   "--height", std::to_string(height),
+                                   "--frames", std::to_string(args.frames),
+                                   "--warmup", std::to_string(args.warmup),
+                                   "--threads", std::to_string(threads),
+                                   "--gl-precise-child"};
+  const std::array<std::pair<const char*, const std::string*>, 6> overrides = {{
+      {"--view", &r.view},
+      {"--cull", &r.cull},
+      {"--front-face", &r.frontFace},
+      {"--lighting-space", &r.lightingSpace},
+      {"--tangent-transform", &r.tangentTransform},
+      {"--filter", &r.textureFilter},
+  }};
+  for (const auto& [option, value] : overrides) {
+    if (value->empty()) continue;
+    argv.push_back(option);
+    argv.push_back(*value);
+  }
+  return argv;
+}
+
+// Runs /proc/self/exe with `arguments`, its stdout captured (stderr shared, so its progress
+// shows); returns the stdout text. Throws InputError when it cannot start or fails.
+std::string runSelf(const std::vector<std::string>& arguments) {
+  std::array<int, 2> pipeEnds{};
+  if (pipe(pipeEnds.data()) != 0) throw InputError("bench --gl-precise: cannot create a pipe for the child process");
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addclose(&actions, pipeEnds[0]);
+  posix_spawn_file_actions_adddup2(&actions, pipeEnds[1], STDOUT_FILENO);
+  posix_spawn_file_actions_addclose(&actions, pipeEnds[1]);
+  std::vector<char*> argv;
+  for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  pid_t child = 0;
+  const int spawned = posix_spawn(&child, "/proc/self/exe", &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  close(pipeEnds[1]);
+  if (spawned != 0) {
+    close(pipeEnds[0]);
+    throw InputError("bench --gl-precise: cannot start /proc/self/exe (error " + std::to_string(spawned) + ")");
+  }
+  std::string text;
+  std::array<char, 4096> buffer{};
+  for (;;) {
+    const ssize_t n = read(pipeEnds[0], buffer.data(), buffer.size());
+    if (n <= 0) break;
+    text.append(buffer.data(), static_cast<std::size_t>(n));
+  }
+  close(pipeEnds[0]);
+  int status = 0;
+  waitpid(child, &status, 0);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    throw InputError("bench --gl-precise: the child process timing llvmpipe's precise sampling failed (status " +
+                     std::to_string(status) + ")");
+  }
+  return text;
+}
+
+std::string fixed(double v, int digits) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(digits) << v;
+  return out.str();
+}
+
+void printTimingLine(const char* label, const Timing& t) {
+  std::cout << "  " << std::left << std::setw(16) << label << std::right << " median " << std::setw(9)
+            << fixed(t.median, 2) << " ms   min " << std::setw(9) << fixed(t.min, 2) << "   max " << std::setw(9)
+            << fixed(t.max, 2) << "   iqr " << std::setw(7) << fixed(t.q3 - t.q1, 2) << "\n";
+}
+
+void printText(const Json& j, const Timing& cpu, const Timing& gl, const std::optional<Timing>& glPrecise) {
+  std::cout << "bench " << j["scene"].get<std::string>() << " at " << j["width"] << "x" << j["height"] << ": "
+            << j["triangles"] << " triangles, " << j["covered_pixels"] << " covered pixels, " << j["threads"]
+            << " threads, " << j["frames"] << " frames after " << j["warmup"] << " warm-up\n";
+  printTimingLine("cpu", cpu);
+  printTimingLine("gl (fast)", gl);
+  if (glPrecise) printTimingLine("gl (precise)", *glPrecise);
+  std::cout << "  ratio cpu/gl " << fixed(j["ratio_cpu_over_gl"].get<double>(), 3);
+  if (glPrecise) std::cout << ", cpu/gl precise " << fixed(j["ratio_cpu_over_gl_precise"].get<double>(), 3);
+  std::cout << " (medians); cpu " << fixed(j["cpu_ns_per_covered_pixel"].get<double>(), 1)
+            << " ns per covered pixel\n";
+  std::cout << "  gl: " << j["gl_renderer"].get<std::string>() << ", " << j["gl_version"].get<std::string>() << "\n";
+  if (j.contains("note")) std::cout << "  note: " << j["note"].get<std::string>() << "\n";
+}
+
+void validate(const BenchArgs& args) {
+  if (args.frames < 1 || args.frames > kMaxFrames) {
+    throw InputError("bench --frames: expected an integer in [1, " + std::to_string(kMaxFrames) + "], got " +
+                     std::to_string(args.frames));
+  }
+  if (args.warmup < 0 || args.warmup > kMaxWarmup) {
+    throw InputError("bench --warmup: expected an integer in [0, " + std::to_string(kMaxWarmup) + "], got " +
+                     std::to_string(args.warmup));
+  }
+  if (args.threads && (*args.threads < 1 || *args.threads > kMaxBenchThreads)) {
+    throw InputError("bench --threads: expected an integer in [1, " + std::to_string(kMaxBenchThreads) + "], got " +
+                     std::to_string(*args.threads));
+  }
+}
+
+// The child of --gl-precise: GL only, precise sampling, JSON on stdout.
+void runPreciseChild(const BenchArgs& args, const Scene& scene, int width, int height) {
+  GlOptions options;
+  options.fastSampling = false;
+  const std::unique_ptr<Renderer> gl = makeGlRenderer(options);
+  RenderOutput out;
+  for (int i = 0; i < args.warmup; ++i) renderMs(*gl, scene, width, height, out);
+  std::vector<double> ms;
+  Progress progress(args.frames);
+  for (int i = 0; i < args.frames; ++i) {
+    ms.push_back(renderMs(*gl, scene, width, height, out));
+    progress.frame(i + 1, "gl precise");
+  }
+  Json json;
+  addTiming(json, "gl_precise", summarise(ms));
+  json["gl_sampling"] = glSamplingMode();
+  std::cout << json.dump() << "\n";
+}
+
+void runBench(const BenchArgs& args) {
+  validate(args);
+  const Scene scene = loadRequestedScene(args.request);
+  const int width = requestedWidth(args.request, scene);
+  const int height = requestedHeight(args.request, scene);
+  const int threads = args.threads.value_or(defaultThreads());
+  const std::string note = setLlvmpipeThreads(threads);
+  if (args.preciseChild) {
+    runPreciseChild(args, scene, width, height);
+    return;
+  }
+
+  GlOptions glOptions;
+  glOptions.verbose = args.request.verbose;
+  glOptions.fastSampling = true;  // llvmpipe's default, what a user gets
+  const std::unique_ptr<Renderer> gl = makeGlRenderer(glOptions);
+  CpuOptions cpuOptions;
+  cpuOptions.threads = threads;
+  const std::unique_ptr<Renderer> cpu = makeCpuRenderer(cpuOptions);
+
+  RenderOutput cpuOut, glOut;
+  for (int i = 0; i < args.warmup; ++i) {
+    renderMs(*cpu, scene, width, height, cpuOut);
+    renderMs(*gl, scene, width, height, glOut);
+  }
+  std::vector<double> cpuMs, glMs;
+  Progress progress(args.frames);
+  for (int i = 0; i < args.frames; ++i) {
+    cpuMs.push_back(renderMs(*cpu, scene, width, height, cpuOut));
+    glMs.push_back(renderMs(*gl, scene, width, height, glOut));
+    progress.frame(i + 1, "cpu + gl");
+  }
+  const Timing cpuTiming = summarise(cpuMs);
+  const Timing glTiming = summarise(glMs);
+  std::optional<Timing> glPreciseTiming;
+  if (args.glPrecise) {
+    const std::string text = runSelf(childArguments(args, width, height, threads));
+    try {
+      glPreciseTiming = timingFromJson(Json::parse(text), "gl_precise");
+    } catch (const nlohmann::json::exception& e) {
+      throw InputError(std::string("bench --gl-precise: unexpected output from the child process: ") + e.what());
+    }
+  }
+
+  const std::uint64_t covered = coveredPixels(cpuOut);
+  Json json;
+  json["scene"] = args.request.scenePath;
+  json["width"] = width;
+  json["height"] = height;
+  json["frames"] = args.frames;
+  json["warmup"] = args.warmup;
+  json["threads"] = threads;
+  json["threads_source"] = args.threads ? "--threads" : "default: hardware_concurrency(), as llvmpipe";
+  json["triangles"] = countTriangles(scene);
+  json["covered_pixels"] = covered;
+  json["covered_pixels_gl"] = coveredPixels(glOut);
+  addTiming(json, "cpu", cpuTiming);
+  addTiming(json, "gl", glTiming);
+  json["ratio_cpu_over_gl"] = cpuTiming.median / glTiming.median;
+  json["cpu_ns_per_covered_pixel"] = covered > 0 ? cpuTiming.median * 1e6 / static_cast<double>(covered) : 0.0;
+  json["gl_ns_per_covered_pixel"] = covered > 0 ? glTiming.median * 1e6 / static_cast<double>(covered) : 0.0;
+  json["gl_sampling"] = glSamplingMode();
+  json["gl_renderer"] = glRendererString();
+  json["gl_version"] = glVersionString();
+  if (glPreciseTiming) {
+    addTiming(json, "gl_precise", *glPreciseTiming);
+    json["ratio_cpu_over_gl_precise"] = cpuTiming.median / glPreciseTiming->median;
+  }
+  if (!note.empty()) json["note"] = note;
+
+  if (args.json) {
+    std::cout << json.dump(2) << "\n";
+  } else {
+    printText(json, cpuTiming, glTiming, glPreciseTiming);
+  }
+}
+
+const bool registered = registerCommand(50, [](CLI::App& app) {
+  auto args = std::make_shared<BenchArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "bench",
+      "Time the CPU pipeline against llvmpipe in one process: frames alternate between the backends after a "
+      "warm-up; prints the median and spread of each and ratio_cpu_over_gl. Both use the same thread count; "
+      "llvmpipe samples textures in its default (fast) mode.");
+  addRenderOptions(*cmd, args->request);
+  cmd->add_option("--frames,-n", args->frames, "Timed frames per backend")->capture_default_str();
+  cmd->add_option("--warmup", args->warmup, "Untimed frames per backend first (shader compilation, caches)")
+      ->capture_default_str();
+  cmd->add_option("--threads,-t", args->threads,
+                  "Worker threads of the CPU pipeline and llvmpipe's LP_NUM_THREADS (default: the online CPUs, "
+                  "llvmpipe's own default)");
+  cmd->add_flag("--json", args->json, "Print one JSON object on stdout instead of the summary");
+  cmd->add_flag("--gl-precise", args->glPrecise,
+                "Also time llvmpipe's precise sampling (in a child process: llvmpipe fixes the mode per process)");
+  cmd->add_flag("--gl-precise-child", args->preciseChild, "internal: the child process of --gl-precise")->group("");
+  cmd->callback([args] { runBench(*args); });
+});
+
+}  // namespace
+}  // namespace twr::cli
