@@ -24,6 +24,12 @@ namespace {
 
 // How long the loop sleeps while the window is minimised (zero-size framebuffer), seconds.
 constexpr double kMinimisedWaitSeconds = 0.1;
+// When nothing changes on screen the loop sleeps until input or this long, seconds, so an
+// idle window costs no CPU the worker could use; frame ages still tick on screen.
+constexpr double kIdleWaitSeconds = 0.1;
+// Otherwise at most one frame per this many seconds without input (60 Hz): without vsync
+// (Xvfb, some drivers) the loop would spin and take a core from the CPU renderer.
+constexpr double kBusyFrameSeconds = 1.0 / 60.0;
 // While --frames waits for the CPU frame, how long each wait for the worker lasts.
 constexpr std::chrono::milliseconds kSettlePoll{10};
 // Text sizes at content scale 1, pixels.
@@ -300,9 +306,11 @@ int GuiApp::run() {
   int framesDrawn = 0;
   std::optional<Clock::time_point> settleStart;
   int exitCode = kExitOk;
+  bool idle = false;
   while (!glfwWindowShouldClose(window_->window())) {
     recreateWindowIfNeeded();
-    glfwPollEvents();
+    if (options_.frames > 0) glfwPollEvents();  // scripted runs go as fast as they can
+    else glfwWaitEventsTimeout(idle ? kIdleWaitSeconds : kBusyFrameSeconds);
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_->window(), &width, &height);
     if (width <= 0 || height <= 0) {
@@ -345,6 +353,8 @@ int GuiApp::run() {
     glfwSwapBuffers(window_->window());
     ++framesDrawn;
     if (finalFrame) break;
+    idle = prefs_.viewMode != ViewMode::Flicker && dragMode_ == DragMode::None &&
+           !ImGui::IsAnyItemActive() && settled();
     if (limitReached) worker_.waitIdle(kSettlePoll);
   }
   return exitCode;

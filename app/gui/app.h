@@ -112,6 +112,7 @@ class GuiApp {
   void drawStatsPanel();
   void drawInspectorPanel();
   void drawTraceSection(const PixelTrace& trace);
+  void drawViewProbeSection();
 
   GuiOptions options_;
   PrefsPaths paths_;

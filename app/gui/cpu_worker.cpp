@@ -118,9 +118,9 @@ void CpuWorker::run() {
         frame.error = e.what();
       }
     }
+    frame.finishedAt = Clock::now();  // the frame's age counts from here, not from the probe's end
     if (job.probePixel && frame.error.empty()) frame.probe = probe(*renderer, job);
-    frame.finishedAt = Clock::now();
-    frame.wallMilliseconds = std::chrono::duration<double, std::milli>(frame.finishedAt - start).count();
+    frame.wallMilliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     {
       const std::lock_guard lock(mutex_);
       finished_.push_back(std::move(frame));

@@ -46,8 +46,8 @@ struct CpuFrame {
   std::shared_ptr<const RenderOutput> output;  // null when the render threw or was not asked for
   std::string error;                           // what the render threw, else empty
   std::optional<CpuProbe> probe;
-  Clock::time_point finishedAt{};
-  double wallMilliseconds = 0.0;  // job start to finish on the worker, probe included
+  Clock::time_point finishedAt{};  // when the render (not the probe) finished
+  double wallMilliseconds = 0.0;    // job start to finish on the worker, probe included
 };
 
 class CpuWorker {

@@ -43,7 +43,8 @@ int main(int argc, char** argv) {
       "with OpenGL 3.3 in the window's own context, and shows them side by side, split, flickering or diffed, "
       "with panels for every render setting, the scene, the camera, stats and a pixel inspector.\n"
       "Remembers its view settings in $XDG_CONFIG_HOME/twinraster (else ~/.config/twinraster): gui.json and "
-      "imgui.ini.\nExit codes: 0 ok, 2 bad command line, no display or no usable OpenGL 3.3, or the screenshot "
+      "imgui.ini.\nIn the window: drag to orbit, right-drag to pan, wheel to zoom, click to pin a pixel, F12 to save the "
+      "whole window (the Screenshot button saves the view and both images).\nExit codes: 0 ok, 2 bad command line, no display or no usable OpenGL 3.3, or the screenshot "
       "could not be written. A scene file that does not load is shown as an error in the window (exit 0)."};
   app.add_option("SCENE", options.scenePath,
                  "Scene file (JSON, docs/scenes.md). Default: the last scene opened, else "
@@ -52,12 +53,15 @@ int main(int argc, char** argv) {
   app.add_option("--frames", options.frames,
                  "Quit after N frames (for tests and scripts); the last frame waits until the CPU frame, the diff "
                  "and any pinned pixel's probes for the final settings are done (at most 120 s)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::PositiveNumber)
+      ->type_name("N");
   app.add_option("--screenshot", options.screenshotPath,
-                 "With --frames: save the whole window as this PNG on the last frame");
+                 "With --frames: save the whole window as this PNG on the last frame")
+      ->type_name("FILE.png");
   app.add_option("--view-mode", viewMode, "Start in this view: " + gui::allViewModeNames())
       ->check(CLI::IsMember({"cpu", "gl", "side", "split", "diff", "flicker"}));
-  app.add_option("--pin", pin, "Pin the pixel X,Y (from the top-left, at the render size) in the inspector");
+  app.add_option("--pin", pin, "Pin the pixel X,Y (from the top-left, at the render size) in the inspector")
+      ->type_name("X,Y");
   app.add_option("--window-size", [&options](const CLI::results_t& values) {
                    const bool ok = CLI::detail::lexical_cast(values[0], options.width) &&
                                    CLI::detail::lexical_cast(values[1], options.height) && options.width > 0 &&
@@ -65,7 +69,8 @@ int main(int argc, char** argv) {
                    return ok;
                  },
                  "Window size W H in screen coordinates (default 1280 800)")
-      ->expected(2);
+      ->expected(2)
+      ->type_name("W H");
   app.add_flag("--gl-fast-sampling", options.glFastSampling,
                "Let llvmpipe use its fast 8-bit bilinear path (default: the precise mode, as `twinraster compare`)");
 

@@ -110,7 +110,18 @@ void GuiApp::drawInspectorPanel() {
                 std::string(toString(diff_.result->pixels.pixelClass[i])).c_str());
   }
 
-  // Every debug view at this pixel.
+  if (!pin_.cpu) {
+    hintText("CPU trace: waiting for the worker...");
+  } else if (!pin_.cpu->traceError.empty()) {
+    errorText("CPU trace: " + pin_.cpu->traceError);
+  } else if (pin_.cpu->trace) {
+    drawTraceSection(*pin_.cpu->trace);
+  }
+  drawViewProbeSection();
+}
+
+// Every debug view at the pinned pixel, from both backends.
+void GuiApp::drawViewProbeSection() {
   const bool cpuCurrent = pin_.cpu && pin_.cpuRevision == doc_.revision;
   const std::size_t glRead =
       static_cast<std::size_t>(std::count_if(pin_.gl.begin(), pin_.gl.end(), [](const auto& s) { return s.has_value(); }));
@@ -150,15 +161,6 @@ void GuiApp::drawInspectorPanel() {
     }
   }
 
-  if (!pin_.cpu) {
-    hintText("CPU trace: waiting for the worker...");
-    return;
-  }
-  if (!pin_.cpu->traceError.empty()) {
-    errorText("CPU trace: " + pin_.cpu->traceError);
-    return;
-  }
-  if (pin_.cpu->trace) drawTraceSection(*pin_.cpu->trace);
 }
 
 void GuiApp::drawTraceSection(const PixelTrace& trace) {

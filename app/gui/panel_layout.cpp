@@ -12,6 +12,8 @@ namespace {
 constexpr float kLeftPanelDefault = 390.0f;
 constexpr float kLeftPanelMin = 280.0f;
 constexpr float kBottomPanelDefault = 270.0f;
+// ...or this share of the window height when that is more (fraction).
+constexpr float kBottomPanelDefaultShare = 0.38f;
 constexpr float kBottomPanelMin = 120.0f;
 // Largest share of the window either side panel may take (fraction, inclusive), so the
 // image keeps most of a small window.
@@ -39,10 +41,11 @@ void GuiApp::drawLayout() {
   const float rightWidth = std::max(1.0f, size.x - leftPanelWidth_);
   const float bottomMin = std::min(kBottomPanelMin * uiScale_, size.y);
   const float bottomMax = std::max(bottomMin, size.y * kMaxPanelShare);
-  if (bottomPanelHeight_ <= 0.0f) bottomPanelHeight_ = kBottomPanelDefault * uiScale_;
+  const float bottomDefault = std::max(kBottomPanelDefault * uiScale_, kBottomPanelDefaultShare * size.y);
+  if (bottomPanelHeight_ <= 0.0f) bottomPanelHeight_ = bottomDefault;
   bottomPanelHeight_ = std::clamp(bottomPanelHeight_, bottomMin, bottomMax);
   ImGui::SetNextWindowPos(ImVec2(rightX, origin.y + size.y - bottomPanelHeight_), ImGuiCond_Always);
-  ImGui::SetNextWindowSize(ImVec2(rightWidth, kBottomPanelDefault * uiScale_), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(rightWidth, bottomDefault), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSizeConstraints(ImVec2(rightWidth, bottomMin), ImVec2(rightWidth, bottomMax));
   if (ImGui::Begin("Stats and pixel inspector", nullptr, kDockedFlags)) {
     if (ImGui::BeginTable("##bottom", 2, ImGuiTableFlags_Resizable | ImGuiTableFlags_BordersInnerV)) {

@@ -68,13 +68,13 @@ fs::path testDir() {
   return dir;
 }
 
-// Runs the GUI with `args` under its own X server, with XDG_CONFIG_HOME in the test's folder.
-RunResult runGui(const std::string& args, bool underXvfb = true) {
+// Runs `prefix` XDG_CONFIG_HOME=<the test's folder> [xvfb-run ...] twinraster-gui `args`.
+RunResult runGui(const std::string& args, bool underXvfb = true, const std::string& prefix = "") {
   RunResult result;
   result.dir = testDir();
   fs::create_directories(result.dir);
   const fs::path out = result.dir / "out.txt", err = result.dir / "err.txt";
-  std::string command = "XDG_CONFIG_HOME=\"" + (result.dir / "config").string() + "\" ";
+  std::string command = prefix + "XDG_CONFIG_HOME=\"" + (result.dir / "config").string() + "\" ";
   if (underXvfb) command += "xvfb-run -a -s \"-screen 0 " + std::to_string(kWindowWidth) + "x" +
                             std::to_string(kWindowHeight) + "x24\" ";
   command += "\"" + guiBinary().string() + "\" " + args + " >\"" + out.string() + "\" 2>\"" + err.string() + "\"";
@@ -228,6 +228,13 @@ TEST(GuiSmoke, HelpAndBadOptionsNeedNoDisplay) {
   EXPECT_EQ(runGui("--view-mode sideways", false).exitCode, 2);
   EXPECT_EQ(runGui("--screenshot x.png", false).exitCode, 2) << "--screenshot needs --frames";
   EXPECT_EQ(runGui("--pin 3", false).exitCode, 2);
+}
+
+TEST(GuiSmoke, NoDisplayIsACleanError) {
+  if (!fs::exists(guiBinary())) GTEST_SKIP() << "twinraster-gui was not built (TWINRASTER_BUILD_GUI=OFF)";
+  const RunResult r = runGui("--frames 1", false, "env -u DISPLAY -u WAYLAND_DISPLAY ");
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("display"), std::string::npos) << r.err;
 }
 
 }  // namespace
