@@ -32,6 +32,9 @@ constexpr double kIdleWaitSeconds = 0.1;
 constexpr double kBusyFrameSeconds = 1.0 / 60.0;
 // While --frames waits for the CPU frame, how long each wait for the worker lasts.
 constexpr std::chrono::milliseconds kSettlePoll{10};
+// Tries to open a window (inclusive) and the pause between tries.
+constexpr int kWindowAttempts = 5;
+constexpr std::chrono::milliseconds kWindowRetryDelay{200};
 // Text sizes at content scale 1, pixels.
 constexpr float kBaseFontPixels = 15.0f;
 constexpr float kMonoFontPixels = 14.0f;
@@ -141,7 +144,18 @@ void GuiApp::createWindow(bool compatibility) {
   desc.height = options_.height;
   desc.title = "twinraster";
   desc.compatibility = compatibility;
-  window_ = std::make_unique<GlfwContext>(desc);
+  // GlfwContext ends GLFW with its window, closing the display connection. A server whose
+  // last client left may be resetting (Xvfb does), so a new window right after the old one
+  // is tried a few times before the failure counts.
+  for (int attempt = 1;; ++attempt) {
+    try {
+      window_ = std::make_unique<GlfwContext>(desc);
+      break;
+    } catch (const InputError&) {
+      if (attempt >= kWindowAttempts) throw;
+      std::this_thread::sleep_for(kWindowRetryDelay);
+    }
+  }
   // Our key callback goes in first: ImGui's backend chains to it. A tap of F12 shorter than
   // a frame still counts (ImGui 1.86 only sees keys held down at a frame's start).
   glfwSetWindowUserPointer(window_->window(), this);
@@ -233,11 +247,15 @@ void GuiApp::recreateWindowIfNeeded() {
     createWindow(true);
     contextMessage_ = "The window was recreated with an OpenGL 3.3 compatibility profile (" + window_->glVersion() +
                       ") so the GL side can draw the lines with glBegin/glEnd.";
+    std::cerr << "twinraster-gui: immediate-mode TBN lines: recreated the window with an OpenGL 3.3 compatibility "
+                 "profile ("
+              << window_->glVersion() << ")\n";
   } catch (const std::exception& e) {
     compatibilityFailed_ = true;
     contextMessage_ = std::string("Immediate mode needs an OpenGL 3.3 compatibility profile, and this display "
                                   "could not create one: ") +
                       e.what() + ". The lines stay in core mode (VBO + shader).";
+    std::cerr << "twinraster-gui: warning: " << contextMessage_ << "\n";
     doc_.scene.settings.tbnLines.mode = LineMode::Core;
     doc_.touch();
     createWindow(false);

@@ -185,6 +185,43 @@ TEST(GuiSmoke, SplitViewWithAPinnedPixel) {
             8);
 }
 
+TEST(GuiSmoke, ImmediateModeLinesRecreateTheWindowAsCompatibilityProfile) {
+  REQUIRE_GUI_AND_XVFB();
+  // assets/scenes/tbn_lines.json with the lines in immediate mode, its texture paths made absolute.
+  std::string json = readFile(kSource + "/assets/scenes/tbn_lines.json");
+  const auto replaceAll = [&json](const std::string& from, const std::string& to) {
+    for (std::size_t at = json.find(from); at != std::string::npos; at = json.find(from, at + to.size())) {
+      json.replace(at, from.size(), to);
+    }
+  };
+  replaceAll("\"mode\": \"core\"", "\"mode\": \"immediate\"");
+  replaceAll("\"../textures/", "\"" + kSource + "/assets/textures/");
+  ASSERT_NE(json.find("\"immediate\""), std::string::npos) << "tbn_lines.json no longer sets the line mode";
+  fs::create_directories(testDir());
+  const fs::path scene = testDir() / "tbn_immediate.json";
+  std::ofstream(scene) << json;
+  const fs::path shot = testDir() / "immediate.png";
+  fs::remove(shot);
+  const RunResult r = runGui("\"" + scene.string() + "\" --reset --frames " + std::to_string(kFrames) +
+                             " --view-mode gl --screenshot \"" + shot.string() + "\"");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("recreated the window with an OpenGL 3.3 compatibility profile"), std::string::npos) << r.err;
+  const twr::Image image = loadShot(shot);
+  // The GL image shows the lines: saturated red T, green B and blue N pixels.
+  const auto pure = [](int channel) {
+    return [channel](const std::uint8_t* p) {
+      for (int c = 0; c < 3; ++c) {
+        if (c == channel ? p[c] < 200 : p[c] > 60) return false;
+      }
+      return true;
+    };
+  };
+  for (int channel = 0; channel < 3; ++channel) {
+    EXPECT_GT(countPixels(image, kViewX0, kImageBandY0 - 100, kWindowWidth, kImageBandY1, pure(channel)), 50)
+        << "no lines of channel " << channel;
+  }
+}
+
 TEST(GuiSmoke, BadScenePathShowsAnErrorAndKeepsRunning) {
   REQUIRE_GUI_AND_XVFB();
   const fs::path shot = testDir() / "bad.png";
