@@ -1,0 +1,112 @@
+// `twinraster report [--out DIR] [--quick]`: sweeps the quality knobs on both backends, times
+// them and measures their error against a reference, and writes DIR/report.html and
+// DIR/results.csv (docs/report.md). Also registers the hidden `report-gl-child` subcommand the
+// sweeps run in child processes when a knob needs a fresh llvmpipe.
+#include "app/cli/commands.h"
+#include "app/cli/report_html.h"
+#include "app/cli/report_sweeps.h"
+#include "scene/errors.h"
+#include "scene/image.h"
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <system_error>
+
+namespace twr::cli {
+namespace {
+
+struct ReportArgs {
+  std::string outDir = "out/report";
+  std::string assetsDir;  // empty: found next to the working directory or the executable
+  bool quick = false;
+};
+
+struct ChildArgs {
+  std::string scenePath;
+  int width = 0, height = 0;
+  int frames = 1;
+  bool fastSampling = false;
+  std::string outPath;
+};
+
+// The folder holding scenes/default.json: ./assets, or assets beside a parent of the executable
+// (a build folder inside the repository).
+std::string findAssets(const std::string& requested) {
+  namespace fs = std::filesystem;
+  auto usable = [](const fs::path& dir) { return fs::exists(dir / "scenes" / "default.json"); };
+  if (!requested.empty()) {
+    if (!usable(requested)) {
+      throw InputError("--assets: '" + requested + "' has no scenes/default.json (expected the repository's assets/)");
+    }
+    return requested;
+  }
+  std::vector<fs::path> candidates = {fs::current_path() / "assets"};
+  std::error_code error;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", error);
+  if (!error) {
+    for (fs::path dir = exe.parent_path(); !dir.empty() && dir != dir.root_path(); dir = dir.parent_path()) {
+      candidates.push_back(dir / "assets");
+    }
+  }
+  for (const fs::path& dir : candidates) {
+    if (usable(dir)) return dir.string();
+  }
+  throw InputError("report: cannot find assets/scenes/default.json in the working directory or above the "
+                   "executable; run from the repository root or pass --assets DIR");
+}
+
+void runReport(const ReportArgs& args) {
+  namespace fs = std::filesystem;
+  ReportOptions options;
+  options.quick = args.quick;
+  options.assetsDir = findAssets(args.assetsDir);
+  options.selfExecutable = "/proc/self/exe";
+  std::error_code error;
+  fs::create_directories(args.outDir, error);
+  if (error || !fs::is_directory(args.outDir)) {
+    throw InputError("--out: cannot create the folder '" + args.outDir + "': " + error.message());
+  }
+  options.workDir = (fs::path(args.outDir) / "work").string();
+  fs::create_directories(options.workDir, error);
+  if (error) throw InputError("--out: cannot create '" + options.workDir + "': " + error.message());
+
+  const ReportData data = runReportSweeps(options, std::cerr);
+  const std::string html = (fs::path(args.outDir) / "report.html").string();
+  const std::string csv = (fs::path(args.outDir) / "results.csv").string();
+  writeReportHtml(html, data);
+  writeResultsCsv(csv, data);
+  fs::remove_all(options.workDir, error);  // only child outputs, already read
+  std::cout << "wrote " << html << "\n      " << csv << "\n";
+}
+
+const bool registered = registerCommand(60, [](CLI::App& app) {
+  auto args = std::make_shared<ReportArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "report",
+      "Sweep the quality knobs (sphere tessellation, texture filter, lighting space, tangent transform, llvmpipe "
+      "sampling, resolution, threads, float vs double) on both backends; time each point and measure its error "
+      "against a double-precision supersampled reference; write DIR/report.html (charts, tables, readings) and "
+      "DIR/results.csv. Progress on stderr. A few minutes by default, well under one with --quick.");
+  cmd->add_option("--out,-o", args->outDir, "Output folder (created)")->capture_default_str();
+  cmd->add_flag("--quick", args->quick, "Smaller images, fewer settings and frames");
+  cmd->add_option("--assets", args->assetsDir,
+                  "The repository's assets/ folder (default: ./assets or one above the executable)");
+  cmd->callback([args] { runReport(*args); });
+
+  auto child = std::make_shared<ChildArgs>();
+  CLI::App* childCmd = app.add_subcommand("report-gl-child", "Internal: one GL sweep point for `report`");
+  childCmd->group("");  // hidden from --help
+  childCmd->add_option("scene", child->scenePath)->required();
+  childCmd->add_option("--width", child->width)->required()->check(CLI::Range(1, kMaxImageSide));
+  childCmd->add_option("--height", child->height)->required()->check(CLI::Range(1, kMaxImageSide));
+  childCmd->add_option("--frames", child->frames)->check(CLI::Range(1, 1000));
+  childCmd->add_flag("--fast-sampling", child->fastSampling);
+  childCmd->add_option("--out", child->outPath)->required();
+  childCmd->callback([child] {
+    runGlChild(child->scenePath, child->width, child->height, child->frames, child->fastSampling, child->outPath);
+  });
+});
+
+}  // namespace
+}  // namespace twr::cli

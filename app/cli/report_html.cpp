@@ -1,0 +1,378 @@
+#include "app/cli/report_html.h"
+
+#include "scene/errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace twr::cli {
+
+namespace {
+
+// Chart geometry, SVG user units (pixels at 100 % zoom).
+constexpr double kChartWidth = 760.0, kChartHeight = 380.0;
+constexpr double kMarginLeft = 70.0, kMarginRight = 150.0, kMarginTop = 24.0, kMarginBottom = 52.0;
+constexpr double kPointRadius = 5.0;
+// A time axis spanning more than this ratio (max / min) is drawn logarithmic.
+constexpr double kLogAxisRatio = 8.0;
+constexpr int kTargetTicks = 6;
+
+std::string escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string num(double value, int decimals) {
+  if (!std::isfinite(value)) return value > 0 ? "inf" : (value < 0 ? "-inf" : "nan");
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+  return buffer;
+}
+std::string sci(double value) {
+  if (!std::isfinite(value)) return value > 0 ? "inf" : "nan";
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.2e", value);
+  return buffer;
+}
+// Milliseconds with sensible precision for a cell.
+std::string msText(double ms) { return num(ms, ms < 1.0 ? 3 : (ms < 10.0 ? 2 : 1)); }
+// A tick value without trailing zeros ("0", "0.5", "2", "250").
+std::string tickText(double v) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%g", v);
+  return buffer;
+}
+
+// Label boxes already placed in a chart, so a new label can avoid them.
+struct LabelBox {
+  double x0, y0, x1, y1;
+  bool overlaps(const LabelBox& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+};
+constexpr double kLabelCharWidth = 6.2;  // SVG units per character at font-size 11 (approximate)
+constexpr double kLabelHeight = 12.0;
+
+struct Axis {
+  double lo = 0.0, hi = 1.0;  // data range shown
+  bool log = false;
+  std::vector<double> ticks;
+
+  double fraction(double v) const {
+    if (log) return (std::log10(v) - std::log10(lo)) / (std::log10(hi) - std::log10(lo));
+    return (v - lo) / (hi - lo);
+  }
+};
+
+// "Nice" linear ticks (1, 2, 5 x 10^k) covering [lo, hi].
+Axis linearAxis(double lo, double hi) {
+  Axis a;
+  if (!(hi > lo)) hi = lo + 1.0;
+  const double rawStep = (hi - lo) / kTargetTicks;
+  const double magnitude = std::pow(10.0, std::floor(std::log10(rawStep)));
+  double step = magnitude;
+  for (double m : {1.0, 2.0, 5.0, 10.0}) {
+    step = m * magnitude;
+    if (step >= rawStep) break;
+  }
+  a.lo = std::floor(lo / step) * step;
+  a.hi = std::ceil(hi / step) * step;
+  for (double t = a.lo; t <= a.hi + 0.5 * step; t += step) a.ticks.push_back(std::fabs(t) < 1e-12 ? 0.0 : t);
+  return a;
+}
+
+// Log ticks at 1, 2, 5 x 10^k covering [lo, hi] (lo > 0).
+Axis logAxis(double lo, double hi) {
+  Axis a;
+  a.log = true;
+  a.lo = std::pow(10.0, std::floor(std::log10(lo)));
+  a.hi = std::pow(10.0, std::ceil(std::log10(hi)));
+  for (double decade = a.lo; decade < a.hi * 1.01; decade *= 10.0) {
+    for (double m : {1.0, 2.0, 5.0}) {
+      const double t = m * decade;
+      if (t >= a.lo * 0.999 && t <= a.hi * 1.001) a.ticks.push_back(t);
+    }
+  }
+  return a;
+}
+
+const char* colourOf(const std::string& backend) { return backend == "gl" ? "#c0392b" : "#1f5fa8"; }
+
+std::string chartSvg(const KnobResult& knob) {
+  std::vector<const ReportPoint*> points;
+  for (const ReportPoint& p : knob.points) points.push_back(&p);
+  if (points.empty()) return "";
+  double tMin = points[0]->msMedian, tMax = tMin, eMax = 0.0;
+  for (const ReportPoint* p : points) {
+    tMin = std::min(tMin, p->msMedian);
+    tMax = std::max(tMax, p->msMedian);
+    if (std::isfinite(p->vsReference.rmse)) eMax = std::max(eMax, p->vsReference.rmse);
+  }
+  tMin = std::max(tMin, 1e-3);
+  const Axis x = (tMax / tMin > kLogAxisRatio) ? logAxis(tMin, tMax) : linearAxis(0.0, tMax * 1.05);
+  const Axis y = linearAxis(0.0, std::max(eMax * 1.1, 0.5));
+  const double plotW = kChartWidth - kMarginLeft - kMarginRight;
+  const double plotH = kChartHeight - kMarginTop - kMarginBottom;
+  auto px = [&](double v) { return kMarginLeft + plotW * x.fraction(std::max(v, x.log ? x.lo : v)); };
+  auto py = [&](double v) { return kMarginTop + plotH * (1.0 - y.fraction(v)); };
+
+  std::ostringstream s;
+  s << "<svg class=\"chart\" viewBox=\"0 0 " << kChartWidth << " " << kChartHeight << "\" width=\"" << kChartWidth
+    << "\" height=\"" << kChartHeight << "\" role=\"img\" aria-label=\"" << escape(knob.title)
+    << ": time per frame against error\">\n";
+  s << "<rect x=\"" << kMarginLeft << "\" y=\"" << kMarginTop << "\" width=\"" << plotW << "\" height=\"" << plotH
+    << "\" fill=\"#fbfbfd\" stroke=\"#999\"/>\n";
+  for (double t : x.ticks) {
+    const double X = px(t);
+    s << "<line x1=\"" << X << "\" y1=\"" << kMarginTop << "\" x2=\"" << X << "\" y2=\"" << kMarginTop + plotH
+      << "\" stroke=\"#e3e3ea\"/>";
+    s << "<text x=\"" << X << "\" y=\"" << kMarginTop + plotH + 16 << "\" class=\"tick\" text-anchor=\"middle\">"
+      << tickText(t) << "</text>\n";
+  }
+  for (double t : y.ticks) {
+    const double Y = py(t);
+    s << "<line x1=\"" << kMarginLeft << "\" y1=\"" << Y << "\" x2=\"" << kMarginLeft + plotW << "\" y2=\"" << Y
+      << "\" stroke=\"#e3e3ea\"/>";
+    s << "<text x=\"" << kMarginLeft - 6 << "\" y=\"" << Y + 4 << "\" class=\"tick\" text-anchor=\"end\">"
+      << tickText(t) << "</text>\n";
+  }
+  s << "<text x=\"" << kMarginLeft + plotW / 2 << "\" y=\"" << kChartHeight - 10
+    << "\" class=\"axis\" text-anchor=\"middle\">time per frame, ms (median" << (x.log ? ", log scale" : "")
+    << ")</text>\n";
+  s << "<text transform=\"translate(16," << kMarginTop + plotH / 2
+    << ") rotate(-90)\" class=\"axis\" text-anchor=\"middle\">RMSE vs reference, levels</text>\n";
+
+  // One polyline per backend in sweep order, then the points with their labels.
+  for (const std::string backend : {"cpu", "gl"}) {
+    std::string path;
+    for (const ReportPoint* p : points) {
+      if (p->backend != backend) continue;
+      path += (path.empty() ? "M" : " L") + num(px(p->msMedian), 1) + " " + num(py(p->vsReference.rmse), 1);
+    }
+    if (!path.empty()) {
+      s << "<path d=\"" << path << "\" fill=\"none\" stroke=\"" << colourOf(backend)
+        << "\" stroke-width=\"1.5\" stroke-opacity=\"0.6\"/>\n";
+    }
+  }
+  // Point markers first, so every label can avoid every point.
+  std::vector<LabelBox> placed;
+  for (const ReportPoint* p : points) {
+    const double X = px(p->msMedian), Y = py(p->vsReference.rmse);
+    placed.push_back({X - kPointRadius, Y - kPointRadius, X + kPointRadius, Y + kPointRadius});
+  }
+  for (const ReportPoint* p : points) {
+    const double X = px(p->msMedian), Y = py(p->vsReference.rmse);
+    const bool gl = p->backend == "gl";
+    if (gl) {
+      s << "<rect x=\"" << X - kPointRadius << "\" y=\"" << Y - kPointRadius << "\" width=\"" << 2 * kPointRadius
+        << "\" height=\"" << 2 * kPointRadius << "\" fill=\"" << colourOf(p->backend) << "\">";
+    } else {
+      s << "<circle cx=\"" << X << "\" cy=\"" << Y << "\" r=\"" << kPointRadius << "\" fill=\""
+        << colourOf(p->backend) << "\">";
+    }
+    s << "<title>" << escape(p->backend + " " + p->setting) << ": " << msText(p->msMedian) << " ms, RMSE "
+      << num(p->vsReference.rmse, 2) << "</title>" << (gl ? "</rect>" : "</circle>") << "\n";
+    // The first free spot for the label (baseline positions): right of the point above it,
+    // below it, then further out, then the same on the left; CPU tries above first, GL below.
+    const double w = kLabelCharWidth * static_cast<double>(p->setting.size());
+    const double above = Y - 8, below = Y + 16, farAbove = Y - 8 - kLabelHeight, farBelow = Y + 16 + kLabelHeight;
+    const double first = gl ? below : above, second = gl ? above : below;
+    const double third = gl ? farBelow : farAbove, fourth = gl ? farAbove : farBelow;
+    const std::pair<double, double> spots[] = {{X + 8, first},     {X + 8, second},     {X + 8, third},
+                                               {X + 8, fourth},    {X - 8 - w, first},  {X - 8 - w, second},
+                                               {X - 8 - w, third}, {X - 8 - w, fourth}};
+    auto boxAt = [&](double left, double baseline) {
+      return LabelBox{left, baseline - kLabelHeight + 2, left + w, baseline + 2};
+    };
+    LabelBox chosen = boxAt(spots[0].first, spots[0].second);
+    for (const auto& [left, baseline] : spots) {
+      const LabelBox box = boxAt(left, baseline);
+      if (std::none_of(placed.begin(), placed.end(), [&](const LabelBox& b) { return b.overlaps(box); })) {
+        chosen = box;
+        break;
+      }
+    }
+    placed.push_back(chosen);
+    s << "<text x=\"" << num(chosen.x0, 1) << "\" y=\"" << num(chosen.y1 - 2, 1) << "\" class=\"label\" fill=\""
+      << colourOf(p->backend) << "\">" << escape(p->setting) << "</text>\n";
+  }
+  // Legend.
+  const double lx = kChartWidth - kMarginRight + 16, ly = kMarginTop + 10;
+  s << "<circle cx=\"" << lx << "\" cy=\"" << ly << "\" r=\"" << kPointRadius << "\" fill=\"" << colourOf("cpu")
+    << "\"/><text x=\"" << lx + 12 << "\" y=\"" << ly + 4 << "\" class=\"legend\">CPU pipeline</text>\n";
+  s << "<rect x=\"" << lx - kPointRadius << "\" y=\"" << ly + 20 - kPointRadius << "\" width=\"" << 2 * kPointRadius
+    << "\" height=\"" << 2 * kPointRadius << "\" fill=\"" << colourOf("gl") << "\"/><text x=\"" << lx + 12
+    << "\" y=\"" << ly + 24 << "\" class=\"legend\">GL (llvmpipe)</text>\n";
+  s << "</svg>\n";
+  return s.str();
+}
+
+std::string pointsTable(const KnobResult& knob) {
+  std::ostringstream s;
+  s << "<table>\n<thead><tr><th>setting</th><th>backend</th><th>ms median</th><th>ms min</th><th>frames</th>"
+       "<th>RMSE</th><th>PSNR dB</th><th>max diff</th><th>&gt;1 level %</th><th>coverage mismatch</th>"
+       "<th>vs exact setting RMSE</th><th>vs exact setting max</th>"
+       "<th>CPU vs GL RMSE</th><th>CPU vs GL max</th><th>CPU vs GL coverage</th></tr></thead>\n<tbody>\n";
+  for (const ReportPoint& p : knob.points) {
+    const CompareMetrics& m = p.vsReference;
+    s << "<tr><td>" << escape(p.setting) << "</td><td class=\"" << (p.backend == "gl" ? "gl" : "cpu") << "\">"
+      << escape(p.backend) << "</td><td>" << msText(p.msMedian) << "</td><td>" << msText(p.msMin) << "</td><td>"
+      << p.frames << "</td><td>" << num(m.rmse, 2) << "</td><td>" << num(m.psnr, 1) << "</td><td>" << m.maxAbsDiff
+      << "</td><td>" << num(m.over1Pct(), 2) << "</td><td>" << m.coverageMismatch << "</td>";
+    if (p.vsExactSetting) {
+      s << "<td title=\"against " << escape(p.backend + " " + p.exactSetting) << "\">" << num(p.vsExactSetting->rmse, 2)
+        << "</td><td>" << p.vsExactSetting->maxAbsDiff << "</td>";
+    } else {
+      s << "<td></td><td></td>";
+    }
+    if (p.cpuVsGl) {
+      s << "<td>" << num(p.cpuVsGl->rmse, 2) << "</td><td>" << p.cpuVsGl->maxAbsDiff << "</td><td>"
+        << p.cpuVsGl->coverageMismatch << "</td>";
+    } else {
+      s << "<td></td><td></td><td></td>";
+    }
+    s << "</tr>\n";
+  }
+  s << "</tbody></table>\n";
+  return s.str();
+}
+
+std::string basisTable(const ReportData& data) {
+  std::ostringstream s;
+  s << "<table>\n<thead><tr><th>construction</th><th>max error, all directions</th>"
+       "<th>max error within 1e-3 rad of -Z</th><th>max error for n.z &gt; 0</th>"
+       "<th>non-finite bases</th><th>worst normal</th><th>ns per basis</th></tr></thead>\n<tbody>\n";
+  for (const BasisRow& r : data.bases) {
+    const BasisErrorStats& st = r.stats;
+    const bool bad = !(st.maxError < 1e-3);
+    s << "<tr><td>" << toString(r.method) << "</td><td" << (bad ? " class=\"bad\"" : "") << ">" << sci(st.maxError)
+      << "</td><td" << (st.maxErrorNearMinusZ < 1e-3 ? "" : " class=\"bad\"") << ">" << sci(st.maxErrorNearMinusZ)
+      << "</td><td>" << sci(st.maxErrorAwayFromMinusZ) << "</td><td>" << st.nonFinite << "</td><td>("
+      << num(st.worstNormal.x, 6) << ", " << num(st.worstNormal.y, 6) << ", " << num(st.worstNormal.z, 9)
+      << ")</td><td>" << num(r.nsPerBasis, 2) << "</td></tr>\n";
+  }
+  s << "</tbody></table>\n";
+  return s.str();
+}
+
+constexpr const char* kStyle = R"(body{font:15px/1.45 system-ui,-apple-system,"Segoe UI",sans-serif;color:#1d1d24;
+max-width:1080px;margin:24px auto;padding:0 18px}h1{font-size:26px;margin-bottom:4px}h2{font-size:20px;
+margin-top:38px;border-bottom:1px solid #ddd;padding-bottom:4px}.meta{color:#555;font-size:13px}
+.reading{background:#f3f6fb;border-left:4px solid #1f5fa8;padding:8px 12px;margin:10px 0}
+table{border-collapse:collapse;font-size:13px;margin:10px 0 4px}th,td{border:1px solid #d5d5dd;padding:3px 7px;
+text-align:right}th{background:#eef0f5}td:first-child,th:first-child{text-align:left}td:nth-child(-n+2){white-space:nowrap}td.cpu{color:#1f5fa8;
+text-align:left}td.gl{color:#c0392b;text-align:left}td.bad{background:#fbe3e0;font-weight:600}
+svg.chart{display:block;max-width:100%;height:auto}svg .tick{font-size:11px;fill:#444}svg .axis{font-size:13px;
+fill:#222}svg .label{font-size:11px}svg .legend{font-size:12px;fill:#222}dl{margin:4px 0}dt{font-weight:600}
+dd{margin:0 0 6px 16px}.small{font-size:13px;color:#444}ul.summary li{margin-bottom:6px})";
+
+}  // namespace
+
+void writeReportHtml(const std::string& path, const ReportData& data) {
+  std::ostringstream s;
+  s << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>twinraster report: speed against "
+       "error</title>\n<style>"
+    << kStyle << "</style></head><body>\n";
+  s << "<h1>Speed against error</h1>\n<p class=\"meta\">Generated " << escape(data.generatedAt) << " in "
+    << num(data.seconds, 0) << " s" << (data.quick ? " (--quick: smaller images, fewer points and frames)" : "")
+    << ". " << escape(data.machine) << ".</p>\n";
+  s << "<p>Each chart puts one quality knob on the table: every point is one backend at one setting, placed by its "
+       "median time per frame (x) and its error against the knob's reference (y, RMSE in 8-bit levels over pixels "
+       "both cover, as <code>twinraster compare</code> measures it). Lower and further left is better. The reference "
+       "is the CPU pipeline's own stages in double precision with "
+    << data.referenceSamplesPerAxis << "x" << data.referenceSamplesPerAxis
+    << " samples per pixel, box-filtered (its alpha is the coverage fraction; a pixel counts as covered when any "
+       "sample is, so edge pixels carry their aliasing error in the colour metrics), unless a knob says otherwise. "
+       "The tables add the worst pixel, the share of pixels off by more than one level, the coverage mismatch and "
+       "how far the CPU and GL images are from each other.</p>\n";
+  s << "<h2>Readings</h2>\n<ul class=\"summary\">\n";
+  for (const KnobResult& knob : data.knobs) {
+    s << "<li><a href=\"#" << knob.id << "\"><b>" << escape(knob.title) << "</b></a>: " << escape(knob.summary)
+      << "</li>\n";
+  }
+  s << "<li><a href=\"#orthonormal_basis\"><b>Orthonormal bases</b></a>: " << escape(data.basisSummary) << "</li>\n";
+  s << "</ul>\n";
+
+  for (const KnobResult& knob : data.knobs) {
+    s << "<h2 id=\"" << knob.id << "\">" << escape(knob.title) << "</h2>\n";
+    s << "<dl><dt>Trade</dt><dd>" << escape(knob.question) << "</dd><dt>Reference</dt><dd>" << escape(knob.reference)
+      << "</dd><dt>Scene</dt><dd>" << escape(knob.scene) << "</dd></dl>\n";
+    s << "<div class=\"reading\"><b>" << escape(knob.summary) << "</b><br>" << escape(knob.reading) << "</div>\n";
+    s << chartSvg(knob) << pointsTable(knob);
+  }
+
+  s << "<h2 id=\"orthonormal_basis\">Orthonormal bases from a normal</h2>\n";
+  s << "<p>Four ways to build two unit vectors b1, b2 with b1 x b2 = n from a unit normal alone, in float as a shader "
+       "would. Error: the largest of | |b|&sup2; - 1 |, |b.n|, |b1.b2| and the components of |b1 x b2 - n|, over "
+    << data.basisDirections
+    << " directions (a Fibonacci sphere, the six axes, and directions within 1e-3 rad of -Z, +Z, +Y and -Y at "
+       "angles down to 1e-8 rad). Cells above 1e-3 are marked.</p>\n";
+  s << "<div class=\"reading\"><b>" << escape(data.basisSummary) << "</b><br>" << escape(data.basisReading)
+    << "</div>\n" << basisTable(data);
+  s << "<p class=\"small\">naive_fixed_helper: normalize(cross(+Y, n)); naive_best_helper: the same with +X when "
+       "|n.x| &lt; |n.y|; frisvad_2012: J. R. Frisvad, Building an orthonormal basis from a 3D unit vector without "
+       "normalization (2012); duff_2017: T. Duff et al., Building an Orthonormal Basis, Revisited (JCGT 2017). "
+       "Source: scene/orthonormal_basis.cpp.</p>\n";
+  s << "<p class=\"small\">The numbers are in results.csv next to this file. See docs/report.md for how each knob is "
+       "measured.</p>\n</body></html>\n";
+
+  std::ofstream file(path, std::ios::binary);
+  file << s.str();
+  if (!file) throw InputError("report: cannot write '" + path + "'");
+}
+
+void writeResultsCsv(const std::string& path, const ReportData& data) {
+  std::ostringstream s;
+  s << "knob,setting,backend,ms_median,ms_min,frames,rmse_levels,psnr_db,max_abs_diff,mean_abs_diff,over1_pct,"
+       "coverage_mismatch,covered_backend,covered_reference,cpu_vs_gl_rmse,cpu_vs_gl_max_abs_diff,"
+       "cpu_vs_gl_coverage_mismatch,vs_exact_setting,vs_exact_rmse,vs_exact_max_abs_diff,basis_max_error,"
+       "basis_max_error_near_minus_z,basis_non_finite,ns_per_basis\n";
+  auto quoted = [](const std::string& text) {
+    std::string out = "\"";
+    for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+  };
+  for (const KnobResult& knob : data.knobs) {
+    for (const ReportPoint& p : knob.points) {
+      const CompareMetrics& m = p.vsReference;
+      s << knob.id << "," << quoted(p.setting) << "," << quoted(p.backend) << "," << num(p.msMedian, 4) << ","
+        << num(p.msMin, 4) << "," << p.frames << "," << num(m.rmse, 4) << "," << num(m.psnr, 3) << ","
+        << m.maxAbsDiff << "," << num(m.meanAbsDiff, 4) << "," << num(m.over1Pct(), 4) << "," << m.coverageMismatch
+        << "," << m.coveredCpu << "," << m.coveredGl << ",";
+      if (p.cpuVsGl) {
+        s << num(p.cpuVsGl->rmse, 4) << "," << p.cpuVsGl->maxAbsDiff << "," << p.cpuVsGl->coverageMismatch;
+      } else {
+        s << ",,";
+      }
+      if (p.vsExactSetting) {
+        s << "," << quoted(p.exactSetting) << "," << num(p.vsExactSetting->rmse, 4) << ","
+          << p.vsExactSetting->maxAbsDiff;
+      } else {
+        s << ",,,";
+      }
+      s << ",,,,\n";
+    }
+  }
+  for (const BasisRow& r : data.bases) {
+    // 17 empty cells: ms_median .. vs_exact_max_abs_diff.
+    s << "orthonormal_basis," << toString(r.method) << ",cpu" << std::string(17, ',') << "," << sci(r.stats.maxError) << ","
+      << sci(r.stats.maxErrorNearMinusZ) << "," << r.stats.nonFinite << "," << num(r.nsPerBasis, 3) << "\n";
+  }
+  std::ofstream file(path, std::ios::binary);
+  file << s.str();
+  if (!file) throw InputError("report: cannot write '" + path + "'");
+}
+
+}  // namespace twr::cli

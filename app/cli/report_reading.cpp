@@ -1,0 +1,359 @@
+#include "app/cli/report_reading.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace twr::cli {
+
+namespace {
+
+// A shortcut is "invisible" when it changes the image by less than this RMSE (a quarter of one
+// 8-bit level averaged over the image) and leaves fewer than kInvisibleOver1Pct % of the pixels
+// more than one level off.
+constexpr double kNegligibleLevels = 0.25;
+constexpr double kInvisibleOver1Pct = 1.0;
+// Error differences against the reference below this fraction also count as no difference.
+constexpr double kNegligibleFraction = 0.05;
+// Up to this time ratio the exact setting is "worth its cost" without qualification.
+constexpr double kCheapRatio = 1.5;
+// When the shortcut changes the image by less than this fraction of the exact setting's own
+// error against the reference, sampling error dominates and the reading says so.
+constexpr double kSamplingDominates = 0.5;
+// A tessellation is "at the knee" within this fraction of the best error (plus kNegligibleLevels).
+constexpr double kKneeFraction = 0.10;
+
+std::string fmt(const char* format, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, format, value);
+  return buffer;
+}
+std::string ms(double value) { return fmt(value < 10.0 ? "%.2f ms" : "%.1f ms", value); }
+std::string levels(double value) { return fmt("%.2f", value) + " levels"; }
+std::string percent(double fraction) { return fmt("%.0f%%", 100.0 * fraction); }
+std::string times(double ratio) { return fmt("%.2fx", ratio); }
+
+std::vector<const ReportPoint*> pointsOf(const KnobResult& knob, const std::string& backend) {
+  std::vector<const ReportPoint*> out;
+  for (const ReportPoint& p : knob.points)
+    if (p.backend == backend) out.push_back(&p);
+  return out;
+}
+
+const ReportPoint* find(const KnobResult& knob, const std::string& backend, const std::string& setting) {
+  for (const ReportPoint& p : knob.points)
+    if (p.backend == backend && p.setting == setting) return &p;
+  return nullptr;
+}
+
+std::string upper(const std::string& backend) {
+  std::string s = backend;
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  return s;
+}
+
+enum class Verdict { Invisible, FreeWin, WorthIt, TradeOff, ShortcutCloser };
+
+// A shortcut setting against the exact one on one backend.
+struct TradeOff {
+  Verdict verdict = Verdict::Invisible;
+  double timeRatio = 1.0;     // exact / shortcut
+  double effectRmse = 0.0;    // how much the shortcut alone changes the image, levels
+  double effectOver1Pct = 0.0;
+  int effectMax = 0;
+  bool samplingDominates = false;
+  std::string detail;         // the numbers, one paragraph
+};
+
+TradeOff weigh(const std::string& who, const ReportPoint& shortcut, const ReportPoint& exact) {
+  TradeOff t;
+  t.timeRatio = shortcut.msMedian > 0.0 ? exact.msMedian / shortcut.msMedian : 1.0;
+  const double gain = shortcut.vsReference.rmse - exact.vsReference.rmse;  // > 0: exact is closer
+  const double relative = shortcut.vsReference.rmse > 0.0 ? gain / shortcut.vsReference.rmse : 0.0;
+  const bool referenceSeesIt = std::fabs(gain) >= kNegligibleLevels && std::fabs(relative) >= kNegligibleFraction;
+  if (shortcut.vsExactSetting) {
+    t.effectRmse = shortcut.vsExactSetting->rmse;
+    t.effectOver1Pct = shortcut.vsExactSetting->over1Pct();
+    t.effectMax = shortcut.vsExactSetting->maxAbsDiff;
+  } else {
+    t.effectRmse = std::fabs(gain);
+  }
+  const bool visible = t.effectRmse >= kNegligibleLevels || t.effectOver1Pct >= kInvisibleOver1Pct || referenceSeesIt;
+  t.samplingDominates = t.effectRmse < kSamplingDominates * exact.vsReference.rmse;
+  if (!visible) {
+    t.verdict = Verdict::Invisible;
+  } else if (referenceSeesIt && gain < 0.0) {
+    t.verdict = Verdict::ShortcutCloser;
+  } else if (t.timeRatio <= 1.0) {
+    t.verdict = Verdict::FreeWin;
+  } else if (t.timeRatio <= kCheapRatio) {
+    t.verdict = Verdict::WorthIt;
+  } else {
+    t.verdict = Verdict::TradeOff;
+  }
+
+  std::string& s = t.detail;
+  s = who + ": " + exact.setting + " " + ms(exact.msMedian) + ", " + shortcut.setting + " " + ms(shortcut.msMedian) +
+      " (" + times(t.timeRatio) + "); RMSE against the reference " + levels(exact.vsReference.rmse) + " and " +
+      levels(shortcut.vsReference.rmse) + ". ";
+  if (shortcut.vsExactSetting) {
+    s += shortcut.setting + " alone changes the image by " + levels(t.effectRmse) + " RMSE (worst pixel " +
+         std::to_string(t.effectMax) + ", " + fmt("%.1f%%", t.effectOver1Pct) + " of pixels over one level). ";
+  }
+  switch (t.verdict) {
+    case Verdict::Invisible:
+      s += "The shortcut is invisible here: take the faster (" +
+           (t.timeRatio <= 1.0 ? exact.setting : shortcut.setting) + ").";
+      break;
+    case Verdict::FreeWin:
+      s += exact.setting + " is no slower and is the exact one: keep it.";
+      break;
+    case Verdict::WorthIt:
+      s += exact.setting + " costs +" + percent(t.timeRatio - 1.0) + " time for a visible difference: worth its cost.";
+      break;
+    case Verdict::TradeOff:
+      s += exact.setting + " costs " + times(t.timeRatio) + " the time: a real trade-off, worth it where the "
+           "difference shows.";
+      break;
+    case Verdict::ShortcutCloser:
+      s += "Here " + shortcut.setting + " measures closer to the reference, by " + levels(-gain) +
+           ": look at the images before trusting either.";
+      break;
+  }
+  if (t.verdict != Verdict::Invisible && t.samplingDominates) {
+    s += " Both stay about " + levels(exact.vsReference.rmse) + " from the reference: most of that is one sample "
+         "per pixel (edges, texture minification without mipmaps), not this knob.";
+  }
+  return t;
+}
+
+const char* verdictText(Verdict v) {
+  switch (v) {
+    case Verdict::Invisible: return "invisible shortcut, take the faster";
+    case Verdict::FreeWin: return "the exact setting costs nothing, keep it";
+    case Verdict::WorthIt: return "worth its cost";
+    case Verdict::TradeOff: return "a real trade-off";
+    case Verdict::ShortcutCloser: return "the shortcut measured closer, check the images";
+  }
+  return "";
+}
+
+// Two settings of one knob: the detailed reading per backend, and a one-line summary.
+KnobReading readTwo(const KnobResult& knob, const std::string& shortcut, const std::string& exact) {
+  KnobReading r;
+  std::string times_;
+  std::string effect;
+  Verdict worst = Verdict::Invisible;
+  bool sampling = false;
+  double exactError = 0.0;
+  for (const std::string backend : {"cpu", "gl"}) {
+    const ReportPoint* a = find(knob, backend, shortcut);
+    const ReportPoint* e = find(knob, backend, exact);
+    if (!a || !e) continue;
+    const TradeOff t = weigh(upper(backend), *a, *e);
+    r.detail += t.detail + " ";
+    times_ += (times_.empty() ? "" : ", ") + upper(backend) + " " + times(t.timeRatio);
+    if (effect.empty()) {
+      effect = levels(t.effectRmse) + " RMSE, " + fmt("%.1f%%", t.effectOver1Pct) + " of pixels over one level";
+    }
+    worst = std::max(worst, t.verdict);
+    sampling = sampling || t.samplingDominates;
+    exactError = e->vsReference.rmse;
+  }
+  if (times_.empty()) return r;
+  r.summary = exact + " over " + shortcut + ": " + verdictText(worst) + ". Time " + times_ + "; " + shortcut +
+              " alone changes the image by " + effect + ".";
+  if (sampling && worst != Verdict::Invisible) {
+    r.summary += " Against the reference both are about " + levels(exactError) + " off, mostly sampling.";
+  }
+  return r;
+}
+
+KnobReading readTessellation(const KnobResult& knob) {
+  KnobReading r;
+  std::string knees;
+  double bestOverall = 0.0;
+  double worstRatio = 1.0;
+  double wasted = 0.0;
+  for (const std::string backend : {"cpu", "gl"}) {
+    const std::vector<const ReportPoint*> points = pointsOf(knob, backend);
+    if (points.size() < 2) continue;
+    const ReportPoint& first = *points.front();
+    const ReportPoint& last = *points.back();
+    double best = first.vsReference.rmse;
+    for (const ReportPoint* p : points) best = std::min(best, p->vsReference.rmse);
+    const ReportPoint* knee = points.back();
+    for (const ReportPoint* p : points) {
+      if (p->vsReference.rmse <= best * (1.0 + kKneeFraction) + kNegligibleLevels) {
+        knee = p;
+        break;
+      }
+    }
+    r.detail += upper(backend) + ": from " + first.setting + " to " + last.setting + " the RMSE against the exact "
+                "sphere goes from " + levels(first.vsReference.rmse) + " to " + levels(last.vsReference.rmse) +
+                " and the silhouette mismatch from " + std::to_string(first.vsReference.coverageMismatch) + " to " +
+                std::to_string(last.vsReference.coverageMismatch) + " pixels, while a frame goes from " +
+                ms(first.msMedian) + " to " + ms(last.msMedian) + ". " + knee->setting + " is within " +
+                percent(kKneeFraction) + " of the best error at " + ms(knee->msMedian);
+    if (knee != &last && knee->msMedian > 0.0) {
+      const double ratio = last.msMedian / knee->msMedian;
+      const double gain = std::max(0.0, knee->vsReference.rmse - best);
+      r.detail += "; finer meshes cost up to " + times(ratio) + " that for at most " + levels(gain) + " less";
+      worstRatio = std::max(worstRatio, ratio);
+      wasted = std::max(wasted, gain);
+    }
+    r.detail += ". ";
+    knees += (knees.empty() ? "" : ", ") + knee->setting + " on the " + upper(backend) + " (" + ms(knee->msMedian) + ")";
+    bestOverall = best;
+  }
+  if (knees.empty()) return r;
+  if (bestOverall > 1.0) {
+    r.detail += "The " + levels(bestOverall) + " left at the finest mesh are not tessellation but one sample per "
+                "pixel (silhouette and texture aliasing), which only supersampling removes.";
+  }
+  r.summary = "Tessellation stops paying at " + knees + ": finer meshes cost up to " + times(worstRatio) +
+              " the time for at most " + levels(wasted) + " less error.";
+  return r;
+}
+
+KnobReading readResolution(const KnobResult& knob) {
+  KnobReading r;
+  std::string costs;
+  std::string errors;
+  for (const std::string backend : {"cpu", "gl"}) {
+    const std::vector<const ReportPoint*> points = pointsOf(knob, backend);
+    if (points.size() < 2) continue;
+    const ReportPoint& first = *points.front();
+    const ReportPoint& last = *points.back();
+    const double pixelRatio = static_cast<double>(last.vsReference.width) * last.vsReference.height /
+                              (static_cast<double>(first.vsReference.width) * first.vsReference.height);
+    const double timeRatio = first.msMedian > 0.0 ? last.msMedian / first.msMedian : 0.0;
+    r.detail += upper(backend) + ": " + times(pixelRatio) + " the pixels (" + first.setting + " to " + last.setting +
+                ") cost " + times(timeRatio) + " the time (" + ms(first.msMedian) + " to " + ms(last.msMedian) + ")";
+    r.detail += timeRatio < 0.5 * pixelRatio ? ", well below the pixel ratio: per-frame and per-triangle costs "
+                                               "dominate the small images"
+                                             : ", close to the pixel ratio: per-pixel work dominates";
+    r.detail += "; the RMSE against a same-size reference goes from " + levels(first.vsReference.rmse) + " to " +
+                levels(last.vsReference.rmse) + ". ";
+    costs += (costs.empty() ? "" : ", ") + upper(backend) + " " + times(timeRatio);
+    errors = levels(first.vsReference.rmse) + " to " + levels(last.vsReference.rmse);
+    r.summary = times(pixelRatio) + " the pixels cost ";
+  }
+  if (costs.empty()) return r;
+  r.summary += costs + " the time; the per-pixel error against a same-size reference falls from " + errors +
+               " (less aliasing per pixel).";
+  return r;
+}
+
+KnobReading readThreads(const KnobResult& knob) {
+  KnobReading r;
+  std::string best;
+  for (const std::string backend : {"cpu", "gl"}) {
+    const std::vector<const ReportPoint*> points = pointsOf(knob, backend);
+    if (points.size() < 2) continue;
+    const ReportPoint& one = *points.front();
+    r.detail += upper(backend) + ": " + one.setting + " " + ms(one.msMedian);
+    const ReportPoint* fastest = &one;
+    for (std::size_t i = 1; i < points.size(); ++i) {
+      const double speedup = points[i]->msMedian > 0.0 ? one.msMedian / points[i]->msMedian : 0.0;
+      r.detail += ", " + points[i]->setting + " " + ms(points[i]->msMedian) + " (" + times(speedup) + ")";
+      if (points[i]->msMedian < fastest->msMedian) fastest = points[i];
+    }
+    bool sameImage = true;
+    for (const ReportPoint* p : points) sameImage = sameImage && p->vsReference.rmse == one.vsReference.rmse;
+    r.detail += "; fastest with " + fastest->setting + ". " +
+                (sameImage ? "The error is the same at every count, as it must be. "
+                           : "The error changes with the count, which it must not: a bug to chase. ");
+    best += (best.empty() ? "" : ", ") + upper(backend) + " " + fastest->setting + " (" +
+            times(fastest->msMedian > 0.0 ? one.msMedian / fastest->msMedian : 1.0) + " over one)";
+  }
+  if (!best.empty()) r.summary = "Fastest: " + best + "; the images do not change with the count.";
+  return r;
+}
+
+KnobReading readPrecision(const KnobResult& knob) {
+  KnobReading r;
+  const ReportPoint* f = find(knob, "cpu", "float");
+  const ReportPoint* d = find(knob, "cpu", "double");
+  if (f && d) {
+    const TradeOff t = weigh("CPU", *f, *d);
+    r.detail = t.detail + " ";
+    r.summary = t.verdict == Verdict::Invisible
+                    ? "Float is enough: double changes the image by " + levels(t.effectRmse) + " (worst pixel " +
+                          std::to_string(t.effectMax) + ") at " + times(t.timeRatio) + " the time."
+                    : "Double changes the image visibly (" + levels(t.effectRmse) + ", worst pixel " +
+                          std::to_string(t.effectMax) + ") at " + times(t.timeRatio) + " the time: " +
+                          verdictText(t.verdict) + ".";
+  }
+  const ReportPoint* g = find(knob, "gl", "float");
+  if (g && f) {
+    r.detail += "GL (float) is " + levels(g->vsReference.rmse) + " from the reference, the CPU " +
+                levels(f->vsReference.rmse);
+    if (g->cpuVsGl) r.detail += "; the two float pipelines are " + levels(g->cpuVsGl->rmse) + " apart";
+    r.detail += ".";
+  }
+  return r;
+}
+
+std::string trimmed(std::string s) {
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s;
+}
+
+}  // namespace
+
+KnobReading readKnob(const KnobResult& knob) {
+  if (!knob.skipped.empty() && knob.points.size() < 2) return {"Not measured: " + knob.skipped, knob.skipped};
+  KnobReading r;
+  if (knob.id == "tessellation") r = readTessellation(knob);
+  else if (knob.id == "texture_filter") r = readTwo(knob, "nearest", "bilinear");
+  else if (knob.id == "lighting_space") r = readTwo(knob, "tangent", "world");
+  else if (knob.id == "tangent_transform") r = readTwo(knob, "inverse_transpose", "model");
+  else if (knob.id == "gl_sampling") r = readTwo(knob, "fast", "precise");
+  else if (knob.id == "resolution") r = readResolution(knob);
+  else if (knob.id == "threads") r = readThreads(knob);
+  else if (knob.id == "precision") r = readPrecision(knob);
+  if (!knob.skipped.empty()) r.detail += " (Part of this knob was not measured: " + knob.skipped + ")";
+  r.summary = trimmed(r.summary);
+  r.detail = trimmed(r.detail);
+  return r;
+}
+
+KnobReading readBases(const std::vector<BasisRow>& rows) {
+  const BasisRow* duff = nullptr;
+  const BasisRow* frisvad = nullptr;
+  const BasisRow* fixed = nullptr;
+  const BasisRow* best = nullptr;
+  for (const BasisRow& r : rows) {
+    if (r.method == BasisMethod::Duff2017) duff = &r;
+    if (r.method == BasisMethod::Frisvad2012) frisvad = &r;
+    if (r.method == BasisMethod::NaiveFixedHelper) fixed = &r;
+    if (r.method == BasisMethod::NaiveBestHelper) best = &r;
+  }
+  if (!duff || !frisvad || !fixed || !best) return {};
+  std::string s = "Duff et al. 2017 stays at " + fmt("%.1e", duff->stats.maxError) + " over every direction (" +
+                  fmt("%.1f", duff->nsPerBasis) + " ns a basis). Frisvad 2012 is as good for n.z > 0 (" +
+                  fmt("%.1e", frisvad->stats.maxErrorAwayFromMinusZ) + ") but reaches " +
+                  fmt("%.1e", frisvad->stats.maxErrorNearMinusZ) +
+                  " within 1e-3 rad of -Z, where 1 + n.z cancels in float: ";
+  s += frisvad->stats.maxErrorNearMinusZ > 100.0 * duff->stats.maxError
+           ? "a visible failure, for " + fmt("%.1f", frisvad->nsPerBasis) + " ns. "
+           : "not a visible failure on this run. ";
+  s += "The naive cross product with a fixed helper axis gives " + std::to_string(fixed->stats.nonFinite) +
+       " non-finite bases (n parallel to the helper); choosing the helper per normal fixes that (" +
+       fmt("%.1e", best->stats.maxError) + ") at " + fmt("%.1f", best->nsPerBasis) + " ns against Duff's " +
+       fmt("%.1f", duff->nsPerBasis) + " ns. ";
+  s += duff->nsPerBasis <= best->nsPerBasis ? "Duff is both the most accurate and the cheapest robust choice."
+                                            : "Duff is the accurate branch-free choice; here the naive fix is faster.";
+  KnobReading r;
+  r.detail = s;
+  r.summary = "Duff 2017 is accurate everywhere (" + fmt("%.1e", duff->stats.maxError) + ", " +
+              fmt("%.1f", duff->nsPerBasis) + " ns); Frisvad 2012 reaches " +
+              fmt("%.1e", frisvad->stats.maxErrorNearMinusZ) + " near -Z; a fixed helper axis gives " +
+              std::to_string(fixed->stats.nonFinite) + " NaN bases.";
+  return r;
+}
+
+}  // namespace twr::cli

@@ -1,0 +1,20 @@
+// The short written reading of each chart: what is worth its cost, written from the measured
+// numbers of that run (never canned), so it changes when the numbers change.
+#pragma once
+
+#include "app/cli/report_model.h"
+
+#include <string>
+#include <vector>
+
+namespace twr::cli {
+
+struct KnobReading {
+  std::string summary;  // one or two sentences for the list at the top of the report
+  std::string detail;   // the numbers behind it, per backend, under the knob's heading
+};
+
+KnobReading readKnob(const KnobResult& knob);
+KnobReading readBases(const std::vector<BasisRow>& rows);
+
+}  // namespace twr::cli

@@ -1,0 +1,612 @@
+#include "app/cli/report_sweeps.h"
+
+#include "app/cli/report_analytic_sphere.h"
+#include "app/cli/report_reading.h"
+#include "compare/metrics.h"
+#include "glrender/gl_renderer.h"
+#include "scene/errors.h"
+#include "scene/primitives.h"
+#include "scene/scene_file.h"
+#include "scene/texture.h"
+#include "softrender/cpu_renderer.h"
+#include "softrender/reference_renderer.h"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <memory>
+#include <sstream>
+#include <thread>
+
+extern char** environ;
+
+namespace twr::cli {
+
+namespace {
+
+// N of the N x N reference (16 samples per pixel): enough that edge coverage is known to
+// 1/16 and the texture is averaged over the pixel footprint.
+constexpr int kReferenceSamplesPerAxis = 4;
+constexpr int kWarmupFrames = 1;        // renders before timing (caches, JIT, first context)
+constexpr int kFramesDefault = 5;       // timed frames per point
+constexpr int kFramesQuick = 2;
+constexpr int kWidthDefault = 320, kHeightDefault = 240;  // pixels, most knobs
+constexpr int kWidthQuick = 160, kHeightQuick = 120;
+// Timing runs per basis construction; the fastest counts.
+constexpr int kBasisTimingRepetitions = 5;
+// Magic at the start of a child's output file, and the file layout version.
+constexpr char kChildMagic[8] = {'T', 'W', 'R', 'G', 'L', 'C', 'H', '1'};
+
+struct Timing {
+  double msMedian = 0.0, msMin = 0.0;
+  int frames = 0;
+};
+
+double medianOf(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// One warm-up render, then `frames` timed ones; `out` keeps the last image.
+Timing timeRenderer(Renderer& renderer, const Scene& scene, const RenderSettings& settings, int width, int height,
+                    int frames, RenderOutput& out) {
+  for (int i = 0; i < kWarmupFrames; ++i) out = renderer.render(scene, settings, width, height);
+  std::vector<double> ms;
+  for (int i = 0; i < frames; ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    out = renderer.render(scene, settings, width, height);
+    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  }
+  Timing t;
+  t.msMedian = medianOf(ms);
+  t.msMin = *std::min_element(ms.begin(), ms.end());
+  t.frames = frames;
+  return t;
+}
+
+ReportPoint makePoint(const std::string& setting, const std::string& backend, const Timing& timing,
+                      const RenderOutput& output, const RenderOutput& reference) {
+  ReportPoint p;
+  p.setting = setting;
+  p.backend = backend;
+  p.msMedian = timing.msMedian;
+  p.msMin = timing.msMin;
+  p.frames = timing.frames;
+  p.vsReference = compare(output, reference);
+  return p;
+}
+
+std::string sizeText(int width, int height) { return std::to_string(width) + "x" + std::to_string(height); }
+
+// Shared state of one report run.
+class Sweeper {
+ public:
+  Sweeper(const ReportOptions& options, std::ostream& progress)
+      : options_(options), progress_(progress), start_(std::chrono::steady_clock::now()) {
+    frames_ = options.quick ? kFramesQuick : kFramesDefault;
+    width_ = options.quick ? kWidthQuick : kWidthDefault;
+    height_ = options.quick ? kHeightQuick : kHeightDefault;
+  }
+
+  ReportData run();
+
+ private:
+  void say(const std::string& what) {
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    progress_ << "[report " << std::fixed << std::setprecision(1) << std::setw(6) << seconds << " s] " << what
+              << std::endl;
+  }
+  std::string scenePath(const std::string& name) const { return options_.assetsDir + "/scenes/" + name; }
+  Renderer& gl() {
+    if (!gl_) gl_ = makeGlRenderer();
+    return *gl_;
+  }
+  RenderOutput reference(const Scene& scene, const RenderSettings& settings, int width, int height,
+                         const std::string& what);
+
+  // Both backends at one setting, against `reference`; the GL row also carries CPU vs GL.
+  void measureBoth(KnobResult& knob, const std::string& setting, const Scene& scene, const RenderSettings& settings,
+                   int width, int height, const RenderOutput& reference, RenderOutput* cpuCopy = nullptr,
+                   RenderOutput* glCopy = nullptr);
+  ReportPoint measureOne(const std::string& knobId, const std::string& setting, const std::string& backend,
+                         Renderer& renderer, const Scene& scene, const RenderSettings& settings, int width,
+                         int height, const RenderOutput& reference, RenderOutput* outputCopy = nullptr);
+
+  // GL in a child process: a new llvmpipe with its own GALLIVM_PERF and LP_NUM_THREADS.
+  bool measureGlChild(KnobResult& knob, const std::string& setting, const std::string& sceneFile, int width,
+                      int height, bool fastSampling, int llvmpipeThreads, const RenderOutput& reference,
+                      const RenderOutput* cpuOutput, RenderOutput* glCopy = nullptr);
+
+  KnobResult tessellation();
+  KnobResult twoSettings(const std::string& id);
+  KnobResult glSampling();
+  KnobResult resolution();
+  KnobResult threads();
+  KnobResult precision();
+  void bases(ReportData& data);
+
+  const ReportOptions& options_;
+  std::ostream& progress_;
+  std::chrono::steady_clock::time_point start_;
+  int frames_ = kFramesDefault;
+  int width_ = kWidthDefault, height_ = kHeightDefault;
+  std::unique_ptr<Renderer> gl_;  // in-process llvmpipe, precise sampling
+  int childCount_ = 0;
+};
+
+RenderOutput Sweeper::reference(const Scene& scene, const RenderSettings& settings, int width, int height,
+                                const std::string& what) {
+  say(what + ": reference (double, " + std::to_string(kReferenceSamplesPerAxis) + "x" +
+      std::to_string(kReferenceSamplesPerAxis) + " samples) at " + sizeText(width, height));
+  ReferenceOptions options;
+  options.samplesPerAxis = kReferenceSamplesPerAxis;
+  options.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return makeReferenceRenderer(options)->render(scene, settings, width, height);
+}
+
+ReportPoint Sweeper::measureOne(const std::string& knobId, const std::string& setting, const std::string& backend,
+                                Renderer& renderer, const Scene& scene, const RenderSettings& settings, int width,
+                                int height, const RenderOutput& reference, RenderOutput* outputCopy) {
+  RenderOutput out;
+  const Timing timing = timeRenderer(renderer, scene, settings, width, height, frames_, out);
+  ReportPoint p = makePoint(setting, backend, timing, out, reference);
+  std::ostringstream line;
+  line << knobId << " " << setting << ", " << backend << ": " << std::fixed << std::setprecision(2) << p.msMedian
+       << " ms, rmse " << p.vsReference.rmse << " levels vs reference";
+  say(line.str());
+  if (outputCopy) *outputCopy = std::move(out);
+  return p;
+}
+
+void Sweeper::measureBoth(KnobResult& knob, const std::string& setting, const Scene& scene,
+                          const RenderSettings& settings, int width, int height, const RenderOutput& reference,
+                          RenderOutput* cpuCopy, RenderOutput* glCopy) {
+  std::unique_ptr<Renderer> cpu = makeCpuRenderer();
+  RenderOutput cpuOut, glOut;
+  knob.points.push_back(measureOne(knob.id, setting, "cpu", *cpu, scene, settings, width, height, reference, &cpuOut));
+  ReportPoint glPoint = measureOne(knob.id, setting, "gl", gl(), scene, settings, width, height, reference, &glOut);
+  glPoint.cpuVsGl = compare(cpuOut, glOut);
+  knob.points.push_back(std::move(glPoint));
+  if (cpuCopy) *cpuCopy = std::move(cpuOut);
+  if (glCopy) *glCopy = std::move(glOut);
+}
+
+// Marks the shortcut rows of `knob` (setting `shortcut`) with their difference from the same
+// backend at the exact setting.
+void addVsExact(KnobResult& knob, const std::string& shortcut, const std::string& exact, const std::string& backend,
+                const RenderOutput& shortcutOut, const RenderOutput& exactOut) {
+  for (ReportPoint& p : knob.points) {
+    if (p.setting == shortcut && p.backend == backend) {
+      p.vsExactSetting = compare(shortcutOut, exactOut);
+      p.exactSetting = exact;
+    }
+  }
+}
+
+// The child's output file: magic, width, height (int32), frames (int32), ms median and min
+// (double), then RGBA8 top row first. Written and read on the same machine.
+void writeChildFile(const std::string& path, const RenderOutput& out, const Timing& timing) {
+  std::ofstream file(path, std::ios::binary);
+  const std::int32_t header[3] = {out.width, out.height, timing.frames};
+  const double ms[2] = {timing.msMedian, timing.msMin};
+  file.write(kChildMagic, sizeof kChildMagic);
+  file.write(reinterpret_cast<const char*>(header), sizeof header);
+  file.write(reinterpret_cast<const char*>(ms), sizeof ms);
+  file.write(reinterpret_cast<const char*>(out.rgba.data()), static_cast<std::streamsize>(out.rgba.size()));
+  if (!file) throw InputError("report: cannot write '" + path + "'");
+}
+
+bool readChildFile(const std::string& path, RenderOutput& out, Timing& timing) {
+  std::ifstream file(path, std::ios::binary);
+  char magic[sizeof kChildMagic];
+  std::int32_t header[3];
+  double ms[2];
+  file.read(magic, sizeof magic);
+  file.read(reinterpret_cast<char*>(header), sizeof header);
+  file.read(reinterpret_cast<char*>(ms), sizeof ms);
+  if (!file || std::memcmp(magic, kChildMagic, sizeof magic) != 0 || header[0] < 1 || header[1] < 1 ||
+      header[0] > kMaxImageSide || header[1] > kMaxImageSide) {
+    return false;
+  }
+  out = RenderOutput{};
+  out.width = header[0];
+  out.height = header[1];
+  out.rgba.resize(static_cast<std::size_t>(out.width) * static_cast<std::size_t>(out.height) * 4);
+  file.read(reinterpret_cast<char*>(out.rgba.data()), static_cast<std::streamsize>(out.rgba.size()));
+  timing.frames = header[2];
+  timing.msMedian = ms[0];
+  timing.msMin = ms[1];
+  return static_cast<bool>(file);
+}
+
+// Runs `argv` with this process's environment minus GALLIVM_PERF (the child picks its own
+// sampling mode) and with LP_NUM_THREADS set when `llvmpipeThreads` > 0. Returns the exit
+// code, or -1 when it could not start or did not exit normally.
+int runChildProcess(const std::vector<std::string>& argv, int llvmpipeThreads, const std::string& stderrPath) {
+  std::vector<std::string> environment;
+  for (char** e = environ; *e; ++e) {
+    const std::string entry(*e);
+    if (entry.rfind("GALLIVM_PERF=", 0) == 0 || entry.rfind("LP_NUM_THREADS=", 0) == 0) continue;
+    environment.push_back(entry);
+  }
+  if (llvmpipeThreads > 0) environment.push_back("LP_NUM_THREADS=" + std::to_string(llvmpipeThreads));
+  std::vector<char*> argvPointers, envPointers;
+  for (const std::string& a : argv) argvPointers.push_back(const_cast<char*>(a.c_str()));
+  argvPointers.push_back(nullptr);
+  for (const std::string& e : environment) envPointers.push_back(const_cast<char*>(e.c_str()));
+  envPointers.push_back(nullptr);
+
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 2, stderrPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid = 0;
+  const int spawned = posix_spawn(&pid, argv[0].c_str(), &actions, nullptr, argvPointers.data(), envPointers.data());
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) return -1;
+  int status = 0;
+  if (waitpid(pid, &status, 0) != pid) return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string firstLine(const std::string& path) {
+  std::ifstream file(path);
+  std::string line;
+  std::getline(file, line);
+  return line;
+}
+
+bool Sweeper::measureGlChild(KnobResult& knob, const std::string& setting, const std::string& sceneFile, int width,
+                             int height, bool fastSampling, int llvmpipeThreads, const RenderOutput& reference,
+                             const RenderOutput* cpuOutput, RenderOutput* glCopy) {
+  const std::string stem = options_.workDir + "/gl_child_" + std::to_string(childCount_++);
+  std::vector<std::string> argv = {options_.selfExecutable, "report-gl-child", sceneFile,
+                                   "--width", std::to_string(width), "--height", std::to_string(height),
+                                   "--frames", std::to_string(frames_), "--out", stem + ".bin"};
+  if (fastSampling) argv.push_back("--fast-sampling");
+  const int code = runChildProcess(argv, llvmpipeThreads, stem + ".stderr.txt");
+  RenderOutput out;
+  Timing timing;
+  if (code != 0 || !readChildFile(stem + ".bin", out, timing) || out.width != width || out.height != height) {
+    knob.skipped = "the GL child process failed (exit " + std::to_string(code) + "): " + firstLine(stem + ".stderr.txt");
+    say(knob.id + " " + setting + ": " + knob.skipped);
+    return false;
+  }
+  ReportPoint p = makePoint(setting, "gl", timing, out, reference);
+  if (cpuOutput) p.cpuVsGl = compare(*cpuOutput, out);
+  std::ostringstream line;
+  line << knob.id << " " << setting << ", gl (child process): " << std::fixed << std::setprecision(2) << p.msMedian
+       << " ms, rmse " << p.vsReference.rmse << " levels vs reference";
+  say(line.str());
+  knob.points.push_back(std::move(p));
+  if (glCopy) *glCopy = std::move(out);
+  std::filesystem::remove(stem + ".bin");
+  std::filesystem::remove(stem + ".stderr.txt");
+  return true;
+}
+
+// A lit, textured sphere alone at the origin, the scene of the tessellation knob.
+Scene sphereScene(const std::shared_ptr<const Texture>& albedo, int stacks, int slices) {
+  Scene scene;
+  scene.camera.position = vec3(0.0f, 0.6f, 3.0f);
+  scene.camera.target = vec3(0.0f);
+  scene.camera.fovDeg = 45.0f;
+  scene.camera.near = 0.1f;
+  scene.camera.far = 20.0f;
+  scene.ambient = vec3(0.1f);
+  PointLight light;
+  light.posWorld = vec3(2.5f, 2.0f, 3.0f);
+  light.attenuation = vec3(1.0f, 0.0f, 0.0f);
+  scene.lights.push_back(light);
+  Material material;
+  material.name = "bricks";
+  material.kd = vec3(0.9f);
+  material.ks = vec3(0.6f);
+  material.shininess = 48.0f;
+  material.diffuseMap = albedo;
+  scene.materials.push_back(material);
+  MeshDesc desc;
+  desc.type = MeshType::Sphere;
+  desc.radius = 1.0f;
+  desc.stacks = stacks;
+  desc.slices = slices;
+  scene.meshDescs.push_back(desc);
+  scene.meshes.push_back(buildMesh(desc));
+  Node node;
+  node.name = "sphere";
+  node.meshIndex = 0;
+  node.materialIndex = 0;
+  scene.nodes.push_back(node);
+  return scene;
+}
+
+KnobResult Sweeper::tessellation() {
+  KnobResult knob;
+  knob.id = "tessellation";
+  knob.title = "Sphere tessellation (stacks x slices)";
+  knob.question = "More triangles follow the round silhouette, the smooth normal and the uv mapping more closely, "
+                  "at the cost of vertex work and more, smaller triangles.";
+  knob.reference = "The exact sphere, ray-traced in double with " + std::to_string(kReferenceSamplesPerAxis) + "x" +
+                   std::to_string(kReferenceSamplesPerAxis) +
+                   " samples per pixel and shaded by the pipeline's own fragment stage from the analytic "
+                   "position, normal, tangent and uv (app/cli/report_analytic_sphere.cpp).";
+  knob.scene = "a unit sphere with the brick albedo map and a specular highlight, " + sizeText(width_, height_);
+  auto albedo = std::make_shared<const Texture>(loadTexture(options_.assetsDir + "/textures/bricks_diffuse.png"));
+  const Scene exact = sphereScene(albedo, 4, 8);
+  say("tessellation: analytic sphere reference (ray traced, " + std::to_string(kReferenceSamplesPerAxis) + "x" +
+      std::to_string(kReferenceSamplesPerAxis) + " samples) at " + sizeText(width_, height_));
+  const RenderOutput reference = renderAnalyticSphere(exact, exact.settings, width_, height_, kReferenceSamplesPerAxis);
+  const std::vector<int> stacks = options_.quick ? std::vector<int>{4, 16, 64, 256}
+                                                 : std::vector<int>{4, 8, 16, 32, 64, 128, 256};
+  for (int s : stacks) {
+    const Scene scene = sphereScene(albedo, s, 2 * s);
+    measureBoth(knob, std::to_string(s) + "x" + std::to_string(2 * s), scene, scene.settings, width_, height_,
+                reference);
+  }
+  return knob;
+}
+
+// The knobs with two settings measured on an asset scene: texture filter, lighting space,
+// tangent transform. The reference uses the exact setting (bilinear, world, model).
+KnobResult Sweeper::twoSettings(const std::string& id) {
+  KnobResult knob;
+  knob.id = id;
+  std::string sceneFile = "default.json";
+  if (id == "texture_filter") {
+    knob.title = "Texture filter";
+    knob.question = "Bilinear filtering blends four texels per sample where nearest reads one.";
+    knob.reference = "The same stages in double with bilinear filtering and " + std::to_string(kReferenceSamplesPerAxis) +
+                     "x" + std::to_string(kReferenceSamplesPerAxis) + " samples per pixel (box filter).";
+  } else if (id == "lighting_space") {
+    knob.title = "Lighting space";
+    knob.question = "Tangent-space lighting moves the light and eye vectors into each vertex's tangent frame and "
+                    "interpolates them, saving the per-pixel TBN multiply at the cost of interpolating directions "
+                    "that should be recomputed per pixel.";
+    knob.reference = "The same stages in double with world-space lighting and " +
+                     std::to_string(kReferenceSamplesPerAxis) + "x" + std::to_string(kReferenceSamplesPerAxis) +
+                     " samples per pixel.";
+  } else {
+    sceneFile = "nonuniform_scale.json";
+    knob.title = "Tangent transform under non-uniform scale";
+    knob.question = "Tangents lie in the surface and transform with the model matrix; transforming them with the "
+                    "normal matrix (inverse transpose) is a common mistake that only shows under non-uniform scale.";
+    knob.reference = "The same stages in double with tangents transformed by the model matrix and " +
+                     std::to_string(kReferenceSamplesPerAxis) + "x" + std::to_string(kReferenceSamplesPerAxis) +
+                     " samples per pixel.";
+  }
+  const Scene scene = loadSceneFile(scenePath(sceneFile));
+  knob.scene = "assets/scenes/" + sceneFile + ", " + sizeText(width_, height_);
+  RenderSettings exact = scene.settings;
+  RenderSettings other = scene.settings;
+  std::string exactName, otherName;
+  if (id == "texture_filter") {
+    exact.textureFilter = TextureFilter::Bilinear;
+    other.textureFilter = TextureFilter::Nearest;
+    exactName = "bilinear";
+    otherName = "nearest";
+  } else if (id == "lighting_space") {
+    exact.lightingSpace = LightingSpace::World;
+    other.lightingSpace = LightingSpace::Tangent;
+    exactName = "world";
+    otherName = "tangent";
+  } else {
+    exact.tangentTransform = TangentTransform::Model;
+    other.tangentTransform = TangentTransform::InverseTranspose;
+    exactName = "model";
+    otherName = "inverse_transpose";
+  }
+  const RenderOutput ref = reference(scene, exact, width_, height_, id);
+  RenderOutput cpuShortcut, glShortcut, cpuExact, glExact;
+  measureBoth(knob, otherName, scene, other, width_, height_, ref, &cpuShortcut, &glShortcut);
+  measureBoth(knob, exactName, scene, exact, width_, height_, ref, &cpuExact, &glExact);
+  addVsExact(knob, otherName, exactName, "cpu", cpuShortcut, cpuExact);
+  addVsExact(knob, otherName, exactName, "gl", glShortcut, glExact);
+  return knob;
+}
+
+KnobResult Sweeper::glSampling() {
+  KnobResult knob;
+  knob.id = "gl_sampling";
+  knob.title = "llvmpipe texture sampling: precise versus fast";
+  knob.question = "llvmpipe's default (fast) path uses 8-bit bilinear weights and one level of detail per 2x2 "
+                  "quad; GALLIVM_PERF=no_aos_sampling,no_quad_lod makes it exact. llvmpipe reads the variable "
+                  "once per process, so each point runs in its own child process.";
+  knob.reference = "The same stages in double, bilinear, " + std::to_string(kReferenceSamplesPerAxis) + "x" +
+                   std::to_string(kReferenceSamplesPerAxis) + " samples per pixel.";
+  const std::string file = scenePath("default.json");
+  knob.scene = "assets/scenes/default.json, " + sizeText(width_, height_);
+  const Scene scene = loadSceneFile(file);
+  const RenderOutput ref = reference(scene, scene.settings, width_, height_, knob.id);
+  RenderOutput cpuOut;
+  std::unique_ptr<Renderer> cpu = makeCpuRenderer();
+  knob.points.push_back(measureOne(knob.id, "cpu pipeline", "cpu", *cpu, scene, scene.settings, width_, height_, ref, &cpuOut));
+  RenderOutput precise, fast;
+  if (!measureGlChild(knob, "precise", file, width_, height_, false, 0, ref, &cpuOut, &precise)) return knob;
+  if (measureGlChild(knob, "fast", file, width_, height_, true, 0, ref, &cpuOut, &fast)) {
+    addVsExact(knob, "fast", "precise", "gl", fast, precise);
+  }
+  return knob;
+}
+
+KnobResult Sweeper::resolution() {
+  KnobResult knob;
+  knob.id = "resolution";
+  knob.title = "Resolution";
+  knob.question = "Time grows with the pixel count; the error against a reference of the same size measures the "
+                  "aliasing and interpolation error per pixel.";
+  knob.reference = "The same stages in double with " + std::to_string(kReferenceSamplesPerAxis) + "x" +
+                   std::to_string(kReferenceSamplesPerAxis) + " samples per pixel, at each resolution.";
+  knob.scene = "assets/scenes/default.json";
+  const Scene scene = loadSceneFile(scenePath("default.json"));
+  const std::vector<std::pair<int, int>> sizes =
+      options_.quick ? std::vector<std::pair<int, int>>{{80, 60}, {160, 120}, {320, 240}}
+                     : std::vector<std::pair<int, int>>{{160, 120}, {320, 240}, {640, 480}, {1280, 960}};
+  for (const auto& [w, h] : sizes) {
+    const RenderOutput ref = reference(scene, scene.settings, w, h, knob.id);
+    measureBoth(knob, sizeText(w, h), scene, scene.settings, w, h, ref);
+  }
+  return knob;
+}
+
+KnobResult Sweeper::threads() {
+  KnobResult knob;
+  knob.id = "threads";
+  knob.title = "Thread count";
+  const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+  knob.question = "The CPU pipeline splits rows into bands, one per thread (CpuOptions::threads); llvmpipe splits "
+                  "the screen into tiles over LP_NUM_THREADS threads (set per child process). The image does not "
+                  "change, only the time. This machine reports " + std::to_string(hardware) + " hardware threads.";
+  knob.reference = "The same stages in double with " + std::to_string(kReferenceSamplesPerAxis) + "x" +
+                   std::to_string(kReferenceSamplesPerAxis) + " samples per pixel.";
+  const std::string file = scenePath("default.json");
+  const int w = options_.quick ? kWidthQuick : 640, h = options_.quick ? kHeightQuick : 480;
+  knob.scene = "assets/scenes/default.json, " + sizeText(w, h);
+  const Scene scene = loadSceneFile(file);
+  const RenderOutput ref = reference(scene, scene.settings, w, h, knob.id);
+  const std::vector<int> counts = options_.quick ? std::vector<int>{1, 2} : std::vector<int>{1, 2, 4};
+  for (int n : counts) {
+    CpuOptions cpuOptions;
+    cpuOptions.threads = n;
+    std::unique_ptr<Renderer> cpu = makeCpuRenderer(cpuOptions);
+    const std::string setting = std::to_string(n) + (n == 1 ? " thread" : " threads");
+    RenderOutput cpuOut;
+    knob.points.push_back(measureOne(knob.id, setting, "cpu", *cpu, scene, scene.settings, w, h, ref, &cpuOut));
+    if (knob.skipped.empty()) measureGlChild(knob, setting, file, w, h, false, n, ref, &cpuOut);
+  }
+  return knob;
+}
+
+KnobResult Sweeper::precision() {
+  KnobResult knob;
+  knob.id = "precision";
+  knob.title = "Float versus double pipeline";
+  knob.question = "The same stage code instantiated with double instead of float (one sample per pixel): what "
+                  "does float precision cost in accuracy, and what would double cost in time?";
+  knob.reference = "The same stages in double with " + std::to_string(kReferenceSamplesPerAxis) + "x" +
+                   std::to_string(kReferenceSamplesPerAxis) + " samples per pixel.";
+  knob.scene = "assets/scenes/default.json, " + sizeText(width_, height_);
+  const Scene scene = loadSceneFile(scenePath("default.json"));
+  const RenderOutput ref = reference(scene, scene.settings, width_, height_, knob.id);
+  std::unique_ptr<Renderer> cpu = makeCpuRenderer();
+  ReferenceOptions doubleOptions;
+  doubleOptions.samplesPerAxis = 1;
+  std::unique_ptr<Renderer> cpuDouble = makeReferenceRenderer(doubleOptions);
+  RenderOutput floatOut, doubleOut, glOut;
+  knob.points.push_back(measureOne(knob.id, "float", "cpu", *cpu, scene, scene.settings, width_, height_, ref, &floatOut));
+  ReportPoint d = measureOne(knob.id, "double", "cpu", *cpuDouble, scene, scene.settings, width_, height_, ref, &doubleOut);
+  knob.points.push_back(std::move(d));
+  addVsExact(knob, "float", "double", "cpu", floatOut, doubleOut);
+  ReportPoint g = measureOne(knob.id, "float", "gl", gl(), scene, scene.settings, width_, height_, ref, &glOut);
+  g.cpuVsGl = compare(floatOut, glOut);
+  knob.points.push_back(std::move(g));
+  return knob;
+}
+
+void Sweeper::bases(ReportData& data) {
+  say("orthonormal bases: measuring four constructions");
+  const std::size_t sphereCount = options_.quick ? 100000 : 1000000;
+  const std::size_t nearAxisCount = options_.quick ? 2000 : 20000;
+  const std::vector<vec3> directions = basisTestDirections(sphereCount, nearAxisCount);
+  data.basisDirections = directions.size();
+  for (BasisMethod method : kAllBasisMethods) {
+    BasisRow row;
+    row.method = method;
+    row.stats = measureBasisError(method, directions);
+    // Time: build every basis, fold the results into a sum the compiler must keep; the best
+    // of a few repetitions, since other processes share the machine.
+    double bestNs = 0.0;
+    for (int repetition = 0; repetition < kBasisTimingRepetitions; ++repetition) {
+      const auto start = std::chrono::steady_clock::now();
+      float sink = 0.0f;
+      for (const vec3& n : directions) {
+        const OrthonormalBasis b = basisFromNormal(n, method);
+        sink += b.b1.x + b.b2.y;
+      }
+      const double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
+      volatile float keep = sink;  // a store the compiler must make, so the loop is not dropped
+      static_cast<void>(keep);
+      if (repetition == 0 || ns < bestNs) bestNs = ns;
+    }
+    row.nsPerBasis = bestNs / static_cast<double>(directions.size());
+    data.bases.push_back(row);
+  }
+  const KnobReading reading = readBases(data.bases);
+  data.basisSummary = reading.summary;
+  data.basisReading = reading.detail;
+}
+
+std::string machineDescription() {
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  std::string line, model = "unknown CPU";
+  while (std::getline(cpuinfo, line)) {
+    if (line.rfind("model name", 0) == 0) {
+      model = line.substr(line.find(':') + 2);
+      break;
+    }
+  }
+  return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads";
+}
+
+ReportData Sweeper::run() {
+  ReportData data;
+  data.quick = options_.quick;
+  data.referenceSamplesPerAxis = kReferenceSamplesPerAxis;
+  data.width = width_;
+  data.height = height_;
+  const std::time_t now = std::time(nullptr);
+  char when[64];
+  std::strftime(when, sizeof when, "%Y-%m-%d %H:%M:%S", std::localtime(&now));
+  data.generatedAt = when;
+
+  data.knobs.push_back(tessellation());
+  data.knobs.push_back(twoSettings("texture_filter"));
+  data.knobs.push_back(twoSettings("lighting_space"));
+  data.knobs.push_back(twoSettings("tangent_transform"));
+  data.knobs.push_back(glSampling());
+  data.knobs.push_back(resolution());
+  data.knobs.push_back(threads());
+  data.knobs.push_back(precision());
+  for (KnobResult& knob : data.knobs) {
+    const KnobReading reading = readKnob(knob);
+    knob.summary = reading.summary;
+    knob.reading = reading.detail;
+  }
+  bases(data);
+  data.machine = machineDescription() + "; GL: " + glRendererString() + ", " + glVersionString();
+  data.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  say("done");
+  return data;
+}
+
+}  // namespace
+
+ReportData runReportSweeps(const ReportOptions& options, std::ostream& progress) {
+  Sweeper sweeper(options, progress);
+  return sweeper.run();
+}
+
+void runGlChild(const std::string& scenePath, int width, int height, int frames, bool fastSampling,
+                const std::string& outPath) {
+  const Scene scene = loadSceneFile(scenePath);
+  GlOptions options;
+  options.fastSampling = fastSampling;
+  std::unique_ptr<Renderer> renderer = makeGlRenderer(options);
+  RenderOutput out;
+  const Timing timing = timeRenderer(*renderer, scene, scene.settings, width, height, frames, out);
+  const std::string expected = fastSampling ? "fast" : "precise";
+  if (glSamplingMode() != expected) {
+    throw InputError("report-gl-child: llvmpipe samples in " + glSamplingMode() + " mode, expected " + expected);
+  }
+  writeChildFile(outPath, out, timing);
+}
+
+}  // namespace twr::cli
