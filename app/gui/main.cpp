@@ -47,7 +47,7 @@ int main(int argc, char** argv) {
       "whole window (the Screenshot button saves the view and both images).\nExit codes: 0 ok, 2 bad command line, no display or no usable OpenGL 3.3, or the screenshot "
       "could not be written. A scene file that does not load is shown as an error in the window (exit 0)."};
   app.add_option("SCENE", options.scenePath,
-                 "Scene file (JSON, docs/scenes.md). Default: the last scene opened, else "
+                 "Scene file (JSON, docs/scene-format.md). Default: the last scene opened, else "
                  "assets/scenes/default.json");
   app.add_flag("--reset", options.reset, "Forget the remembered settings and window layout before starting");
   app.add_option("--frames", options.frames,
