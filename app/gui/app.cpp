@@ -294,7 +294,9 @@ bool GuiApp::settled() const {
   if (cpuFrame_.revision != now || glFrame_.revision != now) return false;
   if (cpuFrame_.output && glFrame_.output && diff_.revision != now) return false;
   if (pin_.pixel) {
-    if (!pin_.cpu || pin_.cpuRevision != now) return false;
+    // A CPU frame that threw has no probe (its error is shown instead).
+    const bool cpuProbeDone = (pin_.cpu && pin_.cpuRevision == now) || !cpuFrame_.error.empty();
+    if (!cpuProbeDone) return false;
     if (pin_.glError.empty() && std::any_of(pin_.gl.begin(), pin_.gl.end(), [](const auto& s) { return !s; }))
       return false;
   }
