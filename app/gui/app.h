@@ -56,7 +56,7 @@ struct PinState {
   std::string glError;
 };
 
-enum class DragMode { None, Orbit, Pan, Divider };
+enum class DragMode { None, Orbit, Pan, Divider, Light };
 
 class GuiApp {
  public:
@@ -149,6 +149,7 @@ class GuiApp {
   bool cpuTextureStale_ = true, glTextureStale_ = true;
 
   DragMode dragMode_ = DragMode::None;
+  int dragLight_ = -1;  // the light a DragMode::Light moves
   ImVec2 pressPos_{0.0f, 0.0f};
   bool dragged_ = false;
   std::optional<PixelPos> hovered_;

@@ -52,4 +52,18 @@ void zoomCamera(Camera& camera, float wheelSteps) {
   camera.position = camera.target + distance * dirWorld;
 }
 
+bool dragPointInViewPlane(const Camera& camera, vec3& pointWorld, float dxPoints, float dyPoints,
+                          float viewHeightPoints) {
+  if (!(viewHeightPoints > 0.0f)) return false;
+  const vec3 dWorld = safeNormalize(camera.position - camera.target);
+  const vec3 rWorld = safeNormalize(glm::cross(kWorldUp, dWorld), vec3(1.0f, 0.0f, 0.0f));
+  const vec3 uWorld = glm::cross(dWorld, rWorld);
+  // The camera looks along -D: the depth of the point in front of it.
+  const float depth = glm::dot(pointWorld - camera.position, -dWorld);
+  if (!(depth > camera.near)) return false;
+  const float worldPerPoint = 2.0f * depth * std::tan(0.5f * degreesToRadians(camera.fovDeg)) / viewHeightPoints;
+  pointWorld += (dxPoints * rWorld - dyPoints * uWorld) * worldPerPoint;
+  return true;
+}
+
 }  // namespace twr::gui

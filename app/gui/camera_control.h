@@ -26,5 +26,9 @@ void orbitCamera(Camera& camera, float dxPoints, float dyPoints);
 void panCamera(Camera& camera, float dxPoints, float dyPoints, float viewHeightPoints);
 // Moves P along T - P; positive steps come closer.
 void zoomCamera(Camera& camera, float wheelSteps);
+// Moves a point (a light) parallel to the image plane so that it follows the mouse at its
+// own depth. Returns false (and leaves it) when the point is not in front of the camera.
+bool dragPointInViewPlane(const Camera& camera, vec3& pointWorld, float dxPoints, float dyPoints,
+                          float viewHeightPoints);
 
 }  // namespace twr::gui

@@ -41,7 +41,7 @@ void GuiApp::drawCameraTab() {
   sectionTitle("Mouse, over the image");
   hintText("Left drag: orbit P around T.\nRight or middle drag, or Shift + left drag: pan P and T.\n"
            "Wheel: zoom (move P towards T).\nLeft click without dragging: pin that pixel in the inspector.\n"
-           "Split view: drag the divider.");
+           "Drag a light marker (L0, L1, ...): move that light.\nSplit view: drag the divider.");
 
   sectionTitle("Matrices (as both renderers build them)");
   hintText("D = normalize(P - T), R = normalize(cross(Up, D)), U = cross(D, R);\n"

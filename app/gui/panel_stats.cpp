@@ -80,7 +80,7 @@ void GuiApp::drawStatsPanel() {
         "Fragments that passed the depth test (GL: GL_SAMPLES_PASSED).");
     ImGui::EndTable();
   }
-  ImGui::TextDisabled("UI %.0f fps. GL: %s, %s", static_cast<double>(ImGui::GetIO().Framerate),
+  ImGui::TextDisabled("UI %.0f redraws/s (fewer when idle). GL: %s, %s", static_cast<double>(ImGui::GetIO().Framerate),
                       window_->glVersion().c_str(), window_->glRenderer().c_str());
 
   sectionTitle("Diff (CPU vs GL, same edit)");

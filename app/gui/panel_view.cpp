@@ -6,6 +6,7 @@
 
 #include "compare/colours.h"
 #include "compare/heatmap.h"
+#include "scene/camera.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -29,6 +30,9 @@ constexpr float kDividerGrabPoints = 6.0f;
 constexpr float kMinMarkerPoints = 9.0f;
 // How long a screenshot message stays under the toolbar, seconds.
 constexpr double kMessageSeconds = 8.0;
+// Radius of a light marker, and how close a press must be to grab it, points (inclusive).
+constexpr float kLightMarkerPoints = 6.0f;
+constexpr float kLightGrabPoints = 10.0f;
 // Steps of the heat ramp drawn in the legend.
 constexpr int kLegendRampSteps = 64;
 
@@ -90,6 +94,17 @@ void drawCentredMessage(ImDrawList* draw, const Rect& rect, const std::string& t
   const ImVec2 size = ImGui::CalcTextSize(text.c_str(), nullptr, false, wrap);
   const ImVec2 at(rect.min.x + 0.5f * (rect.width() - size.x), rect.min.y + 0.5f * (rect.height() - size.y));
   draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), at, colour, text.c_str(), nullptr, wrap);
+}
+
+// Where a world point lands on an image rect, or nothing behind the camera. The camera must
+// be valid (validateCamera).
+std::optional<ImVec2> projectToRect(const Camera& camera, const vec3& posWorld, const Rect& rect, int width, int height) {
+  const mat4 clipFromWorld =
+      clipFromView(camera, static_cast<float>(width) / static_cast<float>(height)) * viewFromWorld(camera);
+  const vec4 posClip = clipFromWorld * vec4(posWorld, 1.0f);
+  if (!(posClip.w > 0.0f)) return std::nullopt;
+  const float xNdc = posClip.x / posClip.w, yNdc = posClip.y / posClip.w;
+  return ImVec2(rect.min.x + (0.5f * xNdc + 0.5f) * rect.width(), rect.min.y + (0.5f - 0.5f * yNdc) * rect.height());
 }
 
 std::string ageText(const BackendFrame& frame) {
@@ -181,6 +196,10 @@ void GuiApp::drawViewToolbar() {
   ImGui::SameLine();
   if (ImGui::Checkbox("Checker bg", &prefs_.checkerBackground)) cpuTextureStale_ = glTextureStale_ = true;
   itemTooltip("Show pixels no triangle covered as a checker, so coverage is visible against any background colour.");
+  ImGui::SameLine();
+  ImGui::Checkbox("Lights", &prefs_.showLights);
+  itemTooltip("Mark each point light over the images (L0, L1, ...). Drag a marker to move the light parallel to "
+              "the image at its own depth.");
 
   if (prefs_.viewMode == ViewMode::Flicker) {
     ImGui::SameLine();
@@ -364,6 +383,27 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
     }
   }
 
+  // The lights, in every image: a disc of the light's diffuse colour, and its index.
+  if (prefs_.showLights && renderBlocker_.empty() && renderWidth_ > 0 && renderHeight_ > 0) {
+    for (const Rect& slot : slots) {
+      const Rect rect = fitRect(slot, renderWidth_, renderHeight_);
+      draw->PushClipRect(rect.min, rect.max, true);
+      for (std::size_t i = 0; i < doc_.scene.lights.size(); ++i) {
+        const PointLight& light = doc_.scene.lights[i];
+        const std::optional<ImVec2> at = projectToRect(doc_.scene.camera, light.posWorld, rect, renderWidth_, renderHeight_);
+        if (!at) continue;
+        const vec3 colour = glm::clamp(light.diffuse, 0.0f, 1.0f) * 255.0f;
+        const float radius = kLightMarkerPoints * uiScale_;
+        draw->AddCircleFilled(*at, radius + 1.5f, IM_COL32(0, 0, 0, 220));
+        draw->AddCircleFilled(*at, radius, IM_COL32(static_cast<int>(colour.r), static_cast<int>(colour.g),
+                                                    static_cast<int>(colour.b), 255));
+        const std::string name = "L" + std::to_string(i);
+        draw->AddText(ImVec2(at->x + radius + 3.0f, at->y - radius - 3.0f), IM_COL32(255, 255, 255, 230), name.c_str());
+      }
+      draw->PopClipRect();
+    }
+  }
+
   // The pinned pixel, in every image.
   if (pin_.pixel && renderWidth_ > 0 && renderHeight_ > 0) {
     for (const Rect& slot : slots) {
@@ -399,6 +439,21 @@ void GuiApp::handleImageMouse(ImVec2 regionMin, ImVec2 regionSize) {
   };
   const Rect image = fitRect(slots.front(), renderWidth_, renderHeight_);
   const float dividerX = image.min.x + prefs_.splitFraction * image.width();
+  // The light whose marker is within grab distance of a point, if any.
+  const auto lightAt = [&](ImVec2 point) -> int {
+    if (!prefs_.showLights || !renderBlocker_.empty()) return -1;
+    for (const Rect& slot : slots) {
+      const Rect rect = fitRect(slot, renderWidth_, renderHeight_);
+      for (std::size_t i = 0; i < doc_.scene.lights.size(); ++i) {
+        const std::optional<ImVec2> at =
+            projectToRect(doc_.scene.camera, doc_.scene.lights[i].posWorld, rect, renderWidth_, renderHeight_);
+        if (!at || !rect.contains(*at)) continue;
+        const float dx = at->x - point.x, dy = at->y - point.y;
+        if (dx * dx + dy * dy <= kLightGrabPoints * kLightGrabPoints * uiScale_ * uiScale_) return static_cast<int>(i);
+      }
+    }
+    return -1;
+  };
   const auto nearDivider = [&](ImVec2 point) {
     return prefs_.viewMode == ViewMode::Split && std::fabs(point.x - dividerX) <= kDividerGrabPoints * uiScale_ &&
            point.y >= image.min.y && point.y < image.max.y;
@@ -412,13 +467,19 @@ void GuiApp::handleImageMouse(ImVec2 regionMin, ImVec2 regionSize) {
   hovered_ = hovered ? pixelAt(io.MousePos) : std::nullopt;
   if (hovered && (nearDivider(io.MousePos) || dragMode_ == DragMode::Divider)) {
     ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
+  } else if (hovered && (dragMode_ == DragMode::Light || (dragMode_ == DragMode::None && lightAt(io.MousePos) >= 0))) {
+    ImGui::SetMouseCursor(ImGuiMouseCursor_Hand);
   }
 
   if (ImGui::IsItemActivated()) {
     pressPos_ = io.MousePos;
     dragged_ = false;
     if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
-      dragMode_ = nearDivider(io.MousePos) ? DragMode::Divider : io.KeyShift ? DragMode::Pan : DragMode::Orbit;
+      dragLight_ = lightAt(io.MousePos);
+      dragMode_ = nearDivider(io.MousePos) ? DragMode::Divider
+                  : dragLight_ >= 0        ? DragMode::Light
+                  : io.KeyShift            ? DragMode::Pan
+                                           : DragMode::Orbit;
     } else {
       dragMode_ = DragMode::Pan;
     }
@@ -431,9 +492,17 @@ void GuiApp::handleImageMouse(ImVec2 regionMin, ImVec2 regionSize) {
     if (dragMode_ == DragMode::Divider) {
       if (image.width() > 0.0f) prefs_.splitFraction = std::clamp((io.MousePos.x - image.min.x) / image.width(), 0.0f, 1.0f);
     } else if (dragged_ && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
-      if (dragMode_ == DragMode::Orbit) orbitCamera(doc_.scene.camera, io.MouseDelta.x, io.MouseDelta.y);
-      else panCamera(doc_.scene.camera, io.MouseDelta.x, io.MouseDelta.y, image.height());
-      doc_.touch();
+      if (dragMode_ == DragMode::Light) {
+        if (dragLight_ >= 0 && dragLight_ < static_cast<int>(doc_.scene.lights.size()) &&
+            dragPointInViewPlane(doc_.scene.camera, doc_.scene.lights[static_cast<std::size_t>(dragLight_)].posWorld,
+                                 io.MouseDelta.x, io.MouseDelta.y, image.height())) {
+          doc_.touch();
+        }
+      } else {
+        if (dragMode_ == DragMode::Orbit) orbitCamera(doc_.scene.camera, io.MouseDelta.x, io.MouseDelta.y);
+        else panCamera(doc_.scene.camera, io.MouseDelta.x, io.MouseDelta.y, image.height());
+        doc_.touch();
+      }
     }
   }
   if (ImGui::IsItemDeactivated()) {

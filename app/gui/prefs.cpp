@@ -100,6 +100,7 @@ GuiPrefs loadPrefs(const std::filesystem::path& path, std::string& warning) {
   readFloat(object, "split_fraction", 0.0f, 1.0f, prefs.splitFraction, problems);
   readBool(object, "checker_background", prefs.checkerBackground, problems);
   readBool(object, "diff_show_classes", prefs.diffShowClasses, problems);
+  readBool(object, "show_lights", prefs.showLights, problems);
   name.clear();
   readString(object, "heat_scale", name, problems);
   if (name == "linear") prefs.heatScale = HeatScale::Linear;
@@ -129,6 +130,7 @@ bool savePrefs(const std::filesystem::path& path, const GuiPrefs& prefs, std::st
       {"split_fraction", prefs.splitFraction},
       {"checker_background", prefs.checkerBackground},
       {"diff_show_classes", prefs.diffShowClasses},
+      {"show_lights", prefs.showLights},
       {"heat_scale", toString(prefs.heatScale)},
       {"heat_max_levels", prefs.heatMaxLevels},
       {"screenshot_dir", prefs.screenshotDir},

@@ -32,6 +32,7 @@ struct GuiPrefs {
   float flickerHz = 2.0f;
   float splitFraction = 0.5f;  // divider position across the image, 0 = left edge, 1 = right edge
   bool checkerBackground = false;  // background pixels shown as a checker instead of their colour
+  bool showLights = true;          // light markers over the images (drag them to move a light)
   bool diffShowClasses = false;    // diff view: class map instead of the heat map
   HeatScale heatScale = HeatScale::Log;
   int heatMaxLevels = 32;  // heat ramp top, levels in [1, 255]
