@@ -37,6 +37,9 @@ inline constexpr SceneTolerance kSceneTolerances[] = {
     {"tangent_space.json"},
     {"tbn_lines.json"},
     {"obj_model.json"},
+    {"stability_poles.json"},
+    {"stability_scales.json"},
+    {"stability_w_zero.json"},
 };
 
 }  // namespace twr::suite

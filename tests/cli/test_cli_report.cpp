@@ -1,0 +1,106 @@
+// `twinraster report --quick`: the files exist, the CSV has every knob with both backends and
+// the basis rows, the HTML is self-contained with an SVG chart per knob, progress goes to
+// stderr, and bad options exit 2.
+#include "cli_run.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <sstream>
+
+namespace twr::testcli {
+namespace {
+
+const std::string kCli = TWINRASTER_CLI;
+
+std::vector<std::string> splitCsvLine(const std::string& line) {
+  std::vector<std::string> cells;
+  std::string cell;
+  bool quoted = false;
+  for (char c : line) {
+    if (c == '"') {
+      quoted = !quoted;
+    } else if (c == ',' && !quoted) {
+      cells.push_back(cell);
+      cell.clear();
+    } else {
+      cell += c;
+    }
+  }
+  cells.push_back(cell);
+  return cells;
+}
+
+std::size_t count(const std::string& text, const std::string& part) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + part.size())) ++n;
+  return n;
+}
+
+TEST(CliReport, QuickWritesHtmlAndCsvWithEveryKnob) {
+  const std::filesystem::path dir = testDir("cli_report");
+  const std::filesystem::path out = dir / "report";
+  const RunResult r = runProgram(kCli, "report --quick --assets \"" + kSource + "/assets\" --out \"" + out.string() + "\"", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  ASSERT_TRUE(std::filesystem::exists(out / "report.html"));
+  ASSERT_TRUE(std::filesystem::exists(out / "results.csv"));
+  EXPECT_FALSE(std::filesystem::exists(out / "work")) << "child-process scratch files are removed";
+
+  // Progress on stderr: which knob, which point, elapsed seconds.
+  expectContains(r.err, "[report");
+  expectContains(r.err, "tessellation 4x8, cpu:");
+  expectContains(r.err, " s] ");
+  expectContains(r.out, "report.html");
+
+  const std::string csv = readFile(out / "results.csv");
+  std::istringstream lines(csv);
+  std::string header;
+  std::getline(lines, header);
+  const std::vector<std::string> columns = splitCsvLine(header);
+  ASSERT_GE(columns.size(), 10u);
+  EXPECT_EQ(columns[0], "knob");
+  EXPECT_EQ(columns[3], "ms_median");
+  EXPECT_EQ(columns[6], "rmse_levels");
+  std::set<std::pair<std::string, std::string>> knobBackends;
+  std::set<std::string> basisMethods;
+  std::string line;
+  while (std::getline(lines, line)) {
+    const std::vector<std::string> cells = splitCsvLine(line);
+    ASSERT_EQ(cells.size(), columns.size()) << line;
+    if (cells[0] == "orthonormal_basis") {
+      basisMethods.insert(cells[1]);
+      continue;
+    }
+    knobBackends.insert({cells[0], cells[2]});
+    EXPECT_GT(std::stod(cells[3]), 0.0) << "time per frame: " << line;
+    EXPECT_GE(std::stod(cells[6]), 0.0) << "rmse: " << line;
+  }
+  for (const char* knob : {"tessellation", "texture_filter", "lighting_space", "tangent_transform", "resolution",
+                           "threads", "precision"}) {
+    EXPECT_TRUE(knobBackends.count({knob, "cpu"})) << knob << " has no cpu row";
+    EXPECT_TRUE(knobBackends.count({knob, "gl"})) << knob << " has no gl row";
+  }
+  EXPECT_TRUE(knobBackends.count({"gl_sampling", "gl"})) << "gl_sampling has no gl row";
+  EXPECT_EQ(basisMethods, (std::set<std::string>{"naive_fixed_helper", "naive_best_helper", "frisvad_2012", "duff_2017"}));
+
+  const std::string html = readFile(out / "report.html");
+  expectContains(html, "<!DOCTYPE html>");
+  EXPECT_EQ(count(html, "<svg"), 8u) << "one chart per knob";
+  expectContains(html, "time per frame, ms");
+  expectContains(html, "RMSE vs reference, levels");
+  expectContains(html, "duff_2017");
+  EXPECT_EQ(html.find("http://"), std::string::npos) << "self-contained: no links out";
+  EXPECT_EQ(html.find("https://"), std::string::npos) << "self-contained: no links out";
+  EXPECT_EQ(html.find("<script"), std::string::npos);
+}
+
+TEST(CliReport, BadAssetsFolderExitsTwo) {
+  const std::filesystem::path dir = testDir("cli_report");
+  const RunResult r = runProgram(kCli, "report --quick --assets \"" + dir.string() + "\" --out \"" + (dir / "r").string() + "\"", dir);
+  EXPECT_EQ(r.exitCode, 2);
+  expectContains(r.err, "--assets");
+  expectContains(r.err, "scenes/default.json");
+}
+
+}  // namespace
+}  // namespace twr::testcli
