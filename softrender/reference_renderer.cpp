@@ -1,6 +1,8 @@
 // The reference renderer: the pipeline stages with T = double, N x N sub-pixel passes, box
-// filter. The draw loop is the CPU renderer's (cpu_renderer.cpp), writing unrounded double
-// colours into a sample target instead of the RGBA8 framebuffer.
+// filter. The draw loop is the CPU renderer's original one (vertex stage per item, clip, fan,
+// setup, raster, interpolate, depth test, shade), writing unrounded colours into a sample
+// target instead of the RGBA8 framebuffer. It is templated on T too, so the same loop with
+// T = float measures what double itself costs (ReferenceOptions::doublePrecision).
 #include "softrender/reference_renderer.h"
 
 #include "scene/camera.h"
@@ -26,8 +28,6 @@
 namespace twr {
 
 namespace {
-
-using ClipVertexD = ClipVertexT<double>;
 
 // Most worker threads a pass uses (inclusive), as the CPU renderer.
 constexpr int kMaxThreads = 64;
@@ -83,12 +83,13 @@ struct SampleTarget {
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x); }
 };
 
+template <typename T>
 struct ReferenceDrawState {
-  std::vector<ClipVertexD> vertices;
+  std::vector<ClipVertexT<T>> vertices;
   std::uint32_t firstTriangleId = 0;
   const Mesh* mesh = nullptr;
   ShaderKey shaderKey;
-  ShadeUniformsT<double> shade;
+  ShadeUniformsT<T> shade;
   ClipConfig clip;
   CullMode cull = CullMode::Back;
   FrontFace frontFace = FrontFace::Ccw;
@@ -102,12 +103,12 @@ struct Band {
   bool countsTriangles = true;
 };
 
-template <typename Features>
-void drawSampleTriangle(const ReferenceDrawState& s, const ClipVertexD& v0, const ClipVertexD& v1,
-                        const ClipVertexD& v2, std::uint32_t triangleId, const Band& band, SampleTarget& target,
+template <typename Features, typename T>
+void drawSampleTriangle(const ReferenceDrawState<T>& s, const ClipVertexT<T>& v0, const ClipVertexT<T>& v1,
+                        const ClipVertexT<T>& v2, std::uint32_t triangleId, const Band& band, SampleTarget& target,
                         RenderStats& stats) {
-  const std::array<WindowVertexT<double>, 3> window{windowFromClip(v0, s.viewport), windowFromClip(v1, s.viewport),
-                                                    windowFromClip(v2, s.viewport)};
+  const std::array<WindowVertexT<T>, 3> window{windowFromClip(v0, s.viewport), windowFromClip(v1, s.viewport),
+                                               windowFromClip(v2, s.viewport)};
   TriangleSetup setup;
   if (setupTriangle(window, s.cull, s.frontFace, s.viewport, setup) != SetupResult::Ready) {
     if (band.countsTriangles) ++stats.trianglesCulled;
@@ -115,14 +116,14 @@ void drawSampleTriangle(const ReferenceDrawState& s, const ClipVertexD& v0, cons
   }
   if (band.countsTriangles) ++stats.trianglesProduced;
   if (setup.y1 < band.rowBegin || setup.y0 >= band.rowEnd) return;
-  const InterpolationSetupT<double> interpolation = makeInterpolationSetup(window, setup);
+  const InterpolationSetupT<T> interpolation = makeInterpolationSetup(window, setup);
   const int tangentLights = s.tangentLighting ? s.shade.lightCount : 0;
   rasterizeTriangle(setup, band.rowBegin, band.rowEnd, [&](int py, Span span) {
     for (int px = span.xBegin; px < span.xEnd; ++px) {
-      const PixelWeightsT<double> weights = pixelWeights(interpolation, px, py);
+      const PixelWeightsT<T> weights = pixelWeights(interpolation, px, py);
       const std::size_t i = target.index(px, py);
       if (!(weights.depth < target.depth[i])) continue;  // GL_LESS
-      const FragmentT<double> fragment = interpolateFragment(v0, v1, v2, weights, s.tangentLighting, tangentLights);
+      const FragmentT<T> fragment = interpolateFragment(v0, v1, v2, weights, s.tangentLighting, tangentLights);
       target.colour[i] = glm::dvec3(shadeFragment<Features>(fragment, s.shade, nullptr));
       target.depth[i] = weights.depth;
       target.triangleId[i] = triangleId;
@@ -131,19 +132,19 @@ void drawSampleTriangle(const ReferenceDrawState& s, const ClipVertexD& v0, cons
   });
 }
 
-template <typename Features>
-void drawItemSamples(const ReferenceDrawState& s, const Band& band, SampleTarget& target, RenderStats& stats) {
-  ClipPolygonT<double> polygon, scratch;
+template <typename Features, typename T>
+void drawItemSamples(const ReferenceDrawState<T>& s, const Band& band, SampleTarget& target, RenderStats& stats) {
+  ClipPolygonT<T> polygon, scratch;
   for (std::size_t t = 0; t < s.mesh->triangleCount(); ++t) {
     if (band.countsTriangles) ++stats.trianglesIn;
-    const ClipVertexD& a = s.vertices[s.mesh->indices[3 * t + 0]];
-    const ClipVertexD& b = s.vertices[s.mesh->indices[3 * t + 1]];
-    const ClipVertexD& c = s.vertices[s.mesh->indices[3 * t + 2]];
+    const ClipVertexT<T>& a = s.vertices[s.mesh->indices[3 * t + 0]];
+    const ClipVertexT<T>& b = s.vertices[s.mesh->indices[3 * t + 1]];
+    const ClipVertexT<T>& c = s.vertices[s.mesh->indices[3 * t + 2]];
     const std::uint32_t planesCut = clipTriangle(a, b, c, s.clip, polygon, scratch);
     if (planesCut != 0 && band.countsTriangles) ++stats.trianglesClipped;
     const std::uint32_t triangleId = s.firstTriangleId + static_cast<std::uint32_t>(t);
     for (int i = 1; i + 1 < polygon.count; ++i) {
-      drawSampleTriangle<Features>(s, polygon.v[0], polygon.v[static_cast<std::size_t>(i)],
+      drawSampleTriangle<Features, T>(s, polygon.v[0], polygon.v[static_cast<std::size_t>(i)],
                                    polygon.v[static_cast<std::size_t>(i + 1)], triangleId, band, target, stats);
     }
   }
@@ -178,6 +179,13 @@ class ReferenceRenderer final : public Renderer {
   std::string name() const override { return "reference"; }
 
   RenderOutput render(const Scene& scene, const RenderSettings& settings, int width, int height) override {
+    return options_.doublePrecision ? renderWith<double>(scene, settings, width, height)
+                                    : renderWith<float>(scene, settings, width, height);
+  }
+
+ private:
+  template <typename T>
+  RenderOutput renderWith(const Scene& scene, const RenderSettings& settings, int width, int height) {
     validateSize(width, height);
     const auto start = std::chrono::steady_clock::now();
     const std::vector<DrawItem> items = flattenScene(scene);
@@ -197,7 +205,7 @@ class ReferenceRenderer final : public Renderer {
     target.width = width;
     target.height = height;
     RenderStats stats;
-    std::vector<ReferenceDrawState> states(items.size());
+    std::vector<ReferenceDrawState<T>> states(items.size());
 
     for (std::size_t pass = 0; pass < offsets.size(); ++pass) {
       // Moving the scene by -offset puts the pixel centre on the sample: window x shifts by
@@ -205,18 +213,18 @@ class ReferenceRenderer final : public Renderer {
       glm::dmat4 ndcShift(1.0);
       ndcShift[3][0] = -2.0 * offsets[pass].x / width;
       ndcShift[3][1] = -2.0 * offsets[pass].y / height;
-      const glm::dmat4 clipFromWorld = ndcShift * clipFromWorldCentre;
+      const Mat4T<T> clipFromWorld(ndcShift * clipFromWorldCentre);
       for (std::size_t k = 0; k < items.size(); ++k) {
-        ReferenceDrawState& s = states[k];
-        const VertexUniformsT<double> vertexUniforms =
-            makeVertexUniforms(worldFromModel[k], clipFromWorld, scene, settings);
+        ReferenceDrawState<T>& s = states[k];
+        const VertexUniformsT<T> vertexUniforms =
+            makeVertexUniforms(Mat4T<T>(worldFromModel[k]), clipFromWorld, scene, settings);
         s.mesh = items[k].mesh;
         s.firstTriangleId = items[k].firstTriangleId;
         s.vertices.resize(s.mesh->vertices.size());
         for (std::size_t i = 0; i < s.vertices.size(); ++i) {
           s.vertices[i] = runVertexStage(s.mesh->vertices[i], vertexUniforms);
         }
-        s.shade = makeShadeUniforms<double>(*items[k].material, scene, settings);
+        s.shade = makeShadeUniforms<T>(*items[k].material, scene, settings);
         s.shaderKey = shaderKeyFor(s.shade, settings);
         s.clip = makeClipConfig(settings.clip, vertexUniforms.userClipPlaneCount, width, height);
         s.cull = settings.cull;
@@ -230,9 +238,9 @@ class ReferenceRenderer final : public Renderer {
 
       const bool firstPass = pass == 0;
       auto drawBand = [&](const Band& band, RenderStats& bandStats) {
-        for (const ReferenceDrawState& s : states) {
+        for (const ReferenceDrawState<T>& s : states) {
           withShaderFeatures(s.shaderKey,
-                             [&]<typename Features>() { drawItemSamples<Features>(s, band, target, bandStats); });
+                             [&]<typename Features>() { drawItemSamples<Features, T>(s, band, target, bandStats); });
         }
       };
       const int bandCount = std::clamp(options_.threads, 1, std::min(height, kMaxThreads));
@@ -292,7 +300,6 @@ class ReferenceRenderer final : public Renderer {
     return out;
   }
 
- private:
   ReferenceOptions options_;
 };
 

@@ -36,6 +36,9 @@ inline constexpr int kMaxReferenceSamplesPerAxis = 16;
 struct ReferenceOptions {
   int samplesPerAxis = 4;  // N, in [1, kMaxReferenceSamplesPerAxis]
   int threads = 1;         // row bands per pass, as CpuOptions::threads (values below 1 mean 1)
+  // false: the same loop and passes with the float stages. Not a reference then; it exists so
+  // that float and double can be timed through identical code (the report's precision knob).
+  bool doublePrecision = true;
 };
 
 // Throws InputError for samplesPerAxis outside [1, kMaxReferenceSamplesPerAxis].

@@ -92,6 +92,10 @@ TEST(Reference, OneSampleIsTheDoublePipelineAndMatchesTheFloatOneHere) {
   }
   EXPECT_EQ(reference.stats.trianglesIn, 2u);
   EXPECT_EQ(reference.stats.pixelsShaded, cpu.stats.pixelsShaded);
+  // The same loop with the float stages (used to time float against double) draws it too.
+  const RenderOutput floatLoop = makeReferenceRenderer({1, 1, false})->render(scene, scene.settings, kSide, kSide);
+  EXPECT_EQ(floatLoop.rgba, cpu.rgba);
+  EXPECT_EQ(floatLoop.triangleId, cpu.triangleId);
 }
 
 TEST(Reference, SampleCountsAndPixelsShadedAddUpOverPasses) {
