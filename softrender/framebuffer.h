@@ -1,5 +1,7 @@
-// The CPU pipeline's render target: colour, depth, triangle id and line mask, stored in GL
-// order (row 0 is the bottom row, window y up). toRenderOutput flips to top row first.
+// The CPU pipeline's render target: colour, depth, triangle id and line mask. The stages
+// address it in GL window coordinates (row 0 at the bottom, y up) through index(); the
+// buffers are stored top row first, as RenderOutput hands them on, so finishing a frame
+// moves them instead of flipping a copy.
 #pragma once
 
 #include "scene/conventions.h"
@@ -17,21 +19,28 @@ inline constexpr float kClearDepth = 1.0f;
 struct Framebuffer {
   int width = 0;
   int height = 0;
-  std::vector<std::uint8_t> rgba;         // RGBA8, bottom row first
+  std::vector<std::uint8_t> rgba;         // RGBA8
   std::vector<float> depth;               // window depth, kClearDepth where nothing was drawn
   std::vector<std::uint32_t> triangleId;  // kNoTriangle where nothing was drawn
   std::vector<std::uint8_t> lineMask;     // 1 where a debug line was written
 
-  std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x); }
+  // Element of GL window pixel (x, y): row y counts from the bottom, storage from the top.
+  std::size_t index(int x, int y) const {
+    return static_cast<std::size_t>(height - 1 - y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
+  }
 };
 
 // round(clamp(c, 0, 1) * 255); NaN gives 0.
 std::uint8_t unitToByte(float c);
 
+// The RGBA8 word (bytes r, g, b, 0 in memory order) the background clears colour to: alpha 0
+// marks pixels where no geometry was drawn.
+std::uint32_t backgroundWord(vec3 background);
+
 // Cleared to `background` with alpha 0, depth kClearDepth, no triangle, no line.
 Framebuffer makeFramebuffer(int width, int height, vec3 background);
 
-// The buffers top row first, as RenderOutput promises.
-RenderOutput toRenderOutput(const Framebuffer& framebuffer);
+// The buffers, top row first, as RenderOutput promises (moved out of `framebuffer`).
+RenderOutput toRenderOutput(Framebuffer&& framebuffer);
 
 }  // namespace twr

@@ -52,11 +52,19 @@ std::int32_t snapToSubpixel(T windowCoord) {
 template <typename T>
 SetupResult setupTriangle(const std::array<WindowVertexT<T>, 3>& window, CullMode cull, FrontFace frontFace,
                           const Viewport& viewport, TriangleSetup& out) {
-  out = TriangleSetup{};
-  for (int i = 0; i < 3; ++i) {
-    out.xFixed[static_cast<std::size_t>(i)] = snapToSubpixel(window[static_cast<std::size_t>(i)].x);
-    out.yFixed[static_cast<std::size_t>(i)] = snapToSubpixel(window[static_cast<std::size_t>(i)].y);
+  std::array<std::int32_t, 3> xFixed{}, yFixed{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    xFixed[i] = snapToSubpixel(window[i].x);
+    yFixed[i] = snapToSubpixel(window[i].y);
   }
+  return setupSnappedTriangle(xFixed, yFixed, cull, frontFace, viewport, out);
+}
+
+SetupResult setupSnappedTriangle(const std::array<std::int32_t, 3>& xFixed, const std::array<std::int32_t, 3>& yFixed,
+                                 CullMode cull, FrontFace frontFace, const Viewport& viewport, TriangleSetup& out) {
+  out = TriangleSetup{};
+  out.xFixed = xFixed;
+  out.yFixed = yFixed;
   const std::int64_t x0 = out.xFixed[0], x1 = out.xFixed[1], x2 = out.xFixed[2];
   const std::int64_t y0 = out.yFixed[0], y1 = out.yFixed[1], y2 = out.yFixed[2];
   // Twice the signed area, positive for counter-clockwise in GL window coordinates (y up).

@@ -95,6 +95,11 @@ template <typename T = float>
 SetupResult setupTriangle(const std::array<WindowVertexT<T>, 3>& window, CullMode cull, FrontFace frontFace,
                           const Viewport& viewport, TriangleSetup& out);
 
+// setupTriangle after the snapping: corners already in 24.8 fixed point (snapToSubpixel of
+// each window x and y, in triangle order). The fast path snaps each vertex once and calls it.
+SetupResult setupSnappedTriangle(const std::array<std::int32_t, 3>& xFixed, const std::array<std::int32_t, 3>& yFixed,
+                                 CullMode cull, FrontFace frontFace, const Viewport& viewport, TriangleSetup& out);
+
 const char* toString(SetupResult result);
 
 }  // namespace twr

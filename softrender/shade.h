@@ -12,6 +12,7 @@
 
 #include "scene/scene.h"
 #include "softrender/interpolate.h"
+#include "softrender/phong_pow.h"
 #include "softrender/texture_sample.h"
 
 #include <array>
@@ -74,10 +75,16 @@ struct ShadeTermsT {
 using ShadeTerms = ShadeTermsT<float>;
 
 // pow(x, s) for x >= 0 with 0^s = 0 for s > 0 and 0^0 = 1 (both renderers agree on it).
+// float: powPositive (softrender/phong_pow.h), which the SIMD fast path repeats bit for bit;
+// double (the reference): libm.
 template <typename T>
 T phongPow(T x, std::type_identity_t<T> s) {
   if (!(x > T(0))) return s > T(0) ? T(0) : T(1);
-  return std::pow(x, s);
+  if constexpr (std::is_same_v<T, float>) {
+    return powPositive(x, s);
+  } else {
+    return std::pow(x, s);
+  }
 }
 
 // (v + 1) / 2 with alpha 1: how the debug views show a vector.

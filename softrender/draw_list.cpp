@@ -1,0 +1,43 @@
+#include "softrender/draw_list.h"
+
+#include "scene/errors.h"
+#include "scene/image.h"
+
+#include <string>
+
+namespace twr {
+
+ItemState makeItemState(const DrawItem& item, const mat4& clipFromWorld, const Scene& scene,
+                        const RenderSettings& settings, int width, int height) {
+  ItemState s;
+  s.item = &item;
+  s.vertexUniforms = makeVertexUniforms(item.worldFromModel, clipFromWorld, scene, settings);
+  s.shade = makeShadeUniforms(*item.material, scene, settings);
+  s.shaderKey = shaderKeyFor(s.shade, settings);
+  s.clip = makeClipConfig(settings.clip, s.vertexUniforms.userClipPlaneCount, width, height);
+  s.cull = settings.cull;
+  s.frontFace = settings.frontFace;
+  s.viewport = Viewport{width, height};
+  s.tangentLighting = s.vertexUniforms.tangentLighting;
+  return s;
+}
+
+void validateImageSize(int width, int height) {
+  if (width < 1 || width > kMaxImageSide || height < 1 || height > kMaxImageSide) {
+    throw InputError("cpu renderer: image size " + std::to_string(width) + "x" + std::to_string(height) +
+                     " must be within 1.." + std::to_string(kMaxImageSide) + " on each side");
+  }
+}
+
+void validateIndices(const DrawItem& item) {
+  const std::size_t vertexCount = item.mesh->vertices.size();
+  for (std::size_t i = 0; i < item.mesh->indices.size(); ++i) {
+    if (item.mesh->indices[i] >= vertexCount) {
+      throw InputError("node '" + item.nodeName + "': mesh index " + std::to_string(i) + " is " +
+                       std::to_string(item.mesh->indices[i]) + ", expected < vertex count " +
+                       std::to_string(vertexCount));
+    }
+  }
+}
+
+}  // namespace twr

@@ -1,0 +1,35 @@
+// What both traversals of the CPU pipeline (the teaching one in cpu_renderer.cpp, the fast
+// one in fast_pipeline.cpp) need per draw item: the vertex and fragment stages' uniforms,
+// the clipper's configuration, the shader permutation and the fixed-function state.
+#pragma once
+
+#include "scene/scene.h"
+#include "softrender/clip.h"
+#include "softrender/setup.h"
+#include "softrender/shade.h"
+#include "softrender/vertex.h"
+
+namespace twr {
+
+struct ItemState {
+  const DrawItem* item = nullptr;
+  VertexUniforms vertexUniforms;
+  ShadeUniforms shade;
+  ShaderKey shaderKey;
+  ClipConfig clip;
+  CullMode cull = CullMode::Back;
+  FrontFace frontFace = FrontFace::Ccw;
+  Viewport viewport;
+  bool tangentLighting = false;
+};
+
+ItemState makeItemState(const DrawItem& item, const mat4& clipFromWorld, const Scene& scene,
+                        const RenderSettings& settings, int width, int height);
+
+// Throws InputError unless both sides are within [1, kMaxImageSide].
+void validateImageSize(int width, int height);
+
+// Throws InputError naming the node and the first index at or past the vertex count.
+void validateIndices(const DrawItem& item);
+
+}  // namespace twr

@@ -1,0 +1,579 @@
+// The AVX-512 kernel. Read it beside the scalar stages it repeats: every lane does the
+// operations of pixelWeights (interpolate.cpp), interpolateFragment, shadeFragment (shade.h),
+// sampleBilinear / sampleNearest (texture_sample.cpp), powPositive (phong_pow.cpp) and
+// unitToByte (framebuffer.cpp) in the same order on the same types, so each lane rounds as
+// the scalar code does. Operations the scalar code would not see (lanes outside the triangle
+// or failing the depth test) are computed and then discarded by the lane masks.
+//
+// The code below is compiled for AVX-512 with floating-point contraction off (a fused
+// multiply-add would round once where the scalar code rounds twice); all of it sits in an
+// anonymous namespace, so no function compiled for AVX-512 can be picked by the linker for a
+// caller on another CPU.
+#include "softrender/fast_shade_avx512.h"
+
+#include "softrender/phong_pow.h"
+#include "softrender/texture_sample.h"
+
+// GCC 12's AVX-512 headers make "undefined" vectors by initialising them from themselves
+// (GCC bug 105593), which -Wuninitialized then reports in every function that inlines them.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wuninitialized"
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include <immintrin.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace twr {
+
+bool cpuHasAvx512() {
+  static const bool has = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+                          __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512vl");
+  return has;
+}
+
+#pragma GCC push_options
+#pragma GCC target("avx512f,avx512dq,avx512bw,avx512vl")
+#pragma GCC optimize("fp-contract=off")
+
+namespace {
+
+// Block geometry: 16 lanes = 4 x 4 pixels, lane = 4 * row + column.
+constexpr int kBlockSide = 4;
+constexpr int kLanes = kBlockSide * kBlockSide;
+constexpr __mmask16 kRowLanes = 0xF;  // the four lanes of one block row
+// _mm512_fpclass_ps_mask categories: quiet NaN | +infinity | -infinity | signalling NaN.
+constexpr int kNotFiniteClasses = 0x01 | 0x08 | 0x10 | 0x80;
+constexpr float kByteMax = 255.0f;
+constexpr float kByteScale = 1.0f / 255.0f;  // texelAt's T(1) / T(kMaxByte)
+constexpr float kHalf = 0.5f;                // texel centres; round half away from zero
+constexpr std::uint32_t kByteMask = 0xFF;
+constexpr std::uint32_t kOpaqueAlpha = 0xFF000000u;
+// Coordinates the SIMD texel wrap handles with 32-bit integers (exclusive bound); larger ones
+// take the scalar footprint (a repeat count that large is a test case, not a scene).
+constexpr float kMaxSimdTexelCoord = 1073741824.0f;  // 2^30
+
+// ---- 16 floats ----
+struct Vf {
+  __m512 v;
+};
+inline Vf operator+(Vf a, Vf b) { return {_mm512_add_ps(a.v, b.v)}; }
+inline Vf operator-(Vf a, Vf b) { return {_mm512_sub_ps(a.v, b.v)}; }
+inline Vf operator*(Vf a, Vf b) { return {_mm512_mul_ps(a.v, b.v)}; }
+inline Vf operator/(Vf a, Vf b) { return {_mm512_div_ps(a.v, b.v)}; }
+inline Vf splat(float x) { return {_mm512_set1_ps(x)}; }
+inline Vf sqrtOf(Vf a) { return {_mm512_sqrt_ps(a.v)}; }
+inline Vf floorOf(Vf a) { return {_mm512_roundscale_ps(a.v, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC)}; }
+inline Vf truncOf(Vf a) { return {_mm512_roundscale_ps(a.v, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC)}; }
+// (a > b) ? a : b per lane: std::fmax(a, b) whenever b is not NaN (a NaN a gives b).
+inline Vf maxOf(Vf a, Vf b) { return {_mm512_max_ps(a.v, b.v)}; }
+// (a < b) ? a : b per lane: std::fmin(a, b) whenever b is not NaN.
+inline Vf minOf(Vf a, Vf b) { return {_mm512_min_ps(a.v, b.v)}; }
+inline Vf select(__mmask16 m, Vf ifTrue, Vf ifFalse) { return {_mm512_mask_blend_ps(m, ifFalse.v, ifTrue.v)}; }
+inline __mmask16 less(Vf a, Vf b) { return _mm512_cmp_ps_mask(a.v, b.v, _CMP_LT_OQ); }
+inline __mmask16 greater(Vf a, Vf b) { return _mm512_cmp_ps_mask(a.v, b.v, _CMP_GT_OQ); }
+inline __mmask16 greaterEqual(Vf a, Vf b) { return _mm512_cmp_ps_mask(a.v, b.v, _CMP_GE_OQ); }
+inline __mmask16 finite(Vf a) { return static_cast<__mmask16>(~_mm512_fpclass_ps_mask(a.v, kNotFiniteClasses)); }
+
+// ---- 16 doubles as two halves (lanes 0..7, 8..15) ----
+struct Vd {
+  __m512d lo, hi;
+};
+inline Vd operator+(Vd a, Vd b) { return {_mm512_add_pd(a.lo, b.lo), _mm512_add_pd(a.hi, b.hi)}; }
+inline Vd operator-(Vd a, Vd b) { return {_mm512_sub_pd(a.lo, b.lo), _mm512_sub_pd(a.hi, b.hi)}; }
+inline Vd operator*(Vd a, Vd b) { return {_mm512_mul_pd(a.lo, b.lo), _mm512_mul_pd(a.hi, b.hi)}; }
+inline Vd operator/(Vd a, Vd b) { return {_mm512_div_pd(a.lo, b.lo), _mm512_div_pd(a.hi, b.hi)}; }
+inline Vd splatD(double x) { return {_mm512_set1_pd(x), _mm512_set1_pd(x)}; }
+inline Vd toDouble(Vf a) {
+  return {_mm512_cvtps_pd(_mm512_castps512_ps256(a.v)), _mm512_cvtps_pd(_mm512_extractf32x8_ps(a.v, 1))};
+}
+// Rounded to nearest, as static_cast<float>(double).
+inline Vf toFloat(Vd a) {
+  return {_mm512_insertf32x8(_mm512_castps256_ps512(_mm512_cvtpd_ps(a.lo)), _mm512_cvtpd_ps(a.hi), 1)};
+}
+inline __mmask16 greaterD(Vd a, Vd b) {
+  const __mmask8 lo = _mm512_cmp_pd_mask(a.lo, b.lo, _CMP_GT_OQ);
+  const __mmask8 hi = _mm512_cmp_pd_mask(a.hi, b.hi, _CMP_GT_OQ);
+  return static_cast<__mmask16>(lo | (hi << 8));
+}
+
+// ---- 3-vectors of lanes, with glm's operation order ----
+struct V3 {
+  Vf x, y, z;
+};
+inline V3 operator+(const V3& a, const V3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline V3 operator-(const V3& a, const V3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline V3 operator*(const V3& a, const V3& b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
+inline V3 operator*(const V3& a, Vf s) { return {a.x * s, a.y * s, a.z * s}; }
+inline V3 operator*(Vf s, const V3& a) { return {s * a.x, s * a.y, s * a.z}; }
+inline V3 splat3(vec3 v) { return {splat(v.x), splat(v.y), splat(v.z)}; }
+inline V3 select3(__mmask16 m, const V3& a, const V3& b) {
+  return {select(m, a.x, b.x), select(m, a.y, b.y), select(m, a.z, b.z)};
+}
+// glm::dot: tmp = a * b; tmp.x + tmp.y + tmp.z.
+inline Vf dot3(const V3& a, const V3& b) { return (a.x * b.x + a.y * b.y) + a.z * b.z; }
+
+// safeNormalize (scene/conventions.h): (0, 0, 1) unless kMinLengthSquared < |v|^2 < infinity.
+inline V3 safeNormalize3(const V3& v) {
+  const Vf lengthSquared = dot3(v, v);
+  const Vf infinity = splat(std::numeric_limits<float>::infinity());
+  const __mmask16 usable = greater(lengthSquared, splat(kMinLengthSquared)) & less(lengthSquared, infinity);
+  const Vf length = sqrtOf(lengthSquared);
+  const V3 normalised{v.x / length, v.y / length, v.z / length};
+  return select3(usable, normalised, V3{splat(0.0f), splat(0.0f), splat(1.0f)});
+}
+
+// interpolateFragment: a0 * p0 + a1 * p1 + a2 * p2, summed from the left.
+struct Weights {
+  Vf p0, p1, p2;
+};
+inline Vf interpolate(float a0, float a1, float a2, const Weights& w) {
+  return (splat(a0) * w.p0 + splat(a1) * w.p1) + splat(a2) * w.p2;
+}
+inline V3 interpolate3(vec3 a0, vec3 a1, vec3 a2, const Weights& w) {
+  return {interpolate(a0.x, a1.x, a2.x, w), interpolate(a0.y, a1.y, a2.y, w), interpolate(a0.z, a1.z, a2.z, w)};
+}
+
+// ---- textures ----
+inline __m512i wrapPowerOfTwo(__m512i i, int size) { return _mm512_and_si512(i, _mm512_set1_epi32(size - 1)); }
+// floor(i / size) reduced to [0, size) for |i| < 2^30: the quotient in double is within
+// 2^-22 of the true one, far from the next integer, so its floor is exact.
+inline __m512i wrapAnySize(__m512i i, int size) {
+  const __m512d sizeD = _mm512_set1_pd(size);
+  const __m512d lo = _mm512_cvtepi32_pd(_mm512_castsi512_si256(i));
+  const __m512d hi = _mm512_cvtepi32_pd(_mm512_extracti64x4_epi64(i, 1));
+  const __m512d qLo = _mm512_roundscale_pd(_mm512_div_pd(lo, sizeD), _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+  const __m512d qHi = _mm512_roundscale_pd(_mm512_div_pd(hi, sizeD), _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+  const __m512i q = _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtpd_epi32(qLo)), _mm512_cvtpd_epi32(qHi), 1);
+  return _mm512_sub_epi32(i, _mm512_mullo_epi32(q, _mm512_set1_epi32(size)));
+}
+// wrappedFloor for an integer-valued float below 2^30 in magnitude.
+inline __m512i wrapFloor(Vf integral, int size) {
+  const __m512i i = _mm512_cvttps_epi32(integral.v);
+  return (size & (size - 1)) == 0 ? wrapPowerOfTwo(i, size) : wrapAnySize(i, size);
+}
+
+// Which texels one sample reads and with what weights (sampleFootprint, per lane).
+struct Footprint {
+  __m512i x0, y0, x1, y1;
+  Vf alpha, beta;  // bilinear only
+};
+
+inline __m512i nextTexel(__m512i i, int size) {
+  const __m512i next = _mm512_add_epi32(i, _mm512_set1_epi32(1));
+  const __mmask16 wraps = _mm512_cmpeq_epi32_mask(next, _mm512_set1_epi32(size));
+  return _mm512_mask_blend_epi32(wraps, next, _mm512_setzero_si512());
+}
+
+// The scalar footprint, lane by lane, for blocks with coordinates too large for the SIMD wrap.
+Footprint scalarFootprint(const Texture& texture, Vf u, Vf v, TextureFilter filter, __mmask16 lanes) {
+  alignas(64) std::array<float, kLanes> us{}, vs{}, alphas{}, betas{};
+  alignas(64) std::array<std::int32_t, kLanes> x0{}, y0{}, x1{}, y1{};
+  _mm512_store_ps(us.data(), u.v);
+  _mm512_store_ps(vs.data(), v.v);
+  for (int l = 0; l < kLanes; ++l) {
+    if (((lanes >> l) & 1) == 0) continue;
+    const std::size_t k = static_cast<std::size_t>(l);
+    const SampleFootprint f = sampleFootprint<float>(texture, vec2(us[k], vs[k]), filter);
+    x0[k] = f.x0, y0[k] = f.y0, x1[k] = f.x1, y1[k] = f.y1;
+    alphas[k] = f.alpha, betas[k] = f.beta;
+  }
+  return {_mm512_load_si512(x0.data()), _mm512_load_si512(y0.data()), _mm512_load_si512(x1.data()),
+          _mm512_load_si512(y1.data()), {_mm512_load_ps(alphas.data())}, {_mm512_load_ps(betas.data())}};
+}
+
+Footprint footprint(const Texture& texture, Vf u, Vf v, TextureFilter filter, __mmask16 lanes) {
+  const Vf width = splat(static_cast<float>(texture.width));
+  const Vf height = splat(static_cast<float>(texture.height));
+  Footprint f;
+  if (filter == TextureFilter::Nearest) {
+    // nearestTexelIndex: floor(coord * size) of the float product, wrapped; 0 if not finite.
+    const Vf fu = floorOf(u * width), fv = floorOf(v * height);
+    const __mmask16 finiteU = finite(fu), finiteV = finite(fv);
+    const Vf limit = splat(kMaxSimdTexelCoord);
+    const Vf absU = {_mm512_abs_ps(fu.v)}, absV = {_mm512_abs_ps(fv.v)};
+    if ((lanes & ((finiteU & ~less(absU, limit)) | (finiteV & ~less(absV, limit)))) != 0) {
+      return scalarFootprint(texture, u, v, filter, lanes);
+    }
+    f.x0 = _mm512_maskz_mov_epi32(finiteU, wrapFloor(select(finiteU, fu, splat(0.0f)), texture.width));
+    f.y0 = _mm512_maskz_mov_epi32(finiteV, wrapFloor(select(finiteV, fv, splat(0.0f)), texture.height));
+    f.x1 = f.x0;
+    f.y1 = f.y0;
+    f.alpha = splat(0.0f);
+    f.beta = splat(0.0f);
+    return f;
+  }
+  // Bilinear: u' = u w - 0.5, i0 = floor(u'), alpha = u' - i0 (0 and texel 0 if not finite).
+  const Vf uTexel = u * width - splat(kHalf), vTexel = v * height - splat(kHalf);
+  const __mmask16 finiteU = finite(uTexel), finiteV = finite(vTexel);
+  const Vf fu = floorOf(uTexel), fv = floorOf(vTexel);
+  const Vf limit = splat(kMaxSimdTexelCoord);
+  const Vf absU = {_mm512_abs_ps(fu.v)}, absV = {_mm512_abs_ps(fv.v)};
+  if ((lanes & ((finiteU & ~less(absU, limit)) | (finiteV & ~less(absV, limit)))) != 0) {
+    return scalarFootprint(texture, u, v, filter, lanes);
+  }
+  f.alpha = select(finiteU, uTexel - fu, splat(0.0f));
+  f.beta = select(finiteV, vTexel - fv, splat(0.0f));
+  f.x0 = _mm512_maskz_mov_epi32(finiteU, wrapFloor(select(finiteU, fu, splat(0.0f)), texture.width));
+  f.y0 = _mm512_maskz_mov_epi32(finiteV, wrapFloor(select(finiteV, fv, splat(0.0f)), texture.height));
+  f.x1 = nextTexel(f.x0, texture.width);
+  f.y1 = nextTexel(f.y0, texture.height);
+  return f;
+}
+
+// One texel per lane as RGB in [0, 1] (texelAt: byte * (1 / 255)).
+inline V3 texels(const Texture& texture, __m512i x, __m512i y, __mmask16 lanes) {
+  const __m512i index = _mm512_add_epi32(_mm512_mullo_epi32(y, _mm512_set1_epi32(texture.width)), x);
+  const __m512i rgba = _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), lanes, index, texture.rgba.data(), 4);
+  const __m512i byteMask = _mm512_set1_epi32(kByteMask);
+  const auto channel = [&](int shift) {
+    const __m512i bytes = _mm512_and_si512(_mm512_srli_epi32(rgba, static_cast<unsigned>(shift)), byteMask);
+    return Vf{_mm512_cvtepi32_ps(bytes)} * splat(kByteScale);
+  };
+  return {channel(0), channel(8), channel(16)};
+}
+
+// sampleTexture's RGB: nearest reads one texel; bilinear
+// ((1-a)(1-b) T00 + a(1-b) T10) + (1-a) b T01) + a b T11.
+V3 sample(const Texture& texture, const Footprint& f, TextureFilter filter, __mmask16 lanes) {
+  if (filter == TextureFilter::Nearest) return texels(texture, f.x0, f.y0, lanes);
+  const Vf one = splat(1.0f);
+  const Vf w00 = (one - f.alpha) * (one - f.beta);
+  const Vf w10 = f.alpha * (one - f.beta);
+  const Vf w01 = (one - f.alpha) * f.beta;
+  const Vf w11 = f.alpha * f.beta;
+  const V3 t00 = texels(texture, f.x0, f.y0, lanes), t10 = texels(texture, f.x1, f.y0, lanes);
+  const V3 t01 = texels(texture, f.x0, f.y1, lanes), t11 = texels(texture, f.x1, f.y1, lanes);
+  return ((w00 * t00 + w10 * t10) + w01 * t01) + w11 * t11;
+}
+
+// ---- the Phong exponent (powPositive, phong_pow.cpp), 8 doubles at a time ----
+__m512d powPositiveHalf(__m512d x, __m512d s) {
+  using namespace phongpow;
+  __m512d m = _mm512_getmant_pd(x, _MM_MANT_NORM_1_2, _MM_MANT_SIGN_src);  // frexp's m * 2
+  __m512d e = _mm512_getexp_pd(x);                                         // frexp's e - 1
+  const __mmask8 halve = _mm512_cmp_pd_mask(m, _mm512_set1_pd(kSqrt2), _CMP_GT_OQ);
+  m = _mm512_mask_mul_pd(m, halve, m, _mm512_set1_pd(0.5));
+  e = _mm512_mask_add_pd(e, halve, e, _mm512_set1_pd(1.0));
+  const __m512d one = _mm512_set1_pd(1.0);
+  const __m512d t = _mm512_div_pd(_mm512_sub_pd(m, one), _mm512_add_pd(m, one));
+  const __m512d t2 = _mm512_mul_pd(t, t);
+  __m512d series = _mm512_set1_pd(kLog2Coefficients[kLog2Terms - 1]);
+  for (int k = kLog2Terms - 2; k >= 0; --k) {
+    series = _mm512_add_pd(_mm512_mul_pd(series, t2), _mm512_set1_pd(kLog2Coefficients[static_cast<std::size_t>(k)]));
+  }
+  const __m512d log2x = _mm512_add_pd(e, _mm512_mul_pd(t, series));
+  __m512d y = _mm512_mul_pd(s, log2x);
+  y = _mm512_mask_mov_pd(y, _mm512_cmp_pd_mask(y, y, _CMP_UNORD_Q), _mm512_setzero_pd());
+  y = _mm512_min_pd(_mm512_max_pd(y, _mm512_set1_pd(-kMaxExponent)), _mm512_set1_pd(kMaxExponent));
+  const __m512d k = _mm512_roundscale_pd(y, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
+  const __m512d f = _mm512_sub_pd(y, k);
+  __m512d p = _mm512_set1_pd(kExp2Coefficients[kExp2Terms - 1]);
+  for (int n = kExp2Terms - 2; n >= 0; --n) {
+    p = _mm512_add_pd(_mm512_mul_pd(p, f), _mm512_set1_pd(kExp2Coefficients[static_cast<std::size_t>(n)]));
+  }
+  const __m512i biased = _mm512_add_epi64(_mm512_cvtpd_epi64(k), _mm512_set1_epi64(kDoubleExponentBias));
+  const __m512d scale = _mm512_castsi512_pd(_mm512_slli_epi64(biased, kDoubleMantissaBits));
+  return _mm512_mul_pd(p, scale);
+}
+
+// phongPow(x, s) for the lanes in `active`: x > 0 ? powPositive(x, s) : (s > 0 ? 0 : 1).
+Vf phongPow16(Vf x, float s, __mmask16 active) {
+  const Vf zeroCase = splat(s > 0.0f ? 0.0f : 1.0f);
+  const __mmask16 positive = active & greater(x, splat(0.0f));
+  if (positive == 0) return zeroCase;
+  const Vf infinity = splat(std::numeric_limits<float>::infinity());
+  const __mmask16 infinite = positive & ~less(x, infinity);
+  // Lanes not computed hold 1, so nothing below sees a zero, a NaN or a negative number.
+  const Vd xd = toDouble(select(positive & ~infinite, x, splat(1.0f)));
+  const __m512d sd = _mm512_set1_pd(static_cast<double>(s));
+  const Vf powered = toFloat(Vd{powPositiveHalf(xd.lo, sd), powPositiveHalf(xd.hi, sd)});
+  const Vf infCase = s > 0.0f ? infinity : splat(1.0f);
+  return select(infinite, infCase, select(positive, powered, zeroCase));
+}
+
+// ---- output merge ----
+// unitToByte after glm::clamp(colour, 0, 1): NaN -> 0, else round(clamp(c) * 255), halves up.
+inline __m512i toByte(Vf c) {
+  const Vf clamped = minOf(maxOf(c, splat(0.0f)), splat(1.0f));
+  const Vf scaled = clamped * splat(kByteMax);
+  const Vf whole = truncOf(scaled);
+  const Vf rounded = whole + select(greaterEqual(scaled - whole, splat(kHalf)), splat(1.0f), splat(0.0f));
+  return _mm512_cvttps_epi32(rounded.v);
+}
+
+// Row R of a block: its four lanes, to or from element rows[R] of a buffer (lanes outside
+// `mask` untouched; a row with no lane in `mask` is not addressed at all).
+using BlockRows = std::array<std::size_t, kBlockSide>;
+template <int R>
+inline __mmask8 rowMask(__mmask16 mask) {
+  return static_cast<__mmask8>((mask >> (kBlockSide * R)) & kRowLanes);
+}
+template <int R>
+inline void storeRow(std::vector<float>& buffer, const BlockRows& rows, __mmask16 mask, __m512 v) {
+  if (const __mmask8 m = rowMask<R>(mask)) _mm_mask_storeu_ps(&buffer[rows[R]], m, _mm512_extractf32x4_ps(v, R));
+}
+template <int R>
+inline void storeRow(std::vector<std::uint32_t>& buffer, const BlockRows& rows, __mmask16 mask, __m512i v) {
+  if (const __mmask8 m = rowMask<R>(mask)) _mm_mask_storeu_epi32(&buffer[rows[R]], m, _mm512_extracti32x4_epi32(v, R));
+}
+template <int R>
+inline void storeRgbaRow(std::vector<std::uint8_t>& rgba, const BlockRows& rows, __mmask16 mask, __m512i v) {
+  if (const __mmask8 m = rowMask<R>(mask)) {
+    _mm_mask_storeu_epi32(&rgba[4 * rows[R]], m, _mm512_extracti32x4_epi32(v, R));
+  }
+}
+template <int R>
+inline __m512 loadRow(__m512 into, const std::vector<float>& buffer, const BlockRows& rows, __mmask16 mask) {
+  if (const __mmask8 m = rowMask<R>(mask)) return _mm512_insertf32x4(into, _mm_maskz_loadu_ps(m, &buffer[rows[R]]), R);
+  return into;
+}
+template <typename Buffer, typename Value>
+inline void storeBlock(Buffer& buffer, const BlockRows& rows, __mmask16 mask, Value v) {
+  storeRow<0>(buffer, rows, mask, v);
+  storeRow<1>(buffer, rows, mask, v);
+  storeRow<2>(buffer, rows, mask, v);
+  storeRow<3>(buffer, rows, mask, v);
+}
+
+// Per-lane column and row inside the block.
+inline __m512i laneColumns() { return _mm512_set_epi32(3, 2, 1, 0, 3, 2, 1, 0, 3, 2, 1, 0, 3, 2, 1, 0); }
+inline __m512i laneRows() { return _mm512_set_epi32(3, 3, 3, 3, 2, 2, 2, 2, 1, 1, 1, 1, 0, 0, 0, 0); }
+
+// E_i at the 16 lanes relative to the block origin: stepX * column + stepY * row, in two
+// halves of 8 int64.
+struct EdgeLanes {
+  __m512i lo, hi;
+};
+EdgeLanes edgeLaneOffsets(const EdgeFunction& edge) {
+  const __m512i columns = laneColumns(), rows = laneRows();
+  const auto half = [&](__m256i c, __m256i r) {
+    return _mm512_add_epi64(_mm512_mullo_epi64(_mm512_cvtepi32_epi64(c), _mm512_set1_epi64(edge.stepX)),
+                            _mm512_mullo_epi64(_mm512_cvtepi32_epi64(r), _mm512_set1_epi64(edge.stepY)));
+  };
+  return {half(_mm512_castsi512_si256(columns), _mm512_castsi512_si256(rows)),
+          half(_mm512_extracti64x4_epi64(columns, 1), _mm512_extracti64x4_epi64(rows, 1))};
+}
+
+// The shading of one block: everything shadeFragment does for View::Shaded.
+template <bool kDiffuse, bool kNormal, bool kSpecular, bool kTangent>
+V3 shadeBlock(const Weights& w, const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2,
+              const ShadeUniforms& u, __mmask16 lanes) {
+  const V3 posWorld = interpolate3(v0.posWorld, v1.posWorld, v2.posWorld, w);
+  constexpr bool kAnyMap = kDiffuse || kNormal || kSpecular;
+  Vf uvX = splat(0.0f), uvY = splat(0.0f);
+  if constexpr (kAnyMap) {
+    uvX = interpolate(v0.uv.x, v1.uv.x, v2.uv.x, w);
+    uvY = interpolate(v0.uv.y, v1.uv.y, v2.uv.y, w);
+  }
+  // Texel footprints: computed once per texture size (maps of one material usually match).
+  const Texture* footprintOf = nullptr;
+  Footprint shared{};
+  const auto sampleMap = [&](const Texture& texture) {
+    if (!footprintOf || footprintOf->width != texture.width || footprintOf->height != texture.height) {
+      shared = footprint(texture, uvX, uvY, u.filter, lanes);
+      footprintOf = &texture;
+    }
+    return sample(texture, shared, u.filter, lanes);
+  };
+
+  const V3 ones{splat(1.0f), splat(1.0f), splat(1.0f)};
+  V3 albedo = ones;
+  if constexpr (kDiffuse) albedo = sampleMap(*u.diffuseMap);
+  V3 specScale = ones;
+  if constexpr (kSpecular) specScale = sampleMap(*u.specularMap);
+  V3 mappedTangent{splat(0.0f), splat(0.0f), splat(1.0f)};
+  if constexpr (kNormal) {
+    const V3 texel = sampleMap(*u.normalMap);
+    const Vf two = splat(2.0f), one = splat(1.0f);
+    mappedTangent = safeNormalize3(V3{two * texel.x - one, two * texel.y - one, two * texel.z - one});
+  }
+
+  V3 nl = mappedTangent;  // tangent lighting space
+  if constexpr (!kTangent) {
+    const V3 n = safeNormalize3(interpolate3(v0.nWorld, v1.nWorld, v2.nWorld, w));
+    if constexpr (kNormal) {
+      const V3 t = safeNormalize3(interpolate3(v0.tWorld, v1.tWorld, v2.tWorld, w));
+      const V3 b = safeNormalize3(interpolate3(v0.bWorld, v1.bWorld, v2.bWorld, w));
+      nl = safeNormalize3((t * mappedTangent.x + b * mappedTangent.y) + n * mappedTangent.z);
+    } else {
+      nl = n;
+    }
+  }
+
+  V3 vVec;
+  if constexpr (kTangent) {
+    vVec = interpolate3(v0.eyeDirTangent, v1.eyeDirTangent, v2.eyeDirTangent, w);
+  } else {
+    vVec = splat3(u.eyePosWorld) - posWorld;
+  }
+  const V3 v = safeNormalize3(vVec);
+  const V3 kdAlbedo = splat3(u.kd) * albedo;  // u.kd * albedo, the first product of diffuse
+  const V3 ksSpec = splat3(u.ks) * specScale;
+  const Vf zero = splat(0.0f);
+  V3 sum{zero, zero, zero};
+  for (int i = 0; i < u.lightCount; ++i) {
+    const std::size_t k = static_cast<std::size_t>(i);
+    const LightUniform& light = u.lights[k];
+    const V3 toLight = splat3(light.posWorld) - posWorld;
+    V3 lVec = toLight;
+    if constexpr (kTangent) lVec = interpolate3(v0.lightDirTangent[k], v1.lightDirTangent[k], v2.lightDirTangent[k], w);
+    const Vf d = sqrtOf(dot3(toLight, toLight));
+    const V3 l = safeNormalize3(lVec);
+    const Vf nDotL = dot3(nl, l);
+    const V3 r = (splat(2.0f) * nDotL) * nl - l;
+    const Vf rDotV = maxOf(dot3(r, v), zero);
+    const Vf denominator = (splat(light.attenuation.x) + splat(light.attenuation.y) * d) +
+                           (splat(light.attenuation.z) * d) * d;
+    const Vf attenuation = splat(1.0f) / maxOf(denominator, splat(kMinAttenuationDenominator));
+    const Vf lambert = maxOf(nDotL, zero);
+    const V3 diffuse = {(kdAlbedo.x * lambert) * splat(light.diffuse.x),
+                        (kdAlbedo.y * lambert) * splat(light.diffuse.y),
+                        (kdAlbedo.z * lambert) * splat(light.diffuse.z)};
+    const __mmask16 lit = lanes & greater(nDotL, zero);
+    V3 specular{zero, zero, zero};
+    if (lit != 0) {
+      const Vf powered = phongPow16(rDotV, u.shininess, lit);
+      specular = {select(lit, (ksSpec.x * powered) * splat(light.specular.x), zero),
+                  select(lit, (ksSpec.y * powered) * splat(light.specular.y), zero),
+                  select(lit, (ksSpec.z * powered) * splat(light.specular.z), zero)};
+    }
+    sum = sum + (diffuse + specular) * attenuation;
+  }
+  const V3 ambient = (splat3(u.ka) * albedo) * splat3(u.ambient);
+  return ambient + sum;
+}
+
+template <bool kDiffuse, bool kNormal, bool kSpecular, bool kTangent>
+std::uint64_t shadeTriangleAvx512(const TriangleSetup& setup, const InterpolationSetup& interpolation,
+                                  const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2,
+                                  const ShadeUniforms& u, std::uint32_t triangleId, int rowBegin, int rowEnd,
+                                  Framebuffer& fb) {
+  const int yFirst = std::max(setup.y0, rowBegin);
+  const int yLast = std::min(setup.y1, rowEnd - 1);
+  if (yFirst > yLast || setup.x0 > setup.x1) return 0;
+
+  std::array<EdgeLanes, 3> laneOffsets;
+  for (std::size_t e = 0; e < 3; ++e) laneOffsets[e] = edgeLaneOffsets(setup.edges[e]);
+  const __m512i columns = laneColumns(), rows = laneRows();
+  const __m512d columnsLo = _mm512_cvtepi32_pd(_mm512_castsi512_si256(columns));
+  const __m512d columnsHi = _mm512_cvtepi32_pd(_mm512_extracti64x4_epi64(columns, 1));
+  const __m512d rowsLo = _mm512_cvtepi32_pd(_mm512_castsi512_si256(rows));
+  const __m512d rowsHi = _mm512_cvtepi32_pd(_mm512_extracti64x4_epi64(rows, 1));
+  const __m512i idLanes = _mm512_set1_epi32(static_cast<int>(triangleId));
+  std::uint64_t shaded = 0;
+
+  for (int by = yFirst & ~(kBlockSide - 1); by <= yLast; by += kBlockSide) {
+    const __m512i py = _mm512_add_epi32(rows, _mm512_set1_epi32(by));
+    const __mmask16 rowLanes = _mm512_cmpge_epi32_mask(py, _mm512_set1_epi32(yFirst)) &
+                               _mm512_cmple_epi32_mask(py, _mm512_set1_epi32(yLast));
+    const Vd pyD{_mm512_add_pd(rowsLo, _mm512_set1_pd(by)), _mm512_add_pd(rowsHi, _mm512_set1_pd(by))};
+    for (int bx = setup.x0 & ~(kBlockSide - 1); bx <= setup.x1; bx += kBlockSide) {
+      // Coverage: every edge function > 0 at the pixel centre, inside the bounding box.
+      const __m512i px = _mm512_add_epi32(columns, _mm512_set1_epi32(bx));
+      __mmask16 covered = rowLanes & _mm512_cmpge_epi32_mask(px, _mm512_set1_epi32(setup.x0)) &
+                          _mm512_cmple_epi32_mask(px, _mm512_set1_epi32(setup.x1));
+      for (std::size_t e = 0; e < 3 && covered != 0; ++e) {
+        const EdgeFunction& edge = setup.edges[e];
+        const __m512i origin = _mm512_set1_epi64(edge.c + edge.stepX * bx + edge.stepY * by);
+        const __m512i zero = _mm512_setzero_si512();
+        const __mmask8 lo = _mm512_cmpgt_epi64_mask(_mm512_add_epi64(origin, laneOffsets[e].lo), zero);
+        const __mmask8 hi = _mm512_cmpgt_epi64_mask(_mm512_add_epi64(origin, laneOffsets[e].hi), zero);
+        covered &= static_cast<__mmask16>(lo | (hi << 8));
+      }
+      if (covered == 0) continue;
+
+      // pixelWeights, in double: lambda_i = atOrigin + dx px + dy py.
+      const Vd pxD{_mm512_add_pd(columnsLo, _mm512_set1_pd(bx)), _mm512_add_pd(columnsHi, _mm512_set1_pd(bx))};
+      std::array<Vd, 3> lambda;
+      for (std::size_t i = 0; i < 3; ++i) {
+        lambda[i] = (splatD(interpolation.atOrigin[i]) + splatD(interpolation.dx[i]) * pxD) +
+                    splatD(interpolation.dy[i]) * pyD;
+      }
+      Vd depthD = splatD(0.0);
+      Vd perspectiveSum = splatD(0.0);
+      std::array<Vd, 3> perspective;
+      for (std::size_t i = 0; i < 3; ++i) {
+        depthD = depthD + lambda[i] * splatD(static_cast<double>(interpolation.zWindow[i]));
+        perspective[i] = lambda[i] * splatD(static_cast<double>(interpolation.invW[i]));
+        perspectiveSum = perspectiveSum + perspective[i];
+      }
+      const Vf depthRounded = toFloat(depthD);
+      const Vf depth = select(finite(depthRounded), minOf(maxOf(depthRounded, splat(0.0f)), splat(1.0f)), splat(1.0f));
+
+      // Early depth test (GL_LESS) against the stored depth of the block's four rows.
+      BlockRows blockRows{};
+      for (int r = 0; r < kBlockSide; ++r) {
+        if (by + r <= yLast) blockRows[static_cast<std::size_t>(r)] = fb.index(bx, by + r);
+      }
+      __m512 stored = _mm512_setzero_ps();
+      stored = loadRow<0>(stored, fb.depth, blockRows, covered);
+      stored = loadRow<1>(stored, fb.depth, blockRows, covered);
+      stored = loadRow<2>(stored, fb.depth, blockRows, covered);
+      stored = loadRow<3>(stored, fb.depth, blockRows, covered);
+      const __mmask16 pass = covered & less(depth, Vf{stored});
+      if (pass == 0) continue;
+
+      const __mmask16 sumPositive = greaterD(perspectiveSum, splatD(0.0));
+      Weights w;
+      w.p0 = select(sumPositive, toFloat(perspective[0] / perspectiveSum), toFloat(lambda[0]));
+      w.p1 = select(sumPositive, toFloat(perspective[1] / perspectiveSum), toFloat(lambda[1]));
+      w.p2 = select(sumPositive, toFloat(perspective[2] / perspectiveSum), toFloat(lambda[2]));
+      const V3 colour = shadeBlock<kDiffuse, kNormal, kSpecular, kTangent>(w, v0, v1, v2, u, pass);
+
+      const __m512i rgba = _mm512_or_si512(
+          _mm512_or_si512(toByte(colour.x), _mm512_slli_epi32(toByte(colour.y), 8)),
+          _mm512_or_si512(_mm512_slli_epi32(toByte(colour.z), 16), _mm512_set1_epi32(static_cast<int>(kOpaqueAlpha))));
+      storeRgbaRow<0>(fb.rgba, blockRows, pass, rgba);
+      storeRgbaRow<1>(fb.rgba, blockRows, pass, rgba);
+      storeRgbaRow<2>(fb.rgba, blockRows, pass, rgba);
+      storeRgbaRow<3>(fb.rgba, blockRows, pass, rgba);
+      storeBlock(fb.depth, blockRows, pass, depth.v);
+      storeBlock(fb.triangleId, blockRows, pass, idLanes);
+      shaded += static_cast<std::uint64_t>(std::popcount(static_cast<unsigned>(pass)));
+    }
+  }
+  return shaded;
+}
+
+// Kernels indexed by diffuse + 2 normal + 4 specular + 8 tangent.
+template <int kIndex>
+constexpr TriangleKernel kernelAt() {
+  return &shadeTriangleAvx512<(kIndex & 1) != 0, (kIndex & 2) != 0, (kIndex & 4) != 0, (kIndex & 8) != 0>;
+}
+template <int... kIndices>
+constexpr std::array<TriangleKernel, sizeof...(kIndices)> kernelTable(std::integer_sequence<int, kIndices...>) {
+  return {kernelAt<kIndices>()...};
+}
+constexpr int kKernelCount = 16;
+constexpr std::array<TriangleKernel, kKernelCount> kKernels =
+    kernelTable(std::make_integer_sequence<int, kKernelCount>());
+
+}  // namespace
+
+void powPositiveAvx512(const float* x, float s, float* out, std::size_t count) {
+  for (std::size_t i = 0; i < count; i += kLanes) {
+    const std::size_t n = std::min<std::size_t>(kLanes, count - i);
+    const __mmask16 lanes = static_cast<__mmask16>((1u << n) - 1u);
+    const Vf values{_mm512_maskz_loadu_ps(lanes, x + i)};
+    _mm512_mask_storeu_ps(out + i, lanes, phongPow16(values, s, lanes).v);
+  }
+}
+
+#pragma GCC pop_options
+
+TriangleKernel avx512KernelFor(const ShaderKey& key) {
+  if (key.view != View::Shaded || !cpuHasAvx512()) return nullptr;
+  const int index = (key.diffuseMap ? 1 : 0) + (key.normalMap ? 2 : 0) + (key.specularMap ? 4 : 0) +
+                    (key.space == LightingSpace::Tangent ? 8 : 0);
+  return kKernels[static_cast<std::size_t>(index)];
+}
+
+}  // namespace twr
+
+#pragma GCC diagnostic pop

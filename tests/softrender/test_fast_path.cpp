@@ -1,0 +1,318 @@
+// The fast path (softrender/fast_pipeline.h, the AVX-512 kernel and its scalar fallback) draws
+// exactly what the teaching path draws: colour, depth, triangle ids, line mask and statistics,
+// bit for bit, on every scene of the suite with every view and cull mode, at awkward sizes,
+// for any thread count, and on synthetic scenes that push the kernel's special cases (texture
+// coordinates beyond its integer range, textures whose sides are not powers of two, nearest
+// filtering, every shininess, lights inside the surface, triangles crossing w = 0).
+#include "softrender/cpu_renderer.h"
+#include "softrender/fast_shade_avx512.h"
+#include "softrender/phong_pow.h"
+#include "softrender/shade.h"
+
+#include "scene/primitives.h"
+#include "scene/scene_file.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace twr {
+namespace {
+
+const std::string kScenes = std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes";
+
+CpuOptions teaching() { return CpuOptions{1, CpuPath::Teaching, false}; }
+CpuOptions fastSimd(int threads) { return CpuOptions{threads, CpuPath::Fast, true}; }
+CpuOptions fastScalar(int threads) { return CpuOptions{threads, CpuPath::Fast, false}; }
+
+// Float buffers compare bitwise, so -0 against +0 or two different NaNs would show.
+bool sameBits(const std::vector<float>& a, const std::vector<float>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0);
+}
+
+// The first differing pixel, for a readable failure.
+std::string firstDifference(const RenderOutput& a, const RenderOutput& b) {
+  for (std::size_t i = 0; i < a.triangleId.size() && i < b.triangleId.size(); ++i) {
+    const bool same = std::memcmp(&a.rgba[4 * i], &b.rgba[4 * i], 4) == 0 &&
+                      std::bit_cast<std::uint32_t>(a.depth[i]) == std::bit_cast<std::uint32_t>(b.depth[i]) &&
+                      a.triangleId[i] == b.triangleId[i] && a.lineMask[i] == b.lineMask[i];
+    if (same) continue;
+    const int x = static_cast<int>(i % static_cast<std::size_t>(a.width));
+    const int row = static_cast<int>(i / static_cast<std::size_t>(a.width));
+    return "pixel (" + std::to_string(x) + ", row " + std::to_string(row) + "): rgba " +
+           std::to_string(a.rgba[4 * i]) + "," + std::to_string(a.rgba[4 * i + 1]) + "," +
+           std::to_string(a.rgba[4 * i + 2]) + "," + std::to_string(a.rgba[4 * i + 3]) + " vs " +
+           std::to_string(b.rgba[4 * i]) + "," + std::to_string(b.rgba[4 * i + 1]) + "," +
+           std::to_string(b.rgba[4 * i + 2]) + "," + std::to_string(b.rgba[4 * i + 3]) + ", depth " +
+           std::to_string(a.depth[i]) + " vs " + std::to_string(b.depth[i]) + ", id " +
+           std::to_string(a.triangleId[i]) + " vs " + std::to_string(b.triangleId[i]);
+  }
+  return "sizes differ";
+}
+
+void expectIdentical(const RenderOutput& expected, const RenderOutput& actual, const std::string& what) {
+  ASSERT_EQ(expected.width, actual.width) << what;
+  ASSERT_EQ(expected.height, actual.height) << what;
+  const bool same = expected.rgba == actual.rgba && sameBits(expected.depth, actual.depth) &&
+                    expected.triangleId == actual.triangleId && expected.lineMask == actual.lineMask;
+  EXPECT_TRUE(same) << what << ": " << firstDifference(expected, actual);
+  const RenderStats& e = expected.stats;
+  const RenderStats& a = actual.stats;
+  EXPECT_EQ(e.trianglesIn, a.trianglesIn) << what;
+  EXPECT_EQ(e.trianglesClipped, a.trianglesClipped) << what;
+  EXPECT_EQ(e.trianglesCulled, a.trianglesCulled) << what;
+  EXPECT_EQ(e.trianglesProduced, a.trianglesProduced) << what;
+  EXPECT_EQ(e.pixelsShaded, a.pixelsShaded) << what;
+}
+
+// Teaching versus fast with the SIMD kernel and with the scalar kernel, at `width` x `height`.
+void expectPathsAgree(const Scene& scene, const RenderSettings& settings, int width, int height,
+                      const std::string& what) {
+  const RenderOutput reference = makeCpuRenderer(teaching())->render(scene, settings, width, height);
+  ASSERT_GT(reference.stats.trianglesIn, 0u) << what;
+  expectIdentical(reference, makeCpuRenderer(fastSimd(2))->render(scene, settings, width, height), what + ", simd");
+  expectIdentical(reference, makeCpuRenderer(fastScalar(3))->render(scene, settings, width, height),
+                  what + ", scalar");
+}
+
+std::vector<std::string> suiteScenes() {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(kScenes)) {
+    if (entry.path().extension() == ".json") names.push_back(entry.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+class FastPathSuite : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(FastPathSuite, SameImageAsTheTeachingPath) {
+  const Scene scene = loadSceneFile(kScenes + "/" + GetParam());
+  expectPathsAgree(scene, scene.settings, scene.output.width, scene.output.height, GetParam());
+  // Sizes that are not multiples of the 4 x 4 block or of the 32-row bin.
+  expectPathsAgree(scene, scene.settings, 61, 47, GetParam() + " at 61x47");
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, FastPathSuite, ::testing::ValuesIn(suiteScenes()),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           std::string name = info.param.substr(0, info.param.find('.'));
+                           return name;
+                         });
+
+TEST(FastPath, EveryViewBothLightingSpacesAndFilters) {
+  for (const char* file : {"default.json", "tangent_space.json"}) {
+    const Scene scene = loadSceneFile(kScenes + "/" + file);
+    for (View view : kAllViews) {
+      RenderSettings settings = scene.settings;
+      settings.view = view;
+      expectPathsAgree(scene, settings, 160, 120, std::string(file) + " view " + std::string(toString(view)));
+    }
+    for (LightingSpace space : {LightingSpace::World, LightingSpace::Tangent}) {
+      for (TextureFilter filter : {TextureFilter::Nearest, TextureFilter::Bilinear}) {
+        RenderSettings settings = scene.settings;
+        settings.lightingSpace = space;
+        settings.textureFilter = filter;
+        expectPathsAgree(scene, settings, 200, 150,
+                         std::string(file) + " " + std::string(toString(space)) + " " + std::string(toString(filter)));
+      }
+    }
+  }
+}
+
+TEST(FastPath, EveryCullModeAndFrontFace) {
+  const Scene scene = loadSceneFile(kScenes + "/culling.json");
+  for (CullMode cull : {CullMode::None, CullMode::Back, CullMode::Front}) {
+    for (FrontFace front : {FrontFace::Ccw, FrontFace::Cw}) {
+      RenderSettings settings = scene.settings;
+      settings.cull = cull;
+      settings.frontFace = front;
+      expectPathsAgree(scene, settings, 240, 180,
+                       std::string("culling ") + std::string(toString(cull)) + " " + std::string(toString(front)));
+    }
+  }
+}
+
+TEST(FastPath, ThreadCountDoesNotChangeAnything) {
+  const Scene scene = loadSceneFile(kScenes + "/default.json");
+  const RenderOutput one = makeCpuRenderer(fastSimd(1))->render(scene, scene.settings, 320, 200);
+  for (int threads : {2, 5, 64}) {
+    expectIdentical(one, makeCpuRenderer(fastSimd(threads))->render(scene, scene.settings, 320, 200),
+                    std::to_string(threads) + " threads");
+  }
+  // A renderer reused for several frames and sizes keeps giving the same answer.
+  const auto renderer = makeCpuRenderer(fastSimd(2));
+  renderer->render(scene, scene.settings, 97, 31);
+  expectIdentical(one, renderer->render(scene, scene.settings, 320, 200), "second frame of a reused renderer");
+}
+
+// A material with every map, on textures of odd sizes (the kernel's non-power-of-two wrap).
+std::shared_ptr<Texture> noiseTexture(int width, int height, std::uint32_t seed) {
+  auto texture = std::make_shared<Texture>();
+  texture->path = "noise " + std::to_string(width) + "x" + std::to_string(height);
+  texture->width = width;
+  texture->height = height;
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> byte(0, 255);
+  texture->rgba.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
+  for (std::uint8_t& c : texture->rgba) c = static_cast<std::uint8_t>(byte(rng));
+  return texture;
+}
+
+// A floor quad in XZ (facing +Y) with texture coordinates from uvMin to uvMax.
+Mesh floorQuad(vec2 uvMin, vec2 uvMax) {
+  const vec3 p00(-2.0f, 0.0f, 2.0f), p10(2.0f, 0.0f, 2.0f), p11(2.0f, 0.0f, -2.0f), p01(-2.0f, 0.0f, -2.0f);
+  const vec2 t00 = uvMin, t10(uvMax.x, uvMin.y), t11 = uvMax, t01(uvMin.x, uvMax.y);
+  return makeTriangles({p00, p10, p11, p00, p11, p01}, {t00, t10, t11, t00, t11, t01}, {});
+}
+
+Scene syntheticScene(vec2 uvMin, vec2 uvMax, int textureWidth, int textureHeight, float shininess) {
+  Scene scene;
+  scene.camera.position = vec3(0.3f, 1.2f, 3.0f);
+  scene.camera.target = vec3(0.0f, 0.0f, 0.0f);
+  scene.camera.near = 0.05f;
+  scene.ambient = vec3(0.1f);
+  scene.lights.push_back(PointLight{vec3(1.0f, 2.0f, 2.0f), vec3(1.0f), vec3(1.0f), vec3(1.0f, 0.09f, 0.032f)});
+  // A light inside the sphere's surface and one exactly at a vertex of the plane.
+  scene.lights.push_back(PointLight{vec3(0.0f, 0.2f, 0.0f), vec3(0.5f), vec3(0.8f), vec3(0.0f, 0.0f, 0.0f)});
+  scene.lights.push_back(PointLight{vec3(2.0f, -0.5f, 2.0f), vec3(0.3f), vec3(0.4f), vec3(1.0f, 0.0f, 1.0f)});
+  Material material;
+  material.ks = vec3(0.7f);
+  material.shininess = shininess;
+  material.diffuseMap = noiseTexture(textureWidth, textureHeight, 1);
+  material.normalMap = noiseTexture(textureWidth, textureHeight, 2);
+  material.specularMap = noiseTexture(textureHeight, textureWidth, 3);  // a different size
+  scene.materials.push_back(material);
+  scene.meshes.push_back(makeSphere(0.7f, 12, 24));
+  scene.meshes.push_back(floorQuad(uvMin, uvMax));
+  scene.meshDescs.resize(2);
+  Node sphere;
+  sphere.name = "sphere";
+  sphere.meshIndex = 0;
+  sphere.materialIndex = 0;
+  sphere.translate = vec3(0.0f, 0.2f, 0.0f);
+  Node plane;
+  plane.name = "plane";
+  plane.meshIndex = 1;
+  plane.materialIndex = 0;
+  plane.translate = vec3(0.0f, -0.5f, 0.0f);
+  scene.nodes = {sphere, plane};
+  return scene;
+}
+
+TEST(FastPath, SyntheticMaterialsTexturesAndExponents) {
+  for (float shininess : {0.0f, 0.5f, 1.0f, 7.3f, 32.0f, 1000.0f}) {
+    const Scene scene = syntheticScene(vec2(-1.3f, -0.2f), vec2(2.0f, 3.1f), 37, 20, shininess);
+    for (TextureFilter filter : {TextureFilter::Nearest, TextureFilter::Bilinear}) {
+      for (LightingSpace space : {LightingSpace::World, LightingSpace::Tangent}) {
+        RenderSettings settings = scene.settings;
+        settings.textureFilter = filter;
+        settings.lightingSpace = space;
+        settings.cull = CullMode::None;
+        expectPathsAgree(scene, settings, 123, 77,
+                         "shininess " + std::to_string(shininess) + " " + std::string(toString(filter)) + " " +
+                             std::string(toString(space)));
+      }
+    }
+  }
+}
+
+// Texture coordinates past 2^30 texels (either sign): the kernel hands those lanes to the
+// scalar footprint. The last range overflows to infinity in u * width.
+TEST(FastPath, HugeTextureCoordinates) {
+  const std::pair<vec2, vec2> ranges[] = {{vec2(-3.0e7f, 1.0e7f), vec2(3.0e7f, 2.0e7f)},
+                                          {vec2(-1.0e30f, -5.0f), vec2(1.0e30f, 5.0f)},
+                                          {vec2(0.0f, -3.0e38f), vec2(1.0f, 3.0e38f)}};
+  for (const auto& [uvMin, uvMax] : ranges) {
+    const Scene scene = syntheticScene(uvMin, uvMax, 64, 48, 16.0f);
+    for (TextureFilter filter : {TextureFilter::Nearest, TextureFilter::Bilinear}) {
+      RenderSettings settings = scene.settings;
+      settings.textureFilter = filter;
+      expectPathsAgree(scene, settings, 90, 70,
+                       "uv from " + std::to_string(uvMin.x) + " " + std::string(toString(filter)));
+    }
+  }
+}
+
+// Near plane off (depth clamp), planes switched off to the guard band, user planes and a
+// camera inside the geometry: the clipper's new vertices go through the fast path's pool.
+TEST(FastPath, ClippedTriangles) {
+  Scene scene = syntheticScene(vec2(0.0f), vec2(2.0f), 16, 16, 8.0f);
+  scene.camera.position = vec3(0.0f, 0.1f, 0.3f);  // inside the sphere's bounding box
+  scene.camera.near = 0.01f;
+  RenderSettings settings = scene.settings;
+  settings.cull = CullMode::None;
+  expectPathsAgree(scene, settings, 96, 64, "camera near the sphere");
+  settings.clip.near = false;
+  settings.clip.left = false;
+  settings.clip.top = false;
+  expectPathsAgree(scene, settings, 96, 64, "near, left, top off");
+  settings.userClipPlanes = {vec4(1.0f, 0.2f, 0.0f, 0.1f), vec4(0.0f, -1.0f, 0.3f, 0.4f)};
+  expectPathsAgree(scene, settings, 96, 64, "two user planes");
+}
+
+// powPositive against libm: within one ulp everywhere, exact where the answer is exact.
+TEST(FastPath, PowPositiveIsWithinOneUlpOfLibm) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> base(0.0f, 1.05f);
+  for (float s : {0.0f, 0.5f, 1.0f, 2.0f, 7.3f, 32.0f, 128.0f, 1000.0f, 1.0e5f}) {
+    for (int i = 0; i < 20000; ++i) {
+      const float x = base(rng);
+      if (!(x > 0.0f)) continue;
+      const float ours = powPositive(x, s), libm = std::pow(x, s);
+      const auto a = std::bit_cast<std::int32_t>(ours), b = std::bit_cast<std::int32_t>(libm);
+      ASSERT_LE(std::abs(a - b), 1) << x << "^" << s << ": " << ours << " vs " << libm;
+    }
+  }
+  EXPECT_EQ(powPositive(0.5f, 2.0f), 0.25f);
+  EXPECT_EQ(powPositive(1.0f, 1.0e30f), 1.0f);
+  EXPECT_EQ(powPositive(0.3f, 0.0f), 1.0f);
+  EXPECT_EQ(powPositive(2.0f, 200.0f), std::numeric_limits<float>::infinity());
+  EXPECT_EQ(powPositive(1.0e-30f, 10.0f), 0.0f);
+  EXPECT_EQ(powPositive(std::numeric_limits<float>::infinity(), 3.0f), std::numeric_limits<float>::infinity());
+  EXPECT_EQ(powPositive(std::numeric_limits<float>::infinity(), 0.0f), 1.0f);
+  EXPECT_EQ(powPositive(1.0f, std::numeric_limits<float>::infinity()), 1.0f);
+}
+
+// The kernel's pow, lane by lane, is powPositive bit for bit (an ulp here rarely shows in an
+// 8-bit image, so it is checked directly), including the lanes phongPow handles without it.
+TEST(FastPath, SimdPowIsTheScalarPowBitForBit) {
+  if (!cpuHasAvx512()) GTEST_SKIP() << "this CPU has no AVX-512";
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> base(0.0f, 1.02f);
+  std::vector<float> x(4099);  // not a multiple of 16: the last call has a partial mask
+  for (float& v : x) v = base(rng);
+  x[0] = 0.0f;
+  x[1] = -0.0f;
+  x[2] = std::numeric_limits<float>::infinity();
+  x[3] = std::numeric_limits<float>::denorm_min();
+  x[4] = 1.0f;
+  x[5] = 1.0e-30f;
+  for (float s : {0.0f, 0.25f, 1.0f, 3.0f, 32.0f, 77.7f, 4096.0f, 1.0e30f}) {
+    std::vector<float> simd(x.size());
+    powPositiveAvx512(x.data(), s, simd.data(), x.size());
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      const float scalar = phongPow(x[i], s);
+      ASSERT_EQ(std::bit_cast<std::uint32_t>(simd[i]), std::bit_cast<std::uint32_t>(scalar))
+          << x[i] << "^" << s << ": " << simd[i] << " vs " << scalar;
+    }
+  }
+}
+
+TEST(FastPath, PathNames) {
+  EXPECT_EQ(cpuPathName(teaching()), "teaching");
+  EXPECT_EQ(cpuPathName(fastScalar(1)), "fast (scalar)");
+  const std::string simd = cpuPathName(fastSimd(1));
+  EXPECT_TRUE(simd == "fast (avx512)" || simd == "fast (scalar)") << simd;
+}
+
+}  // namespace
+}  // namespace twr
