@@ -1,15 +1,91 @@
 #include "scene/image.h"
 
 #include "scene/errors.h"
+#include "scene/read_file.h"
 
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include <climits>
 #include <cstring>
 #include <filesystem>
 #include <memory>
+#include <vector>
 
 namespace twr {
+
+namespace {
+
+constexpr unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+constexpr unsigned char kJpegSignature[3] = {0xFF, 0xD8, 0xFF};
+
+bool startsWith(const std::uint8_t* bytes, std::size_t size, const unsigned char* signature, std::size_t length) {
+  return size >= length && std::memcmp(bytes, signature, length) == 0;
+}
+
+std::string stbReason() {
+  const char* reason = stbi_failure_reason();
+  return reason ? reason : "unknown";
+}
+
+// stb_image also reads GIF, PSD, TGA, HDR, PIC and PNM: formats nobody here needs, with
+// decoders that have had their share of memory-safety bugs. Only PNG and JPEG get in.
+bool isPngOrJpeg(const std::uint8_t* bytes, std::size_t size) {
+  return startsWith(bytes, size, kPngSignature, sizeof kPngSignature) ||
+         startsWith(bytes, size, kJpegSignature, sizeof kJpegSignature);
+}
+
+// PNG chunk framing: 4-byte length, 4-byte type, data, 4-byte CRC (bytes).
+constexpr std::size_t kPngChunkOverhead = 12;
+// A palette holds at most 256 RGB entries (bytes).
+constexpr std::uint32_t kFullPaletteBytes = 256 * 3;
+
+std::uint32_t readBigEndian32(const std::uint8_t* p) {
+  return (std::uint32_t{p[0]} << 24) | (std::uint32_t{p[1]} << 16) | (std::uint32_t{p[2]} << 8) | p[3];
+}
+
+void appendBigEndian32(std::vector<std::uint8_t>& out, std::uint32_t v) {
+  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<std::uint8_t>(v >> shift));
+}
+
+// CRC-32 as PNG defines it (polynomial 0xEDB88320, reflected).
+std::uint32_t pngCrc(const std::uint8_t* data, std::size_t size) {
+  std::uint32_t crc = 0xFFFFFFFFu;
+  for (std::size_t i = 0; i < size; ++i) {
+    crc ^= data[i];
+    for (int bit = 0; bit < 8; ++bit) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+  }
+  return crc ^ 0xFFFFFFFFu;
+}
+
+// stb_image keeps a 256-entry palette on the stack and fills only the entries PLTE gives, so
+// a pixel index beyond them would read whatever the stack held and the texels would change
+// from run to run. Returns a copy of the PNG with PLTE padded to 256 entries (the new ones
+// opaque black), or an empty vector when the file needs no change.
+std::vector<std::uint8_t> withFullPalette(const std::uint8_t* bytes, std::size_t size) {
+  std::size_t at = sizeof kPngSignature;
+  while (size - at >= kPngChunkOverhead) {
+    const std::uint32_t length = readBigEndian32(bytes + at);
+    if (length > size - at - kPngChunkOverhead) break;  // malformed: stb reports it
+    const std::uint8_t* type = bytes + at + 4;
+    if (std::memcmp(type, "IDAT", 4) == 0) break;  // PLTE must come before the image data
+    if (std::memcmp(type, "PLTE", 4) == 0) {
+      if (length % 3 != 0 || length >= kFullPaletteBytes) break;
+      std::vector<std::uint8_t> out(bytes, bytes + at);
+      appendBigEndian32(out, kFullPaletteBytes);
+      const std::size_t chunkStart = out.size();
+      out.insert(out.end(), type, type + 4 + length);
+      out.resize(chunkStart + 4 + kFullPaletteBytes, 0);
+      appendBigEndian32(out, pngCrc(out.data() + chunkStart, 4 + kFullPaletteBytes));
+      out.insert(out.end(), bytes + at + kPngChunkOverhead + length, bytes + size);
+      return out;
+    }
+    at += kPngChunkOverhead + length;
+  }
+  return {};
+}
+
+}  // namespace
 
 Image makeImage(int width, int height, std::uint32_t fillRgba) {
   Image image;
@@ -25,30 +101,54 @@ Image makeImage(int width, int height, std::uint32_t fillRgba) {
   return image;
 }
 
-Image loadPng(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    throw InputError(path + ": image file not found");
+bool readImageHeader(const std::uint8_t* bytes, std::size_t size, int& width, int& height) {
+  int channels = 0;
+  return isPngOrJpeg(bytes, size) && size <= static_cast<std::size_t>(INT_MAX) &&
+         stbi_info_from_memory(bytes, static_cast<int>(size), &width, &height, &channels) != 0;
+}
+
+Image decodeImage(const std::uint8_t* bytes, std::size_t size, const std::string& nameForMessages) {
+  if (!isPngOrJpeg(bytes, size)) {
+    throw InputError(nameForMessages + ": not a readable image (expected a PNG or JPEG file" +
+                     (size == 0 ? std::string(", the file is empty)") : std::string(")")));
   }
+  const std::vector<std::uint8_t> padded =
+      startsWith(bytes, size, kPngSignature, sizeof kPngSignature) ? withFullPalette(bytes, size) : std::vector<std::uint8_t>{};
+  if (!padded.empty()) {
+    bytes = padded.data();
+    size = padded.size();
+  }
+  if (size > static_cast<std::size_t>(INT_MAX)) {
+    throw InputError(nameForMessages + ": image data larger than " + describeBytes(INT_MAX));
+  }
+  const int length = static_cast<int>(size);
   int width = 0, height = 0, channels = 0;
-  // Check the header first so a huge declared size is refused before any allocation.
-  if (!stbi_info(path.c_str(), &width, &height, &channels)) {
-    const char* reason = stbi_failure_reason();
-    throw InputError(path + ": not a readable image (" + (reason ? reason : "unknown") + ")");
+  // The header first, so a huge declared size is refused before any allocation.
+  if (!stbi_info_from_memory(bytes, length, &width, &height, &channels)) {
+    throw InputError(nameForMessages + ": not a readable image (" + stbReason() + ")");
   }
   if (width <= 0 || height <= 0 || width > kMaxImageSide || height > kMaxImageSide) {
-    throw InputError(path + ": image is " + std::to_string(width) + "x" + std::to_string(height) +
+    throw InputError(nameForMessages + ": image is " + std::to_string(width) + "x" + std::to_string(height) +
                      ", expected each side in [1, " + std::to_string(kMaxImageSide) + "]");
   }
+  int decodedWidth = 0, decodedHeight = 0;
   std::unique_ptr<stbi_uc, void (*)(void*)> data(
-      stbi_load(path.c_str(), &width, &height, &channels, 4), stbi_image_free);
-  if (!data) {
-    const char* reason = stbi_failure_reason();
-    throw InputError(path + ": cannot decode image (" + (reason ? reason : "unknown") + ")");
+      stbi_load_from_memory(bytes, length, &decodedWidth, &decodedHeight, &channels, 4), stbi_image_free);
+  if (!data) throw InputError(nameForMessages + ": cannot decode image (" + stbReason() + ")");
+  // The decoder reads the header again; it must agree with what was checked above.
+  if (decodedWidth != width || decodedHeight != height) {
+    throw InputError(nameForMessages + ": cannot decode image (header and data disagree on the size)");
   }
   Image image = makeImage(width, height);
   std::memcpy(image.rgba.data(), data.get(), image.rgba.size());
   return image;
+}
+
+Image loadPng(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(path + ": image file not found");
+  const std::string bytes = readFileCapped(path, kMaxImageFileBytes, "image file");
+  return decodeImage(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), path);
 }
 
 void savePng(const std::string& path, const Image& image) {

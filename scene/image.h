@@ -2,6 +2,7 @@
 // Image pixels are stored top row first, as image files are.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -25,9 +26,18 @@ struct Image {
 
 Image makeImage(int width, int height, std::uint32_t fillRgba = 0);
 
-// Loads any PNG stb understands (grey, palette, 16-bit are converted to RGBA8).
+// Largest image file read (inclusive, bytes).
+inline constexpr std::uintmax_t kMaxImageFileBytes = 256ull * 1024 * 1024;
+
+// Loads a PNG (grey, grey + alpha, palette, RGB, RGBA; 8 or 16 bits, interlaced or not) or a
+// JPEG through stb_image, converted to RGBA8; other formats stb knows are refused, as is a
+// side outside [1, kMaxImageSide], checked in the header before anything is decoded.
 // Throws InputError naming the file and the reason.
 Image loadPng(const std::string& path);
+// The same from bytes in memory; `nameForMessages` starts every error message.
+Image decodeImage(const std::uint8_t* bytes, std::size_t size, const std::string& nameForMessages);
+// Width and height from a PNG or JPEG header, without decoding; false when there is none.
+bool readImageHeader(const std::uint8_t* bytes, std::size_t size, int& width, int& height);
 // Throws InputError when the file cannot be written.
 void savePng(const std::string& path, const Image& image);
 

@@ -24,7 +24,15 @@ struct Texture {
 
 // Flips an image file's top-first rows into texture order.
 Texture textureFromImage(const Image& image, const std::string& path);
+// Most texel memory one scene may load (inclusive, bytes of RGBA8, each file counted once):
+// one 16384^2 texture or sixteen 4096^2 ones.
+inline constexpr std::uintmax_t kMaxSceneTextureBytes = 1024ull * 1024 * 1024;
+
 // loadPng + textureFromImage; throws InputError naming the file.
 Texture loadTexture(const std::string& path);
+// The same, counted against a budget: the size in the image's header is checked first, so an
+// image whose texels (width * height * 4 bytes) exceed `budgetBytes` is refused before it is
+// decoded; on success `budgetBytes` shrinks by that much.
+Texture loadTexture(const std::string& path, std::uintmax_t& budgetBytes);
 
 }  // namespace twr
