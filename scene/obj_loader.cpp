@@ -1,6 +1,7 @@
 #include "scene/obj_loader.h"
 
 #include "scene/errors.h"
+#include "scene/read_file.h"
 #include "scene/tangents.h"
 
 #include <tiny_obj_loader.h>
@@ -11,10 +12,11 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <memory>
+#include <set>
 #include <sstream>
+#include <streambuf>
 #include <tuple>
 
 namespace twr {
@@ -23,12 +25,22 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// Stands in for the spaces inside material names while tinyobjloader parses: its `usemtl`
+// keeps only the first word of a name but its `newmtl` keeps the whole rest of the line, so
+// "usemtl Hard Shiny Plastic" could never find its material. The unit separator never
+// appears in text and is not whitespace to tinyobjloader.
+constexpr char kNameSpace = '\x1f';
+// The Unicode replacement character, for unpaired UTF-16 surrogates.
+constexpr char32_t kReplacementCharacter = 0xFFFD;
+
 // Counts of the OBJ vertex-data lines, which face indices refer to.
 struct AttributeCounts {
   long long positions = 0;  // v
   long long uvs = 0;        // vt
   long long normals = 0;    // vn
 };
+
+bool isBlank(char c) { return c == ' ' || c == '\t'; }
 
 std::string trimmed(const std::string& text) {
   const std::size_t begin = text.find_first_not_of(" \t\r\n");
@@ -37,33 +49,181 @@ std::string trimmed(const std::string& text) {
   return text.substr(begin, end - begin + 1);
 }
 
-// What our own pass over the file learns before tinyobjloader parses it.
+// ---- text decoding ----
+
+void appendUtf8(std::string& out, char32_t c) {
+  if (c < 0x80) {
+    out += static_cast<char>(c);
+  } else if (c < 0x800) {
+    out += static_cast<char>(0xC0 | (c >> 6));
+    out += static_cast<char>(0x80 | (c & 0x3F));
+  } else if (c < 0x10000) {
+    out += static_cast<char>(0xE0 | (c >> 12));
+    out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (c & 0x3F));
+  } else {
+    out += static_cast<char>(0xF0 | (c >> 18));
+    out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
+    out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (c & 0x3F));
+  }
+}
+
+// UTF-16 code units from `begin` (big- or little-endian) to UTF-8; a trailing odd byte is
+// dropped and an unpaired surrogate becomes U+FFFD.
+std::string utf8FromUtf16(const std::string& bytes, std::size_t begin, bool bigEndian) {
+  const auto unitAt = [&](std::size_t i) {
+    const auto first = static_cast<unsigned char>(bytes[i]);
+    const auto second = static_cast<unsigned char>(bytes[i + 1]);
+    return static_cast<char16_t>(bigEndian ? (first << 8) | second : (second << 8) | first);
+  };
+  std::string out;
+  out.reserve(bytes.size() / 2);
+  for (std::size_t i = begin; i + 1 < bytes.size(); i += 2) {
+    const char16_t unit = unitAt(i);
+    if (unit >= 0xD800 && unit <= 0xDBFF && i + 3 < bytes.size()) {
+      const char16_t low = unitAt(i + 2);
+      if (low >= 0xDC00 && low <= 0xDFFF) {
+        appendUtf8(out, 0x10000 + ((static_cast<char32_t>(unit) - 0xD800) << 10) + (low - 0xDC00));
+        i += 2;
+        continue;
+      }
+    }
+    appendUtf8(out, unit >= 0xD800 && unit <= 0xDFFF ? kReplacementCharacter : unit);
+  }
+  return out;
+}
+
+// The file's text as UTF-8 with '\n' line ends: a UTF-8 byte-order mark is dropped, UTF-16
+// (with a byte-order mark, or recognised by a zero byte beside the first ASCII character) is
+// transcoded, "\r\n" and a lone "\r" become "\n". UTF-32 is refused.
+std::string decodeText(const std::string& bytes, const std::string& path) {
+  const auto byteAt = [&](std::size_t i) { return i < bytes.size() ? static_cast<unsigned char>(bytes[i]) : 0x100u; };
+  std::string text;
+  if ((byteAt(0) == 0x00 && byteAt(1) == 0x00 && byteAt(2) == 0xFE && byteAt(3) == 0xFF) ||
+      (byteAt(0) == 0xFF && byteAt(1) == 0xFE && byteAt(2) == 0x00 && byteAt(3) == 0x00)) {
+    throw InputError(path + ": the file is UTF-32 encoded; expected UTF-8 or UTF-16 text");
+  } else if (byteAt(0) == 0xEF && byteAt(1) == 0xBB && byteAt(2) == 0xBF) {
+    text = bytes.substr(3);
+  } else if (byteAt(0) == 0xFE && byteAt(1) == 0xFF) {
+    text = utf8FromUtf16(bytes, 2, true);
+  } else if (byteAt(0) == 0xFF && byteAt(1) == 0xFE) {
+    text = utf8FromUtf16(bytes, 2, false);
+  } else if (byteAt(0) == 0x00 && byteAt(1) > 0x00 && byteAt(1) < 0x80) {
+    text = utf8FromUtf16(bytes, 0, true);
+  } else if (byteAt(0) > 0x00 && byteAt(0) < 0x80 && byteAt(1) == 0x00) {
+    text = utf8FromUtf16(bytes, 0, false);
+  } else {
+    text = bytes;
+  }
+  std::string normalised;
+  normalised.reserve(text.size());
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '\r') {
+      normalised += text[i];
+    } else if (i + 1 >= text.size() || text[i + 1] != '\n') {
+      normalised += '\n';
+    }
+  }
+  return normalised;
+}
+
+// ---- material names with spaces ----
+
+// A name's whitespace runs become single kNameSpace characters.
+std::string encodeName(const std::string& name) {
+  std::string encoded;
+  bool inBlank = false;
+  for (char c : trimmed(name)) {
+    if (isBlank(c)) {
+      inBlank = true;
+      continue;
+    }
+    if (inBlank) encoded += kNameSpace;
+    inBlank = false;
+    encoded += c;
+  }
+  return encoded;
+}
+
+std::string decodeName(std::string name) {
+  std::replace(name.begin(), name.end(), kNameSpace, ' ');
+  return name;
+}
+
+struct NamedLine {
+  long long line = 0;
+  std::string name;  // decoded
+};
+
+// Rewrites every "<keyword> <name>" line so the name is one token (encodeName); returns the
+// names in file order with their line numbers.
+std::vector<NamedLine> encodeNamesAfter(std::string& text, const std::string& keyword) {
+  std::vector<NamedLine> names;
+  std::string out;
+  out.reserve(text.size());
+  long long lineNumber = 0;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    ++lineNumber;
+    const std::string line = text.substr(start, end - start);
+    std::size_t at = 0;
+    while (at < line.size() && isBlank(line[at])) ++at;
+    const std::size_t nameAt = at + keyword.size();
+    if (line.compare(at, keyword.size(), keyword) == 0 && nameAt < line.size() && isBlank(line[nameAt])) {
+      const std::string encoded = encodeName(line.substr(nameAt));
+      names.push_back({lineNumber, decodeName(encoded)});
+      out += keyword + ' ' + encoded;
+    } else {
+      out += line;
+    }
+    if (end < text.size()) out += '\n';
+    start = end + 1;
+  }
+  text = std::move(out);
+  return names;
+}
+
+// ---- our own pass over the text ----
+
+// What our own pass over the text learns before tinyobjloader parses it.
 struct ObjPrescan {
   fs::path mtlDirectory;  // of the first mtllib: texture paths are relative to the MTL
   bool hasMtllib = false;
+  std::size_t triangles = 0;  // after fan triangulation of every 'f' line
 };
 
-// Checks the vertex-data lines before tinyobjloader parses the file: tinyobjloader reads
-// "nan", "inf" or "abc" as 0 without a word, and we want the line number.
-ObjPrescan prescanObj(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open the OBJ file");
+// Checks the vertex-data lines before tinyobjloader parses the file (tinyobjloader reads
+// "nan", "inf" or "abc" as 0 without a word, and we want the line number), and counts the
+// triangles so an oversized file is refused before anything is built.
+ObjPrescan prescanObj(const std::string& path, const std::string& text, std::size_t maxTriangles) {
   ObjPrescan result;
   result.mtlDirectory = fs::path(path).parent_path();
+  std::istringstream lines(text);
   std::string line;
   long long lineNumber = 0;
-  while (std::getline(in, line)) {
+  while (std::getline(lines, line)) {
     ++lineNumber;
     std::istringstream tokens(line);
     std::string keyword;
     if (!(tokens >> keyword)) continue;
     std::size_t minimumValues = 0;
-    if (keyword == "v") {
-      minimumValues = 3;
-    } else if (keyword == "vn") {
+    if (keyword == "v" || keyword == "vn") {
       minimumValues = 3;
     } else if (keyword == "vt") {
       minimumValues = 1;
+    } else if (keyword == "f") {
+      std::size_t corners = 0;
+      std::string corner;
+      while (tokens >> corner) ++corners;
+      if (corners >= 3) result.triangles += corners - 2;
+      if (result.triangles > maxTriangles) {
+        throw InputError(path + ":" + std::to_string(lineNumber) + ": the file has more than " +
+                         std::to_string(maxTriangles) + " triangles, the most this scene can take");
+      }
+      continue;
     } else if (keyword == "mtllib" && !result.hasMtllib) {
       std::string firstName;  // "mtllib a.mtl b.mtl" may name several; the first decides
       tokens >> firstName;
@@ -102,12 +262,12 @@ bool objIndexInRange(long long index, long long countSoFar, long long countTotal
 
 // Finds the first face line with an out-of-range index, for the error message (0 if none
 // is found, e.g. when the bad index came from somewhere we do not re-parse).
-long long findBadFaceLine(const std::string& path, const AttributeCounts& total) {
-  std::ifstream in(path);
+long long findBadFaceLine(const std::string& text, const AttributeCounts& total) {
+  std::istringstream lines(text);
   std::string line;
   long long lineNumber = 0;
   AttributeCounts soFar;
-  while (std::getline(in, line)) {
+  while (std::getline(lines, line)) {
     ++lineNumber;
     std::istringstream tokens(line);
     std::string keyword;
@@ -146,34 +306,69 @@ std::string oneLine(const std::string& text) {
   for (char& character : result) {
     if (character == '\n') character = ' ';
   }
-  return result;
+  return decodeName(result);
 }
 
-// The first line of tinyobjloader's warnings that contains `needle`, or "".
-std::string warningLine(const std::string& warnings, const std::string& needle) {
-  std::istringstream lines(warnings);
-  std::string line;
-  while (std::getline(lines, line)) {
-    if (line.find(needle) != std::string::npos) return trimmed(line);
+// ---- tinyobjloader plumbing ----
+
+// A read-only stream over a string, without copying it (tinyobjloader reads a std::istream).
+class StringBuffer : public std::streambuf {
+ public:
+  explicit StringBuffer(std::string& text) { setg(text.data(), text.data(), text.data() + text.size()); }
+};
+
+// Reads each `mtllib` file relative to the OBJ, with the size limit, the same decoding as
+// the OBJ and names with spaces made one token. Remembers the first file it cannot read.
+class MtlReader : public tinyobj::MaterialReader {
+ public:
+  explicit MtlReader(fs::path objDirectory) : objDirectory_(std::move(objDirectory)) {}
+
+  bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                  std::map<std::string, int>* materialMap, std::string* warning, std::string* error) override {
+    const std::string path = (objDirectory_ / fs::path(name)).lexically_normal().string();
+    std::string text;
+    try {
+      text = decodeText(readFileCapped(path, kMaxMtlFileBytes, "MTL file"), path);
+    } catch (const InputError& e) {
+      if (firstFailure_.empty()) firstFailure_ = e.what();
+      return false;
+    }
+    encodeNamesAfter(text, "newmtl");
+    StringBuffer buffer(text);
+    std::istream stream(&buffer);
+    tinyobj::LoadMtl(materialMap, materials, &stream, warning, error);
+    return true;
   }
-  return {};
-}
+
+  // "" when every mtllib file was read.
+  const std::string& firstFailure() const { return firstFailure_; }
+
+ private:
+  fs::path objDirectory_;
+  std::string firstFailure_;
+};
 
 vec3 toVec3(const tinyobj::real_t* values) { return vec3(values[0], values[1], values[2]); }
 
 // Loads each texture once per model; paths are relative to the MTL file.
 class TextureCache {
  public:
-  TextureCache(std::string objPath, fs::path mtlDirectory)
-      : objPath_(std::move(objPath)), mtlDirectory_(std::move(mtlDirectory)) {}
+  TextureCache(std::string objPath, fs::path mtlDirectory, std::uintmax_t budgetBytes)
+      : objPath_(std::move(objPath)), mtlDirectory_(std::move(mtlDirectory)), budgetBytes_(budgetBytes) {}
 
   std::shared_ptr<const Texture> get(const std::string& materialName, const char* key, const std::string& name) {
     if (name.empty()) return nullptr;
-    const std::string path = (mtlDirectory_ / fs::path(name)).lexically_normal().string();
+    std::string path = (mtlDirectory_ / fs::path(name)).lexically_normal().string();
+    if (name.find('\\') != std::string::npos && !fs::exists(path)) {
+      // Exported on Windows ("textures\\brick.png"): try the same path with '/'.
+      std::string slashed = name;
+      std::replace(slashed.begin(), slashed.end(), '\\', '/');
+      path = (mtlDirectory_ / fs::path(slashed)).lexically_normal().string();
+    }
     if (auto found = cache_.find(path); found != cache_.end()) return found->second;
     std::shared_ptr<const Texture> texture;
     try {
-      texture = std::make_shared<const Texture>(loadTexture(path));
+      texture = std::make_shared<const Texture>(loadTexture(path, budgetBytes_));
     } catch (const InputError& error) {
       throw InputError(objPath_ + ": material '" + materialName + "' " + key + " '" + name +
                        "' cannot be loaded: " + error.what());
@@ -185,30 +380,39 @@ class TextureCache {
  private:
   std::string objPath_;
   fs::path mtlDirectory_;
+  std::uintmax_t budgetBytes_;  // texel bytes still allowed
   std::map<std::string, std::shared_ptr<const Texture>> cache_;
 };
 
 Material toMaterial(const tinyobj::material_t& source, TextureCache& textures) {
   Material material;
-  material.name = source.name;
+  material.name = decodeName(source.name);
   material.ka = toVec3(source.ambient);
   material.kd = toVec3(source.diffuse);
   material.ks = toVec3(source.specular);
   material.shininess = source.shininess;
-  material.diffuseMap = textures.get(source.name, "map_Kd", source.diffuse_texname);
-  material.specularMap = textures.get(source.name, "map_Ks", source.specular_texname);
+  material.diffuseMap = textures.get(material.name, "map_Kd", source.diffuse_texname);
+  material.specularMap = textures.get(material.name, "map_Ks", source.specular_texname);
   // `norm` is the explicit normal map; many exporters put the normal map in map_Bump/bump.
   const std::string& normalName = source.normal_texname.empty() ? source.bump_texname : source.normal_texname;
-  material.normalMap = textures.get(source.name, source.normal_texname.empty() ? "map_Bump" : "norm", normalName);
+  material.normalMap = textures.get(material.name, source.normal_texname.empty() ? "map_Bump" : "norm", normalName);
   return material;
 }
 
-void requireFiniteMaterial(const std::string& path, const Material& material) {
-  const bool finite = std::isfinite(material.ka.x) && std::isfinite(material.ka.y) && std::isfinite(material.ka.z) &&
-                      std::isfinite(material.kd.x) && std::isfinite(material.kd.y) && std::isfinite(material.kd.z) &&
-                      std::isfinite(material.ks.x) && std::isfinite(material.ks.y) && std::isfinite(material.ks.z) &&
-                      std::isfinite(material.shininess);
-  if (!finite) throw InputError(path + ": material '" + material.name + "' has a non-finite Ka, Kd, Ks or Ns");
+// Ka, Kd and Ks in [0, kMaxColourValue] (as the scene file's colours), Ns finite and >= 0.
+void requireValidMaterial(const std::string& path, const Material& material) {
+  const std::pair<const char*, vec3> colours[] = {{"Ka", material.ka}, {"Kd", material.kd}, {"Ks", material.ks}};
+  for (const auto& [key, colour] : colours) {
+    for (int i = 0; i < 3; ++i) {
+      if (!(colour[i] >= 0.0f && colour[i] <= kMaxColourValue)) {
+        throw InputError(path + ": material '" + material.name + "' " + key + " must be in [0, " +
+                         std::to_string(static_cast<int>(kMaxColourValue)) + "], got " + std::to_string(colour[i]));
+      }
+    }
+  }
+  if (!std::isfinite(material.shininess)) {
+    throw InputError(path + ": material '" + material.name + "' has a non-finite Ns");
+  }
   if (material.shininess < 0.0f) {
     throw InputError(path + ": material '" + material.name + "' Ns must be >= 0, got " +
                      std::to_string(material.shininess));
@@ -225,39 +429,50 @@ struct MeshBuilder {
 
 }  // namespace
 
-ObjModel loadObj(const std::string& path) {
-  const ObjPrescan prescan = prescanObj(path);
+ObjModel loadObj(const std::string& path, const ObjLimits& limits) {
+  const std::size_t maxTriangles = limits.maxTriangles;
+  std::string text = decodeText(readFileCapped(path, kMaxObjFileBytes, "OBJ file"), path);
+  const ObjPrescan prescan = prescanObj(path, text, maxTriangles);
+  const std::vector<NamedLine> usedMaterials = encodeNamesAfter(text, "usemtl");
 
-  tinyobj::ObjReaderConfig config;
-  config.triangulate = true;
-  config.vertex_color = false;
-  tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(path, config)) {
-    throw InputError(path + ": " + oneLine(reader.Error().empty() ? "cannot parse the OBJ file" : reader.Error()));
+  tinyobj::attrib_t attrib;
+  std::vector<tinyobj::shape_t> shapes;
+  std::vector<tinyobj::material_t> sourceMaterials;
+  std::string warning, error;
+  MtlReader mtlReader(fs::path(path).parent_path());
+  {
+    StringBuffer buffer(text);
+    std::istream stream(&buffer);
+    if (!tinyobj::LoadObj(&attrib, &shapes, &sourceMaterials, &warning, &error, &stream, &mtlReader,
+                          /*triangulate=*/true, /*default_vcols_fallback=*/false)) {
+      throw InputError(path + ": " + (error.empty() ? std::string("cannot parse the OBJ file") : oneLine(error)));
+    }
   }
   // A missing MTL file, or a usemtl naming a material the MTL lacks, is only a warning to
   // tinyobjloader; the model would silently render white, so both are errors here. (A
   // usemtl in a file without any mtllib is common in exports and just means no material.)
-  if (const std::string missingFile = warningLine(reader.Warning(), "Material file ["); !missingFile.empty()) {
-    throw InputError(path + ": mtllib: " + missingFile);
-  }
-  if (const std::string missingMaterial = warningLine(reader.Warning(), "not found in .mtl");
-      prescan.hasMtllib && !missingMaterial.empty()) {
-    throw InputError(path + ": usemtl: " + missingMaterial);
+  if (!mtlReader.firstFailure().empty()) throw InputError(path + ": mtllib: " + mtlReader.firstFailure());
+  if (prescan.hasMtllib) {
+    std::set<std::string> defined;
+    for (const tinyobj::material_t& m : sourceMaterials) defined.insert(decodeName(m.name));
+    for (const NamedLine& used : usedMaterials) {
+      if (defined.count(used.name) == 0) {
+        throw InputError(path + ":" + std::to_string(used.line) + ": usemtl: material '" + used.name +
+                         "' is not in the MTL file(s)");
+      }
+    }
   }
 
-  const tinyobj::attrib_t& attrib = reader.GetAttrib();
   const AttributeCounts counts{static_cast<long long>(attrib.vertices.size() / 3),
                                static_cast<long long>(attrib.texcoords.size() / 2),
                                static_cast<long long>(attrib.normals.size() / 3)};
-  const std::vector<tinyobj::material_t>& sourceMaterials = reader.GetMaterials();
 
-  TextureCache textures(path, prescan.mtlDirectory);
+  TextureCache textures(path, prescan.mtlDirectory, limits.maxTextureBytes);
   std::vector<Material> materials;
   materials.reserve(sourceMaterials.size());
   for (const tinyobj::material_t& source : sourceMaterials) {
     materials.push_back(toMaterial(source, textures));
-    requireFiniteMaterial(path, materials.back());
+    requireValidMaterial(path, materials.back());
   }
 
   // Material id (-1 = none) -> mesh, in order of first use.
@@ -270,14 +485,14 @@ ObjModel loadObj(const std::string& path) {
   std::vector<vec3> normalSumByPosition(static_cast<std::size_t>(counts.positions), vec3(0.0f));
 
   auto badIndex = [&]() {
-    const long long line = findBadFaceLine(path, counts);
+    const long long line = findBadFaceLine(text, counts);
     return InputError(path + (line > 0 ? ":" + std::to_string(line) : std::string()) +
                       ": a face references a vertex, uv or normal index outside the file's " +
                       std::to_string(counts.positions) + " v, " + std::to_string(counts.uvs) + " vt and " +
                       std::to_string(counts.normals) + " vn lines");
   };
 
-  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+  for (const tinyobj::shape_t& shape : shapes) {
     std::size_t indexOffset = 0;
     for (std::size_t face = 0; face < shape.mesh.num_face_vertices.size(); ++face) {
       const std::size_t cornerCount = shape.mesh.num_face_vertices[face];
@@ -285,8 +500,9 @@ ObjModel loadObj(const std::string& path) {
       indexOffset += cornerCount;
       // Triangulation is on, so anything else is a degenerate face (a point or a line).
       if (cornerCount != 3) continue;
-      if (++triangleCount > kMaxSceneTriangles) {
-        throw InputError(path + ": more than " + std::to_string(kMaxSceneTriangles) + " triangles");
+      if (first + 3 > shape.mesh.indices.size()) throw badIndex();
+      if (++triangleCount > maxTriangles) {
+        throw InputError(path + ": more than " + std::to_string(maxTriangles) + " triangles");
       }
       int materialId = face < shape.mesh.material_ids.size() ? shape.mesh.material_ids[face] : -1;
       if (materialId < 0 || materialId >= static_cast<int>(materials.size())) materialId = -1;

@@ -16,6 +16,11 @@
 
 namespace twr {
 
+// Largest colour component a scene may give (inclusive; ambient, ka, kd, ks, light diffuse and
+// specular; unitless, 1 = full intensity). Bounds every shading product, so no sum of terms
+// overflows to Inf and no Inf * 0 makes a NaN.
+inline constexpr float kMaxColourValue = 1e4f;
+
 struct Material {
   std::string name;
   vec3 ka{1.0f};  // ambient reflectance (scaled by the diffuse map, see docs/shading.md)
