@@ -5,6 +5,7 @@
 #include "scene/errors.h"
 #include "scene/obj_loader.h"
 #include "scene/primitives.h"
+#include "scene/read_file.h"
 
 #include <nlohmann/json.hpp>
 
@@ -96,7 +97,7 @@ std::string joinNames(std::initializer_list<std::string_view> names) {
 }
 
 // Constraints a number may carry; each has a description for the message.
-enum class NumberRule { Finite, Positive, NonNegative, UnitInterval, NonZero };
+enum class NumberRule { Finite, Positive, NonNegative, UnitInterval, NonZero, Colour };
 
 std::string describe(NumberRule rule) {
   switch (rule) {
@@ -105,6 +106,7 @@ std::string describe(NumberRule rule) {
     case NumberRule::NonNegative: return "a number >= 0";
     case NumberRule::UnitInterval: return "a number in [0, 1]";
     case NumberRule::NonZero: return "a non-zero number";
+    case NumberRule::Colour: return "a number in [0, " + std::to_string(static_cast<int>(kMaxColourValue)) + "]";
   }
   return "a number";
 }
@@ -116,6 +118,7 @@ bool satisfies(float v, NumberRule rule) {
     case NumberRule::NonNegative: return v >= 0.0f;
     case NumberRule::UnitInterval: return v >= 0.0f && v <= 1.0f;
     case NumberRule::NonZero: return v != 0.0f;
+    case NumberRule::Colour: return v >= 0.0f && v <= kMaxColourValue;
   }
   return false;
 }
@@ -128,8 +131,16 @@ class DuplicateKeyCheck {
 
   bool operator()(int /*depth*/, Json::parse_event_t event, Json& parsed) {
     switch (event) {
-      case Json::parse_event_t::object_start: frames_.push_back({false, 0, {}, {}}); break;
-      case Json::parse_event_t::array_start: frames_.push_back({true, 0, {}, {}}); break;
+      case Json::parse_event_t::object_start:
+      case Json::parse_event_t::array_start:
+        if (frames_.size() >= static_cast<std::size_t>(kMaxJsonDepth)) {
+          std::string path = pathThrough(frames_.size());
+          if (path.size() > kMaxQuotedChars) path = path.substr(0, kMaxQuotedChars) + "...";
+          throw InputError(fileName_ + ": " + path + ": JSON nests deeper than " + std::to_string(kMaxJsonDepth) +
+                           " levels");
+        }
+        frames_.push_back({event == Json::parse_event_t::array_start, 0, {}, {}});
+        break;
       case Json::parse_event_t::key: {
         Frame& top = frames_.back();
         std::string key = parsed.get<std::string>();
@@ -161,13 +172,16 @@ class DuplicateKeyCheck {
     if (!frames_.empty() && frames_.back().isArray) ++frames_.back().index;
   }
 
-  std::string pathTo(const std::string& key) const {
+  // The path through the first `frameCount` open containers.
+  std::string pathThrough(std::size_t frameCount) const {
     std::string path;
-    for (std::size_t i = 0; i + 1 < frames_.size(); ++i) {
+    for (std::size_t i = 0; i < frameCount; ++i) {
       path = frames_[i].isArray ? indexPath(path, frames_[i].index) : childPath(path, frames_[i].key);
     }
-    return childPath(path, key);
+    return path;
   }
+
+  std::string pathTo(const std::string& key) const { return childPath(pathThrough(frames_.size() - 1), key); }
 
   std::string fileName_;
   std::vector<Frame> frames_;
@@ -182,7 +196,7 @@ class SceneReader {
     checkKeys(root, "", {"output", "camera", "ambient", "lights", "materials", "nodes", "settings"}, "the top level");
     if (const Json* j = find(root, "output")) readOutput(*j, "output");
     if (const Json* j = find(root, "camera")) readCamera(*j, "camera");
-    if (const Json* j = find(root, "ambient")) scene_.ambient = readColour(*j, "ambient", NumberRule::NonNegative);
+    if (const Json* j = find(root, "ambient")) scene_.ambient = readColour(*j, "ambient", NumberRule::Colour);
     if (const Json* j = find(root, "lights")) readLights(*j, "lights");
     if (const Json* j = find(root, "materials")) readMaterials(*j, "materials");
     if (const Json* j = find(root, "settings")) readSettings(*j, "settings");
@@ -327,8 +341,8 @@ class SceneReader {
       checkKeys(lj, lightPath, {"position", "diffuse", "specular", "attenuation"}, "a light");
       PointLight light;
       if (const Json* v = find(lj, "position")) light.posWorld = readVector<3>(*v, childPath(lightPath, "position"), NumberRule::Finite);
-      if (const Json* v = find(lj, "diffuse")) light.diffuse = readColour(*v, childPath(lightPath, "diffuse"), NumberRule::NonNegative);
-      if (const Json* v = find(lj, "specular")) light.specular = readColour(*v, childPath(lightPath, "specular"), NumberRule::NonNegative);
+      if (const Json* v = find(lj, "diffuse")) light.diffuse = readColour(*v, childPath(lightPath, "diffuse"), NumberRule::Colour);
+      if (const Json* v = find(lj, "specular")) light.specular = readColour(*v, childPath(lightPath, "specular"), NumberRule::Colour);
       if (const Json* v = find(lj, "attenuation")) {
         const std::string attenuationPath = childPath(lightPath, "attenuation");
         light.attenuation = readVector<3>(*v, attenuationPath, NumberRule::NonNegative);
@@ -350,9 +364,9 @@ class SceneReader {
       checkKeys(mj, materialPath, {"ka", "kd", "ks", "shininess", "diffuse_map", "normal_map", "specular_map"}, "a material");
       Material material;
       material.name = it.key();
-      if (const Json* v = find(mj, "ka")) material.ka = readColour(*v, childPath(materialPath, "ka"), NumberRule::NonNegative);
-      if (const Json* v = find(mj, "kd")) material.kd = readColour(*v, childPath(materialPath, "kd"), NumberRule::NonNegative);
-      if (const Json* v = find(mj, "ks")) material.ks = readColour(*v, childPath(materialPath, "ks"), NumberRule::NonNegative);
+      if (const Json* v = find(mj, "ka")) material.ka = readColour(*v, childPath(materialPath, "ka"), NumberRule::Colour);
+      if (const Json* v = find(mj, "kd")) material.kd = readColour(*v, childPath(materialPath, "kd"), NumberRule::Colour);
+      if (const Json* v = find(mj, "ks")) material.ks = readColour(*v, childPath(materialPath, "ks"), NumberRule::Colour);
       if (const Json* v = find(mj, "shininess")) material.shininess = readNumber(*v, childPath(materialPath, "shininess"), NumberRule::NonNegative);
       if (const Json* v = find(mj, "diffuse_map")) material.diffuseMap = readTexture(*v, childPath(materialPath, "diffuse_map"));
       if (const Json* v = find(mj, "normal_map")) material.normalMap = readTexture(*v, childPath(materialPath, "normal_map"));
@@ -368,7 +382,7 @@ class SceneReader {
     if (const auto it = textures_.find(file); it != textures_.end()) return it->second;
     std::shared_ptr<const Texture> texture;
     try {
-      texture = std::make_shared<const Texture>(loadTexture(file));
+      texture = std::make_shared<const Texture>(loadTexture(file, textureBudget_));
     } catch (const InputError& e) {
       fail(path, e.what());
     }
@@ -500,7 +514,7 @@ class SceneReader {
     const std::string filePath = childPath(path, "path");
     ObjModel model;
     try {
-      model = loadObj(desc.path);
+      model = loadObj(desc.path, ObjLimits{kMaxSceneTriangles - trianglesSoFar_, textureBudget_});
     } catch (const InputError& e) {
       fail(filePath, e.what());
     }
@@ -512,6 +526,13 @@ class SceneReader {
     std::size_t objTriangles = 0;
     for (const Mesh& m : model.meshes) objTriangles += m.triangleCount();
     addTriangles(objTriangles, path);
+    // The OBJ kept within what was left; its maps (each file once) now use up that much.
+    std::set<const Texture*> objTextures;
+    for (const Material& m : model.materials) {
+      for (const Texture* map : {m.diffuseMap.get(), m.normalMap.get(), m.specularMap.get()}) {
+        if (map && objTextures.insert(map).second) textureBudget_ -= std::min<std::uintmax_t>(textureBudget_, map->rgba.size());
+      }
+    }
 
     std::vector<Node> parts;
     for (std::size_t i = 0; i < model.meshes.size(); ++i) {
@@ -673,6 +694,7 @@ class SceneReader {
   std::map<std::string, int> materialIndex_;
   std::map<std::string, std::shared_ptr<const Texture>> textures_;
   std::size_t trianglesSoFar_ = 0;
+  std::uintmax_t textureBudget_ = kMaxSceneTextureBytes;  // texel bytes still allowed
 };
 
 // nlohmann says "[json.exception.parse_error.101] parse error at line 3, column 5: syntax
@@ -713,6 +735,10 @@ std::string_view toString(MeshType type) {
 }
 
 Scene parseScene(const std::string& json, const std::string& nameForMessages, const std::string& baseDir) {
+  if (json.size() > kMaxSceneFileBytes) {
+    throw InputError(nameForMessages + ": scene file is " + describeBytes(json.size()) + ", larger than the limit of " +
+                     describeBytes(kMaxSceneFileBytes) + " for a scene file");
+  }
   Json root;
   try {
     root = Json::parse(json, DuplicateKeyCheck(nameForMessages), /*allow_exceptions=*/true, /*ignore_comments=*/true);
@@ -725,15 +751,9 @@ Scene parseScene(const std::string& json, const std::string& nameForMessages, co
 }
 
 Scene loadSceneFile(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": cannot open scene file (it is a directory)");
-  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": cannot open scene file (no such file)");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open scene file (not readable)");
-  std::ostringstream text;
-  text << in.rdbuf();
+  const std::string text = readFileCapped(path, kMaxSceneFileBytes, "scene file");
   const std::string baseDir = std::filesystem::path(path).parent_path().string();
-  Scene scene = parseScene(text.str(), path, baseDir.empty() ? "." : baseDir);
+  Scene scene = parseScene(text, path, baseDir.empty() ? "." : baseDir);
   scene.sourcePath = path;
   return scene;
 }

@@ -4,10 +4,17 @@
 
 #include "scene/scene.h"
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 
 namespace twr {
+
+// Largest scene file (inclusive, bytes): the parsed JSON takes up to about 20 times its text.
+inline constexpr std::uintmax_t kMaxSceneFileBytes = 32ull * 1024 * 1024;
+// Deepest JSON nesting accepted (inclusive; the top-level object is level 1). Nodes may nest
+// 64 deep, and each node level is two JSON levels (node object, "children" array).
+inline constexpr int kMaxJsonDepth = 160;
 
 // Throws InputError: "<file>: <json path>: <what was expected>" (or the JSON line/column).
 Scene loadSceneFile(const std::string& path);
