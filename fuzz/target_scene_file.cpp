@@ -1,0 +1,51 @@
+// Target "scene_file": parseScene on the raw bytes, then a small CPU render of what it accepts.
+#include "fuzz/support.h"
+#include "fuzz/targets.h"
+
+#include "scene/scene_file.h"
+#include "softrender/cpu_renderer.h"
+
+namespace twr::fuzz {
+
+namespace {
+
+// The name parseScene reports for the input.
+constexpr const char* kInputName = "fuzz.json";
+// Render size for accepted scenes (pixels): enough for a few triangles to cover pixels,
+// small enough to keep thousands of executions per second.
+constexpr int kRenderWidth = 12;
+constexpr int kRenderHeight = 9;
+// Accepted scenes with more triangles than this (inclusive bound on what is rendered) are
+// only parsed: a 16M-triangle sphere is legal but would turn one execution into seconds.
+constexpr std::size_t kMaxRenderedTriangles = 200'000;
+
+}  // namespace
+
+void fuzzSceneFile(const Workspace& workspace, const std::uint8_t* data, std::size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  Scene scene;
+  try {
+    scene = parseScene(text, kInputName, workspace.dir().string());
+  } catch (const InputError& error) {
+    requireNamesInput(error, kInputName);
+    return;
+  }
+  for (const Mesh& mesh : scene.meshes) {
+    for (std::uint32_t index : mesh.indices) require(index < mesh.vertices.size(), "mesh index out of range");
+    for (const Vertex& v : mesh.vertices) {
+      require(isFinite(v.posModel) && isFinite(v.nModel) && isFinite(v.tangentModel) && isFinite(v.uv),
+              "a built mesh has a non-finite vertex attribute");
+    }
+  }
+  const std::size_t triangles = countTriangles(scene);
+  if (triangles > kMaxRenderedTriangles) return;
+  RenderOutput output;
+  try {
+    output = makeCpuRenderer()->render(scene, scene.settings, kRenderWidth, kRenderHeight);
+  } catch (const InputError& error) {
+    throw InvariantViolation(std::string("a scene the loader accepted cannot be rendered: ") + error.what());
+  }
+  checkRenderOutput(output, kRenderWidth, kRenderHeight, triangles, "scene render");
+}
+
+}  // namespace twr::fuzz
