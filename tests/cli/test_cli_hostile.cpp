@@ -1,0 +1,131 @@
+// Hostile inputs through `twinraster` as a user runs it: real-world OBJ files from Debian's
+// assimp-testmodels (a sample; fuzz/test_real_world_models.cpp loads every one in process)
+// and bad scene files, textures and special files. Each run either writes an image or exits
+// with code 2, "twinraster: error: " and a message that names the file and the problem,
+// and writes no image. Never a crash (any other exit code, or a signal, fails).
+#include "cli_run.h"
+
+#include "scene/image.h"
+#include "scene/scene_file.h"
+
+#include <nlohmann/json.hpp>
+
+namespace twr::testcli {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kAssimpObj = "/usr/share/assimp/models/OBJ";
+
+RunResult runCli(const std::string& args, const fs::path& dir) { return runProgram(TWINRASTER_CLI, args, dir); }
+
+std::string quoted(const fs::path& path) { return "\"" + path.string() + "\""; }
+
+void writeText(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << text;
+}
+
+// A scene showing one OBJ file from a fixed camera (the model's size does not matter here).
+fs::path objScene(const fs::path& dir, const fs::path& obj) {
+  const fs::path scene = dir / (obj.stem().string() + ".json");
+  writeText(scene, R"({"settings": {"cull": "none"}, "nodes": [{"name": "m", "mesh": {"type": "obj", "path": )" +
+                       nlohmann::json(obj.string()).dump() + "}}]}");
+  return scene;
+}
+
+// `render` with one backend must succeed and write an image of the requested size.
+void expectRenders(const fs::path& dir, const fs::path& scene, const std::string& backend) {
+  const fs::path png = dir / (scene.stem().string() + "-" + backend + ".png");
+  const RunResult r =
+      runCli("render " + quoted(scene) + " --backend " + backend + " --width 64 --height 48 --out " + quoted(png), dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const Image image = loadPng(png.string());
+  EXPECT_EQ(image.width, 64);
+  EXPECT_EQ(image.height, 48);
+}
+
+// `render` must exit 2 with "twinraster: error: <start>..." containing `detail`, and write nothing.
+void expectRefused(const fs::path& dir, const std::string& sceneArgument, const std::string& start,
+                   const std::string& detail) {
+  const fs::path png = dir / "refused.png";
+  fs::remove(png);
+  const RunResult r = runCli("render " + sceneArgument + " --out " + quoted(png), dir);
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("twinraster: error: " + start, 0), 0u) << r.err;
+  expectContains(r.err, detail);
+  EXPECT_FALSE(fs::exists(png)) << "a refused render wrote an image";
+}
+
+TEST(CliHostile, RealWorldObjSample) {
+  if (!fs::is_directory(kAssimpObj)) {
+    GTEST_SKIP() << kAssimpObj << " is missing: install Debian's assimp-testmodels (scripts/install-deps.sh does)";
+  }
+  const auto dir = testDir("cli_hostile");
+  // UTF-16, material names with spaces, Windows texture paths to JPEGs: rendered by both.
+  for (const char* name : {"box_UTF16BE.obj", "space_in_material_name.obj", "spider.obj"}) {
+    SCOPED_TRACE(name);
+    const fs::path scene = objScene(dir, kAssimpObj / name);
+    expectRenders(dir, scene, "cpu");
+    expectRenders(dir, scene, "gl");
+  }
+  // A malformed number and a points-only file: refused, naming scene, key, OBJ and line.
+  const fs::path numbers = objScene(dir, kAssimpObj / "number_formats.obj");
+  expectRefused(dir, quoted(numbers), numbers.string() + ": nodes[0].mesh.path: " + (kAssimpObj / "number_formats.obj").string(),
+                "number_formats.obj:11: 'v' expects finite numbers, got '3.1+e2'");
+  const fs::path points = objScene(dir, kAssimpObj / "point_cloud.obj");
+  expectRefused(dir, quoted(points), points.string() + ": nodes[0].mesh.path: ", "has no triangles");
+  // `compare` runs both renderers in one process on a model that loads.
+  const RunResult r = runCli("compare " + quoted(objScene(dir, kAssimpObj / "concave_polygon.obj")) + " --out-dir " +
+                                 quoted(dir / "compare") + " --width 64 --height 48 --repeat 1 --json",
+                             dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out).at("nan_pixels"), 0);
+}
+
+TEST(CliHostile, BadSceneFiles) {
+  const auto dir = testDir("cli_hostile");
+  writeText(dir / "empty.json", "");
+  expectRefused(dir, quoted(dir / "empty.json"), (dir / "empty.json").string() + ": line 1, column 1:", "invalid JSON");
+  writeText(dir / "truncated.json", R"({"nodes": [{"name": "a", "mesh": {"type": "sph)");
+  expectRefused(dir, quoted(dir / "truncated.json"), (dir / "truncated.json").string() + ": line 1,", "invalid JSON");
+  expectRefused(dir, quoted(dir), dir.string() + ": cannot open scene file (it is a directory)", "directory");
+  if (fs::exists("/dev/zero")) expectRefused(dir, "/dev/zero", "/dev/zero: cannot open scene file", "not a regular file");
+  const fs::path huge = dir / "huge.json";
+  writeText(huge, "{");
+  fs::resize_file(huge, kMaxSceneFileBytes + 1);
+  expectRefused(dir, quoted(huge), huge.string() + ": scene file is ", "larger than the limit of 32 MiB");
+  writeText(dir / "deep.json", R"({"nodes": [], "ambient": )" + std::string(100000, '[') + std::string(100000, ']') + "}");
+  expectRefused(dir, quoted(dir / "deep.json"), (dir / "deep.json").string() + ": ambient[0]", "JSON nests deeper than");
+  writeText(dir / "many.json", R"({"nodes": [{"mesh": {"type": "sphere", "stacks": 4096, "slices": 4096}}]})");
+  expectRefused(dir, quoted(dir / "many.json"), (dir / "many.json").string() + ": nodes[0].mesh: ",
+                "at most 20000000 are allowed");
+  writeText(dir / "bright.json", R"({"nodes": [], "lights": [{"diffuse": [1e30, 1, 1]}]})");
+  expectRefused(dir, quoted(dir / "bright.json"), (dir / "bright.json").string() + ": lights[0].diffuse[0]: ",
+                "expected a number in [0, 10000]");
+}
+
+TEST(CliHostile, BadTexturesAndModels) {
+  const auto dir = testDir("cli_hostile");
+  writeText(dir / "truncated.png", std::string("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR", 16));
+  writeText(dir / "tex.json", R"({"materials": {"m": {"diffuse_map": "truncated.png"}}, "nodes": []})");
+  expectRefused(dir, quoted(dir / "tex.json"), (dir / "tex.json").string() + ": materials.m.diffuse_map: " +
+                                                   (dir / "truncated.png").string() + ": ",
+                "image");
+  writeText(dir / "gif.png", "GIF89a");
+  writeText(dir / "gif.json", R"({"materials": {"m": {"normal_map": "gif.png"}}, "nodes": []})");
+  expectRefused(dir, quoted(dir / "gif.json"), (dir / "gif.json").string() + ": materials.m.normal_map: ",
+                "expected a PNG or JPEG file");
+  writeText(dir / "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n");
+  writeText(dir / "obj.json", R"({"nodes": [{"mesh": {"type": "obj", "path": "bad.obj"}}]})");
+  expectRefused(dir, quoted(dir / "obj.json"), (dir / "obj.json").string() + ": nodes[0].mesh.path: " +
+                                                   (dir / "bad.obj").string() + ":4: a face references",
+                "index");
+  // `info` loads the same way and refuses the same way.
+  const RunResult r = runCli("info " + quoted(dir / "obj.json"), dir);
+  EXPECT_EQ(r.exitCode, 2);
+  expectContains(r.err, "bad.obj:4");
+}
+
+}  // namespace
+}  // namespace twr::testcli

@@ -1,0 +1,577 @@
+// Hostile inputs through the scene module's loaders: PNGs built byte by byte (truncated,
+// empty, 1x1, huge sizes in the header, 16-bit, grey, grey + alpha, palette with and without
+// transparency and with indices past the palette, other formats), scene files that are too
+// big, too deep, too bright or ask for too many triangles, special files (/dev/zero, a
+// directory), OBJ files in UTF-16, with CR line ends, with material names holding spaces, and
+// over their triangle budget. Every refusal is an InputError whose message starts with the
+// file's name; every expected pixel is worked out by hand from the PNG specification.
+#include "scene/errors.h"
+#include "scene/image.h"
+#include "scene/obj_loader.h"
+#include "scene/scene_file.h"
+#include "scene/texture.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+namespace twr {
+namespace {
+
+namespace fs = std::filesystem;
+
+using Bytes = std::vector<std::uint8_t>;
+
+// ---- files under the test output folder ----
+
+fs::path caseDir() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const fs::path dir = fs::path(TWINRASTER_TEST_OUT) / "hostile" / (std::string(info->test_suite_name()) + "." + info->name());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string writeFile(const fs::path& path, const Bytes& bytes) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  return path.string();
+}
+
+std::string writeText(const fs::path& path, const std::string& text) {
+  return writeFile(path, Bytes(text.begin(), text.end()));
+}
+
+// The InputError message `f` throws; a test failure when it throws nothing.
+template <typename F>
+std::string errorOf(F&& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "expected an InputError";
+  return {};
+}
+
+void expectStartsWith(const std::string& message, const std::string& start) {
+  EXPECT_EQ(message.rfind(start, 0), 0u) << "\"" << message << "\" does not start with \"" << start << "\"";
+}
+
+void expectContains(const std::string& message, std::initializer_list<std::string> parts) {
+  for (const std::string& part : parts) {
+    EXPECT_NE(message.find(part), std::string::npos) << "missing \"" << part << "\" in: " << message;
+  }
+}
+
+// ---- PNG files built byte by byte (PNG specification, ISO/IEC 15948) ----
+
+void appendBigEndian32(Bytes& out, std::uint32_t v) {
+  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<std::uint8_t>(v >> shift));
+}
+
+std::uint32_t crc32(const Bytes& data, std::size_t begin) {
+  std::uint32_t crc = 0xFFFFFFFFu;
+  for (std::size_t i = begin; i < data.size(); ++i) {
+    crc ^= data[i];
+    for (int bit = 0; bit < 8; ++bit) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+  }
+  return crc ^ 0xFFFFFFFFu;
+}
+
+void appendChunk(Bytes& png, const char* type, const Bytes& data) {
+  appendBigEndian32(png, static_cast<std::uint32_t>(data.size()));
+  const std::size_t typeAt = png.size();
+  png.insert(png.end(), type, type + 4);
+  png.insert(png.end(), data.begin(), data.end());
+  appendBigEndian32(png, crc32(png, typeAt));
+}
+
+// A zlib stream of "stored" (uncompressed) deflate blocks: header 0x78 0x01, blocks of at
+// most 65535 bytes (BFINAL flag, LEN, ~LEN little-endian), Adler-32 big-endian.
+Bytes zlibStored(const Bytes& raw) {
+  Bytes out{0x78, 0x01};
+  std::size_t at = 0;
+  do {
+    const std::size_t length = std::min<std::size_t>(raw.size() - at, 65535);
+    out.push_back(at + length == raw.size() ? 1 : 0);
+    out.push_back(static_cast<std::uint8_t>(length));
+    out.push_back(static_cast<std::uint8_t>(length >> 8));
+    out.push_back(static_cast<std::uint8_t>(~length));
+    out.push_back(static_cast<std::uint8_t>(~length >> 8));
+    out.insert(out.end(), raw.begin() + static_cast<std::ptrdiff_t>(at), raw.begin() + static_cast<std::ptrdiff_t>(at + length));
+    at += length;
+  } while (at < raw.size());
+  std::uint32_t a = 1, b = 0;
+  for (std::uint8_t byte : raw) {
+    a = (a + byte) % 65521;
+    b = (b + a) % 65521;
+  }
+  appendBigEndian32(out, (b << 16) | a);
+  return out;
+}
+
+enum ColourType : std::uint8_t { kGrey = 0, kRgb = 2, kPalette = 3, kGreyAlpha = 4, kRgba = 6 };
+
+struct PngSpec {
+  std::uint32_t width = 1, height = 1;
+  std::uint8_t bitDepth = 8;
+  ColourType colourType = kRgba;
+  std::vector<Bytes> rows;  // each row's bytes, without the filter byte (filter 0 is added)
+  Bytes palette;            // PLTE data (RGB triples), only when non-empty
+  Bytes transparency;       // tRNS data, only when non-empty
+};
+
+Bytes makePng(const PngSpec& spec) {
+  Bytes png{0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  Bytes header;
+  appendBigEndian32(header, spec.width);
+  appendBigEndian32(header, spec.height);
+  header.insert(header.end(), {spec.bitDepth, spec.colourType, 0, 0, 0});  // deflate, adaptive filters, no interlace
+  appendChunk(png, "IHDR", header);
+  if (!spec.palette.empty()) appendChunk(png, "PLTE", spec.palette);
+  if (!spec.transparency.empty()) appendChunk(png, "tRNS", spec.transparency);
+  Bytes raw;
+  for (const Bytes& row : spec.rows) {
+    raw.push_back(0);  // filter type None
+    raw.insert(raw.end(), row.begin(), row.end());
+  }
+  appendChunk(png, "IDAT", zlibStored(raw));
+  appendChunk(png, "IEND", {});
+  return png;
+}
+
+std::array<int, 4> pixelOf(const Image& image, int x, int y) {
+  const std::uint8_t* p = image.pixel(x, y);
+  return {p[0], p[1], p[2], p[3]};
+}
+
+// A valid 4x2 RGBA image, every byte distinct.
+PngSpec rgba4x2() {
+  PngSpec spec;
+  spec.width = 4;
+  spec.height = 2;
+  for (std::uint8_t y = 0; y < 2; ++y) {
+    Bytes row;
+    for (std::uint8_t i = 0; i < 16; ++i) row.push_back(static_cast<std::uint8_t>(16 * y + i));
+    spec.rows.push_back(row);
+  }
+  return spec;
+}
+
+// ---- PNGs ----
+
+TEST(HostilePng, ValidRgbaLoadsTopRowFirst) {
+  const std::string path = writeFile(caseDir() / "rgba.png", makePng(rgba4x2()));
+  const Image image = loadPng(path);
+  ASSERT_EQ(image.width, 4);
+  ASSERT_EQ(image.height, 2);
+  EXPECT_EQ(pixelOf(image, 0, 0), (std::array<int, 4>{0, 1, 2, 3}));
+  EXPECT_EQ(pixelOf(image, 3, 1), (std::array<int, 4>{28, 29, 30, 31}));
+  // As a texture, row 0 is the bottom row of the file.
+  const Texture texture = loadTexture(path);
+  EXPECT_EQ(texture.texel(0, 0)[0], 16);
+  EXPECT_EQ(texture.texel(0, 1)[0], 0);
+}
+
+TEST(HostilePng, OneByOne) {
+  PngSpec spec;
+  spec.rows = {{10, 20, 30, 40}};
+  const Image image = loadPng(writeFile(caseDir() / "one.png", makePng(spec)));
+  ASSERT_EQ(image.width, 1);
+  ASSERT_EQ(image.height, 1);
+  EXPECT_EQ(pixelOf(image, 0, 0), (std::array<int, 4>{10, 20, 30, 40}));
+}
+
+TEST(HostilePng, EmptyFile) {
+  const std::string path = writeFile(caseDir() / "empty.png", {});
+  const std::string message = errorOf([&] { loadPng(path); });
+  expectStartsWith(message, path + ": not a readable image");
+  expectContains(message, {"the file is empty"});
+}
+
+TEST(HostilePng, TruncatedAnywhereBeforeTheImageDataEnds) {
+  const fs::path dir = caseDir();
+  const Bytes png = makePng(rgba4x2());
+  // signature 8 + IHDR 25 + IDAT (12 + zlib 2 + 5 + 34 raw + 4) = 90 bytes before IEND.
+  const std::size_t imageDataEnd = 8 + 25 + 12 + 2 + 5 + 34 + 4;
+  ASSERT_EQ(png.size(), imageDataEnd + 12);
+  for (std::size_t length : {std::size_t{1}, std::size_t{7}, std::size_t{8}, std::size_t{16}, std::size_t{33},
+                             std::size_t{40}, std::size_t{60}, imageDataEnd - 5, imageDataEnd - 1}) {
+    SCOPED_TRACE(length);
+    const std::string path = writeFile(dir / ("cut" + std::to_string(length) + ".png"), Bytes(png.begin(), png.begin() + static_cast<std::ptrdiff_t>(length)));
+    expectStartsWith(errorOf([&] { loadPng(path); }), path + ": ");
+  }
+}
+
+TEST(HostilePng, HugeSizeInTheHeaderIsRefusedBeforeDecoding) {
+  const fs::path dir = caseDir();
+  for (std::uint32_t side : {std::uint32_t{16385}, std::uint32_t{100000}, std::uint32_t{0x7FFFFFFF}}) {
+    PngSpec spec = rgba4x2();
+    spec.width = side;  // the rows stay 4 pixels: only the header lies
+    const std::string path = writeFile(dir / ("wide" + std::to_string(side) + ".png"), makePng(spec));
+    const auto start = std::chrono::steady_clock::now();
+    const std::string message = errorOf([&] { loadPng(path); });
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1)) << "refused only after decoding";
+    // stb refuses what exceeds its own 2^24 bound itself; ours is kMaxImageSide.
+    expectStartsWith(message, path + ": ");
+    if (side < (1u << 24)) {
+      EXPECT_EQ(message, path + ": image is " + std::to_string(side) + "x2, expected each side in [1, 16384]");
+    }
+  }
+  PngSpec zero = rgba4x2();
+  zero.height = 0;
+  const std::string path = writeFile(dir / "zero_height.png", makePng(zero));
+  expectStartsWith(errorOf([&] { loadPng(path); }), path + ": not a readable image");
+}
+
+TEST(HostilePng, SixteenBitKeepsTheHighByte) {
+  // stb_image reduces 16-bit samples to their high byte: 0x1234 -> 0x12.
+  PngSpec spec;
+  spec.width = 2;
+  spec.bitDepth = 16;
+  spec.rows = {{0x12, 0x34, 0xAB, 0xCD, 0xFF, 0xFF, 0x80, 0x00, 0x00, 0xFF, 0x7F, 0xFF, 0x01, 0x00, 0xFE, 0xFF}};
+  const Image image = loadPng(writeFile(caseDir() / "rgba16.png", makePng(spec)));
+  EXPECT_EQ(pixelOf(image, 0, 0), (std::array<int, 4>{0x12, 0xAB, 0xFF, 0x80}));
+  EXPECT_EQ(pixelOf(image, 1, 0), (std::array<int, 4>{0x00, 0x7F, 0x01, 0xFE}));
+
+  PngSpec grey;
+  grey.width = 2;
+  grey.bitDepth = 16;
+  grey.colourType = kGrey;
+  grey.rows = {{0xC0, 0x01, 0x05, 0xFF}};
+  const Image greyImage = loadPng(writeFile(caseDir() / "grey16.png", makePng(grey)));
+  EXPECT_EQ(pixelOf(greyImage, 0, 0), (std::array<int, 4>{0xC0, 0xC0, 0xC0, 255}));
+  EXPECT_EQ(pixelOf(greyImage, 1, 0), (std::array<int, 4>{0x05, 0x05, 0x05, 255}));
+}
+
+TEST(HostilePng, GreyGreyAlphaAndRgbBecomeRgba) {
+  const fs::path dir = caseDir();
+  PngSpec grey;
+  grey.width = 2;
+  grey.colourType = kGrey;
+  grey.rows = {{0x40, 0xC0}};
+  const Image greyImage = loadPng(writeFile(dir / "grey.png", makePng(grey)));
+  EXPECT_EQ(pixelOf(greyImage, 0, 0), (std::array<int, 4>{0x40, 0x40, 0x40, 255}));
+  EXPECT_EQ(pixelOf(greyImage, 1, 0), (std::array<int, 4>{0xC0, 0xC0, 0xC0, 255}));
+
+  // 1-bit grey: 0b10110000 -> white, black, white, white (samples scaled to 0 or 255).
+  PngSpec bits;
+  bits.width = 4;
+  bits.colourType = kGrey;
+  bits.bitDepth = 1;
+  bits.rows = {{0xB0}};
+  const Image bitImage = loadPng(writeFile(dir / "grey1.png", makePng(bits)));
+  EXPECT_EQ(pixelOf(bitImage, 0, 0)[0], 255);
+  EXPECT_EQ(pixelOf(bitImage, 1, 0)[0], 0);
+  EXPECT_EQ(pixelOf(bitImage, 3, 0)[0], 255);
+
+  PngSpec greyAlpha;
+  greyAlpha.colourType = kGreyAlpha;
+  greyAlpha.rows = {{0x30, 0x90}};
+  const Image greyAlphaImage = loadPng(writeFile(dir / "grey_alpha.png", makePng(greyAlpha)));
+  EXPECT_EQ(pixelOf(greyAlphaImage, 0, 0), (std::array<int, 4>{0x30, 0x30, 0x30, 0x90}));
+
+  PngSpec rgb;
+  rgb.colourType = kRgb;
+  rgb.rows = {{1, 2, 3}};
+  const Image rgbImage = loadPng(writeFile(dir / "rgb.png", makePng(rgb)));
+  EXPECT_EQ(pixelOf(rgbImage, 0, 0), (std::array<int, 4>{1, 2, 3, 255}));
+}
+
+TEST(HostilePng, PaletteWithTransparency) {
+  PngSpec spec;
+  spec.width = 3;
+  spec.colourType = kPalette;
+  spec.palette = {10, 20, 30, 200, 150, 100, 7, 8, 9};
+  spec.transparency = {255, 7};  // entry 2 has no tRNS value: opaque
+  spec.rows = {{1, 0, 2}};
+  const Image image = loadPng(writeFile(caseDir() / "palette.png", makePng(spec)));
+  EXPECT_EQ(pixelOf(image, 0, 0), (std::array<int, 4>{200, 150, 100, 7}));
+  EXPECT_EQ(pixelOf(image, 1, 0), (std::array<int, 4>{10, 20, 30, 255}));
+  EXPECT_EQ(pixelOf(image, 2, 0), (std::array<int, 4>{7, 8, 9, 255}));
+}
+
+TEST(HostilePng, PaletteIndexPastThePaletteIsOpaqueBlackEveryTime) {
+  // stb_image would read an uninitialised stack entry for index 200 of a 1-entry palette;
+  // loadPng pads the palette, so the texel is defined (and the same on every run).
+  PngSpec spec;
+  spec.width = 2;
+  spec.colourType = kPalette;
+  spec.palette = {90, 80, 70};
+  spec.rows = {{0, 200}};
+  const std::string path = writeFile(caseDir() / "short_palette.png", makePng(spec));
+  const Image image = loadPng(path);
+  EXPECT_EQ(pixelOf(image, 0, 0), (std::array<int, 4>{90, 80, 70, 255}));
+  EXPECT_EQ(pixelOf(image, 1, 0), (std::array<int, 4>{0, 0, 0, 255}));
+}
+
+TEST(HostilePng, CorruptImageData) {
+  Bytes png = makePng(rgba4x2());
+  png[8 + 25 + 8] = 0x00;  // the zlib header's first byte: compression method 0 is invalid
+  const std::string path = writeFile(caseDir() / "bad_zlib.png", png);
+  expectStartsWith(errorOf([&] { loadPng(path); }), path + ": cannot decode image");
+}
+
+TEST(HostilePng, OtherFormatsAreRefused) {
+  const fs::path dir = caseDir();
+  // Valid headers of formats stb_image decodes but loadPng does not accept.
+  const std::vector<std::pair<std::string, std::string>> others{
+      {"gif.png", "GIF89a\x01\x00\x01\x00\x00\x00\x00;"},
+      {"bmp.png", std::string("BM") + std::string(60, '\0')},
+      {"pnm.png", "P6\n1 1\n255\nabc"},
+      {"psd.png", "8BPS" + std::string(40, '\0')},
+  };
+  for (const auto& [name, bytes] : others) {
+    const std::string path = writeText(dir / name, bytes);
+    const std::string message = errorOf([&] { loadPng(path); });
+    EXPECT_EQ(message, path + ": not a readable image (expected a PNG or JPEG file)");
+  }
+}
+
+TEST(HostilePng, SpecialFilesAreRefused) {
+  const fs::path dir = caseDir();
+  expectStartsWith(errorOf([&] { loadPng(dir.string()); }), dir.string() + ": cannot open image file (it is a directory)");
+  if (fs::exists("/dev/zero")) {
+    EXPECT_EQ(errorOf([&] { loadPng("/dev/zero"); }), "/dev/zero: cannot open image file (not a regular file)");
+  }
+  EXPECT_EQ(errorOf([&] { loadPng((dir / "missing.png").string()); }), (dir / "missing.png").string() + ": image file not found");
+}
+
+TEST(HostilePng, TextureBudgetRefusesBeforeDecoding) {
+  const fs::path dir = caseDir();
+  const std::string small = writeFile(dir / "small.png", makePng(rgba4x2()));
+  PngSpec big = rgba4x2();
+  big.width = 4096;  // the header says 4096 x 2 = 32 KiB of texels; the data is still 4 x 2
+  const std::string liar = writeFile(dir / "liar.png", makePng(big));
+  std::uintmax_t budget = 32 + 4096 * 2 * 4 - 1;  // room for small.png and one byte short of liar.png
+  const Texture texture = loadTexture(small, budget);
+  EXPECT_EQ(budget, std::uintmax_t{4096 * 2 * 4 - 1}) << "the 4x2 texture uses 32 bytes";
+  const std::string message = errorOf([&] { loadTexture(liar, budget); });
+  expectStartsWith(message, liar + ": image is 4096x2 (32768 bytes of texels), more than the 32767 bytes left");
+  EXPECT_EQ(budget, std::uintmax_t{4096 * 2 * 4 - 1}) << "a refused texture uses nothing";
+}
+
+// ---- scene files ----
+
+TEST(HostileScene, SpecialFilesAndSize) {
+  const fs::path dir = caseDir();
+  if (fs::exists("/dev/zero")) {
+    EXPECT_EQ(errorOf([] { loadSceneFile("/dev/zero"); }), "/dev/zero: cannot open scene file (not a regular file)");
+  }
+  const std::string empty = writeText(dir / "empty.json", "");
+  expectStartsWith(errorOf([&] { loadSceneFile(empty); }), empty + ": line 1, column 1:");
+  // A sparse file one byte over the limit: refused from its size, without reading it.
+  const fs::path huge = dir / "huge.json";
+  writeText(huge, "{");
+  fs::resize_file(huge, kMaxSceneFileBytes + 1);
+  EXPECT_EQ(errorOf([&] { loadSceneFile(huge.string()); }),
+            huge.string() + ": scene file is 33554433 bytes (32.0 MiB), larger than the limit of 32 MiB for a scene file");
+  // The same limit for text handed over in memory.
+  const std::string text(kMaxSceneFileBytes + 1, ' ');
+  expectStartsWith(errorOf([&] { parseScene(text, "big.json", "."); }), "big.json: scene file is 33554433 bytes (32.0 MiB), larger than");
+}
+
+TEST(HostileScene, BinaryAndWrongEncodings) {
+  const fs::path dir = caseDir();
+  const std::string png = writeFile(dir / "image.json", makePng(rgba4x2()));
+  expectContains(errorOf([&] { loadSceneFile(png); }), {png + ": line 1, column 1:", "invalid JSON"});
+  // UTF-16 (with a byte-order mark) is not JSON text.
+  const std::string utf16 = writeFile(dir / "utf16.json", {0xFF, 0xFE, '{', 0, '}', 0});
+  expectContains(errorOf([&] { loadSceneFile(utf16); }), {utf16 + ": line 1, column 1:", "invalid JSON"});
+  const std::string nul = writeText(dir / "nul.json", std::string("{\"nodes\": [\0]}", 14));
+  expectContains(errorOf([&] { loadSceneFile(nul); }), {nul + ": line 1, column 12:", "invalid JSON"});
+}
+
+TEST(HostileScene, NestingDepthIsBounded) {
+  // kMaxJsonDepth levels in all: the top-level object plus kMaxJsonDepth - 1 arrays pass
+  // the parser (and the reader then refuses the content); one more level does not.
+  const auto nested = [](int arrays) {
+    return R"({"nodes": [], "ambient": )" + std::string(static_cast<std::size_t>(arrays), '[') +
+           std::string(static_cast<std::size_t>(arrays), ']') + "}";
+  };
+  expectStartsWith(errorOf([&] { parseScene(nested(kMaxJsonDepth - 1), "deep.json", "."); }),
+                   "deep.json: ambient: expected an array of 3 numbers");
+  const std::string message = errorOf([&] { parseScene(nested(kMaxJsonDepth), "deep.json", "."); });
+  expectStartsWith(message, "deep.json: ambient[0][0]");
+  expectContains(message, {"JSON nests deeper than " + std::to_string(kMaxJsonDepth) + " levels"});
+  // Far deeper: the same message, quickly, without exhausting the stack or memory.
+  const auto start = std::chrono::steady_clock::now();
+  expectContains(errorOf([&] { parseScene(nested(10'000'000), "deeper.json", "."); }), {"JSON nests deeper than"});
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+}
+
+TEST(HostileScene, ColoursAreBounded) {
+  const std::string limit = std::to_string(static_cast<int>(kMaxColourValue));
+  EXPECT_NO_THROW(parseScene(R"({"nodes": [], "ambient": [0, 10000, 0]})", "c.json", "."));
+  EXPECT_EQ(errorOf([] { parseScene(R"({"nodes": [], "ambient": [0, 10000.5, 0]})", "c.json", "."); }),
+            "c.json: ambient[1]: expected a number in [0, " + limit + "], got 10000.5");
+  expectStartsWith(errorOf([] { parseScene(R"({"nodes": [], "lights": [{"diffuse": [1e38, 1, 1]}]})", "c.json", "."); }),
+                   "c.json: lights[0].diffuse[0]: expected a number in [0, " + limit + "]");
+  expectStartsWith(errorOf([] { parseScene(R"({"nodes": [], "materials": {"m": {"ks": [1, 1, 3e38]}}})", "c.json", "."); }),
+                   "c.json: materials.m.ks[2]: expected a number in [0, " + limit + "]");
+}
+
+TEST(HostileScene, HundredMillionTrianglesAreRefusedUpFront) {
+  // Three spheres of 4096 x 4096 segments ask for 3 x 33,546,240 triangles; the first one is
+  // refused from its parameters alone, before a single vertex is built.
+  std::string nodes;
+  for (int i = 0; i < 3; ++i) {
+    nodes += std::string(i ? ", " : "") + R"({"name": "s)" + std::to_string(i) +
+             R"(", "mesh": {"type": "sphere", "stacks": 4096, "slices": 4096}})";
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const std::string message = errorOf([&] { parseScene(R"({"nodes": [)" + nodes + "]}", "many.json", "."); });
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1)) << "refused only after building";
+  EXPECT_EQ(message, "many.json: nodes[0].mesh: this mesh brings the scene to 33546240 triangles; at most 20000000 are "
+                     "allowed");
+  expectStartsWith(errorOf([] { parseScene(R"({"nodes": [{"mesh": {"type": "torus", "rings": 4096, "sides": 4096}}]})",
+                                           "torus.json", "."); }),
+                   "torus.json: nodes[0].mesh: this mesh brings the scene to 33554432 triangles");
+}
+
+TEST(HostileScene, BadTexturesNameSceneKeyAndFile) {
+  const fs::path dir = caseDir();
+  writeFile(dir / "empty.png", {});
+  writeText(dir / "scene.json", R"({"materials": {"m": {"normal_map": "empty.png"}}, "nodes": []})");
+  const std::string message = errorOf([&] { loadSceneFile((dir / "scene.json").string()); });
+  expectStartsWith(message, (dir / "scene.json").string() + ": materials.m.normal_map: " + (dir / "empty.png").string() +
+                                ": not a readable image");
+}
+
+TEST(HostileScene, TextureMemoryIsBoundedPerScene) {
+  // A first map takes 32 bytes of the 1 GiB; a second one whose header claims 16384^2
+  // (exactly 1 GiB) no longer fits and is refused before decoding.
+  const fs::path dir = caseDir();
+  writeFile(dir / "small.png", makePng(rgba4x2()));
+  PngSpec huge = rgba4x2();
+  huge.width = 16384;
+  huge.height = 16384;
+  writeFile(dir / "huge.png", makePng(huge));
+  const std::string scene = writeText(
+      dir / "scene.json",
+      R"({"materials": {"a": {"diffuse_map": "small.png"}, "b": {"diffuse_map": "huge.png"}}, "nodes": []})");
+  const auto start = std::chrono::steady_clock::now();
+  const std::string message = errorOf([&] { loadSceneFile(scene); });
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));
+  expectStartsWith(message, scene + ": materials.b.diffuse_map: " + (dir / "huge.png").string() +
+                                ": image is 16384x16384 (1024 MiB of texels), more than the 1073741792 bytes (1024.0 MiB) left "
+                                "of the scene's texture memory limit of 1024 MiB");
+  // The same map twice is one texture: it counts once.
+  writeText(dir / "twice.json", R"({"materials": {"a": {"diffuse_map": "small.png", "normal_map": "small.png"}}, "nodes": []})");
+  const Scene twice = loadSceneFile((dir / "twice.json").string());
+  EXPECT_EQ(twice.materials[0].diffuseMap, twice.materials[0].normalMap);
+}
+
+// ---- OBJ files ----
+
+const char* const kTriangleObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+
+TEST(HostileObj, SpecialFilesAndSize) {
+  const fs::path dir = caseDir();
+  if (fs::exists("/dev/zero")) {
+    EXPECT_EQ(errorOf([] { loadObj("/dev/zero"); }), "/dev/zero: cannot open OBJ file (not a regular file)");
+  }
+  expectStartsWith(errorOf([&] { loadObj(dir.string()); }), dir.string() + ": cannot open OBJ file (it is a directory)");
+  const fs::path huge = dir / "huge.obj";
+  writeText(huge, "v");
+  fs::resize_file(huge, kMaxObjFileBytes + 1);
+  expectStartsWith(errorOf([&] { loadObj(huge.string()); }), huge.string() + ": OBJ file is 268435457 bytes (256.0 MiB), larger than the limit of 256 MiB");
+  // An MTL named by mtllib is held to its own limit.
+  writeText(dir / "m.obj", std::string("mtllib big.mtl\nusemtl a\n") + kTriangleObj);
+  writeText(dir / "big.mtl", "newmtl a\n");
+  fs::resize_file(dir / "big.mtl", kMaxMtlFileBytes + 1);
+  expectStartsWith(errorOf([&] { loadObj((dir / "m.obj").string()); }),
+                   (dir / "m.obj").string() + ": mtllib: " + (dir / "big.mtl").string() + ": MTL file is 16777217 bytes");
+}
+
+TEST(HostileObj, TriangleBudgetIsCheckedBeforeParsing) {
+  const fs::path dir = caseDir();
+  // Line 8 is a convex hexagon: 4 triangles, bringing the file to 1 + 4 = 5.
+  const std::string path =
+      writeText(dir / "six.obj", "v 0 0 0\nv 1 0 0\nv 2 1 0\nf 1 2 3\nv 1 2 0\nv 0 2 0\nv -1 1 0\nf 1 2 3 4 5 6\n");
+  EXPECT_EQ(loadObj(path, ObjLimits{5, kMaxSceneTextureBytes}).meshes[0].triangleCount(), 5u);
+  EXPECT_EQ(errorOf([&] { loadObj(path, ObjLimits{4, kMaxSceneTextureBytes}); }),
+            path + ":8: the file has more than 4 triangles, the most this scene can take");
+}
+
+// Positions of the single mesh, in index order.
+std::vector<vec3> cornerPositions(const ObjModel& model) {
+  std::vector<vec3> corners;
+  for (const Mesh& mesh : model.meshes) {
+    for (std::uint32_t index : mesh.indices) corners.push_back(mesh.vertices[index].posModel);
+  }
+  return corners;
+}
+
+TEST(HostileObj, Utf16AndLineEndsDecodeToTheSameModel) {
+  const fs::path dir = caseDir();
+  const std::string text = "# utf\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  const std::vector<vec3> expected{vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0)};
+  const auto utf16 = [&](bool bigEndian, bool byteOrderMark) {
+    Bytes bytes;
+    if (byteOrderMark) bytes = bigEndian ? Bytes{0xFE, 0xFF} : Bytes{0xFF, 0xFE};
+    for (char c : text) {
+      if (bigEndian) bytes.push_back(0);
+      bytes.push_back(static_cast<std::uint8_t>(c));
+      if (!bigEndian) bytes.push_back(0);
+    }
+    return bytes;
+  };
+  std::string crOnly = text;
+  std::replace(crOnly.begin(), crOnly.end(), '\n', '\r');
+  std::string crLf;
+  for (char c : text) crLf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  const std::vector<std::pair<std::string, Bytes>> variants{
+      {"utf16be_bom.obj", utf16(true, true)},   {"utf16le_bom.obj", utf16(false, true)},
+      {"utf16be.obj", utf16(true, false)},      {"utf16le.obj", utf16(false, false)},
+      {"utf8_bom.obj", [&] { Bytes b{0xEF, 0xBB, 0xBF}; b.insert(b.end(), text.begin(), text.end()); return b; }()},
+      {"cr.obj", Bytes(crOnly.begin(), crOnly.end())},
+      {"crlf.obj", Bytes(crLf.begin(), crLf.end())},
+  };
+  for (const auto& [name, bytes] : variants) {
+    SCOPED_TRACE(name);
+    EXPECT_EQ(cornerPositions(loadObj(writeFile(dir / name, bytes))), expected);
+  }
+  const std::string utf32 = writeFile(dir / "utf32.obj", {0xFF, 0xFE, 0, 0, 'v', 0, 0, 0});
+  EXPECT_EQ(errorOf([&] { loadObj(utf32); }), utf32 + ": the file is UTF-32 encoded; expected UTF-8 or UTF-16 text");
+}
+
+TEST(HostileObj, MaterialNamesWithSpaces) {
+  const fs::path dir = caseDir();
+  writeText(dir / "spaces.mtl", "newmtl  Hard Shiny\tPlastic \nKd 0.25 0.5 0.75\n");
+  const std::string path =
+      writeText(dir / "spaces.obj", std::string("mtllib spaces.mtl\nusemtl Hard   Shiny Plastic\n") + kTriangleObj);
+  const ObjModel model = loadObj(path);
+  ASSERT_EQ(model.materials.size(), 1u);
+  ASSERT_TRUE(model.hasMaterial[0]);
+  EXPECT_EQ(model.materials[0].name, "Hard Shiny Plastic");
+  EXPECT_EQ(model.materials[0].kd, vec3(0.25f, 0.5f, 0.75f));
+  // A name that differs in a word is still unknown, with its line.
+  const std::string wrong =
+      writeText(dir / "wrong.obj", std::string("mtllib spaces.mtl\n") + kTriangleObj + "usemtl Hard Plastic\nf 1 2 3\n");
+  EXPECT_EQ(errorOf([&] { loadObj(wrong); }), wrong + ":6: usemtl: material 'Hard Plastic' is not in the MTL file(s)");
+}
+
+TEST(HostileObj, WindowsTexturePathsAndOutOfRangeColours) {
+  const fs::path dir = caseDir();
+  fs::create_directories(dir / "maps");
+  writeFile(dir / "maps" / "albedo.png", makePng(rgba4x2()));
+  writeText(dir / "win.mtl", "newmtl m\nmap_Kd maps\\albedo.png\n");
+  const ObjModel model = loadObj(writeText(dir / "win.obj", std::string("mtllib win.mtl\nusemtl m\n") + kTriangleObj));
+  ASSERT_TRUE(model.materials[0].diffuseMap);
+  EXPECT_EQ(model.materials[0].diffuseMap->width, 4);
+
+  writeText(dir / "bright.mtl", "newmtl m\nKd 1 20000 1\n");
+  const std::string bright = writeText(dir / "bright.obj", std::string("mtllib bright.mtl\nusemtl m\n") + kTriangleObj);
+  EXPECT_EQ(errorOf([&] { loadObj(bright); }), bright + ": material 'm' Kd must be in [0, 10000], got 20000.000000");
+}
+
+}  // namespace
+}  // namespace twr
