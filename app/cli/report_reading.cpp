@@ -69,7 +69,7 @@ struct TradeOff {
 
 TradeOff weigh(const std::string& who, const ReportPoint& shortcut, const ReportPoint& exact) {
   TradeOff t;
-  t.timeRatio = shortcut.msMedian > 0.0 ? exact.msMedian / shortcut.msMedian : 1.0;
+  t.timeRatio = shortcut.msMin > 0.0 ? exact.msMin / shortcut.msMin : 1.0;
   const double gain = shortcut.vsReference.rmse - exact.vsReference.rmse;  // > 0: exact is closer
   const double relative = shortcut.vsReference.rmse > 0.0 ? gain / shortcut.vsReference.rmse : 0.0;
   const bool referenceSeesIt = std::fabs(gain) >= kNegligibleLevels && std::fabs(relative) >= kNegligibleFraction;
@@ -95,7 +95,7 @@ TradeOff weigh(const std::string& who, const ReportPoint& shortcut, const Report
   }
 
   std::string& s = t.detail;
-  s = who + ": " + exact.setting + " " + ms(exact.msMedian) + ", " + shortcut.setting + " " + ms(shortcut.msMedian) +
+  s = who + " (fastest frames): " + exact.setting + " " + ms(exact.msMin) + ", " + shortcut.setting + " " + ms(shortcut.msMin) +
       " (" + times(t.timeRatio) + "); RMSE against the reference " + levels(exact.vsReference.rmse) + " and " +
       levels(shortcut.vsReference.rmse) + ". ";
   if (shortcut.vsExactSetting) {
@@ -194,18 +194,18 @@ KnobReading readTessellation(const KnobResult& knob) {
     r.detail += upper(backend) + ": from " + first.setting + " to " + last.setting + " the RMSE against the exact "
                 "sphere goes from " + levels(first.vsReference.rmse) + " to " + levels(last.vsReference.rmse) +
                 " and the silhouette mismatch from " + std::to_string(first.vsReference.coverageMismatch) + " to " +
-                std::to_string(last.vsReference.coverageMismatch) + " pixels, while a frame goes from " +
-                ms(first.msMedian) + " to " + ms(last.msMedian) + ". " + knee->setting + " is within " +
-                percent(kKneeFraction) + " of the best error at " + ms(knee->msMedian);
-    if (knee != &last && knee->msMedian > 0.0) {
-      const double ratio = last.msMedian / knee->msMedian;
+                std::to_string(last.vsReference.coverageMismatch) + " pixels, while the fastest frame goes from " +
+                ms(first.msMin) + " to " + ms(last.msMin) + ". " + knee->setting + " is within " +
+                percent(kKneeFraction) + " of the best error at " + ms(knee->msMin);
+    if (knee != &last && knee->msMin > 0.0) {
+      const double ratio = last.msMin / knee->msMin;
       const double gain = std::max(0.0, knee->vsReference.rmse - best);
       r.detail += "; finer meshes cost up to " + times(ratio) + " that for at most " + levels(gain) + " less";
       worstRatio = std::max(worstRatio, ratio);
       wasted = std::max(wasted, gain);
     }
     r.detail += ". ";
-    knees += (knees.empty() ? "" : ", ") + knee->setting + " on the " + upper(backend) + " (" + ms(knee->msMedian) + ")";
+    knees += (knees.empty() ? "" : ", ") + knee->setting + " on the " + upper(backend) + " (" + ms(knee->msMin) + ")";
     bestOverall = best;
   }
   if (knees.empty()) return r;
@@ -229,9 +229,9 @@ KnobReading readResolution(const KnobResult& knob) {
     const ReportPoint& last = *points.back();
     const double pixelRatio = static_cast<double>(last.vsReference.width) * last.vsReference.height /
                               (static_cast<double>(first.vsReference.width) * first.vsReference.height);
-    const double timeRatio = first.msMedian > 0.0 ? last.msMedian / first.msMedian : 0.0;
-    r.detail += upper(backend) + ": " + times(pixelRatio) + " the pixels (" + first.setting + " to " + last.setting +
-                ") cost " + times(timeRatio) + " the time (" + ms(first.msMedian) + " to " + ms(last.msMedian) + ")";
+    const double timeRatio = first.msMin > 0.0 ? last.msMin / first.msMin : 0.0;
+    r.detail += upper(backend) + " (fastest frames): " + times(pixelRatio) + " the pixels (" + first.setting + " to " + last.setting +
+                ") cost " + times(timeRatio) + " the time (" + ms(first.msMin) + " to " + ms(last.msMin) + ")";
     r.detail += timeRatio < 0.5 * pixelRatio ? ", well below the pixel ratio: per-frame and per-triangle costs "
                                                "dominate the small images"
                                              : ", close to the pixel ratio: per-pixel work dominates";
@@ -254,12 +254,12 @@ KnobReading readThreads(const KnobResult& knob) {
     const std::vector<const ReportPoint*> points = pointsOf(knob, backend);
     if (points.size() < 2) continue;
     const ReportPoint& one = *points.front();
-    r.detail += upper(backend) + ": " + one.setting + " " + ms(one.msMedian);
+    r.detail += upper(backend) + " (fastest frames): " + one.setting + " " + ms(one.msMin);
     const ReportPoint* fastest = &one;
     for (std::size_t i = 1; i < points.size(); ++i) {
-      const double speedup = points[i]->msMedian > 0.0 ? one.msMedian / points[i]->msMedian : 0.0;
-      r.detail += ", " + points[i]->setting + " " + ms(points[i]->msMedian) + " (" + times(speedup) + ")";
-      if (points[i]->msMedian < fastest->msMedian) fastest = points[i];
+      const double speedup = points[i]->msMin > 0.0 ? one.msMin / points[i]->msMin : 0.0;
+      r.detail += ", " + points[i]->setting + " " + ms(points[i]->msMin) + " (" + times(speedup) + ")";
+      if (points[i]->msMin < fastest->msMin) fastest = points[i];
     }
     bool sameImage = true;
     for (const ReportPoint* p : points) sameImage = sameImage && p->vsReference.rmse == one.vsReference.rmse;
@@ -267,7 +267,7 @@ KnobReading readThreads(const KnobResult& knob) {
                 (sameImage ? "The error is the same at every count, as it must be. "
                            : "The error changes with the count, which it must not: a bug to chase. ");
     best += (best.empty() ? "" : ", ") + upper(backend) + " " + fastest->setting + " (" +
-            times(fastest->msMedian > 0.0 ? one.msMedian / fastest->msMedian : 1.0) + " over one)";
+            times(fastest->msMin > 0.0 ? one.msMin / fastest->msMin : 1.0) + " over one)";
   }
   if (!best.empty()) r.summary = "Fastest: " + best + "; the images do not change with the count.";
   return r;
@@ -289,8 +289,8 @@ KnobReading readPrecision(const KnobResult& knob) {
   }
   const ReportPoint* cpu = find(knob, "cpu", "float");
   if (cpu && f) {
-    r.detail += "The CPU renderer's own loop draws the float frame in " + ms(cpu->msMedian) + " (the simple loop " +
-                ms(f->msMedian) + ")";
+    r.detail += "The CPU renderer's own loop draws the float frame in " + ms(cpu->msMin) + " (the simple loop " +
+                ms(f->msMin) + ")";
     if (cpu->vsExactSetting) r.detail += " and is " + levels(cpu->vsExactSetting->rmse) + " from the double image";
     r.detail += ". ";
   }

@@ -165,7 +165,7 @@ ReportPoint Sweeper::measureOne(const std::string& knobId, const std::string& se
   ReportPoint p = makePoint(setting, backend, timing, out, reference);
   std::ostringstream line;
   line << knobId << " " << setting << ", " << backend << ": " << std::fixed << std::setprecision(2) << p.msMedian
-       << " ms, rmse " << p.vsReference.rmse << " levels vs reference";
+       << " ms median, " << p.msMin << " fastest, rmse " << p.vsReference.rmse << " levels vs reference";
   say(line.str());
   if (outputCopy) *outputCopy = std::move(out);
   return p;
@@ -288,7 +288,7 @@ bool Sweeper::measureGlChild(KnobResult& knob, const std::string& setting, const
   if (cpuOutput) p.cpuVsGl = compare(*cpuOutput, out);
   std::ostringstream line;
   line << knob.id << " " << setting << ", gl (child process): " << std::fixed << std::setprecision(2) << p.msMedian
-       << " ms, rmse " << p.vsReference.rmse << " levels vs reference";
+       << " ms median, " << p.msMin << " fastest, rmse " << p.vsReference.rmse << " levels vs reference";
   say(line.str());
   knob.points.push_back(std::move(p));
   if (glCopy) *glCopy = std::move(out);
