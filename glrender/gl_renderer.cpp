@@ -162,10 +162,13 @@ class GlRenderer final : public Renderer {
       checkGlErrors("drawing the TBN lines");
     }
     glFinish();
+    const auto drawn = std::chrono::steady_clock::now();
 
     RenderOutput out;
     device.targets.readBack(out);
     checkGlErrors("reading back");
+    out.stats.readbackMilliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - drawn).count();
 
     out.stats.trianglesIn = drawStats.trianglesIn;
     out.stats.pixelsShaded = drawStats.samplesPassed;

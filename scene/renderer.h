@@ -20,6 +20,9 @@ struct RenderStats {
   std::uint64_t trianglesProduced = 0;  // reaching the rasterizer (after fan triangulation)
   std::uint64_t pixelsShaded = 0;       // fragments that passed the depth test and were shaded
   double milliseconds = 0.0;            // wall time of render(), excluding readback to files
+  // Of `milliseconds`, the part spent copying finished buffers into the RenderOutput (GL:
+  // glReadPixels of the four attachments after glFinish; CPU: 0, it draws into them).
+  double readbackMilliseconds = 0.0;
 };
 
 // All buffers are top row first (row 0 is the top of the image), width * height entries.

@@ -31,6 +31,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -64,6 +65,8 @@ struct BenchArgs {
   int frames = 20;
   int warmup = 2;
   std::optional<int> threads;  // default: hardware_concurrency()
+  std::string cpuPath = "fast";
+  bool cpuScalar = false;  // fast path without its SIMD kernels
   bool json = false;
   bool glPrecise = false;
   bool preciseChild = false;  // internal: time GL in precise sampling only, print JSON (see --gl-precise)
@@ -74,6 +77,10 @@ struct Timing {
   std::vector<double> frames;
   double median = 0.0, min = 0.0, max = 0.0;
   double q1 = 0.0, q3 = 0.0;  // quartiles: the spread is q3 - q1 (interquartile range)
+  // Median CPU time all threads of the process used per frame: close to the wall time times
+  // the threads when they all work and nothing else runs; it stays put when other processes
+  // take the cores, which the wall time does not.
+  double processMedian = 0.0;
 };
 
 // Linear interpolation between order statistics (the usual "type 7" quantile).
@@ -85,8 +92,15 @@ double quantile(const std::vector<double>& sorted, double q) {
   return sorted[below] + (sorted[above] - sorted[below]) * fraction;
 }
 
-Timing summarise(std::vector<double> frames) {
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return quantile(values, 0.5);
+}
+
+Timing summarise(std::vector<double> frames, std::vector<double> processMs) {
   Timing t;
+  std::sort(processMs.begin(), processMs.end());
+  t.processMedian = quantile(processMs, 0.5);
   t.frames = frames;
   std::sort(frames.begin(), frames.end());
   t.min = frames.front();
@@ -104,6 +118,7 @@ void addTiming(Json& json, const std::string& prefix, const Timing& t) {
   json[prefix + "_ms_q1"] = t.q1;
   json[prefix + "_ms_q3"] = t.q3;
   json[prefix + "_ms_frames"] = t.frames;
+  json[prefix + "_process_cpu_ms_median"] = t.processMedian;
 }
 
 Timing timingFromJson(const Json& json, const std::string& prefix) {
@@ -114,13 +129,27 @@ Timing timingFromJson(const Json& json, const std::string& prefix) {
   t.q1 = json.at(prefix + "_ms_q1").get<double>();
   t.q3 = json.at(prefix + "_ms_q3").get<double>();
   t.frames = json.at(prefix + "_ms_frames").get<std::vector<double>>();
+  t.processMedian = json.at(prefix + "_process_cpu_ms_median").get<double>();
   return t;
 }
 
-double renderMs(Renderer& renderer, const Scene& scene, int width, int height, RenderOutput& out) {
+double processCpuMs() {
+  timespec now{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) * 1e3 + static_cast<double>(now.tv_nsec) * 1e-6;
+}
+
+// One frame: its wall time, and the CPU time of the whole process meanwhile, milliseconds.
+struct FrameTime {
+  double wallMs = 0.0, processMs = 0.0;
+  double readbackMs = 0.0;  // of wallMs: the renderer's copy of finished buffers (RenderStats)
+};
+FrameTime renderTimed(Renderer& renderer, const Scene& scene, int width, int height, RenderOutput& out) {
+  const double processStart = processCpuMs();
   const auto start = Clock::now();
   out = renderer.render(scene, scene.settings, width, height);
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  const double wall = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  return {wall, processCpuMs() - processStart, out.stats.readbackMilliseconds};
 }
 
 std::uint64_t coveredPixels(const RenderOutput& out) {
@@ -239,20 +268,24 @@ std::string fixed(double v, int digits) {
   return out.str();
 }
 
-void printTimingLine(const char* label, const Timing& t) {
-  std::cout << "  " << std::left << std::setw(16) << label << std::right << " median " << std::setw(9)
-            << fixed(t.median, 2) << " ms   min " << std::setw(9) << fixed(t.min, 2) << "   max " << std::setw(9)
-            << fixed(t.max, 2) << "   iqr " << std::setw(7) << fixed(t.q3 - t.q1, 2) << "\n";
+void printTimingLine(const std::string& label, const Timing& t) {
+  std::cout << "  " << std::left << std::setw(20) << label << std::right << " median " << std::setw(8)
+            << fixed(t.median, 2) << " ms  min " << std::setw(8) << fixed(t.min, 2) << "  max " << std::setw(8)
+            << fixed(t.max, 2) << "  iqr " << std::setw(6) << fixed(t.q3 - t.q1, 2) << "  process cpu "
+            << std::setw(8) << fixed(t.processMedian, 2) << " ms\n";
 }
 
 void printText(const Json& j, const Timing& cpu, const Timing& gl, const std::optional<Timing>& glPrecise) {
   std::cout << "bench " << j["scene"].get<std::string>() << " at " << j["width"] << "x" << j["height"] << ": "
             << j["triangles"] << " triangles, " << j["covered_pixels"] << " covered pixels, " << j["threads"]
             << " threads, " << j["frames"] << " frames after " << j["warmup"] << " warm-up\n";
-  printTimingLine("cpu", cpu);
+  printTimingLine("cpu " + j["cpu_path"].get<std::string>(), cpu);
   printTimingLine("gl (fast)", gl);
   if (glPrecise) printTimingLine("gl (precise)", *glPrecise);
-  std::cout << "  ratio cpu/gl " << fixed(j["ratio_cpu_over_gl"].get<double>(), 3);
+  std::cout << "  gl (fast) of which glReadPixels " << fixed(j["gl_readback_ms_median"].get<double>(), 2)
+            << " ms (median); drawing alone " << fixed(j["gl_draw_ms_median"].get<double>(), 2) << " ms\n";
+  std::cout << "  ratio cpu/gl " << fixed(j["ratio_cpu_over_gl"].get<double>(), 3) << ", cpu/gl drawing "
+            << fixed(j["ratio_cpu_over_gl_draw"].get<double>(), 3);
   if (glPrecise) std::cout << ", cpu/gl precise " << fixed(j["ratio_cpu_over_gl_precise"].get<double>(), 3);
   std::cout << " (medians); cpu " << fixed(j["cpu_ns_per_covered_pixel"].get<double>(), 1)
             << " ns per covered pixel\n";
@@ -281,15 +314,17 @@ void runPreciseChild(const BenchArgs& args, const Scene& scene, int width, int h
   options.fastSampling = false;
   const std::unique_ptr<Renderer> gl = makeGlRenderer(options);
   RenderOutput out;
-  for (int i = 0; i < args.warmup; ++i) renderMs(*gl, scene, width, height, out);
-  std::vector<double> ms;
+  for (int i = 0; i < args.warmup; ++i) renderTimed(*gl, scene, width, height, out);
+  std::vector<double> ms, processMs;
   Progress progress(args.frames);
   for (int i = 0; i < args.frames; ++i) {
-    ms.push_back(renderMs(*gl, scene, width, height, out));
+    const FrameTime t = renderTimed(*gl, scene, width, height, out);
+    ms.push_back(t.wallMs);
+    processMs.push_back(t.processMs);
     progress.frame(i + 1, "gl precise");
   }
   Json json;
-  addTiming(json, "gl_precise", summarise(ms));
+  addTiming(json, "gl_precise", summarise(ms, processMs));
   json["gl_sampling"] = glSamplingMode();
   std::cout << json.dump() << "\n";
 }
@@ -312,22 +347,30 @@ void runBench(const BenchArgs& args) {
   const std::unique_ptr<Renderer> gl = makeGlRenderer(glOptions);
   CpuOptions cpuOptions;
   cpuOptions.threads = threads;
+  cpuOptions.path = args.cpuPath == "teaching" ? CpuPath::Teaching : CpuPath::Fast;
+  cpuOptions.simd = !args.cpuScalar;
   const std::unique_ptr<Renderer> cpu = makeCpuRenderer(cpuOptions);
 
   RenderOutput cpuOut, glOut;
   for (int i = 0; i < args.warmup; ++i) {
-    renderMs(*cpu, scene, width, height, cpuOut);
-    renderMs(*gl, scene, width, height, glOut);
+    renderTimed(*cpu, scene, width, height, cpuOut);
+    renderTimed(*gl, scene, width, height, glOut);
   }
-  std::vector<double> cpuMs, glMs;
+  std::vector<double> cpuMs, glMs, cpuProcessMs, glProcessMs, glReadbackMs, glDrawMs;
   Progress progress(args.frames);
   for (int i = 0; i < args.frames; ++i) {
-    cpuMs.push_back(renderMs(*cpu, scene, width, height, cpuOut));
-    glMs.push_back(renderMs(*gl, scene, width, height, glOut));
+    const FrameTime c = renderTimed(*cpu, scene, width, height, cpuOut);
+    const FrameTime g = renderTimed(*gl, scene, width, height, glOut);
+    cpuMs.push_back(c.wallMs);
+    cpuProcessMs.push_back(c.processMs);
+    glMs.push_back(g.wallMs);
+    glProcessMs.push_back(g.processMs);
+    glReadbackMs.push_back(g.readbackMs);
+    glDrawMs.push_back(g.wallMs - g.readbackMs);
     progress.frame(i + 1, "cpu + gl");
   }
-  const Timing cpuTiming = summarise(cpuMs);
-  const Timing glTiming = summarise(glMs);
+  const Timing cpuTiming = summarise(cpuMs, cpuProcessMs);
+  const Timing glTiming = summarise(glMs, glProcessMs);
   std::optional<Timing> glPreciseTiming;
   if (args.glPrecise) {
     const std::string text = runSelf(childArguments(args, width, height, threads));
@@ -347,12 +390,19 @@ void runBench(const BenchArgs& args) {
   json["warmup"] = args.warmup;
   json["threads"] = threads;
   json["threads_source"] = args.threads ? "--threads" : "default: hardware_concurrency(), as llvmpipe";
+  json["cpu_path"] = cpuPathName(cpuOptions);
   json["triangles"] = countTriangles(scene);
   json["covered_pixels"] = covered;
   json["covered_pixels_gl"] = coveredPixels(glOut);
   addTiming(json, "cpu", cpuTiming);
   addTiming(json, "gl", glTiming);
   json["ratio_cpu_over_gl"] = cpuTiming.median / glTiming.median;
+  // llvmpipe's frame without glReadPixels (the CPU pipeline has no such copy: it draws into
+  // the output's buffers): the strictest comparison, drawing against drawing.
+  const double glDrawMedian = median(glDrawMs);
+  json["gl_draw_ms_median"] = glDrawMedian;
+  json["gl_readback_ms_median"] = median(glReadbackMs);
+  json["ratio_cpu_over_gl_draw"] = cpuTiming.median / glDrawMedian;
   json["cpu_ns_per_covered_pixel"] = covered > 0 ? cpuTiming.median * 1e6 / static_cast<double>(covered) : 0.0;
   json["gl_ns_per_covered_pixel"] = covered > 0 ? glTiming.median * 1e6 / static_cast<double>(covered) : 0.0;
   json["gl_sampling"] = glSamplingMode();
@@ -382,6 +432,11 @@ const bool registered = registerCommand(50, [](CLI::App& app) {
   cmd->add_option("--frames,-n", args->frames, "Timed frames per backend")->capture_default_str();
   cmd->add_option("--warmup", args->warmup, "Untimed frames per backend first (shader compilation, caches)")
       ->capture_default_str();
+  cmd->add_option("--cpu-path", args->cpuPath,
+                  "fast (the default traversal) or teaching (the readable one); both draw the same image")
+      ->check(CLI::IsMember({"fast", "teaching"}))
+      ->capture_default_str();
+  cmd->add_flag("--cpu-scalar", args->cpuScalar, "Fast path without its AVX-512 kernels (the scalar fallback)");
   cmd->add_option("--threads,-t", args->threads,
                   "Worker threads of the CPU pipeline and llvmpipe's LP_NUM_THREADS (default: the online CPUs, "
                   "llvmpipe's own default)");

@@ -22,7 +22,8 @@ nlohmann::json parseJson(const RunResult& r) {
 }
 
 void expectTimingKeys(const nlohmann::json& j, const std::string& prefix, std::size_t frames) {
-  for (const char* key : {"_ms_median", "_ms_min", "_ms_max", "_ms_q1", "_ms_q3", "_ms_frames"}) {
+  for (const char* key : {"_ms_median", "_ms_min", "_ms_max", "_ms_q1", "_ms_q3", "_ms_frames",
+                          "_process_cpu_ms_median"}) {
     ASSERT_TRUE(j.contains(prefix + key)) << prefix + key;
   }
   EXPECT_EQ(j[prefix + "_ms_frames"].size(), frames);
@@ -56,6 +57,20 @@ TEST(CliBench, JsonHasTheDocumentedKeys) {
                    j["cpu_ms_median"].get<double>() / j["gl_ms_median"].get<double>());
   EXPECT_EQ(j["gl_sampling"], "fast") << "bench times llvmpipe as a user gets it";
   EXPECT_FALSE(j.contains("gl_precise_ms_median"));
+  const std::string path = j["cpu_path"];
+  EXPECT_TRUE(path == "fast (avx512)" || path == "fast (scalar)") << path;
+}
+
+TEST(CliBench, CpuPathOptionsPickTheTraversal) {
+  const RunResult teaching = runCli("bench \"" + kDefaultScene + "\"" + kTiny + " --cpu-path teaching --json");
+  ASSERT_EQ(teaching.exitCode, 0) << teaching.err;
+  EXPECT_EQ(parseJson(teaching)["cpu_path"], "teaching");
+  const RunResult scalar = runCli("bench \"" + kDefaultScene + "\"" + kTiny + " --cpu-scalar --json");
+  ASSERT_EQ(scalar.exitCode, 0) << scalar.err;
+  const nlohmann::json j = parseJson(scalar);
+  EXPECT_EQ(j["cpu_path"], "fast (scalar)");
+  // The traversal changes the time, never the picture.
+  EXPECT_EQ(j["covered_pixels"], parseJson(teaching)["covered_pixels"]);
 }
 
 TEST(CliBench, GlPreciseRunsAChildProcessAndMergesItsFigures) {
@@ -89,6 +104,7 @@ TEST(CliBench, BadInputExitsTwo) {
       {"bench \"" + kDefaultScene + "\" --threads 0", "--threads"},
       {"bench \"" + kDefaultScene + "\" --threads 65", "--threads"},
       {"bench \"" + kDefaultScene + "\" --view nonsense", "--view"},
+      {"bench \"" + kDefaultScene + "\" --cpu-path quick", "--cpu-path"},
       {"bench \"" + kDefaultScene + "\" --width 0", "--width"},
       {"bench \"" + kSource + "/assets/scenes/no_such_scene.json\"", "no_such_scene.json"},
       {"bench", "scene"},
