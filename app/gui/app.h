@@ -38,15 +38,13 @@ struct BackendFrame {
 struct DiffState {
   std::uint64_t revision = 0;  // the revision both compared frames were rendered at; 0: none
   std::optional<CompareResult> result;
-  std::shared_ptr<const RenderOutput> cpu, gl;  // the compared pair
   std::string error;
   bool texturesStale = true;  // heat/class map textures need rebuilding
 };
 
 // The pinned pixel and what each backend says about it.
 struct PinState {
-  std::optional<PixelPos> pixel;
-  int width = 0, height = 0;  // the render size the pixel was pinned at
+  std::optional<PixelPos> pixel;  // at the current render size (rescaled when it changes)
   std::uint64_t cpuRevision = 0;  // revision of `cpu`; 0: not probed yet
   std::optional<CpuProbe> cpu;
   std::uint64_t cpuAskedRevision = 0;  // the last probe job sent to the worker

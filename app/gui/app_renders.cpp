@@ -71,8 +71,6 @@ void GuiApp::syncRenders() {
 void GuiApp::pinPixel(std::optional<PixelPos> pixel) {
   pin_ = PinState{};
   pin_.pixel = pixel;
-  pin_.width = renderWidth_;
-  pin_.height = renderHeight_;
 }
 
 void GuiApp::takeCpuFrames() {
@@ -143,8 +141,6 @@ void GuiApp::updateDiff() {
   diff_.revision = cpuFrame_.revision;
   diff_.texturesStale = true;
   diff_.result.reset();
-  diff_.cpu = cpuFrame_.output;
-  diff_.gl = gl;
   diff_.error.clear();
   if (!cpuFrame_.output || !gl) {
     diff_.error = "no diff: one backend has no image for this frame (see its error)";

@@ -109,7 +109,6 @@ void CpuWorker::run() {
     frame.width = job.width;
     frame.height = job.height;
     frame.rendered = job.renderFrame;
-    const Clock::time_point start = Clock::now();
     if (job.renderFrame) {
       try {
         frame.output =
@@ -120,7 +119,6 @@ void CpuWorker::run() {
     }
     frame.finishedAt = Clock::now();  // the frame's age counts from here, not from the probe's end
     if (job.probePixel && frame.error.empty()) frame.probe = probe(*renderer, job);
-    frame.wallMilliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     {
       const std::lock_guard lock(mutex_);
       finished_.push_back(std::move(frame));

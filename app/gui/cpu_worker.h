@@ -47,7 +47,6 @@ struct CpuFrame {
   std::string error;                           // what the render threw, else empty
   std::optional<CpuProbe> probe;
   Clock::time_point finishedAt{};  // when the render (not the probe) finished
-  double wallMilliseconds = 0.0;    // job start to finish on the worker, probe included
 };
 
 class CpuWorker {

@@ -18,10 +18,6 @@ class MovingMedian {
     samples_.push_back(sample);
     while (samples_.size() > window_) samples_.pop_front();
   }
-  void clear() { samples_.clear(); }
-  std::size_t count() const { return samples_.size(); }
-  double last() const { return samples_.empty() ? 0.0 : samples_.back(); }
-
   // The middle sample (the mean of the two middle ones for an even count); empty before any.
   std::optional<double> median() const {
     if (samples_.empty()) return std::nullopt;

@@ -28,11 +28,4 @@ struct PixelSample {
 // Indexed like kAllViews; empty until that view has been read.
 using ViewSamples = std::array<std::optional<PixelSample>, kViewCount>;
 
-inline std::size_t viewIndex(View view) {
-  for (std::size_t i = 0; i < kViewCount; ++i) {
-    if (kAllViews[i] == view) return i;
-  }
-  return 0;
-}
-
 }  // namespace twr::gui

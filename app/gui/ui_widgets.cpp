@@ -29,8 +29,6 @@ void itemTooltip(const char* text) {
 
 ImU32 toImColour(Rgb8 colour, std::uint8_t alpha) { return IM_COL32(colour.r, colour.g, colour.b, alpha); }
 
-ImVec4 toImVec4(Rgb8 colour) { return ImVec4(colour.r / 255.0f, colour.g / 255.0f, colour.b / 255.0f, 1.0f); }
-
 void colourSquare(ImU32 colour) {
   const float side = ImGui::GetTextLineHeight();
   const ImVec2 corner = ImGui::GetCursorScreenPos();

@@ -62,7 +62,6 @@ bool enumCombo(const char* label, Enum& value, const Enum (&values)[N]) {
 }
 
 ImU32 toImColour(Rgb8 colour, std::uint8_t alpha = 255);
-ImVec4 toImVec4(Rgb8 colour);
 // A filled square the height of a text line, then SameLine.
 void colourSquare(ImU32 colour);
 // A square of an 8-bit RGB value with its numbers, e.g. "[] 255 128 0".
