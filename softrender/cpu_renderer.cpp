@@ -139,7 +139,7 @@ class CpuRenderer final : public Renderer {
     if (options_.path == CpuPath::Fast && !fast_) {
       fast_ = std::make_unique<FastPipeline>(options_.threads, options_.simd);
     }
-    Framebuffer fb = fast_ ? fast_->clearedFramebuffer(width, height, scene.output.background)
+    Framebuffer fb = fast_ ? fast_->allocateFramebuffer(width, height)  // draw() clears it bin by bin
                            : makeFramebuffer(width, height, scene.output.background);
     const mat4 clipFromWorld = clipFromWorldFor(scene.camera, width, height);
     const std::vector<DrawItem> drawItems = flattenScene(scene);
@@ -153,7 +153,7 @@ class CpuRenderer final : public Renderer {
     if (options_.path == CpuPath::Teaching) {
       drawTeaching(items, options_.threads, fb, stats);
     } else {
-      fast_->draw(items, fb, stats);
+      fast_->draw(items, scene.output.background, fb, stats);
     }
 
     if (settings.tbnLines.enabled) {

@@ -1,8 +1,6 @@
 #include "softrender/fast_pipeline.h"
 
-#include "scene/errors.h"
 #include "softrender/draw_triangle.h"
-#include "softrender/fast_shade_avx512.h"
 #include "softrender/interpolate.h"
 #include "softrender/setup.h"
 
@@ -22,29 +20,94 @@ bool finitePosition(const vec4& p) {
   return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
 }
 
+// The fragment stage's varyings of `v` in fast_shade_avx512.h's layout.
+void storeVaryings(const ClipVertex& v, bool tangentLighting, int lightCount, float* out) {
+  const auto put = [&](int at, vec3 value) {
+    out[at] = value.x;
+    out[at + 1] = value.y;
+    out[at + 2] = value.z;
+  };
+  put(kVaryingPosWorld, v.posWorld);
+  put(kVaryingNormal, v.nWorld);
+  put(kVaryingTangent, v.tWorld);
+  put(kVaryingBitangent, v.bWorld);
+  out[kVaryingUv] = v.uv.x;
+  out[kVaryingUv + 1] = v.uv.y;
+  if (!tangentLighting) return;
+  put(kVaryingEyeDirTangent, v.eyeDirTangent);
+  for (int i = 0; i < lightCount; ++i) put(kVaryingLightDirTangent + 3 * i, v.lightDirTangent[static_cast<std::size_t>(i)]);
+}
+
+// The inverse of storeVaryings: the ClipVertex's varyings (everything else left as the vertex
+// stage leaves unused fields, zero).
+void loadVaryings(const float* in, bool tangentLighting, int lightCount, ClipVertex& v) {
+  const auto get = [&](int at) { return vec3(in[at], in[at + 1], in[at + 2]); };
+  v.posWorld = get(kVaryingPosWorld);
+  v.nWorld = get(kVaryingNormal);
+  v.tWorld = get(kVaryingTangent);
+  v.bWorld = get(kVaryingBitangent);
+  v.uv = vec2(in[kVaryingUv], in[kVaryingUv + 1]);
+  if (!tangentLighting) return;
+  v.eyeDirTangent = get(kVaryingEyeDirTangent);
+  for (int i = 0; i < lightCount; ++i) v.lightDirTangent[static_cast<std::size_t>(i)] = get(kVaryingLightDirTangent + 3 * i);
+}
+
+// Rows [rowBegin, rowEnd) of the depth buffer to kClearDepth.
+void clearDepthRows(int rowBegin, int rowEnd, Framebuffer& fb) {
+  for (int py = rowBegin; py < rowEnd; ++py) {
+    std::fill_n(fb.depth.begin() + static_cast<std::ptrdiff_t>(fb.index(0, py)), fb.width, kClearDepth);
+  }
+}
+
 }  // namespace
 
 FastPipeline::FastPipeline(int threads, bool simd)
-    : pool_(threads), simd_(simd), frontEnds_(static_cast<std::size_t>(pool_.threads())) {}
+    : pool_(threads),
+      simd_(simd),
+      frontEnds_(static_cast<std::size_t>(pool_.threads())),
+      backEnds_(static_cast<std::size_t>(pool_.threads())) {}
 
-Framebuffer FastPipeline::clearedFramebuffer(int width, int height, vec3 background) {
+Framebuffer FastPipeline::allocateFramebuffer(int width, int height) {
   Framebuffer fb;
   fb.width = width;
   fb.height = height;
   const std::size_t count = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-  const std::uint32_t word = backgroundWord(background);
   pool_.run(4, [&](int buffer, int) {
     switch (buffer) {
-      case 0:
-        fb.rgba.resize(count * 4);
-        for (std::size_t i = 0; i < count; ++i) std::memcpy(&fb.rgba[i * 4], &word, sizeof(word));
-        break;
-      case 1: fb.depth.assign(count, kClearDepth); break;
-      case 2: fb.triangleId.assign(count, kNoTriangle); break;
-      default: fb.lineMask.assign(count, 0); break;
+      case 0: fb.rgba.resize(count * 4); break;
+      case 1: fb.depth.resize(count); break;
+      case 2: fb.triangleId.resize(count); break;
+      default: fb.lineMask.resize(count); break;  // zero: no line
     }
   });
   return fb;
+}
+
+void FastPipeline::prepareMaps(const std::vector<ItemState>& items) {
+  ++frame_;
+  maps_.assign(items.size(), ItemMaps{});
+  std::vector<TiledEntry*> missing;
+  const auto use = [&](const Texture* raw, const std::shared_ptr<const Texture>& owner) -> const TiledTexture* {
+    if (!raw) return nullptr;  // the uniforms dropped an unusable map
+    auto [found, inserted] = tiled_.try_emplace(raw);
+    if (inserted) {
+      found->second.texture = owner;
+      missing.push_back(&found->second);
+    }
+    found->second.lastFrame = frame_;
+    return &found->second.tiled;
+  };
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const ShadeUniforms& u = items[k].shade;
+    const Material& material = *items[k].item->material;
+    maps_[k] = ItemMaps{use(u.diffuseMap, material.diffuseMap), use(u.normalMap, material.normalMap),
+                        use(u.specularMap, material.specularMap)};
+  }
+  pool_.run(static_cast<int>(missing.size()), [&](int task, int) {
+    TiledEntry& entry = *missing[static_cast<std::size_t>(task)];
+    entry.tiled = makeTiledTexture(*entry.texture);
+  });
+  std::erase_if(tiled_, [this](const auto& entry) { return entry.second.lastFrame != frame_; });
 }
 
 void FastPipeline::runVertexStage(const std::vector<ItemState>& items) {
@@ -54,8 +117,13 @@ void FastPipeline::runVertexStage(const std::vector<ItemState>& items) {
   };
   std::vector<Chunk> chunks;
   for (std::size_t k = 0; k < items.size(); ++k) {
-    const std::size_t count = items[k].item->mesh->vertices.size();
-    vertices_[k].resize(count);
+    const ItemState& s = items[k];
+    const std::size_t count = s.item->mesh->vertices.size();
+    ItemVertices& out = vertices_[k];
+    out.vertices.resize(count);
+    out.varyings.resize(count * static_cast<std::size_t>(varyingCount(s.tangentLighting, s.shade.lightCount)));
+    out.posClip.resize(count);
+    out.clipDistances.resize(count * static_cast<std::size_t>(s.clip.userPlaneCount));
     for (std::size_t begin = 0; begin < count; begin += kVerticesPerTask) {
       chunks.push_back({k, begin, std::min(count, begin + kVerticesPerTask)});
     }
@@ -64,32 +132,73 @@ void FastPipeline::runVertexStage(const std::vector<ItemState>& items) {
     const Chunk& chunk = chunks[static_cast<std::size_t>(task)];
     const ItemState& s = items[chunk.item];
     const std::vector<Vertex>& meshVertices = s.item->mesh->vertices;
-    std::vector<FastVertex>& out = vertices_[chunk.item];
+    ItemVertices& out = vertices_[chunk.item];
+    const std::size_t stride = static_cast<std::size_t>(varyingCount(s.tangentLighting, s.shade.lightCount));
+    const std::size_t planes = static_cast<std::size_t>(s.clip.userPlaneCount);
     for (std::size_t i = chunk.begin; i < chunk.end; ++i) {
-      FastVertex& v = out[i];
-      v.clip = twr::runVertexStage(meshVertices[i], s.vertexUniforms);
-      v.window = windowFromClip(v.clip, s.viewport);
+      const ClipVertex clip = twr::runVertexStage(meshVertices[i], s.vertexUniforms);
+      FastVertex& v = out.vertices[i];
+      v.window = windowFromClip(clip, s.viewport);
       v.xFixed = snapToSubpixel(v.window.x);
       v.yFixed = snapToSubpixel(v.window.y);
-      v.outcode = finitePosition(v.clip.posClip) ? outcode(v.clip, s.clip) : kClipNonFiniteBit;
+      v.outcode = finitePosition(clip.posClip) ? outcode(clip, s.clip) : kClipNonFiniteBit;
+      storeVaryings(clip, s.tangentLighting, s.shade.lightCount, &out.varyings[i * stride]);
+      out.posClip[i] = clip.posClip;
+      for (std::size_t j = 0; j < planes; ++j) out.clipDistances[i * planes + j] = clip.clipDistance[j];
     }
   });
 }
 
-void FastPipeline::emit(const ItemState& s, std::uint32_t item, std::uint32_t triangleId, const FastVertex& a,
-                        const FastVertex& b, const FastVertex& c, FrontEnd& out) {
+void FastPipeline::emit(const ItemState& s, std::uint32_t item, std::uint32_t triangleId,
+                        std::array<const FastVertex*, 3> v, std::array<const float*, 3> varyings, FrontEnd& out) {
   TriangleSetup setup;
-  if (setupSnappedTriangle({a.xFixed, b.xFixed, c.xFixed}, {a.yFixed, b.yFixed, c.yFixed}, s.cull, s.frontFace,
-                           s.viewport, setup) != SetupResult::Ready) {
+  if (setupSnappedTriangle({v[0]->xFixed, v[1]->xFixed, v[2]->xFixed}, {v[0]->yFixed, v[1]->yFixed, v[2]->yFixed},
+                           s.cull, s.frontFace, s.viewport, setup) != SetupResult::Ready) {
     ++out.stats.trianglesCulled;
     return;
   }
   ++out.stats.trianglesProduced;
   if (setup.x0 > setup.x1 || setup.y0 > setup.y1) return;  // wholly in the guard band
   const std::uint32_t index = static_cast<std::uint32_t>(out.triangles.size());
-  out.triangles.push_back(RasterTriangle{{&a, &b, &c}, triangleId, item});
+  out.triangles.push_back(RasterTriangle{v, varyings, triangleId, item});
   for (int bin = setup.y0 / kBinRows; bin <= setup.y1 / kBinRows; ++bin) {
     out.bins[static_cast<std::size_t>(bin)].push_back(index);
+  }
+}
+
+void FastPipeline::clipAndEmit(const ItemState& s, std::size_t k, std::uint32_t item, std::uint32_t triangleId,
+                               const std::array<std::uint32_t, 3>& indices, FrontEnd& out) {
+  // The three vertices as the vertex stage returned them, for the teaching clipper.
+  const ItemVertices& source = vertices_[k];
+  const std::size_t stride = static_cast<std::size_t>(varyingCount(s.tangentLighting, s.shade.lightCount));
+  const std::size_t planes = static_cast<std::size_t>(s.clip.userPlaneCount);
+  std::array<ClipVertex, 3> corners;
+  for (std::size_t c = 0; c < 3; ++c) {
+    const std::size_t i = indices[c];
+    corners[c].posClip = source.posClip[i];
+    loadVaryings(&source.varyings[i * stride], s.tangentLighting, s.shade.lightCount, corners[c]);
+    for (std::size_t j = 0; j < planes; ++j) corners[c].clipDistance[j] = source.clipDistances[i * planes + j];
+  }
+  if (clipTriangle(corners[0], corners[1], corners[2], s.clip, out.polygon, out.scratch) != 0) {
+    ++out.stats.trianglesClipped;
+  }
+  // The clipped polygon's vertices (original ones copied, new ones from the clipper) with their
+  // window positions, then its fan around vertex 0, as the teaching path draws it.
+  const std::size_t base = out.clipped.size();
+  for (int i = 0; i < out.polygon.count; ++i) {
+    const ClipVertex& polygonVertex = out.polygon.v[static_cast<std::size_t>(i)];
+    ClippedVertex& v = out.clipped.emplace_back();
+    v.vertex.window = windowFromClip(polygonVertex, s.viewport);
+    v.vertex.xFixed = snapToSubpixel(v.vertex.window.x);
+    v.vertex.yFixed = snapToSubpixel(v.vertex.window.y);
+    storeVaryings(polygonVertex, s.tangentLighting, s.shade.lightCount, v.varyings.data());
+  }
+  const ClippedVertex& first = out.clipped[base];
+  for (int i = 1; i + 1 < out.polygon.count; ++i) {
+    const ClippedVertex& b = out.clipped[base + static_cast<std::size_t>(i)];
+    const ClippedVertex& c = out.clipped[base + static_cast<std::size_t>(i + 1)];
+    emit(s, item, triangleId, {&first.vertex, &b.vertex, &c.vertex}, {first.varyings.data(), b.varyings.data(), c.varyings.data()},
+         out);
   }
 }
 
@@ -102,33 +211,24 @@ void FastPipeline::frontEndRange(const std::vector<ItemState>& items, std::size_
     const Mesh& mesh = *s.item->mesh;
     const std::size_t count = mesh.triangleCount();
     const std::size_t from = std::max(begin, first), to = std::min(end, first + count);
-    const std::vector<FastVertex>& vertices = vertices_[k];
+    const ItemVertices& source = vertices_[k];
+    const std::size_t stride = static_cast<std::size_t>(varyingCount(s.tangentLighting, s.shade.lightCount));
     const std::uint32_t item = static_cast<std::uint32_t>(k);
     for (std::size_t g = from; g < to; ++g) {
       const std::size_t t = g - first;
       ++out.stats.trianglesIn;
-      const FastVertex& a = vertices[mesh.indices[3 * t + 0]];
-      const FastVertex& b = vertices[mesh.indices[3 * t + 1]];
-      const FastVertex& c = vertices[mesh.indices[3 * t + 2]];
+      const std::array<std::uint32_t, 3> indices = {mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]};
+      const FastVertex& a = source.vertices[indices[0]];
+      const FastVertex& b = source.vertices[indices[1]];
+      const FastVertex& c = source.vertices[indices[2]];
       const std::uint32_t triangleId = s.item->firstTriangleId + static_cast<std::uint32_t>(t);
       if ((a.outcode | b.outcode | c.outcode) == 0) {  // inside every plane: no clipping
-        emit(s, item, triangleId, a, b, c, out);
-        continue;
-      }
-      if (clipTriangle(a.clip, b.clip, c.clip, s.clip, out.polygon, out.scratch) != 0) ++out.stats.trianglesClipped;
-      // The clipped polygon's vertices (original ones copied, new ones from the clipper) with
-      // their window positions, then its fan around vertex 0, as the teaching path draws it.
-      const std::size_t base = out.clipped.size();
-      for (int i = 0; i < out.polygon.count; ++i) {
-        FastVertex& v = out.clipped.emplace_back();
-        v.clip = out.polygon.v[static_cast<std::size_t>(i)];
-        v.window = windowFromClip(v.clip, s.viewport);
-        v.xFixed = snapToSubpixel(v.window.x);
-        v.yFixed = snapToSubpixel(v.window.y);
-      }
-      for (int i = 1; i + 1 < out.polygon.count; ++i) {
-        emit(s, item, triangleId, out.clipped[base], out.clipped[base + static_cast<std::size_t>(i)],
-             out.clipped[base + static_cast<std::size_t>(i + 1)], out);
+        emit(s, item, triangleId, {&a, &b, &c},
+             {&source.varyings[indices[0] * stride], &source.varyings[indices[1] * stride],
+              &source.varyings[indices[2] * stride]},
+             out);
+      } else {
+        clipAndEmit(s, k, item, triangleId, indices, out);
       }
     }
     first += count;
@@ -152,41 +252,87 @@ void FastPipeline::runFrontEnd(const std::vector<ItemState>& items, int binCount
   });
 }
 
-std::uint64_t FastPipeline::drawBin(const std::vector<ItemState>& items, int bin, Framebuffer& fb) {
+std::uint64_t FastPipeline::drawBinSimd(const std::vector<ItemState>& items, int bin, std::uint32_t background,
+                                        Framebuffer& fb, BackEnd& scratch) {
   const int rowBegin = bin * kBinRows;
   const int rowEnd = std::min(fb.height, rowBegin + kBinRows);
+  clearDepthRows(rowBegin, rowEnd, fb);  // colour and ids: the shading pass writes every pixel
+  scratch.triangles.clear();
+  scratch.slots.assign(static_cast<std::size_t>(rowEnd - rowBegin) * static_cast<std::size_t>(fb.width), kNoSlot);
+  std::uint64_t passed = 0;
+  for (const FrontEnd& frontEnd : frontEnds_) {
+    for (const std::uint32_t index : frontEnd.bins[static_cast<std::size_t>(bin)]) {
+      const RasterTriangle& r = frontEnd.triangles[index];
+      const ItemState& s = items[r.item];
+      TriangleSetup setup;  // accepted by the front end with the same inputs
+      setupSnappedTriangle({r.v[0]->xFixed, r.v[1]->xFixed, r.v[2]->xFixed}, {r.v[0]->yFixed, r.v[1]->yFixed, r.v[2]->yFixed},
+                           s.cull, s.frontFace, s.viewport, setup);
+      const std::uint32_t slot = static_cast<std::uint32_t>(scratch.triangles.size());
+      InterpolationSetup interpolation;
+      bool covered = false;
+      passed += visibilityAvx512(setup, {r.v[0]->window, r.v[1]->window, r.v[2]->window}, slot, rowBegin, rowEnd, fb,
+                                 scratch.slots.data(), interpolation, covered);
+      if (!covered) continue;  // no pixel holds this slot
+      BinTriangle& t = scratch.triangles.emplace_back();
+      t.atOrigin = interpolation.atOrigin;
+      t.dx = interpolation.dx;
+      t.dy = interpolation.dy;
+      t.invW = interpolation.invW;
+      t.triangleId = r.triangleId;
+      t.item = r.item;
+      t.varyings = r.varyings;
+    }
+  }
+  shadeBinAvx512(scratch.triangles, items, maps_, scratch.slots.data(), rowBegin, rowEnd, background, fb);
+  return passed;
+}
+
+std::uint64_t FastPipeline::drawBinScalar(const std::vector<ItemState>& items, int bin, std::uint32_t background,
+                                          Framebuffer& fb) {
+  const int rowBegin = bin * kBinRows;
+  const int rowEnd = std::min(fb.height, rowBegin + kBinRows);
+  clearDepthRows(rowBegin, rowEnd, fb);
+  for (int py = rowBegin; py < rowEnd; ++py) {
+    const std::size_t first = fb.index(0, py), count = static_cast<std::size_t>(fb.width);
+    for (std::size_t i = first; i < first + count; ++i) std::memcpy(&fb.rgba[4 * i], &background, sizeof(background));
+    std::fill_n(fb.triangleId.begin() + static_cast<std::ptrdiff_t>(first), count, kNoTriangle);
+  }
   std::uint64_t shaded = 0;
   for (const FrontEnd& frontEnd : frontEnds_) {
     for (const std::uint32_t index : frontEnd.bins[static_cast<std::size_t>(bin)]) {
       const RasterTriangle& r = frontEnd.triangles[index];
       const ItemState& s = items[r.item];
-      const FastVertex& a = *r.v[0];
-      const FastVertex& b = *r.v[1];
-      const FastVertex& c = *r.v[2];
       TriangleSetup setup;  // accepted by the front end with the same inputs
-      setupSnappedTriangle({a.xFixed, b.xFixed, c.xFixed}, {a.yFixed, b.yFixed, c.yFixed}, s.cull, s.frontFace,
-                           s.viewport, setup);
-      const InterpolationSetup interpolation = makeInterpolationSetup<float>({a.window, b.window, c.window}, setup);
-      const TriangleKernel kernel = simd_ ? avx512KernelFor(s.shaderKey) : nullptr;
-      if (kernel) {
-        shaded += kernel(setup, interpolation, a.clip, b.clip, c.clip, s.shade, r.triangleId, rowBegin, rowEnd, fb);
-      } else {
-        withShaderFeatures(s.shaderKey, [&]<typename Features>() {
-          shaded += shadeTriangleRows<Features>(setup, interpolation, a.clip, b.clip, c.clip, s.shade,
-                                                s.tangentLighting, r.triangleId, rowBegin, rowEnd, fb);
-        });
-      }
+      setupSnappedTriangle({r.v[0]->xFixed, r.v[1]->xFixed, r.v[2]->xFixed}, {r.v[0]->yFixed, r.v[1]->yFixed, r.v[2]->yFixed},
+                           s.cull, s.frontFace, s.viewport, setup);
+      const InterpolationSetup interpolation =
+          makeInterpolationSetup<float>({r.v[0]->window, r.v[1]->window, r.v[2]->window}, setup);
+      std::array<ClipVertex, 3> v;
+      for (std::size_t c = 0; c < 3; ++c) loadVaryings(r.varyings[c], s.tangentLighting, s.shade.lightCount, v[c]);
+      withShaderFeatures(s.shaderKey, [&]<typename Features>() {
+        shaded += shadeTriangleRows<Features>(setup, interpolation, v[0], v[1], v[2], s.shade, s.tangentLighting,
+                                              r.triangleId, rowBegin, rowEnd, fb);
+      });
     }
   }
   return shaded;
 }
 
-void FastPipeline::draw(const std::vector<ItemState>& items, Framebuffer& fb, RenderStats& stats) {
+void FastPipeline::draw(const std::vector<ItemState>& items, vec3 background, Framebuffer& fb, RenderStats& stats) {
+  const std::uint32_t backgroundRgba = backgroundWord(background);
   runVertexStage(items);
   const int binCount = (fb.height + kBinRows - 1) / kBinRows;
   runFrontEnd(items, binCount);
+  // The SIMD kernels shade View::Shaded only; the view is the same for every item.
+  const bool simd = simd_ && cpuHasAvx512() &&
+                    std::all_of(items.begin(), items.end(), [](const ItemState& s) { return s.shaderKey.view == View::Shaded; });
+  if (simd) prepareMaps(items);
   std::vector<std::uint64_t> shaded(static_cast<std::size_t>(binCount), 0);
-  pool_.run(binCount, [&](int bin, int) { shaded[static_cast<std::size_t>(bin)] = drawBin(items, bin, fb); });
+  pool_.run(binCount, [&](int bin, int thread) {
+    shaded[static_cast<std::size_t>(bin)] =
+        simd ? drawBinSimd(items, bin, backgroundRgba, fb, backEnds_[static_cast<std::size_t>(thread)])
+             : drawBinScalar(items, bin, backgroundRgba, fb);
+  });
   for (const FrontEnd& frontEnd : frontEnds_) {
     stats.trianglesIn += frontEnd.stats.trianglesIn;
     stats.trianglesClipped += frontEnd.stats.trianglesClipped;

@@ -2,31 +2,36 @@
 // The image, depth, triangle ids and statistics are the teaching path's bit for bit
 // (tests/softrender/test_fast_path.cpp renders every suite scene both ways).
 //
-//   1. vertex stage, in parallel chunks: runVertexStage once per mesh vertex, plus what
-//      every triangle using the vertex would recompute: the window position (divide by w,
-//      viewport, fused multiply-add as setup does for stage outputs), its 24.8 snap, and the
-//      clipper's outcode (or the non-finite bit);
-//   2. front end, one contiguous range of triangles per thread: triangles with no outcode bit
-//      go straight to setup on the snapped corners; the others take the teaching clipper and
-//      fan; setup culls; the survivors are appended in order to the thread's list and binned
-//      by the rows they may cover (kBinRows rows per bin);
-//   3. back end, one bin at a time on whichever thread is free: each bin draws its triangles
-//      in submission order (thread 0's list, then thread 1's, ...) into its own rows, with
-//      the AVX-512 kernel when the CPU has it and the view is shaded, else pixel by pixel
-//      with the teaching loop (draw_triangle.h).
-// Rows belong to one bin, so threads never write the same pixel and the order of triangles
-// per pixel is the submission order: the result does not depend on the thread count.
+//   1. vertex stage, in parallel chunks: runVertexStage once per mesh vertex, kept compactly
+//      (the varyings the fragment stage reads, fast_shade_avx512.h's layout) beside what every
+//      triangle would recompute: the window position (setup's fused multiply-add), its 24.8
+//      snap, and the clipper's outcode (or the non-finite bit);
+//   2. front end, one contiguous range of triangles per thread: a triangle with no outcode bit
+//      goes straight to setup's area and culling test on the snapped corners; the others are
+//      rebuilt as ClipVertex and take the teaching clipper and fan; survivors are appended in
+//      order to the thread's list and binned by the rows they may cover (kBinRows per bin);
+//      The SIMD kernels read textures from tiled copies (4 x 4 texels per cache line), made
+//      once per texture and kept while frames use it;
+//   3. back end, one bin at a time on whichever thread is free, triangles in submission order
+//      (thread 0's list, then thread 1's, ...): with the AVX-512 kernels (shaded view, CPU
+//      with AVX-512) a visibility pass then one shading pass per visible pixel; otherwise the
+//      teaching loop (draw_triangle.h) triangle by triangle.
+// A bin's rows belong to it alone, so threads never write the same pixel and each pixel sees
+// its triangles in submission order: the result does not depend on the thread count.
 #pragma once
 
 #include "scene/renderer.h"
 #include "softrender/clip.h"
 #include "softrender/draw_list.h"
+#include "softrender/fast_shade_avx512.h"
 #include "softrender/framebuffer.h"
 #include "softrender/worker_pool.h"
 
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <map>
+#include <memory>
 #include <vector>
 
 namespace twr {
@@ -34,10 +39,9 @@ namespace twr {
 // Rows per bin of the back end (a multiple of the SIMD kernel's 4-row blocks).
 inline constexpr int kBinRows = 32;
 
-// A vertex after the vertex stage, with what setup and the clipper need of it.
+// What setup and the clipper's quick test need of a vertex.
 struct FastVertex {
-  ClipVertex clip;
-  WindowVertex window;
+  WindowVertex window;                  // windowFromClip (fused multiply-add for stage outputs)
   std::int32_t xFixed = 0, yFixed = 0;  // snapToSubpixel of window x and y (1/256 px)
   std::uint32_t outcode = 0;            // planes it is outside of, or kClipNonFiniteBit
 };
@@ -46,40 +50,77 @@ class FastPipeline {
  public:
   FastPipeline(int threads, bool simd);
 
-  // makeFramebuffer's result, with the four buffers filled in parallel.
-  Framebuffer clearedFramebuffer(int width, int height, vec3 background);
+  // A framebuffer of that size whose buffers are allocated in parallel and left zero: draw()
+  // clears each bin's rows itself, just before drawing them (while they are in cache).
+  Framebuffer allocateFramebuffer(int width, int height);
 
-  // Draws every item's triangles into `fb` (already cleared) and adds the counts to `stats`.
-  // `items` are in submission order; validateIndices must have passed for each.
-  void draw(const std::vector<ItemState>& items, Framebuffer& fb, RenderStats& stats);
+  // Clears `fb` to `background` (as makeFramebuffer) and draws every item's triangles into it,
+  // adding the counts to `stats`. `items` are in submission order; validateIndices must have
+  // passed for each.
+  void draw(const std::vector<ItemState>& items, vec3 background, Framebuffer& fb, RenderStats& stats);
 
  private:
+  // One item's vertex stage output, one entry per mesh vertex (capacity kept across frames).
+  struct ItemVertices {
+    std::vector<FastVertex> vertices;
+    std::vector<float> varyings;       // varyingCount floats per vertex
+    std::vector<vec4> posClip;         // for rebuilding a ClipVertex to clip
+    std::vector<float> clipDistances;  // userPlaneCount floats per vertex
+  };
+  // A vertex the clipper made (or copied into a clipped polygon).
+  struct ClippedVertex {
+    FastVertex vertex;
+    std::array<float, kMaxVaryings> varyings{};
+  };
   // A triangle that setup accepted and that may cover a pixel, in submission order.
   struct RasterTriangle {
-    std::array<const FastVertex*, 3> v{};  // fan order
+    std::array<const FastVertex*, 3> v{};      // fan order
+    std::array<const float*, 3> varyings{};
     std::uint32_t triangleId = 0;
     std::uint32_t item = 0;  // index into the items of draw()
   };
   // What one front-end thread produces, kept across frames so memory is reused.
   struct FrontEnd {
-    std::deque<FastVertex> clipped;  // vertices the clipper made (stable addresses)
+    std::deque<ClippedVertex> clipped;  // stable addresses
     std::vector<RasterTriangle> triangles;
     std::vector<std::vector<std::uint32_t>> bins;  // per bin: indices into triangles
     RenderStats stats;
     ClipPolygon polygon, scratch;
   };
+  // One back-end thread's scratch space for the bin it is drawing.
+  struct BackEnd {
+    std::vector<BinTriangle> triangles;
+    std::vector<std::uint32_t> slots;  // kBinRows x width, kNoSlot where nothing passed
+  };
 
+  // A texture's tiled copy, kept while frames use it. The entry holds the texture, so its
+  // address cannot be reused by another one meanwhile, and texels are const.
+  struct TiledEntry {
+    std::shared_ptr<const Texture> texture;
+    TiledTexture tiled;
+    std::uint64_t lastFrame = 0;
+  };
+
+  void prepareMaps(const std::vector<ItemState>& items);
   void runVertexStage(const std::vector<ItemState>& items);
   void runFrontEnd(const std::vector<ItemState>& items, int binCount);
   void frontEndRange(const std::vector<ItemState>& items, std::size_t begin, std::size_t end, FrontEnd& out);
-  void emit(const ItemState& s, std::uint32_t item, std::uint32_t triangleId, const FastVertex& a,
-            const FastVertex& b, const FastVertex& c, FrontEnd& out);
-  std::uint64_t drawBin(const std::vector<ItemState>& items, int bin, Framebuffer& fb);
+  void clipAndEmit(const ItemState& s, std::size_t k, std::uint32_t item, std::uint32_t triangleId,
+                   const std::array<std::uint32_t, 3>& indices, FrontEnd& out);
+  void emit(const ItemState& s, std::uint32_t item, std::uint32_t triangleId, std::array<const FastVertex*, 3> v,
+            std::array<const float*, 3> varyings, FrontEnd& out);
+  std::uint64_t drawBinSimd(const std::vector<ItemState>& items, int bin, std::uint32_t background, Framebuffer& fb,
+                            BackEnd& scratch);
+  std::uint64_t drawBinScalar(const std::vector<ItemState>& items, int bin, std::uint32_t background, Framebuffer& fb);
 
   WorkerPool pool_;
   bool simd_ = true;
-  std::vector<std::vector<FastVertex>> vertices_;  // per item, vertex stage output
-  std::vector<FrontEnd> frontEnds_;                // one per thread
+  std::vector<ItemVertices> vertices_;  // per item
+  std::vector<FrontEnd> frontEnds_;     // one per thread
+  std::vector<BackEnd> backEnds_;       // one per thread
+  std::map<const Texture*, TiledEntry> tiled_;
+  std::vector<ItemMaps> maps_;  // per item of the current frame
+  std::uint64_t frame_ = 0;
 };
 
 }  // namespace twr

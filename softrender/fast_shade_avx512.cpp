@@ -1,14 +1,13 @@
-// The AVX-512 kernel. Read it beside the scalar stages it repeats: every lane does the
-// operations of pixelWeights (interpolate.cpp), interpolateFragment, shadeFragment (shade.h),
-// sampleBilinear / sampleNearest (texture_sample.cpp), powPositive (phong_pow.cpp) and
-// unitToByte (framebuffer.cpp) in the same order on the same types, so each lane rounds as
-// the scalar code does. Operations the scalar code would not see (lanes outside the triangle
-// or failing the depth test) are computed and then discarded by the lane masks.
+// The AVX-512 kernels (fast_shade_avx512.h). Read them beside the scalar stages they repeat:
+// every lane does the operations of pixelWeights (interpolate.cpp), interpolateFragment,
+// shadeFragment (shade.h), sampleBilinear / sampleNearest (texture_sample.cpp), powPositive
+// (phong_pow.cpp) and unitToByte (framebuffer.cpp) in the same order on the same types, so
+// each lane rounds as the scalar code does. Lanes the scalar code would not compute (outside
+// the triangle, failing the depth test) are computed and discarded by the lane masks.
 //
-// The code below is compiled for AVX-512 with floating-point contraction off (a fused
-// multiply-add would round once where the scalar code rounds twice); all of it sits in an
-// anonymous namespace, so no function compiled for AVX-512 can be picked by the linker for a
-// caller on another CPU.
+// Everything below is compiled for AVX-512 with floating-point contraction off (a fused
+// multiply-add rounds once where the scalar code rounds twice) and sits in an anonymous
+// namespace, so the linker can never hand an AVX-512 copy of a function to another caller.
 #include "softrender/fast_shade_avx512.h"
 
 #include "softrender/phong_pow.h"
@@ -22,9 +21,11 @@
 #include <immintrin.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -35,6 +36,24 @@ bool cpuHasAvx512() {
   static const bool has = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
                           __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512vl");
   return has;
+}
+
+TiledTexture makeTiledTexture(const Texture& texture) {
+  TiledTexture out;
+  out.width = texture.width;
+  out.height = texture.height;
+  out.blocksPerRow = (texture.width + kTexelBlockSide - 1) / kTexelBlockSide;
+  const int blockRows = (texture.height + kTexelBlockSide - 1) / kTexelBlockSide;
+  out.blocks.resize(static_cast<std::size_t>(out.blocksPerRow) * static_cast<std::size_t>(blockRows));
+  for (int y = 0; y < texture.height; ++y) {
+    for (int x = 0; x < texture.width; ++x) {
+      TexelBlock& block = out.blocks[static_cast<std::size_t>(y / kTexelBlockSide) * static_cast<std::size_t>(out.blocksPerRow) +
+                                     static_cast<std::size_t>(x / kTexelBlockSide)];
+      std::memcpy(&block.texels[static_cast<std::size_t>((y % kTexelBlockSide) * kTexelBlockSide + x % kTexelBlockSide)],
+                  texture.texel(x, y), sizeof(std::uint32_t));
+    }
+  }
+  return out;
 }
 
 #pragma GCC push_options
@@ -132,12 +151,7 @@ inline V3 safeNormalize3(const V3& v) {
 struct Weights {
   Vf p0, p1, p2;
 };
-inline Vf interpolate(float a0, float a1, float a2, const Weights& w) {
-  return (splat(a0) * w.p0 + splat(a1) * w.p1) + splat(a2) * w.p2;
-}
-inline V3 interpolate3(vec3 a0, vec3 a1, vec3 a2, const Weights& w) {
-  return {interpolate(a0.x, a1.x, a2.x, w), interpolate(a0.y, a1.y, a2.y, w), interpolate(a0.z, a1.z, a2.z, w)};
-}
+inline Vf interpolate(Vf a0, Vf a1, Vf a2, const Weights& w) { return (a0 * w.p0 + a1 * w.p1) + a2 * w.p2; }
 
 // ---- textures ----
 inline __m512i wrapPowerOfTwo(__m512i i, int size) { return _mm512_and_si512(i, _mm512_set1_epi32(size - 1)); }
@@ -158,11 +172,31 @@ inline __m512i wrapFloor(Vf integral, int size) {
   return (size & (size - 1)) == 0 ? wrapPowerOfTwo(i, size) : wrapAnySize(i, size);
 }
 
-// Which texels one sample reads and with what weights (sampleFootprint, per lane).
+// Which texels one sample reads and with what weights (sampleFootprint, per lane), and where
+// those texels are in a TiledTexture of that size.
 struct Footprint {
   __m512i x0, y0, x1, y1;
-  Vf alpha, beta;  // bilinear only
+  Vf alpha, beta;                  // bilinear only
+  __m512i i00, i10, i01, i11;      // tiled indices of (x0, y0), (x1, y0), (x0, y1), (x1, y1)
 };
+
+// Tiled index of texel (x, y): ((y / 4) blocksPerRow + x / 4) 16 + (y % 4) 4 + x % 4.
+inline __m512i tiledRow(__m512i y, int blocksPerRow) {
+  const __m512i blockRow = _mm512_mullo_epi32(_mm512_srli_epi32(y, 2), _mm512_set1_epi32(blocksPerRow * 16));
+  return _mm512_add_epi32(blockRow, _mm512_slli_epi32(_mm512_and_si512(y, _mm512_set1_epi32(3)), 2));
+}
+inline __m512i tiledColumn(__m512i x) {
+  return _mm512_add_epi32(_mm512_slli_epi32(_mm512_srli_epi32(x, 2), 4), _mm512_and_si512(x, _mm512_set1_epi32(3)));
+}
+inline void setTiledIndices(Footprint& f, int width) {
+  const int blocksPerRow = (width + kTexelBlockSide - 1) / kTexelBlockSide;
+  const __m512i row0 = tiledRow(f.y0, blocksPerRow), row1 = tiledRow(f.y1, blocksPerRow);
+  const __m512i column0 = tiledColumn(f.x0), column1 = tiledColumn(f.x1);
+  f.i00 = _mm512_add_epi32(row0, column0);
+  f.i10 = _mm512_add_epi32(row0, column1);
+  f.i01 = _mm512_add_epi32(row1, column0);
+  f.i11 = _mm512_add_epi32(row1, column1);
+}
 
 inline __m512i nextTexel(__m512i i, int size) {
   const __m512i next = _mm512_add_epi32(i, _mm512_set1_epi32(1));
@@ -183,8 +217,15 @@ Footprint scalarFootprint(const Texture& texture, Vf u, Vf v, TextureFilter filt
     x0[k] = f.x0, y0[k] = f.y0, x1[k] = f.x1, y1[k] = f.y1;
     alphas[k] = f.alpha, betas[k] = f.beta;
   }
-  return {_mm512_load_si512(x0.data()), _mm512_load_si512(y0.data()), _mm512_load_si512(x1.data()),
-          _mm512_load_si512(y1.data()), {_mm512_load_ps(alphas.data())}, {_mm512_load_ps(betas.data())}};
+  Footprint f;
+  f.x0 = _mm512_load_si512(x0.data());
+  f.y0 = _mm512_load_si512(y0.data());
+  f.x1 = _mm512_load_si512(x1.data());
+  f.y1 = _mm512_load_si512(y1.data());
+  f.alpha = Vf{_mm512_load_ps(alphas.data())};
+  f.beta = Vf{_mm512_load_ps(betas.data())};
+  setTiledIndices(f, texture.width);
+  return f;
 }
 
 Footprint footprint(const Texture& texture, Vf u, Vf v, TextureFilter filter, __mmask16 lanes) {
@@ -206,6 +247,7 @@ Footprint footprint(const Texture& texture, Vf u, Vf v, TextureFilter filter, __
     f.y1 = f.y0;
     f.alpha = splat(0.0f);
     f.beta = splat(0.0f);
+    setTiledIndices(f, texture.width);
     return f;
   }
   // Bilinear: u' = u w - 0.5, i0 = floor(u'), alpha = u' - i0 (0 and texel 0 if not finite).
@@ -223,13 +265,13 @@ Footprint footprint(const Texture& texture, Vf u, Vf v, TextureFilter filter, __
   f.y0 = _mm512_maskz_mov_epi32(finiteV, wrapFloor(select(finiteV, fv, splat(0.0f)), texture.height));
   f.x1 = nextTexel(f.x0, texture.width);
   f.y1 = nextTexel(f.y0, texture.height);
+  setTiledIndices(f, texture.width);
   return f;
 }
 
 // One texel per lane as RGB in [0, 1] (texelAt: byte * (1 / 255)).
-inline V3 texels(const Texture& texture, __m512i x, __m512i y, __mmask16 lanes) {
-  const __m512i index = _mm512_add_epi32(_mm512_mullo_epi32(y, _mm512_set1_epi32(texture.width)), x);
-  const __m512i rgba = _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), lanes, index, texture.rgba.data(), 4);
+inline V3 texels(const TiledTexture& texture, __m512i index, __mmask16 lanes) {
+  const __m512i rgba = _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), lanes, index, texture.blocks.data(), 4);
   const __m512i byteMask = _mm512_set1_epi32(kByteMask);
   const auto channel = [&](int shift) {
     const __m512i bytes = _mm512_and_si512(_mm512_srli_epi32(rgba, static_cast<unsigned>(shift)), byteMask);
@@ -240,15 +282,15 @@ inline V3 texels(const Texture& texture, __m512i x, __m512i y, __mmask16 lanes) 
 
 // sampleTexture's RGB: nearest reads one texel; bilinear
 // ((1-a)(1-b) T00 + a(1-b) T10) + (1-a) b T01) + a b T11.
-V3 sample(const Texture& texture, const Footprint& f, TextureFilter filter, __mmask16 lanes) {
-  if (filter == TextureFilter::Nearest) return texels(texture, f.x0, f.y0, lanes);
+V3 sample(const TiledTexture& texture, const Footprint& f, TextureFilter filter, __mmask16 lanes) {
+  if (filter == TextureFilter::Nearest) return texels(texture, f.i00, lanes);
   const Vf one = splat(1.0f);
   const Vf w00 = (one - f.alpha) * (one - f.beta);
   const Vf w10 = f.alpha * (one - f.beta);
   const Vf w01 = (one - f.alpha) * f.beta;
   const Vf w11 = f.alpha * f.beta;
-  const V3 t00 = texels(texture, f.x0, f.y0, lanes), t10 = texels(texture, f.x1, f.y0, lanes);
-  const V3 t01 = texels(texture, f.x0, f.y1, lanes), t11 = texels(texture, f.x1, f.y1, lanes);
+  const V3 t00 = texels(texture, f.i00, lanes), t10 = texels(texture, f.i10, lanes);
+  const V3 t01 = texels(texture, f.i01, lanes), t11 = texels(texture, f.i11, lanes);
   return ((w00 * t00 + w10 * t10) + w01 * t01) + w11 * t11;
 }
 
@@ -307,46 +349,40 @@ inline __m512i toByte(Vf c) {
   return _mm512_cvttps_epi32(rounded.v);
 }
 
-// Row R of a block: its four lanes, to or from element rows[R] of a buffer (lanes outside
-// `mask` untouched; a row with no lane in `mask` is not addressed at all).
-using BlockRows = std::array<std::size_t, kBlockSide>;
+
+// ---- the visibility pass: 4 x 4 blocks ----
+// Row R of a block: its four lanes, to or from `row` (lanes outside `mask` untouched; a row
+// with no lane in `mask` is not addressed at all, so rows past the image need no pointer).
 template <int R>
 inline __mmask8 rowMask(__mmask16 mask) {
   return static_cast<__mmask8>((mask >> (kBlockSide * R)) & kRowLanes);
 }
+using BlockRows = std::array<float*, kBlockSide>;
+using BlockSlotRows = std::array<std::uint32_t*, kBlockSide>;
 template <int R>
-inline void storeRow(std::vector<float>& buffer, const BlockRows& rows, __mmask16 mask, __m512 v) {
-  if (const __mmask8 m = rowMask<R>(mask)) _mm_mask_storeu_ps(&buffer[rows[R]], m, _mm512_extractf32x4_ps(v, R));
-}
-template <int R>
-inline void storeRow(std::vector<std::uint32_t>& buffer, const BlockRows& rows, __mmask16 mask, __m512i v) {
-  if (const __mmask8 m = rowMask<R>(mask)) _mm_mask_storeu_epi32(&buffer[rows[R]], m, _mm512_extracti32x4_epi32(v, R));
-}
-template <int R>
-inline void storeRgbaRow(std::vector<std::uint8_t>& rgba, const BlockRows& rows, __mmask16 mask, __m512i v) {
-  if (const __mmask8 m = rowMask<R>(mask)) {
-    _mm_mask_storeu_epi32(&rgba[4 * rows[R]], m, _mm512_extracti32x4_epi32(v, R));
-  }
-}
-template <int R>
-inline __m512 loadRow(__m512 into, const std::vector<float>& buffer, const BlockRows& rows, __mmask16 mask) {
-  if (const __mmask8 m = rowMask<R>(mask)) return _mm512_insertf32x4(into, _mm_maskz_loadu_ps(m, &buffer[rows[R]]), R);
+inline __m512 loadRow(__m512 into, const BlockRows& rows, __mmask16 mask) {
+  if (const __mmask8 m = rowMask<R>(mask)) return _mm512_insertf32x4(into, _mm_maskz_loadu_ps(m, rows[R]), R);
   return into;
 }
-template <typename Buffer, typename Value>
-inline void storeBlock(Buffer& buffer, const BlockRows& rows, __mmask16 mask, Value v) {
-  storeRow<0>(buffer, rows, mask, v);
-  storeRow<1>(buffer, rows, mask, v);
-  storeRow<2>(buffer, rows, mask, v);
-  storeRow<3>(buffer, rows, mask, v);
+template <int R>
+inline void storeRow(const BlockRows& rows, __mmask16 mask, __m512 v) {
+  if (const __mmask8 m = rowMask<R>(mask)) _mm_mask_storeu_ps(rows[R], m, _mm512_extractf32x4_ps(v, R));
+}
+template <int R>
+inline void storeRow(const BlockSlotRows& rows, __mmask16 mask, __m512i v) {
+  if (const __mmask8 m = rowMask<R>(mask)) _mm_mask_storeu_epi32(rows[R], m, _mm512_extracti32x4_epi32(v, R));
 }
 
 // Per-lane column and row inside the block.
 inline __m512i laneColumns() { return _mm512_set_epi32(3, 2, 1, 0, 3, 2, 1, 0, 3, 2, 1, 0, 3, 2, 1, 0); }
 inline __m512i laneRows() { return _mm512_set_epi32(3, 3, 3, 3, 2, 2, 2, 2, 1, 1, 1, 1, 0, 0, 0, 0); }
+inline Vd toDouble(__m512i integers) {
+  return {_mm512_cvtepi32_pd(_mm512_castsi512_si256(integers)),
+          _mm512_cvtepi32_pd(_mm512_extracti64x4_epi64(integers, 1))};
+}
 
-// E_i at the 16 lanes relative to the block origin: stepX * column + stepY * row, in two
-// halves of 8 int64.
+// An edge function at the 16 lanes relative to the block origin: stepX * column + stepY * row,
+// in two halves of 8 int64.
 struct EdgeLanes {
   __m512i lo, hi;
 };
@@ -360,69 +396,225 @@ EdgeLanes edgeLaneOffsets(const EdgeFunction& edge) {
           half(_mm512_extracti64x4_epi64(columns, 1), _mm512_extracti64x4_epi64(rows, 1))};
 }
 
-// The shading of one block: everything shadeFragment does for View::Shaded.
-template <bool kDiffuse, bool kNormal, bool kSpecular, bool kTangent>
-V3 shadeBlock(const Weights& w, const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2,
-              const ShadeUniforms& u, __mmask16 lanes) {
-  const V3 posWorld = interpolate3(v0.posWorld, v1.posWorld, v2.posWorld, w);
+// pixelWeights' barycentrics lambda_i = atOrigin + dx px + dy py, in double.
+inline Vd lambdaAt(double atOrigin, double dx, double dy, const Vd& px, const Vd& py) {
+  return (splatD(atOrigin) + splatD(dx) * px) + splatD(dy) * py;
+}
+
+}  // namespace
+
+std::uint64_t visibilityAvx512(const TriangleSetup& setup, const std::array<WindowVertex, 3>& window,
+                               std::uint32_t slot, int rowBegin, int rowEnd, Framebuffer& fb, std::uint32_t* slots,
+                               InterpolationSetup& interpolation, bool& covered) {
+  const int yFirst = std::max(setup.y0, rowBegin);
+  const int yLast = std::min(setup.y1, rowEnd - 1);
+  if (yFirst > yLast || setup.x0 > setup.x1) return 0;
+
+  std::array<EdgeLanes, 3> laneOffsets;
+  for (std::size_t e = 0; e < 3; ++e) laneOffsets[e] = edgeLaneOffsets(setup.edges[e]);
+  const __m512i columns = laneColumns(), rows = laneRows();
+  const Vd columnsD = toDouble(columns), rowsD = toDouble(rows);
+  const __m512i slotLanes = _mm512_set1_epi32(static_cast<int>(slot));
+  const __m512i zero = _mm512_setzero_si512();
+  const std::size_t width = static_cast<std::size_t>(fb.width);
+  std::uint64_t passed = 0;
+
+  for (int by = yFirst & ~(kBlockSide - 1); by <= yLast; by += kBlockSide) {
+    const __m512i py = _mm512_add_epi32(rows, _mm512_set1_epi32(by));
+    const __mmask16 rowLanes =
+        _mm512_cmpge_epi32_mask(py, _mm512_set1_epi32(yFirst)) & _mm512_cmple_epi32_mask(py, _mm512_set1_epi32(yLast));
+    const Vd pyD = rowsD + splatD(by);
+    for (int bx = setup.x0 & ~(kBlockSide - 1); bx <= setup.x1; bx += kBlockSide) {
+      // Coverage: every edge function > 0 at the pixel centre, inside the bounding box.
+      const __m512i px = _mm512_add_epi32(columns, _mm512_set1_epi32(bx));
+      __mmask16 inside = rowLanes & _mm512_cmpge_epi32_mask(px, _mm512_set1_epi32(setup.x0)) &
+                         _mm512_cmple_epi32_mask(px, _mm512_set1_epi32(setup.x1));
+      for (std::size_t e = 0; e < 3 && inside != 0; ++e) {
+        const EdgeFunction& edge = setup.edges[e];
+        const __m512i origin = _mm512_set1_epi64(edge.c + edge.stepX * bx + edge.stepY * by);
+        const __mmask8 lo = _mm512_cmpgt_epi64_mask(_mm512_add_epi64(origin, laneOffsets[e].lo), zero);
+        const __mmask8 hi = _mm512_cmpgt_epi64_mask(_mm512_add_epi64(origin, laneOffsets[e].hi), zero);
+        inside &= static_cast<__mmask16>(lo | (hi << 8));
+      }
+      if (inside == 0) continue;
+      if (!covered) {
+        interpolation = makeInterpolationSetup<float>(window, setup);
+        covered = true;
+      }
+
+      // pixelWeights' depth: sum lambda_i z_i in double from 0, to float, clamped to [0, 1].
+      const Vd pxD = columnsD + splatD(bx);
+      Vd depthD = splatD(0.0);
+      for (std::size_t i = 0; i < 3; ++i) {
+        const Vd lambda = lambdaAt(interpolation.atOrigin[i], interpolation.dx[i], interpolation.dy[i], pxD, pyD);
+        depthD = depthD + lambda * splatD(static_cast<double>(interpolation.zWindow[i]));
+      }
+      const Vf rounded = toFloat(depthD);
+      const Vf depth = select(finite(rounded), minOf(maxOf(rounded, splat(0.0f)), splat(1.0f)), splat(1.0f));
+
+      // GL_LESS against the block's four rows of the depth buffer.
+      BlockRows depthRows{};
+      BlockSlotRows slotRows{};
+      for (int r = 0; r < kBlockSide && by + r <= yLast; ++r) {
+        depthRows[static_cast<std::size_t>(r)] = &fb.depth[fb.index(bx, by + r)];
+        slotRows[static_cast<std::size_t>(r)] = slots + static_cast<std::size_t>(by + r - rowBegin) * width + bx;
+      }
+      __m512 stored = _mm512_setzero_ps();
+      stored = loadRow<0>(stored, depthRows, inside);
+      stored = loadRow<1>(stored, depthRows, inside);
+      stored = loadRow<2>(stored, depthRows, inside);
+      stored = loadRow<3>(stored, depthRows, inside);
+      const __mmask16 pass = inside & less(depth, Vf{stored});
+      if (pass == 0) continue;
+      storeRow<0>(depthRows, pass, depth.v);
+      storeRow<1>(depthRows, pass, depth.v);
+      storeRow<2>(depthRows, pass, depth.v);
+      storeRow<3>(depthRows, pass, depth.v);
+      storeRow<0>(slotRows, pass, slotLanes);
+      storeRow<1>(slotRows, pass, slotLanes);
+      storeRow<2>(slotRows, pass, slotLanes);
+      storeRow<3>(slotRows, pass, slotLanes);
+      passed += static_cast<std::uint64_t>(std::popcount(static_cast<unsigned>(pass)));
+    }
+  }
+  return passed;
+}
+
+namespace {
+
+// ---- the shading pass: 16 pixels of a row ----
+// Where the lanes' triangle data comes from: one triangle for all lanes (broadcast) ...
+struct OneTriangle {
+  const BinTriangle* t;
+  Vd atOrigin(std::size_t i) const { return splatD(t->atOrigin[i]); }
+  Vd dx(std::size_t i) const { return splatD(t->dx[i]); }
+  Vd dy(std::size_t i) const { return splatD(t->dy[i]); }
+  Vd invW(std::size_t i) const { return splatD(static_cast<double>(t->invW[i])); }
+  Vf varying(std::size_t vertex, int k) const { return splat(t->varyings[vertex][k]); }
+};
+
+// ... or each lane its own (gathers; lanes outside `lanes` read nothing).
+struct LaneTriangles {
+  const BinTriangle* base;
+  __m512i offsetLo, offsetHi;  // byte offsets of each lane's BinTriangle, lanes 0..7 and 8..15
+  __mmask8 lanesLo, lanesHi;
+  __m512i varyingsLo[3], varyingsHi[3];  // addresses of each lane's vertex varyings
+
+  Vd gatherDouble(std::size_t byteOffset) const {
+    const __m512i add = _mm512_set1_epi64(static_cast<long long>(byteOffset));
+    return {_mm512_mask_i64gather_pd(_mm512_setzero_pd(), lanesLo, _mm512_add_epi64(offsetLo, add), base, 1),
+            _mm512_mask_i64gather_pd(_mm512_setzero_pd(), lanesHi, _mm512_add_epi64(offsetHi, add), base, 1)};
+  }
+  Vd atOrigin(std::size_t i) const { return gatherDouble(offsetof(BinTriangle, atOrigin) + i * sizeof(double)); }
+  Vd dx(std::size_t i) const { return gatherDouble(offsetof(BinTriangle, dx) + i * sizeof(double)); }
+  Vd dy(std::size_t i) const { return gatherDouble(offsetof(BinTriangle, dy) + i * sizeof(double)); }
+  Vd invW(std::size_t i) const {
+    const __m512i add = _mm512_set1_epi64(static_cast<long long>(offsetof(BinTriangle, invW) + i * sizeof(float)));
+    const __m256 lo = _mm512_mask_i64gather_ps(_mm256_setzero_ps(), lanesLo, _mm512_add_epi64(offsetLo, add), base, 1);
+    const __m256 hi = _mm512_mask_i64gather_ps(_mm256_setzero_ps(), lanesHi, _mm512_add_epi64(offsetHi, add), base, 1);
+    return {_mm512_cvtps_pd(lo), _mm512_cvtps_pd(hi)};
+  }
+  Vf varying(std::size_t vertex, int k) const {
+    // Absolute addresses as indices from a null base.
+    const __m512i add = _mm512_set1_epi64(static_cast<long long>(k) * static_cast<long long>(sizeof(float)));
+    const __m256 lo = _mm512_mask_i64gather_ps(_mm256_setzero_ps(), lanesLo,
+                                               _mm512_add_epi64(varyingsLo[vertex], add), nullptr, 1);
+    const __m256 hi = _mm512_mask_i64gather_ps(_mm256_setzero_ps(), lanesHi,
+                                               _mm512_add_epi64(varyingsHi[vertex], add), nullptr, 1);
+    return {_mm512_insertf32x8(_mm512_castps256_ps512(lo), hi, 1)};
+  }
+};
+
+LaneTriangles laneTriangles(const BinTriangle* base, __m512i slots, __mmask16 lanes) {
+  LaneTriangles g;
+  g.base = base;
+  const __m512i size = _mm512_set1_epi64(static_cast<long long>(sizeof(BinTriangle)));
+  g.offsetLo = _mm512_mullo_epi64(_mm512_cvtepu32_epi64(_mm512_castsi512_si256(slots)), size);
+  g.offsetHi = _mm512_mullo_epi64(_mm512_cvtepu32_epi64(_mm512_extracti64x4_epi64(slots, 1)), size);
+  g.lanesLo = static_cast<__mmask8>(lanes & 0xFF);
+  g.lanesHi = static_cast<__mmask8>(lanes >> 8);
+  for (std::size_t v = 0; v < 3; ++v) {
+    const __m512i add = _mm512_set1_epi64(static_cast<long long>(offsetof(BinTriangle, varyings) + v * sizeof(void*)));
+    g.varyingsLo[v] =
+        _mm512_mask_i64gather_epi64(_mm512_setzero_si512(), g.lanesLo, _mm512_add_epi64(g.offsetLo, add), base, 1);
+    g.varyingsHi[v] =
+        _mm512_mask_i64gather_epi64(_mm512_setzero_si512(), g.lanesHi, _mm512_add_epi64(g.offsetHi, add), base, 1);
+  }
+  return g;
+}
+
+// shadeFragment for View::Shaded at the lanes in `lanes`: pixelWeights' perspective weights,
+// interpolateFragment, then the lighting; returns the colour before clamping.
+template <bool kDiffuse, bool kNormal, bool kSpecular, bool kTangent, typename Source>
+V3 shadeLanes(const Source& src, const ShadeUniforms& u, const ItemMaps& maps, const Vd& px, const Vd& py,
+              __mmask16 lanes) {
+  std::array<Vd, 3> lambda, perspective;
+  Vd perspectiveSum = splatD(0.0);
+  for (std::size_t i = 0; i < 3; ++i) {
+    lambda[i] = (src.atOrigin(i) + src.dx(i) * px) + src.dy(i) * py;
+    perspective[i] = lambda[i] * src.invW(i);
+    perspectiveSum = perspectiveSum + perspective[i];
+  }
+  const __mmask16 sumPositive = greaterD(perspectiveSum, splatD(0.0));
+  Weights w;
+  w.p0 = select(sumPositive, toFloat(perspective[0] / perspectiveSum), toFloat(lambda[0]));
+  w.p1 = select(sumPositive, toFloat(perspective[1] / perspectiveSum), toFloat(lambda[1]));
+  w.p2 = select(sumPositive, toFloat(perspective[2] / perspectiveSum), toFloat(lambda[2]));
+  const auto varying = [&](int k) { return interpolate(src.varying(0, k), src.varying(1, k), src.varying(2, k), w); };
+  const auto varying3 = [&](int k) { return V3{varying(k), varying(k + 1), varying(k + 2)}; };
+
+  const V3 posWorld = varying3(kVaryingPosWorld);
   constexpr bool kAnyMap = kDiffuse || kNormal || kSpecular;
   Vf uvX = splat(0.0f), uvY = splat(0.0f);
   if constexpr (kAnyMap) {
-    uvX = interpolate(v0.uv.x, v1.uv.x, v2.uv.x, w);
-    uvY = interpolate(v0.uv.y, v1.uv.y, v2.uv.y, w);
+    uvX = varying(kVaryingUv);
+    uvY = varying(kVaryingUv + 1);
   }
   // Texel footprints: computed once per texture size (maps of one material usually match).
   const Texture* footprintOf = nullptr;
   Footprint shared{};
-  const auto sampleMap = [&](const Texture& texture) {
+  const auto sampleMap = [&](const Texture& texture, const TiledTexture& tiled) {
     if (!footprintOf || footprintOf->width != texture.width || footprintOf->height != texture.height) {
       shared = footprint(texture, uvX, uvY, u.filter, lanes);
       footprintOf = &texture;
     }
-    return sample(texture, shared, u.filter, lanes);
+    return sample(tiled, shared, u.filter, lanes);
   };
 
   const V3 ones{splat(1.0f), splat(1.0f), splat(1.0f)};
   V3 albedo = ones;
-  if constexpr (kDiffuse) albedo = sampleMap(*u.diffuseMap);
+  if constexpr (kDiffuse) albedo = sampleMap(*u.diffuseMap, *maps.diffuse);
   V3 specScale = ones;
-  if constexpr (kSpecular) specScale = sampleMap(*u.specularMap);
+  if constexpr (kSpecular) specScale = sampleMap(*u.specularMap, *maps.specular);
   V3 mappedTangent{splat(0.0f), splat(0.0f), splat(1.0f)};
   if constexpr (kNormal) {
-    const V3 texel = sampleMap(*u.normalMap);
+    const V3 texel = sampleMap(*u.normalMap, *maps.normal);
     const Vf two = splat(2.0f), one = splat(1.0f);
     mappedTangent = safeNormalize3(V3{two * texel.x - one, two * texel.y - one, two * texel.z - one});
   }
 
   V3 nl = mappedTangent;  // tangent lighting space
   if constexpr (!kTangent) {
-    const V3 n = safeNormalize3(interpolate3(v0.nWorld, v1.nWorld, v2.nWorld, w));
+    const V3 n = safeNormalize3(varying3(kVaryingNormal));
     if constexpr (kNormal) {
-      const V3 t = safeNormalize3(interpolate3(v0.tWorld, v1.tWorld, v2.tWorld, w));
-      const V3 b = safeNormalize3(interpolate3(v0.bWorld, v1.bWorld, v2.bWorld, w));
+      const V3 t = safeNormalize3(varying3(kVaryingTangent));
+      const V3 b = safeNormalize3(varying3(kVaryingBitangent));
       nl = safeNormalize3((t * mappedTangent.x + b * mappedTangent.y) + n * mappedTangent.z);
     } else {
       nl = n;
     }
   }
 
-  V3 vVec;
-  if constexpr (kTangent) {
-    vVec = interpolate3(v0.eyeDirTangent, v1.eyeDirTangent, v2.eyeDirTangent, w);
-  } else {
-    vVec = splat3(u.eyePosWorld) - posWorld;
-  }
+  const V3 vVec = kTangent ? varying3(kVaryingEyeDirTangent) : splat3(u.eyePosWorld) - posWorld;
   const V3 v = safeNormalize3(vVec);
   const V3 kdAlbedo = splat3(u.kd) * albedo;  // u.kd * albedo, the first product of diffuse
   const V3 ksSpec = splat3(u.ks) * specScale;
   const Vf zero = splat(0.0f);
   V3 sum{zero, zero, zero};
   for (int i = 0; i < u.lightCount; ++i) {
-    const std::size_t k = static_cast<std::size_t>(i);
-    const LightUniform& light = u.lights[k];
+    const LightUniform& light = u.lights[static_cast<std::size_t>(i)];
     const V3 toLight = splat3(light.posWorld) - posWorld;
-    V3 lVec = toLight;
-    if constexpr (kTangent) lVec = interpolate3(v0.lightDirTangent[k], v1.lightDirTangent[k], v2.lightDirTangent[k], w);
+    const V3 lVec = kTangent ? varying3(kVaryingLightDirTangent + 3 * i) : toLight;
     const Vf d = sqrtOf(dot3(toLight, toLight));
     const V3 l = safeNormalize3(lVec);
     const Vf nDotL = dot3(nl, l);
@@ -449,112 +641,112 @@ V3 shadeBlock(const Weights& w, const ClipVertex& v0, const ClipVertex& v1, cons
   return ambient + sum;
 }
 
+// One draw item's lanes of a 16-pixel row segment starting at (x, py): shade and write
+// colour and triangle id.
+struct Segment {
+  const std::vector<BinTriangle>* triangles;
+  __m512i slots;   // per lane
+  __m512i ids;     // per lane triangle id
+  __mmask16 lanes;  // this item's lanes
+  int x, py;
+};
+using SegmentKernel = void (*)(const Segment& segment, const ShadeUniforms& u, const ItemMaps& maps, Framebuffer& fb);
+
 template <bool kDiffuse, bool kNormal, bool kSpecular, bool kTangent>
-std::uint64_t shadeTriangleAvx512(const TriangleSetup& setup, const InterpolationSetup& interpolation,
-                                  const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2,
-                                  const ShadeUniforms& u, std::uint32_t triangleId, int rowBegin, int rowEnd,
-                                  Framebuffer& fb) {
-  const int yFirst = std::max(setup.y0, rowBegin);
-  const int yLast = std::min(setup.y1, rowEnd - 1);
-  if (yFirst > yLast || setup.x0 > setup.x1) return 0;
-
-  std::array<EdgeLanes, 3> laneOffsets;
-  for (std::size_t e = 0; e < 3; ++e) laneOffsets[e] = edgeLaneOffsets(setup.edges[e]);
-  const __m512i columns = laneColumns(), rows = laneRows();
-  const __m512d columnsLo = _mm512_cvtepi32_pd(_mm512_castsi512_si256(columns));
-  const __m512d columnsHi = _mm512_cvtepi32_pd(_mm512_extracti64x4_epi64(columns, 1));
-  const __m512d rowsLo = _mm512_cvtepi32_pd(_mm512_castsi512_si256(rows));
-  const __m512d rowsHi = _mm512_cvtepi32_pd(_mm512_extracti64x4_epi64(rows, 1));
-  const __m512i idLanes = _mm512_set1_epi32(static_cast<int>(triangleId));
-  std::uint64_t shaded = 0;
-
-  for (int by = yFirst & ~(kBlockSide - 1); by <= yLast; by += kBlockSide) {
-    const __m512i py = _mm512_add_epi32(rows, _mm512_set1_epi32(by));
-    const __mmask16 rowLanes = _mm512_cmpge_epi32_mask(py, _mm512_set1_epi32(yFirst)) &
-                               _mm512_cmple_epi32_mask(py, _mm512_set1_epi32(yLast));
-    const Vd pyD{_mm512_add_pd(rowsLo, _mm512_set1_pd(by)), _mm512_add_pd(rowsHi, _mm512_set1_pd(by))};
-    for (int bx = setup.x0 & ~(kBlockSide - 1); bx <= setup.x1; bx += kBlockSide) {
-      // Coverage: every edge function > 0 at the pixel centre, inside the bounding box.
-      const __m512i px = _mm512_add_epi32(columns, _mm512_set1_epi32(bx));
-      __mmask16 covered = rowLanes & _mm512_cmpge_epi32_mask(px, _mm512_set1_epi32(setup.x0)) &
-                          _mm512_cmple_epi32_mask(px, _mm512_set1_epi32(setup.x1));
-      for (std::size_t e = 0; e < 3 && covered != 0; ++e) {
-        const EdgeFunction& edge = setup.edges[e];
-        const __m512i origin = _mm512_set1_epi64(edge.c + edge.stepX * bx + edge.stepY * by);
-        const __m512i zero = _mm512_setzero_si512();
-        const __mmask8 lo = _mm512_cmpgt_epi64_mask(_mm512_add_epi64(origin, laneOffsets[e].lo), zero);
-        const __mmask8 hi = _mm512_cmpgt_epi64_mask(_mm512_add_epi64(origin, laneOffsets[e].hi), zero);
-        covered &= static_cast<__mmask16>(lo | (hi << 8));
-      }
-      if (covered == 0) continue;
-
-      // pixelWeights, in double: lambda_i = atOrigin + dx px + dy py.
-      const Vd pxD{_mm512_add_pd(columnsLo, _mm512_set1_pd(bx)), _mm512_add_pd(columnsHi, _mm512_set1_pd(bx))};
-      std::array<Vd, 3> lambda;
-      for (std::size_t i = 0; i < 3; ++i) {
-        lambda[i] = (splatD(interpolation.atOrigin[i]) + splatD(interpolation.dx[i]) * pxD) +
-                    splatD(interpolation.dy[i]) * pyD;
-      }
-      Vd depthD = splatD(0.0);
-      Vd perspectiveSum = splatD(0.0);
-      std::array<Vd, 3> perspective;
-      for (std::size_t i = 0; i < 3; ++i) {
-        depthD = depthD + lambda[i] * splatD(static_cast<double>(interpolation.zWindow[i]));
-        perspective[i] = lambda[i] * splatD(static_cast<double>(interpolation.invW[i]));
-        perspectiveSum = perspectiveSum + perspective[i];
-      }
-      const Vf depthRounded = toFloat(depthD);
-      const Vf depth = select(finite(depthRounded), minOf(maxOf(depthRounded, splat(0.0f)), splat(1.0f)), splat(1.0f));
-
-      // Early depth test (GL_LESS) against the stored depth of the block's four rows.
-      BlockRows blockRows{};
-      for (int r = 0; r < kBlockSide; ++r) {
-        if (by + r <= yLast) blockRows[static_cast<std::size_t>(r)] = fb.index(bx, by + r);
-      }
-      __m512 stored = _mm512_setzero_ps();
-      stored = loadRow<0>(stored, fb.depth, blockRows, covered);
-      stored = loadRow<1>(stored, fb.depth, blockRows, covered);
-      stored = loadRow<2>(stored, fb.depth, blockRows, covered);
-      stored = loadRow<3>(stored, fb.depth, blockRows, covered);
-      const __mmask16 pass = covered & less(depth, Vf{stored});
-      if (pass == 0) continue;
-
-      const __mmask16 sumPositive = greaterD(perspectiveSum, splatD(0.0));
-      Weights w;
-      w.p0 = select(sumPositive, toFloat(perspective[0] / perspectiveSum), toFloat(lambda[0]));
-      w.p1 = select(sumPositive, toFloat(perspective[1] / perspectiveSum), toFloat(lambda[1]));
-      w.p2 = select(sumPositive, toFloat(perspective[2] / perspectiveSum), toFloat(lambda[2]));
-      const V3 colour = shadeBlock<kDiffuse, kNormal, kSpecular, kTangent>(w, v0, v1, v2, u, pass);
-
-      const __m512i rgba = _mm512_or_si512(
-          _mm512_or_si512(toByte(colour.x), _mm512_slli_epi32(toByte(colour.y), 8)),
-          _mm512_or_si512(_mm512_slli_epi32(toByte(colour.z), 16), _mm512_set1_epi32(static_cast<int>(kOpaqueAlpha))));
-      storeRgbaRow<0>(fb.rgba, blockRows, pass, rgba);
-      storeRgbaRow<1>(fb.rgba, blockRows, pass, rgba);
-      storeRgbaRow<2>(fb.rgba, blockRows, pass, rgba);
-      storeRgbaRow<3>(fb.rgba, blockRows, pass, rgba);
-      storeBlock(fb.depth, blockRows, pass, depth.v);
-      storeBlock(fb.triangleId, blockRows, pass, idLanes);
-      shaded += static_cast<std::uint64_t>(std::popcount(static_cast<unsigned>(pass)));
-    }
+void shadeSegment(const Segment& s, const ShadeUniforms& u, const ItemMaps& maps, Framebuffer& fb) {
+  const Vd px = toDouble(_mm512_add_epi32(_mm512_set_epi32(15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 0),
+                                          _mm512_set1_epi32(s.x)));
+  const Vd py = splatD(s.py);
+  // All lanes on one triangle (the common case inside large triangles): broadcast its data.
+  const std::uint32_t firstSlot =
+      static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm512_castsi512_si128(_mm512_maskz_compress_epi32(s.lanes, s.slots))));
+  const bool oneTriangle =
+      _mm512_mask_cmpneq_epi32_mask(s.lanes, s.slots, _mm512_set1_epi32(static_cast<int>(firstSlot))) == 0;
+  V3 colour;
+  if (oneTriangle) {
+    colour = shadeLanes<kDiffuse, kNormal, kSpecular, kTangent>(OneTriangle{&(*s.triangles)[firstSlot]}, u, maps, px,
+                                                                 py, s.lanes);
+  } else {
+    colour = shadeLanes<kDiffuse, kNormal, kSpecular, kTangent>(laneTriangles(s.triangles->data(), s.slots, s.lanes), u,
+                                                                 maps, px, py, s.lanes);
   }
-  return shaded;
+  const __m512i rgba = _mm512_or_si512(
+      _mm512_or_si512(toByte(colour.x), _mm512_slli_epi32(toByte(colour.y), 8)),
+      _mm512_or_si512(_mm512_slli_epi32(toByte(colour.z), 16), _mm512_set1_epi32(static_cast<int>(kOpaqueAlpha))));
+  const std::size_t origin = fb.index(s.x, s.py);
+  _mm512_mask_storeu_epi32(&fb.rgba[4 * origin], s.lanes, rgba);
+  _mm512_mask_storeu_epi32(&fb.triangleId[origin], s.lanes, s.ids);
 }
 
 // Kernels indexed by diffuse + 2 normal + 4 specular + 8 tangent.
 template <int kIndex>
-constexpr TriangleKernel kernelAt() {
-  return &shadeTriangleAvx512<(kIndex & 1) != 0, (kIndex & 2) != 0, (kIndex & 4) != 0, (kIndex & 8) != 0>;
+constexpr SegmentKernel kernelAt() {
+  return &shadeSegment<(kIndex & 1) != 0, (kIndex & 2) != 0, (kIndex & 4) != 0, (kIndex & 8) != 0>;
 }
 template <int... kIndices>
-constexpr std::array<TriangleKernel, sizeof...(kIndices)> kernelTable(std::integer_sequence<int, kIndices...>) {
+constexpr std::array<SegmentKernel, sizeof...(kIndices)> kernelTable(std::integer_sequence<int, kIndices...>) {
   return {kernelAt<kIndices>()...};
 }
 constexpr int kKernelCount = 16;
-constexpr std::array<TriangleKernel, kKernelCount> kKernels =
+constexpr std::array<SegmentKernel, kKernelCount> kKernels =
     kernelTable(std::make_integer_sequence<int, kKernelCount>());
 
+SegmentKernel kernelFor(const ShaderKey& key) {
+  const int index = (key.diffuseMap ? 1 : 0) + (key.normalMap ? 2 : 0) + (key.specularMap ? 4 : 0) +
+                    (key.space == LightingSpace::Tangent ? 8 : 0);
+  return kKernels[static_cast<std::size_t>(index)];
+}
+
+// A 32-bit field of each lane's BinTriangle (lanes outside `lanes` give 0).
+__m512i gatherField(const std::vector<BinTriangle>& triangles, __m512i slots, __mmask16 lanes, std::size_t offset) {
+  const __m512i size = _mm512_set1_epi64(static_cast<long long>(sizeof(BinTriangle)));
+  const __m512i add = _mm512_set1_epi64(static_cast<long long>(offset));
+  const __m512i lo = _mm512_add_epi64(_mm512_mullo_epi64(_mm512_cvtepu32_epi64(_mm512_castsi512_si256(slots)), size), add);
+  const __m512i hi =
+      _mm512_add_epi64(_mm512_mullo_epi64(_mm512_cvtepu32_epi64(_mm512_extracti64x4_epi64(slots, 1)), size), add);
+  const __m256i fieldLo = _mm512_mask_i64gather_epi32(_mm256_setzero_si256(), static_cast<__mmask8>(lanes & 0xFF), lo,
+                                                      triangles.data(), 1);
+  const __m256i fieldHi = _mm512_mask_i64gather_epi32(_mm256_setzero_si256(), static_cast<__mmask8>(lanes >> 8), hi,
+                                                      triangles.data(), 1);
+  return _mm512_inserti64x4(_mm512_castsi256_si512(fieldLo), fieldHi, 1);
+}
+
 }  // namespace
+
+void shadeBinAvx512(const std::vector<BinTriangle>& triangles, const std::vector<ItemState>& items,
+                    const std::vector<ItemMaps>& maps, const std::uint32_t* slots, int rowBegin, int rowEnd,
+                    std::uint32_t background, Framebuffer& fb) {
+  const std::size_t width = static_cast<std::size_t>(fb.width);
+  const __m512i noSlot = _mm512_set1_epi32(static_cast<int>(kNoSlot));
+  const __m512i backgroundLanes = _mm512_set1_epi32(static_cast<int>(background));
+  const __m512i noTriangle = _mm512_set1_epi32(static_cast<int>(kNoTriangle));
+  for (int py = rowBegin; py < rowEnd; ++py) {
+    const std::uint32_t* row = slots + static_cast<std::size_t>(py - rowBegin) * width;
+    for (int x = 0; x < fb.width; x += kLanes) {
+      const int inRow = std::min(kLanes, fb.width - x);
+      const __mmask16 inImage = static_cast<__mmask16>((1u << inRow) - 1u);
+      const __m512i slotLanes = _mm512_maskz_loadu_epi32(inImage, row + x);
+      __mmask16 remaining = _mm512_mask_cmpneq_epi32_mask(inImage, slotLanes, noSlot);
+      const __mmask16 empty = static_cast<__mmask16>(inImage & ~remaining);
+      const std::size_t origin = fb.index(x, py);
+      _mm512_mask_storeu_epi32(&fb.rgba[4 * origin], empty, backgroundLanes);
+      _mm512_mask_storeu_epi32(&fb.triangleId[origin], empty, noTriangle);
+      if (remaining == 0) continue;
+      const __m512i itemLanes = gatherField(triangles, slotLanes, remaining, offsetof(BinTriangle, item));
+      const __m512i idLanes = gatherField(triangles, slotLanes, remaining, offsetof(BinTriangle, triangleId));
+      // One pass per draw item present in the segment (usually one).
+      while (remaining != 0) {
+        const std::uint32_t item = static_cast<std::uint32_t>(
+            _mm_cvtsi128_si32(_mm512_castsi512_si128(_mm512_maskz_compress_epi32(remaining, itemLanes))));
+        const __mmask16 lanes =
+            _mm512_mask_cmpeq_epi32_mask(remaining, itemLanes, _mm512_set1_epi32(static_cast<int>(item)));
+        remaining = static_cast<__mmask16>(remaining & ~lanes);
+        const ItemState& s = items[item];
+        kernelFor(s.shaderKey)(Segment{&triangles, slotLanes, idLanes, lanes, x, py}, s.shade, maps[item], fb);
+      }
+    }
+  }
+}
 
 void powPositiveAvx512(const float* x, float s, float* out, std::size_t count) {
   for (std::size_t i = 0; i < count; i += kLanes) {
@@ -566,13 +758,6 @@ void powPositiveAvx512(const float* x, float s, float* out, std::size_t count) {
 }
 
 #pragma GCC pop_options
-
-TriangleKernel avx512KernelFor(const ShaderKey& key) {
-  if (key.view != View::Shaded || !cpuHasAvx512()) return nullptr;
-  const int index = (key.diffuseMap ? 1 : 0) + (key.normalMap ? 2 : 0) + (key.specularMap ? 4 : 0) +
-                    (key.space == LightingSpace::Tangent ? 8 : 0);
-  return kKernels[static_cast<std::size_t>(index)];
-}
 
 }  // namespace twr
 
