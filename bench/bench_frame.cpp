@@ -18,10 +18,15 @@ using namespace twr;
 constexpr int kWidth = 1280;   // pixels
 constexpr int kHeight = 720;   // pixels
 
-const Scene& sceneNamed(const std::string& file) {
-  static const Scene defaultScene = loadSceneFile(std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes/default.json");
-  static const Scene objScene = loadSceneFile(std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes/obj_model.json");
-  return file == "default" ? defaultScene : objScene;
+// "default", "obj" (assets/scenes/obj_model.json, no textures) or "1m" (bench/scenes/bench_1m.json).
+const Scene& sceneNamed(const std::string& name) {
+  const std::string root = TWINRASTER_SOURCE_DIR;
+  static const Scene defaultScene = loadSceneFile(root + "/assets/scenes/default.json");
+  static const Scene objScene = loadSceneFile(root + "/assets/scenes/obj_model.json");
+  if (name == "default") return defaultScene;
+  if (name == "obj") return objScene;
+  static const Scene millionScene = loadSceneFile(root + "/bench/scenes/bench_1m.json");
+  return millionScene;
 }
 
 void runFrames(benchmark::State& state, Renderer& renderer, const Scene& scene) {
@@ -62,8 +67,11 @@ BENCHMARK_CAPTURE(BM_CpuFrame, default_fast_avx512, std::string("default"), CpuP
     ->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_CpuFrame, obj_fast_avx512, std::string("obj"), CpuPath::Fast, true)
     ->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_CpuFrame, 1m_fast_avx512, std::string("1m"), CpuPath::Fast, true)
+    ->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_GlFrame, default_llvmpipe, std::string("default"))->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_GlFrame, obj_llvmpipe, std::string("obj"))->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_GlFrame, 1m_llvmpipe, std::string("1m"))->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 

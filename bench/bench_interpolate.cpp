@@ -1,0 +1,76 @@
+// Stage 5, interpolation: pixelWeights (double barycentrics, depth, perspective weights) and
+// interpolateFragment (the varyings) at every pixel of a 64 x 64 patch inside the default
+// scene's floor, scalar, as the teaching path runs them.
+#include "bench_stage_common.h"
+#include "softrender/clip.h"
+#include "softrender/interpolate.h"
+#include "softrender/raster.h"
+#include "softrender/setup.h"
+
+#include <benchmark/benchmark.h>
+
+namespace {
+
+using namespace twr;
+
+constexpr int kPatch = 64;  // pixels per side, from (600, 40) in GL window coordinates
+constexpr int kPatchX = 600, kPatchY = 40;
+
+struct Floor {
+  std::array<ClipVertex, 3> v;
+  InterpolationSetup interpolation;
+};
+
+// The floor's fan triangle holding the patch.
+const Floor& floorTriangle() {
+  static const Floor floor = [] {
+    const benchstage::Frame& frame = benchstage::defaultFrame();
+    const ItemState& s = frame.items[0];
+    const Mesh& mesh = *s.item->mesh;
+    ClipPolygon polygon, scratch;
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+      clipTriangle(frame.vertices[0][mesh.indices[3 * t]], frame.vertices[0][mesh.indices[3 * t + 1]],
+                   frame.vertices[0][mesh.indices[3 * t + 2]], s.clip, polygon, scratch);
+      for (int i = 1; i + 1 < polygon.count; ++i) {
+        Floor f;
+        f.v = {polygon.v[0], polygon.v[static_cast<std::size_t>(i)], polygon.v[static_cast<std::size_t>(i + 1)]};
+        const std::array<WindowVertex, 3> window{windowFromClip(f.v[0], s.viewport), windowFromClip(f.v[1], s.viewport),
+                                                 windowFromClip(f.v[2], s.viewport)};
+        TriangleSetup setup;
+        if (setupTriangle(window, s.cull, s.frontFace, s.viewport, setup) != SetupResult::Ready) continue;
+        if (!coversPixel(setup, kPatchX, kPatchY) || !coversPixel(setup, kPatchX + kPatch, kPatchY + kPatch)) continue;
+        f.interpolation = makeInterpolationSetup(window, setup);
+        return f;
+      }
+    }
+    return Floor{};
+  }();
+  return floor;
+}
+
+void BM_PixelWeights(benchmark::State& state) {
+  const Floor& f = floorTriangle();
+  for (auto _ : state) {
+    for (int y = kPatchY; y < kPatchY + kPatch; ++y) {
+      for (int x = kPatchX; x < kPatchX + kPatch; ++x) benchmark::DoNotOptimize(pixelWeights(f.interpolation, x, y));
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * kPatch * kPatch);
+}
+BENCHMARK(BM_PixelWeights);
+
+void BM_InterpolateFragment(benchmark::State& state) {
+  const Floor& f = floorTriangle();
+  const PixelWeights weights = pixelWeights(f.interpolation, kPatchX, kPatchY);
+  for (auto _ : state) {
+    for (int i = 0; i < kPatch * kPatch; ++i) {
+      benchmark::DoNotOptimize(interpolateFragment(f.v[0], f.v[1], f.v[2], weights, false, 0));
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * kPatch * kPatch);
+}
+BENCHMARK(BM_InterpolateFragment);
+
+}  // namespace
+
+BENCHMARK_MAIN();

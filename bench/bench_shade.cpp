@@ -1,0 +1,109 @@
+// Stages 6-8, shade: shadeFragment for the default scene's brick material (diffuse, normal and
+// specular maps, two lights, world space), scalar; its texture sampling alone; and the Phong
+// exponent three ways: powPositive (scalar, what both paths compute), libm's powf, and the
+// AVX-512 kernel's version of powPositive per value.
+#include "bench_stage_common.h"
+#include "softrender/fast_shade_avx512.h"
+#include "softrender/phong_pow.h"
+#include "softrender/shade.h"
+#include "softrender/texture_sample.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <random>
+
+namespace {
+
+using namespace twr;
+
+constexpr int kSamples = 4096;  // fragments or values per iteration
+
+// Fragments on the sphere: its vertices' varyings blended with fixed random weights.
+std::vector<Fragment> sphereFragments() {
+  const benchstage::Frame& frame = benchstage::defaultFrame();
+  const std::vector<ClipVertex>& v = frame.vertices[1];
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<std::size_t> pick(0, v.size() - 1);
+  std::uniform_real_distribution<float> weight(0.0f, 1.0f);
+  std::vector<Fragment> fragments;
+  for (int i = 0; i < kSamples; ++i) {
+    const float a = weight(rng), b = weight(rng) * (1.0f - a);
+    PixelWeights w;
+    w.perspective = {a, b, 1.0f - a - b};
+    fragments.push_back(interpolateFragment(v[pick(rng)], v[pick(rng)], v[pick(rng)], w, false, 0));
+  }
+  return fragments;
+}
+
+void BM_ShadeFragment(benchmark::State& state) {
+  const benchstage::Frame& frame = benchstage::defaultFrame();
+  const ItemState& s = frame.items[1];
+  const std::vector<Fragment> fragments = sphereFragments();
+  for (auto _ : state) {
+    for (const Fragment& f : fragments) {
+      withShaderFeatures(s.shaderKey, [&]<typename Features>() {
+        benchmark::DoNotOptimize(shadeFragment<Features>(f, s.shade, nullptr));
+      });
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * kSamples);
+}
+BENCHMARK(BM_ShadeFragment);
+
+void BM_SampleTexture(benchmark::State& state, TextureFilter filter) {
+  const Texture& texture = *benchstage::defaultFrame().items[1].shade.diffuseMap;
+  const std::vector<Fragment> fragments = sphereFragments();
+  for (auto _ : state) {
+    for (const Fragment& f : fragments) benchmark::DoNotOptimize(sampleTexture(texture, f.uv, filter));
+  }
+  state.SetItemsProcessed(state.iterations() * kSamples);
+}
+BENCHMARK_CAPTURE(BM_SampleTexture, bilinear, TextureFilter::Bilinear);
+BENCHMARK_CAPTURE(BM_SampleTexture, nearest, TextureFilter::Nearest);
+
+std::vector<float> powBases() {
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<float> base(0.0f, 1.0f);
+  std::vector<float> x(kSamples);
+  for (float& v : x) v = base(rng);
+  return x;
+}
+constexpr float kShininess = 32.0f;
+
+void BM_PowPositive(benchmark::State& state) {
+  const std::vector<float> x = powBases();
+  for (auto _ : state) {
+    for (float v : x) benchmark::DoNotOptimize(powPositive(v, kShininess));
+  }
+  state.SetItemsProcessed(state.iterations() * kSamples);
+}
+BENCHMARK(BM_PowPositive);
+
+void BM_LibmPowf(benchmark::State& state) {
+  const std::vector<float> x = powBases();
+  for (auto _ : state) {
+    for (float v : x) benchmark::DoNotOptimize(std::pow(v, kShininess));
+  }
+  state.SetItemsProcessed(state.iterations() * kSamples);
+}
+BENCHMARK(BM_LibmPowf);
+
+void BM_PowAvx512(benchmark::State& state) {
+  if (!cpuHasAvx512()) {
+    state.SkipWithError("no AVX-512 on this CPU");
+    return;
+  }
+  const std::vector<float> x = powBases();
+  std::vector<float> out(x.size());
+  for (auto _ : state) {
+    powPositiveAvx512(x.data(), kShininess, out.data(), x.size());
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.SetItemsProcessed(state.iterations() * kSamples);
+}
+BENCHMARK(BM_PowAvx512);
+
+}  // namespace
+
+BENCHMARK_MAIN();
