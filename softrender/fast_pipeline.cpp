@@ -323,9 +323,7 @@ void FastPipeline::draw(const std::vector<ItemState>& items, vec3 background, Fr
   runVertexStage(items);
   const int binCount = (fb.height + kBinRows - 1) / kBinRows;
   runFrontEnd(items, binCount);
-  // The SIMD kernels shade View::Shaded only; the view is the same for every item.
-  const bool simd = simd_ && cpuHasAvx512() &&
-                    std::all_of(items.begin(), items.end(), [](const ItemState& s) { return s.shaderKey.view == View::Shaded; });
+  const bool simd = simd_ && cpuHasAvx512();
   if (simd) prepareMaps(items);
   std::vector<std::uint64_t> shaded(static_cast<std::size_t>(binCount), 0);
   pool_.run(binCount, [&](int bin, int thread) {

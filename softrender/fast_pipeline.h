@@ -13,8 +13,8 @@
 //      The SIMD kernels read textures from tiled copies (4 x 4 texels per cache line), made
 //      once per texture and kept while frames use it;
 //   3. back end, one bin at a time on whichever thread is free, triangles in submission order
-//      (thread 0's list, then thread 1's, ...): with the AVX-512 kernels (shaded view, CPU
-//      with AVX-512) a visibility pass then one shading pass per visible pixel; otherwise the
+//      (thread 0's list, then thread 1's, ...): with the AVX-512 kernels (any view, CPU with
+//      AVX-512) a visibility pass then one shading pass per visible pixel; otherwise the
 //      teaching loop (draw_triangle.h) triangle by triangle.
 // A bin's rows belong to it alone, so threads never write the same pixel and each pixel sees
 // its triangles in submission order: the result does not depend on the thread count.

@@ -543,11 +543,9 @@ LaneTriangles laneTriangles(const BinTriangle* base, __m512i slots, __mmask16 la
   return g;
 }
 
-// shadeFragment for View::Shaded at the lanes in `lanes`: pixelWeights' perspective weights,
-// interpolateFragment, then the lighting; returns the colour before clamping.
-template <bool kDiffuse, bool kNormal, bool kSpecular, bool kTangent, typename Source>
-V3 shadeLanes(const Source& src, const ShadeUniforms& u, const ItemMaps& maps, const Vd& px, const Vd& py,
-              __mmask16 lanes) {
+// pixelWeights' perspective weights at the lanes (screen weights where the sum is not positive).
+template <typename Source>
+Weights perspectiveWeights(const Source& src, const Vd& px, const Vd& py) {
   std::array<Vd, 3> lambda, perspective;
   Vd perspectiveSum = splatD(0.0);
   for (std::size_t i = 0; i < 3; ++i) {
@@ -560,52 +558,85 @@ V3 shadeLanes(const Source& src, const ShadeUniforms& u, const ItemMaps& maps, c
   w.p0 = select(sumPositive, toFloat(perspective[0] / perspectiveSum), toFloat(lambda[0]));
   w.p1 = select(sumPositive, toFloat(perspective[1] / perspectiveSum), toFloat(lambda[1]));
   w.p2 = select(sumPositive, toFloat(perspective[2] / perspectiveSum), toFloat(lambda[2]));
-  const auto varying = [&](int k) { return interpolate(src.varying(0, k), src.varying(1, k), src.varying(2, k), w); };
-  const auto varying3 = [&](int k) { return V3{varying(k), varying(k + 1), varying(k + 2)}; };
+  return w;
+}
 
-  const V3 posWorld = varying3(kVaryingPosWorld);
-  constexpr bool kAnyMap = kDiffuse || kNormal || kSpecular;
-  Vf uvX = splat(0.0f), uvY = splat(0.0f);
-  if constexpr (kAnyMap) {
-    uvX = varying(kVaryingUv);
-    uvY = varying(kVaryingUv + 1);
-  }
-  // Texel footprints: computed once per texture size (maps of one material usually match).
+// interpolateFragment's varyings at the lanes: float k of the layout, or floats k .. k + 2.
+template <typename Source>
+struct LaneVaryings {
+  const Source& src;
+  Weights w;
+  Vf at(int k) const { return interpolate(src.varying(0, k), src.varying(1, k), src.varying(2, k), w); }
+  V3 at3(int k) const { return V3{at(k), at(k + 1), at(k + 2)}; }
+};
+
+// The texture samples of one fragment: footprints computed once per texture size (maps of one
+// material usually match).
+struct LaneSampler {
+  const ShadeUniforms& u;
+  Vf uvX, uvY;
+  __mmask16 lanes;
   const Texture* footprintOf = nullptr;
   Footprint shared{};
-  const auto sampleMap = [&](const Texture& texture, const TiledTexture& tiled) {
+  V3 operator()(const Texture& texture, const TiledTexture& tiled) {
     if (!footprintOf || footprintOf->width != texture.width || footprintOf->height != texture.height) {
       shared = footprint(texture, uvX, uvY, u.filter, lanes);
       footprintOf = &texture;
     }
     return sample(tiled, shared, u.filter, lanes);
-  };
+  }
+};
+
+// shadeFragment's mappedTangent: safeNormalize(2 texel - 1) of the normal map, else (0, 0, 1).
+template <bool kNormal>
+V3 mappedTangentAt(const ShadeUniforms& u, const ItemMaps& maps, LaneSampler& sampleMap) {
+  if constexpr (kNormal) {
+    const V3 texel = sampleMap(*u.normalMap, *maps.normal);
+    const Vf two = splat(2.0f), one = splat(1.0f);
+    return safeNormalize3(V3{two * texel.x - one, two * texel.y - one, two * texel.z - one});
+  } else {
+    return V3{splat(0.0f), splat(0.0f), splat(1.0f)};
+  }
+}
+
+// shadeFragment's nl in world lighting space: the mapped normal through the normalised
+// interpolated frame, or the normalised interpolated normal without a normal map.
+template <bool kNormal, typename Source>
+V3 worldNormalAt(const LaneVaryings<Source>& varyings, const V3& mappedTangent) {
+  const V3 n = safeNormalize3(varyings.at3(kVaryingNormal));
+  if constexpr (kNormal) {
+    const V3 t = safeNormalize3(varyings.at3(kVaryingTangent));
+    const V3 b = safeNormalize3(varyings.at3(kVaryingBitangent));
+    return safeNormalize3((t * mappedTangent.x + b * mappedTangent.y) + n * mappedTangent.z);
+  } else {
+    return n;
+  }
+}
+
+// shadeFragment for View::Shaded at the lanes in `lanes`: pixelWeights' perspective weights,
+// interpolateFragment, then the lighting; returns the colour before clamping.
+template <bool kDiffuse, bool kNormal, bool kSpecular, bool kTangent, typename Source>
+V3 shadeLanes(const Source& src, const ShadeUniforms& u, const ItemMaps& maps, const Vd& px, const Vd& py,
+              __mmask16 lanes) {
+  const LaneVaryings<Source> varyings{src, perspectiveWeights(src, px, py)};
+  const V3 posWorld = varyings.at3(kVaryingPosWorld);
+  constexpr bool kAnyMap = kDiffuse || kNormal || kSpecular;
+  LaneSampler sampleMap{u, splat(0.0f), splat(0.0f), lanes};
+  if constexpr (kAnyMap) {
+    sampleMap.uvX = varyings.at(kVaryingUv);
+    sampleMap.uvY = varyings.at(kVaryingUv + 1);
+  }
 
   const V3 ones{splat(1.0f), splat(1.0f), splat(1.0f)};
   V3 albedo = ones;
   if constexpr (kDiffuse) albedo = sampleMap(*u.diffuseMap, *maps.diffuse);
   V3 specScale = ones;
   if constexpr (kSpecular) specScale = sampleMap(*u.specularMap, *maps.specular);
-  V3 mappedTangent{splat(0.0f), splat(0.0f), splat(1.0f)};
-  if constexpr (kNormal) {
-    const V3 texel = sampleMap(*u.normalMap, *maps.normal);
-    const Vf two = splat(2.0f), one = splat(1.0f);
-    mappedTangent = safeNormalize3(V3{two * texel.x - one, two * texel.y - one, two * texel.z - one});
-  }
-
+  const V3 mappedTangent = mappedTangentAt<kNormal>(u, maps, sampleMap);
   V3 nl = mappedTangent;  // tangent lighting space
-  if constexpr (!kTangent) {
-    const V3 n = safeNormalize3(varying3(kVaryingNormal));
-    if constexpr (kNormal) {
-      const V3 t = safeNormalize3(varying3(kVaryingTangent));
-      const V3 b = safeNormalize3(varying3(kVaryingBitangent));
-      nl = safeNormalize3((t * mappedTangent.x + b * mappedTangent.y) + n * mappedTangent.z);
-    } else {
-      nl = n;
-    }
-  }
+  if constexpr (!kTangent) nl = worldNormalAt<kNormal>(varyings, mappedTangent);
 
-  const V3 vVec = kTangent ? varying3(kVaryingEyeDirTangent) : splat3(u.eyePosWorld) - posWorld;
+  const V3 vVec = kTangent ? varyings.at3(kVaryingEyeDirTangent) : splat3(u.eyePosWorld) - posWorld;
   const V3 v = safeNormalize3(vVec);
   const V3 kdAlbedo = splat3(u.kd) * albedo;  // u.kd * albedo, the first product of diffuse
   const V3 ksSpec = splat3(u.ks) * specScale;
@@ -614,7 +645,7 @@ V3 shadeLanes(const Source& src, const ShadeUniforms& u, const ItemMaps& maps, c
   for (int i = 0; i < u.lightCount; ++i) {
     const LightUniform& light = u.lights[static_cast<std::size_t>(i)];
     const V3 toLight = splat3(light.posWorld) - posWorld;
-    const V3 lVec = kTangent ? varying3(kVaryingLightDirTangent + 3 * i) : toLight;
+    const V3 lVec = kTangent ? varyings.at3(kVaryingLightDirTangent + 3 * i) : toLight;
     const Vf d = sqrtOf(dot3(toLight, toLight));
     const V3 l = safeNormalize3(lVec);
     const Vf nDotL = dot3(nl, l);
@@ -641,6 +672,59 @@ V3 shadeLanes(const Source& src, const ShadeUniforms& u, const ItemMaps& maps, c
   return ambient + sum;
 }
 
+// vectorAsColour: (v + 1) * 0.5 per component.
+inline V3 vectorAsColour3(const V3& v) {
+  const Vf one = splat(1.0f), half = splat(0.5f);
+  return {(v.x + one) * half, (v.y + one) * half, (v.z + one) * half};
+}
+
+// shadeFragment for a debug view that reads varyings (every one but Depth, and Albedo without
+// a diffuse map, which shadeSegment handles without them), before clamping.
+template <View kView, bool kDiffuse, bool kNormal, bool kTangent, typename Source>
+V3 debugLanes(const Source& src, const ShadeUniforms& u, const ItemMaps& maps, const Vd& px, const Vd& py,
+              __mmask16 lanes) {
+  const LaneVaryings<Source> varyings{src, perspectiveWeights(src, px, py)};
+  const Vf zero = splat(0.0f);
+  if constexpr (kView == View::Albedo) {
+    LaneSampler sampleMap{u, varyings.at(kVaryingUv), varyings.at(kVaryingUv + 1), lanes};
+    return sampleMap(*u.diffuseMap, *maps.diffuse) * splat3(u.kd);
+  } else if constexpr (kView == View::Normal) {
+    return vectorAsColour3(safeNormalize3(varyings.at3(kVaryingNormal)));
+  } else if constexpr (kView == View::Tangent) {
+    return vectorAsColour3(safeNormalize3(varyings.at3(kVaryingTangent)));
+  } else if constexpr (kView == View::Bitangent) {
+    return vectorAsColour3(safeNormalize3(varyings.at3(kVaryingBitangent)));
+  } else if constexpr (kView == View::MappedNormal) {
+    LaneSampler sampleMap{u, zero, zero, lanes};
+    if constexpr (kNormal) {
+      sampleMap.uvX = varyings.at(kVaryingUv);
+      sampleMap.uvY = varyings.at(kVaryingUv + 1);
+    }
+    const V3 mappedTangent = mappedTangentAt<kNormal>(u, maps, sampleMap);
+    if constexpr (kTangent) return vectorAsColour3(mappedTangent);
+    else return vectorAsColour3(worldNormalAt<kNormal>(varyings, mappedTangent));
+  } else if constexpr (kView == View::Uv) {
+    const Vf uvX = varyings.at(kVaryingUv), uvY = varyings.at(kVaryingUv + 1);
+    return {uvX - floorOf(uvX), uvY - floorOf(uvY), zero};
+  } else {
+    static_assert(kView == View::LightTangent || kView == View::EyeTangent);
+    constexpr bool kLight = kView == View::LightTangent;
+    V3 dirTangent{zero, zero, zero};  // no light: (0, 0, 0), shown as grey 0.5
+    if (!kLight || u.lightCount > 0) {
+      if constexpr (kTangent) {
+        dirTangent = safeNormalize3(varyings.at3(kLight ? kVaryingLightDirTangent : kVaryingEyeDirTangent));
+      } else {
+        const V3 n = safeNormalize3(varyings.at3(kVaryingNormal));
+        const V3 t = safeNormalize3(varyings.at3(kVaryingTangent));
+        const V3 b = safeNormalize3(varyings.at3(kVaryingBitangent));
+        const V3 w = splat3(kLight ? u.lights[0].posWorld : u.eyePosWorld) - varyings.at3(kVaryingPosWorld);
+        dirTangent = safeNormalize3(V3{dot3(t, w), dot3(b, w), dot3(n, w)});
+      }
+    }
+    return vectorAsColour3(dirTangent);
+  }
+}
+
 // One draw item's lanes of a 16-pixel row segment starting at (x, py): shade and write
 // colour and triangle id.
 struct Segment {
@@ -652,49 +736,89 @@ struct Segment {
 };
 using SegmentKernel = void (*)(const Segment& segment, const ShadeUniforms& u, const ItemMaps& maps, Framebuffer& fb);
 
-template <bool kDiffuse, bool kNormal, bool kSpecular, bool kTangent>
+template <View kView, bool kDiffuse, bool kNormal, bool kSpecular, bool kTangent>
 void shadeSegment(const Segment& s, const ShadeUniforms& u, const ItemMaps& maps, Framebuffer& fb) {
-  const Vd px = toDouble(_mm512_add_epi32(_mm512_set_epi32(15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 0),
-                                          _mm512_set1_epi32(s.x)));
-  const Vd py = splatD(s.py);
-  // All lanes on one triangle (the common case inside large triangles): broadcast its data.
-  const std::uint32_t firstSlot =
-      static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm512_castsi512_si128(_mm512_maskz_compress_epi32(s.lanes, s.slots))));
-  const bool oneTriangle =
-      _mm512_mask_cmpneq_epi32_mask(s.lanes, s.slots, _mm512_set1_epi32(static_cast<int>(firstSlot))) == 0;
+  const std::size_t origin = fb.index(s.x, s.py);
   V3 colour;
-  if (oneTriangle) {
-    colour = shadeLanes<kDiffuse, kNormal, kSpecular, kTangent>(OneTriangle{&(*s.triangles)[firstSlot]}, u, maps, px,
-                                                                 py, s.lanes);
+  if constexpr (kView == View::Depth) {
+    // The depth buffer holds the visible triangle's pixelWeights depth once visibility is done.
+    const Vf depth{_mm512_maskz_loadu_ps(s.lanes, &fb.depth[origin])};
+    colour = {depth, depth, depth};
+  } else if constexpr (kView == View::Albedo && !kDiffuse) {
+    colour = splat3(vec3(1.0f)) * splat3(u.kd);  // albedo 1 times kd
   } else {
-    colour = shadeLanes<kDiffuse, kNormal, kSpecular, kTangent>(laneTriangles(s.triangles->data(), s.slots, s.lanes), u,
-                                                                 maps, px, py, s.lanes);
+    const Vd px = toDouble(_mm512_add_epi32(_mm512_set_epi32(15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 0),
+                                            _mm512_set1_epi32(s.x)));
+    const Vd py = splatD(s.py);
+    const auto shade = [&](const auto& src) {
+      if constexpr (kView == View::Shaded) {
+        return shadeLanes<kDiffuse, kNormal, kSpecular, kTangent>(src, u, maps, px, py, s.lanes);
+      } else {
+        return debugLanes<kView, kDiffuse, kNormal, kTangent>(src, u, maps, px, py, s.lanes);
+      }
+    };
+    // All lanes on one triangle (the common case inside large triangles): broadcast its data.
+    const std::uint32_t firstSlot = static_cast<std::uint32_t>(
+        _mm_cvtsi128_si32(_mm512_castsi512_si128(_mm512_maskz_compress_epi32(s.lanes, s.slots))));
+    const bool oneTriangle =
+        _mm512_mask_cmpneq_epi32_mask(s.lanes, s.slots, _mm512_set1_epi32(static_cast<int>(firstSlot))) == 0;
+    colour = oneTriangle ? shade(OneTriangle{&(*s.triangles)[firstSlot]})
+                         : shade(laneTriangles(s.triangles->data(), s.slots, s.lanes));
   }
   const __m512i rgba = _mm512_or_si512(
       _mm512_or_si512(toByte(colour.x), _mm512_slli_epi32(toByte(colour.y), 8)),
       _mm512_or_si512(_mm512_slli_epi32(toByte(colour.z), 16), _mm512_set1_epi32(static_cast<int>(kOpaqueAlpha))));
-  const std::size_t origin = fb.index(s.x, s.py);
   _mm512_mask_storeu_epi32(&fb.rgba[4 * origin], s.lanes, rgba);
   _mm512_mask_storeu_epi32(&fb.triangleId[origin], s.lanes, s.ids);
 }
 
-// Kernels indexed by diffuse + 2 normal + 4 specular + 8 tangent.
+// Shaded kernels indexed by diffuse + 2 normal + 4 specular + 8 tangent.
 template <int kIndex>
-constexpr SegmentKernel kernelAt() {
-  return &shadeSegment<(kIndex & 1) != 0, (kIndex & 2) != 0, (kIndex & 4) != 0, (kIndex & 8) != 0>;
+constexpr SegmentKernel shadedKernelAt() {
+  return &shadeSegment<View::Shaded, (kIndex & 1) != 0, (kIndex & 2) != 0, (kIndex & 4) != 0, (kIndex & 8) != 0>;
 }
 template <int... kIndices>
-constexpr std::array<SegmentKernel, sizeof...(kIndices)> kernelTable(std::integer_sequence<int, kIndices...>) {
-  return {kernelAt<kIndices>()...};
+constexpr std::array<SegmentKernel, sizeof...(kIndices)> shadedKernelTable(std::integer_sequence<int, kIndices...>) {
+  return {shadedKernelAt<kIndices>()...};
 }
-constexpr int kKernelCount = 16;
-constexpr std::array<SegmentKernel, kKernelCount> kKernels =
-    kernelTable(std::make_integer_sequence<int, kKernelCount>());
+constexpr int kShadedKernelCount = 16;
+constexpr std::array<SegmentKernel, kShadedKernelCount> kShadedKernels =
+    shadedKernelTable(std::make_integer_sequence<int, kShadedKernelCount>());
+
+// A debug view's kernel, instantiated only for the features that view reads (diffuse for
+// Albedo; normal map and lighting space for MappedNormal; lighting space for the two
+// tangent-space directions), so 15 kernels cover the nine views.
+template <View kView>
+SegmentKernel debugKernel(bool diffuse, bool normal, bool tangent) {
+  if constexpr (kView == View::Albedo) {
+    return diffuse ? &shadeSegment<kView, true, false, false, false> : &shadeSegment<kView, false, false, false, false>;
+  } else if constexpr (kView == View::MappedNormal) {
+    if (normal) return tangent ? &shadeSegment<kView, false, true, false, true> : &shadeSegment<kView, false, true, false, false>;
+    return tangent ? &shadeSegment<kView, false, false, false, true> : &shadeSegment<kView, false, false, false, false>;
+  } else if constexpr (kView == View::LightTangent || kView == View::EyeTangent) {
+    return tangent ? &shadeSegment<kView, false, false, false, true> : &shadeSegment<kView, false, false, false, false>;
+  } else {
+    return &shadeSegment<kView, false, false, false, false>;
+  }
+}
 
 SegmentKernel kernelFor(const ShaderKey& key) {
-  const int index = (key.diffuseMap ? 1 : 0) + (key.normalMap ? 2 : 0) + (key.specularMap ? 4 : 0) +
-                    (key.space == LightingSpace::Tangent ? 8 : 0);
-  return kKernels[static_cast<std::size_t>(index)];
+  const bool tangent = key.space == LightingSpace::Tangent;
+  const bool d = key.diffuseMap, n = key.normalMap;
+  switch (key.view) {
+    case View::Shaded: break;
+    case View::Albedo: return debugKernel<View::Albedo>(d, n, tangent);
+    case View::Normal: return debugKernel<View::Normal>(d, n, tangent);
+    case View::Tangent: return debugKernel<View::Tangent>(d, n, tangent);
+    case View::Bitangent: return debugKernel<View::Bitangent>(d, n, tangent);
+    case View::MappedNormal: return debugKernel<View::MappedNormal>(d, n, tangent);
+    case View::Uv: return debugKernel<View::Uv>(d, n, tangent);
+    case View::Depth: return debugKernel<View::Depth>(d, n, tangent);
+    case View::LightTangent: return debugKernel<View::LightTangent>(d, n, tangent);
+    case View::EyeTangent: return debugKernel<View::EyeTangent>(d, n, tangent);
+  }
+  const int index = (d ? 1 : 0) + (n ? 2 : 0) + (key.specularMap ? 4 : 0) + (tangent ? 8 : 0);
+  return kShadedKernels[static_cast<std::size_t>(index)];
 }
 
 // A 32-bit field of each lane's BinTriangle (lanes outside `lanes` give 0).

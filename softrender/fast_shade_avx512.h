@@ -4,9 +4,10 @@
 //      from the double barycentrics (pixelWeights), GL_LESS against the depth buffer; a
 //      passing pixel takes the triangle's depth and its slot in the bin's slot buffer;
 //   2. shading, once per pixel that ended with a slot, 16 pixels of a row at a time, grouped
-//      by draw item: perspective weights, interpolation and shadeFragment for View::Shaded,
-//      reading the slot's vertices by broadcast when all lanes share a triangle and by
-//      gathers otherwise; colour and triangle id are written.
+//      by draw item: perspective weights, interpolation and shadeFragment for the frame's view
+//      (the lit image or a debug colour view; Depth reads the depth buffer the visibility pass
+//      left, a flat Albedo needs no varyings), reading the slot's vertices by broadcast when
+//      all lanes share a triangle and by gathers otherwise; colour and triangle id are written.
 // The last triangle to pass the depth test at a pixel is the one whose shading the teaching
 // path leaves there, and shading depends only on the triangle and the pixel, so the image is
 // the same; every lane performs the scalar stages' IEEE operations in the same order. The
@@ -88,9 +89,10 @@ std::uint64_t visibilityAvx512(const TriangleSetup& setup, const std::array<Wind
                                InterpolationSetup& interpolation, bool& covered);
 
 // Shading pass over rows [rowBegin, rowEnd), writing colour and triangle id of every pixel:
-// for a pixel with a slot from triangles[slot], items[triangles[slot].item] (every item's view
-// must be View::Shaded) and that item's maps (maps[item], the tiled copies of its uniforms'
-// maps); for one without, the background word (backgroundWord) and kNoTriangle.
+// for a pixel with a slot from triangles[slot], items[triangles[slot].item] (any view) and that
+// item's maps (maps[item], the tiled copies of its uniforms' maps); for one without, the
+// background word (backgroundWord) and kNoTriangle. Runs after the bin's visibility passes
+// (the Depth view reads the depth buffer).
 void shadeBinAvx512(const std::vector<BinTriangle>& triangles, const std::vector<ItemState>& items,
                     const std::vector<ItemMaps>& maps, const std::uint32_t* slots, int rowBegin, int rowEnd,
                     std::uint32_t background, Framebuffer& fb);

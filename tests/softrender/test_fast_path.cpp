@@ -74,11 +74,14 @@ void expectIdentical(const RenderOutput& expected, const RenderOutput& actual, c
   EXPECT_EQ(e.pixelsShaded, a.pixelsShaded) << what;
 }
 
-// Teaching versus fast with the SIMD kernel and with the scalar kernel, at `width` x `height`.
+// Teaching versus fast with the SIMD kernels (one and two threads) and with the scalar
+// fallback, at `width` x `height`.
 void expectPathsAgree(const Scene& scene, const RenderSettings& settings, int width, int height,
                       const std::string& what) {
   const RenderOutput reference = makeCpuRenderer(teaching())->render(scene, settings, width, height);
   ASSERT_GT(reference.stats.trianglesIn, 0u) << what;
+  expectIdentical(reference, makeCpuRenderer(fastSimd(1))->render(scene, settings, width, height),
+                  what + ", simd 1 thread");
   expectIdentical(reference, makeCpuRenderer(fastSimd(2))->render(scene, settings, width, height), what + ", simd");
   expectIdentical(reference, makeCpuRenderer(fastScalar(3))->render(scene, settings, width, height),
                   what + ", scalar");
@@ -225,8 +228,87 @@ TEST(FastPath, SyntheticMaterialsTexturesAndExponents) {
   }
 }
 
+// Every view on the synthetic material with all its maps and without any, in both lighting
+// spaces and filters, then with user clip planes cutting triangles, then with no light (the
+// light direction view shows grey): each view has its own SIMD kernel in the fast path.
+TEST(FastPath, EveryViewOnSyntheticMaterials) {
+  for (bool maps : {true, false}) {
+    Scene scene = syntheticScene(vec2(-1.3f, -0.2f), vec2(2.0f, 3.1f), 37, 20, 12.0f);
+    if (!maps) {
+      scene.materials[0].diffuseMap.reset();
+      scene.materials[0].normalMap.reset();
+      scene.materials[0].specularMap.reset();
+    }
+    const std::string material = maps ? "every map" : "no map";
+    for (View view : kAllViews) {
+      for (LightingSpace space : {LightingSpace::World, LightingSpace::Tangent}) {
+        for (TextureFilter filter : {TextureFilter::Nearest, TextureFilter::Bilinear}) {
+          RenderSettings settings = scene.settings;
+          settings.view = view;
+          settings.lightingSpace = space;
+          settings.textureFilter = filter;
+          settings.cull = CullMode::None;
+          expectPathsAgree(scene, settings, 101, 67,
+                           material + " view " + std::string(toString(view)) + " " + std::string(toString(space)) +
+                               " " + std::string(toString(filter)));
+        }
+      }
+    }
+  }
+  Scene scene = syntheticScene(vec2(0.0f), vec2(2.0f), 16, 16, 8.0f);
+  for (View view : kAllViews) {
+    for (LightingSpace space : {LightingSpace::World, LightingSpace::Tangent}) {
+      RenderSettings settings = scene.settings;
+      settings.view = view;
+      settings.lightingSpace = space;
+      settings.userClipPlanes = {vec4(1.0f, 0.2f, 0.0f, 0.1f), vec4(0.0f, -1.0f, 0.3f, 0.4f)};
+      expectPathsAgree(scene, settings, 96, 64,
+                       "user planes view " + std::string(toString(view)) + " " + std::string(toString(space)));
+    }
+  }
+  scene.lights.clear();
+  for (View view : kAllViews) {
+    for (LightingSpace space : {LightingSpace::World, LightingSpace::Tangent}) {
+      RenderSettings settings = scene.settings;
+      settings.view = view;
+      settings.lightingSpace = space;
+      expectPathsAgree(scene, settings, 96, 64,
+                       "no light view " + std::string(toString(view)) + " " + std::string(toString(space)));
+    }
+  }
+}
+
+// The depth view and the flat albedo view read no varyings: check them against hand-made
+// expectations too, so agreeing with the teaching path is not the only evidence.
+TEST(FastPath, DepthAndFlatAlbedoViewsShowTheirValues) {
+  Scene scene = syntheticScene(vec2(0.0f), vec2(1.0f), 16, 16, 8.0f);
+  scene.materials[0].diffuseMap.reset();
+  scene.materials[0].kd = vec3(0.2f, 0.6f, 1.5f);  // 1.5 clamps to 1
+  RenderSettings settings = scene.settings;
+  settings.view = View::Albedo;
+  const RenderOutput albedo = makeCpuRenderer(fastSimd(2))->render(scene, settings, 64, 48);
+  settings.view = View::Depth;
+  const RenderOutput depth = makeCpuRenderer(fastSimd(2))->render(scene, settings, 64, 48);
+  std::size_t covered = 0;
+  for (std::size_t i = 0; i < depth.triangleId.size(); ++i) {
+    if (depth.triangleId[i] == kNoTriangle) continue;
+    ++covered;
+    // unitToByte: round(c * 255), halves up.
+    ASSERT_EQ(albedo.rgba[4 * i], 51) << i;  // 0.2 * 255 = 51.0000008
+    ASSERT_EQ(albedo.rgba[4 * i + 1], 153) << i;  // 0.6 * 255 = 153.0000023
+    ASSERT_EQ(albedo.rgba[4 * i + 2], 255) << i;
+    const long grey = std::lround(depth.depth[i] * 255.0f);  // depth is in [0, 1]
+    ASSERT_EQ(depth.rgba[4 * i], grey) << i;
+    ASSERT_EQ(depth.rgba[4 * i + 1], grey) << i;
+    ASSERT_EQ(depth.rgba[4 * i + 2], grey) << i;
+    ASSERT_EQ(depth.rgba[4 * i + 3], 255) << i;
+  }
+  EXPECT_GT(covered, 500u);
+}
+
 // Texture coordinates past 2^30 texels (either sign): the kernel hands those lanes to the
-// scalar footprint. The last range overflows to infinity in u * width.
+// scalar footprint. The last range overflows to infinity in u * width. The uv view takes
+// u - floor(u) of the same values (NaN for infinite ones, drawn as 0).
 TEST(FastPath, HugeTextureCoordinates) {
   const std::pair<vec2, vec2> ranges[] = {{vec2(-3.0e7f, 1.0e7f), vec2(3.0e7f, 2.0e7f)},
                                           {vec2(-1.0e30f, -5.0f), vec2(1.0e30f, 5.0f)},
@@ -234,10 +316,14 @@ TEST(FastPath, HugeTextureCoordinates) {
   for (const auto& [uvMin, uvMax] : ranges) {
     const Scene scene = syntheticScene(uvMin, uvMax, 64, 48, 16.0f);
     for (TextureFilter filter : {TextureFilter::Nearest, TextureFilter::Bilinear}) {
-      RenderSettings settings = scene.settings;
-      settings.textureFilter = filter;
-      expectPathsAgree(scene, settings, 90, 70,
-                       "uv from " + std::to_string(uvMin.x) + " " + std::string(toString(filter)));
+      for (View view : {View::Shaded, View::Albedo, View::MappedNormal, View::Uv}) {
+        RenderSettings settings = scene.settings;
+        settings.textureFilter = filter;
+        settings.view = view;
+        expectPathsAgree(scene, settings, 90, 70,
+                         "uv from " + std::to_string(uvMin.x) + " " + std::string(toString(filter)) + " view " +
+                             std::string(toString(view)));
+      }
     }
   }
 }
