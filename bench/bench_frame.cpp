@@ -1,5 +1,6 @@
 // Whole frames: the CPU pipeline's teaching path, its fast path with the scalar and the
-// AVX-512 kernel, and llvmpipe, on the default scene and the untextured OBJ scene at 720p.
+// AVX-512 kernel, and llvmpipe, on the default scene and the untextured OBJ scene at 720p;
+// the default scene in debug colour views.
 // `twinraster bench` is the side-by-side measurement the docs quote; this one isolates each
 // variant (and runs under perf or callgrind without the other backend in the profile).
 #include "glrender/gl_renderer.h"
@@ -29,10 +30,10 @@ const Scene& sceneNamed(const std::string& name) {
   return millionScene;
 }
 
-void runFrames(benchmark::State& state, Renderer& renderer, const Scene& scene) {
+void runFrames(benchmark::State& state, Renderer& renderer, const Scene& scene, const RenderSettings& settings) {
   std::uint64_t shaded = 0;
   for (auto _ : state) {
-    const RenderOutput out = renderer.render(scene, scene.settings, kWidth, kHeight);
+    const RenderOutput out = renderer.render(scene, settings, kWidth, kHeight);
     shaded = out.stats.pixelsShaded;
     benchmark::DoNotOptimize(out.rgba.data());
   }
@@ -45,7 +46,18 @@ void runFrames(benchmark::State& state, Renderer& renderer, const Scene& scene) 
 // Args: threads.
 void BM_CpuFrame(benchmark::State& state, std::string file, CpuPath path, bool simd) {
   const auto renderer = makeCpuRenderer(CpuOptions{static_cast<int>(state.range(0)), path, simd});
-  runFrames(state, *renderer, sceneNamed(file));
+  const Scene& scene = sceneNamed(file);
+  runFrames(state, *renderer, scene, scene.settings);
+}
+
+// The default scene in one debug colour view (what the GUI shows beside the lit image).
+// Args: threads.
+void BM_CpuViewFrame(benchmark::State& state, View view, CpuPath path, bool simd) {
+  const auto renderer = makeCpuRenderer(CpuOptions{static_cast<int>(state.range(0)), path, simd});
+  const Scene& scene = sceneNamed("default");
+  RenderSettings settings = scene.settings;
+  settings.view = view;
+  runFrames(state, *renderer, scene, settings);
 }
 
 // llvmpipe in its default (fast) sampling; LP_NUM_THREADS is read once per process, so the
@@ -56,7 +68,7 @@ void BM_GlFrame(benchmark::State& state, std::string file) {
   const auto renderer = makeGlRenderer(options);
   const Scene& scene = sceneNamed(file);
   renderer->render(scene, scene.settings, kWidth, kHeight);  // shader compilation
-  runFrames(state, *renderer, scene);
+  runFrames(state, *renderer, scene, scene.settings);
 }
 
 BENCHMARK_CAPTURE(BM_CpuFrame, default_teaching, std::string("default"), CpuPath::Teaching, false)
@@ -69,6 +81,16 @@ BENCHMARK_CAPTURE(BM_CpuFrame, obj_fast_avx512, std::string("obj"), CpuPath::Fas
     ->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_CpuFrame, 1m_fast_avx512, std::string("1m"), CpuPath::Fast, true)
     ->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_CpuViewFrame, albedo_teaching, View::Albedo, CpuPath::Teaching, false)
+    ->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_CpuViewFrame, albedo_fast_avx512, View::Albedo, CpuPath::Fast, true)
+    ->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_CpuViewFrame, normal_fast_avx512, View::Normal, CpuPath::Fast, true)
+    ->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_CpuViewFrame, light_tangent_fast_avx512, View::LightTangent, CpuPath::Fast, true)
+    ->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_CpuViewFrame, depth_fast_avx512, View::Depth, CpuPath::Fast, true)
+    ->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_GlFrame, default_llvmpipe, std::string("default"))->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_GlFrame, obj_llvmpipe, std::string("obj"))->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_GlFrame, 1m_llvmpipe, std::string("1m"))->Unit(benchmark::kMillisecond)->UseRealTime();
