@@ -43,11 +43,6 @@ bool planeActive(int plane, const ClipConfig& config) {
   return true;  // side planes fall back to the guard band
 }
 
-template <typename T>
-bool finitePosition(const ClipVertexT<T>& v) {
-  return std::isfinite(v.posClip.x) && std::isfinite(v.posClip.y) && std::isfinite(v.posClip.z) &&
-         std::isfinite(v.posClip.w);
-}
 
 // Cuts `in` by one plane into `out` (Sutherland-Hodgman: keep inside vertices, add a vertex
 // where an edge crosses the plane).
@@ -81,10 +76,27 @@ void clipPolygonByPlane(const ClipPolygonT<T>& in, int plane, const ClipConfig& 
   if (out.count < 3) out.count = 0;
 }
 
+template <typename T>
+bool withinClipRange(T value) {
+  // Also false for NaN and infinities.
+  return std::fabs(value) <= static_cast<T>(kMaxClipCoordinate);
+}
+
 }  // namespace
 
 template <typename T>
+bool clipVertexUsable(const ClipVertexT<T>& vertex, const ClipConfig& config) {
+  const Vec4T<T>& p = vertex.posClip;
+  if (!withinClipRange(p.x) || !withinClipRange(p.y) || !withinClipRange(p.z) || !withinClipRange(p.w)) return false;
+  for (int j = 0; j < config.userPlaneCount; ++j) {
+    if (!withinClipRange(vertex.clipDistance[static_cast<std::size_t>(j)])) return false;
+  }
+  return true;
+}
+
+template <typename T>
 std::uint32_t outcode(const ClipVertexT<T>& vertex, const ClipConfig& config) {
+  if (!clipVertexUsable(vertex, config)) return kClipNonFiniteBit;
   std::uint32_t code = 0;
   for (int plane = 0; plane < kClipPlaneCount; ++plane) {
     if (planeActive(plane, config) && clipDistanceTo(vertex, plane, config) < T(0)) code |= 1u << plane;
@@ -115,7 +127,7 @@ ClipVertexT<T> interpolateClipVertex(const ClipVertexT<T>& from, const ClipVerte
 template <typename T>
 std::uint32_t clipTriangle(const ClipVertexT<T>& a, const ClipVertexT<T>& b, const ClipVertexT<T>& c,
                            const ClipConfig& config, ClipPolygonT<T>& out, ClipPolygonT<T>& scratch) {
-  if (!finitePosition(a) || !finitePosition(b) || !finitePosition(c)) {
+  if (!clipVertexUsable(a, config) || !clipVertexUsable(b, config) || !clipVertexUsable(c, config)) {
     out.count = 0;
     return kClipNonFiniteBit;
   }
@@ -150,7 +162,7 @@ std::uint32_t clipTriangle(const ClipVertexT<T>& a, const ClipVertexT<T>& b, con
 template <typename T>
 bool clipSegment(ClipVertexT<T>& a, ClipVertexT<T>& b, const ClipConfig& config, std::uint32_t& planesCut) {
   planesCut = 0;
-  if (!finitePosition(a) || !finitePosition(b)) {
+  if (!clipVertexUsable(a, config) || !clipVertexUsable(b, config)) {
     planesCut = kClipNonFiniteBit;
     return false;
   }
@@ -175,6 +187,7 @@ bool clipSegment(ClipVertexT<T>& a, ClipVertexT<T>& b, const ClipConfig& config,
 
 // The two pipelines: float (matches GL) and double (the reference).
 #define TWR_INSTANTIATE_CLIP(T)                                                                               \
+  template bool clipVertexUsable<T>(const ClipVertexT<T>&, const ClipConfig&);                                \
   template T clipDistanceTo<T>(const ClipVertexT<T>&, int, const ClipConfig&);                                \
   template std::uint32_t outcode<T>(const ClipVertexT<T>&, const ClipConfig&);                                \
   template ClipVertexT<T> interpolateClipVertex<T>(const ClipVertexT<T>&, const ClipVertexT<T>&, T);          \

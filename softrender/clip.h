@@ -68,7 +68,8 @@ using ClipPolygon = ClipPolygonT<float>;
 template <typename T>
 T clipDistanceTo(const ClipVertexT<T>& vertex, int plane, const ClipConfig& config);
 
-// Bit `plane` set for each active plane the vertex is outside of.
+// Bit `plane` set for each active plane the vertex is outside of; kClipNonFiniteBit alone when
+// !clipVertexUsable (no distance of such a vertex is meaningful).
 template <typename T>
 std::uint32_t outcode(const ClipVertexT<T>& vertex, const ClipConfig& config);
 
@@ -80,8 +81,19 @@ std::uint32_t outcode(const ClipVertexT<T>& vertex, const ClipConfig& config);
 template <typename T>
 ClipVertexT<T> interpolateClipVertex(const ClipVertexT<T>& from, const ClipVertexT<T>& to, std::type_identity_t<T> t);
 
-// Set in a returned plane mask when a vertex had a non-finite clip position (removed).
+// Largest magnitude (inclusive) of a clip-space coordinate or user clip distance the clipper
+// accepts, clip-space units. Beyond it the guard-band distance (g w, g up to 32769) or the
+// difference of two endpoints could overflow float and the cut vertex would come out infinite;
+// a perspective camera with a far plane under 1e20 world units never gets near it.
+inline constexpr float kMaxClipCoordinate = 1e30f;
+
+// Set in a returned plane mask (and by outcode) when a vertex had a non-finite clip position,
+// or a coordinate or active clip distance beyond kMaxClipCoordinate: the triangle is removed.
 inline constexpr std::uint32_t kClipNonFiniteBit = 1u << 31;
+
+// False when the clipper must remove a primitive with this vertex (see kClipNonFiniteBit).
+template <typename T>
+bool clipVertexUsable(const ClipVertexT<T>& vertex, const ClipConfig& config);
 
 // Clips triangle (a, b, c) into `out` (count 0 when nothing is left; otherwise the vertices
 // keep the triangle's winding). Returns the mask of planes that cut or removed it (0 when

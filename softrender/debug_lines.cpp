@@ -12,6 +12,9 @@ constexpr float kPixelCentre = 0.5f;
 }  // namespace
 
 std::uint64_t drawWindowLine(Framebuffer& fb, const WindowVertex& a, const WindowVertex& b, vec3 colour) {
+  // The clipper bounds window x and y (frustum or guard band); a non-finite end would make
+  // the conversions to int below undefined, so such a line draws nothing.
+  if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.x) || !std::isfinite(b.y)) return 0;
   const float dx = b.x - a.x, dy = b.y - a.y;
   const bool xMajor = std::fabs(dx) >= std::fabs(dy);
   const float major0 = xMajor ? a.x : a.y, major1 = xMajor ? b.x : b.y;
@@ -21,7 +24,11 @@ std::uint64_t drawWindowLine(Framebuffer& fb, const WindowVertex& a, const Windo
   const int majorSize = xMajor ? fb.width : fb.height;
   const int minorSize = xMajor ? fb.height : fb.width;
   // Pixel centres c = p + 0.5 in [start, end) along the direction of travel.
-  const float lo = std::min(major0, major1), hi = std::max(major0, major1);
+  // Clamped one pixel beyond the framebuffer so the int conversions stay in range; the loop
+  // clamps to the framebuffer anyway.
+  const float majorLimit = static_cast<float>(majorSize) + 1.0f;
+  const float lo = std::clamp(std::min(major0, major1), -1.0f, majorLimit);
+  const float hi = std::clamp(std::max(major0, major1), -1.0f, majorLimit);
   const bool forward = span > 0.0f;
   // forward: lo <= c < hi;  backward: lo < c <= hi.
   int pFirst = forward ? static_cast<int>(std::ceil(lo - kPixelCentre)) : static_cast<int>(std::floor(lo - kPixelCentre)) + 1;
@@ -32,6 +39,8 @@ std::uint64_t drawWindowLine(Framebuffer& fb, const WindowVertex& a, const Windo
   for (int p = pFirst; p <= pLast; ++p) {
     const float t = (static_cast<float>(p) + kPixelCentre - major0) / span;
     const float minor = minor0 + t * (minor1 - minor0);
+    // A minor coordinate off the framebuffer (or NaN) is skipped before it is converted.
+    if (!(minor >= 0.0f && minor < static_cast<float>(minorSize))) continue;
     const int q = static_cast<int>(std::floor(minor));
     if (q < 0 || q >= minorSize) continue;
     const float depth = std::fmin(std::fmax(a.z + t * (b.z - a.z), 0.0f), 1.0f);

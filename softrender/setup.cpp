@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace twr {
@@ -24,10 +25,15 @@ WindowVertexT<T> windowFromClip(const Vec4T<T>& posClip, const Viewport& viewpor
   const T halfHeight = T(0.5) * static_cast<T>(viewport.height);
   constexpr T kHalfDepthRange = T(0.5);  // glDepthRange(0, 1): scale and offset 0.5
   WindowVertexT<T> out;
-  // The clipper leaves w > 0 everywhere except the frustum's apex (x = y = z = w = 0, a
-  // degenerate triangle); keep that case finite instead of dividing by zero.
-  out.invW = posClip.w > T(0) ? T(1) / posClip.w : T(1) / static_cast<T>(kMinClipW);
-  const T xNdc = posClip.x * out.invW, yNdc = posClip.y * out.invW, zNdc = posClip.z * out.invW;
+  // The clipper leaves w > 0 everywhere except the frustum's apex (x = y = 0, w = 0, a
+  // degenerate triangle); keep that case finite instead of dividing by zero, and a subnormal
+  // w too, whose reciprocal overflows.
+  out.invW = posClip.w >= std::numeric_limits<T>::min() ? T(1) / posClip.w : T(1) / static_cast<T>(kMinClipW);
+  const T xNdc = posClip.x * out.invW, yNdc = posClip.y * out.invW;
+  // The clipper bounds x / w and y / w (frustum or guard band), but with depth clamp (near or
+  // far off) z / w is unbounded near w = 0; a finite bound keeps window z finite. Setup clamps
+  // each fragment's depth to [0, 1], so no pixel can tell.
+  const T zNdc = std::fmin(std::fmax(posClip.z * out.invW, -static_cast<T>(kMaxNdcDepth)), static_cast<T>(kMaxNdcDepth));
   if (fusedMultiplyAdd) {
     out.x = std::fma(xNdc, halfWidth, halfWidth);
     out.y = std::fma(yNdc, halfHeight, halfHeight);

@@ -53,6 +53,10 @@ using WindowVertex = WindowVertexT<float>;
 // Largest |window coordinate| setup snaps (pixels, inclusive); see the range note above.
 inline constexpr float kMaxWindowCoord = 65536.0f;
 
+// Largest |z / w| (inclusive, NDC units) windowFromClip passes on; beyond it z / w is clamped.
+// Only depth-clamped geometry within about 1e-30 of w = 0 gets there (float overflows at 3.4e38).
+inline constexpr float kMaxNdcDepth = 1e30f;
+
 // Requires w_clip > 0 (the clipper guarantees w >= kMinClipW). `fusedMultiplyAdd`: see above
 // (true for vertices straight from the vertex stage).
 template <typename T>

@@ -188,5 +188,47 @@ TEST(Clip, SegmentIsCutFromBothEnds) {
   EXPECT_FALSE(clipSegment(c, d, allPlanes(), cut));
 }
 
+TEST(Clip, CoordinatesBeyondTheRangeRemoveTheTriangle) {
+  // A vertex past kMaxClipCoordinate would let g w or an endpoint difference overflow float:
+  // the triangle goes, as for a non-finite position, and outcode says why.
+  ClipPolygon out, scratch;
+  const ClipVertex a = at({-0.5f, -0.5f, 0, 1}), b = at({0.5f, -0.5f, 0, 1});
+  const ClipVertex far = at({0, 2e30f, 0, 1});
+  EXPECT_EQ(outcode(far, allPlanes()), kClipNonFiniteBit);
+  EXPECT_EQ(clipTriangle(a, b, far, allPlanes(), out, scratch), kClipNonFiniteBit);
+  EXPECT_EQ(out.count, 0);
+  // At the bound it is still clipped normally.
+  const ClipVertex edge = at({0, kMaxClipCoordinate, 0, 1});
+  EXPECT_EQ(clipTriangle(a, b, edge, allPlanes(), out, scratch), 1u << kClipPlaneTop);
+  EXPECT_GE(out.count, 3);
+  // A user clip distance counts only while its plane is active.
+  ClipVertex hugeDistance = at({0, 0.5f, 0, 1});
+  hugeDistance.clipDistance[0] = 1e31f;
+  EXPECT_EQ(clipTriangle(a, b, hugeDistance, allPlanes(1), out, scratch), kClipNonFiniteBit);
+  EXPECT_EQ(clipTriangle(a, b, hugeDistance, allPlanes(0), out, scratch), 0u);
+  ClipVertex lineEnd = far;
+  ClipVertex lineStart = a;
+  std::uint32_t cut = 0;
+  EXPECT_FALSE(clipSegment(lineStart, lineEnd, allPlanes(), cut));
+  EXPECT_EQ(cut, kClipNonFiniteBit);
+}
+
+TEST(Clip, GuardBandWithHugeWLeavesEveryCutVertexFinite) {
+  // Side planes off (guard band g = 1 + 2 * 16384 / 1 on a 1-pixel viewport) and a vertex
+  // with w = 1e30: g w is 3.3e34, no overflow, and every cut vertex stays finite with w > 0.
+  ClipSwitches switches;
+  switches.left = switches.right = switches.top = switches.bottom = switches.near = switches.far = false;
+  const ClipConfig config = makeClipConfig(switches, 0, 1, 1);
+  ClipPolygon out, scratch;
+  const ClipVertex a = at({-1e30f, 0, 0, 1e-5f}), b = at({1e30f, 1e30f, 0, 1e30f}), c = at({0, -1e30f, 0, 2e-5f});
+  clipTriangle(a, b, c, config, out, scratch);
+  for (int i = 0; i < out.count; ++i) {
+    const vec4& p = out.v[static_cast<std::size_t>(i)].posClip;
+    EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w)) << i;
+    EXPECT_GT(p.w, 0.0f) << i;
+    EXPECT_LE(std::fabs(p.x), config.guardBandX * p.w * 1.0001f) << i;
+  }
+}
+
 }  // namespace
 }  // namespace twr

@@ -1,8 +1,11 @@
 // Setup: divide by w, viewport, snapping, culling and the fill rule's edge functions.
+#include "softrender/clip.h"
 #include "softrender/raster.h"
 #include "softrender/setup.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace twr {
 namespace {
@@ -108,6 +111,24 @@ TEST(Setup, EdgeValuesAreTwiceTheAreaTowardsThePixel) {
   EXPECT_TRUE(coversPixel(s, 0, 0));
   EXPECT_TRUE(coversPixel(s, 1, 0));
   EXPECT_FALSE(coversPixel(s, 1, 1));  // on the hypotenuse: a right edge, not owned
+}
+
+TEST(Setup, WindowPositionStaysFiniteNearWZero) {
+  const Viewport vp{64, 64};
+  // Depth clamp lets z / w grow without bound near w = 0: clamped to kMaxNdcDepth, so window z
+  // stays finite (every fragment's depth is clamped to [0, 1] later anyway).
+  const WindowVertex deep = windowFromClip(vec4(0.0f, 0.0f, -1e30f, 1e-30f), vp, true);
+  EXPECT_TRUE(std::isfinite(deep.z));
+  EXPECT_FLOAT_EQ(deep.z, -0.5f * kMaxNdcDepth + 0.5f);
+  // A subnormal or zero w (the apex) takes 1 / kMinClipW instead of an infinite reciprocal.
+  for (float w : {0.0f, 1e-40f}) {
+    const WindowVertex apex = windowFromClip(vec4(0.0f, 0.0f, 1.0f, w), vp, false);
+    EXPECT_FLOAT_EQ(apex.invW, 1.0f / kMinClipW) << w;
+    EXPECT_FLOAT_EQ(apex.x, 32.0f) << w;
+    EXPECT_TRUE(std::isfinite(apex.z)) << w;
+  }
+  // Ordinary values are untouched: z / w = 2 (behind far with depth clamp) gives 1.5.
+  EXPECT_FLOAT_EQ(windowFromClip(vec4(0.0f, 0.0f, 2.0f, 1.0f), vp, true).z, 1.5f);
 }
 
 }  // namespace
