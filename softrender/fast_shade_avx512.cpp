@@ -17,7 +17,9 @@
 // (GCC bug 105593), which -Wuninitialized then reports in every function that inlines them.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wuninitialized"
+#if !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <immintrin.h>
 
 #include <algorithm>
@@ -56,9 +58,16 @@ TiledTexture makeTiledTexture(const Texture& texture) {
   return out;
 }
 
+// The kernels' functions are compiled for AVX-512 and without contraction (a * b + c stays
+// two roundings, as in the scalar stages). clang (the fuzzing build) spells both differently.
+#if defined(__clang__)
+#pragma clang attribute push(__attribute__((target("avx512f,avx512dq,avx512bw,avx512vl"))), apply_to = function)
+#pragma clang fp contract(off)
+#else
 #pragma GCC push_options
 #pragma GCC target("avx512f,avx512dq,avx512bw,avx512vl")
 #pragma GCC optimize("fp-contract=off")
+#endif
 
 namespace {
 
@@ -104,7 +113,6 @@ struct Vd {
   __m512d lo, hi;
 };
 inline Vd operator+(Vd a, Vd b) { return {_mm512_add_pd(a.lo, b.lo), _mm512_add_pd(a.hi, b.hi)}; }
-inline Vd operator-(Vd a, Vd b) { return {_mm512_sub_pd(a.lo, b.lo), _mm512_sub_pd(a.hi, b.hi)}; }
 inline Vd operator*(Vd a, Vd b) { return {_mm512_mul_pd(a.lo, b.lo), _mm512_mul_pd(a.hi, b.hi)}; }
 inline Vd operator/(Vd a, Vd b) { return {_mm512_div_pd(a.lo, b.lo), _mm512_div_pd(a.hi, b.hi)}; }
 inline Vd splatD(double x) { return {_mm512_set1_pd(x), _mm512_set1_pd(x)}; }
@@ -881,7 +889,11 @@ void powPositiveAvx512(const float* x, float s, float* out, std::size_t count) {
   }
 }
 
+#if defined(__clang__)
+#pragma clang attribute pop
+#else
 #pragma GCC pop_options
+#endif
 
 }  // namespace twr
 
