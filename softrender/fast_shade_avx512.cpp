@@ -551,9 +551,11 @@ LaneTriangles laneTriangles(const BinTriangle* base, __m512i slots, __mmask16 la
   return g;
 }
 
+// The helpers of shadeLanes and debugLanes are forced inline: called out of line they pass
+// their 512-bit vectors through memory (measured: the shaded frame, one thread, lost ~5 %).
 // pixelWeights' perspective weights at the lanes (screen weights where the sum is not positive).
 template <typename Source>
-Weights perspectiveWeights(const Source& src, const Vd& px, const Vd& py) {
+[[gnu::always_inline]] inline Weights perspectiveWeights(const Source& src, const Vd& px, const Vd& py) {
   std::array<Vd, 3> lambda, perspective;
   Vd perspectiveSum = splatD(0.0);
   for (std::size_t i = 0; i < 3; ++i) {
@@ -574,8 +576,8 @@ template <typename Source>
 struct LaneVaryings {
   const Source& src;
   Weights w;
-  Vf at(int k) const { return interpolate(src.varying(0, k), src.varying(1, k), src.varying(2, k), w); }
-  V3 at3(int k) const { return V3{at(k), at(k + 1), at(k + 2)}; }
+  [[gnu::always_inline]] Vf at(int k) const { return interpolate(src.varying(0, k), src.varying(1, k), src.varying(2, k), w); }
+  [[gnu::always_inline]] V3 at3(int k) const { return V3{at(k), at(k + 1), at(k + 2)}; }
 };
 
 // The texture samples of one fragment: footprints computed once per texture size (maps of one
@@ -586,7 +588,7 @@ struct LaneSampler {
   __mmask16 lanes;
   const Texture* footprintOf = nullptr;
   Footprint shared{};
-  V3 operator()(const Texture& texture, const TiledTexture& tiled) {
+  [[gnu::always_inline]] V3 operator()(const Texture& texture, const TiledTexture& tiled) {
     if (!footprintOf || footprintOf->width != texture.width || footprintOf->height != texture.height) {
       shared = footprint(texture, uvX, uvY, u.filter, lanes);
       footprintOf = &texture;
@@ -597,7 +599,7 @@ struct LaneSampler {
 
 // shadeFragment's mappedTangent: safeNormalize(2 texel - 1) of the normal map, else (0, 0, 1).
 template <bool kNormal>
-V3 mappedTangentAt(const ShadeUniforms& u, const ItemMaps& maps, LaneSampler& sampleMap) {
+[[gnu::always_inline]] inline V3 mappedTangentAt(const ShadeUniforms& u, const ItemMaps& maps, LaneSampler& sampleMap) {
   if constexpr (kNormal) {
     const V3 texel = sampleMap(*u.normalMap, *maps.normal);
     const Vf two = splat(2.0f), one = splat(1.0f);
@@ -610,7 +612,7 @@ V3 mappedTangentAt(const ShadeUniforms& u, const ItemMaps& maps, LaneSampler& sa
 // shadeFragment's nl in world lighting space: the mapped normal through the normalised
 // interpolated frame, or the normalised interpolated normal without a normal map.
 template <bool kNormal, typename Source>
-V3 worldNormalAt(const LaneVaryings<Source>& varyings, const V3& mappedTangent) {
+[[gnu::always_inline]] inline V3 worldNormalAt(const LaneVaryings<Source>& varyings, const V3& mappedTangent) {
   const V3 n = safeNormalize3(varyings.at3(kVaryingNormal));
   if constexpr (kNormal) {
     const V3 t = safeNormalize3(varyings.at3(kVaryingTangent));
