@@ -24,6 +24,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
+#include <cstdio>
 #include <memory>
 
 namespace twr::fuzz {
@@ -232,6 +234,14 @@ void renderRandomScene(ByteReader& r) {
 
 // ---- the clip-space half ----
 
+// (x, y, z, w) with every digit a float holds (std::to_string prints 1e-40 as 0.000000).
+std::string exact(const vec4& p) {
+  char text[160];
+  std::snprintf(text, sizeof text, "(%.9g, %.9g, %.9g, %.9g)", static_cast<double>(p.x), static_cast<double>(p.y),
+                static_cast<double>(p.z), static_cast<double>(p.w));
+  return text;
+}
+
 float clipW(ByteReader& r) {
   // w near 0 from both sides, at the clipper's epsilon, and huge, besides hostileFloat().
   static constexpr std::array<float, 8> kW{0.0f, 1e-38f, -1e-38f, kMinClipW, kMinClipW * 0.999f, -kMinClipW,
@@ -300,11 +310,13 @@ void clipRandomTriangle(ByteReader& r) {
   for (int i = 0; i < polygon.count; ++i) {
     const vec4& p = polygon.v[static_cast<std::size_t>(i)].posClip;
     require(isFinite(p), "clipped vertex " + std::to_string(i) + " is not finite");
-    // w > 0, except that with the near plane on a vertex may sit on the frustum's apex (x = y =
-    // w = 0, inside every plane by distance 0): the triangle is degenerate and windowFromClip
-    // keeps it finite (clip.h).
-    const bool apex = config.frustum.near && p.w == 0.0f && p.x == 0.0f && p.y == 0.0f;
-    require(p.w > 0.0f || apex, "clipped vertex " + std::to_string(i) + " has w = " + std::to_string(p.w) + " <= 0");
+    // w > 0, except that with the near plane on a vertex may sit on the frustum's apex (w = 0,
+    // inside every plane by distance 0, or a cut vertex a rounding away from it, e.g. x = 1e-45):
+    // the triangle is degenerate there and windowFromClip takes w under FLT_MIN as the apex
+    // (clip.h). The window-position check below still applies.
+    const bool apex = config.frustum.near && std::fabs(p.w) < std::numeric_limits<float>::min();
+    require(p.w > 0.0f || apex, "clipped vertex " + std::to_string(i) + " " + exact(p) + " has w <= 0 (near plane " +
+                                    (config.frustum.near ? "on" : "off") + ")");
   }
   for (int i = 1; i + 1 < polygon.count; ++i) {
     const ClipVertex& v0 = polygon.v[0];

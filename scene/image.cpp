@@ -6,10 +6,12 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include <algorithm>
 #include <climits>
 #include <cstring>
 #include <filesystem>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace twr {
@@ -33,6 +35,64 @@ std::string stbReason() {
 bool isPngOrJpeg(const std::uint8_t* bytes, std::size_t size) {
   return startsWith(bytes, size, kPngSignature, sizeof kPngSignature) ||
          startsWith(bytes, size, kJpegSignature, sizeof kJpegSignature);
+}
+
+// JPEG markers (ITU T.81, table B.1) this walk needs.
+constexpr std::uint8_t kJpegMarkerDht = 0xC4;  // define Huffman tables
+constexpr std::uint8_t kJpegMarkerSos = 0xDA;  // start of scan: entropy-coded data follows
+constexpr std::uint8_t kJpegMarkerEoi = 0xD9;
+// Huffman codes a table may define (ITU T.81, B.2.4.2: at most 256 symbols).
+constexpr std::size_t kJpegMaxHuffmanSymbols = 256;
+// A DHT table: one byte of class and destination, 16 code-length counts (bytes).
+constexpr std::size_t kJpegHuffmanHeaderBytes = 17;
+
+bool standaloneJpegMarker(std::uint8_t marker) {
+  return marker == 0xD8 || marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7);  // SOI, TEM, RSTn
+}
+
+// Debian 12's stb_image builds each Huffman table into fixed arrays of 256 symbols without
+// checking that the 16 counts add up to at most 256, so a corrupt DHT segment writes past
+// them (found by fuzzing, UBSan at stb_image.h:1990). This walks the segments (and the
+// entropy-coded data after each SOS, up to the next marker) and returns "" when every table
+// it finds is within the limit, else what is wrong. Anything else malformed is left to stb.
+std::string jpegHuffmanProblem(const std::uint8_t* bytes, std::size_t size) {
+  std::size_t at = 2;  // after SOI
+  while (at < size) {
+    if (bytes[at] != 0xFF) {  // junk where a marker belongs: stb refuses or skips it; so do we
+      ++at;
+      continue;
+    }
+    while (at < size && bytes[at] == 0xFF) ++at;  // fill bytes
+    if (at >= size) return "";
+    const std::uint8_t marker = bytes[at++];
+    if (marker == kJpegMarkerEoi) return "";
+    if (standaloneJpegMarker(marker)) continue;
+    if (at + 2 > size) return "";  // truncated: stb reports it
+    const std::size_t length = (std::size_t{bytes[at]} << 8) | bytes[at + 1];
+    if (length < 2) return "";  // stb refuses a segment shorter than its own length field
+    const std::size_t end = std::min(size, at + length);
+    if (marker == kJpegMarkerDht) {
+      for (std::size_t table = at + 2; table + kJpegHuffmanHeaderBytes <= end;) {
+        std::size_t symbols = 0;
+        for (std::size_t i = 1; i < kJpegHuffmanHeaderBytes; ++i) symbols += bytes[table + i];
+        if (symbols > kJpegMaxHuffmanSymbols) {
+          return "a Huffman table with " + std::to_string(symbols) + " codes (at most " +
+                 std::to_string(kJpegMaxHuffmanSymbols) + ")";
+        }
+        table += kJpegHuffmanHeaderBytes + symbols;
+      }
+    }
+    at = end;
+    if (marker == kJpegMarkerSos) {
+      // Entropy-coded data: 0xFF 0x00 is a stuffed byte and 0xFF 0xD0..0xD7 a restart marker;
+      // any other 0xFF pair starts the next segment.
+      while (at + 1 < size && !(bytes[at] == 0xFF && bytes[at + 1] != 0x00 && !(bytes[at + 1] >= 0xD0 && bytes[at + 1] <= 0xD7))) {
+        ++at;
+      }
+      if (at + 1 >= size) return "";
+    }
+  }
+  return "";
 }
 
 // PNG chunk framing: 4-byte length, 4-byte type, data, 4-byte CRC (bytes).
@@ -103,7 +163,10 @@ Image makeImage(int width, int height, std::uint32_t fillRgba) {
 
 bool readImageHeader(const std::uint8_t* bytes, std::size_t size, int& width, int& height) {
   int channels = 0;
+  // stb reads a JPEG's Huffman tables while looking for its size, so they are checked first.
+  const bool jpeg = startsWith(bytes, size, kJpegSignature, sizeof kJpegSignature);
   return isPngOrJpeg(bytes, size) && size <= static_cast<std::size_t>(INT_MAX) &&
+         !(jpeg && !jpegHuffmanProblem(bytes, size).empty()) &&
          stbi_info_from_memory(bytes, static_cast<int>(size), &width, &height, &channels) != 0;
 }
 
@@ -120,6 +183,10 @@ Image decodeImage(const std::uint8_t* bytes, std::size_t size, const std::string
   }
   if (size > static_cast<std::size_t>(INT_MAX)) {
     throw InputError(nameForMessages + ": image data larger than " + describeBytes(INT_MAX));
+  }
+  if (startsWith(bytes, size, kJpegSignature, sizeof kJpegSignature)) {
+    const std::string problem = jpegHuffmanProblem(bytes, size);
+    if (!problem.empty()) throw InputError(nameForMessages + ": corrupt JPEG (" + problem + ")");
   }
   const int length = static_cast<int>(size);
   int width = 0, height = 0, channels = 0;

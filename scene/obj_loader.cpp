@@ -10,6 +10,7 @@
 #include <array>
 #include <cerrno>
 #include <cmath>
+#include <limits>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -239,9 +240,11 @@ ObjPrescan prescanObj(const std::string& path, const std::string& text, std::siz
       errno = 0;
       char* end = nullptr;
       const double value = std::strtod(token.c_str(), &end);
-      if (end == token.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(value)) {
+      // tinyobjloader stores floats: a finite double beyond float's range would become inf.
+      if (end == token.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(value) ||
+          std::fabs(value) > static_cast<double>(std::numeric_limits<float>::max())) {
         throw InputError(path + ":" + std::to_string(lineNumber) + ": '" + keyword +
-                         "' expects finite numbers, got '" + token + "'");
+                         "' expects finite numbers, got '" + token + "' (each within float's range, |x| <= 3.4e38)");
       }
       ++values;
     }

@@ -12,6 +12,7 @@
 #include "scene/texture.h"
 
 #include <gtest/gtest.h>
+#include <stb_image_write.h>
 
 #include <array>
 #include <chrono>
@@ -333,6 +334,41 @@ TEST(HostilePng, OtherFormatsAreRefused) {
     const std::string message = errorOf([&] { loadPng(path); });
     EXPECT_EQ(message, path + ": not a readable image (expected a PNG or JPEG file)");
   }
+}
+
+// Debian 12's stb_image overruns its Huffman arrays on a DHT segment declaring more than 256
+// codes (found by fuzzing): a valid JPEG loads, the same file with one count raised is refused
+// before stb sees it, also through loadTexture (which reads the header first).
+TEST(HostileJpeg, HuffmanTableWithTooManyCodesIsRefused) {
+  const fs::path dir = caseDir();
+  constexpr int kSide = 8;  // pixels
+  std::vector<std::uint8_t> rgb(kSide * kSide * 3);
+  for (std::size_t i = 0; i < rgb.size(); ++i) rgb[i] = static_cast<std::uint8_t>(i * 7);
+  Bytes jpeg;
+  const auto append = [](void* context, void* data, int size) {
+    auto* out = static_cast<Bytes*>(context);
+    const auto* bytes = static_cast<const std::uint8_t*>(data);
+    out->insert(out->end(), bytes, bytes + size);
+  };
+  ASSERT_NE(stbi_write_jpg_to_func(append, &jpeg, kSide, kSide, 3, rgb.data(), 90), 0);
+  const Image image = loadPng(writeFile(dir / "valid.jpg", jpeg));
+  EXPECT_EQ(image.width, kSide);
+  EXPECT_EQ(image.height, kSide);
+
+  std::size_t dht = 0;
+  for (std::size_t i = 2; i + 1 < jpeg.size(); ++i) {
+    if (jpeg[i] == 0xFF && jpeg[i + 1] == 0xC4) {
+      dht = i;
+      break;
+    }
+  }
+  ASSERT_NE(dht, 0u) << "stb wrote no DHT segment";
+  // Marker (2 bytes), length (2), class and destination (1), then 16 counts: raise the last.
+  Bytes corrupt = jpeg;
+  corrupt[dht + 5 + 15] = 255;
+  const std::string path = writeFile(dir / "corrupt.jpg", corrupt);
+  expectContains(errorOf([&] { loadPng(path); }), {path + ": corrupt JPEG (a Huffman table with ", "(at most 256)"});
+  expectStartsWith(errorOf([&] { loadTexture(path); }), path + ": ");
 }
 
 TEST(HostilePng, SpecialFilesAreRefused) {

@@ -224,6 +224,9 @@ TEST(ObjErrors, NonFiniteOrMalformedNumbers) {
   expectLoadError(writeCase("nan", {{"nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n"}}), {":2", "nan"});
   expectLoadError(writeCase("inf", {{"inf.obj", "v 0 0 0\nv 1 0 0\nv 0 inf 0\nf 1 2 3\n"}}), {":3", "inf"});
   expectLoadError(writeCase("overflow", {{"overflow.obj", "v 0 0 0\nv 1e999 0 0\nv 0 1 0\nf 1 2 3\n"}}), {":2"});
+  // Finite as a double but infinite as the float tinyobjloader stores (found by fuzzing).
+  expectLoadError(writeCase("float_overflow", {{"f.obj", "v 0 0 0\nv 1 0 0\nvt 0 -7e79\nv 0 1 0\nf 1 2 4\n"}}),
+                  {":3", "-7e79", "3.4e38"});
   expectLoadError(writeCase("garbage", {{"garbage.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 abc 1\nf 1 2 3\n"}}),
                   {":4", "abc"});
   expectLoadError(writeCase("short", {{"short.obj", "v 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"}}), {":1", "at least 3"});
