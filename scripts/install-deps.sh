@@ -10,6 +10,8 @@ packages=(
   libtinyobjloader-dev libstb-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libbenchmark-dev
   xvfb xauth
+  clang libclang-rt-14-dev   # libFuzzer and clang's sanitizers (scripts/run-fuzzers.sh)
+  assimp-testmodels          # real-world OBJ files for fuzz/test_real_world_models.cpp
 )
 
 missing=()
