@@ -1,5 +1,6 @@
 // Whole frames: the CPU pipeline's teaching path, its fast path with the scalar and the
-// AVX-512 kernel, and llvmpipe, on the default scene and the untextured OBJ scene at 720p;
+// AVX-512 kernel, and llvmpipe, on the default scene and the OBJ scene (a house whose MTL
+// gives the walls all three maps and the roof a normal map) at 720p;
 // the default scene in debug colour views.
 // `twinraster bench` is the side-by-side measurement the docs quote; this one isolates each
 // variant (and runs under perf or callgrind without the other backend in the profile).
@@ -19,7 +20,7 @@ using namespace twr;
 constexpr int kWidth = 1280;   // pixels
 constexpr int kHeight = 720;   // pixels
 
-// "default", "obj" (assets/scenes/obj_model.json, no textures) or "1m" (bench/scenes/bench_1m.json).
+// "default", "obj" (assets/scenes/obj_model.json) or "1m" (bench/scenes/bench_1m.json).
 const Scene& sceneNamed(const std::string& name) {
   const std::string root = TWINRASTER_SOURCE_DIR;
   static const Scene defaultScene = loadSceneFile(root + "/assets/scenes/default.json");

@@ -1,7 +1,8 @@
 #!/bin/sh
 # The figures of docs/performance.md: `twinraster bench --json` at 1280 x 720 on the default
-# scene, the 1M-triangle scene, every suite scene and the default scene in every debug view,
-# printed as one Markdown table row each.
+# scene, the 1M-triangle scene, the default scene without maps (lit, and flat in the albedo
+# view), every suite scene and the default scene in every debug view, printed as one Markdown
+# table row each.
 #   bench/performance_table.sh [TWINRASTER] [FRAMES]   (defaults: build/app/twinraster, 9)
 # Each row takes (FRAMES + 2 warm-up) CPU frames and as many llvmpipe frames. The machine's
 # other work moves wall times; the process CPU columns move less.
@@ -28,6 +29,9 @@ echo "| scene | covered px | cpu ms | cpu process ms | gl ms | gl process ms | g
 echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 row "default" "$root/assets/scenes/default.json"
 row "bench_1m (1M triangles)" "$root/bench/scenes/bench_1m.json"
+# The issue's "plain Phong, no textures" and "flat colour" frames: the default scene without maps.
+row "default_untextured (plain Phong)" "$root/bench/scenes/default_untextured.json"
+row "default_untextured, view albedo (flat colour)" "$root/bench/scenes/default_untextured.json" --view albedo
 for scene in "$root"/assets/scenes/*.json; do
   name=$(basename "$scene" .json)
   [ "$name" = default ] && continue
