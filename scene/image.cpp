@@ -72,9 +72,12 @@ std::string jpegHuffmanProblem(const std::uint8_t* bytes, std::size_t size) {
     if (length < 2) return "";  // stb refuses a segment shorter than its own length field
     const std::size_t end = std::min(size, at + length);
     if (marker == kJpegMarkerDht) {
-      for (std::size_t table = at + 2; table + kJpegHuffmanHeaderBytes <= end;) {
+      // Tables as far as the segment's length says, as stb reads them: a byte past the end of
+      // a truncated file reads as 0 (found by fuzzing: counts cut off mid-table).
+      const auto byteAt = [&](std::size_t i) -> std::size_t { return i < size ? bytes[i] : 0; };
+      for (std::size_t table = at + 2; table < at + length;) {
         std::size_t symbols = 0;
-        for (std::size_t i = 1; i < kJpegHuffmanHeaderBytes; ++i) symbols += bytes[table + i];
+        for (std::size_t i = 1; i < kJpegHuffmanHeaderBytes; ++i) symbols += byteAt(table + i);
         if (symbols > kJpegMaxHuffmanSymbols) {
           return "a Huffman table with " + std::to_string(symbols) + " codes (at most " +
                  std::to_string(kJpegMaxHuffmanSymbols) + ")";

@@ -369,6 +369,10 @@ TEST(HostileJpeg, HuffmanTableWithTooManyCodesIsRefused) {
   const std::string path = writeFile(dir / "corrupt.jpg", corrupt);
   expectContains(errorOf([&] { loadPng(path); }), {path + ": corrupt JPEG (a Huffman table with ", "(at most 256)"});
   expectStartsWith(errorOf([&] { loadTexture(path); }), path + ": ");
+  // Cut off inside the counts: stb reads the missing bytes as 0 and still sums too many.
+  const Bytes truncated{0xFF, 0xD8, 0xFF, 0xC4, 0xFF, 0x00, 0x00, 0x00, 0x0D, 0x89, 0x28, 0x08, 0x2F, 0x25};
+  const std::string cut = writeFile(dir / "cut.jpg", truncated);
+  expectContains(errorOf([&] { loadPng(cut); }), {cut + ": corrupt JPEG (a Huffman table with 282 codes"});
 }
 
 TEST(HostilePng, SpecialFilesAreRefused) {
