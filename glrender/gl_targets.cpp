@@ -21,13 +21,15 @@ GlRenderbuffer makeStorage(GLenum internalFormat, int width, int height) {
   return buffer;
 }
 
-// GL rows are bottom first; `out` rows top first. rowBytes bytes per row.
-void flipRows(const std::vector<std::uint8_t>& bottomFirst, std::uint8_t* topFirst, std::size_t rowBytes,
-              int height) {
-  for (int row = 0; row < height; ++row) {
-    const std::size_t sourceRow = static_cast<std::size_t>(height - 1 - row);
-    std::memcpy(topFirst + static_cast<std::size_t>(row) * rowBytes, bottomFirst.data() + sourceRow * rowBytes,
-                rowBytes);
+// GL rows are bottom first, RenderOutput's top first: swaps rows in place (rowBytes each).
+void flipRowsInPlace(std::uint8_t* rows, std::size_t rowBytes, int height, std::vector<std::uint8_t>& scratch) {
+  scratch.resize(rowBytes);
+  for (int top = 0, bottom = height - 1; top < bottom; ++top, --bottom) {
+    std::uint8_t* a = rows + static_cast<std::size_t>(top) * rowBytes;
+    std::uint8_t* b = rows + static_cast<std::size_t>(bottom) * rowBytes;
+    std::memcpy(scratch.data(), a, rowBytes);
+    std::memcpy(a, b, rowBytes);
+    std::memcpy(b, scratch.data(), rowBytes);
   }
 }
 
@@ -38,15 +40,16 @@ void checkComplete(const char* what) {
   }
 }
 
+// Reads an attachment straight into `out` (no staging copy: a frame's read-back is mostly
+// memory traffic) and flips its rows there. `scratch` holds one row.
 template <typename T>
 void readAttachment(GLenum attachment, GLenum format, GLenum type, int width, int height, std::size_t channels,
-                    std::vector<T>& out) {
+                    std::vector<T>& out, std::vector<std::uint8_t>& scratch) {
   const std::size_t rowBytes = static_cast<std::size_t>(width) * channels * sizeof(T);
-  std::vector<std::uint8_t> raw(rowBytes * static_cast<std::size_t>(height));
-  if (attachment != GL_NONE) glReadBuffer(attachment);
-  glReadPixels(0, 0, width, height, format, type, raw.data());
   out.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * channels);
-  flipRows(raw, reinterpret_cast<std::uint8_t*>(out.data()), rowBytes, height);
+  if (attachment != GL_NONE) glReadBuffer(attachment);
+  glReadPixels(0, 0, width, height, format, type, out.data());
+  flipRowsInPlace(reinterpret_cast<std::uint8_t*>(out.data()), rowBytes, height, scratch);
 }
 
 }  // namespace
@@ -121,13 +124,14 @@ void RenderTargets::readBack(RenderOutput& out) const {
   out.height = height_;
   glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.id());
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  readAttachment(kColourAttachment, GL_RGBA, GL_UNSIGNED_BYTE, width_, height_, 4, out.rgba);
-  readAttachment(kTriangleIdAttachment, GL_RED_INTEGER, GL_UNSIGNED_INT, width_, height_, 1, out.triangleId);
-  std::vector<std::uint8_t> lineRgba;
-  readAttachment(kLineMaskAttachment, GL_RGBA, GL_UNSIGNED_BYTE, width_, height_, 4, lineRgba);
-  out.lineMask.resize(lineRgba.size() / 4);
-  for (std::size_t i = 0; i < out.lineMask.size(); ++i) out.lineMask[i] = lineRgba[i * 4 + 3] != 0 ? 1 : 0;
-  readAttachment(GL_NONE, GL_DEPTH_COMPONENT, GL_FLOAT, width_, height_, 1, out.depth);
+  readAttachment(kColourAttachment, GL_RGBA, GL_UNSIGNED_BYTE, width_, height_, 4, out.rgba, rowScratch_);
+  readAttachment(kTriangleIdAttachment, GL_RED_INTEGER, GL_UNSIGNED_INT, width_, height_, 1, out.triangleId,
+                 rowScratch_);
+  // The mask is the line attachment's alpha (GL_ALPHA is no read format in a core context).
+  readAttachment(kLineMaskAttachment, GL_RGBA, GL_UNSIGNED_BYTE, width_, height_, 4, lineRgba_, rowScratch_);
+  out.lineMask.resize(lineRgba_.size() / 4);
+  for (std::size_t i = 0; i < out.lineMask.size(); ++i) out.lineMask[i] = lineRgba_[i * 4 + 3] != 0 ? 1 : 0;
+  readAttachment(GL_NONE, GL_DEPTH_COMPONENT, GL_FLOAT, width_, height_, 1, out.depth, rowScratch_);
 }
 
 }  // namespace twr

@@ -11,6 +11,8 @@
 #include "scene/conventions.h"
 #include "scene/renderer.h"
 
+#include <vector>
+
 namespace twr {
 
 class RenderTargets {
@@ -43,6 +45,10 @@ class RenderTargets {
   GlRenderbuffer triangleId_;
   GlRenderbuffer lineMask_;
   GlRenderbuffer depth_;
+  // Kept across frames so a read-back allocates nothing of its own: one row for flipping in
+  // place, and the line attachment's RGBA (only its alpha goes out).
+  mutable std::vector<std::uint8_t> rowScratch_;
+  mutable std::vector<std::uint8_t> lineRgba_;
 };
 
 }  // namespace twr
