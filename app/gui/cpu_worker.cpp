@@ -2,7 +2,9 @@
 
 #include "softrender/cpu_renderer.h"
 
+#include <algorithm>
 #include <exception>
+#include <thread>
 
 namespace twr::gui {
 namespace {
@@ -92,8 +94,11 @@ CpuProbe CpuWorker::probe(Renderer& renderer, const CpuJob& job) const {
 }
 
 void CpuWorker::run() {
-  // The renderer lives on this thread only.
-  const std::unique_ptr<Renderer> renderer = makeCpuRenderer();
+  // The renderer lives on this thread only; it draws on every online CPU (as llvmpipe does),
+  // which keeps 1280 x 720 frames and the inspector's per-view renders interactive.
+  CpuOptions options;
+  options.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const std::unique_ptr<Renderer> renderer = makeCpuRenderer(options);
   for (;;) {
     CpuJob job;
     {
