@@ -148,6 +148,28 @@ std::vector<std::uint8_t> withFullPalette(const std::uint8_t* bytes, std::size_t
   return {};
 }
 
+// stb_image copies each IDAT chunk's data into a buffer it allocates on the first non-empty
+// one: an empty first IDAT makes it memcpy 0 bytes to a null pointer (undefined behaviour,
+// found by fuzzing under UBSan). Empty IDAT chunks carry nothing, so they are dropped: returns
+// a copy without them, or an empty vector when there are none.
+std::vector<std::uint8_t> withoutEmptyImageData(const std::uint8_t* bytes, std::size_t size) {
+  std::vector<std::uint8_t> out;
+  std::size_t copiedUpTo = 0;
+  std::size_t at = sizeof kPngSignature;
+  while (size - at >= kPngChunkOverhead) {
+    const std::uint32_t length = readBigEndian32(bytes + at);
+    if (length > size - at - kPngChunkOverhead) break;  // malformed: stb reports it
+    if (length == 0 && std::memcmp(bytes + at + 4, "IDAT", 4) == 0) {
+      out.insert(out.end(), bytes + copiedUpTo, bytes + at);
+      copiedUpTo = at + kPngChunkOverhead;
+    }
+    at += kPngChunkOverhead + length;
+  }
+  if (copiedUpTo == 0) return {};
+  out.insert(out.end(), bytes + copiedUpTo, bytes + size);
+  return out;
+}
+
 }  // namespace
 
 Image makeImage(int width, int height, std::uint32_t fillRgba) {
@@ -183,6 +205,13 @@ Image decodeImage(const std::uint8_t* bytes, std::size_t size, const std::string
   if (!padded.empty()) {
     bytes = padded.data();
     size = padded.size();
+  }
+  const std::vector<std::uint8_t> compacted = startsWith(bytes, size, kPngSignature, sizeof kPngSignature)
+                                                  ? withoutEmptyImageData(bytes, size)
+                                                  : std::vector<std::uint8_t>{};
+  if (!compacted.empty()) {
+    bytes = compacted.data();
+    size = compacted.size();
   }
   if (size > static_cast<std::size_t>(INT_MAX)) {
     throw InputError(nameForMessages + ": image data larger than " + describeBytes(INT_MAX));

@@ -320,6 +320,30 @@ TEST(HostilePng, CorruptImageData) {
   expectStartsWith(errorOf([&] { loadPng(path); }), path + ": cannot decode image");
 }
 
+// An empty IDAT chunk before the image data made Debian's stb_image memcpy to a null pointer
+// (found by fuzzing under UBSan); empty IDATs are dropped, so the image is the same.
+TEST(HostilePng, EmptyImageDataChunksChangeNothing) {
+  const Bytes png = makePng(rgba4x2());
+  constexpr std::size_t kFirstChunkAfterHeader = 8 + 25;  // signature, IHDR (12 + 13 bytes)
+  Bytes emptyIdat;
+  appendChunk(emptyIdat, "IDAT", {});
+  Bytes padded(png.begin(), png.begin() + kFirstChunkAfterHeader);
+  padded.insert(padded.end(), emptyIdat.begin(), emptyIdat.end());
+  padded.insert(padded.end(), png.begin() + kFirstChunkAfterHeader, png.end());
+  const fs::path dir = caseDir();
+  const Image expected = loadPng(writeFile(dir / "plain.png", png));
+  const Image image = loadPng(writeFile(dir / "empty_idat.png", padded));
+  EXPECT_EQ(image.width, expected.width);
+  EXPECT_EQ(image.height, expected.height);
+  EXPECT_EQ(image.rgba, expected.rgba);
+  // Only empty IDATs: no image data at all, refused by name.
+  Bytes noData(png.begin(), png.begin() + kFirstChunkAfterHeader);
+  noData.insert(noData.end(), emptyIdat.begin(), emptyIdat.end());
+  appendChunk(noData, "IEND", {});
+  const std::string path = writeFile(dir / "no_data.png", noData);
+  expectStartsWith(errorOf([&] { loadPng(path); }), path + ": ");
+}
+
 TEST(HostilePng, OtherFormatsAreRefused) {
   const fs::path dir = caseDir();
   // Valid headers of formats stb_image decodes but loadPng does not accept.
