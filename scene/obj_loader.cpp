@@ -432,6 +432,44 @@ struct MeshBuilder {
 
 }  // namespace
 
+namespace {
+
+// Line number (1-based) of the n-th (0-based) line starting with `keyword`, or 0.
+long long lineOfNth(const std::string& text, const std::string& keyword, std::size_t n) {
+  std::istringstream lines(text);
+  std::string line;
+  long long lineNumber = 0;
+  std::size_t seen = 0;
+  while (std::getline(lines, line)) {
+    ++lineNumber;
+    std::istringstream tokens(line);
+    std::string first;
+    if (tokens >> first && first == keyword && seen++ == n) return lineNumber;
+  }
+  return 0;
+}
+
+// The prescan checks every number with strtod, but tinyobjloader parses them itself and can
+// still make inf or NaN of one strtod reads as finite: "0.0E39126" is 0 to strtod and
+// 0 * 10^39126 = NaN to tinyobjloader (found by fuzzing). Whatever it produced is checked.
+void checkFiniteAttributes(const std::string& path, const std::string& text, const tinyobj::attrib_t& attrib) {
+  const struct {
+    const std::vector<tinyobj::real_t>& values;
+    std::size_t perLine;
+    const char* keyword;
+  } kinds[] = {{attrib.vertices, 3, "v"}, {attrib.texcoords, 2, "vt"}, {attrib.normals, 3, "vn"}};
+  for (const auto& kind : kinds) {
+    for (std::size_t i = 0; i < kind.values.size(); ++i) {
+      if (std::isfinite(kind.values[i])) continue;
+      const long long line = lineOfNth(text, kind.keyword, i / kind.perLine);
+      throw InputError(path + ":" + std::to_string(line) + ": '" + kind.keyword +
+                       "' has a number that reads as infinite or NaN (an exponent beyond float's range?)");
+    }
+  }
+}
+
+}  // namespace
+
 ObjModel loadObj(const std::string& path, const ObjLimits& limits) {
   const std::size_t maxTriangles = limits.maxTriangles;
   std::string text = decodeText(readFileCapped(path, kMaxObjFileBytes, "OBJ file"), path);
@@ -465,6 +503,8 @@ ObjModel loadObj(const std::string& path, const ObjLimits& limits) {
       }
     }
   }
+
+  checkFiniteAttributes(path, text, attrib);
 
   const AttributeCounts counts{static_cast<long long>(attrib.vertices.size() / 3),
                                static_cast<long long>(attrib.texcoords.size() / 2),

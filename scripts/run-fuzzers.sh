@@ -9,7 +9,10 @@
 # SECONDS_PER_TARGET defaults to 60; TARGETs default to all four (scene_file obj_file
 # image_file pipeline). Environment: FUZZ_BUILD_DIR (default build-fuzz), FUZZ_JOBS (build
 # parallelism, default nproc), FUZZ_ARGS (extra libFuzzer flags, e.g. "-fork=1 -ignore_crashes=1"
-# to keep going after a crash and collect every crasher). The working corpus, $BUILD/corpus/<target>/, grows across
+# to keep going after a crash and collect every crasher), FUZZ_SEED (libFuzzer's -seed, default
+# 1: with the same seeds, an empty working corpus and the same binary, a run repeats the inputs
+# an earlier run with that seed tried, as far as its time allows, so CI tries what a local run
+# already passed plus whatever a code change makes it reach; 0 lets libFuzzer pick). The working corpus, $BUILD/corpus/<target>/, grows across
 # runs; each run also reads seeds from tests/corpus/<target>/ and the repository's assets.
 # A summary line per target (executions, corpus size, coverage) goes to $BUILD/fuzz-summary.txt.
 set -euo pipefail
@@ -79,7 +82,7 @@ for t in "${targets[@]}"; do
   log="$build/fuzz-$t.log"
   echo "run-fuzzers: fuzz_$t for ${seconds} s (log: $log)"
   set +e
-  "$build/fuzz/fuzz_$t" "$corpus" "$seeds" "${dict[@]}" -max_total_time="$seconds" -timeout=30 \
+  "$build/fuzz/fuzz_$t" "$corpus" "$seeds" "${dict[@]}" -seed="${FUZZ_SEED:-1}" -max_total_time="$seconds" -timeout=30 \
     -rss_limit_mb=3072 -max_len="$(max_len "$t")" -artifact_prefix="$artifacts" -print_final_stats=1 \
     ${FUZZ_ARGS:-} >"$log" 2>&1
   rc=$?

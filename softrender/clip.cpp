@@ -152,6 +152,16 @@ std::uint32_t clipTriangle(const ClipVertexT<T>& a, const ClipVertexT<T>& b, con
     std::swap(current, next);
     if (current->count == 0) break;
   }
+  // A cut vertex may land a rounding beyond a plane its polygon was not clipped against:
+  // with the near plane on and the polygon reaching the eye (w = 0), at w <= 0, where 1 / w
+  // flips sign or overflows (found by fuzzing; a perspective camera's near plane keeps every
+  // real vertex far from it). Such a polygon is removed like one with an unusable vertex.
+  for (int i = 0; i < current->count; ++i) {
+    if (!(current->v[static_cast<std::size_t>(i)].posClip.w > T(0))) {
+      out.count = 0;
+      return cut | kClipNonFiniteBit;
+    }
+  }
   if (current != &out) {
     out.count = current->count;
     for (int i = 0; i < current->count; ++i) out.v[static_cast<std::size_t>(i)] = current->v[static_cast<std::size_t>(i)];

@@ -88,7 +88,8 @@ ClipVertexT<T> interpolateClipVertex(const ClipVertexT<T>& from, const ClipVerte
 inline constexpr float kMaxClipCoordinate = 1e30f;
 
 // Set in a returned plane mask (and by outcode) when a vertex had a non-finite clip position,
-// or a coordinate or active clip distance beyond kMaxClipCoordinate: the triangle is removed.
+// or a coordinate or active clip distance beyond kMaxClipCoordinate, or when a vertex the
+// clipper made ended at w <= 0 (the polygon reaches the eye): the triangle is removed.
 inline constexpr std::uint32_t kClipNonFiniteBit = 1u << 31;
 
 // False when the clipper must remove a primitive with this vertex (see kClipNonFiniteBit).

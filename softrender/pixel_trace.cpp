@@ -119,7 +119,7 @@ std::string fmt(const glm::vec<N, float>& v) {
 
 std::string planeList(std::uint32_t mask) {
   if (mask == 0) return "none";
-  if (mask & kClipNonFiniteBit) return "removed: clip position non-finite or beyond kMaxClipCoordinate (1e30)";
+  if (mask & kClipNonFiniteBit) return "removed: a clip position non-finite or beyond kMaxClipCoordinate (1e30), or cut to w <= 0";
   std::string s;
   for (int p = 0; p < kClipPlaneCount; ++p) {
     if (mask & (1u << p)) s += (s.empty() ? "" : ", ") + std::string(clipPlaneName(p));

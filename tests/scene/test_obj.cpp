@@ -224,6 +224,9 @@ TEST(ObjErrors, NonFiniteOrMalformedNumbers) {
   expectLoadError(writeCase("nan", {{"nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n"}}), {":2", "nan"});
   expectLoadError(writeCase("inf", {{"inf.obj", "v 0 0 0\nv 1 0 0\nv 0 inf 0\nf 1 2 3\n"}}), {":3", "inf"});
   expectLoadError(writeCase("overflow", {{"overflow.obj", "v 0 0 0\nv 1e999 0 0\nv 0 1 0\nf 1 2 3\n"}}), {":2"});
+  // strtod reads 0 here, tinyobjloader 0 * 10^39126 = NaN (found by fuzzing).
+  expectLoadError(writeCase("zero_exponent", {{"z.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0.0E39126 1\nf 1 2 3\n"}}),
+                  {":4", "'v'", "infinite or NaN"});
   // Finite as a double but infinite as the float tinyobjloader stores (found by fuzzing).
   expectLoadError(writeCase("float_overflow", {{"f.obj", "v 0 0 0\nv 1 0 0\nvt 0 -7e79\nv 0 1 0\nf 1 2 4\n"}}),
                   {":3", "-7e79", "3.4e38"});
