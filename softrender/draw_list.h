@@ -26,8 +26,9 @@ struct ItemState {
 ItemState makeItemState(const DrawItem& item, const mat4& clipFromWorld, const Scene& scene,
                         const RenderSettings& settings, int width, int height);
 
-// Throws InputError unless both sides are within [1, kMaxImageSide].
-void validateImageSize(int width, int height);
+// Throws InputError unless both sides are within [1, kMaxImageSide]; `renderer` starts the
+// message ("cpu renderer", "reference renderer").
+void validateImageSize(int width, int height, const char* renderer = "cpu renderer");
 
 // Throws InputError naming the node and the first index at or past the vertex count.
 void validateIndices(const DrawItem& item);

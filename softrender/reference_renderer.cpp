@@ -9,6 +9,7 @@
 #include "scene/errors.h"
 #include "scene/image.h"
 #include "softrender/clip.h"
+#include "softrender/draw_list.h"
 #include "softrender/framebuffer.h"
 #include "softrender/interpolate.h"
 #include "softrender/raster.h"
@@ -150,24 +151,6 @@ void drawItemSamples(const ReferenceDrawState<T>& s, const Band& band, SampleTar
   }
 }
 
-void validateSize(int width, int height) {
-  if (width < 1 || width > kMaxImageSide || height < 1 || height > kMaxImageSide) {
-    throw InputError("reference renderer: image size " + std::to_string(width) + "x" + std::to_string(height) +
-                     " must be within 1.." + std::to_string(kMaxImageSide) + " on each side");
-  }
-}
-
-void validateIndices(const DrawItem& item) {
-  const std::size_t vertexCount = item.mesh->vertices.size();
-  for (std::size_t i = 0; i < item.mesh->indices.size(); ++i) {
-    if (item.mesh->indices[i] >= vertexCount) {
-      throw InputError("node '" + item.nodeName + "': mesh index " + std::to_string(i) + " is " +
-                       std::to_string(item.mesh->indices[i]) + ", expected < vertex count " +
-                       std::to_string(vertexCount));
-    }
-  }
-}
-
 class ReferenceRenderer final : public Renderer {
  public:
   explicit ReferenceRenderer(const ReferenceOptions& options) : options_(options) {
@@ -186,7 +169,7 @@ class ReferenceRenderer final : public Renderer {
  private:
   template <typename T>
   RenderOutput renderWith(const Scene& scene, const RenderSettings& settings, int width, int height) {
-    validateSize(width, height);
+    validateImageSize(width, height, "reference renderer");
     const auto start = std::chrono::steady_clock::now();
     const std::vector<DrawItem> items = flattenScene(scene);
     const std::vector<glm::dmat4> worldFromModel = referenceWorldFromModel(scene);
