@@ -46,7 +46,7 @@ void runFrames(benchmark::State& state, Renderer& renderer, const Scene& scene, 
 
 // Args: threads.
 void BM_CpuFrame(benchmark::State& state, std::string file, CpuPath path, bool simd) {
-  const auto renderer = makeCpuRenderer(CpuOptions{static_cast<int>(state.range(0)), path, simd});
+  const auto renderer = makeCpuRenderer(CpuOptions{static_cast<int>(state.range(0)), path, simd ? CpuIsa::Auto : CpuIsa::Scalar});
   const Scene& scene = sceneNamed(file);
   runFrames(state, *renderer, scene, scene.settings);
 }
@@ -54,7 +54,7 @@ void BM_CpuFrame(benchmark::State& state, std::string file, CpuPath path, bool s
 // The default scene in one debug colour view (what the GUI shows beside the lit image).
 // Args: threads.
 void BM_CpuViewFrame(benchmark::State& state, View view, CpuPath path, bool simd) {
-  const auto renderer = makeCpuRenderer(CpuOptions{static_cast<int>(state.range(0)), path, simd});
+  const auto renderer = makeCpuRenderer(CpuOptions{static_cast<int>(state.range(0)), path, simd ? CpuIsa::Auto : CpuIsa::Scalar});
   const Scene& scene = sceneNamed("default");
   RenderSettings settings = scene.settings;
   settings.view = view;

@@ -9,6 +9,7 @@ packages=(
   libglfw3-dev libglm-dev python3-glad libimgui-dev libosmesa6-dev
   libtinyobjloader-dev libstb-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libbenchmark-dev
+  libhwy-dev                 # Google Highway: the fast path's portable SIMD
   xvfb xauth
   clang libclang-rt-14-dev   # libFuzzer and clang's sanitizers (scripts/run-fuzzers.sh)
   assimp-testmodels          # real-world OBJ files for fuzz/test_real_world_models.cpp

@@ -3,6 +3,7 @@
 // then the TBN debug lines. The fast traversal of the same stages is fast_pipeline.cpp.
 #include "softrender/cpu_renderer.h"
 
+#include "scene/errors.h"
 #include "scene/image.h"
 #include "softrender/clip.h"
 #include "softrender/debug_lines.h"
@@ -137,7 +138,7 @@ class CpuRenderer final : public Renderer {
     const auto start = std::chrono::steady_clock::now();
     RenderStats stats;
     if (options_.path == CpuPath::Fast && !fast_) {
-      fast_ = std::make_unique<FastPipeline>(options_.threads, options_.simd);
+      fast_ = std::make_unique<FastPipeline>(options_.threads, resolveCpuIsa(options_.isa));
     }
     Framebuffer fb = fast_ ? fast_->allocateFramebuffer(width, height)  // draw() clears it bin by bin
                            : makeFramebuffer(width, height, scene.output.background);
@@ -178,11 +179,14 @@ class CpuRenderer final : public Renderer {
 
 }  // namespace
 
-std::unique_ptr<Renderer> makeCpuRenderer(const CpuOptions& options) { return std::make_unique<CpuRenderer>(options); }
+std::unique_ptr<Renderer> makeCpuRenderer(const CpuOptions& options) {
+  if (!cpuIsaSupported(options.isa)) throw InputError("cpu renderer: --cpu-isa " + cpuIsaUnsupportedReason(options.isa));
+  return std::make_unique<CpuRenderer>(options);
+}
 
 std::string cpuPathName(const CpuOptions& options) {
   if (options.path == CpuPath::Teaching) return "teaching";
-  return options.simd && cpuHasAvx512() ? "fast (avx512)" : "fast (scalar)";
+  return "fast (" + std::string(toString(resolveCpuIsa(options.isa))) + ")";
 }
 
 }  // namespace twr

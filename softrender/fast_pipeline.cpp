@@ -61,9 +61,9 @@ void clearDepthRows(int rowBegin, int rowEnd, Framebuffer& fb) {
 
 }  // namespace
 
-FastPipeline::FastPipeline(int threads, bool simd)
+FastPipeline::FastPipeline(int threads, CpuIsa isa)
     : pool_(threads),
-      simd_(simd),
+      simd_(isa == CpuIsa::Avx512),
       frontEnds_(static_cast<std::size_t>(pool_.threads())),
       backEnds_(static_cast<std::size_t>(pool_.threads())) {}
 

@@ -21,6 +21,7 @@
 #pragma once
 
 #include "scene/renderer.h"
+#include "softrender/cpu_renderer.h"
 #include "softrender/clip.h"
 #include "softrender/draw_list.h"
 #include "softrender/fast_shade_avx512.h"
@@ -48,7 +49,7 @@ struct FastVertex {
 
 class FastPipeline {
  public:
-  FastPipeline(int threads, bool simd);
+  FastPipeline(int threads, CpuIsa isa);
 
   // A framebuffer of that size whose buffers are allocated in parallel and left zero: draw()
   // clears each bin's rows itself, just before drawing them (while they are in cache).

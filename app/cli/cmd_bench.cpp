@@ -348,7 +348,7 @@ void runBench(const BenchArgs& args) {
   CpuOptions cpuOptions;
   cpuOptions.threads = threads;
   cpuOptions.path = args.cpuPath == "teaching" ? CpuPath::Teaching : CpuPath::Fast;
-  cpuOptions.simd = !args.cpuScalar;
+  cpuOptions.isa = args.cpuScalar ? CpuIsa::Scalar : CpuIsa::Auto;
   const std::unique_ptr<Renderer> cpu = makeCpuRenderer(cpuOptions);
 
   RenderOutput cpuOut, glOut;

@@ -30,9 +30,9 @@ namespace {
 
 const std::string kScenes = std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes";
 
-CpuOptions teaching() { return CpuOptions{1, CpuPath::Teaching, false}; }
-CpuOptions fastSimd(int threads) { return CpuOptions{threads, CpuPath::Fast, true}; }
-CpuOptions fastScalar(int threads) { return CpuOptions{threads, CpuPath::Fast, false}; }
+CpuOptions teaching() { return CpuOptions{1, CpuPath::Teaching, CpuIsa::Scalar}; }
+CpuOptions fastSimd(int threads) { return CpuOptions{threads, CpuPath::Fast, CpuIsa::Auto}; }
+CpuOptions fastScalar(int threads) { return CpuOptions{threads, CpuPath::Fast, CpuIsa::Scalar}; }
 
 // Float buffers compare bitwise, so -0 against +0 or two different NaNs would show.
 bool sameBits(const std::vector<float>& a, const std::vector<float>& b) {
