@@ -1,6 +1,7 @@
 // The GL renderer: owns its contexts (OSMesa core, and compatibility once immediate-mode
 // lines are asked for) or borrows the caller's, and runs one frame per render():
-// clear, surfaces, TBN lines (colour and line mask in one pass), read-back.
+// clear, surfaces, TBN lines (colour and line mask in one pass), read-back. A lean frame
+// (GlOptions::frame) runs the same steps on colour + depth only and reads back the colour.
 #include "glrender/gl_renderer.h"
 
 #include "glrender/context_osmesa.h"
@@ -38,8 +39,8 @@ struct GlDevice {
   RenderTargets targets;
   std::unique_ptr<ImmediateTbnLines> immediateLines;  // loaded on first use
 
-  GlDevice(std::unique_ptr<OsMesaContext> context, GlProcFunction proc, const std::string& shaderDir)
-      : osmesa(std::move(context)), procAddress(std::move(proc)), programs(ShaderLibrary(shaderDir)) {}
+  GlDevice(std::unique_ptr<OsMesaContext> context, GlProcFunction proc, const std::string& shaderDir, GlFrame frame)
+      : osmesa(std::move(context)), procAddress(std::move(proc)), programs(ShaderLibrary(shaderDir)), targets(frame) {}
   GlDevice(const GlDevice&) = delete;
   GlDevice& operator=(const GlDevice&) = delete;
   ~GlDevice() {
@@ -153,8 +154,9 @@ class GlRenderer final : public Renderer {
     device.targets.clear(scene.output.background);
     device.targets.drawSurfaces();
     const GlClipState clipState = makeGlClipState(settings, scene.camera);
+    const bool countSamples = options_.frame == GlFrame::Full;
     const SceneDrawStats drawStats =
-        drawScene(device.programs, device.uploads, scene, settings, clipState, items, clipFromWorld);
+        drawScene(device.programs, device.uploads, scene, settings, clipState, items, clipFromWorld, countSamples);
     checkGlErrors("drawing the scene");
 
     if (settings.tbnLines.enabled) {
@@ -183,7 +185,7 @@ class GlRenderer final : public Renderer {
       if (!current_) {
         const GlProcLoader loader = options_.currentContextLoader;
         current_ = std::make_unique<GlDevice>(nullptr, [loader](const char* name) { return loader(name); },
-                                              options_.shaderDir);
+                                              options_.shaderDir, options_.frame);
         current_->makeCurrent();
         current_->info = describeCurrentContext();
         report(*current_, "current context");
@@ -200,7 +202,7 @@ class GlRenderer final : public Renderer {
       OsMesaContext* raw = context.get();
       auto device = std::make_unique<GlDevice>(std::move(context),
                                                [raw](const char* name) { return raw->procAddress(name); },
-                                               options_.shaderDir);
+                                               options_.shaderDir, options_.frame);
       device->makeCurrent();
       device->info = describeCurrentContext();
       report(*device, compatibility ? "OSMesa 3.3 compatibility context" : "OSMesa 3.3 core context");

@@ -14,6 +14,19 @@ namespace twr {
 using GlProc = void (*)();
 using GlProcLoader = GlProc (*)(const char* name);
 
+// What one frame draws into and reads back.
+//   Full  colour, depth, triangle ids and the TBN-line mask, all four read back, and a
+//         GL_SAMPLES_PASSED query for RenderStats::pixelsShaded: everything compare, the
+//         app and the tests need (glrender/gl_targets.h).
+//   Lean  the frame an OpenGL user draws: the same programs (the same #define permutation),
+//         state and draw calls into colour + depth only, no occlusion query, and one
+//         glReadPixels of the colour (rows flipped to top first, as RenderOutput wants).
+//         RenderOutput then holds rgba alone (depth, triangleId and lineMask are empty) and
+//         stats.pixelsShaded is 0. The colour is bit for bit the Full frame's
+//         (tests/glrender/test_gl_lean_frame.cpp). `twinraster bench` times it as the fair
+//         reference for the CPU pipeline (gl_lean_* keys).
+enum class GlFrame { Full, Lean };
+
 struct GlOptions {
   bool verbose = false;  // print GL_VERSION / GL_RENDERER on stderr
   // llvmpipe's fast texture path (8-bit bilinear weights, one LOD per quad). Off by default
@@ -28,6 +41,7 @@ struct GlOptions {
   // this function instead of creating OSMesa contexts. Immediate-mode TBN lines then
   // need that context to be a compatibility profile.
   GlProcLoader currentContextLoader = nullptr;
+  GlFrame frame = GlFrame::Full;
 };
 
 // Throws InputError (exit 2) when OSMesa is missing, the context cannot be created or a

@@ -114,7 +114,7 @@ std::vector<std::string> phongDefines(const Material& material, const RenderSett
 
 SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const Scene& scene,
                          const RenderSettings& settings, const GlClipState& clipState,
-                         const std::vector<DrawItem>& items, const mat4& clipFromWorld) {
+                         const std::vector<DrawItem>& items, const mat4& clipFromWorld, bool countSamples) {
   SceneDrawStats stats;
   applyPipelineState(settings);
   applyGlClipState(clipState);
@@ -127,8 +127,11 @@ SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const S
     uploads.texture(map, settings.textureFilter);
   };
 
-  const GlQuery samples = makeGlQuery();
-  glBeginQuery(GL_SAMPLES_PASSED, samples.id());
+  GlQuery samples;
+  if (countSamples) {
+    samples = makeGlQuery();
+    glBeginQuery(GL_SAMPLES_PASSED, samples.id());
+  }
   for (const DrawItem& item : items) {
     if (item.mesh->indices.empty()) continue;
     checkIndices(*item.mesh, item.nodeName);
@@ -147,10 +150,12 @@ SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const S
     glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
     glBindVertexArray(0);
   }
-  glEndQuery(GL_SAMPLES_PASSED);
-  GLuint64 passed = 0;
-  glGetQueryObjectui64v(samples.id(), GL_QUERY_RESULT, &passed);
-  stats.samplesPassed = passed;
+  if (countSamples) {
+    glEndQuery(GL_SAMPLES_PASSED);
+    GLuint64 passed = 0;
+    glGetQueryObjectui64v(samples.id(), GL_QUERY_RESULT, &passed);
+    stats.samplesPassed = passed;
+  }
   glActiveTexture(GL_TEXTURE0);
   uploads.endFrame();
   return stats;

@@ -23,8 +23,11 @@ std::vector<std::string> phongDefines(const Material& material, const RenderSett
 
 // Draws `items` into the bound framebuffer's current draw buffers. Throws InputError for
 // textures it cannot upload. Calls uploads.beginFrame() and, when it returns, endFrame().
+// countSamples: wrap the draws in a GL_SAMPLES_PASSED query and wait for its result
+// (samplesPassed); false leaves samplesPassed 0 and the frame unsynchronised, as a user
+// draws it (GlFrame::Lean).
 SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const Scene& scene,
                          const RenderSettings& settings, const GlClipState& clipState,
-                         const std::vector<DrawItem>& items, const mat4& clipFromWorld);
+                         const std::vector<DrawItem>& items, const mat4& clipFromWorld, bool countSamples = true);
 
 }  // namespace twr

@@ -68,12 +68,17 @@ void RenderTargets::prepare(int width, int height) {
   width_ = width;
   height_ = height;
   colour_ = makeStorage(GL_RGBA8, width, height);
-  triangleId_ = makeStorage(GL_R32UI, width, height);
-  lineMask_ = makeStorage(GL_RGBA8, width, height);
   depth_ = makeStorage(GL_DEPTH_COMPONENT24, width, height);
   framebuffer_ = makeGlFramebuffer();
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, kColourAttachment, GL_RENDERBUFFER, colour_.id());
+  if (set_ == GlFrame::Lean) {
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
+    checkComplete("lean offscreen framebuffer");
+    return;
+  }
+  triangleId_ = makeStorage(GL_R32UI, width, height);
+  lineMask_ = makeStorage(GL_RGBA8, width, height);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, kTriangleIdAttachment, GL_RENDERBUFFER, triangleId_.id());
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, kLineMaskAttachment, GL_RENDERBUFFER, lineMask_.id());
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
@@ -93,27 +98,46 @@ void RenderTargets::bind() const {
 }
 
 void RenderTargets::clear(const vec3& background) const {
-  // glClearBuffer addresses draw buffers, so all three attachments are selected first.
-  const std::array<GLenum, 3> all = {kColourAttachment, kTriangleIdAttachment, kLineMaskAttachment};
-  glDrawBuffers(static_cast<GLsizei>(all.size()), all.data());
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(GL_TRUE);
   const std::array<GLfloat, 4> colour = {background.r, background.g, background.b, 0.0f};
+  const GLfloat farDepth = 1.0f;
+  if (set_ == GlFrame::Lean) {
+    const GLenum colourOnly = kColourAttachment;
+    glDrawBuffers(1, &colourOnly);
+    glClearBufferfv(GL_COLOR, 0, colour.data());
+    glClearBufferfv(GL_DEPTH, 0, &farDepth);
+    return;
+  }
+  // glClearBuffer addresses draw buffers, so all three attachments are selected first.
+  const std::array<GLenum, 3> all = {kColourAttachment, kTriangleIdAttachment, kLineMaskAttachment};
+  glDrawBuffers(static_cast<GLsizei>(all.size()), all.data());
   glClearBufferfv(GL_COLOR, 0, colour.data());
   const std::array<GLuint, 4> noTriangle = {kNoTriangle, 0, 0, 0};
   glClearBufferuiv(GL_COLOR, 1, noTriangle.data());
   const std::array<GLfloat, 4> noLine = {0.0f, 0.0f, 0.0f, 0.0f};
   glClearBufferfv(GL_COLOR, 2, noLine.data());
-  const GLfloat farDepth = 1.0f;
   glClearBufferfv(GL_DEPTH, 0, &farDepth);
 }
 
 void RenderTargets::drawSurfaces() const {
+  if (set_ == GlFrame::Lean) {
+    const GLenum colourOnly = kColourAttachment;
+    glDrawBuffers(1, &colourOnly);
+    return;
+  }
   const std::array<GLenum, 2> buffers = {kColourAttachment, kTriangleIdAttachment};
   glDrawBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
 }
 
 void RenderTargets::bindForLines() const {
+  if (set_ == GlFrame::Lean) {
+    // No integer attachment here, so immediate mode may draw into this framebuffer.
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+    const GLenum colourOnly = kColourAttachment;
+    glDrawBuffers(1, &colourOnly);
+    return;
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, lineFramebuffer_.id());
   const std::array<GLenum, 2> buffers = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
   glDrawBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
@@ -125,6 +149,12 @@ void RenderTargets::readBack(RenderOutput& out) const {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.id());
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   readAttachment(kColourAttachment, GL_RGBA, GL_UNSIGNED_BYTE, width_, height_, 4, out.rgba, rowScratch_);
+  if (set_ == GlFrame::Lean) {
+    out.depth.clear();
+    out.triangleId.clear();
+    out.lineMask.clear();
+    return;
+  }
   readAttachment(kTriangleIdAttachment, GL_RED_INTEGER, GL_UNSIGNED_INT, width_, height_, 1, out.triangleId,
                  rowScratch_);
   // The mask is the line attachment's alpha (GL_ALPHA is no read format in a core context).

@@ -5,9 +5,12 @@
 //   colour attachment 2: RGBA8 TBN-line mask, cleared to 0; lines write their colour with
 //                        alpha 1 here too, so alpha != 0 marks a line pixel
 //   depth: DEPTH_COMPONENT24, cleared to 1, read back as float window depth
+// A lean set (GlFrame::Lean) has only the colour and depth attachments; its read-back is the
+// colour alone, one glReadPixels.
 #pragma once
 
 #include "glrender/gl_objects.h"
+#include "glrender/gl_renderer.h"
 #include "scene/conventions.h"
 #include "scene/renderer.h"
 
@@ -17,6 +20,8 @@ namespace twr {
 
 class RenderTargets {
  public:
+  explicit RenderTargets(GlFrame set = GlFrame::Full) : set_(set) {}
+
   // (Re)creates the attachments when the size changes; throws InputError above the
   // context's limits (GL_MAX_RENDERBUFFER_SIZE, GL_MAX_VIEWPORT_DIMS).
   void prepare(int width, int height);
@@ -25,18 +30,22 @@ class RenderTargets {
   void clear(const vec3& background) const;
 
   // Which attachments fragment outputs go to (location 0, 1 in the shaders).
-  void drawSurfaces() const;  // location 0 -> colour, location 1 -> triangle id
+  // Full: location 0 -> colour, location 1 -> triangle id. Lean: location 0 -> colour; no
+  // draw buffer takes location 1, so GL drops the id output.
+  void drawSurfaces() const;
   // Binds the line framebuffer: the same colour, mask and depth storage without the
   // integer triangle-id attachment (Mesa refuses fixed-function drawing, immediate mode,
   // into a framebuffer with any integer attachment). location 0 -> colour, location 1 ->
   // line mask; fixed-function fragments replicate their one colour to both, so one pass
-  // fills colour and mask alike.
+  // fills colour and mask alike. Lean: the one framebuffer, colour only (no mask).
   void bindForLines() const;
 
-  // Reads every attachment into `out` (sizes set here), flipping rows to top first.
+  // Reads every attachment into `out` (sizes set here), flipping rows to top first. Lean:
+  // the colour only; out.depth, triangleId and lineMask are emptied.
   void readBack(RenderOutput& out) const;
 
  private:
+  GlFrame set_;
   int width_ = 0;
   int height_ = 0;
   GlFramebuffer framebuffer_;

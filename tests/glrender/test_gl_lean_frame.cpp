@@ -1,0 +1,94 @@
+// The lean GL frame (GlFrame::Lean: colour + depth, no occlusion query, colour read back
+// alone) draws the same colour as the full frame bit for bit, so `twinraster bench` may time
+// it as the same image. Every test here samples textures in llvmpipe's fast mode, as bench
+// does (the mode is fixed per process by the first context).
+#include "gl_test_scenes.h"
+#include "glrender/gl_renderer.h"
+#include "scene/scene_file.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+
+namespace twr {
+namespace {
+
+const std::string kScenes = std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes/";
+
+std::unique_ptr<Renderer> makeRenderer(GlFrame frame) {
+  GlOptions options;
+  options.fastSampling = true;
+  options.frame = frame;
+  return makeGlRenderer(options);
+}
+
+// Renders `scene` with both frames at width x height and checks the colour is identical.
+void expectSameColour(const Scene& scene, const RenderSettings& settings, int width, int height,
+                      const std::string& what) {
+  SCOPED_TRACE(what);
+  const RenderOutput full = makeRenderer(GlFrame::Full)->render(scene, settings, width, height);
+  const std::unique_ptr<Renderer> leanRenderer = makeRenderer(GlFrame::Lean);
+  // Twice: the second frame reuses the framebuffer, programs and uploads of the first.
+  for (int frame = 0; frame < 2; ++frame) {
+    const RenderOutput lean = leanRenderer->render(scene, settings, width, height);
+    ASSERT_EQ(lean.width, width);
+    ASSERT_EQ(lean.height, height);
+    ASSERT_EQ(lean.rgba.size(), full.rgba.size());
+    std::size_t differing = 0, first = full.rgba.size();
+    for (std::size_t i = 0; i < full.rgba.size(); ++i) {
+      if (lean.rgba[i] == full.rgba[i]) continue;
+      if (differing++ == 0) first = i;
+    }
+    EXPECT_EQ(differing, 0u) << "first differing byte " << first << " (pixel " << first / 4 << ")";
+    EXPECT_GT(gltest::coveredCount(lean), 0u) << "a blank image proves nothing";
+    // Only the colour comes back, and nothing is counted.
+    EXPECT_TRUE(lean.depth.empty());
+    EXPECT_TRUE(lean.triangleId.empty());
+    EXPECT_TRUE(lean.lineMask.empty());
+    EXPECT_EQ(lean.stats.pixelsShaded, 0u);
+    EXPECT_EQ(lean.stats.trianglesIn, full.stats.trianglesIn);
+  }
+}
+
+TEST(GlLeanFrame, DefaultSceneColourEqualsTheFullFrame) {
+  const Scene scene = loadSceneFile(kScenes + "default.json");
+  expectSameColour(scene, scene.settings, 320, 180, "default.json");
+}
+
+TEST(GlLeanFrame, MapsLightsAndClipPlanesColourEqualsTheFullFrame) {
+  // Normal + diffuse + specular maps from an OBJ's MTL, many lights, user clip planes,
+  // tangent-space lighting: other program permutations and fixed-function state.
+  for (const char* name : {"obj_model.json", "many_lights.json", "user_clip.json", "tangent_space.json"}) {
+    const Scene scene = loadSceneFile(kScenes + name);
+    expectSameColour(scene, scene.settings, 200, 150, name);
+  }
+}
+
+TEST(GlLeanFrame, DebugViewsAndTbnLinesColourEqualsTheFullFrame) {
+  const Scene scene = loadSceneFile(kScenes + "tbn_lines.json");
+  ASSERT_TRUE(scene.settings.tbnLines.enabled);
+  expectSameColour(scene, scene.settings, 160, 120, "tbn_lines.json, core lines");
+  RenderSettings immediate = scene.settings;
+  immediate.tbnLines.mode = LineMode::Immediate;  // fixed function, compatibility context
+  expectSameColour(scene, immediate, 160, 120, "tbn_lines.json, immediate-mode lines");
+  RenderSettings view = scene.settings;
+  view.tbnLines.enabled = false;
+  view.view = View::MappedNormal;
+  expectSameColour(scene, view, 160, 120, "tbn_lines.json, view mapped_normal");
+}
+
+TEST(GlLeanFrame, ResizingRecreatesOnlyColourAndDepth) {
+  Scene scene = gltest::emptyScene();
+  gltest::addNode(scene, gltest::quadAt(-2.0f, -1.0f, -1.0f, 1.0f, 1.0f), "quad");
+  const std::unique_ptr<Renderer> lean = makeRenderer(GlFrame::Lean);
+  for (const int side : {gltest::kSide, 2 * gltest::kSide, gltest::kSide}) {
+    const RenderOutput out = lean->render(scene, scene.settings, side, side);
+    ASSERT_EQ(out.rgba.size(), static_cast<std::size_t>(side * side * 4));
+    // The quad spans the middle half of the image both ways.
+    EXPECT_EQ(gltest::coveredCount(out), static_cast<std::size_t>(side / 2) * static_cast<std::size_t>(side / 2));
+  }
+}
+
+}  // namespace
+}  // namespace twr
