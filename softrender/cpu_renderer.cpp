@@ -10,7 +10,6 @@
 #include "softrender/draw_list.h"
 #include "softrender/draw_triangle.h"
 #include "softrender/fast_pipeline.h"
-#include "softrender/fast_shade_avx512.h"
 #include "softrender/framebuffer.h"
 #include "softrender/interpolate.h"
 #include "softrender/setup.h"

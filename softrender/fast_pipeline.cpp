@@ -1,6 +1,5 @@
 #include "softrender/fast_pipeline.h"
 
-#include "softrender/draw_triangle.h"
 #include "softrender/interpolate.h"
 #include "softrender/setup.h"
 
@@ -20,7 +19,7 @@ bool finitePosition(const vec4& p) {
   return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
 }
 
-// The fragment stage's varyings of `v` in fast_shade_avx512.h's layout.
+// The fragment stage's varyings of `v` in fast_kernels.h's layout.
 void storeVaryings(const ClipVertex& v, bool tangentLighting, int lightCount, float* out) {
   const auto put = [&](int at, vec3 value) {
     out[at] = value.x;
@@ -63,7 +62,7 @@ void clearDepthRows(int rowBegin, int rowEnd, Framebuffer& fb) {
 
 FastPipeline::FastPipeline(int threads, CpuIsa isa)
     : pool_(threads),
-      simd_(isa == CpuIsa::Avx512),
+      kernels_(fastKernelsFor(isa)),
       frontEnds_(static_cast<std::size_t>(pool_.threads())),
       backEnds_(static_cast<std::size_t>(pool_.threads())) {}
 
@@ -252,7 +251,7 @@ void FastPipeline::runFrontEnd(const std::vector<ItemState>& items, int binCount
   });
 }
 
-std::uint64_t FastPipeline::drawBinSimd(const std::vector<ItemState>& items, int bin, std::uint32_t background,
+std::uint64_t FastPipeline::drawBin(const std::vector<ItemState>& items, int bin, std::uint32_t background,
                                         Framebuffer& fb, BackEnd& scratch) {
   const int rowBegin = bin * kBinRows;
   const int rowEnd = std::min(fb.height, rowBegin + kBinRows);
@@ -270,52 +269,22 @@ std::uint64_t FastPipeline::drawBinSimd(const std::vector<ItemState>& items, int
       const std::uint32_t slot = static_cast<std::uint32_t>(scratch.triangles.size());
       InterpolationSetup interpolation;
       bool covered = false;
-      passed += visibilityAvx512(setup, {r.v[0]->window, r.v[1]->window, r.v[2]->window}, slot, rowBegin, rowEnd, fb,
+      passed += kernels_.visibility(setup, {r.v[0]->window, r.v[1]->window, r.v[2]->window}, slot, rowBegin, rowEnd, fb,
                                  scratch.slots.data(), interpolation, covered);
       if (!covered) continue;  // no pixel holds this slot
       BinTriangle& t = scratch.triangles.emplace_back();
       t.atOrigin = interpolation.atOrigin;
       t.dx = interpolation.dx;
       t.dy = interpolation.dy;
+      t.zWindow = interpolation.zWindow;
       t.invW = interpolation.invW;
       t.triangleId = r.triangleId;
       t.item = r.item;
       t.varyings = r.varyings;
     }
   }
-  shadeBinAvx512(scratch.triangles, items, maps_, scratch.slots.data(), rowBegin, rowEnd, background, fb);
+  kernels_.shadeBin(scratch.triangles, items, maps_, scratch.slots.data(), rowBegin, rowEnd, background, fb);
   return passed;
-}
-
-std::uint64_t FastPipeline::drawBinScalar(const std::vector<ItemState>& items, int bin, std::uint32_t background,
-                                          Framebuffer& fb) {
-  const int rowBegin = bin * kBinRows;
-  const int rowEnd = std::min(fb.height, rowBegin + kBinRows);
-  clearDepthRows(rowBegin, rowEnd, fb);
-  for (int py = rowBegin; py < rowEnd; ++py) {
-    const std::size_t first = fb.index(0, py), count = static_cast<std::size_t>(fb.width);
-    for (std::size_t i = first; i < first + count; ++i) std::memcpy(&fb.rgba[4 * i], &background, sizeof(background));
-    std::fill_n(fb.triangleId.begin() + static_cast<std::ptrdiff_t>(first), count, kNoTriangle);
-  }
-  std::uint64_t shaded = 0;
-  for (const FrontEnd& frontEnd : frontEnds_) {
-    for (const std::uint32_t index : frontEnd.bins[static_cast<std::size_t>(bin)]) {
-      const RasterTriangle& r = frontEnd.triangles[index];
-      const ItemState& s = items[r.item];
-      TriangleSetup setup;  // accepted by the front end with the same inputs
-      setupSnappedTriangle({r.v[0]->xFixed, r.v[1]->xFixed, r.v[2]->xFixed}, {r.v[0]->yFixed, r.v[1]->yFixed, r.v[2]->yFixed},
-                           s.cull, s.frontFace, s.viewport, setup);
-      const InterpolationSetup interpolation =
-          makeInterpolationSetup<float>({r.v[0]->window, r.v[1]->window, r.v[2]->window}, setup);
-      std::array<ClipVertex, 3> v;
-      for (std::size_t c = 0; c < 3; ++c) loadVaryings(r.varyings[c], s.tangentLighting, s.shade.lightCount, v[c]);
-      withShaderFeatures(s.shaderKey, [&]<typename Features>() {
-        shaded += shadeTriangleRows<Features>(setup, interpolation, v[0], v[1], v[2], s.shade, s.tangentLighting,
-                                              r.triangleId, rowBegin, rowEnd, fb);
-      });
-    }
-  }
-  return shaded;
 }
 
 void FastPipeline::draw(const std::vector<ItemState>& items, vec3 background, Framebuffer& fb, RenderStats& stats) {
@@ -323,13 +292,11 @@ void FastPipeline::draw(const std::vector<ItemState>& items, vec3 background, Fr
   runVertexStage(items);
   const int binCount = (fb.height + kBinRows - 1) / kBinRows;
   runFrontEnd(items, binCount);
-  const bool simd = simd_ && cpuHasAvx512();
-  if (simd) prepareMaps(items);
+  prepareMaps(items);
   std::vector<std::uint64_t> shaded(static_cast<std::size_t>(binCount), 0);
   pool_.run(binCount, [&](int bin, int thread) {
     shaded[static_cast<std::size_t>(bin)] =
-        simd ? drawBinSimd(items, bin, backgroundRgba, fb, backEnds_[static_cast<std::size_t>(thread)])
-             : drawBinScalar(items, bin, backgroundRgba, fb);
+        drawBin(items, bin, backgroundRgba, fb, backEnds_[static_cast<std::size_t>(thread)]);
   });
   for (const FrontEnd& frontEnd : frontEnds_) {
     stats.trianglesIn += frontEnd.stats.trianglesIn;

@@ -3,7 +3,7 @@
 // (tests/softrender/test_fast_path.cpp renders every suite scene both ways).
 //
 //   1. vertex stage, in parallel chunks: runVertexStage once per mesh vertex, kept compactly
-//      (the varyings the fragment stage reads, fast_shade_avx512.h's layout) beside what every
+//      (the varyings the fragment stage reads, fast_kernels.h's layout) beside what every
 //      triangle would recompute: the window position (setup's fused multiply-add), its 24.8
 //      snap, and the clipper's outcode (or the non-finite bit);
 //   2. front end, one contiguous range of triangles per thread: a triangle with no outcode bit
@@ -13,9 +13,8 @@
 //      The SIMD kernels read textures from tiled copies (4 x 4 texels per cache line), made
 //      once per texture and kept while frames use it;
 //   3. back end, one bin at a time on whichever thread is free, triangles in submission order
-//      (thread 0's list, then thread 1's, ...): with the AVX-512 kernels (any view, CPU with
-//      AVX-512) a visibility pass then one shading pass per visible pixel; otherwise the
-//      teaching loop (draw_triangle.h) triangle by triangle.
+//      (thread 0's list, then thread 1's, ...): the chosen Highway target's kernels
+//      (fast_kernels.h), a visibility pass then one shading pass per visible pixel.
 // A bin's rows belong to it alone, so threads never write the same pixel and each pixel sees
 // its triangles in submission order: the result does not depend on the thread count.
 #pragma once
@@ -24,7 +23,7 @@
 #include "softrender/cpu_renderer.h"
 #include "softrender/clip.h"
 #include "softrender/draw_list.h"
-#include "softrender/fast_shade_avx512.h"
+#include "softrender/fast_kernels.h"
 #include "softrender/framebuffer.h"
 #include "softrender/worker_pool.h"
 
@@ -49,7 +48,11 @@ struct FastVertex {
 
 class FastPipeline {
  public:
+  // Throws InputError for a target this CPU cannot run.
   FastPipeline(int threads, CpuIsa isa);
+
+  // The target whose kernels draw.
+  CpuIsa isa() const { return kernels_.isa; }
 
   // A framebuffer of that size whose buffers are allocated in parallel and left zero: draw()
   // clears each bin's rows itself, just before drawing them (while they are in cache).
@@ -110,12 +113,11 @@ class FastPipeline {
                    const std::array<std::uint32_t, 3>& indices, FrontEnd& out);
   void emit(const ItemState& s, std::uint32_t item, std::uint32_t triangleId, std::array<const FastVertex*, 3> v,
             std::array<const float*, 3> varyings, FrontEnd& out);
-  std::uint64_t drawBinSimd(const std::vector<ItemState>& items, int bin, std::uint32_t background, Framebuffer& fb,
-                            BackEnd& scratch);
-  std::uint64_t drawBinScalar(const std::vector<ItemState>& items, int bin, std::uint32_t background, Framebuffer& fb);
+  std::uint64_t drawBin(const std::vector<ItemState>& items, int bin, std::uint32_t background, Framebuffer& fb,
+                        BackEnd& scratch);
 
   WorkerPool pool_;
-  bool simd_ = true;
+  FastKernels kernels_;  // the chosen Highway target's
   std::vector<ItemVertices> vertices_;  // per item
   std::vector<FrontEnd> frontEnds_;     // one per thread
   std::vector<BackEnd> backEnds_;       // one per thread

@@ -56,62 +56,9 @@ InterpolationSetupT<T> makeInterpolationSetup(const std::array<WindowVertexT<T>,
   return out;
 }
 
-template <typename T>
-PixelWeightsT<T> pixelWeights(const InterpolationSetupT<T>& setup, int px, int py) {
-  PixelWeightsT<T> w;
-  double perspectiveSum = 0.0;
-  std::array<double, 3> perspective{};
-  double depth = 0.0;
-  for (std::size_t i = 0; i < 3; ++i) {
-    const double lambda = setup.atOrigin[i] + setup.dx[i] * px + setup.dy[i] * py;
-    w.screen[i] = static_cast<T>(lambda);
-    depth += lambda * setup.zWindow[i];
-    perspective[i] = lambda * setup.invW[i];
-    perspectiveSum += perspective[i];
-  }
-  // 1/w is positive at every corner, so the sum is positive inside the triangle; a pixel
-  // centre a hair outside the float triangle could still push it to zero.
-  for (std::size_t i = 0; i < 3; ++i) {
-    w.perspective[i] = perspectiveSum > 0.0 ? static_cast<T>(perspective[i] / perspectiveSum) : w.screen[i];
-  }
-  const T clamped = static_cast<T>(depth);
-  w.depth = std::isfinite(clamped) ? std::fmin(std::fmax(clamped, T(0)), T(1)) : T(1);
-  return w;
-}
-
-template <typename T>
-FragmentT<T> interpolateFragment(const ClipVertexT<T>& v0, const ClipVertexT<T>& v1, const ClipVertexT<T>& v2,
-                                 const PixelWeightsT<T>& weights, bool tangentLighting, int tangentLightCount) {
-  const T p0 = weights.perspective[0], p1 = weights.perspective[1], p2 = weights.perspective[2];
-  FragmentT<T> f;
-  f.posWorld = v0.posWorld * p0 + v1.posWorld * p1 + v2.posWorld * p2;
-  f.nWorld = v0.nWorld * p0 + v1.nWorld * p1 + v2.nWorld * p2;
-  f.tWorld = v0.tWorld * p0 + v1.tWorld * p1 + v2.tWorld * p2;
-  f.bWorld = v0.bWorld * p0 + v1.bWorld * p1 + v2.bWorld * p2;
-  f.uv = v0.uv * p0 + v1.uv * p1 + v2.uv * p2;
-  if (tangentLighting) {
-    for (int i = 0; i < tangentLightCount; ++i) {
-      const std::size_t k = static_cast<std::size_t>(i);
-      f.lightDirTangent[k] = v0.lightDirTangent[k] * p0 + v1.lightDirTangent[k] * p1 + v2.lightDirTangent[k] * p2;
-    }
-    f.eyeDirTangent = v0.eyeDirTangent * p0 + v1.eyeDirTangent * p1 + v2.eyeDirTangent * p2;
-  }
-  f.depth = weights.depth;
-  return f;
-}
-
 // The two pipelines: float (matches GL) and double (the reference).
 template InterpolationSetupT<float> makeInterpolationSetup<float>(const std::array<WindowVertexT<float>, 3>&,
                                                                   const TriangleSetup&);
 template InterpolationSetupT<double> makeInterpolationSetup<double>(const std::array<WindowVertexT<double>, 3>&,
                                                                     const TriangleSetup&);
-template PixelWeightsT<float> pixelWeights<float>(const InterpolationSetupT<float>&, int, int);
-template PixelWeightsT<double> pixelWeights<double>(const InterpolationSetupT<double>&, int, int);
-template FragmentT<float> interpolateFragment<float>(const ClipVertexT<float>&, const ClipVertexT<float>&,
-                                                     const ClipVertexT<float>&, const PixelWeightsT<float>&, bool,
-                                                     int);
-template FragmentT<double> interpolateFragment<double>(const ClipVertexT<double>&, const ClipVertexT<double>&,
-                                                       const ClipVertexT<double>&, const PixelWeightsT<double>&,
-                                                       bool, int);
-
 }  // namespace twr

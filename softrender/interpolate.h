@@ -8,7 +8,9 @@
 // Barycentrics come from the unsnapped window positions (as llvmpipe's attribute setup),
 // in double precision; the snapped positions stand in when those have no area.
 //
-// Templated on the scalar T of the varyings (float: the pipeline, double: the reference).
+// The per-pixel part (weights and varyings) is written once over the lane type in
+// interpolate-inl.h; the functions below are its scalar entry points, templated on T (float:
+// the pipeline, double: the reference).
 #pragma once
 
 #include "softrender/setup.h"
@@ -41,8 +43,6 @@ struct PixelWeightsT {
 };
 using PixelWeights = PixelWeightsT<float>;
 
-template <typename T>
-PixelWeightsT<T> pixelWeights(const InterpolationSetupT<T>& setup, int px, int py);
 
 // The interpolated varyings a fragment is shaded from (names as in phong.frag).
 template <typename T>
@@ -58,11 +58,24 @@ struct FragmentT {
 };
 using Fragment = FragmentT<float>;
 
+}  // namespace twr
+
+#include "softrender/interpolate-inl.h"
+
+namespace twr {
+
+template <typename T>
+PixelWeightsT<T> pixelWeights(const InterpolationSetupT<T>& setup, int px, int py) {
+  return pixelWeightsLanes<T>(setup, static_cast<double>(px), static_cast<double>(py));
+}
+
 // Perspective-correct varyings at one pixel. Tangent-space light and eye directions are
 // interpolated only for the first `tangentLightCount` lights (0 in world lighting space, and
 // then eyeDirTangent is left zero too).
 template <typename T>
 FragmentT<T> interpolateFragment(const ClipVertexT<T>& v0, const ClipVertexT<T>& v1, const ClipVertexT<T>& v2,
-                                 const PixelWeightsT<T>& weights, bool tangentLighting, int tangentLightCount);
+                                 const PixelWeightsT<T>& weights, bool tangentLighting, int tangentLightCount) {
+  return interpolateFragmentLanes<T>(v0, v1, v2, weights, tangentLighting, tangentLightCount);
+}
 
 }  // namespace twr

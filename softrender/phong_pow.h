@@ -1,6 +1,6 @@
 // The Phong exponent x^s of the float pipeline, computed as 2^(s log2 x) in double with every
-// operation written out (no libm call), so that the SIMD fast path (fast_shade_avx512.cpp)
-// can repeat the same operations lane by lane and get the same bits. The result is the
+// operation written out (no libm call), written once over the lane type in phong_pow-inl.h
+// so the SIMD fast path repeats the same operations lane by lane and gets the same bits. The result is the
 // exactly rounded float of a value accurate to about 1e-15 relative, so it equals libm's
 // powf except where powf itself is off by an ulp; GLSL leaves pow's precision to the driver.
 //

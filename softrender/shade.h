@@ -6,12 +6,15 @@
 //   If = 1 / max(A_C + A_L d + A_Q d^2, kMinAttenuationDenominator),  R = 2 (N.L) N - L
 //
 // Templated on the material's features and the view, so a scene compiles (and pays for)
-// only the paths it uses, as the GLSL #define permutations do. Also templated on the scalar T
-// (float: the pipeline, double: the reference).
+// only the paths it uses, as the GLSL #define permutations do. The shading itself is written
+// once over the lane type in shade-inl.h (float: the teaching pipeline, double: the
+// reference, Highway vectors: the fast path); this header holds its uniforms, the trace's
+// record of it and the scalar entry point shadeFragment.
 #pragma once
 
 #include "scene/scene.h"
 #include "softrender/interpolate.h"
+#include "softrender/lanes.h"
 #include "softrender/phong_pow.h"
 #include "softrender/texture_sample.h"
 
@@ -74,19 +77,6 @@ struct ShadeTermsT {
 };
 using ShadeTerms = ShadeTermsT<float>;
 
-// pow(x, s) for x >= 0 with 0^s = 0 for s > 0 and 0^0 = 1 (both renderers agree on it).
-// float: powPositive (softrender/phong_pow.h), which the SIMD fast path repeats bit for bit;
-// double (the reference): libm.
-template <typename T>
-T phongPow(T x, std::type_identity_t<T> s) {
-  if (!(x > T(0))) return s > T(0) ? T(0) : T(1);
-  if constexpr (std::is_same_v<T, float>) {
-    return powPositive(x, s);
-  } else {
-    return std::pow(x, s);
-  }
-}
-
 // (v + 1) / 2 with alpha 1: how the debug views show a vector.
 template <typename T>
 Vec4T<T> vectorAsColour(Vec3T<T> v) {
@@ -103,121 +93,24 @@ struct ShaderFeatures {
   static constexpr View kView = ViewMode;
 };
 
+// The material's maps as the scalar lanes read them (null where the uniforms have none).
+struct TextureMaps {
+  const Texture* diffuse = nullptr;
+  const Texture* normal = nullptr;
+  const Texture* specular = nullptr;
+};
+
+}  // namespace twr
+
+#include "softrender/shade-inl.h"
+
+namespace twr {
+
 // Shades one fragment; fills `terms` when it is not null (the pixel trace). T is the scalar
 // of the pipeline (float, or double for the reference).
 template <typename Features, typename T>
 Vec4T<T> shadeFragment(const FragmentT<T>& f, const ShadeUniformsT<T>& u, std::type_identity_t<ShadeTermsT<T>>* terms) {
-  constexpr bool kTangentSpace = Features::kSpace == LightingSpace::Tangent;
-  const Vec3T<T> n = safeNormalize(f.nWorld);
-  const Vec3T<T> t = safeNormalize(f.tWorld);
-  const Vec3T<T> b = safeNormalize(f.bWorld);
-
-  Vec3T<T> albedo(T(1));
-  if constexpr (Features::kHasDiffuseMap) albedo = Vec3T<T>(sampleTexture(*u.diffuseMap, f.uv, u.filter));
-  Vec3T<T> specScale(T(1));
-  if constexpr (Features::kHasSpecularMap) specScale = Vec3T<T>(sampleTexture(*u.specularMap, f.uv, u.filter));
-  Vec3T<T> mappedTangent(T(0), T(0), T(1));
-  Vec4T<T> normalTexel(T(0));
-  if constexpr (Features::kHasNormalMap) {
-    normalTexel = sampleTexture(*u.normalMap, f.uv, u.filter);
-    mappedTangent = safeNormalize(T(2) * Vec3T<T>(normalTexel) - T(1));
-  }
-
-  Vec3T<T> nl = n;
-  if constexpr (kTangentSpace) {
-    nl = mappedTangent;
-  } else if constexpr (Features::kHasNormalMap) {
-    nl = safeNormalize(t * mappedTangent.x + b * mappedTangent.y + n * mappedTangent.z);
-  }
-
-  if (terms) {
-    terms->n = n;
-    terms->t = t;
-    terms->b = b;
-    terms->albedo = albedo;
-    terms->specScale = specScale;
-    terms->normalTexel = normalTexel;
-    terms->mappedTangent = mappedTangent;
-    terms->nl = nl;
-  }
-
-  Vec4T<T> colour(T(0));
-  if constexpr (Features::kView == View::Shaded) {
-    Vec3T<T> sum(T(0));
-    for (int i = 0; i < u.lightCount; ++i) {
-      const LightUniformT<T>& light = u.lights[static_cast<std::size_t>(i)];
-      Vec3T<T> lVec, vVec;
-      if constexpr (kTangentSpace) {
-        lVec = f.lightDirTangent[static_cast<std::size_t>(i)];
-        vVec = f.eyeDirTangent;
-      } else {
-        lVec = light.posWorld - f.posWorld;
-        vVec = u.eyePosWorld - f.posWorld;
-      }
-      const T d = glm::length(light.posWorld - f.posWorld);
-      const Vec3T<T> l = safeNormalize(lVec);
-      const Vec3T<T> v = safeNormalize(vVec);
-      const T nDotL = glm::dot(nl, l);
-      const Vec3T<T> r = T(2) * nDotL * nl - l;
-      const T rDotV = std::fmax(glm::dot(r, v), T(0));
-      const T attenuation =
-          T(1) / std::fmax(light.attenuation.x + light.attenuation.y * d + light.attenuation.z * d * d,
-                           static_cast<T>(kMinAttenuationDenominator));
-      const Vec3T<T> diffuse = u.kd * albedo * std::fmax(nDotL, T(0)) * light.diffuse;
-      const Vec3T<T> specular =
-          nDotL > T(0) ? u.ks * specScale * phongPow(rDotV, u.shininess) * light.specular : Vec3T<T>(T(0));
-      sum += (diffuse + specular) * attenuation;
-      if (terms) {
-        LightTermsT<T>& lt = terms->lights[static_cast<std::size_t>(i)];
-        lt.lVec = lVec;
-        lt.vVec = vVec;
-        lt.distance = d;
-        lt.l = l;
-        lt.v = v;
-        lt.r = r;
-        lt.nDotL = nDotL;
-        lt.rDotV = rDotV;
-        lt.attenuation = attenuation;
-        lt.diffuse = diffuse;
-        lt.specular = specular;
-      }
-    }
-    const Vec3T<T> ambient = u.ka * albedo * u.ambient;
-    colour = Vec4T<T>(ambient + sum, T(1));
-    if (terms) {
-      terms->ambient = ambient;
-      terms->lightCount = u.lightCount;
-    }
-  } else if constexpr (Features::kView == View::Albedo) {
-    colour = Vec4T<T>(albedo * u.kd, T(1));
-  } else if constexpr (Features::kView == View::Normal) {
-    colour = vectorAsColour(n);
-  } else if constexpr (Features::kView == View::Tangent) {
-    colour = vectorAsColour(t);
-  } else if constexpr (Features::kView == View::Bitangent) {
-    colour = vectorAsColour(b);
-  } else if constexpr (Features::kView == View::MappedNormal) {
-    colour = vectorAsColour(nl);
-  } else if constexpr (Features::kView == View::Uv) {
-    colour = Vec4T<T>(f.uv.x - std::floor(f.uv.x), f.uv.y - std::floor(f.uv.y), T(0), T(1));
-  } else if constexpr (Features::kView == View::Depth) {
-    colour = Vec4T<T>(f.depth, f.depth, f.depth, T(1));
-  } else if constexpr (Features::kView == View::LightTangent || Features::kView == View::EyeTangent) {
-    constexpr bool kLight = Features::kView == View::LightTangent;
-    Vec3T<T> dirTangent(T(0));  // no light: (0, 0, 0), shown as grey 0.5
-    if (!kLight || u.lightCount > 0) {
-      if constexpr (kTangentSpace) {
-        dirTangent = safeNormalize(kLight ? f.lightDirTangent[0] : f.eyeDirTangent);
-      } else {
-        const Vec3T<T> w = (kLight ? u.lights[0].posWorld : u.eyePosWorld) - f.posWorld;
-        dirTangent = safeNormalize(Vec3T<T>(glm::dot(t, w), glm::dot(b, w), glm::dot(n, w)));
-      }
-    }
-    colour = vectorAsColour(dirTangent);
-  }
-  colour = glm::clamp(colour, Vec4T<T>(T(0)), Vec4T<T>(T(1)));
-  if (terms) terms->colour = colour;
-  return colour;
+  return shadeFragmentLanes<Features, T>(f, u, TextureMaps{u.diffuseMap, u.normalMap, u.specularMap}, terms);
 }
 
 // Which permutation a draw item needs (runtime values of the template parameters).

@@ -1,0 +1,520 @@
+// The fast path's kernels (fast_kernels.h), compiled once per Highway target: Highway's
+// foreach_target.h re-includes this file for each target it can reach, with HWY_NAMESPACE
+// naming that target's namespace and its instruction set switched on for the functions inside
+// HWY_BEFORE_NAMESPACE / HWY_AFTER_NAMESPACE. The shading itself is not here: the shared
+// sources (softrender/*-inl.h) are included below into each target's namespace and
+// instantiated with that target's LaneF. What is here is the fast path's own design: the
+// visibility pass, the slot buffer, gathering a vector's triangles, tiled textures.
+
+// clang-format off
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "softrender/fast_kernels.cpp"
+#include <hwy/foreach_target.h>  // re-includes this file, once per target
+#include <hwy/highway.h>
+// clang-format on
+
+#include "softrender/fast_kernels.h"
+
+#include "scene/errors.h"
+#include "softrender/cpu_isa_targets.h"
+#include "softrender/raster.h"
+#include "softrender/shade.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <utility>
+
+// The shared sources for this target: in twr::HWY_NAMESPACE, with its attributes.
+#define TWR_LANES_HIGHWAY
+#undef TWR_LANES_BEGIN
+#undef TWR_LANES_END
+#define TWR_LANES_BEGIN \
+  HWY_BEFORE_NAMESPACE(); \
+  namespace twr {         \
+  namespace HWY_NAMESPACE {
+#define TWR_LANES_END \
+  }                   \
+  }                   \
+  HWY_AFTER_NAMESPACE();
+
+#include "softrender/lanes_hwy-inl.h"
+#include "softrender/lane_math-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace twr {
+namespace HWY_NAMESPACE {
+
+// Most lanes a vector has on any target (AVX-512: 16 floats), for stack buffers.
+constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(float);
+
+// ---- a TiledTexture as texture_sample-inl.h reads it ----
+HWY_INLINE int texWidth(const TiledTexture& t) { return t.width; }
+HWY_INLINE int texHeight(const TiledTexture& t) { return t.height; }
+
+// wrappedFloorIndex per lane for coordinates too large for 32-bit lanes (a repeat count that
+// large is a test case, not a scene).
+HWY_NOINLINE LaneI wrapTexelIndexEachLane(int size, LaneF integral) {
+  HWY_ALIGN float values[kMaxLanes];
+  HWY_ALIGN std::int32_t indices[kMaxLanes];
+  hn::Store(integral.v, DF(), values);
+  for (std::size_t l = 0; l < laneCount(); ++l) indices[l] = wrappedFloorIndex(static_cast<double>(values[l]), size);
+  return {hn::Load(DI(), indices)};
+}
+
+// floor value mod size, exact: the same integers as wrappedFloorIndex.
+HWY_INLINE LaneI wrapTexelIndex(int size, LaneF integral) {
+  constexpr float kMaxLaneCoord = 1073741824.0f;  // 2^30: below it, int32 lanes hold i and i + size
+  if (!hn::AllTrue(DF(), hn::Lt(hn::Abs(integral.v), hn::Set(DF(), kMaxLaneCoord)))) {
+    return wrapTexelIndexEachLane(size, integral);
+  }
+  if ((size & (size - 1)) == 0) {  // a power of two: two's complement AND is floor mod
+    return {hn::And(hn::ConvertTo(DI(), integral.v), hn::Set(DI(), size - 1))};
+  }
+  // i - floor(i / size) size in double: the quotient is within 2^-22 of the true one, and a
+  // non-integer true quotient is at least 1 / size > 2^-22 from the next integer, so the floor
+  // is exact, and so is everything after it.
+  const LaneW i = toWide(integral);
+  const LaneW sizeW(static_cast<double>(size));
+  const LaneW remainder = i - floorOf(i / sizeW) * sizeW;
+  return {hn::ConvertTo(DI(), toNarrowLanes(remainder).v)};
+}
+
+HWY_INLINE LaneI nextTexelIndex(LaneI i, int size) {
+  const auto next = hn::Add(i.v, hn::Set(DI(), 1));
+  return {hn::IfThenZeroElse(hn::Eq(next, hn::Set(DI(), size)), next)};
+}
+
+// texelAt per lane: byte * (1 / 255) from the tiled index
+// ((y / 4) blocksPerRow + x / 4) 16 + (y % 4) 4 + x % 4.
+template <typename L>
+HWY_INLINE Vec4L<LaneF> fetchTexel(const TiledTexture& t, LaneI x, LaneI y) {
+  static_assert(std::is_same_v<L, LaneF>);
+  const DI di;
+  const DU du;
+  const auto three = hn::Set(di, kTexelBlockSide - 1);
+  const auto row = hn::Add(hn::Mul(hn::ShiftRight<2>(y.v), hn::Set(di, t.blocksPerRow * kTexelBlockSide * kTexelBlockSide)),
+                           hn::ShiftLeft<2>(hn::And(y.v, three)));
+  const auto column = hn::Add(hn::ShiftLeft<4>(hn::ShiftRight<2>(x.v)), hn::And(x.v, three));
+  const auto words = hn::BitCast(du, hn::GatherIndex(di, reinterpret_cast<const std::int32_t*>(t.blocks.data()),
+                                                     hn::Add(row, column)));
+  const LaneF scale(1.0f / 255.0f);  // texelAt's T(1) / T(255)
+  const auto channel = [&](auto shift) HWY_ATTR {
+    const auto bytes = hn::And(hn::ShiftRight<decltype(shift)::value>(words), hn::Set(du, 0xFFu));
+    return LaneF(hn::ConvertTo(DF(), hn::BitCast(di, bytes))) * scale;
+  };
+  return Vec4L<LaneF>(channel(std::integral_constant<int, 0>()), channel(std::integral_constant<int, 8>()),
+                      channel(std::integral_constant<int, 16>()), channel(std::integral_constant<int, 24>()));
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace twr
+HWY_AFTER_NAMESPACE();
+
+#include "softrender/output_merge-inl.h"
+#include "softrender/shade-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace twr {
+namespace HWY_NAMESPACE {
+namespace {
+
+// Lanes [0, count) on, the rest off.
+HWY_INLINE LaneMask firstLanes(std::size_t count) { return {hn::FirstN(DF(), count)}; }
+// The lanes whose bit is set in `bits` (bit l = lane l).
+HWY_INLINE LaneMask lanesOf(std::uint64_t bits) {
+  HWY_ALIGN std::int32_t flags[kMaxLanes];
+  for (std::size_t l = 0; l < laneCount(); ++l) flags[l] = static_cast<std::int32_t>((bits >> l) & 1u);
+  return {hn::RebindMask(DF(), hn::Ne(hn::Load(DI(), flags), hn::Zero(DI())))};
+}
+// x, x + 1, ... as double lanes (pixel indices are exact in float).
+HWY_INLINE LaneW pixelColumns(int x) { return toWide(LaneF(hn::Iota(DF(), static_cast<float>(x)))); }
+
+HWY_INLINE InterpolationL<LaneF> broadcastInterpolation(const std::array<double, 3>& atOrigin,
+                                                       const std::array<double, 3>& dx,
+                                                       const std::array<double, 3>& dy,
+                                                       const std::array<float, 3>& zWindow,
+                                                       const std::array<float, 3>& invW) {
+  InterpolationL<LaneF> s;
+  for (std::size_t i = 0; i < 3; ++i) {
+    s.atOrigin[i] = LaneW(atOrigin[i]);
+    s.dx[i] = LaneW(dx[i]);
+    s.dy[i] = LaneW(dy[i]);
+    s.zWindow[i] = LaneF(zWindow[i]);
+    s.invW[i] = LaneF(invW[i]);
+  }
+  return s;
+}
+
+// ---- pass 1: visibility ----
+std::uint64_t Visibility(const TriangleSetup& setup, const std::array<WindowVertex, 3>& window, std::uint32_t slot,
+                         int rowBegin, int rowEnd, Framebuffer& fb, std::uint32_t* slots,
+                         InterpolationSetup& interpolation, bool& covered) {
+  const int yFirst = std::max(setup.y0, rowBegin);
+  const int yLast = std::min(setup.y1, rowEnd - 1);
+  if (yFirst > yLast || setup.x0 > setup.x1) return 0;
+  const DF df;
+  const DU du;
+  const std::size_t lanes = laneCount();
+  const std::size_t width = static_cast<std::size_t>(fb.width);
+  InterpolationL<LaneF> planes;
+  const auto slotLanes = hn::Set(du, slot);
+  std::uint64_t passed = 0;
+  for (int py = yFirst; py <= yLast; ++py) {
+    const Span span = coveredSpan(setup, py);
+    if (span.xBegin >= span.xEnd) continue;
+    if (!covered) {
+      interpolation = makeInterpolationSetup<float>(window, setup);
+      covered = true;
+      planes = broadcastInterpolation(interpolation.atOrigin, interpolation.dx, interpolation.dy,
+                                      interpolation.zWindow, interpolation.invW);
+    }
+    const LaneW pyW(static_cast<double>(py));
+    float* depthRow = &fb.depth[fb.index(0, py)];
+    std::uint32_t* slotRow = slots + static_cast<std::size_t>(py - rowBegin) * width;
+    for (int x = span.xBegin; x < span.xEnd; x += static_cast<int>(lanes)) {
+      const std::size_t count = std::min(lanes, static_cast<std::size_t>(span.xEnd - x));
+      const LaneF depth = pixelWeightsLanes<LaneF>(planes, pixelColumns(x), pyW).depth;
+      // GL_LESS against the stored depth; a vector past the row's end goes through a buffer.
+      HWY_ALIGN float depthBuffer[kMaxLanes];
+      HWY_ALIGN std::uint32_t slotBuffer[kMaxLanes];
+      const bool whole = count == lanes;
+      float* depthAt = whole ? depthRow + x : depthBuffer;
+      std::uint32_t* slotAt = whole ? slotRow + x : slotBuffer;
+      if (!whole) {
+        std::memcpy(depthBuffer, depthRow + x, count * sizeof(float));
+        std::memcpy(slotBuffer, slotRow + x, count * sizeof(std::uint32_t));
+      }
+      const LaneMask pass = firstLanes(count) & (depth < LaneF(hn::LoadU(df, depthAt)));
+      if (!anyOf(pass)) continue;
+      hn::BlendedStore(depth.v, pass.m, df, depthAt);
+      hn::BlendedStore(slotLanes, hn::RebindMask(du, pass.m), du, slotAt);
+      if (!whole) {
+        std::memcpy(depthRow + x, depthBuffer, count * sizeof(float));
+        std::memcpy(slotRow + x, slotBuffer, count * sizeof(std::uint32_t));
+      }
+      passed += hn::CountTrue(df, pass.m);
+    }
+  }
+  return passed;
+}
+
+// ---- pass 2: shading ----
+// One draw item's lanes of a row segment starting at pixel (x, py).
+struct Segment {
+  const std::vector<BinTriangle>* triangles;
+  const std::uint32_t* slots;  // per lane (kNoSlot for lanes of no triangle)
+  std::uint64_t bits;          // this item's lanes
+  int x, py;
+};
+
+// A vertex's varyings as lanes: `at(k)` gives varying float k of each lane's vertex.
+template <typename At>
+HWY_INLINE VertexL<LaneF> vertexLanes(const At& at, bool tangentLighting, int lightCount) {
+  const auto vec3At = [&](int k) HWY_ATTR { return Vec3L<LaneF>(at(k), at(k + 1), at(k + 2)); };
+  VertexL<LaneF> v;
+  v.posWorld = vec3At(kVaryingPosWorld);
+  v.nWorld = vec3At(kVaryingNormal);
+  v.tWorld = vec3At(kVaryingTangent);
+  v.bWorld = vec3At(kVaryingBitangent);
+  v.uv = Vec2L<LaneF>(at(kVaryingUv), at(kVaryingUv + 1));
+  if (tangentLighting) {
+    v.eyeDirTangent = vec3At(kVaryingEyeDirTangent);
+    for (int i = 0; i < lightCount; ++i) {
+      v.lightDirTangent[static_cast<std::size_t>(i)] = vec3At(kVaryingLightDirTangent + 3 * i);
+    }
+  }
+  return v;
+}
+
+// Every lane on one triangle: its data broadcast.
+struct BroadcastVarying {
+  const float* varyings;
+  HWY_INLINE LaneF operator()(int k) const { return LaneF(varyings[k]); }
+};
+// Lanes on several triangles: varyings transposed into columns, column k holding lane l's
+// value at k * kMaxLanes + l.
+struct ColumnVarying {
+  const float* columns;
+  HWY_INLINE LaneF operator()(int k) const {
+    return LaneF(hn::Load(DF(), columns + static_cast<std::size_t>(k) * kMaxLanes));
+  }
+};
+
+template <typename Features>
+void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps, std::uint32_t* rgbaOut) {
+  const DF df;
+  const DI di;
+  const DU du;
+  const std::size_t lanes = laneCount();
+  const bool tangent = Features::kSpace == LightingSpace::Tangent;
+  const int lightCount = item.shade.lightCount;
+  const std::vector<BinTriangle>& triangles = *s.triangles;
+
+  // The first lane's triangle stands in for lanes of other items, so every lane computes
+  // with sane numbers; their results are discarded by the mask.
+  const std::size_t firstLane = static_cast<std::size_t>(__builtin_ctzll(s.bits));
+  const std::uint32_t firstSlot = s.slots[firstLane];
+  bool oneTriangle = true;
+  for (std::size_t l = 0; l < lanes; ++l) {
+    if (((s.bits >> l) & 1u) != 0 && s.slots[l] != firstSlot) oneTriangle = false;
+  }
+
+  InterpolationL<LaneF> planes;
+  std::array<VertexL<LaneF>, 3> vertices;
+  if (oneTriangle) {
+    const BinTriangle& t = triangles[firstSlot];
+    planes = broadcastInterpolation(t.atOrigin, t.dx, t.dy, t.zWindow, t.invW);
+    for (std::size_t c = 0; c < 3; ++c) vertices[c] = vertexLanes(BroadcastVarying{t.varyings[c]}, tangent, lightCount);
+  } else {
+    HWY_ALIGN double planeColumns[5][3][kMaxLanes];
+    HWY_ALIGN float vertexColumns[3][kMaxVaryings * kMaxLanes];
+    const int floats = varyingCount(tangent, lightCount);
+    for (std::size_t l = 0; l < lanes; ++l) {
+      const BinTriangle& t = triangles[((s.bits >> l) & 1u) != 0 ? s.slots[l] : firstSlot];
+      for (std::size_t i = 0; i < 3; ++i) {
+        planeColumns[0][i][l] = t.atOrigin[i];
+        planeColumns[1][i][l] = t.dx[i];
+        planeColumns[2][i][l] = t.dy[i];
+        planeColumns[3][i][l] = t.zWindow[i];
+        planeColumns[4][i][l] = t.invW[i];
+        for (int k = 0; k < floats; ++k) {
+          vertexColumns[i][static_cast<std::size_t>(k) * kMaxLanes + l] = t.varyings[i][k];
+        }
+      }
+    }
+    const DW dw;
+    const std::size_t wide = hn::Lanes(dw);
+    for (std::size_t i = 0; i < 3; ++i) {
+      const auto wideColumn = [&](int which) HWY_ATTR {
+#if HWY_TARGET == HWY_SCALAR
+        return LaneW(hn::Load(dw, planeColumns[which][i]));
+#else
+        return LaneW(hn::Load(dw, planeColumns[which][i]), hn::Load(dw, planeColumns[which][i] + wide));
+#endif
+      };
+      planes.atOrigin[i] = wideColumn(0);
+      planes.dx[i] = wideColumn(1);
+      planes.dy[i] = wideColumn(2);
+      // zWindow and invW are floats: through double and back, exactly.
+      planes.zWindow[i] = toNarrowLanes(wideColumn(3));
+      planes.invW[i] = toNarrowLanes(wideColumn(4));
+      vertices[i] = vertexLanes(ColumnVarying{vertexColumns[i]}, tangent, lightCount);
+    }
+    (void)wide;
+  }
+
+  const PixelWeightsL<LaneF> weights =
+      pixelWeightsLanes<LaneF>(planes, pixelColumns(s.x), LaneW(static_cast<double>(s.py)));
+  const FragmentL<LaneF> fragment =
+      interpolateFragmentLanes<LaneF>(vertices[0], vertices[1], vertices[2], weights, tangent, tangent ? lightCount : 0);
+  const Vec4L<LaneF> colour =
+      shadeFragmentLanes<Features, LaneF>(fragment, item.shade, maps, static_cast<std::nullptr_t*>(nullptr));
+
+  // Output merge: RGBA8 with alpha 255 (geometry drawn).
+  const auto byteOf = [&](LaneF c) HWY_ATTR { return hn::BitCast(du, hn::ConvertTo(di, byteValueOf<LaneF>(c).v)); };
+  const auto word = hn::Or(hn::Or(byteOf(colour.x), hn::ShiftLeft<8>(byteOf(colour.y))),
+                           hn::Or(hn::ShiftLeft<16>(byteOf(colour.z)), hn::Set(du, 0xFF000000u)));
+  hn::BlendedStore(word, hn::RebindMask(du, lanesOf(s.bits).m), du, rgbaOut);
+  (void)df;
+}
+
+using SegmentKernel = void (*)(const Segment&, const ItemState&, const ItemMaps&, std::uint32_t*);
+
+// The kernel of a shader permutation. A debug view is instantiated only for the features it
+// reads (diffuse for Albedo; normal map and lighting space for MappedNormal; lighting space
+// for the two tangent-space directions), so 16 shaded and 15 debug kernels cover every key.
+template <View kView, bool kDiffuse, bool kNormal, bool kSpecular, bool kTangent>
+SegmentKernel kernelOf() {
+  constexpr LightingSpace kSpace = kTangent ? LightingSpace::Tangent : LightingSpace::World;
+  return &ShadeSegment<ShaderFeatures<kDiffuse, kNormal, kSpecular, kSpace, kView>>;
+}
+template <int kIndex>  // diffuse + 2 normal + 4 specular + 8 tangent
+SegmentKernel shadedKernelAt() {
+  return kernelOf<View::Shaded, (kIndex & 1) != 0, (kIndex & 2) != 0, (kIndex & 4) != 0, (kIndex & 8) != 0>();
+}
+template <int... kIndices>
+SegmentKernel shadedKernel(int index, std::integer_sequence<int, kIndices...>) {
+  SegmentKernel kernels[] = {shadedKernelAt<kIndices>()...};
+  return kernels[index];
+}
+template <View kView>
+SegmentKernel debugKernel(bool diffuse, bool normal, bool tangent) {
+  if constexpr (kView == View::Albedo) {
+    return diffuse ? kernelOf<kView, true, false, false, false>() : kernelOf<kView, false, false, false, false>();
+  } else if constexpr (kView == View::MappedNormal) {
+    if (normal) return tangent ? kernelOf<kView, false, true, false, true>() : kernelOf<kView, false, true, false, false>();
+    return tangent ? kernelOf<kView, false, false, false, true>() : kernelOf<kView, false, false, false, false>();
+  } else if constexpr (kView == View::LightTangent || kView == View::EyeTangent) {
+    return tangent ? kernelOf<kView, false, false, false, true>() : kernelOf<kView, false, false, false, false>();
+  } else {
+    return kernelOf<kView, false, false, false, false>();
+  }
+}
+SegmentKernel kernelFor(const ShaderKey& key) {
+  const bool tangent = key.space == LightingSpace::Tangent;
+  const bool d = key.diffuseMap, n = key.normalMap;
+  switch (key.view) {
+    case View::Shaded: break;
+    case View::Albedo: return debugKernel<View::Albedo>(d, n, tangent);
+    case View::Normal: return debugKernel<View::Normal>(d, n, tangent);
+    case View::Tangent: return debugKernel<View::Tangent>(d, n, tangent);
+    case View::Bitangent: return debugKernel<View::Bitangent>(d, n, tangent);
+    case View::MappedNormal: return debugKernel<View::MappedNormal>(d, n, tangent);
+    case View::Uv: return debugKernel<View::Uv>(d, n, tangent);
+    case View::Depth: return debugKernel<View::Depth>(d, n, tangent);
+    case View::LightTangent: return debugKernel<View::LightTangent>(d, n, tangent);
+    case View::EyeTangent: return debugKernel<View::EyeTangent>(d, n, tangent);
+  }
+  const int index = (d ? 1 : 0) + (n ? 2 : 0) + (key.specularMap ? 4 : 0) + (tangent ? 8 : 0);
+  return shadedKernel(index, std::make_integer_sequence<int, 16>());
+}
+
+void ShadeBin(const std::vector<BinTriangle>& triangles, const std::vector<ItemState>& items,
+              const std::vector<ItemMaps>& maps, const std::uint32_t* slots, int rowBegin, int rowEnd,
+              std::uint32_t background, Framebuffer& fb) {
+  const std::size_t lanes = laneCount();
+  const std::size_t width = static_cast<std::size_t>(fb.width);
+  std::vector<SegmentKernel> kernels(items.size());
+  for (std::size_t k = 0; k < items.size(); ++k) kernels[k] = kernelFor(items[k].shaderKey);
+  HWY_ALIGN std::uint32_t slotLanes[kMaxLanes];
+  HWY_ALIGN std::uint32_t itemLanes[kMaxLanes];
+  HWY_ALIGN std::uint32_t rgbaLanes[kMaxLanes];
+  HWY_ALIGN std::uint32_t idLanes[kMaxLanes];
+  for (int py = rowBegin; py < rowEnd; ++py) {
+    const std::uint32_t* row = slots + static_cast<std::size_t>(py - rowBegin) * width;
+    for (std::size_t x = 0; x < width; x += lanes) {
+      const std::size_t inRow = std::min(lanes, width - x);
+      std::uint64_t remaining = 0;
+      for (std::size_t l = 0; l < lanes; ++l) {
+        slotLanes[l] = l < inRow ? row[x + l] : kNoSlot;
+        if (slotLanes[l] == kNoSlot) {
+          rgbaLanes[l] = background;
+          idLanes[l] = kNoTriangle;
+        } else {
+          const BinTriangle& t = triangles[slotLanes[l]];
+          itemLanes[l] = t.item;
+          idLanes[l] = t.triangleId;
+          remaining |= std::uint64_t{1} << l;
+        }
+      }
+      // One pass per draw item present in the segment (usually one).
+      while (remaining != 0) {
+        const std::uint32_t item = itemLanes[__builtin_ctzll(remaining)];
+        std::uint64_t bits = 0;
+        for (std::size_t l = 0; l < lanes; ++l) {
+          if (((remaining >> l) & 1u) != 0 && itemLanes[l] == item) bits |= std::uint64_t{1} << l;
+        }
+        remaining &= ~bits;
+        kernels[item](Segment{&triangles, slotLanes, bits, static_cast<int>(x), py}, items[item], maps[item], rgbaLanes);
+      }
+      const std::size_t origin = fb.index(static_cast<int>(x), py);
+      std::memcpy(&fb.rgba[4 * origin], rgbaLanes, inRow * sizeof(std::uint32_t));
+      std::memcpy(&fb.triangleId[origin], idLanes, inRow * sizeof(std::uint32_t));
+    }
+  }
+}
+
+void PhongPow(const float* x, float s, float* out, std::size_t count) {
+  const std::size_t lanes = laneCount();
+  HWY_ALIGN float in[kMaxLanes];
+  HWY_ALIGN float result[kMaxLanes];
+  for (std::size_t i = 0; i < count; i += lanes) {
+    const std::size_t n = std::min(lanes, count - i);
+    for (std::size_t l = 0; l < lanes; ++l) in[l] = l < n ? x[i + l] : 1.0f;
+    hn::Store(phongPow<LaneF>(LaneF(hn::Load(DF(), in)), s).v, DF(), result);
+    std::memcpy(out + i, result, n * sizeof(float));
+  }
+}
+
+CpuIsa isaOfThisTarget() {
+#if HWY_TARGET == HWY_AVX3
+  return CpuIsa::Avx512;
+#elif HWY_TARGET == HWY_AVX2
+  return CpuIsa::Avx2;
+#elif HWY_TARGET == HWY_SSE4
+  return CpuIsa::Sse4;
+#elif HWY_TARGET == HWY_NEON
+  return CpuIsa::Neon;
+#else
+  return CpuIsa::Scalar;
+#endif
+}
+
+}  // namespace
+
+FastKernels GetKernels() {
+  FastKernels k;
+  k.isa = isaOfThisTarget();
+  k.lanes = static_cast<int>(laneCount());
+  k.visibility = &Visibility;
+  k.shadeBin = &ShadeBin;
+  k.phongPow = &PhongPow;
+  return k;
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace twr
+HWY_AFTER_NAMESPACE();
+
+// Back to the plain namespace for whatever follows (the next target's pass, or HWY_ONCE).
+#undef TWR_LANES_HIGHWAY
+#undef TWR_LANES_BEGIN
+#undef TWR_LANES_END
+#define TWR_LANES_BEGIN namespace twr {
+#define TWR_LANES_END }
+
+#if HWY_ONCE
+namespace twr {
+
+HWY_EXPORT(GetKernels);
+
+FastKernels fastKernelsFor(CpuIsa isa) {
+  if (!cpuIsaSupported(isa)) throw InputError("cpu renderer: --cpu-isa " + cpuIsaUnsupportedReason(isa));
+  if (isa == CpuIsa::Auto) return HWY_DYNAMIC_DISPATCH(GetKernels)();
+  // A named target: its namespace's kernels directly (each exists when HWY_TARGETS has it).
+  switch (highwayTargetOf(isa)) {
+#if HWY_TARGETS & HWY_AVX3
+    case HWY_AVX3: return N_AVX3::GetKernels();
+#endif
+#if HWY_TARGETS & HWY_AVX2
+    case HWY_AVX2: return N_AVX2::GetKernels();
+#endif
+#if HWY_TARGETS & HWY_SSE4
+    case HWY_SSE4: return N_SSE4::GetKernels();
+#endif
+#if HWY_TARGETS & HWY_NEON
+    case HWY_NEON: return N_NEON::GetKernels();
+#endif
+#if HWY_TARGETS & HWY_EMU128
+    case HWY_EMU128: return N_EMU128::GetKernels();
+#endif
+#if HWY_TARGETS & HWY_SCALAR
+    case HWY_SCALAR: return N_SCALAR::GetKernels();
+#endif
+    default: break;
+  }
+  throw InputError("cpu renderer: --cpu-isa " + std::string(toString(isa)) + ": no kernels compiled for it");
+}
+
+TiledTexture makeTiledTexture(const Texture& texture) {
+  TiledTexture out;
+  out.width = texture.width;
+  out.height = texture.height;
+  out.blocksPerRow = (texture.width + kTexelBlockSide - 1) / kTexelBlockSide;
+  const int blockRows = (texture.height + kTexelBlockSide - 1) / kTexelBlockSide;
+  out.blocks.resize(static_cast<std::size_t>(out.blocksPerRow) * static_cast<std::size_t>(blockRows));
+  for (int y = 0; y < texture.height; ++y) {
+    for (int x = 0; x < texture.width; ++x) {
+      TexelBlock& block = out.blocks[static_cast<std::size_t>(y / kTexelBlockSide) * static_cast<std::size_t>(out.blocksPerRow) +
+                                     static_cast<std::size_t>(x / kTexelBlockSide)];
+      std::memcpy(&block.texels[static_cast<std::size_t>((y % kTexelBlockSide) * kTexelBlockSide + x % kTexelBlockSide)],
+                  texture.texel(x, y), sizeof(std::uint32_t));
+    }
+  }
+  return out;
+}
+
+}  // namespace twr
+#endif  // HWY_ONCE

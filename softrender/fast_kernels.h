@@ -1,0 +1,109 @@
+// The fast path's kernels, run per bin of rows as a visibility buffer, compiled by Highway for
+// every SIMD target (AVX-512, AVX2, SSE4, NEON, scalar) and picked at run time:
+//   1. visibility, per triangle in submission order: each row's covered span (the teaching
+//      rasterizer's coveredSpan), its pixels a vector of lanes at a time: the window depth
+//      from the double barycentrics (pixelWeightsLanes), GL_LESS against the depth buffer; a
+//      passing pixel takes the triangle's depth and its slot in the bin's slot buffer;
+//   2. shading, once per pixel that ended with a slot, a vector of pixels of a row at a time,
+//      grouped by draw item: the shared sources interpolate-inl.h, shade-inl.h (with
+//      texture_sample-inl.h and phong_pow-inl.h) and output_merge-inl.h instantiated for
+//      the target's float vector, reading the slot's triangle by broadcast when all lanes
+//      share one and lane by lane otherwise; colour and triangle id are written.
+// The last triangle to pass the depth test at a pixel is the one whose shading the teaching
+// path leaves there, and shading depends only on the triangle and the pixel, so the image is
+// the same bit for bit (tests/softrender/test_fast_path.cpp, on every target).
+#pragma once
+
+#include "scene/conventions.h"
+#include "scene/texture.h"
+#include "softrender/cpu_renderer.h"
+#include "softrender/draw_list.h"
+#include "softrender/framebuffer.h"
+#include "softrender/interpolate.h"
+#include "softrender/setup.h"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace twr {
+
+// A vertex's varyings as the fast path stores them: floats in this order (offsets in floats).
+inline constexpr int kVaryingPosWorld = 0;
+inline constexpr int kVaryingNormal = 3;
+inline constexpr int kVaryingTangent = 6;
+inline constexpr int kVaryingBitangent = 9;
+inline constexpr int kVaryingUv = 12;
+inline constexpr int kVaryingEyeDirTangent = 14;    // tangent lighting space only
+inline constexpr int kVaryingLightDirTangent = 17;  // light i at 17 + 3 i, tangent lighting only
+inline constexpr int kMaxVaryings = kVaryingLightDirTangent + 3 * kMaxLights;  // 41
+// Floats per vertex: 14 in world lighting space, 17 + 3 lightCount in tangent space.
+inline int varyingCount(bool tangentLighting, int lightCount) {
+  return tangentLighting ? kVaryingLightDirTangent + 3 * lightCount : kVaryingEyeDirTangent;
+}
+
+// No triangle in a bin's slot buffer.
+inline constexpr std::uint32_t kNoSlot = 0xFFFFFFFFu;
+
+// One triangle of a bin as the shading pass reads it.
+struct BinTriangle {
+  std::array<double, 3> atOrigin{}, dx{}, dy{};  // InterpolationSetup's barycentric planes
+  std::array<float, 3> zWindow{}, invW{};
+  std::uint32_t triangleId = 0;
+  std::uint32_t item = 0;                     // index into the frame's ItemState list
+  std::array<const float*, 3> varyings{};     // each vertex's varyings, submission order
+};
+
+// A texture as the kernels read it: the RGBA8 texels of each 4 x 4 block of texels stored
+// together in one 64-byte block (one cache line), blocks in rows, sides padded up to multiples
+// of 4. A bilinear footprint then touches one to four cache lines near each other instead of
+// two texture rows far apart.
+inline constexpr int kTexelBlockSide = 4;
+struct alignas(64) TexelBlock {
+  std::array<std::uint32_t, kTexelBlockSide * kTexelBlockSide> texels{};
+};
+struct TiledTexture {
+  int width = 0, height = 0;  // texels, as the source texture
+  int blocksPerRow = 0;
+  std::vector<TexelBlock> blocks;
+};
+TiledTexture makeTiledTexture(const Texture& texture);
+
+// The tiled maps of one draw item (null where the shading uniforms have no such map).
+struct ItemMaps {
+  const TiledTexture* diffuse = nullptr;
+  const TiledTexture* normal = nullptr;
+  const TiledTexture* specular = nullptr;
+};
+
+// One target's kernels.
+struct FastKernels {
+  CpuIsa isa = CpuIsa::Scalar;  // the target they were compiled for
+  int lanes = 1;                // floats per vector on it
+
+  // Visibility pass for one triangle over rows [rowBegin, rowEnd) (exclusive end). `slots`
+  // holds the bin's rows: pixel (px, py) at (py - rowBegin) * fb.width + px. On the first
+  // covered pixel it computes `interpolation` = makeInterpolationSetup(window, setup) and sets
+  // `covered`; returns how many pixels passed the depth test.
+  std::uint64_t (*visibility)(const TriangleSetup& setup, const std::array<WindowVertex, 3>& window,
+                              std::uint32_t slot, int rowBegin, int rowEnd, Framebuffer& fb, std::uint32_t* slots,
+                              InterpolationSetup& interpolation, bool& covered) = nullptr;
+
+  // Shading pass over rows [rowBegin, rowEnd), writing colour and triangle id of every pixel:
+  // for a pixel with a slot, triangles[slot] shaded with items[triangles[slot].item] and that
+  // item's tiled maps; for one without, the background word and kNoTriangle.
+  void (*shadeBin)(const std::vector<BinTriangle>& triangles, const std::vector<ItemState>& items,
+                   const std::vector<ItemMaps>& maps, const std::uint32_t* slots, int rowBegin, int rowEnd,
+                   std::uint32_t background, Framebuffer& fb) = nullptr;
+
+  // phongPow of x[0, count) with this target's vectors, into out (for the tests: the same
+  // bits as powPositive).
+  void (*phongPow)(const float* x, float s, float* out, std::size_t count) = nullptr;
+};
+
+// The kernels of `isa` (Auto: Highway's dynamic dispatch picks the best target this CPU
+// runs). Throws InputError for a target this binary or CPU cannot run (cpuIsaSupported).
+FastKernels fastKernelsFor(CpuIsa isa);
+
+}  // namespace twr

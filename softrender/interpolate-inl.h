@@ -1,0 +1,123 @@
+// Stage 5, interpolation, over any lane type (interpolate.h has the formulas): barycentrics
+// and window depth in double, perspective weights rounded once to the lane type, then every
+// varying as a0 p0 + a1 p1 + a2 p2 summed from the left. Shared source, included plainly and
+// per Highway target (softrender/lanes.h).
+
+#if defined(TWR_LANES_HIGHWAY)
+#if defined(TWR_INTERPOLATE_INL_TARGET) == defined(HWY_TARGET_TOGGLE)
+#ifdef TWR_INTERPOLATE_INL_TARGET
+#undef TWR_INTERPOLATE_INL_TARGET
+#else
+#define TWR_INTERPOLATE_INL_TARGET
+#endif
+#define TWR_INTERPOLATE_INL_EMIT
+#endif
+#elif !defined(TWR_INTERPOLATE_INL_PLAIN)
+#define TWR_INTERPOLATE_INL_PLAIN
+#define TWR_INTERPOLATE_INL_EMIT
+#endif
+
+#ifdef TWR_INTERPOLATE_INL_EMIT
+#undef TWR_INTERPOLATE_INL_EMIT
+
+#include "softrender/lanes.h"
+
+#include <array>
+
+TWR_LANES_BEGIN
+
+#if defined(TWR_LANES_HIGHWAY)
+// The fast path's lanes of one triangle's interpolation setup (each lane may belong to
+// another triangle), of its vertices' varyings, of the weights and of the fragment.
+template <typename L>
+struct InterpolationL {
+  std::array<WideOf<L>, 3> atOrigin, dx, dy;  // lambda_i = atOrigin + dx px + dy py
+  std::array<L, 3> zWindow, invW;
+};
+template <typename L>
+struct VertexL {
+  Vec3L<L> posWorld, nWorld, tWorld, bWorld;
+  Vec2L<L> uv;
+  std::array<Vec3L<L>, kMaxLights> lightDirTangent;  // tangent lighting space only
+  Vec3L<L> eyeDirTangent;                            // tangent lighting space only
+};
+template <typename L>
+struct PixelWeightsL {
+  std::array<L, 3> screen, perspective;
+  L depth;
+};
+template <typename L>
+struct FragmentL {
+  Vec3L<L> posWorld, nWorld, tWorld, bWorld;
+  Vec2L<L> uv;
+  std::array<Vec3L<L>, kMaxLights> lightDirTangent;
+  Vec3L<L> eyeDirTangent;
+  L depth;
+};
+#else
+// Plainly the teaching path's own types (interpolate.h).
+template <typename L>
+using InterpolationL = InterpolationSetupT<L>;
+template <typename L>
+using VertexL = ClipVertexT<L>;
+template <typename L>
+using PixelWeightsL = PixelWeightsT<L>;
+template <typename L>
+using FragmentL = FragmentT<L>;
+#endif
+
+// lambda_i at pixel (px, py), depth = sum lambda_i z_i from 0 (linear in screen space,
+// clamped to [0, 1], 1 if not finite), p_i = (lambda_i / w_i) / sum_k (lambda_k / w_k) (the
+// screen weight where the sum is not positive: a centre a hair outside the float triangle).
+template <typename L>
+inline PixelWeightsL<L> pixelWeightsLanes(const InterpolationL<L>& s, const WideOf<L>& px, const WideOf<L>& py) {
+  using W = WideOf<L>;
+  using S = ScalarOf<L>;
+  PixelWeightsL<L> w;
+  std::array<W, 3> lambda, perspective;
+  W perspectiveSum(0.0), depth(0.0);
+  for (std::size_t i = 0; i < 3; ++i) {
+    lambda[i] = (W(s.atOrigin[i]) + W(s.dx[i]) * px) + W(s.dy[i]) * py;
+    w.screen[i] = toNarrow<L>(lambda[i]);
+    depth += lambda[i] * toWide(s.zWindow[i]);
+    perspective[i] = lambda[i] * toWide(s.invW[i]);
+    perspectiveSum += perspective[i];
+  }
+  const auto positive = perspectiveSum > W(0.0);
+  for (std::size_t i = 0; i < 3; ++i) {
+    w.perspective[i] = toNarrow<L>(select(positive, perspective[i] / perspectiveSum, lambda[i]));
+  }
+  const L clamped = toNarrow<L>(depth);
+  const L zero(S(0)), one(S(1));
+  w.depth = select(isFinite(clamped), minOf(maxOf(clamped, zero), one), one);
+  return w;
+}
+
+// Perspective-correct varyings. Tangent-space light and eye directions only in tangent
+// lighting space, for the first `tangentLightCount` lights (zero otherwise).
+template <typename L>
+inline FragmentL<L> interpolateFragmentLanes(const VertexL<L>& v0, const VertexL<L>& v1, const VertexL<L>& v2,
+                                             const PixelWeightsL<L>& weights, bool tangentLighting,
+                                             int tangentLightCount) {
+  using S = ScalarOf<L>;
+  const L p0 = weights.perspective[0], p1 = weights.perspective[1], p2 = weights.perspective[2];
+  FragmentL<L> f;
+  f.posWorld = v0.posWorld * p0 + v1.posWorld * p1 + v2.posWorld * p2;
+  f.nWorld = v0.nWorld * p0 + v1.nWorld * p1 + v2.nWorld * p2;
+  f.tWorld = v0.tWorld * p0 + v1.tWorld * p1 + v2.tWorld * p2;
+  f.bWorld = v0.bWorld * p0 + v1.bWorld * p1 + v2.bWorld * p2;
+  f.uv = v0.uv * p0 + v1.uv * p1 + v2.uv * p2;
+  const Vec3L<L> zero3(L(S(0)));
+  for (std::size_t k = 0; k < static_cast<std::size_t>(kMaxLights); ++k) {
+    f.lightDirTangent[k] = tangentLighting && static_cast<int>(k) < tangentLightCount
+                               ? v0.lightDirTangent[k] * p0 + v1.lightDirTangent[k] * p1 + v2.lightDirTangent[k] * p2
+                               : zero3;
+  }
+  f.eyeDirTangent = tangentLighting ? v0.eyeDirTangent * p0 + v1.eyeDirTangent * p1 + v2.eyeDirTangent * p2 : zero3;
+  f.depth = weights.depth;
+  return f;
+}
+
+TWR_LANES_END
+
+#endif  // TWR_INTERPOLATE_INL_EMIT

@@ -1,0 +1,300 @@
+// The fast path's lane type: LaneF, one Highway vector of floats (one pixel per lane), with
+// the operations softrender/lanes.h lists, so the shared shading source compiles for it
+// exactly as for float. Included once per Highway target by fast_kernels.cpp, inside
+// twr::HWY_NAMESPACE; nothing here is ever compiled for the static target alone.
+//
+// Lane counts: AVX-512 16, AVX2 8, SSE4, NEON and EMU128 4, SCALAR 1. WideOf<LaneF> is LaneW,
+// the same lanes as doubles: two double vectors (the lower and upper halves), or one on the
+// one-lane SCALAR target.
+//
+// Every operation maps to one IEEE operation per lane (Highway's Add, Mul, Div, Sqrt, Floor,
+// Round, ConvertTo, PromoteTo, DemoteTo are exact or correctly rounded on every target); Max
+// and Min are deliberately not used, because targets differ in what they return for NaN.
+
+#if defined(TWR_LANES_HWY_INL_TARGET) == defined(HWY_TARGET_TOGGLE)
+#ifdef TWR_LANES_HWY_INL_TARGET
+#undef TWR_LANES_HWY_INL_TARGET
+#else
+#define TWR_LANES_HWY_INL_TARGET
+#endif
+
+#include <hwy/highway.h>
+
+#include <cstdint>
+
+#include "softrender/lanes.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace twr {
+namespace HWY_NAMESPACE {
+
+namespace hn = hwy::HWY_NAMESPACE;
+
+using DF = hn::ScalableTag<float>;       // the lanes of one LaneF
+using DI = hn::RebindToSigned<DF>;       // the same lanes as int32
+using DU = hn::RebindToUnsigned<DF>;     // ... and uint32
+#if HWY_TARGET == HWY_SCALAR
+inline constexpr bool kWideHalves = false;
+using DW = hn::Rebind<double, DF>;       // one double
+#else
+inline constexpr bool kWideHalves = true;
+using DH = hn::Half<DF>;                 // half the float lanes
+using DW = hn::Rebind<double, DH>;       // those lanes as doubles: one full double vector
+#endif
+using DW64 = hn::RebindToUnsigned<DW>;   // the doubles' bits
+
+// Lanes per LaneF on this target.
+inline size_t laneCount() { return hn::Lanes(DF()); }
+
+struct LaneMask {
+  hn::Mask<DF> m;
+};
+HWY_INLINE LaneMask operator&(LaneMask a, LaneMask b) { return {hn::And(a.m, b.m)}; }
+HWY_INLINE LaneMask operator|(LaneMask a, LaneMask b) { return {hn::Or(a.m, b.m)}; }
+HWY_INLINE LaneMask operator!(LaneMask a) { return {hn::Not(a.m)}; }
+HWY_INLINE bool anyOf(LaneMask a) { return !hn::AllFalse(DF(), a.m); }
+HWY_INLINE bool allOf(LaneMask a) { return hn::AllTrue(DF(), a.m); }
+
+struct LaneF {
+  hn::Vec<DF> v;
+  LaneF() = default;
+  HWY_INLINE LaneF(hn::Vec<DF> raw) : v(raw) {}
+  HWY_INLINE LaneF(float x) : v(hn::Set(DF(), x)) {}  // broadcast, as float(x) for float lanes
+};
+HWY_INLINE LaneF operator+(LaneF a, LaneF b) { return {hn::Add(a.v, b.v)}; }
+HWY_INLINE LaneF operator-(LaneF a, LaneF b) { return {hn::Sub(a.v, b.v)}; }
+HWY_INLINE LaneF operator*(LaneF a, LaneF b) { return {hn::Mul(a.v, b.v)}; }
+HWY_INLINE LaneF operator/(LaneF a, LaneF b) { return {hn::Div(a.v, b.v)}; }
+HWY_INLINE LaneF& operator+=(LaneF& a, LaneF b) { return a = a + b; }
+HWY_INLINE LaneMask operator>(LaneF a, LaneF b) { return {hn::Gt(a.v, b.v)}; }
+HWY_INLINE LaneMask operator<(LaneF a, LaneF b) { return {hn::Lt(a.v, b.v)}; }
+HWY_INLINE LaneMask operator>=(LaneF a, LaneF b) { return {hn::Ge(a.v, b.v)}; }
+HWY_INLINE LaneF select(LaneMask m, LaneF a, LaneF b) { return {hn::IfThenElse(m.m, a.v, b.v)}; }
+HWY_INLINE LaneF maxOf(LaneF a, LaneF b) { return select(a > b, a, b); }
+HWY_INLINE LaneF minOf(LaneF a, LaneF b) { return select(a < b, a, b); }
+HWY_INLINE LaneF sqrtOf(LaneF a) { return {hn::Sqrt(a.v)}; }
+HWY_INLINE LaneF floorOf(LaneF a) { return {hn::Floor(a.v)}; }
+HWY_INLINE LaneF truncOf(LaneF a) { return {hn::Trunc(a.v)}; }
+HWY_INLINE LaneMask isFinite(LaneF a) { return {hn::IsFinite(a.v)}; }
+HWY_INLINE LaneMask isNaN(LaneF a) { return {hn::IsNaN(a.v)}; }
+
+struct LaneI {
+  hn::Vec<DI> v;
+  LaneI() = default;
+  HWY_INLINE LaneI(hn::Vec<DI> raw) : v(raw) {}
+  HWY_INLINE LaneI(std::int32_t x) : v(hn::Set(DI(), x)) {}
+};
+HWY_INLINE LaneI select(LaneMask m, LaneI a, LaneI b) {
+  return {hn::IfThenElse(hn::RebindMask(DI(), m.m), a.v, b.v)};
+}
+
+// Double lanes: the lanes of one LaneF, lower half in lo, upper half in hi.
+struct LaneWMask {
+  hn::Mask<DW> lo;
+#if HWY_TARGET != HWY_SCALAR
+  hn::Mask<DW> hi;
+#endif
+};
+struct LaneW {
+  hn::Vec<DW> lo;
+#if HWY_TARGET != HWY_SCALAR
+  hn::Vec<DW> hi;
+#endif
+  LaneW() = default;
+#if HWY_TARGET == HWY_SCALAR
+  HWY_INLINE LaneW(hn::Vec<DW> l) : lo(l) {}
+  HWY_INLINE LaneW(double x) : lo(hn::Set(DW(), x)) {}
+#else
+  HWY_INLINE LaneW(hn::Vec<DW> l, hn::Vec<DW> h) : lo(l), hi(h) {}
+  HWY_INLINE LaneW(double x) : lo(hn::Set(DW(), x)), hi(hn::Set(DW(), x)) {}
+#endif
+};
+#if HWY_TARGET == HWY_SCALAR
+#define TWR_WIDE_OP(name, expr) \
+  HWY_INLINE LaneW name(LaneW a, LaneW b) { return {expr(a.lo, b.lo)}; }
+#define TWR_WIDE_CMP(name, expr) \
+  HWY_INLINE LaneWMask name(LaneW a, LaneW b) { return {expr(a.lo, b.lo)}; }
+#else
+#define TWR_WIDE_OP(name, expr) \
+  HWY_INLINE LaneW name(LaneW a, LaneW b) { return {expr(a.lo, b.lo), expr(a.hi, b.hi)}; }
+#define TWR_WIDE_CMP(name, expr) \
+  HWY_INLINE LaneWMask name(LaneW a, LaneW b) { return {expr(a.lo, b.lo), expr(a.hi, b.hi)}; }
+#endif
+TWR_WIDE_OP(operator+, hn::Add)
+TWR_WIDE_OP(operator-, hn::Sub)
+TWR_WIDE_OP(operator*, hn::Mul)
+TWR_WIDE_OP(operator/, hn::Div)
+TWR_WIDE_CMP(operator>, hn::Gt)
+TWR_WIDE_CMP(operator<, hn::Lt)
+#undef TWR_WIDE_OP
+#undef TWR_WIDE_CMP
+HWY_INLINE LaneW& operator+=(LaneW& a, LaneW b) { return a = a + b; }
+
+HWY_INLINE LaneW select(LaneWMask m, LaneW a, LaneW b) {
+#if HWY_TARGET == HWY_SCALAR
+  return {hn::IfThenElse(m.lo, a.lo, b.lo)};
+#else
+  return {hn::IfThenElse(m.lo, a.lo, b.lo), hn::IfThenElse(m.hi, a.hi, b.hi)};
+#endif
+}
+HWY_INLINE LaneW maxOf(LaneW a, LaneW b) { return select(a > b, a, b); }
+HWY_INLINE LaneW minOf(LaneW a, LaneW b) { return select(a < b, a, b); }
+HWY_INLINE LaneWMask isNaN(LaneW a) {
+#if HWY_TARGET == HWY_SCALAR
+  return {hn::IsNaN(a.lo)};
+#else
+  return {hn::IsNaN(a.lo), hn::IsNaN(a.hi)};
+#endif
+}
+HWY_INLINE LaneW floorOf(LaneW a) {
+#if HWY_TARGET == HWY_SCALAR
+  return {hn::Floor(a.lo)};
+#else
+  return {hn::Floor(a.lo), hn::Floor(a.hi)};
+#endif
+}
+HWY_INLINE LaneW roundEvenOf(LaneW a) {
+#if HWY_TARGET == HWY_SCALAR
+  return {hn::Round(a.lo)};
+#else
+  return {hn::Round(a.lo), hn::Round(a.hi)};
+#endif
+}
+
+// Float lanes to double lanes (exact) and back (rounded to nearest).
+HWY_INLINE LaneW toWide(LaneF a) {
+#if HWY_TARGET == HWY_SCALAR
+  return {hn::PromoteTo(DW(), a.v)};
+#else
+  return {hn::PromoteTo(DW(), hn::LowerHalf(DH(), a.v)), hn::PromoteTo(DW(), hn::UpperHalf(DH(), a.v))};
+#endif
+}
+HWY_INLINE LaneF toNarrowLanes(LaneW a) {
+#if HWY_TARGET == HWY_SCALAR
+  return {hn::DemoteTo(DF(), a.lo)};
+#else
+  return {hn::Combine(DF(), hn::DemoteTo(DH(), a.hi), hn::DemoteTo(DH(), a.lo))};
+#endif
+}
+
+// Bit-level helpers of lanes.h's mantissaOf / exponentOf / exp2Integer, lane by lane (each
+// exact, so the same bits as the scalar versions).
+HWY_INLINE hn::Vec<DW> mantissaOfHalf(hn::Vec<DW> x) {
+  using namespace doublebits;
+  const DW64 du;
+  const auto bits = hn::BitCast(du, x);
+  return hn::BitCast(DW(), hn::Or(hn::And(bits, hn::Set(du, kMantissaMask)), hn::Set(du, kOneBits)));
+}
+HWY_INLINE hn::Vec<DW> exponentOfHalf(hn::Vec<DW> x) {
+  using namespace doublebits;
+  const DW64 du;
+  // The biased exponent (an integer below 2^11) in the low bits of 2^52's mantissa, then
+  // 2^52 subtracted: the integer as a double, exactly.
+  const auto biased = hn::And(hn::ShiftRight<kMantissaBits>(hn::BitCast(du, x)), hn::Set(du, kExponentMask));
+  const auto asDouble = hn::BitCast(DW(), hn::Or(biased, hn::BitCast(du, hn::Set(DW(), kTwoTo52))));
+  return hn::Sub(hn::Sub(asDouble, hn::Set(DW(), kTwoTo52)), hn::Set(DW(), static_cast<double>(kExponentBias)));
+}
+HWY_INLINE hn::Vec<DW> exp2IntegerHalf(hn::Vec<DW> k) {
+  using namespace doublebits;
+  const DW64 du;
+  // k + bias (an integer in [1, 2046]) in the low mantissa bits of 2^52 + k + bias, shifted
+  // into the exponent field; the bits above it shift out.
+  const auto biased = hn::Add(hn::Add(k, hn::Set(DW(), static_cast<double>(kExponentBias))), hn::Set(DW(), kTwoTo52));
+  return hn::BitCast(DW(), hn::ShiftLeft<kMantissaBits>(hn::BitCast(du, biased)));
+}
+#if HWY_TARGET == HWY_SCALAR
+HWY_INLINE LaneW mantissaOf(LaneW x) { return {mantissaOfHalf(x.lo)}; }
+HWY_INLINE LaneW exponentOf(LaneW x) { return {exponentOfHalf(x.lo)}; }
+HWY_INLINE LaneW exp2Integer(LaneW k) { return {exp2IntegerHalf(k.lo)}; }
+#else
+HWY_INLINE LaneW mantissaOf(LaneW x) { return {mantissaOfHalf(x.lo), mantissaOfHalf(x.hi)}; }
+HWY_INLINE LaneW exponentOf(LaneW x) { return {exponentOfHalf(x.lo), exponentOfHalf(x.hi)}; }
+HWY_INLINE LaneW exp2Integer(LaneW k) { return {exp2IntegerHalf(k.lo), exp2IntegerHalf(k.hi)}; }
+#endif
+
+// Small vectors of lanes, with GLM's componentwise operators (same order, same roundings).
+template <typename L>
+struct Vec2L {
+  L x, y;
+  Vec2L() = default;
+  HWY_INLINE explicit Vec2L(L s) : x(s), y(s) {}
+  HWY_INLINE Vec2L(L x_, L y_) : x(x_), y(y_) {}
+};
+template <typename L>
+struct Vec3L {
+  L x, y, z;
+  Vec3L() = default;
+  HWY_INLINE explicit Vec3L(L s) : x(s), y(s), z(s) {}
+  HWY_INLINE Vec3L(L x_, L y_, L z_) : x(x_), y(y_), z(z_) {}
+  // A uniform broadcast to every lane.
+  HWY_INLINE explicit Vec3L(const glm::vec3& v) : x(v.x), y(v.y), z(v.z) {}
+};
+template <typename L>
+struct Vec4L {
+  L x, y, z, w;
+  Vec4L() = default;
+  HWY_INLINE explicit Vec4L(L s) : x(s), y(s), z(s), w(s) {}
+  HWY_INLINE Vec4L(L x_, L y_, L z_, L w_) : x(x_), y(y_), z(z_), w(w_) {}
+  HWY_INLINE Vec4L(const Vec3L<L>& v, L w_) : x(v.x), y(v.y), z(v.z), w(w_) {}
+};
+template <typename L>
+HWY_INLINE Vec2L<L> operator+(const Vec2L<L>& a, const Vec2L<L>& b) { return {a.x + b.x, a.y + b.y}; }
+template <typename L>
+HWY_INLINE Vec2L<L> operator*(const Vec2L<L>& a, L s) { return {a.x * s, a.y * s}; }
+template <typename L>
+HWY_INLINE Vec3L<L> operator+(const Vec3L<L>& a, const Vec3L<L>& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+template <typename L>
+HWY_INLINE Vec3L<L> operator-(const Vec3L<L>& a, const Vec3L<L>& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+template <typename L>
+HWY_INLINE Vec3L<L> operator*(const Vec3L<L>& a, const Vec3L<L>& b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
+template <typename L>
+HWY_INLINE Vec3L<L> operator*(const Vec3L<L>& a, L s) { return {a.x * s, a.y * s, a.z * s}; }
+template <typename L>
+HWY_INLINE Vec3L<L> operator*(L s, const Vec3L<L>& a) { return {s * a.x, s * a.y, s * a.z}; }
+template <typename L>
+HWY_INLINE Vec3L<L> operator+(const Vec3L<L>& a, L s) { return {a.x + s, a.y + s, a.z + s}; }
+template <typename L>
+HWY_INLINE Vec3L<L> operator-(const Vec3L<L>& a, L s) { return {a.x - s, a.y - s, a.z - s}; }
+template <typename L>
+HWY_INLINE Vec3L<L>& operator+=(Vec3L<L>& a, const Vec3L<L>& b) { return a = a + b; }
+template <typename L>
+HWY_INLINE Vec4L<L> operator+(const Vec4L<L>& a, const Vec4L<L>& b) {
+  return {a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w};
+}
+template <typename L>
+HWY_INLINE Vec4L<L> operator*(const Vec4L<L>& a, L s) { return {a.x * s, a.y * s, a.z * s, a.w * s}; }
+template <typename L>
+HWY_INLINE Vec4L<L> operator*(L s, const Vec4L<L>& a) { return {s * a.x, s * a.y, s * a.z, s * a.w}; }
+
+}  // namespace HWY_NAMESPACE
+
+// The fast path's lane traits (specialising twr::LaneTraits of lanes.h).
+template <>
+struct LaneTraits<HWY_NAMESPACE::LaneF> {
+  using Scalar = float;
+  using Wide = HWY_NAMESPACE::LaneW;
+  using Mask = HWY_NAMESPACE::LaneMask;
+  using Int = HWY_NAMESPACE::LaneI;
+};
+
+namespace HWY_NAMESPACE {
+template <typename L>
+HWY_INLINE L toNarrow(LaneW a);
+template <>
+HWY_INLINE LaneF toNarrow<LaneF>(LaneW a) {
+  return toNarrowLanes(a);
+}
+template <typename L>
+HWY_INLINE L splat(float a) {
+  return L(a);
+}
+template <typename L>
+HWY_INLINE LaneW wideSplat(double a) {
+  return LaneW(a);
+}
+}  // namespace HWY_NAMESPACE
+
+}  // namespace twr
+HWY_AFTER_NAMESPACE();
+
+#endif  // TWR_LANES_HWY_INL_TARGET toggle

@@ -1,0 +1,80 @@
+// The Phong exponent x^s of the float pipeline over any lane type: phong_pow.h describes the
+// method (2^(s log2 x) in double, every operation written out). Shared source, included
+// plainly and per Highway target (softrender/lanes.h).
+
+#if defined(TWR_LANES_HIGHWAY)
+#if defined(TWR_PHONG_POW_INL_TARGET) == defined(HWY_TARGET_TOGGLE)
+#ifdef TWR_PHONG_POW_INL_TARGET
+#undef TWR_PHONG_POW_INL_TARGET
+#else
+#define TWR_PHONG_POW_INL_TARGET
+#endif
+#define TWR_PHONG_POW_INL_EMIT
+#endif
+#elif !defined(TWR_PHONG_POW_INL_PLAIN)
+#define TWR_PHONG_POW_INL_PLAIN
+#define TWR_PHONG_POW_INL_EMIT
+#endif
+
+#ifdef TWR_PHONG_POW_INL_EMIT
+#undef TWR_PHONG_POW_INL_EMIT
+
+#include "softrender/lanes.h"
+#include "softrender/phong_pow.h"
+
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+TWR_LANES_BEGIN
+
+// x^s in double lanes, for x a positive normal double and s >= 0 (phong_pow.h).
+template <typename W>
+inline W powPositiveWide(W x, W s) {
+  using namespace phongpow;
+  W m = mantissaOf(x);  // x = m 2^e, m in [1, 2)
+  W e = exponentOf(x);
+  const auto halve = m > W(kSqrt2);  // m in [sqrt(1/2), sqrt(2)) keeps |t| small
+  m = select(halve, m * W(0.5), m);
+  e = select(halve, e + W(1.0), e);
+  const W t = (m - W(1.0)) / (m + W(1.0));
+  const W t2 = t * t;
+  W series(kLog2Coefficients[kLog2Terms - 1]);
+  for (int k = kLog2Terms - 2; k >= 0; --k) series = series * t2 + W(kLog2Coefficients[static_cast<std::size_t>(k)]);
+  const W log2x = e + t * series;
+
+  W y = s * log2x;
+  y = select(isNaN(y), W(0.0), y);  // infinity * 0
+  y = minOf(maxOf(y, W(-kMaxExponent)), W(kMaxExponent));
+  const W k = roundEvenOf(y);
+  const W f = y - k;  // exact: |f| <= 1/2
+  W p(kExp2Coefficients[kExp2Terms - 1]);
+  for (int n = kExp2Terms - 2; n >= 0; --n) p = p * f + W(kExp2Coefficients[static_cast<std::size_t>(n)]);
+  return p * exp2Integer(k);
+}
+
+// pow(x, s) for the Phong term: 0^s = 0 for s > 0 and 0^0 = 1 (both renderers agree on it),
+// +inf^s = +inf for s > 0. Float lanes: powPositiveWide, rounded once to float. The reference
+// (double) uses libm's pow: it is the ground truth, not a twin of the float bits.
+template <typename L>
+inline L phongPow(L x, ScalarOf<L> s) {
+  using S = ScalarOf<L>;
+  if constexpr (std::is_same_v<L, double>) {
+    if (!(x > 0.0)) return s > 0.0 ? 0.0 : 1.0;
+    return std::pow(x, s);
+  } else {
+    const S infinity = std::numeric_limits<S>::infinity();
+    const auto positive = x > L(S(0));
+    const auto infinite = positive & !(x < L(infinity));
+    // Lanes not computed hold 1, so nothing below sees a zero, a NaN or an infinity.
+    const L finiteX = select(positive & !infinite, x, L(S(1)));
+    const L powered = toNarrow<L>(powPositiveWide(toWide(finiteX), wideSplat<L>(static_cast<double>(s))));
+    const L zeroCase(s > S(0) ? S(0) : S(1));
+    const L infCase(s > S(0) ? infinity : S(1));
+    return select(infinite, infCase, select(positive, powered, zeroCase));
+  }
+}
+
+TWR_LANES_END
+
+#endif  // TWR_PHONG_POW_INL_EMIT

@@ -1,0 +1,188 @@
+// Stage 7, shade, over any lane type: the one C++ source of shaders/phong.frag (shade.h has
+// the model and docs/shading.md the derivation). Instantiated for float (the teaching path),
+// double (the reference) and Highway vectors (the fast path); the same operations in the
+// same order in every instantiation, so each lane of a vector gets the float path's bits.
+// Shared source, included plainly and per Highway target (softrender/lanes.h).
+
+#if defined(TWR_LANES_HIGHWAY)
+#if defined(TWR_SHADE_INL_TARGET) == defined(HWY_TARGET_TOGGLE)
+#ifdef TWR_SHADE_INL_TARGET
+#undef TWR_SHADE_INL_TARGET
+#else
+#define TWR_SHADE_INL_TARGET
+#endif
+#define TWR_SHADE_INL_EMIT
+#endif
+#elif !defined(TWR_SHADE_INL_PLAIN)
+#define TWR_SHADE_INL_PLAIN
+#define TWR_SHADE_INL_EMIT
+#endif
+
+#ifdef TWR_SHADE_INL_EMIT
+#undef TWR_SHADE_INL_EMIT
+
+#include "softrender/interpolate-inl.h"
+#include "softrender/lane_math-inl.h"
+#include "softrender/lanes.h"
+#include "softrender/phong_pow-inl.h"
+#include "softrender/texture_sample-inl.h"
+
+#include <cstddef>
+#include <type_traits>
+
+TWR_LANES_BEGIN
+
+// (v + 1) / 2 with alpha 1: how the debug views show a vector.
+template <typename L>
+inline Vec4L<L> vectorAsColourLanes(const Vec3L<L>& v) {
+  using S = ScalarOf<L>;
+  const L one(S(1)), half(S(0.5));
+  return Vec4L<L>((v.x + one) * half, (v.y + one) * half, (v.z + one) * half, one);
+}
+
+// Shades one fragment per lane with the permutation `Features` (shade.h's ShaderFeatures).
+// `maps` holds the material's textures as the lane type reads them (members diffuse, normal,
+// specular: pointers to views, see texture_sample-inl.h); `terms`, when not null, receives
+// every intermediate value (the pixel trace; scalar lanes only, nullptr_t otherwise).
+template <typename Features, typename L, typename Maps, typename Terms>
+inline Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u, const Maps& maps,
+                                   Terms* terms) {
+  using S = ScalarOf<L>;
+  constexpr bool kTrace = !std::is_same_v<Terms, std::nullptr_t>;
+  constexpr bool kTangentSpace = Features::kSpace == LightingSpace::Tangent;
+  const L zero(S(0)), one(S(1)), two(S(2));
+  const Vec3L<L> n = safeNormalize3<L>(f.nWorld);
+  const Vec3L<L> t = safeNormalize3<L>(f.tWorld);
+  const Vec3L<L> b = safeNormalize3<L>(f.bWorld);
+
+  Vec3L<L> albedo(one);
+  if constexpr (Features::kHasDiffuseMap) {
+    const Vec4L<L> texel = sampleTextureLanes<L>(*maps.diffuse, f.uv, u.filter);
+    albedo = Vec3L<L>(texel.x, texel.y, texel.z);
+  }
+  Vec3L<L> specScale(one);
+  if constexpr (Features::kHasSpecularMap) {
+    const Vec4L<L> texel = sampleTextureLanes<L>(*maps.specular, f.uv, u.filter);
+    specScale = Vec3L<L>(texel.x, texel.y, texel.z);
+  }
+  Vec3L<L> mappedTangent(zero, zero, one);
+  Vec4L<L> normalTexel(zero);
+  if constexpr (Features::kHasNormalMap) {
+    normalTexel = sampleTextureLanes<L>(*maps.normal, f.uv, u.filter);
+    mappedTangent = safeNormalize3<L>(two * Vec3L<L>(normalTexel.x, normalTexel.y, normalTexel.z) - one);
+  }
+
+  Vec3L<L> nl = n;
+  if constexpr (kTangentSpace) {
+    nl = mappedTangent;
+  } else if constexpr (Features::kHasNormalMap) {
+    nl = safeNormalize3<L>(t * mappedTangent.x + b * mappedTangent.y + n * mappedTangent.z);
+  }
+
+  if constexpr (kTrace) {
+    if (terms) {
+      terms->n = n;
+      terms->t = t;
+      terms->b = b;
+      terms->albedo = albedo;
+      terms->specScale = specScale;
+      terms->normalTexel = normalTexel;
+      terms->mappedTangent = mappedTangent;
+      terms->nl = nl;
+    }
+  }
+
+  Vec4L<L> colour(zero);
+  if constexpr (Features::kView == View::Shaded) {
+    const Vec3L<L> kdAlbedo = Vec3L<L>(u.kd) * albedo;   // u.kd * albedo, diffuse's first product
+    const Vec3L<L> ksSpec = Vec3L<L>(u.ks) * specScale;  // u.ks * specScale, specular's first
+    Vec3L<L> sum(zero);
+    for (int i = 0; i < u.lightCount; ++i) {
+      const LightUniformT<S>& light = u.lights[static_cast<std::size_t>(i)];
+      const Vec3L<L> toLight = Vec3L<L>(light.posWorld) - f.posWorld;
+      Vec3L<L> lVec, vVec;
+      if constexpr (kTangentSpace) {
+        lVec = f.lightDirTangent[static_cast<std::size_t>(i)];
+        vVec = f.eyeDirTangent;
+      } else {
+        lVec = toLight;
+        vVec = Vec3L<L>(u.eyePosWorld) - f.posWorld;
+      }
+      const L d = lengthOf<L>(toLight);
+      const Vec3L<L> l = safeNormalize3<L>(lVec);
+      const Vec3L<L> v = safeNormalize3<L>(vVec);
+      const L nDotL = dot3<L>(nl, l);
+      const Vec3L<L> r = (two * nDotL) * nl - l;
+      const L rDotV = maxOf(dot3<L>(r, v), zero);
+      const L denominator = (L(light.attenuation.x) + L(light.attenuation.y) * d) + (L(light.attenuation.z) * d) * d;
+      const L attenuation = one / maxOf(denominator, L(static_cast<S>(kMinAttenuationDenominator)));
+      const Vec3L<L> diffuse = (kdAlbedo * maxOf(nDotL, zero)) * Vec3L<L>(light.diffuse);
+      // The specular term only where N.L > 0 (and pow only when some lane needs it).
+      const auto lit = nDotL > zero;
+      Vec3L<L> specular(zero);
+      if (anyOf(lit)) {
+        specular = select3<L>(lit, (ksSpec * phongPow<L>(rDotV, u.shininess)) * Vec3L<L>(light.specular), specular);
+      }
+      sum += (diffuse + specular) * attenuation;
+      if constexpr (kTrace) {
+        if (terms) {
+          auto& lt = terms->lights[static_cast<std::size_t>(i)];
+          lt.lVec = lVec;
+          lt.vVec = vVec;
+          lt.distance = d;
+          lt.l = l;
+          lt.v = v;
+          lt.r = r;
+          lt.nDotL = nDotL;
+          lt.rDotV = rDotV;
+          lt.attenuation = attenuation;
+          lt.diffuse = diffuse;
+          lt.specular = specular;
+        }
+      }
+    }
+    const Vec3L<L> ambient = (Vec3L<L>(u.ka) * albedo) * Vec3L<L>(u.ambient);
+    colour = Vec4L<L>(ambient + sum, one);
+    if constexpr (kTrace) {
+      if (terms) {
+        terms->ambient = ambient;
+        terms->lightCount = u.lightCount;
+      }
+    }
+  } else if constexpr (Features::kView == View::Albedo) {
+    colour = Vec4L<L>(albedo * Vec3L<L>(u.kd), one);
+  } else if constexpr (Features::kView == View::Normal) {
+    colour = vectorAsColourLanes<L>(n);
+  } else if constexpr (Features::kView == View::Tangent) {
+    colour = vectorAsColourLanes<L>(t);
+  } else if constexpr (Features::kView == View::Bitangent) {
+    colour = vectorAsColourLanes<L>(b);
+  } else if constexpr (Features::kView == View::MappedNormal) {
+    colour = vectorAsColourLanes<L>(nl);
+  } else if constexpr (Features::kView == View::Uv) {
+    colour = Vec4L<L>(f.uv.x - floorOf(f.uv.x), f.uv.y - floorOf(f.uv.y), zero, one);
+  } else if constexpr (Features::kView == View::Depth) {
+    colour = Vec4L<L>(f.depth, f.depth, f.depth, one);
+  } else if constexpr (Features::kView == View::LightTangent || Features::kView == View::EyeTangent) {
+    constexpr bool kLight = Features::kView == View::LightTangent;
+    Vec3L<L> dirTangent(zero);  // no light: (0, 0, 0), shown as grey 0.5
+    if (!kLight || u.lightCount > 0) {
+      if constexpr (kTangentSpace) {
+        dirTangent = safeNormalize3<L>(kLight ? f.lightDirTangent[0] : f.eyeDirTangent);
+      } else {
+        const Vec3L<L> w = Vec3L<L>(kLight ? u.lights[0].posWorld : u.eyePosWorld) - f.posWorld;
+        dirTangent = safeNormalize3<L>(Vec3L<L>(dot3<L>(t, w), dot3<L>(b, w), dot3<L>(n, w)));
+      }
+    }
+    colour = vectorAsColourLanes<L>(dirTangent);
+  }
+  colour = clampUnit4<L>(colour);
+  if constexpr (kTrace) {
+    if (terms) terms->colour = colour;
+  }
+  return colour;
+}
+
+TWR_LANES_END
+
+#endif  // TWR_SHADE_INL_EMIT
