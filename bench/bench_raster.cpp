@@ -1,9 +1,9 @@
 // Stage 4, raster: the span rasterizer (coveredSpan per row: the teaching path's traversal)
-// over the default scene's front-facing triangles, and the fast path's AVX-512 visibility
-// pass (4 x 4 blocks, edge test, double depth, GL_LESS) over the same triangles into a
+// over the default scene's front-facing triangles, and the fast path's visibility
+// pass of each supported target (covered spans, double depth, GL_LESS) over the same triangles into a
 // cleared depth buffer. Items are covered pixels.
 #include "bench_stage_common.h"
-#include "softrender/fast_shade_avx512.h"
+#include "softrender/fast_kernels.h"
 #include "softrender/framebuffer.h"
 #include "softrender/interpolate.h"
 #include "softrender/raster.h"
@@ -58,11 +58,15 @@ void BM_SpanRasterizer(benchmark::State& state) {
 }
 BENCHMARK(BM_SpanRasterizer);
 
-void BM_VisibilityAvx512(benchmark::State& state) {
-  if (!cpuHasAvx512()) {
-    state.SkipWithError("no AVX-512 on this CPU");
+// Argument: index into supportedCpuIsas() (best first); indices past the end are skipped.
+void BM_Visibility(benchmark::State& state) {
+  const std::vector<CpuIsa> isas = supportedCpuIsas();
+  if (static_cast<std::size_t>(state.range(0)) >= isas.size()) {
+    state.SkipWithError("no such target on this CPU");
     return;
   }
+  const FastKernels kernels = fastKernelsFor(isas[static_cast<std::size_t>(state.range(0))]);
+  state.SetLabel(std::string(toString(kernels.isa)));
   Framebuffer fb = makeFramebuffer(benchstage::kWidth, benchstage::kHeight, vec3(0.0f));
   std::vector<std::uint32_t> slots(static_cast<std::size_t>(benchstage::kWidth) * benchstage::kHeight, kNoSlot);
   std::int64_t passed = 0;
@@ -74,13 +78,13 @@ void BM_VisibilityAvx512(benchmark::State& state) {
     for (const SetUpTriangle& t : acceptedTriangles()) {
       InterpolationSetup interpolation;
       bool covered = false;
-      passed += static_cast<std::int64_t>(visibilityAvx512(t.setup, t.window, slot++, 0, benchstage::kHeight, fb,
+      passed += static_cast<std::int64_t>(kernels.visibility(t.setup, t.window, slot++, 0, benchstage::kHeight, fb,
                                                            slots.data(), interpolation, covered));
     }
   }
   state.SetItemsProcessed(passed);
 }
-BENCHMARK(BM_VisibilityAvx512);
+BENCHMARK(BM_Visibility)->DenseRange(0, 4);
 
 }  // namespace
 

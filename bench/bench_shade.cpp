@@ -1,9 +1,9 @@
 // Stages 6-8, shade: shadeFragment for the default scene's brick material (diffuse, normal and
 // specular maps, two lights, world space), scalar; its texture sampling alone; and the Phong
 // exponent three ways: powPositive (scalar, what both paths compute), libm's powf, and the
-// AVX-512 kernel's version of powPositive per value.
+// fast path's version of it (phongPow over each target's vectors) per value.
 #include "bench_stage_common.h"
-#include "softrender/fast_shade_avx512.h"
+#include "softrender/fast_kernels.h"
 #include "softrender/phong_pow.h"
 #include "softrender/shade.h"
 #include "softrender/texture_sample.h"
@@ -89,20 +89,24 @@ void BM_LibmPowf(benchmark::State& state) {
 }
 BENCHMARK(BM_LibmPowf);
 
-void BM_PowAvx512(benchmark::State& state) {
-  if (!cpuHasAvx512()) {
-    state.SkipWithError("no AVX-512 on this CPU");
+// Argument: index into supportedCpuIsas() (best first); indices past the end are skipped.
+void BM_PowLanes(benchmark::State& state) {
+  const std::vector<CpuIsa> isas = supportedCpuIsas();
+  if (static_cast<std::size_t>(state.range(0)) >= isas.size()) {
+    state.SkipWithError("no such target on this CPU");
     return;
   }
+  const FastKernels kernels = fastKernelsFor(isas[static_cast<std::size_t>(state.range(0))]);
+  state.SetLabel(std::string(toString(kernels.isa)));
   const std::vector<float> x = powBases();
   std::vector<float> out(x.size());
   for (auto _ : state) {
-    powPositiveAvx512(x.data(), kShininess, out.data(), x.size());
+    kernels.phongPow(x.data(), kShininess, out.data(), x.size());
     benchmark::DoNotOptimize(out.data());
   }
   state.SetItemsProcessed(state.iterations() * kSamples);
 }
-BENCHMARK(BM_PowAvx512);
+BENCHMARK(BM_PowLanes)->DenseRange(0, 4);
 
 }  // namespace
 
