@@ -179,7 +179,9 @@ class CpuRenderer final : public Renderer {
 }  // namespace
 
 std::unique_ptr<Renderer> makeCpuRenderer(const CpuOptions& options) {
-  if (!cpuIsaSupported(options.isa)) throw InputError("cpu renderer: --cpu-isa " + cpuIsaUnsupportedReason(options.isa));
+  if (options.path == CpuPath::Fast && !cpuIsaSupported(options.isa)) {
+    throw InputError("cpu renderer: --cpu-isa " + cpuIsaUnsupportedReason(options.isa));
+  }
   return std::make_unique<CpuRenderer>(options);
 }
 

@@ -170,8 +170,17 @@ HWY_INLINE LaneW toWide(LaneF a) {
 #endif
 }
 HWY_INLINE LaneF toNarrowLanes(LaneW a) {
-#if HWY_TARGET == HWY_SCALAR
-  return {hn::DemoteTo(DF(), a.lo)};
+#if HWY_TARGET == HWY_SCALAR || HWY_TARGET == HWY_EMU128
+  // The emulated targets' DemoteTo saturates at the largest float; IEEE rounds past it to
+  // infinity (as x86 and NEON do), so the lanes are converted one by one.
+  HWY_ALIGN double wide[HWY_MAX_BYTES / sizeof(float)];
+  HWY_ALIGN float narrow[HWY_MAX_BYTES / sizeof(float)];
+  hn::Store(a.lo, DW(), wide);
+#if HWY_TARGET != HWY_SCALAR
+  hn::Store(a.hi, DW(), wide + hn::Lanes(DW()));
+#endif
+  for (size_t l = 0; l < hn::Lanes(DF()); ++l) narrow[l] = static_cast<float>(wide[l]);
+  return {hn::Load(DF(), narrow)};
 #else
   return {hn::Combine(DF(), hn::DemoteTo(DH(), a.hi), hn::DemoteTo(DH(), a.lo))};
 #endif

@@ -1,20 +1,28 @@
-// The fast path (softrender/fast_pipeline.h, the AVX-512 kernel and its scalar fallback) draws
-// exactly what the teaching path draws: colour, depth, triangle ids, line mask and statistics,
-// bit for bit, on every scene of the suite with every view and cull mode, at awkward sizes,
-// for any thread count, and on synthetic scenes that push the kernel's special cases (texture
-// coordinates beyond its integer range, textures whose sides are not powers of two, nearest
-// filtering, every shininess, lights inside the surface, triangles crossing w = 0).
+// The fast path (softrender/fast_pipeline.h, the shared shading source instantiated for each
+// Highway target) draws exactly what the teaching path draws: colour, depth, triangle ids,
+// line mask and statistics, bit for bit, on every scene of the suite with every view and cull
+// mode, at awkward sizes, for any thread count, and on synthetic scenes that push the kernels'
+// special cases (texture coordinates beyond their integer range, textures whose sides are not
+// powers of two, nearest filtering, every shininess, lights inside the surface, triangles
+// crossing w = 0). Every test runs once per Highway target this CPU supports (Highway's
+// per-target test mechanism: hwy::TestWithParamTarget makes that target the one dynamic
+// dispatch picks), and checks that the target it asked for is the one that drew.
 #include "softrender/cpu_renderer.h"
-#include "softrender/fast_shade_avx512.h"
+#include "softrender/cpu_isa_targets.h"
+#include "softrender/fast_kernels.h"
 #include "softrender/phong_pow.h"
 #include "softrender/shade.h"
 
+#include "scene/errors.h"
 #include "scene/primitives.h"
 #include "scene/scene_file.h"
 
 #include <gtest/gtest.h>
+#include <hwy/targets.h>
+#include <hwy/tests/hwy_gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -22,7 +30,9 @@
 #include <limits>
 #include <memory>
 #include <random>
+#include <ostream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace twr {
@@ -30,9 +40,16 @@ namespace {
 
 const std::string kScenes = std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes";
 
-CpuOptions teaching() { return CpuOptions{1, CpuPath::Teaching, CpuIsa::Scalar}; }
+CpuOptions teaching() { return CpuOptions{1, CpuPath::Teaching, CpuIsa::Auto}; }
+// The fast path on the target the test is running for (dynamic dispatch, mocked per test).
 CpuOptions fastSimd(int threads) { return CpuOptions{threads, CpuPath::Fast, CpuIsa::Auto}; }
-CpuOptions fastScalar(int threads) { return CpuOptions{threads, CpuPath::Fast, CpuIsa::Scalar}; }
+
+// The target a per-target test asked for must be the one that draws: fail, never skip.
+void expectTargetInUse(std::int64_t target) {
+  const FastKernels kernels = fastKernelsFor(CpuIsa::Auto);
+  EXPECT_EQ(highwayTargetOf(kernels.isa), target)
+      << "asked for " << hwy::TargetName(target) << ", the kernels of " << toString(kernels.isa) << " ran";
+}
 
 // Float buffers compare bitwise, so -0 against +0 or two different NaNs would show.
 bool sameBits(const std::vector<float>& a, const std::vector<float>& b) {
@@ -74,8 +91,8 @@ void expectIdentical(const RenderOutput& expected, const RenderOutput& actual, c
   EXPECT_EQ(e.pixelsShaded, a.pixelsShaded) << what;
 }
 
-// Teaching versus fast with the SIMD kernels (one and two threads) and with the scalar
-// fallback, at `width` x `height`.
+// Teaching versus fast on the current target (one, two and three threads), at `width` x
+// `height`.
 void expectPathsAgree(const Scene& scene, const RenderSettings& settings, int width, int height,
                       const std::string& what) {
   const RenderOutput reference = makeCpuRenderer(teaching())->render(scene, settings, width, height);
@@ -83,8 +100,8 @@ void expectPathsAgree(const Scene& scene, const RenderSettings& settings, int wi
   expectIdentical(reference, makeCpuRenderer(fastSimd(1))->render(scene, settings, width, height),
                   what + ", simd 1 thread");
   expectIdentical(reference, makeCpuRenderer(fastSimd(2))->render(scene, settings, width, height), what + ", simd");
-  expectIdentical(reference, makeCpuRenderer(fastScalar(3))->render(scene, settings, width, height),
-                  what + ", scalar");
+  expectIdentical(reference, makeCpuRenderer(fastSimd(3))->render(scene, settings, width, height),
+                  what + ", 3 threads");
 }
 
 std::vector<std::string> suiteScenes() {
@@ -96,22 +113,34 @@ std::vector<std::string> suiteScenes() {
   return names;
 }
 
-class FastPathSuite : public ::testing::TestWithParam<std::string> {};
-
-TEST_P(FastPathSuite, SameImageAsTheTeachingPath) {
-  const Scene scene = loadSceneFile(kScenes + "/" + GetParam());
-  expectPathsAgree(scene, scene.settings, scene.output.width, scene.output.height, GetParam());
-  // Sizes that are not multiples of the 4 x 4 block or of the 32-row bin.
-  expectPathsAgree(scene, scene.settings, 61, 47, GetParam() + " at 61x47");
+// A suite scene's file name; printed as its stem, which names the test (AVX2_default).
+struct SceneFile {
+  std::string file;
+};
+void PrintTo(const SceneFile& scene, std::ostream* out) { *out << scene.file.substr(0, scene.file.find('.')); }
+std::vector<SceneFile> suiteSceneFiles() {
+  std::vector<SceneFile> files;
+  for (const std::string& name : suiteScenes()) files.push_back({name});
+  return files;
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, FastPathSuite, ::testing::ValuesIn(suiteScenes()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                           std::string name = info.param.substr(0, info.param.find('.'));
-                           return name;
-                         });
+class FastPathSuite : public hwy::TestWithParamTargetAndT<SceneFile> {};
+HWY_TARGET_INSTANTIATE_TEST_SUITE_P_T(FastPathSuite, ::testing::ValuesIn(suiteSceneFiles()));
 
-TEST(FastPath, EveryViewBothLightingSpacesAndFilters) {
+TEST_P(FastPathSuite, SameImageAsTheTeachingPath) {
+  expectTargetInUse(std::get<0>(::testing::TestWithParam<std::tuple<std::int64_t, SceneFile>>::GetParam()));
+  const std::string file = GetParam().file;
+  const Scene scene = loadSceneFile(kScenes + "/" + file);
+  expectPathsAgree(scene, scene.settings, scene.output.width, scene.output.height, file);
+  // Sizes that are not multiples of any vector width or of the 32-row bin.
+  expectPathsAgree(scene, scene.settings, 61, 47, file + " at 61x47");
+}
+
+// The per-target fixture for the tests below.
+HWY_BEFORE_TEST(FastPath);
+
+TEST_P(FastPath, EveryViewBothLightingSpacesAndFilters) {
+  expectTargetInUse(GetParam());
   for (const char* file : {"default.json", "tangent_space.json"}) {
     const Scene scene = loadSceneFile(kScenes + "/" + file);
     for (View view : kAllViews) {
@@ -131,7 +160,8 @@ TEST(FastPath, EveryViewBothLightingSpacesAndFilters) {
   }
 }
 
-TEST(FastPath, EveryCullModeAndFrontFace) {
+TEST_P(FastPath, EveryCullModeAndFrontFace) {
+  expectTargetInUse(GetParam());
   const Scene scene = loadSceneFile(kScenes + "/culling.json");
   for (CullMode cull : {CullMode::None, CullMode::Back, CullMode::Front}) {
     for (FrontFace front : {FrontFace::Ccw, FrontFace::Cw}) {
@@ -144,7 +174,8 @@ TEST(FastPath, EveryCullModeAndFrontFace) {
   }
 }
 
-TEST(FastPath, ThreadCountDoesNotChangeAnything) {
+TEST_P(FastPath, ThreadCountDoesNotChangeAnything) {
+  expectTargetInUse(GetParam());
   const Scene scene = loadSceneFile(kScenes + "/default.json");
   const RenderOutput one = makeCpuRenderer(fastSimd(1))->render(scene, scene.settings, 320, 200);
   for (int threads : {2, 5, 64}) {
@@ -211,7 +242,8 @@ Scene syntheticScene(vec2 uvMin, vec2 uvMax, int textureWidth, int textureHeight
   return scene;
 }
 
-TEST(FastPath, SyntheticMaterialsTexturesAndExponents) {
+TEST_P(FastPath, SyntheticMaterialsTexturesAndExponents) {
+  expectTargetInUse(GetParam());
   for (float shininess : {0.0f, 0.5f, 1.0f, 7.3f, 32.0f, 1000.0f}) {
     const Scene scene = syntheticScene(vec2(-1.3f, -0.2f), vec2(2.0f, 3.1f), 37, 20, shininess);
     for (TextureFilter filter : {TextureFilter::Nearest, TextureFilter::Bilinear}) {
@@ -231,7 +263,8 @@ TEST(FastPath, SyntheticMaterialsTexturesAndExponents) {
 // Every view on the synthetic material with all its maps and without any, in both lighting
 // spaces and filters, then with user clip planes cutting triangles, then with no light (the
 // light direction view shows grey): each view has its own SIMD kernel in the fast path.
-TEST(FastPath, EveryViewOnSyntheticMaterials) {
+TEST_P(FastPath, EveryViewOnSyntheticMaterials) {
+  expectTargetInUse(GetParam());
   for (bool maps : {true, false}) {
     Scene scene = syntheticScene(vec2(-1.3f, -0.2f), vec2(2.0f, 3.1f), 37, 20, 12.0f);
     if (!maps) {
@@ -280,7 +313,8 @@ TEST(FastPath, EveryViewOnSyntheticMaterials) {
 
 // The depth view and the flat albedo view read no varyings: check them against hand-made
 // expectations too, so agreeing with the teaching path is not the only evidence.
-TEST(FastPath, DepthAndFlatAlbedoViewsShowTheirValues) {
+TEST_P(FastPath, DepthAndFlatAlbedoViewsShowTheirValues) {
+  expectTargetInUse(GetParam());
   Scene scene = syntheticScene(vec2(0.0f), vec2(1.0f), 16, 16, 8.0f);
   scene.materials[0].diffuseMap.reset();
   scene.materials[0].kd = vec3(0.2f, 0.6f, 1.5f);  // 1.5 clamps to 1
@@ -309,7 +343,8 @@ TEST(FastPath, DepthAndFlatAlbedoViewsShowTheirValues) {
 // Texture coordinates past 2^30 texels (either sign): the kernel hands those lanes to the
 // scalar footprint. The last range overflows to infinity in u * width. The uv view takes
 // u - floor(u) of the same values (NaN for infinite ones, drawn as 0).
-TEST(FastPath, HugeTextureCoordinates) {
+TEST_P(FastPath, HugeTextureCoordinates) {
+  expectTargetInUse(GetParam());
   const std::pair<vec2, vec2> ranges[] = {{vec2(-3.0e7f, 1.0e7f), vec2(3.0e7f, 2.0e7f)},
                                           {vec2(-1.0e30f, -5.0f), vec2(1.0e30f, 5.0f)},
                                           {vec2(0.0f, -3.0e38f), vec2(1.0f, 3.0e38f)}};
@@ -330,7 +365,8 @@ TEST(FastPath, HugeTextureCoordinates) {
 
 // Near plane off (depth clamp), planes switched off to the guard band, user planes and a
 // camera inside the geometry: the clipper's new vertices go through the fast path's pool.
-TEST(FastPath, ClippedTriangles) {
+TEST_P(FastPath, ClippedTriangles) {
+  expectTargetInUse(GetParam());
   Scene scene = syntheticScene(vec2(0.0f), vec2(2.0f), 16, 16, 8.0f);
   scene.camera.position = vec3(0.0f, 0.1f, 0.3f);  // inside the sphere's bounding box
   scene.camera.near = 0.01f;
@@ -346,7 +382,8 @@ TEST(FastPath, ClippedTriangles) {
 }
 
 // powPositive against libm: within one ulp everywhere, exact where the answer is exact.
-TEST(FastPath, PowPositiveIsWithinOneUlpOfLibm) {
+TEST_P(FastPath, PowPositiveIsWithinOneUlpOfLibm) {
+  expectTargetInUse(GetParam());
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> base(0.0f, 1.05f);
   for (float s : {0.0f, 0.5f, 1.0f, 2.0f, 7.3f, 32.0f, 128.0f, 1000.0f, 1.0e5f}) {
@@ -368,13 +405,13 @@ TEST(FastPath, PowPositiveIsWithinOneUlpOfLibm) {
   EXPECT_EQ(powPositive(1.0f, std::numeric_limits<float>::infinity()), 1.0f);
 }
 
-// The kernel's pow, lane by lane, is powPositive bit for bit (an ulp here rarely shows in an
+// The kernels' pow, lane by lane, is powPositive bit for bit (an ulp here rarely shows in an
 // 8-bit image, so it is checked directly), including the lanes phongPow handles without it.
-TEST(FastPath, SimdPowIsTheScalarPowBitForBit) {
-  if (!cpuHasAvx512()) GTEST_SKIP() << "this CPU has no AVX-512";
+TEST_P(FastPath, SimdPowIsTheScalarPowBitForBit) {
+  expectTargetInUse(GetParam());
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> base(0.0f, 1.02f);
-  std::vector<float> x(4099);  // not a multiple of 16: the last call has a partial mask
+  std::vector<float> x(4099);  // not a multiple of any vector width: the last call is partial
   for (float& v : x) v = base(rng);
   x[0] = 0.0f;
   x[1] = -0.0f;
@@ -384,7 +421,7 @@ TEST(FastPath, SimdPowIsTheScalarPowBitForBit) {
   x[5] = 1.0e-30f;
   for (float s : {0.0f, 0.25f, 1.0f, 3.0f, 32.0f, 77.7f, 4096.0f, 1.0e30f}) {
     std::vector<float> simd(x.size());
-    powPositiveAvx512(x.data(), s, simd.data(), x.size());
+    fastKernelsFor(CpuIsa::Auto).phongPow(x.data(), s, simd.data(), x.size());
     for (std::size_t i = 0; i < x.size(); ++i) {
       const float scalar = phongPow(x[i], s);
       ASSERT_EQ(std::bit_cast<std::uint32_t>(simd[i]), std::bit_cast<std::uint32_t>(scalar))
@@ -393,11 +430,58 @@ TEST(FastPath, SimdPowIsTheScalarPowBitForBit) {
   }
 }
 
-TEST(FastPath, PathNames) {
+TEST_P(FastPath, PathNames) {
+  expectTargetInUse(GetParam());
   EXPECT_EQ(cpuPathName(teaching()), "teaching");
-  EXPECT_EQ(cpuPathName(fastScalar(1)), "fast (scalar)");
-  const std::string simd = cpuPathName(fastSimd(1));
-  EXPECT_TRUE(simd == "fast (avx512)" || simd == "fast (scalar)") << simd;
+  EXPECT_EQ(cpuPathName(CpuOptions{1, CpuPath::Fast, CpuIsa::Scalar}), "fast (scalar)");
+  const std::string name = cpuPathName(fastSimd(1));
+  EXPECT_EQ(name, "fast (" + std::string(toString(fastKernelsFor(CpuIsa::Auto).isa)) + ")");
+}
+
+// Every target Highway compiled in and this CPU runs is one supportedCpuIsas() lists, so the
+// per-target tests above cover every target a user can ask for.
+TEST(FastPathTargets, EverySupportedTargetIsTested) {
+  std::vector<CpuIsa> tested;
+  for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+    bool named = false;
+    for (const CpuIsa isa : supportedCpuIsas()) named = named || highwayTargetOf(isa) == target;
+    EXPECT_TRUE(named) << hwy::TargetName(target) << " is compiled and supported but has no CpuIsa name";
+  }
+  for (const CpuIsa isa : supportedCpuIsas()) {
+    EXPECT_EQ(fastKernelsFor(isa).isa, isa) << toString(isa);
+  }
+  EXPECT_FALSE(supportedCpuIsas().empty());
+  EXPECT_EQ(supportedCpuIsas().back(), CpuIsa::Scalar);
+}
+
+// TWINRASTER_REQUIRE_CPU_ISAS (comma-separated names, set by CI for the machine it runs on)
+// lists targets that must be present: a missing one fails here instead of being skipped.
+TEST(FastPathTargets, RequiredTargetsArePresent) {
+  const char* required = std::getenv("TWINRASTER_REQUIRE_CPU_ISAS");
+  if (!required || !*required) return;
+  std::string list = required;
+  for (std::size_t start = 0; start <= list.size();) {
+    const std::size_t end = std::min(list.find(',', start), list.size());
+    const std::string name = list.substr(start, end - start);
+    start = end + 1;
+    if (name.empty()) continue;
+    CpuIsa isa = CpuIsa::Auto;
+    ASSERT_TRUE(parse(name, isa)) << "TWINRASTER_REQUIRE_CPU_ISAS names an unknown target '" << name << "'";
+    EXPECT_TRUE(cpuIsaSupported(isa)) << "required target " << name << " is absent: " << cpuIsaUnsupportedReason(isa);
+  }
+}
+
+// A target this CPU cannot run is refused with a message naming it.
+TEST(FastPathTargets, UnsupportedTargetIsRefused) {
+  for (const CpuIsa isa : {CpuIsa::Avx512, CpuIsa::Avx2, CpuIsa::Sse4, CpuIsa::Neon}) {
+    if (cpuIsaSupported(isa)) continue;
+    try {
+      makeCpuRenderer(CpuOptions{1, CpuPath::Fast, isa});
+      ADD_FAILURE() << toString(isa) << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(toString(isa)), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace
