@@ -4,6 +4,11 @@
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 SCENE ?= assets/scenes/default.json
 OUT ?= out/default
+# -Werror for the project's own code (CMake option TWINRASTER_WERROR): ON when the CI
+# environment variable is set (CI=true, as .ci/run runs), OFF otherwise, so a user's newer or
+# different compiler with a new warning still builds. Passed on every configure, so the build
+# folder follows the current setting. Force it either way: make test WERROR=ON
+WERROR ?= $(if $(filter-out false 0,$(CI)),ON,OFF)
 
 .PHONY: all deps configure build run test sanitize clean assets
 
@@ -13,7 +18,7 @@ deps:
 	@./scripts/install-deps.sh
 
 configure: deps
-	@cmake --preset default >/dev/null
+	@cmake --preset default -DTWINRASTER_WERROR=$(WERROR) >/dev/null
 
 build: configure
 	@cmake --build --preset default -j $(JOBS)
@@ -30,7 +35,7 @@ test: build
 	@ctest --preset default
 
 sanitize: deps
-	@cmake --preset sanitize >/dev/null
+	@cmake --preset sanitize -DTWINRASTER_WERROR=$(WERROR) >/dev/null
 	@cmake --build --preset sanitize -j $(JOBS)
 	@ctest --preset sanitize
 

@@ -15,6 +15,8 @@
 # already passed plus whatever a code change makes it reach; 0 lets libFuzzer pick). The working corpus, $BUILD/corpus/<target>/, grows across
 # runs; each run also reads seeds from tests/corpus/<target>/ and the repository's assets.
 # A summary line per target (executions, corpus size, coverage) goes to $BUILD/fuzz-summary.txt.
+# FUZZ_WERROR (ON|OFF) sets TWINRASTER_WERROR, -Werror for the project's code: ON when the CI
+# environment variable is set, else OFF.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
@@ -24,6 +26,8 @@ shift || true
 targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=(scene_file obj_file image_file pipeline)
 build=${FUZZ_BUILD_DIR:-build-fuzz}
+case "${CI:-}" in ""|false|0) werror=OFF ;; *) werror=ON ;; esac
+werror=${FUZZ_WERROR:-$werror}
 jobs=${FUZZ_JOBS:-$(nproc 2>/dev/null || echo 2)}
 
 for tool in clang clang++; do
@@ -32,7 +36,8 @@ done
 
 echo "run-fuzzers: building ${targets[*]} in $build (clang, ASan + UBSan)"
 CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTWINRASTER_FUZZ=ON \
-  -DTWINRASTER_SANITIZE=ON -DTWINRASTER_BUILD_GUI=OFF -DTWINRASTER_BUILD_BENCH=OFF >/dev/null
+  -DTWINRASTER_SANITIZE=ON -DTWINRASTER_BUILD_GUI=OFF -DTWINRASTER_BUILD_BENCH=OFF \
+  -DTWINRASTER_WERROR="$werror" >/dev/null
 build_targets=()
 for t in "${targets[@]}"; do build_targets+=(--target "fuzz_$t"); done
 cmake --build "$build" -j "$jobs" "${build_targets[@]}"
