@@ -1,8 +1,18 @@
-// `twinraster bench SCENE [--frames N] [--width W --height H] [--json] [--threads T] [--gl-precise]`:
-// times the CPU pipeline and llvmpipe in one process, frame by frame alternating, after a
-// warm-up, and reports the median and spread of each and their ratio. Each time is the wall
-// time of one Renderer::render() call: for GL that includes glFinish and the read-back into
-// the RenderOutput, for the CPU the same buffers; neither includes writing a PNG.
+// `twinraster bench SCENE [--frames N] [--width W --height H] [--json] [--threads T] [--gl-precise]
+// [--cpu-path P] [--cpu-isa I] [--all-isas]`: times the CPU pipeline and llvmpipe in one
+// process, frame by frame alternating, after a warm-up, and reports the median and spread of
+// each and their ratio. Each time is the wall time of one Renderer::render() call: for GL
+// that includes glFinish and the read-back into the RenderOutput, for the CPU the same
+// buffers; neither includes writing a PNG.
+//
+// Two llvmpipe frames, interleaved with the CPU frames:
+//   gl       glrender's full frame (GlFrame::Full): colour, depth, triangle ids and the
+//            TBN-line mask, all four read back, plus an occlusion query; what compare uses;
+//   gl_lean  the fair reference (GlFrame::Lean): the same programs and draws into colour +
+//            depth only, the colour read back with one glReadPixels, as an OpenGL user draws
+//            it. The CPU pipeline produces colour + depth (and its ids) in the same call.
+// --all-isas adds one CPU fast-path renderer per target this machine runs (per_isa), each
+// timed in the same loop with the same warm-up, divided by the same lean GL frames.
 //
 // Threads: llvmpipe gets as many rasterizer threads as the CPU pipeline gets workers
 // (LP_NUM_THREADS, which llvmpipe reads when the first context is created, so it is set
@@ -65,8 +75,9 @@ struct BenchArgs {
   int frames = 20;
   int warmup = 2;
   std::optional<int> threads;  // default: hardware_concurrency()
-  std::string cpuPath = "fast";
-  bool cpuScalar = false;  // fast path without its SIMD kernels
+  CpuRequest cpu;
+  bool cpuScalar = false;  // the old spelling of --cpu-isa scalar
+  bool allIsas = false;    // also time the fast path on every supported target
   bool json = false;
   bool glPrecise = false;
   bool preciseChild = false;  // internal: time GL in precise sampling only, print JSON (see --gl-precise)
@@ -275,20 +286,51 @@ void printTimingLine(const std::string& label, const Timing& t) {
             << std::setw(8) << fixed(t.processMedian, 2) << " ms\n";
 }
 
-void printText(const Json& j, const Timing& cpu, const Timing& gl, const std::optional<Timing>& glPrecise) {
+// Every --cpu-isa this machine runs, best first, and the same as "a, b, c".
+Json supportedIsaNames() {
+  Json names = Json::array();
+  for (const CpuIsa isa : supportedCpuIsas()) names.push_back(std::string(toString(isa)));
+  return names;
+}
+
+std::string joined(const Json& names) {
+  std::string list;
+  for (const Json& name : names) list += (list.empty() ? "" : ", ") + name.get<std::string>();
+  return list;
+}
+
+void printText(const Json& j, const Timing& cpu, const Timing& gl, const Timing& glLean,
+               const std::optional<Timing>& glPrecise) {
   std::cout << "bench " << j["scene"].get<std::string>() << " at " << j["width"] << "x" << j["height"] << ": "
             << j["triangles"] << " triangles, " << j["covered_pixels"] << " covered pixels, " << j["threads"]
             << " threads, " << j["frames"] << " frames after " << j["warmup"] << " warm-up\n";
+  std::cout << "  cpu target: "
+            << (j["cpu_isa"].is_null() ? std::string("none (the teaching path runs no SIMD kernels)")
+                                       : j["cpu_isa"].get<std::string>())
+            << "; this machine runs " << joined(j["cpu_isas_supported"]) << "\n";
   printTimingLine("cpu " + j["cpu_path"].get<std::string>(), cpu);
   printTimingLine("gl (fast)", gl);
+  printTimingLine("gl lean (fast)", glLean);
   if (glPrecise) printTimingLine("gl (precise)", *glPrecise);
   std::cout << "  gl (fast) of which glReadPixels " << fixed(j["gl_readback_ms_median"].get<double>(), 2)
             << " ms (median); drawing alone " << fixed(j["gl_draw_ms_median"].get<double>(), 2) << " ms\n";
+  std::cout << "  gl lean: colour + depth, one glReadPixels of the colour ("
+            << fixed(j["gl_lean_readback_ms_median"].get<double>(), 2) << " ms median), no occlusion query\n";
   std::cout << "  ratio cpu/gl " << fixed(j["ratio_cpu_over_gl"].get<double>(), 3) << ", cpu/gl drawing "
-            << fixed(j["ratio_cpu_over_gl_draw"].get<double>(), 3);
+            << fixed(j["ratio_cpu_over_gl_draw"].get<double>(), 3) << ", cpu/gl lean "
+            << fixed(j["ratio_cpu_over_gl_lean"].get<double>(), 3);
   if (glPrecise) std::cout << ", cpu/gl precise " << fixed(j["ratio_cpu_over_gl_precise"].get<double>(), 3);
   std::cout << " (medians); cpu " << fixed(j["cpu_ns_per_covered_pixel"].get<double>(), 1)
-            << " ns per covered pixel\n";
+            << " ns per covered pixel, gl lean " << fixed(j["gl_lean_ns_per_covered_pixel"].get<double>(), 1)
+            << " ns\n";
+  if (j.contains("per_isa")) {
+    std::cout << "  fast path per target (each its own renderer, same frames; ratio over gl lean):\n";
+    for (const Json& entry : j["per_isa"]) {
+      std::cout << "    " << std::left << std::setw(8) << entry["cpu_isa"].get<std::string>() << std::right
+                << " median " << std::setw(8) << fixed(entry["cpu_ms_median"].get<double>(), 2)
+                << " ms  cpu/gl lean " << fixed(entry["ratio_cpu_over_gl_lean"].get<double>(), 3) << "\n";
+    }
+  }
   std::cout << "  gl: " << j["gl_renderer"].get<std::string>() << ", " << j["gl_version"].get<std::string>() << "\n";
   if (j.contains("note")) std::cout << "  note: " << j["note"].get<std::string>() << "\n";
 }
@@ -329,12 +371,21 @@ void runPreciseChild(const BenchArgs& args, const Scene& scene, int width, int h
   std::cout << json.dump() << "\n";
 }
 
-void runBench(const BenchArgs& args) {
+// One fast-path renderer of --all-isas and its frame times (milliseconds).
+struct IsaRun {
+  CpuIsa isa = CpuIsa::Auto;
+  std::unique_ptr<Renderer> renderer;
+  std::vector<double> ms, processMs;
+};
+
+void runBench(BenchArgs args) {
   validate(args);
+  if (args.cpuScalar) args.cpu.isa = "scalar";  // --cpu-scalar is --cpu-isa scalar (they exclude each other)
+  const int threads = args.threads.value_or(defaultThreads());
+  const CpuOptions cpuOptions = requestedCpuOptions(args.cpu, threads);
   const Scene scene = loadRequestedScene(args.request);
   const int width = requestedWidth(args.request, scene);
   const int height = requestedHeight(args.request, scene);
-  const int threads = args.threads.value_or(defaultThreads());
   const std::string note = setLlvmpipeThreads(threads);
   if (args.preciseChild) {
     runPreciseChild(args, scene, width, height);
@@ -345,32 +396,55 @@ void runBench(const BenchArgs& args) {
   glOptions.verbose = args.request.verbose;
   glOptions.fastSampling = true;  // llvmpipe's default, what a user gets
   const std::unique_ptr<Renderer> gl = makeGlRenderer(glOptions);
-  CpuOptions cpuOptions;
-  cpuOptions.threads = threads;
-  cpuOptions.path = args.cpuPath == "teaching" ? CpuPath::Teaching : CpuPath::Fast;
-  cpuOptions.isa = args.cpuScalar ? CpuIsa::Scalar : CpuIsa::Auto;
+  GlOptions glLeanOptions = glOptions;
+  glLeanOptions.frame = GlFrame::Lean;
+  const std::unique_ptr<Renderer> glLean = makeGlRenderer(glLeanOptions);
   const std::unique_ptr<Renderer> cpu = makeCpuRenderer(cpuOptions);
+  std::vector<IsaRun> isaRuns;
+  if (args.allIsas) {
+    for (const CpuIsa isa : supportedCpuIsas()) {
+      CpuOptions options;
+      options.threads = threads;
+      options.path = CpuPath::Fast;
+      options.isa = isa;
+      isaRuns.push_back({isa, makeCpuRenderer(options), {}, {}});
+    }
+  }
 
-  RenderOutput cpuOut, glOut;
+  RenderOutput cpuOut, glOut, glLeanOut, isaOut;
   for (int i = 0; i < args.warmup; ++i) {
     renderTimed(*cpu, scene, width, height, cpuOut);
     renderTimed(*gl, scene, width, height, glOut);
+    renderTimed(*glLean, scene, width, height, glLeanOut);
+    for (IsaRun& run : isaRuns) renderTimed(*run.renderer, scene, width, height, isaOut);
   }
   std::vector<double> cpuMs, glMs, cpuProcessMs, glProcessMs, glReadbackMs, glDrawMs;
+  std::vector<double> glLeanMs, glLeanProcessMs, glLeanReadbackMs;
   Progress progress(args.frames);
+  const char* progressLabel = isaRuns.empty() ? "cpu + gl + gl lean" : "cpu + gl + gl lean + every target";
   for (int i = 0; i < args.frames; ++i) {
     const FrameTime c = renderTimed(*cpu, scene, width, height, cpuOut);
     const FrameTime g = renderTimed(*gl, scene, width, height, glOut);
+    const FrameTime l = renderTimed(*glLean, scene, width, height, glLeanOut);
     cpuMs.push_back(c.wallMs);
     cpuProcessMs.push_back(c.processMs);
     glMs.push_back(g.wallMs);
     glProcessMs.push_back(g.processMs);
     glReadbackMs.push_back(g.readbackMs);
     glDrawMs.push_back(g.wallMs - g.readbackMs);
-    progress.frame(i + 1, "cpu + gl");
+    glLeanMs.push_back(l.wallMs);
+    glLeanProcessMs.push_back(l.processMs);
+    glLeanReadbackMs.push_back(l.readbackMs);
+    for (IsaRun& run : isaRuns) {
+      const FrameTime t = renderTimed(*run.renderer, scene, width, height, isaOut);
+      run.ms.push_back(t.wallMs);
+      run.processMs.push_back(t.processMs);
+    }
+    progress.frame(i + 1, progressLabel);
   }
   const Timing cpuTiming = summarise(cpuMs, cpuProcessMs);
   const Timing glTiming = summarise(glMs, glProcessMs);
+  const Timing glLeanTiming = summarise(glLeanMs, glLeanProcessMs);
   std::optional<Timing> glPreciseTiming;
   if (args.glPrecise) {
     const std::string text = runSelf(childArguments(args, width, height, threads));
@@ -391,12 +465,20 @@ void runBench(const BenchArgs& args) {
   json["threads"] = threads;
   json["threads_source"] = args.threads ? "--threads" : "default: hardware_concurrency(), as llvmpipe";
   json["cpu_path"] = cpuPathName(cpuOptions);
+  // The fast path's target actually run; null on the teaching path (no SIMD kernels there).
+  const std::string isaName = resolvedCpuIsaName(cpuOptions);
+  json["cpu_isa"] = isaName.empty() ? Json(nullptr) : Json(isaName);
+  json["cpu_isas_supported"] = supportedIsaNames();
   json["triangles"] = countTriangles(scene);
   json["covered_pixels"] = covered;
   json["covered_pixels_gl"] = coveredPixels(glOut);
+  json["covered_pixels_gl_lean"] = coveredPixels(glLeanOut);
   addTiming(json, "cpu", cpuTiming);
   addTiming(json, "gl", glTiming);
+  addTiming(json, "gl_lean", glLeanTiming);
   json["ratio_cpu_over_gl"] = cpuTiming.median / glTiming.median;
+  json["ratio_cpu_over_gl_lean"] = cpuTiming.median / glLeanTiming.median;
+  json["gl_lean_readback_ms_median"] = median(glLeanReadbackMs);
   // llvmpipe's frame without glReadPixels (the CPU pipeline has no such copy: it draws into
   // the output's buffers): the strictest comparison, drawing against drawing.
   const double glDrawMedian = median(glDrawMs);
@@ -405,6 +487,8 @@ void runBench(const BenchArgs& args) {
   json["ratio_cpu_over_gl_draw"] = cpuTiming.median / glDrawMedian;
   json["cpu_ns_per_covered_pixel"] = covered > 0 ? cpuTiming.median * 1e6 / static_cast<double>(covered) : 0.0;
   json["gl_ns_per_covered_pixel"] = covered > 0 ? glTiming.median * 1e6 / static_cast<double>(covered) : 0.0;
+  json["gl_lean_ns_per_covered_pixel"] =
+      covered > 0 ? glLeanTiming.median * 1e6 / static_cast<double>(covered) : 0.0;
   json["gl_sampling"] = glSamplingMode();
   json["gl_renderer"] = glRendererString();
   json["gl_version"] = glVersionString();
@@ -412,12 +496,22 @@ void runBench(const BenchArgs& args) {
     addTiming(json, "gl_precise", *glPreciseTiming);
     json["ratio_cpu_over_gl_precise"] = cpuTiming.median / glPreciseTiming->median;
   }
+  if (args.allIsas) {
+    Json perIsa = Json::array();
+    for (const IsaRun& run : isaRuns) {
+      const double runMedian = median(run.ms);
+      perIsa.push_back(Json{{"cpu_isa", std::string(toString(run.isa))},
+                            {"cpu_ms_median", runMedian},
+                            {"ratio_cpu_over_gl_lean", runMedian / glLeanTiming.median}});
+    }
+    json["per_isa"] = std::move(perIsa);
+  }
   if (!note.empty()) json["note"] = note;
 
   if (args.json) {
     std::cout << json.dump(2) << "\n";
   } else {
-    printText(json, cpuTiming, glTiming, glPreciseTiming);
+    printText(json, cpuTiming, glTiming, glLeanTiming, glPreciseTiming);
   }
 }
 
@@ -426,17 +520,21 @@ const bool registered = registerCommand(50, [](CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "bench",
       "Time the CPU pipeline against llvmpipe in one process: frames alternate between the backends after a "
-      "warm-up; prints the median and spread of each and ratio_cpu_over_gl. Both use the same thread count; "
-      "llvmpipe samples textures in its default (fast) mode.");
+      "warm-up; prints the median and spread of each, ratio_cpu_over_gl (glrender's full frame: colour, depth, "
+      "triangle ids, line mask, all read back) and ratio_cpu_over_gl_lean (the same draws into colour + depth, "
+      "the colour read back: the frame an OpenGL user draws). Both use the same thread count; llvmpipe samples "
+      "textures in its default (fast) mode. Prints cpu_isa, the fast path's target actually run.");
   addRenderOptions(*cmd, args->request);
   cmd->add_option("--frames,-n", args->frames, "Timed frames per backend")->capture_default_str();
   cmd->add_option("--warmup", args->warmup, "Untimed frames per backend first (shader compilation, caches)")
       ->capture_default_str();
-  cmd->add_option("--cpu-path", args->cpuPath,
-                  "fast (the default traversal) or teaching (the readable one); both draw the same image")
-      ->check(CLI::IsMember({"fast", "teaching"}))
-      ->capture_default_str();
-  cmd->add_flag("--cpu-scalar", args->cpuScalar, "Fast path without its AVX-512 kernels (the scalar fallback)");
+  CLI::Option* cpuIsa = addCpuOptions(*cmd, args->cpu);
+  cmd->add_flag("--cpu-scalar", args->cpuScalar, "Same as --cpu-isa scalar (kept for scripts that use it)")
+      ->excludes(cpuIsa);
+  cmd->add_flag("--all-isas", args->allIsas,
+                "Also time the fast path on every target this machine runs (" + joined(supportedIsaNames()) +
+                    "), each with its own renderer in the same loop: per_isa [{cpu_isa, cpu_ms_median, "
+                    "ratio_cpu_over_gl_lean}]");
   cmd->add_option("--threads,-t", args->threads,
                   "Worker threads of the CPU pipeline and llvmpipe's LP_NUM_THREADS (default: the online CPUs, "
                   "llvmpipe's own default)");

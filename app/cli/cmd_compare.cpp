@@ -22,6 +22,7 @@ namespace {
 
 struct CompareArgs {
   RenderRequest request;
+  CpuRequest cpu;
   std::string outDir;
   bool json = false;
   int repeat = 3;
@@ -59,7 +60,8 @@ void printSummary(const CompareMetrics& m, const nlohmann::json& json, const Art
             << ", shading " << m.classShading << "; excluded line pixels " << m.excludedLinePixels << "\n";
   std::cout << "  depth max diff " << std::setprecision(6) << m.depthMaxDiff << ", NaN pixels " << m.nanPixels
             << "\n";
-  std::cout << std::setprecision(2) << "  time: cpu " << json.value("cpu_ms", 0.0) << " ms, gl "
+  std::cout << std::setprecision(2) << "  time: cpu " << json.value("cpu_ms", 0.0) << " ms ("
+            << json.value("cpu_path", std::string()) << "), gl "
             << json.value("gl_ms", 0.0) << " ms (median of " << json.value("repeat", 0) << ")\n";
   std::cout << "  gl: " << json.value("gl_renderer", std::string()) << ", " << json.value("gl_version", std::string())
             << ", texture sampling " << json.value("gl_sampling", std::string()) << "\n";
@@ -70,6 +72,7 @@ void printSummary(const CompareMetrics& m, const nlohmann::json& json, const Art
 void runCompare(CompareArgs& args) {
   validateThresholds(args.limits);
   if (args.repeat < 1) throw InputError("--repeat: expected an integer >= 1");
+  const CpuOptions cpuOptions = requestedCpuOptions(args.cpu);
   const Scene scene = loadRequestedScene(args.request);
   const int width = requestedWidth(args.request, scene);
   const int height = requestedHeight(args.request, scene);
@@ -78,7 +81,7 @@ void runCompare(CompareArgs& args) {
   glOptions.verbose = args.request.verbose;
   glOptions.fastSampling = args.glFastSampling;
   std::unique_ptr<Renderer> gl = makeGlRenderer(glOptions);
-  std::unique_ptr<Renderer> cpu = makeCpuRenderer();
+  std::unique_ptr<Renderer> cpu = makeCpuRenderer(cpuOptions);
 
   RenderOutput glOut, cpuOut;
   CompareRunInfo info;
@@ -109,7 +112,11 @@ void runCompare(CompareArgs& args) {
   mergeExtraKeys(json, runInfoToJson(info));
   mergeExtraKeys(json, {{"scene", args.request.scenePath},
                         {"view", std::string(toString(scene.settings.view))},
-                        {"triangles_clipped_cpu", cpuOut.stats.trianglesClipped}});
+                        {"triangles_clipped_cpu", cpuOut.stats.trianglesClipped},
+                        {"cpu_path", cpuPathName(cpuOptions)}});
+  // The fast path's target, null for the teaching path (it runs no Highway kernels).
+  const std::string isa = resolvedCpuIsaName(cpuOptions);
+  mergeExtraKeys(json, {{"cpu_isa", isa.empty() ? nlohmann::json(nullptr) : nlohmann::json(isa)}});
   mergeExtraKeys(json, {{"thresholds", thresholdsToJson(limits, violations)}});
   const ArtifactPaths paths = writeCompareArtifacts(args.outDir, cpuOut, glOut, result, json);
 
@@ -133,6 +140,7 @@ const bool registered = registerCommand(30, [](CLI::App& app) {
   addRenderOptions(*cmd, args->request);
   cmd->add_option("--out-dir,-o", args->outDir, "Folder for the images and metrics.json (created)")->required();
   cmd->add_flag("--json", args->json, "Print the metrics JSON object on stdout instead of the summary");
+  addCpuOptions(*cmd, args->cpu);
   cmd->add_option("--repeat", args->repeat, "Renders per backend; cpu_ms and gl_ms are their median")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));

@@ -1,8 +1,11 @@
 // `twinraster info SCENE [--json]`: what a scene file holds, after loading it exactly as the
 // renderers will (meshes built, textures and OBJ files read), so counts are the real ones.
+// It also names the CPU fast path's target on this machine (what --cpu-isa auto runs) and
+// every target this binary and this CPU can run.
 #include "app/cli/commands.h"
 #include "scene/scene.h"
 #include "scene/scene_file.h"
+#include "softrender/cpu_renderer.h"
 
 #include <nlohmann/json.hpp>
 
@@ -275,6 +278,21 @@ void printScene(std::ostream& out, const Scene& scene) {
       << toString(s.tbnLines.mode) << "\n";
 }
 
+// The fast path's target under --cpu-isa auto, and every --cpu-isa this machine runs.
+void addCpuJson(Json& j) {
+  j["cpu_isa"] = std::string(toString(resolveCpuIsa(CpuIsa::Auto)));
+  Json supported = Json::array();
+  for (const CpuIsa isa : supportedCpuIsas()) supported.push_back(std::string(toString(isa)));
+  j["cpu_isas_supported"] = std::move(supported);
+}
+
+void printCpu(std::ostream& out) {
+  std::string supported;
+  for (const CpuIsa isa : supportedCpuIsas()) supported += (supported.empty() ? "" : ", ") + std::string(toString(isa));
+  out << "\ncpu: the fast path runs on " << toString(resolveCpuIsa(CpuIsa::Auto))
+      << " here (--cpu-isa auto); targets this machine runs: " << supported << "\n";
+}
+
 struct InfoRequest {
   std::string scenePath;
   bool json = false;
@@ -286,17 +304,22 @@ const bool registered = registerCommand(10, [](CLI::App& app) {
       "info",
       "Load a scene file (building every mesh, reading every texture and OBJ) and print its node tree with "
       "mesh type, triangle and vertex counts and material per node, the totals, the materials with their "
-      "maps, the lights, the camera, the output size and the render settings. Exit 2 on a bad scene file.");
+      "maps, the lights, the camera, the output size and the render settings; then the CPU fast path's "
+      "target on this machine and every target it runs. Exit 2 on a bad scene file.");
   cmd->add_option("scene", request->scenePath, "Scene file (JSON, see docs/scene-format.md)")->required();
   cmd->add_flag("--json", request->json,
                 "Print one JSON object instead (keys: scene, nodes, triangles, vertices, materials, lights, "
-                "ambient, camera, settings, output)");
+                "ambient, camera, settings, output, cpu_isa: the CPU fast path's target under --cpu-isa auto, "
+                "cpu_isas_supported: every --cpu-isa this machine runs, best first)");
   cmd->callback([request] {
     const Scene scene = loadSceneFile(request->scenePath);
     if (request->json) {
-      std::cout << sceneJson(scene).dump(2) << "\n";
+      Json j = sceneJson(scene);
+      addCpuJson(j);
+      std::cout << j.dump(2) << "\n";
     } else {
       printScene(std::cout, scene);
+      printCpu(std::cout);
     }
   });
 });

@@ -1,4 +1,5 @@
-// `twinraster render SCENE --backend cpu|gl --out FILE.png`: one image from one backend.
+// `twinraster render SCENE --backend cpu|gl --out FILE.png`: one image from one backend; the
+// CPU one on the path and target --cpu-path and --cpu-isa name (default fast, auto).
 #include "app/cli/commands.h"
 #include "app/cli/common.h"
 #include "glrender/gl_renderer.h"
@@ -15,6 +16,7 @@ namespace {
 
 struct RenderArgs {
   RenderRequest request;
+  CpuRequest cpu;
   std::string backend = "cpu";
   std::string outPath;
   bool glFastSampling = false;
@@ -27,12 +29,15 @@ Image imageFromOutput(const RenderOutput& output) {
 }
 
 void runRender(const RenderArgs& args) {
+  const CpuOptions cpuOptions = requestedCpuOptions(args.cpu);
   Scene scene = loadRequestedScene(args.request);
   const int width = requestedWidth(args.request, scene);
   const int height = requestedHeight(args.request, scene);
   std::unique_ptr<Renderer> renderer;
+  std::string rendererName = "gl";
   if (args.backend == "cpu") {
-    renderer = makeCpuRenderer();
+    renderer = makeCpuRenderer(cpuOptions);
+    rendererName = "cpu " + cpuPathName(cpuOptions);
   } else {
     GlOptions options;
     options.verbose = args.request.verbose;
@@ -43,7 +48,7 @@ void runRender(const RenderArgs& args) {
   savePng(args.outPath, imageFromOutput(output));
   if (args.request.verbose) {
     const RenderStats& s = output.stats;
-    std::cerr << renderer->name() << ": " << width << "x" << height << ", " << s.milliseconds << " ms, triangles in "
+    std::cerr << rendererName << ": " << width << "x" << height << ", " << s.milliseconds << " ms, triangles in "
               << s.trianglesIn;
     // GL does not report its clipper's and culler's counts; only the CPU pipeline knows them.
     if (args.backend == "cpu") {
@@ -52,7 +57,7 @@ void runRender(const RenderArgs& args) {
     }
     std::cerr << ", pixels shaded " << s.pixelsShaded << "\n";
   }
-  std::cout << "wrote " << args.outPath << " (" << width << "x" << height << ", " << renderer->name() << ")\n";
+  std::cout << "wrote " << args.outPath << " (" << width << "x" << height << ", " << rendererName << ")\n";
 }
 
 const bool registered = registerCommand(20, [](CLI::App& app) {
@@ -63,6 +68,7 @@ const bool registered = registerCommand(20, [](CLI::App& app) {
       ->check(CLI::IsMember({"cpu", "gl"}))
       ->capture_default_str();
   cmd->add_option("--out,-o", args->outPath, "Output PNG file")->required();
+  addCpuOptions(*cmd, args->cpu);
   cmd->add_flag("--gl-fast-sampling", args->glFastSampling,
                 "Let llvmpipe use its fast 8-bit bilinear path (default: the precise mode, see docs/compare.md)");
   cmd->callback([args] { runRender(*args); });

@@ -1,7 +1,13 @@
 // `twinraster trace SCENE X Y`: the story of one pixel through the CPU pipeline.
+// The replay of the stages is the teaching code (softrender/pixel_trace.cpp); the final
+// pixel it reports comes from a full render on --cpu-path / --cpu-isa (default fast, auto).
+// tracePixel() takes no renderer options and renders on the default fast path itself, so
+// for any other choice the final pixel is rendered again here on the requested path and
+// replaces it (one extra frame; every path draws the same bits, the tests check it).
 #include "app/cli/commands.h"
 #include "app/cli/common.h"
 #include "scene/errors.h"
+#include "softrender/cpu_renderer.h"
 #include "softrender/pixel_trace.h"
 
 #include <iostream>
@@ -12,12 +18,25 @@ namespace {
 
 struct TraceArgs {
   RenderRequest request;
+  CpuRequest cpu;
   int x = 0;
   int y = 0;
   bool json = false;
 };
 
+// The final pixel of `trace` as a render with `options` draws it.
+void takeFinalPixelFrom(const CpuOptions& options, const Scene& scene, int width, int height, PixelTrace& trace) {
+  const RenderOutput output = makeCpuRenderer(options)->render(scene, scene.settings, width, height);
+  const std::size_t i =
+      static_cast<std::size_t>(trace.yTop) * static_cast<std::size_t>(width) + static_cast<std::size_t>(trace.x);
+  for (std::size_t c = 0; c < 4; ++c) trace.rgba[c] = output.rgba[i * 4 + c];
+  trace.depth = output.depth[i];
+  trace.triangleId = output.triangleId[i];
+  trace.debugLine = output.lineMask[i] != 0;
+}
+
 void runTrace(const TraceArgs& args) {
+  const CpuOptions cpuOptions = requestedCpuOptions(args.cpu);
   const Scene scene = loadRequestedScene(args.request);
   const int width = requestedWidth(args.request, scene);
   const int height = requestedHeight(args.request, scene);
@@ -26,11 +45,18 @@ void runTrace(const TraceArgs& args) {
                      std::to_string(width) + "x" + std::to_string(height) + " image; expected 0 <= X < " +
                      std::to_string(width) + " and 0 <= Y < " + std::to_string(height));
   }
-  const PixelTrace trace = tracePixel(scene, scene.settings, width, height, args.x, args.y);
+  PixelTrace trace = tracePixel(scene, scene.settings, width, height, args.x, args.y);
+  const CpuOptions tracePixelOwn;  // what tracePixel() renders with
+  if (cpuOptions.path != tracePixelOwn.path || cpuOptions.isa != tracePixelOwn.isa) {
+    takeFinalPixelFrom(cpuOptions, scene, width, height, trace);
+  }
+  const std::string path = cpuPathName(cpuOptions);
   if (args.json) {
-    std::cout << pixelTraceToJson(trace).dump(2) << "\n";
+    nlohmann::json json = pixelTraceToJson(trace);
+    json["cpu_path"] = path;  // the render the final pixel comes from
+    std::cout << json.dump(2) << "\n";
   } else {
-    std::cout << formatPixelTrace(trace);
+    std::cout << formatPixelTrace(trace) << "final pixel rendered by the cpu path: " << path << "\n";
   }
 }
 
@@ -39,12 +65,14 @@ const bool registered = registerCommand(40, [](CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "trace",
       "Trace one pixel through the CPU pipeline: the triangles that reach it, the clip planes, snapped "
-      "positions and edge functions, barycentrics, interpolated varyings, every shading term, the depth test");
+      "positions and edge functions, barycentrics, interpolated varyings, every shading term, the depth test. "
+      "The final pixel comes from a full render on --cpu-path and --cpu-isa.");
   addRenderOptions(*cmd, args->request);
   cmd->add_option("x", args->x, "Pixel column, 0 at the left edge of the image")->required();
   cmd->add_option("y", args->y, "Pixel row, 0 at the TOP edge of the image (as in the PNG files, not GL's bottom-left)")
       ->required();
   cmd->add_flag("--json", args->json, "Print the trace as JSON instead of text");
+  addCpuOptions(*cmd, args->cpu);
   cmd->callback([args] { runTrace(*args); });
 });
 

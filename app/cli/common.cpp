@@ -46,6 +46,51 @@ Scene loadRequestedScene(const RenderRequest& request) {
   return scene;
 }
 
+CLI::Option* addCpuOptions(CLI::App& cmd, CpuRequest& request) {
+  cmd.add_option("--cpu-path", request.path,
+                 "CPU traversal: fast (binned, SIMD kernels) or teaching (one stage after the other, one pixel at "
+                 "a time, as docs/pipeline.md draws it); both draw the same image bit for bit")
+      ->check(CLI::IsMember({"fast", "teaching"}))
+      ->capture_default_str();
+  std::string supported;
+  for (const CpuIsa isa : supportedCpuIsas()) supported += (supported.empty() ? "" : ", ") + std::string(toString(isa));
+  const CLI::Validator runnable(
+      [](std::string& text) -> std::string {
+        CpuIsa isa = CpuIsa::Auto;
+        if (!parse(text, isa)) return "expected one of " + allCpuIsaNames() + ", got '" + text + "'";
+        return cpuIsaSupported(isa) ? std::string() : cpuIsaUnsupportedReason(isa);
+      },
+      "", "CPU target");
+  return cmd
+      .add_option("--cpu-isa", request.isa,
+                  "Fast path only (refused with --cpu-path teaching): the Highway target its kernels run on, " + allCpuIsaNames() +
+                      " (default auto: the best this CPU runs; here " + supported +
+                      "). A target this CPU cannot run exits 2. Every target draws the same image.")
+      ->check(runnable);
+}
+
+CpuOptions requestedCpuOptions(const CpuRequest& request, int threads) {
+  CpuOptions options;
+  options.threads = threads;
+  options.path = request.path == "teaching" ? CpuPath::Teaching : CpuPath::Fast;
+  if (request.isa) {
+    if (!parse(*request.isa, options.isa)) {
+      throw InputError("--cpu-isa: expected one of " + allCpuIsaNames() + ", got '" + *request.isa + "'");
+    }
+    if (!cpuIsaSupported(options.isa)) throw InputError("--cpu-isa: " + cpuIsaUnsupportedReason(options.isa));
+    if (options.path == CpuPath::Teaching && options.isa != CpuIsa::Auto) {
+      throw InputError("--cpu-isa " + *request.isa +
+                       ": the teaching path runs no SIMD kernels; --cpu-isa applies to --cpu-path fast");
+    }
+  }
+  return options;
+}
+
+std::string resolvedCpuIsaName(const CpuOptions& options) {
+  if (options.path == CpuPath::Teaching) return {};
+  return std::string(toString(resolveCpuIsa(options.isa)));
+}
+
 int requestedWidth(const RenderRequest& request, const Scene& scene) {
   return request.width.value_or(scene.output.width);
 }

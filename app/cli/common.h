@@ -2,6 +2,7 @@
 #pragma once
 
 #include "scene/scene.h"
+#include "softrender/cpu_renderer.h"
 
 #include <CLI/CLI.hpp>
 
@@ -25,6 +26,26 @@ void addRenderOptions(CLI::App& cmd, RenderRequest& request);
 Scene loadRequestedScene(const RenderRequest& request);
 int requestedWidth(const RenderRequest& request, const Scene& scene);
 int requestedHeight(const RenderRequest& request, const Scene& scene);
+
+// --cpu-path and --cpu-isa, for the subcommands that run the CPU pipeline.
+struct CpuRequest {
+  std::string path = "fast";       // teaching|fast
+  std::optional<std::string> isa;  // the fast path's target; default auto
+};
+
+// Adds --cpu-path and --cpu-isa to `cmd` and returns the --cpu-isa option (for excludes()).
+// Both are checked while the command line is parsed, before anything renders: an unknown
+// name, or a target this binary or this CPU cannot run, exits 2 with
+// cpuIsaUnsupportedReason()'s message.
+CLI::Option* addCpuOptions(CLI::App& cmd, CpuRequest& request);
+
+// The renderer options the request names. Throws InputError (exit 2) for --cpu-isa with
+// --cpu-path teaching (the teaching path runs no Highway kernels, so a target there would
+// be measured as if it mattered) and, again, for a target this CPU cannot run.
+CpuOptions requestedCpuOptions(const CpuRequest& request, int threads = 1);
+
+// The fast path's target the options run on ("avx2"), or "" for the teaching path.
+std::string resolvedCpuIsaName(const CpuOptions& options);
 
 
 }  // namespace twr::cli

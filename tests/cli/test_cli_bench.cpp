@@ -1,11 +1,13 @@
-// `twinraster bench`: the JSON object's keys and their consistency, the precise-sampling
-// child process, the text summary, and exit 2 on bad input. Tiny images and two frames:
-// timings are never asserted, only that they are there and ordered.
+// `twinraster bench`: the JSON object's keys and their consistency, the lean GL frame, the
+// CPU target and --all-isas, the precise-sampling child process, the text summary, and exit
+// 2 on bad input. Tiny images and two frames: timings are never asserted, only that they
+// are there, positive, ordered and that every ratio is the quotient of its medians.
 #include "cli_run.h"
 
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <vector>
 
 namespace twr::testcli {
 namespace {
@@ -14,6 +16,13 @@ const std::string kDefaultScene = kSource + "/assets/scenes/default.json";
 const std::string kTiny = " --width 48 --height 32 --frames 2 --warmup 1";
 
 RunResult runCli(const std::string& args) { return runProgram(TWINRASTER_CLI, args, testDir("cli_bench")); }
+
+// What `info --json` says this machine runs, best first.
+std::vector<std::string> supportedTargets() {
+  const RunResult r = runCli("info --json \"" + kDefaultScene + "\"");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  return nlohmann::json::parse(r.out).at("cpu_isas_supported").get<std::vector<std::string>>();
+}
 
 nlohmann::json parseJson(const RunResult& r) {
   nlohmann::json j;
@@ -57,18 +66,70 @@ TEST(CliBench, JsonHasTheDocumentedKeys) {
                    j["cpu_ms_median"].get<double>() / j["gl_ms_median"].get<double>());
   EXPECT_EQ(j["gl_sampling"], "fast") << "bench times llvmpipe as a user gets it";
   EXPECT_FALSE(j.contains("gl_precise_ms_median"));
-  const std::string path = j["cpu_path"];
-  EXPECT_TRUE(path == "fast (avx512)" || path == "fast (scalar)") << path;
+  // The fast path on the best target this machine runs (auto), named in both keys.
+  const std::string best = supportedTargets().front();
+  EXPECT_EQ(j["cpu_path"], "fast (" + best + ")");
+  EXPECT_EQ(j["cpu_isa"], best);
+  EXPECT_EQ(j["cpu_isas_supported"].get<std::vector<std::string>>(), supportedTargets());
+}
+
+TEST(CliBench, LeanGlFrameIsTimedBesideTheFullOne) {
+  const RunResult r = runCli("bench \"" + kDefaultScene + "\"" + kTiny + " --threads 1 --json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json j = parseJson(r);
+  expectTimingKeys(j, "gl_lean", 2);
+  ASSERT_TRUE(j.contains("ratio_cpu_over_gl_lean"));
+  EXPECT_DOUBLE_EQ(j["ratio_cpu_over_gl_lean"].get<double>(),
+                   j["cpu_ms_median"].get<double>() / j["gl_lean_ms_median"].get<double>());
+  EXPECT_GT(j["ratio_cpu_over_gl_lean"].get<double>(), 0.0);
+  // The lean frame draws the same picture: the same covered pixels.
+  EXPECT_EQ(j["covered_pixels_gl_lean"], j["covered_pixels"]);
+  const double leanReadback = j["gl_lean_readback_ms_median"];
+  EXPECT_GE(leanReadback, 0.0);
+  EXPECT_LE(leanReadback, j["gl_lean_ms_max"].get<double>());
+  EXPECT_GT(j["gl_lean_ns_per_covered_pixel"].get<double>(), 0.0);
+  EXPECT_FALSE(j.contains("per_isa")) << "only with --all-isas";
+}
+
+TEST(CliBench, AllIsasTimesEverySupportedTargetAgainstTheLeanFrame) {
+  const RunResult r = runCli("bench \"" + kDefaultScene + "\"" + kTiny + " --threads 1 --all-isas --json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json j = parseJson(r);
+  const std::vector<std::string> supported = supportedTargets();
+  ASSERT_TRUE(j["per_isa"].is_array());
+  ASSERT_EQ(j["per_isa"].size(), supported.size());
+  const double glLean = j["gl_lean_ms_median"];
+  for (std::size_t i = 0; i < supported.size(); ++i) {
+    const nlohmann::json& entry = j["per_isa"][i];
+    EXPECT_EQ(entry.size(), 3u) << entry.dump();
+    EXPECT_EQ(entry["cpu_isa"], supported[i]);
+    const double ms = entry["cpu_ms_median"];
+    EXPECT_GT(ms, 0.0) << supported[i];
+    EXPECT_DOUBLE_EQ(entry["ratio_cpu_over_gl_lean"].get<double>(), ms / glLean) << supported[i];
+  }
+  // The main CPU timing stays the default path's.
+  EXPECT_EQ(j["cpu_isa"], supported.front());
+
+  const RunResult text = runCli("bench \"" + kDefaultScene + "\"" + kTiny + " --threads 1 --all-isas");
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  expectContains(text.out, "fast path per target");
+  for (const std::string& target : supported) expectContains(text.out, "    " + target + " ");
 }
 
 TEST(CliBench, CpuPathOptionsPickTheTraversal) {
   const RunResult teaching = runCli("bench \"" + kDefaultScene + "\"" + kTiny + " --cpu-path teaching --json");
   ASSERT_EQ(teaching.exitCode, 0) << teaching.err;
   EXPECT_EQ(parseJson(teaching)["cpu_path"], "teaching");
+  EXPECT_TRUE(parseJson(teaching)["cpu_isa"].is_null()) << "the teaching path runs no SIMD kernels";
+  // --cpu-scalar, the old spelling, is --cpu-isa scalar.
   const RunResult scalar = runCli("bench \"" + kDefaultScene + "\"" + kTiny + " --cpu-scalar --json");
   ASSERT_EQ(scalar.exitCode, 0) << scalar.err;
   const nlohmann::json j = parseJson(scalar);
   EXPECT_EQ(j["cpu_path"], "fast (scalar)");
+  EXPECT_EQ(j["cpu_isa"], "scalar");
+  const RunResult isa = runCli("bench \"" + kDefaultScene + "\"" + kTiny + " --cpu-isa scalar --json");
+  ASSERT_EQ(isa.exitCode, 0) << isa.err;
+  EXPECT_EQ(parseJson(isa)["cpu_path"], "fast (scalar)");
   // The traversal changes the time, never the picture.
   EXPECT_EQ(j["covered_pixels"], parseJson(teaching)["covered_pixels"]);
 }
@@ -91,7 +152,10 @@ TEST(CliBench, TextSummaryNamesBothBackendsAndTheRatio) {
   expectContains(r.out, "at 48x32: 3982 triangles");
   expectContains(r.out, "  cpu ");
   expectContains(r.out, "  gl (fast) ");
+  expectContains(r.out, "  gl lean (fast) ");
   expectContains(r.out, "ratio cpu/gl ");
+  expectContains(r.out, ", cpu/gl lean ");
+  expectContains(r.out, "  cpu target: " + supportedTargets().front() + "; this machine runs ");
 }
 
 TEST(CliBench, BadInputExitsTwo) {
@@ -105,6 +169,8 @@ TEST(CliBench, BadInputExitsTwo) {
       {"bench \"" + kDefaultScene + "\" --threads 65", "--threads"},
       {"bench \"" + kDefaultScene + "\" --view nonsense", "--view"},
       {"bench \"" + kDefaultScene + "\" --cpu-path quick", "--cpu-path"},
+      {"bench \"" + kDefaultScene + "\" --cpu-isa quick", "--cpu-isa"},
+      {"bench \"" + kDefaultScene + "\" --cpu-isa avx2 --cpu-scalar", "--cpu-scalar"},
       {"bench \"" + kDefaultScene + "\" --width 0", "--width"},
       {"bench \"" + kSource + "/assets/scenes/no_such_scene.json\"", "no_such_scene.json"},
       {"bench", "scene"},

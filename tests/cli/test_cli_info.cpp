@@ -72,6 +72,27 @@ TEST(CliInfo, JsonIsOneObjectWithTheDocumentedKeys) {
   EXPECT_EQ(j["output"]["height"], 480);
 }
 
+TEST(CliInfo, NamesTheCpuTargetActuallyUsedAndEverySupportedOne) {
+  const RunResult r = runCli("info --json \"" + kDefaultScene + "\"");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j.contains("cpu_isa"));
+  ASSERT_TRUE(j["cpu_isas_supported"].is_array());
+  const nlohmann::json& supported = j["cpu_isas_supported"];
+  // Best first, scalar always there and last; auto resolves to the best one.
+  ASSERT_FALSE(supported.empty());
+  EXPECT_EQ(supported.back(), "scalar");
+  EXPECT_EQ(j["cpu_isa"], supported.front());
+  for (const auto& name : supported) {
+    const std::string text = name.get<std::string>();
+    EXPECT_TRUE(text == "avx512" || text == "avx2" || text == "sse4" || text == "neon" || text == "scalar") << text;
+  }
+  const RunResult t = runCli("info \"" + kDefaultScene + "\"");
+  ASSERT_EQ(t.exitCode, 0) << t.err;
+  expectContains(t.out, "cpu: the fast path runs on " + j["cpu_isa"].get<std::string>() + " here (--cpu-isa auto)");
+  expectContains(t.out, "targets this machine runs: " + supported.front().get<std::string>());
+}
+
 TEST(CliInfo, BadSceneExitsTwoNamingTheFileAndKey) {
   const std::string scene = kSource + "/tests/scene/data_scenes/bad_texture.json";
   const RunResult r = runCli("info \"" + scene + "\"");
