@@ -84,6 +84,8 @@ GuiApp::GuiApp(GuiOptions options) : options_(std::move(options)) {
   prefs_ = loadPrefs(paths_.prefs, prefsWarning_);
   if (!prefsWarning_.empty()) std::cerr << "twinraster-gui: warning: " << prefsWarning_ << "\n";
   if (options_.viewMode) prefs_.viewMode = *options_.viewMode;
+  if (options_.cpuPath) prefs_.cpuPath = *options_.cpuPath;
+  if (options_.cpuIsa) prefs_.cpuIsa = *options_.cpuIsa;
   if (!paths_.dir.empty()) {
     std::error_code code;
     std::filesystem::create_directories(paths_.dir, code);

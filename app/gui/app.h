@@ -33,6 +33,7 @@ struct BackendFrame {
   std::shared_ptr<const RenderOutput> output;  // null when the render threw
   std::string error;
   Clock::time_point finishedAt{};
+  std::string cpuPath;  // CPU frames: the path that drew it, "teaching" or "fast (avx2)"
 };
 
 struct DiffState {
@@ -95,6 +96,7 @@ class GuiApp {
   void drawLayout();
   void drawControlsPanel();
   void drawRenderingTab();
+  void drawCpuRendererSection();
   void drawSceneTab();
   void drawNode(Node& node);
   void drawMeshEditor(int meshIndex);

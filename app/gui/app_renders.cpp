@@ -80,6 +80,7 @@ void GuiApp::takeCpuFrames() {
       cpuFrame_.output = frame.output;
       cpuFrame_.error = frame.error;
       cpuFrame_.finishedAt = frame.finishedAt;
+      cpuFrame_.cpuPath = frame.cpuPath;
       if (frame.output) cpuMs_.add(frame.output->stats.milliseconds);
       cpuTextureStale_ = true;
     }
@@ -119,6 +120,8 @@ void GuiApp::submitCpu() {
   job.settings = doc_.scene.settings;
   job.width = renderWidth_;
   job.height = renderHeight_;
+  job.path = prefs_.cpuPath;
+  job.isa = prefs_.cpuIsa;
   job.renderFrame = needFrame;
   job.probePixel = pin_.pixel;
   if (needFrame) {

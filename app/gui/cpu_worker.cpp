@@ -67,12 +67,29 @@ bool CpuWorker::superseded() const {
   return queued_.has_value() || stopping_;
 }
 
-CpuProbe CpuWorker::probe(Renderer& renderer, const CpuJob& job) const {
+CpuProbe CpuWorker::probe(Renderer& renderer, const CpuOptions& options, const CpuJob& job,
+                          const RenderOutput* frameOutput) const {
   CpuProbe result;
   result.pixel = *job.probePixel;
   try {
-    result.trace = std::make_shared<const PixelTrace>(
-        tracePixel(job.scene, job.settings, job.width, job.height, result.pixel.x, result.pixel.yTop));
+    PixelTrace trace = tracePixel(job.scene, job.settings, job.width, job.height, result.pixel.x, result.pixel.yTop);
+    // tracePixel() takes its final pixel from a render on the default fast path; show the
+    // chosen renderer's instead (this job's frame, else one more render).
+    const CpuOptions tracePixelOwn;
+    if (options.path != tracePixelOwn.path || options.isa != tracePixelOwn.isa) {
+      RenderOutput own;
+      if (!frameOutput) {
+        own = renderer.render(job.scene, job.settings, job.width, job.height);
+        frameOutput = &own;
+      }
+      const std::size_t i = static_cast<std::size_t>(result.pixel.yTop) * static_cast<std::size_t>(job.width) +
+                            static_cast<std::size_t>(result.pixel.x);
+      for (std::size_t c = 0; c < 4; ++c) trace.rgba[c] = frameOutput->rgba[i * 4 + c];
+      trace.depth = frameOutput->depth[i];
+      trace.triangleId = frameOutput->triangleId[i];
+      trace.debugLine = frameOutput->lineMask[i] != 0;
+    }
+    result.trace = std::make_shared<const PixelTrace>(std::move(trace));
   } catch (const std::exception& e) {
     result.traceError = e.what();
     return result;
@@ -95,10 +112,12 @@ CpuProbe CpuWorker::probe(Renderer& renderer, const CpuJob& job) const {
 
 void CpuWorker::run() {
   // The renderer lives on this thread only; it draws on every online CPU (as llvmpipe does),
-  // which keeps 1280 x 720 frames and the inspector's per-view renders interactive.
+  // which keeps 1280 x 720 frames and the inspector's per-view renders interactive. A job
+  // asking for another path or target gets a new renderer.
   CpuOptions options;
   options.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const std::unique_ptr<Renderer> renderer = makeCpuRenderer(options);
+  std::unique_ptr<Renderer> renderer;
+  std::string rendererError;  // why the renderer for `options` could not be made
   for (;;) {
     CpuJob job;
     {
@@ -114,7 +133,21 @@ void CpuWorker::run() {
     frame.width = job.width;
     frame.height = job.height;
     frame.rendered = job.renderFrame;
-    if (job.renderFrame) {
+    if (!renderer || job.path != options.path || job.isa != options.isa) {
+      options.path = job.path;
+      options.isa = job.isa;
+      try {
+        renderer = makeCpuRenderer(options);
+        rendererError.clear();
+      } catch (const std::exception& e) {
+        renderer.reset();
+        rendererError = e.what();
+      }
+    }
+    frame.cpuPath = cpuPathName(options);
+    if (!renderer) {
+      frame.error = rendererError;
+    } else if (job.renderFrame) {
       try {
         frame.output =
             std::make_shared<const RenderOutput>(renderer->render(job.scene, job.settings, job.width, job.height));
@@ -123,7 +156,7 @@ void CpuWorker::run() {
       }
     }
     frame.finishedAt = Clock::now();  // the frame's age counts from here, not from the probe's end
-    if (job.probePixel && frame.error.empty()) frame.probe = probe(*renderer, job);
+    if (job.probePixel && frame.error.empty()) frame.probe = probe(*renderer, options, job, frame.output.get());
     {
       const std::lock_guard lock(mutex_);
       finished_.push_back(std::move(frame));

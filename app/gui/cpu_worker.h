@@ -6,6 +6,7 @@
 
 #include "app/gui/pixel_probe.h"
 #include "scene/renderer.h"
+#include "softrender/cpu_renderer.h"
 #include "softrender/pixel_trace.h"
 
 #include <chrono>
@@ -27,6 +28,8 @@ struct CpuJob {
   RenderSettings settings;
   int width = 0;   // pixels
   int height = 0;  // pixels
+  CpuPath path = CpuPath::Fast;  // the renderer to draw with (the worker makes a new one on a change)
+  CpuIsa isa = CpuIsa::Auto;     // a supported target (the UI offers no other)
   bool renderFrame = true;           // false: only the probe (a new pinned pixel, same frame)
   std::optional<PixelPos> probePixel;  // trace this pixel and read it in every debug view
 };
@@ -45,6 +48,7 @@ struct CpuFrame {
   bool rendered = false;                       // renderFrame was set (output or error is new)
   std::shared_ptr<const RenderOutput> output;  // null when the render threw or was not asked for
   std::string error;                           // what the render threw, else empty
+  std::string cpuPath;                         // what drew it: "teaching" or "fast (avx2)"
   std::optional<CpuProbe> probe;
   Clock::time_point finishedAt{};  // when the render (not the probe) finished
 };
@@ -70,7 +74,8 @@ class CpuWorker {
  private:
   void run();
   bool superseded() const;
-  CpuProbe probe(Renderer& renderer, const CpuJob& job) const;
+  CpuProbe probe(Renderer& renderer, const CpuOptions& options, const CpuJob& job,
+                 const RenderOutput* frameOutput) const;
 
   mutable std::mutex mutex_;
   mutable std::condition_variable changed_;

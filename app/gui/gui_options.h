@@ -3,6 +3,7 @@
 
 #include "app/gui/pixel_probe.h"
 #include "app/gui/view_mode.h"
+#include "softrender/cpu_renderer.h"
 
 #include <optional>
 #include <string>
@@ -17,6 +18,8 @@ struct GuiOptions {
   int frames = 0;                     // > 0: quit after this many frames (once settled)
   std::string screenshotPath;         // non-empty: save the whole window on the last frame
   std::optional<ViewMode> viewMode;   // overrides the remembered view mode
+  std::optional<CpuPath> cpuPath;     // override the remembered CPU path and target
+  std::optional<CpuIsa> cpuIsa;
   std::optional<PixelPos> pin;        // a pixel to pin at start
   bool reset = false;                 // delete the remembered settings first
   bool glFastSampling = false;        // let llvmpipe use its fast texture path

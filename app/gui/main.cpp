@@ -37,7 +37,7 @@ void requestPreciseSampling() {
 int main(int argc, char** argv) {
   using namespace twr;
   gui::GuiOptions options;
-  std::string viewMode, pin;
+  std::string viewMode, pin, cpuPath, cpuIsa;
   CLI::App app{
       "twinraster-gui: the desktop app. Renders SCENE with the CPU software pipeline (on a worker thread) and "
       "with OpenGL 3.3 in the window's own context, and shows them side by side, split, flickering or diffed, "
@@ -71,6 +71,20 @@ int main(int argc, char** argv) {
                  "Window size W H in screen coordinates (default 1280 800)")
       ->expected(2)
       ->type_name("W H");
+  app.add_option("--cpu-path", cpuPath,
+                 "Start the CPU renderer on this traversal: fast or teaching (default: the remembered one; the "
+                 "Rendering tab switches it)")
+      ->check(CLI::IsMember({"fast", "teaching"}));
+  app.add_option("--cpu-isa", cpuIsa,
+                 "Start the CPU fast path on this target: " + allCpuIsaNames() +
+                     " (default: the remembered one). A target this CPU cannot run exits 2.")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            CpuIsa isa = CpuIsa::Auto;
+            if (!parse(text, isa)) return "expected one of " + allCpuIsaNames() + ", got '" + text + "'";
+            return cpuIsaSupported(isa) ? std::string() : cpuIsaUnsupportedReason(isa);
+          },
+          "", "CPU target"));
   app.add_flag("--gl-fast-sampling", options.glFastSampling,
                "Let llvmpipe use its fast 8-bit bilinear path (default: the precise mode, as `twinraster compare`)");
 
@@ -83,6 +97,12 @@ int main(int argc, char** argv) {
       gui::ViewMode mode{};
       gui::parse(viewMode, mode);
       options.viewMode = mode;
+    }
+    if (!cpuPath.empty()) options.cpuPath = cpuPath == "teaching" ? CpuPath::Teaching : CpuPath::Fast;
+    if (!cpuIsa.empty()) {
+      CpuIsa isa = CpuIsa::Auto;
+      parse(cpuIsa, isa);
+      options.cpuIsa = isa;
     }
     if (!pin.empty()) {
       gui::PixelPos pixel;

@@ -1,8 +1,11 @@
-// The Rendering tab: every field of RenderSettings, applied to both backends.
+// The Rendering tab: the CPU renderer's own choices (path and SIMD target), then every field
+// of RenderSettings, applied to both backends.
 #include "app/gui/app.h"
 #include "app/gui/ui_widgets.h"
+#include "softrender/cpu_renderer.h"
 
 #include <string>
+#include <vector>
 
 namespace twr::gui {
 namespace {
@@ -25,7 +28,60 @@ const vec4 kNewUserPlane{0.0f, 1.0f, 0.0f, 0.0f};
 
 }  // namespace
 
+void GuiApp::drawCpuRendererSection() {
+  bool changed = false;
+  const float labelWidth = ImGui::CalcTextSize("Tangent transform").x + 2.0f * ImGui::GetStyle().ItemSpacing.x;
+  sectionTitle("CPU renderer");
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted("Path");
+  ImGui::SameLine(labelWidth);
+  if (ImGui::RadioButton("fast", prefs_.cpuPath == CpuPath::Fast) && prefs_.cpuPath != CpuPath::Fast) {
+    prefs_.cpuPath = CpuPath::Fast;
+    changed = true;
+  }
+  itemTooltip("Binned triangles, a visibility pass, then the shading source on SIMD vectors (Google Highway) "
+              "for the target below.");
+  ImGui::SameLine();
+  if (ImGui::RadioButton("teaching", prefs_.cpuPath == CpuPath::Teaching) && prefs_.cpuPath != CpuPath::Teaching) {
+    prefs_.cpuPath = CpuPath::Teaching;
+    changed = true;
+  }
+  itemTooltip("One stage after the other, one pixel at a time, as docs/pipeline.md draws it: slower, the same "
+              "image bit for bit.");
+
+  ImGui::BeginDisabled(prefs_.cpuPath == CpuPath::Teaching);
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted("SIMD target");
+  ImGui::SameLine(labelWidth);
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  const std::string autoLabel = "auto (" + std::string(toString(resolveCpuIsa(CpuIsa::Auto))) + ")";
+  const auto label = [&autoLabel](CpuIsa isa) {
+    return isa == CpuIsa::Auto ? autoLabel : std::string(toString(isa));
+  };
+  if (ImGui::BeginCombo("##cpu_isa", label(prefs_.cpuIsa).c_str())) {
+    std::vector<CpuIsa> choices = {CpuIsa::Auto};
+    for (const CpuIsa isa : supportedCpuIsas()) choices.push_back(isa);
+    for (const CpuIsa isa : choices) {
+      const bool selected = prefs_.cpuIsa == isa;
+      if (ImGui::Selectable(label(isa).c_str(), selected) && !selected) {
+        prefs_.cpuIsa = isa;
+        changed = true;
+      }
+      if (selected) ImGui::SetItemDefaultFocus();
+    }
+    ImGui::EndCombo();
+  }
+  ImGui::EndDisabled();
+  itemTooltip("The fast path's Highway target: auto takes the best this CPU runs; the list holds every target "
+              "this binary and this CPU can run. Every target draws the same image; only the time changes.");
+
+  // The CPU image is redrawn with the new renderer (GL too: one edit, one frame pair to diff).
+  if (changed) doc_.touch();
+}
+
 void GuiApp::drawRenderingTab() {
+  drawCpuRendererSection();
+
   RenderSettings& settings = doc_.scene.settings;
   bool changed = false;
   const float labelWidth = ImGui::CalcTextSize("Tangent transform").x + 2.0f * ImGui::GetStyle().ItemSpacing.x;

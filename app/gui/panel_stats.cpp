@@ -68,6 +68,9 @@ void GuiApp::drawStatsPanel() {
     row(medianName.c_str(), milliseconds(cpuMs_.median()), milliseconds(glMs_.median()),
         "Wall time of render(): CPU on its worker thread, GL including the read-back of every buffer.");
     row("last frame", cpu ? milliseconds(cpu->milliseconds) : "-", gl ? milliseconds(gl->milliseconds) : "-");
+    row("path (SIMD target)", cpuFrame_.cpuPath.empty() ? "-" : cpuFrame_.cpuPath, "n/a",
+        "The CPU traversal that drew the frame shown, and for the fast path the Highway target it ran on (auto "
+        "resolved). Switch both in the Rendering tab.");
     row("triangles in", cpuCount(&RenderStats::trianglesIn), glCount(&RenderStats::trianglesIn),
         "Submitted to the clipper (GL: submitted to glDrawElements).");
     row("  clipped", cpuCount(&RenderStats::trianglesClipped), "n/a",

@@ -18,6 +18,8 @@ std::string_view toString(ResolutionSource source) {
 
 std::string_view toString(HeatScale scale) { return scale == HeatScale::Linear ? "linear" : "log"; }
 
+std::string_view toString(CpuPath path) { return path == CpuPath::Teaching ? "teaching" : "fast"; }
+
 // Each reader keeps `value` and notes the key when the JSON holds something else.
 void readString(const json& object, const char* key, std::string& value, std::string& warning) {
   if (!object.contains(key)) return;
@@ -109,6 +111,18 @@ GuiPrefs loadPrefs(const std::filesystem::path& path, std::string& warning) {
   readFloat(object, "heat_max_levels", 1.0f, 255.0f, maxLevels, problems);
   prefs.heatMaxLevels = static_cast<int>(maxLevels);
   readString(object, "screenshot_dir", prefs.screenshotDir, problems);
+  name.clear();
+  readString(object, "cpu_path", name, problems);
+  if (name == "teaching") prefs.cpuPath = CpuPath::Teaching;
+  else if (!name.empty() && name != "fast") problems += "; cpu_path: expected fast|teaching";
+  name.clear();
+  readString(object, "cpu_isa", name, problems);
+  if (!name.empty()) {
+    CpuIsa isa = CpuIsa::Auto;
+    if (!parse(name, isa)) problems += "; cpu_isa: expected " + allCpuIsaNames();
+    else if (!cpuIsaSupported(isa)) problems += "; cpu_isa: " + cpuIsaUnsupportedReason(isa);
+    else prefs.cpuIsa = isa;
+  }
   if (!problems.empty()) {
     if (problems.starts_with("; ")) problems.erase(0, 2);
     warning = path.string() + ": " + problems + " (kept the defaults for these)";
@@ -134,6 +148,8 @@ bool savePrefs(const std::filesystem::path& path, const GuiPrefs& prefs, std::st
       {"heat_scale", toString(prefs.heatScale)},
       {"heat_max_levels", prefs.heatMaxLevels},
       {"screenshot_dir", prefs.screenshotDir},
+      {"cpu_path", toString(prefs.cpuPath)},
+      {"cpu_isa", toString(prefs.cpuIsa)},
   };
   std::error_code code;
   std::filesystem::create_directories(path.parent_path(), code);

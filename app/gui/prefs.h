@@ -6,6 +6,7 @@
 
 #include "app/gui/view_mode.h"
 #include "compare/colours.h"
+#include "softrender/cpu_renderer.h"
 
 #include <filesystem>
 #include <string>
@@ -37,6 +38,10 @@ struct GuiPrefs {
   HeatScale heatScale = HeatScale::Log;
   int heatMaxLevels = 32;  // heat ramp top, levels in [1, 255]
   std::string screenshotDir = "out/screenshots";  // relative to the working folder
+  // The CPU renderer: traversal, and the fast path's Highway target (a remembered target this
+  // CPU cannot run falls back to auto with a warning).
+  CpuPath cpuPath = CpuPath::Fast;
+  CpuIsa cpuIsa = CpuIsa::Auto;
 };
 
 struct PrefsPaths {

@@ -222,6 +222,29 @@ TEST(GuiSmoke, ImmediateModeLinesRecreateTheWindowAsCompatibilityProfile) {
   }
 }
 
+TEST(GuiSmoke, TeachingPathAndTargetComeFromTheCommandLineAndAreRemembered) {
+  REQUIRE_GUI_AND_XVFB();
+  const fs::path prefs = testDir() / "config" / "twinraster" / "gui.json";
+  const fs::path shot = testDir() / "teaching.png";
+  fs::remove(shot);
+  // The teaching path draws the CPU image (left) as the fast one does.
+  RunResult r = runGui("\"" + kDefaultScene + "\" --reset --frames " + std::to_string(kFrames) +
+                       " --view-mode side --cpu-path teaching --screenshot \"" + shot.string() + "\"");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const twr::Image image = loadShot(shot);
+  const int middle = (kViewX0 + kWindowWidth) / 2;
+  EXPECT_GT(countPixels(image, kViewX0, 0, middle, kWindowHeight, brickRed), 5000) << "no CPU image";
+  nlohmann::json saved = nlohmann::json::parse(readFile(prefs));
+  EXPECT_EQ(saved.at("cpu_path"), "teaching");
+  EXPECT_EQ(saved.at("cpu_isa"), "auto");
+  // The next run starts from the remembered path; --cpu-isa picks the fast path's target.
+  r = runGui("\"" + kDefaultScene + "\" --frames 3 --cpu-isa scalar");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  saved = nlohmann::json::parse(readFile(prefs));
+  EXPECT_EQ(saved.at("cpu_path"), "teaching");
+  EXPECT_EQ(saved.at("cpu_isa"), "scalar");
+}
+
 TEST(GuiSmoke, BadScenePathShowsAnErrorAndKeepsRunning) {
   REQUIRE_GUI_AND_XVFB();
   const fs::path shot = testDir() / "bad.png";
@@ -259,12 +282,17 @@ TEST(GuiSmoke, HelpAndBadOptionsNeedNoDisplay) {
   if (!fs::exists(guiBinary())) GTEST_SKIP() << "twinraster-gui was not built (TWINRASTER_BUILD_GUI=OFF)";
   const RunResult help = runGui("--help", false);
   EXPECT_EQ(help.exitCode, 0);
-  for (const char* option : {"SCENE", "--frames", "--screenshot", "--view-mode", "--reset", "--pin"}) {
+  for (const char* option :
+       {"SCENE", "--frames", "--screenshot", "--view-mode", "--reset", "--pin", "--cpu-path", "--cpu-isa"}) {
     EXPECT_NE(help.out.find(option), std::string::npos) << option << " missing from --help:\n" << help.out;
   }
   EXPECT_EQ(runGui("--view-mode sideways", false).exitCode, 2);
   EXPECT_EQ(runGui("--screenshot x.png", false).exitCode, 2) << "--screenshot needs --frames";
   EXPECT_EQ(runGui("--pin 3", false).exitCode, 2);
+  EXPECT_EQ(runGui("--cpu-path quick", false).exitCode, 2);
+  const RunResult unknown = runGui("--cpu-isa avx9000", false);
+  EXPECT_EQ(unknown.exitCode, 2);
+  EXPECT_NE(unknown.err.find("avx9000"), std::string::npos) << unknown.err;
 }
 
 TEST(GuiSmoke, NoDisplayIsACleanError) {
