@@ -1,6 +1,7 @@
 // The CPU pipeline glued together. The teaching traversal, for every draw item: vertex ->
-// clip -> (fan) -> setup -> raster -> interpolate -> depth test -> shade -> output merge,
-// then the TBN debug lines. The fast traversal of the same stages is fast_pipeline.cpp.
+// clip -> (fan) -> setup -> raster -> interpolate -> depth test -> shade -> output merge
+// (draw_loop.h, shared with the reference renderer), then the TBN debug lines. The fast
+// traversal of the same stages is fast_pipeline.cpp.
 #include "softrender/cpu_renderer.h"
 
 #include "scene/errors.h"
@@ -8,9 +9,10 @@
 #include "softrender/clip.h"
 #include "softrender/debug_lines.h"
 #include "softrender/draw_list.h"
-#include "softrender/draw_triangle.h"
+#include "softrender/draw_loop.h"
 #include "softrender/fast_pipeline.h"
 #include "softrender/framebuffer.h"
+#include "softrender/output_merge.h"
 #include "softrender/interpolate.h"
 #include "softrender/setup.h"
 #include "softrender/shade.h"
@@ -27,108 +29,44 @@ namespace twr {
 
 namespace {
 
-// Most worker threads a render uses (inclusive); more would only split rows finer.
-constexpr int kMaxThreads = 64;
-
-// One draw item and its vertex stage output, shared by all bands.
-struct DrawState {
-  ItemState s;
-  std::vector<ClipVertex> vertices;  // one per mesh vertex
+// The teaching path's target: the RGBA8 framebuffer (output_merge.h).
+struct FramebufferTarget {
+  Framebuffer& fb;
+  float storedDepth(int px, int py) const { return fb.depth[fb.index(px, py)]; }
+  void write(int px, int py, const vec4& colour, float depth, std::uint32_t triangleId) {
+    writeFragment(fb, px, py, colour, depth, triangleId);
+  }
 };
 
-// The rows one worker owns, [rowBegin, rowEnd) (exclusive end). Every band sees every
-// triangle in submission order, so the image does not depend on the number of bands; only
-// band 0 counts triangles, so the statistics do not either.
-struct Band {
-  int rowBegin = 0;
-  int rowEnd = 0;
-  bool countsTriangles = true;
-};
-
-// Rasterizes and shades one triangle that survived clipping (v0, v1, v2 in fan order).
-template <typename Features>
-void drawClippedTriangle(const ItemState& s, const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2,
-                         std::uint32_t triangleId, const Band& band, Framebuffer& fb, RenderStats& stats) {
-  const std::array<WindowVertex, 3> window{windowFromClip(v0, s.viewport), windowFromClip(v1, s.viewport),
-                                           windowFromClip(v2, s.viewport)};
-  TriangleSetup setup;
-  if (setupTriangle(window, s.cull, s.frontFace, s.viewport, setup) != SetupResult::Ready) {
-    if (band.countsTriangles) ++stats.trianglesCulled;
-    return;
-  }
-  if (band.countsTriangles) ++stats.trianglesProduced;
-  if (setup.y1 < band.rowBegin || setup.y0 >= band.rowEnd) return;
-  const InterpolationSetup interpolation = makeInterpolationSetup(window, setup);
-  stats.pixelsShaded += shadeTriangleRows<Features>(setup, interpolation, v0, v1, v2, s.shade, s.tangentLighting,
-                                                    triangleId, band.rowBegin, band.rowEnd, fb);
-}
-
-template <typename Features>
-void drawItemTriangles(const DrawState& d, const Band& band, Framebuffer& fb, RenderStats& stats) {
-  const ItemState& s = d.s;
-  const Mesh& mesh = *s.item->mesh;
-  ClipPolygon polygon, scratch;
-  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-    if (band.countsTriangles) ++stats.trianglesIn;
-    const ClipVertex& a = d.vertices[mesh.indices[3 * t + 0]];
-    const ClipVertex& b = d.vertices[mesh.indices[3 * t + 1]];
-    const ClipVertex& c = d.vertices[mesh.indices[3 * t + 2]];
-    const std::uint32_t planesCut = clipTriangle(a, b, c, s.clip, polygon, scratch);
-    if (planesCut != 0 && band.countsTriangles) ++stats.trianglesClipped;
-    const std::uint32_t triangleId = s.item->firstTriangleId + static_cast<std::uint32_t>(t);
-    // Fan triangulation of the convex clipped polygon around its first vertex.
-    for (int i = 1; i + 1 < polygon.count; ++i) {
-      drawClippedTriangle<Features>(s, polygon.v[0], polygon.v[static_cast<std::size_t>(i)],
-                                    polygon.v[static_cast<std::size_t>(i + 1)], triangleId, band, fb, stats);
-    }
-  }
-}
-
-void addStats(RenderStats& into, const RenderStats& from) {
-  into.trianglesIn += from.trianglesIn;
-  into.trianglesClipped += from.trianglesClipped;
-  into.trianglesCulled += from.trianglesCulled;
-  into.trianglesProduced += from.trianglesProduced;
-  into.pixelsShaded += from.pixelsShaded;
-}
-
-// The teaching traversal: vertex stage per item, then one band of rows per thread.
+// The teaching traversal: the vertex stage per item, then one band of rows per thread, each
+// walking every triangle (draw_loop.h).
 void drawTeaching(const std::vector<ItemState>& items, int threads, Framebuffer& fb, RenderStats& stats) {
-  std::vector<DrawState> states(items.size());
+  std::vector<LoopItemT<float>> loopItems(items.size());
   for (std::size_t k = 0; k < items.size(); ++k) {
-    DrawState& d = states[k];
-    d.s = items[k];
-    const Mesh& mesh = *d.s.item->mesh;
-    d.vertices.resize(mesh.vertices.size());
-    for (std::size_t i = 0; i < d.vertices.size(); ++i) {
-      d.vertices[i] = runVertexStage(mesh.vertices[i], d.s.vertexUniforms);
-    }
+    const ItemState& s = items[k];
+    LoopItemT<float>& d = loopItems[k];
+    d.mesh = s.item->mesh;
+    d.firstTriangleId = s.item->firstTriangleId;
+    d.vertices.resize(d.mesh->vertices.size());
+    for (std::size_t i = 0; i < d.vertices.size(); ++i) d.vertices[i] = runVertexStage(d.mesh->vertices[i], s.vertexUniforms);
+    d.shade = s.shade;
+    d.shaderKey = s.shaderKey;
+    d.clip = s.clip;
+    d.cull = s.cull;
+    d.frontFace = s.frontFace;
+    d.viewport = s.viewport;
+    d.tangentLighting = s.tangentLighting;
   }
-  auto drawBand = [&](const Band& band, RenderStats& bandStats) {
-    for (const DrawState& d : states) {
-      withShaderFeatures(d.s.shaderKey,
-                         [&]<typename Features>() { drawItemTriangles<Features>(d, band, fb, bandStats); });
-    }
-  };
-  const int bandCount = std::clamp(threads, 1, std::min(fb.height, kMaxThreads));
-  std::vector<RenderStats> bandStats(static_cast<std::size_t>(bandCount));
-  std::vector<std::thread> workers;
-  for (int b = 0; b < bandCount; ++b) {
-    const Band band{fb.height * b / bandCount, fb.height * (b + 1) / bandCount, b == 0};
-    if (b + 1 == bandCount) {
-      drawBand(band, bandStats[static_cast<std::size_t>(b)]);  // the calling thread takes the last band
-    } else {
-      workers.emplace_back(drawBand, band, std::ref(bandStats[static_cast<std::size_t>(b)]));
-    }
-  }
-  for (std::thread& worker : workers) worker.join();
-  for (const RenderStats& b : bandStats) addStats(stats, b);
+  FramebufferTarget target{fb};
+  drawInBands(
+      threads, fb.height, true,
+      [&](const RowBand& band, RenderStats& bandStats) { drawBand(loopItems, band, target, bandStats); }, stats);
 }
 
 class CpuRenderer final : public Renderer {
  public:
   explicit CpuRenderer(const CpuOptions& options) : options_(options) {
-    options_.threads = std::clamp(options_.threads, 1, kMaxThreads);
+    options_.threads = std::clamp(options_.threads, 1, kMaxDrawThreads);
   }
   std::string name() const override { return "cpu"; }
 

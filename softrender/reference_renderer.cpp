@@ -1,8 +1,8 @@
 // The reference renderer: the pipeline stages with T = double, N x N sub-pixel passes, box
-// filter. The draw loop is the CPU renderer's original one (vertex stage per item, clip, fan,
-// setup, raster, interpolate, depth test, shade), writing unrounded colours into a sample
-// target instead of the RGBA8 framebuffer. It is templated on T too, so the same loop with
-// T = float measures what double itself costs (ReferenceOptions::doublePrecision).
+// filter. The draw loop is the teaching path's own (draw_loop.h: clip, fan, setup, raster,
+// interpolate, depth test, shade), writing unrounded colours into a sample target instead of
+// the RGBA8 framebuffer. With T = float the same loop measures what double itself costs
+// (ReferenceOptions::doublePrecision).
 #include "softrender/reference_renderer.h"
 
 #include "scene/camera.h"
@@ -12,6 +12,7 @@
 #include "softrender/draw_list.h"
 #include "softrender/framebuffer.h"
 #include "softrender/interpolate.h"
+#include "softrender/draw_loop.h"
 #include "softrender/raster.h"
 #include "softrender/setup.h"
 #include "softrender/shade.h"
@@ -30,8 +31,6 @@ namespace twr {
 
 namespace {
 
-// Most worker threads a pass uses (inclusive), as the CPU renderer.
-constexpr int kMaxThreads = 64;
 constexpr double kPi = 3.14159265358979323846;
 const glm::dvec3 kWorldUp{0.0, 1.0, 0.0};
 
@@ -84,72 +83,18 @@ struct SampleTarget {
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x); }
 };
 
+// The reference's draw loop target: unrounded colours in the pass's sample buffer.
 template <typename T>
-struct ReferenceDrawState {
-  std::vector<ClipVertexT<T>> vertices;
-  std::uint32_t firstTriangleId = 0;
-  const Mesh* mesh = nullptr;
-  ShaderKey shaderKey;
-  ShadeUniformsT<T> shade;
-  ClipConfig clip;
-  CullMode cull = CullMode::Back;
-  FrontFace frontFace = FrontFace::Ccw;
-  Viewport viewport;
-  bool tangentLighting = false;
-};
-
-struct Band {
-  int rowBegin = 0;  // inclusive
-  int rowEnd = 0;    // exclusive
-  bool countsTriangles = true;
-};
-
-template <typename Features, typename T>
-void drawSampleTriangle(const ReferenceDrawState<T>& s, const ClipVertexT<T>& v0, const ClipVertexT<T>& v1,
-                        const ClipVertexT<T>& v2, std::uint32_t triangleId, const Band& band, SampleTarget& target,
-                        RenderStats& stats) {
-  const std::array<WindowVertexT<T>, 3> window{windowFromClip(v0, s.viewport), windowFromClip(v1, s.viewport),
-                                               windowFromClip(v2, s.viewport)};
-  TriangleSetup setup;
-  if (setupTriangle(window, s.cull, s.frontFace, s.viewport, setup) != SetupResult::Ready) {
-    if (band.countsTriangles) ++stats.trianglesCulled;
-    return;
+struct SampleBufferTarget {
+  SampleTarget& target;
+  T storedDepth(int px, int py) const { return static_cast<T>(target.depth[target.index(px, py)]); }
+  void write(int px, int py, const Vec4T<T>& colour, T depth, std::uint32_t triangleId) {
+    const std::size_t i = target.index(px, py);
+    target.colour[i] = glm::dvec3(colour);
+    target.depth[i] = depth;
+    target.triangleId[i] = triangleId;
   }
-  if (band.countsTriangles) ++stats.trianglesProduced;
-  if (setup.y1 < band.rowBegin || setup.y0 >= band.rowEnd) return;
-  const InterpolationSetupT<T> interpolation = makeInterpolationSetup(window, setup);
-  const int tangentLights = s.tangentLighting ? s.shade.lightCount : 0;
-  rasterizeTriangle(setup, band.rowBegin, band.rowEnd, [&](int py, Span span) {
-    for (int px = span.xBegin; px < span.xEnd; ++px) {
-      const PixelWeightsT<T> weights = pixelWeights(interpolation, px, py);
-      const std::size_t i = target.index(px, py);
-      if (!(weights.depth < target.depth[i])) continue;  // GL_LESS
-      const FragmentT<T> fragment = interpolateFragment(v0, v1, v2, weights, s.tangentLighting, tangentLights);
-      target.colour[i] = glm::dvec3(shadeFragment<Features>(fragment, s.shade, nullptr));
-      target.depth[i] = weights.depth;
-      target.triangleId[i] = triangleId;
-      ++stats.pixelsShaded;
-    }
-  });
-}
-
-template <typename Features, typename T>
-void drawItemSamples(const ReferenceDrawState<T>& s, const Band& band, SampleTarget& target, RenderStats& stats) {
-  ClipPolygonT<T> polygon, scratch;
-  for (std::size_t t = 0; t < s.mesh->triangleCount(); ++t) {
-    if (band.countsTriangles) ++stats.trianglesIn;
-    const ClipVertexT<T>& a = s.vertices[s.mesh->indices[3 * t + 0]];
-    const ClipVertexT<T>& b = s.vertices[s.mesh->indices[3 * t + 1]];
-    const ClipVertexT<T>& c = s.vertices[s.mesh->indices[3 * t + 2]];
-    const std::uint32_t planesCut = clipTriangle(a, b, c, s.clip, polygon, scratch);
-    if (planesCut != 0 && band.countsTriangles) ++stats.trianglesClipped;
-    const std::uint32_t triangleId = s.firstTriangleId + static_cast<std::uint32_t>(t);
-    for (int i = 1; i + 1 < polygon.count; ++i) {
-      drawSampleTriangle<Features, T>(s, polygon.v[0], polygon.v[static_cast<std::size_t>(i)],
-                                   polygon.v[static_cast<std::size_t>(i + 1)], triangleId, band, target, stats);
-    }
-  }
-}
+};
 
 class ReferenceRenderer final : public Renderer {
  public:
@@ -188,7 +133,7 @@ class ReferenceRenderer final : public Renderer {
     target.width = width;
     target.height = height;
     RenderStats stats;
-    std::vector<ReferenceDrawState<T>> states(items.size());
+    std::vector<LoopItemT<T>> states(items.size());
 
     for (std::size_t pass = 0; pass < offsets.size(); ++pass) {
       // Moving the scene by -offset puts the pixel centre on the sample: window x shifts by
@@ -198,7 +143,7 @@ class ReferenceRenderer final : public Renderer {
       ndcShift[3][1] = -2.0 * offsets[pass].y / height;
       const Mat4T<T> clipFromWorld(ndcShift * clipFromWorldCentre);
       for (std::size_t k = 0; k < items.size(); ++k) {
-        ReferenceDrawState<T>& s = states[k];
+        LoopItemT<T>& s = states[k];
         const VertexUniformsT<T> vertexUniforms =
             makeVertexUniforms(Mat4T<T>(worldFromModel[k]), clipFromWorld, scene, settings);
         s.mesh = items[k].mesh;
@@ -219,32 +164,13 @@ class ReferenceRenderer final : public Renderer {
       target.depth.assign(pixelCount, static_cast<double>(kClearDepth));
       target.triangleId.assign(pixelCount, kNoTriangle);
 
-      const bool firstPass = pass == 0;
-      auto drawBand = [&](const Band& band, RenderStats& bandStats) {
-        for (const ReferenceDrawState<T>& s : states) {
-          withShaderFeatures(s.shaderKey,
-                             [&]<typename Features>() { drawItemSamples<Features, T>(s, band, target, bandStats); });
-        }
-      };
-      const int bandCount = std::clamp(options_.threads, 1, std::min(height, kMaxThreads));
-      std::vector<RenderStats> bandStats(static_cast<std::size_t>(bandCount));
-      std::vector<std::thread> workers;
-      for (int b = 0; b < bandCount; ++b) {
-        const Band band{height * b / bandCount, height * (b + 1) / bandCount, firstPass && b == 0};
-        if (b + 1 == bandCount) {
-          drawBand(band, bandStats[static_cast<std::size_t>(b)]);
-        } else {
-          workers.emplace_back(drawBand, band, std::ref(bandStats[static_cast<std::size_t>(b)]));
-        }
-      }
-      for (std::thread& worker : workers) worker.join();
-      for (const RenderStats& b : bandStats) {
-        stats.trianglesIn += b.trianglesIn;
-        stats.trianglesClipped += b.trianglesClipped;
-        stats.trianglesCulled += b.trianglesCulled;
-        stats.trianglesProduced += b.trianglesProduced;
-        stats.pixelsShaded += b.pixelsShaded;
-      }
+      // The draw loop the teaching path runs (draw_loop.h), in T; triangles counted in the
+      // first pass only.
+      SampleBufferTarget<T> sampleTarget{target};
+      drawInBands(
+          options_.threads, height, pass == 0,
+          [&](const RowBand& band, RenderStats& bandStats) { drawBand(states, band, sampleTarget, bandStats); },
+          stats);
 
       for (std::size_t i = 0; i < pixelCount; ++i) {
         colourSum[i] += target.colour[i];

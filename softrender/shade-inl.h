@@ -40,6 +40,16 @@ inline Vec4L<L> vectorAsColourLanes(const Vec3L<L>& v) {
   return Vec4L<L>((v.x + one) * half, (v.y + one) * half, (v.z + one) * half, one);
 }
 
+// If = 1 / max(A_C + A_L d + A_Q d^2, kMinAttenuationDenominator), evaluated as
+// (A_C + A_L d) + (A_Q d) d: the order phong.frag writes it (tests/softrender/test_lanes.cpp
+// shows that an equivalent form, Horner's, rounds differently).
+template <typename L>
+inline L attenuationLanes(const Vec3T<ScalarOf<L>>& a, L d) {
+  using S = ScalarOf<L>;
+  const L denominator = (L(a.x) + L(a.y) * d) + (L(a.z) * d) * d;
+  return L(S(1)) / maxOf(denominator, L(static_cast<S>(kMinAttenuationDenominator)));
+}
+
 // Shades one fragment per lane with the permutation `Features` (shade.h's ShaderFeatures).
 // `maps` holds the material's textures as the lane type reads them (members diffuse, normal,
 // specular: pointers to views, see texture_sample-inl.h); `terms`, when not null, receives
@@ -114,8 +124,7 @@ inline Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUniformsT<S
       const L nDotL = dot3<L>(nl, l);
       const Vec3L<L> r = (two * nDotL) * nl - l;
       const L rDotV = maxOf(dot3<L>(r, v), zero);
-      const L denominator = (L(light.attenuation.x) + L(light.attenuation.y) * d) + (L(light.attenuation.z) * d) * d;
-      const L attenuation = one / maxOf(denominator, L(static_cast<S>(kMinAttenuationDenominator)));
+      const L attenuation = attenuationLanes<L>(light.attenuation, d);
       const Vec3L<L> diffuse = (kdAlbedo * maxOf(nDotL, zero)) * Vec3L<L>(light.diffuse);
       // The specular term only where N.L > 0 (and pow only when some lane needs it).
       const auto lit = nDotL > zero;

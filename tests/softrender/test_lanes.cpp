@@ -1,0 +1,192 @@
+// The one shading source (softrender/*-inl.h) compiled here for every Highway target, as
+// softrender/fast_kernels.cpp compiles it, and checked lane by lane against its float
+// instantiation: the attenuation, the Phong exponent, texture sampling and the byte
+// conversion give the float path's bits on every target. A deliberately reordered copy of the
+// attenuation (Horner's form, algebraically equal) must NOT give them: it proves that these
+// comparisons see a change in the order of operations, so a SIMD path that did not run the
+// shared source would fail them.
+
+// clang-format off
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "tests/softrender/test_lanes.cpp"
+#include <hwy/foreach_target.h>  // re-includes this file, once per target
+#include <hwy/highway.h>
+// clang-format on
+
+#include "softrender/shade.h"
+#include "softrender/fast_kernels.h"
+#include "softrender/texture_sample.h"
+#include "softrender/framebuffer.h"
+
+#include <gtest/gtest.h>
+#include <hwy/tests/hwy_gtest.h>
+
+#include <bit>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#define TWR_LANES_HIGHWAY
+#undef TWR_LANES_BEGIN
+#undef TWR_LANES_END
+#define TWR_LANES_BEGIN \
+  HWY_BEFORE_NAMESPACE(); \
+  namespace twr {         \
+  namespace HWY_NAMESPACE {
+#define TWR_LANES_END \
+  }                   \
+  }                   \
+  HWY_AFTER_NAMESPACE();
+#include "softrender/lanes_hwy-inl.h"
+#include "softrender/lane_math-inl.h"
+#include "softrender/output_merge-inl.h"
+#include "softrender/phong_pow-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace twr {
+namespace HWY_NAMESPACE {
+constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(float);
+// A plain Texture as the vector lanes read it in this test, texel by texel (texWidth and
+// texHeight are texture_sample.h's own).
+HWY_INLINE LaneI wrapTexelIndex(int size, LaneF integral) {
+  HWY_ALIGN float values[kMaxLanes];
+  HWY_ALIGN std::int32_t indices[kMaxLanes];
+  hn::Store(integral.v, DF(), values);
+  for (std::size_t l = 0; l < laneCount(); ++l) indices[l] = wrappedFloorIndex(static_cast<double>(values[l]), size);
+  return {hn::Load(DI(), indices)};
+}
+HWY_INLINE LaneI nextTexelIndex(LaneI i, int size) {
+  const auto next = hn::Add(i.v, hn::Set(DI(), 1));
+  return {hn::IfThenZeroElse(hn::Eq(next, hn::Set(DI(), size)), next)};
+}
+template <typename L>
+HWY_INLINE Vec4L<LaneF> fetchTexel(const Texture& t, LaneI x, LaneI y) {
+  HWY_ALIGN std::int32_t xs[kMaxLanes], ys[kMaxLanes];
+  HWY_ALIGN float channels[4][kMaxLanes];
+  hn::Store(x.v, DI(), xs);
+  hn::Store(y.v, DI(), ys);
+  for (std::size_t l = 0; l < laneCount(); ++l) {
+    const vec4 texel = texelAt<float>(t, xs[l], ys[l]);
+    for (int c = 0; c < 4; ++c) channels[c][l] = texel[c];
+  }
+  return Vec4L<LaneF>(LaneF(hn::Load(DF(), channels[0])), LaneF(hn::Load(DF(), channels[1])),
+                      LaneF(hn::Load(DF(), channels[2])), LaneF(hn::Load(DF(), channels[3])));
+}
+}  // namespace HWY_NAMESPACE
+}  // namespace twr
+HWY_AFTER_NAMESPACE();
+
+#include "softrender/texture_sample-inl.h"
+#include "softrender/shade-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace twr {
+namespace HWY_NAMESPACE {
+
+// Runs `lanes(x)` on values[] a vector at a time and `scalar(x)` on each value; counts the
+// values whose bits differ.
+template <typename LaneFn, typename ScalarFn>
+std::size_t countDifferences(const std::vector<float>& values, const LaneFn& lanes, const ScalarFn& scalar) {
+  HWY_ALIGN float in[kMaxLanes];
+  HWY_ALIGN float out[kMaxLanes];
+  std::size_t differences = 0;
+  for (std::size_t i = 0; i < values.size(); i += laneCount()) {
+    for (std::size_t l = 0; l < laneCount(); ++l) in[l] = i + l < values.size() ? values[i + l] : 1.0f;
+    hn::Store(lanes(LaneF(hn::Load(DF(), in))).v, DF(), out);
+    for (std::size_t l = 0; l < laneCount() && i + l < values.size(); ++l) {
+      if (std::bit_cast<std::uint32_t>(out[l]) != std::bit_cast<std::uint32_t>(scalar(in[l]))) ++differences;
+    }
+  }
+  return differences;
+}
+
+std::vector<float> distances() {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> d(0.0f, 50.0f);
+  std::vector<float> values(20000);
+  for (float& v : values) v = d(rng);
+  return values;
+}
+
+void AttenuationIsTheSharedSourceAndSeesAReordering() {
+  const vec3 a(1.0f, 0.09f, 0.032f);  // LearnOpenGL's 50-unit light
+  const std::vector<float> d = distances();
+  const auto shared = [&](LaneF x) HWY_ATTR { return attenuationLanes<LaneF>(a, x); };
+  const auto teaching = [&](float x) { return ::twr::attenuationLanes<float>(a, x); };  // the plain (teaching) instantiation
+  EXPECT_EQ(countDifferences(d, shared, teaching), 0u) << "target " << hwy::TargetName(HWY_TARGET);
+  // The same formula in Horner's form: equal in exact arithmetic, not in float.
+  const auto horner = [&](LaneF x) HWY_ATTR {
+    const LaneF denominator = LaneF(a.x) + x * (LaneF(a.y) + LaneF(a.z) * x);
+    return LaneF(1.0f) / maxOf(denominator, LaneF(kMinAttenuationDenominator));
+  };
+  EXPECT_GT(countDifferences(d, horner, teaching), 100u)
+      << "a reordered attenuation gave the shared source's bits: the bit-identity tests could not see it";
+}
+
+void PhongPowAndBytesAreTheSharedSource() {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> x(-0.1f, 1.1f);
+  std::vector<float> values(20000);
+  for (float& v : values) v = x(rng);
+  for (const float s : {0.0f, 1.0f, 7.5f, 32.0f, 200.0f}) {
+    const auto lanes = [&](LaneF v) HWY_ATTR { return phongPow<LaneF>(v, s); };
+    const auto scalar = [&](float v) { return ::twr::phongPow<float>(v, s); };
+    EXPECT_EQ(countDifferences(values, lanes, scalar), 0u) << "s = " << s;
+  }
+  const auto lanes = [](LaneF v) HWY_ATTR { return byteValueOf<LaneF>(v); };
+  const auto scalar = [](float v) { return static_cast<float>(unitToByte(v)); };
+  EXPECT_EQ(countDifferences(values, lanes, scalar), 0u);
+}
+
+void SamplingIsTheSharedSource() {
+  Texture texture;
+  texture.width = 5;  // not a power of two
+  texture.height = 3;
+  texture.rgba.resize(5 * 3 * 4);
+  for (std::size_t i = 0; i < texture.rgba.size(); ++i) texture.rgba[i] = static_cast<std::uint8_t>(i * 37 % 256);
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<float> uv(-3.0f, 3.0f);
+  std::vector<float> us(4000), vs(4000);
+  for (std::size_t i = 0; i < us.size(); ++i) us[i] = uv(rng), vs[i] = uv(rng);
+  for (const TextureFilter filter : {TextureFilter::Nearest, TextureFilter::Bilinear}) {
+    for (int channel = 0; channel < 4; ++channel) {
+      std::size_t at = 0;  // us[i] pairs with vs[i]: both walk the same indices
+      const auto lanes = [&](LaneF u) HWY_ATTR {
+        HWY_ALIGN float v[kMaxLanes];
+        for (std::size_t l = 0; l < laneCount(); ++l) v[l] = at + l < vs.size() ? vs[at + l] : 1.0f;
+        at += laneCount();
+        const Vec4L<LaneF> texel =
+            sampleTextureLanes<LaneF>(texture, Vec2L<LaneF>(u, LaneF(hn::Load(DF(), v))), filter);
+        return channel == 0 ? texel.x : channel == 1 ? texel.y : channel == 2 ? texel.z : texel.w;
+      };
+      std::size_t scalarAt = 0;
+      const auto scalar = [&](float u) {
+        const vec4 texel = sampleTexture<float>(texture, vec2(u, scalarAt < vs.size() ? vs[scalarAt] : 1.0f), filter);
+        ++scalarAt;
+        return texel[channel];
+      };
+      EXPECT_EQ(countDifferences(us, lanes, scalar), 0u) << toString(filter) << " channel " << channel;
+    }
+  }
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace twr
+HWY_AFTER_NAMESPACE();
+
+#undef TWR_LANES_HIGHWAY
+#undef TWR_LANES_BEGIN
+#undef TWR_LANES_END
+#define TWR_LANES_BEGIN namespace twr {
+#define TWR_LANES_END }
+
+#if HWY_ONCE
+namespace twr {
+namespace {
+HWY_BEFORE_TEST(SharedSource);
+HWY_EXPORT_AND_TEST_P(SharedSource, AttenuationIsTheSharedSourceAndSeesAReordering);
+HWY_EXPORT_AND_TEST_P(SharedSource, PhongPowAndBytesAreTheSharedSource);
+HWY_EXPORT_AND_TEST_P(SharedSource, SamplingIsTheSharedSource);
+}  // namespace
+}  // namespace twr
+#endif
