@@ -27,20 +27,11 @@
 #include <utility>
 
 // The shared sources for this target: in twr::HWY_NAMESPACE, with its attributes.
-#define TWR_LANES_HIGHWAY
-#undef TWR_LANES_BEGIN
-#undef TWR_LANES_END
-#define TWR_LANES_BEGIN \
-  HWY_BEFORE_NAMESPACE(); \
-  namespace twr {         \
-  namespace HWY_NAMESPACE {
-#define TWR_LANES_END \
-  }                   \
-  }                   \
-  HWY_AFTER_NAMESPACE();
+#include "softrender/lanes_target_begin.h"
 
 #include "softrender/lanes_hwy-inl.h"
 #include "softrender/lane_math-inl.h"
+#include "softrender/texel_lanes-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace twr {
@@ -52,39 +43,6 @@ constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(float);
 // ---- a TiledTexture as texture_sample-inl.h reads it ----
 HWY_INLINE int texWidth(const TiledTexture& t) { return t.width; }
 HWY_INLINE int texHeight(const TiledTexture& t) { return t.height; }
-
-// wrappedFloorIndex per lane for coordinates too large for 32-bit lanes (a repeat count that
-// large is a test case, not a scene).
-HWY_NOINLINE LaneI wrapTexelIndexEachLane(int size, LaneF integral) {
-  HWY_ALIGN float values[kMaxLanes];
-  HWY_ALIGN std::int32_t indices[kMaxLanes];
-  hn::Store(integral.v, DF(), values);
-  for (std::size_t l = 0; l < laneCount(); ++l) indices[l] = wrappedFloorIndex(static_cast<double>(values[l]), size);
-  return {hn::Load(DI(), indices)};
-}
-
-// floor value mod size, exact: the same integers as wrappedFloorIndex.
-HWY_INLINE LaneI wrapTexelIndex(int size, LaneF integral) {
-  constexpr float kMaxLaneCoord = 1073741824.0f;  // 2^30: below it, int32 lanes hold i and i + size
-  if (!hn::AllTrue(DF(), hn::Lt(hn::Abs(integral.v), hn::Set(DF(), kMaxLaneCoord)))) {
-    return wrapTexelIndexEachLane(size, integral);
-  }
-  if ((size & (size - 1)) == 0) {  // a power of two: two's complement AND is floor mod
-    return {hn::And(hn::ConvertTo(DI(), integral.v), hn::Set(DI(), size - 1))};
-  }
-  // i - floor(i / size) size in double: the quotient is within 2^-22 of the true one, and a
-  // non-integer true quotient is at least 1 / size > 2^-22 from the next integer, so the floor
-  // is exact, and so is everything after it.
-  const LaneW i = toWide(integral);
-  const LaneW sizeW(static_cast<double>(size));
-  const LaneW remainder = i - floorOf(i / sizeW) * sizeW;
-  return {hn::ConvertTo(DI(), toNarrowLanes(remainder).v)};
-}
-
-HWY_INLINE LaneI nextTexelIndex(LaneI i, int size) {
-  const auto next = hn::Add(i.v, hn::Set(DI(), 1));
-  return {hn::IfThenZeroElse(hn::Eq(next, hn::Set(DI(), size)), next)};
-}
 
 // texelAt per lane: byte * (1 / 255) from the tiled index
 // ((y / 4) blocksPerRow + x / 4) 16 + (y % 4) 4 + x % 4.
@@ -458,12 +416,7 @@ FastKernels GetKernels() {
 }  // namespace twr
 HWY_AFTER_NAMESPACE();
 
-// Back to the plain namespace for whatever follows (the next target's pass, or HWY_ONCE).
-#undef TWR_LANES_HIGHWAY
-#undef TWR_LANES_BEGIN
-#undef TWR_LANES_END
-#define TWR_LANES_BEGIN namespace twr {
-#define TWR_LANES_END }
+#include "softrender/lanes_target_end.h"
 
 #if HWY_ONCE
 namespace twr {

@@ -26,19 +26,10 @@
 #include <random>
 #include <vector>
 
-#define TWR_LANES_HIGHWAY
-#undef TWR_LANES_BEGIN
-#undef TWR_LANES_END
-#define TWR_LANES_BEGIN \
-  HWY_BEFORE_NAMESPACE(); \
-  namespace twr {         \
-  namespace HWY_NAMESPACE {
-#define TWR_LANES_END \
-  }                   \
-  }                   \
-  HWY_AFTER_NAMESPACE();
+#include "softrender/lanes_target_begin.h"
 #include "softrender/lanes_hwy-inl.h"
 #include "softrender/lane_math-inl.h"
+#include "softrender/texel_lanes-inl.h"
 #include "softrender/output_merge-inl.h"
 #include "softrender/phong_pow-inl.h"
 
@@ -47,18 +38,7 @@ namespace twr {
 namespace HWY_NAMESPACE {
 constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(float);
 // A plain Texture as the vector lanes read it in this test, texel by texel (texWidth and
-// texHeight are texture_sample.h's own).
-HWY_INLINE LaneI wrapTexelIndex(int size, LaneF integral) {
-  HWY_ALIGN float values[kMaxLanes];
-  HWY_ALIGN std::int32_t indices[kMaxLanes];
-  hn::Store(integral.v, DF(), values);
-  for (std::size_t l = 0; l < laneCount(); ++l) indices[l] = wrappedFloorIndex(static_cast<double>(values[l]), size);
-  return {hn::Load(DI(), indices)};
-}
-HWY_INLINE LaneI nextTexelIndex(LaneI i, int size) {
-  const auto next = hn::Add(i.v, hn::Set(DI(), 1));
-  return {hn::IfThenZeroElse(hn::Eq(next, hn::Set(DI(), size)), next)};
-}
+// texHeight are texture_sample.h's own, the indices the fast path's texel_lanes-inl.h).
 template <typename L>
 HWY_INLINE Vec4L<LaneF> fetchTexel(const Texture& t, LaneI x, LaneI y) {
   HWY_ALIGN std::int32_t xs[kMaxLanes], ys[kMaxLanes];
@@ -174,11 +154,7 @@ void SamplingIsTheSharedSource() {
 }  // namespace twr
 HWY_AFTER_NAMESPACE();
 
-#undef TWR_LANES_HIGHWAY
-#undef TWR_LANES_BEGIN
-#undef TWR_LANES_END
-#define TWR_LANES_BEGIN namespace twr {
-#define TWR_LANES_END }
+#include "softrender/lanes_target_end.h"
 
 #if HWY_ONCE
 namespace twr {

@@ -1,0 +1,7 @@
+// Back to the plain namespace after softrender/lanes_target_begin.h (no guard: included once
+// per Highway target), for whatever follows (the next target's pass, or HWY_ONCE).
+#undef TWR_LANES_HIGHWAY
+#undef TWR_LANES_BEGIN
+#undef TWR_LANES_END
+#define TWR_LANES_BEGIN namespace twr {
+#define TWR_LANES_END }
