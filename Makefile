@@ -1,6 +1,8 @@
 # Thin wrapper over CMake presets. The README's two commands:
 #   make run   install deps if missing, build, run the main job
 #   make test  install deps if missing, build, run every test
+# Also: make sanitize (ASan + UBSan build and tests), make cross-aarch64 (the CPU side built
+# for 64-bit ARM and tested under qemu-user, scripts/cross-aarch64.sh).
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 SCENE ?= assets/scenes/default.json
 OUT ?= out/default
@@ -10,7 +12,7 @@ OUT ?= out/default
 # folder follows the current setting. Force it either way: make test WERROR=ON
 WERROR ?= $(if $(filter-out false 0,$(CI)),ON,OFF)
 
-.PHONY: all deps configure build run test sanitize clean assets
+.PHONY: all deps configure build run test sanitize cross-aarch64 clean assets
 
 all: build
 
@@ -39,9 +41,13 @@ sanitize: deps
 	@cmake --build --preset sanitize -j $(JOBS)
 	@ctest --preset sanitize
 
+# The CPU libraries and their GL-free tests for aarch64 (cross compiler + qemu-user).
+cross-aarch64:
+	@CROSS_WERROR=$(WERROR) CROSS_JOBS=$(JOBS) ./scripts/cross-aarch64.sh
+
 # Regenerates assets/textures/*.png (deterministic; the committed files must match).
 assets: build
 	@./build/app/twinraster-assets --out assets/textures
 
 clean:
-	@rm -rf build build-sanitize out
+	@rm -rf build build-sanitize build-aarch64 out
