@@ -70,7 +70,7 @@ using FragmentL = FragmentT<L>;
 // clamped to [0, 1], 1 if not finite), p_i = (lambda_i / w_i) / sum_k (lambda_k / w_k) (the
 // screen weight where the sum is not positive: a centre a hair outside the float triangle).
 template <typename L>
-inline PixelWeightsL<L> pixelWeightsLanes(const InterpolationL<L>& s, const WideOf<L>& px, const WideOf<L>& py) {
+TWR_LANE_INLINE PixelWeightsL<L> pixelWeightsLanes(const InterpolationL<L>& s, const WideOf<L>& px, const WideOf<L>& py) {
   using W = WideOf<L>;
   using S = ScalarOf<L>;
   PixelWeightsL<L> w;
@@ -96,7 +96,7 @@ inline PixelWeightsL<L> pixelWeightsLanes(const InterpolationL<L>& s, const Wide
 // Perspective-correct varyings. Tangent-space light and eye directions only in tangent
 // lighting space, for the first `tangentLightCount` lights (zero otherwise).
 template <typename L>
-inline FragmentL<L> interpolateFragmentLanes(const VertexL<L>& v0, const VertexL<L>& v1, const VertexL<L>& v2,
+TWR_LANE_INLINE FragmentL<L> interpolateFragmentLanes(const VertexL<L>& v0, const VertexL<L>& v1, const VertexL<L>& v2,
                                              const PixelWeightsL<L>& weights, bool tangentLighting,
                                              int tangentLightCount) {
   using S = ScalarOf<L>;

@@ -26,29 +26,29 @@ TWR_LANES_BEGIN
 
 // glm::dot: tmp = a * b; (tmp.x + tmp.y) + tmp.z.
 template <typename L>
-inline L dot3(const Vec3L<L>& a, const Vec3L<L>& b) {
+TWR_LANE_INLINE L dot3(const Vec3L<L>& a, const Vec3L<L>& b) {
   return (a.x * b.x + a.y * b.y) + a.z * b.z;
 }
 
 // glm::length: sqrt(dot(v, v)).
 template <typename L>
-inline L lengthOf(const Vec3L<L>& v) {
+TWR_LANE_INLINE L lengthOf(const Vec3L<L>& v) {
   return sqrtOf(dot3(v, v));
 }
 
 template <typename L>
-inline Vec3L<L> select3(const MaskOf<L>& m, const Vec3L<L>& a, const Vec3L<L>& b) {
+TWR_LANE_INLINE Vec3L<L> select3(const MaskOf<L>& m, const Vec3L<L>& a, const Vec3L<L>& b) {
   return Vec3L<L>(select(m, a.x, b.x), select(m, a.y, b.y), select(m, a.z, b.z));
 }
 template <typename L>
-inline Vec4L<L> select4(const MaskOf<L>& m, const Vec4L<L>& a, const Vec4L<L>& b) {
+TWR_LANE_INLINE Vec4L<L> select4(const MaskOf<L>& m, const Vec4L<L>& a, const Vec4L<L>& b) {
   return Vec4L<L>(select(m, a.x, b.x), select(m, a.y, b.y), select(m, a.z, b.z), select(m, a.w, b.w));
 }
 
 // safeNormalize (scene/conventions.h) per lane: v / |v| when kMinLengthSquared < |v|^2 <
 // infinity, else (0, 0, 1).
 template <typename L>
-inline Vec3L<L> safeNormalize3(const Vec3L<L>& v) {
+TWR_LANE_INLINE Vec3L<L> safeNormalize3(const Vec3L<L>& v) {
   using S = ScalarOf<L>;
   const L lengthSquared = dot3(v, v);
   const MaskOf<L> usable = (lengthSquared > L(static_cast<S>(kMinLengthSquared))) & isFinite(lengthSquared);
@@ -59,7 +59,7 @@ inline Vec3L<L> safeNormalize3(const Vec3L<L>& v) {
 
 // glm::clamp(c, 0, 1) per component, with maxOf first (a NaN component becomes 0).
 template <typename L>
-inline Vec4L<L> clampUnit4(const Vec4L<L>& c) {
+TWR_LANE_INLINE Vec4L<L> clampUnit4(const Vec4L<L>& c) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1));
   return Vec4L<L>(minOf(maxOf(c.x, zero), one), minOf(maxOf(c.y, zero), one), minOf(maxOf(c.z, zero), one),

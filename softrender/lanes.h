@@ -164,3 +164,7 @@ inline double exp2Integer(double k) {
 // fast_kernels.cpp redefines both to twr::HWY_NAMESPACE with the target's attributes.
 #define TWR_LANES_BEGIN namespace twr {
 #define TWR_LANES_END }
+// How the shared sources' functions are declared: plainly `inline` (the teaching path stays
+// easy to step through); per target forced inline, because a vector struct passed to a call
+// goes through memory (lanes_target_begin.h).
+#define TWR_LANE_INLINE inline

@@ -13,3 +13,5 @@
   }                   \
   }                   \
   HWY_AFTER_NAMESPACE();
+#undef TWR_LANE_INLINE
+#define TWR_LANE_INLINE HWY_INLINE

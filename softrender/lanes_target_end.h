@@ -5,3 +5,5 @@
 #undef TWR_LANES_END
 #define TWR_LANES_BEGIN namespace twr {
 #define TWR_LANES_END }
+#undef TWR_LANE_INLINE
+#define TWR_LANE_INLINE inline

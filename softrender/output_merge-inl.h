@@ -25,7 +25,7 @@ TWR_LANES_BEGIN
 
 // The byte value 0..255 of a colour channel, as an integer-valued lane.
 template <typename L>
-inline L byteValueOf(L c) {
+TWR_LANE_INLINE L byteValueOf(L c) {
   using S = ScalarOf<L>;
   constexpr S kByteMax = S(255);
   const L zero(S(0)), one(S(1));

@@ -30,7 +30,7 @@ TWR_LANES_BEGIN
 
 // x^s in double lanes, for x a positive normal double and s >= 0 (phong_pow.h).
 template <typename W>
-inline W powPositiveWide(W x, W s) {
+TWR_LANE_INLINE W powPositiveWide(W x, W s) {
   using namespace phongpow;
   W m = mantissaOf(x);  // x = m 2^e, m in [1, 2)
   W e = exponentOf(x);
@@ -57,7 +57,7 @@ inline W powPositiveWide(W x, W s) {
 // +inf^s = +inf for s > 0. Float lanes: powPositiveWide, rounded once to float. The reference
 // (double) uses libm's pow: it is the ground truth, not a twin of the float bits.
 template <typename L>
-inline L phongPow(L x, ScalarOf<L> s) {
+TWR_LANE_INLINE L phongPow(L x, ScalarOf<L> s) {
   using S = ScalarOf<L>;
   if constexpr (std::is_same_v<L, double>) {
     if (!(x > 0.0)) return s > 0.0 ? 0.0 : 1.0;

@@ -34,7 +34,7 @@ TWR_LANES_BEGIN
 
 // (v + 1) / 2 with alpha 1: how the debug views show a vector.
 template <typename L>
-inline Vec4L<L> vectorAsColourLanes(const Vec3L<L>& v) {
+TWR_LANE_INLINE Vec4L<L> vectorAsColourLanes(const Vec3L<L>& v) {
   using S = ScalarOf<L>;
   const L one(S(1)), half(S(0.5));
   return Vec4L<L>((v.x + one) * half, (v.y + one) * half, (v.z + one) * half, one);
@@ -44,7 +44,7 @@ inline Vec4L<L> vectorAsColourLanes(const Vec3L<L>& v) {
 // (A_C + A_L d) + (A_Q d) d: the order phong.frag writes it (tests/softrender/test_lanes.cpp
 // shows that an equivalent form, Horner's, rounds differently).
 template <typename L>
-inline L attenuationLanes(const Vec3T<ScalarOf<L>>& a, L d) {
+TWR_LANE_INLINE L attenuationLanes(const Vec3T<ScalarOf<L>>& a, L d) {
   using S = ScalarOf<L>;
   const L denominator = (L(a.x) + L(a.y) * d) + (L(a.z) * d) * d;
   return L(S(1)) / maxOf(denominator, L(static_cast<S>(kMinAttenuationDenominator)));
@@ -55,7 +55,7 @@ inline L attenuationLanes(const Vec3T<ScalarOf<L>>& a, L d) {
 // specular: pointers to views, see texture_sample-inl.h); `terms`, when not null, receives
 // every intermediate value (the pixel trace; scalar lanes only, nullptr_t otherwise).
 template <typename Features, typename L, typename Maps, typename Terms>
-inline Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u, const Maps& maps,
+TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u, const Maps& maps,
                                    Terms* terms) {
   using S = ScalarOf<L>;
   constexpr bool kTrace = !std::is_same_v<Terms, std::nullptr_t>;

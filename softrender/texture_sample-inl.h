@@ -41,7 +41,7 @@ struct FootprintL {
 // bilinear: u' = u * w - 0.5, i0 = floor(u'), alpha = u' - i0, i1 = i0 + 1 (same for v),
 // wrapped; a non-finite u' gives i0 = 0 and alpha = 0.
 template <typename L, typename View>
-inline FootprintL<L> sampleFootprintLanes(const View& texture, const Vec2L<L>& uv, TextureFilter filter) {
+TWR_LANE_INLINE FootprintL<L> sampleFootprintLanes(const View& texture, const Vec2L<L>& uv, TextureFilter filter) {
   using S = ScalarOf<L>;
   const int width = texWidth(texture), height = texHeight(texture);
   const L zero(S(0));
@@ -75,7 +75,7 @@ inline FootprintL<L> sampleFootprintLanes(const View& texture, const Vec2L<L>& u
 // The filtered RGBA: nearest reads T(x0, y0); bilinear
 //   (1-a)(1-b) T(x0,y0) + a(1-b) T(x1,y0) + (1-a) b T(x0,y1) + a b T(x1,y1), summed from the left.
 template <typename L, typename View>
-inline Vec4L<L> sampleTextureLanes(const View& texture, const Vec2L<L>& uv, TextureFilter filter) {
+TWR_LANE_INLINE Vec4L<L> sampleTextureLanes(const View& texture, const Vec2L<L>& uv, TextureFilter filter) {
   using S = ScalarOf<L>;
   const FootprintL<L> f = sampleFootprintLanes<L>(texture, uv, filter);
   if (filter == TextureFilter::Nearest) return fetchTexel<L>(texture, f.x0, f.y0);
