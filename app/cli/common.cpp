@@ -63,8 +63,8 @@ CLI::Option* addCpuOptions(CLI::App& cmd, CpuRequest& request) {
       "", "CPU target");
   return cmd
       .add_option("--cpu-isa", request.isa,
-                  "Fast path only (refused with --cpu-path teaching): the Highway target its kernels run on, " + allCpuIsaNames() +
-                      " (default auto: the best this CPU runs; here " + supported +
+                  "Fast path only (refused with --cpu-path teaching): the Highway target its kernels run on, " +
+                      allCpuIsaNames() + " (default auto: the best this CPU runs; here " + supported +
                       "). A target this CPU cannot run exits 2. Every target draws the same image.")
       ->check(runnable);
 }
