@@ -13,5 +13,20 @@
   }                   \
   }                   \
   HWY_AFTER_NAMESPACE();
+// Forced inline only in optimised builds without sanitizers: at -O0 or with AddressSanitizer
+// (the sanitizer and fuzzing builds) forcing every shared function into every kernel makes
+// this one translation unit take tens of minutes and gigabytes to compile.
 #undef TWR_LANE_INLINE
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define TWR_LANES_SANITIZED 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__)
+#define TWR_LANES_SANITIZED 1
+#endif
+#if defined(__OPTIMIZE__) && !defined(TWR_LANES_SANITIZED)
 #define TWR_LANE_INLINE HWY_INLINE
+#else
+#define TWR_LANE_INLINE inline
+#endif
