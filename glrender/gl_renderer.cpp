@@ -154,9 +154,8 @@ class GlRenderer final : public Renderer {
     device.targets.clear(scene.output.background);
     device.targets.drawSurfaces();
     const GlClipState clipState = makeGlClipState(settings, scene.camera);
-    const bool countSamples = options_.frame == GlFrame::Full;
     const SceneDrawStats drawStats =
-        drawScene(device.programs, device.uploads, scene, settings, clipState, items, clipFromWorld, countSamples);
+        drawScene(device.programs, device.uploads, scene, settings, clipState, items, clipFromWorld, options_.frame);
     checkGlErrors("drawing the scene");
 
     if (settings.tbnLines.enabled) {

@@ -18,9 +18,10 @@ using GlProcLoader = GlProc (*)(const char* name);
 //   Full  colour, depth, triangle ids and the TBN-line mask, all four read back, and a
 //         GL_SAMPLES_PASSED query for RenderStats::pixelsShaded: everything compare, the
 //         app and the tests need (glrender/gl_targets.h).
-//   Lean  the frame an OpenGL user draws: the same programs (the same #define permutation),
-//         state and draw calls into colour + depth only, no occlusion query, and one
-//         glReadPixels of the colour (rows flipped to top first, as RenderOutput wants).
+//   Lean  the frame an OpenGL user draws: the same programs (the same #define permutation,
+//         plus NO_TRIANGLE_ID: no id output, which llvmpipe pays for even unattached), state
+//         and draw calls into colour + depth only, no occlusion query, and one glReadPixels
+//         of the colour (rows flipped to top first, as RenderOutput wants).
 //         RenderOutput then holds rgba alone (depth, triangleId and lineMask are empty) and
 //         stats.pixelsShaded is 0. The colour is bit for bit the Full frame's
 //         (tests/glrender/test_gl_lean_frame.cpp). `twinraster bench` times it as the fair

@@ -114,8 +114,9 @@ std::vector<std::string> phongDefines(const Material& material, const RenderSett
 
 SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const Scene& scene,
                          const RenderSettings& settings, const GlClipState& clipState,
-                         const std::vector<DrawItem>& items, const mat4& clipFromWorld, bool countSamples) {
+                         const std::vector<DrawItem>& items, const mat4& clipFromWorld, GlFrame frame) {
   SceneDrawStats stats;
+  const bool countSamples = frame == GlFrame::Full;
   applyPipelineState(settings);
   applyGlClipState(clipState);
 
@@ -137,8 +138,9 @@ SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const S
     checkIndices(*item.mesh, item.nodeName);
     stats.trianglesIn += item.mesh->triangleCount();
     const Material& material = *item.material;
-    const ProgramDesc desc{"phong", {"common.glsl", "phong.vert"}, {"common.glsl", "phong.frag"},
-                           phongDefines(material, settings)};
+    ProgramDesc desc{"phong", {"common.glsl", "phong.vert"}, {"common.glsl", "phong.frag"},
+                     phongDefines(material, settings)};
+    if (frame == GlFrame::Lean) desc.defines.push_back("NO_TRIANGLE_ID");
     const GLuint program = programs.get(desc);
     glUseProgram(program);
     setUniforms(program, scene, settings, clipState, item, clipFromWorld);

@@ -5,6 +5,7 @@
 
 #include "glrender/gl_clip_state.h"
 #include "glrender/gl_program.h"
+#include "glrender/gl_renderer.h"
 #include "glrender/gl_upload_cache.h"
 #include "scene/renderer.h"
 
@@ -23,11 +24,12 @@ std::vector<std::string> phongDefines(const Material& material, const RenderSett
 
 // Draws `items` into the bound framebuffer's current draw buffers. Throws InputError for
 // textures it cannot upload. Calls uploads.beginFrame() and, when it returns, endFrame().
-// countSamples: wrap the draws in a GL_SAMPLES_PASSED query and wait for its result
-// (samplesPassed); false leaves samplesPassed 0 and the frame unsynchronised, as a user
-// draws it (GlFrame::Lean).
+// GlFrame::Full wraps the draws in a GL_SAMPLES_PASSED query and waits for its result
+// (samplesPassed), and the programs write the triangle id (location 1). GlFrame::Lean draws
+// as a user does: no query (samplesPassed 0), programs compiled with NO_TRIANGLE_ID.
 SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const Scene& scene,
                          const RenderSettings& settings, const GlClipState& clipState,
-                         const std::vector<DrawItem>& items, const mat4& clipFromWorld, bool countSamples = true);
+                         const std::vector<DrawItem>& items, const mat4& clipFromWorld,
+                         GlFrame frame = GlFrame::Full);
 
 }  // namespace twr

@@ -30,8 +30,8 @@ class RenderTargets {
   void clear(const vec3& background) const;
 
   // Which attachments fragment outputs go to (location 0, 1 in the shaders).
-  // Full: location 0 -> colour, location 1 -> triangle id. Lean: location 0 -> colour; no
-  // draw buffer takes location 1, so GL drops the id output.
+  // Full: location 0 -> colour, location 1 -> triangle id. Lean: location 0 -> colour (the
+  // lean frame's programs have no id output, see drawScene()).
   void drawSurfaces() const;
   // Binds the line framebuffer: the same colour, mask and depth storage without the
   // integer triangle-id attachment (Mesa refuses fixed-function drawing, immediate mode,

@@ -3,6 +3,9 @@
 // operations; main() here is that function's body.
 // Permutation defines: HAS_DIFFUSE_MAP, HAS_NORMAL_MAP, HAS_SPECULAR_MAP, LIGHTING_TANGENT
 // (else world lighting space), and exactly one VIEW_<NAME> (VIEW_SHADED ... VIEW_EYE_TANGENT).
+// NO_TRIANGLE_ID: no triangle-id output, as an OpenGL user's shader has none (the lean
+// frame, glrender/gl_renderer.h; llvmpipe pays for gl_PrimitiveID even when no draw buffer
+// takes the output).
 
 in vec3 posWorld;
 in vec3 nWorld;
@@ -35,7 +38,9 @@ uniform sampler2D normalMap;
 uniform sampler2D specularMap;
 
 layout(location = 0) out vec4 fragColour;
+#ifndef NO_TRIANGLE_ID
 layout(location = 1) out uint fragTriangleId;
+#endif
 
 void main() {
   vec3 n = safeNormalize(nWorld);
@@ -125,5 +130,7 @@ void main() {
 #endif
 
   fragColour = clamp(colour, 0.0, 1.0);
+#ifndef NO_TRIANGLE_ID
   fragTriangleId = firstTriangleId + uint(gl_PrimitiveID);
+#endif
 }
