@@ -1,5 +1,7 @@
 #include "scene/image.h"
 
+#include "scene/block_compression.h"
+#include "scene/dds.h"
 #include "scene/errors.h"
 #include "scene/read_file.h"
 
@@ -30,12 +32,36 @@ std::string stbReason() {
   return reason ? reason : "unknown";
 }
 
-// stb_image also reads GIF, PSD, TGA, HDR, PIC and PNM: formats nobody here needs, with
-// decoders that have had their share of memory-safety bugs. Only PNG and JPEG get in.
-bool isPngOrJpeg(const std::uint8_t* bytes, std::size_t size) {
-  return startsWith(bytes, size, kPngSignature, sizeof kPngSignature) ||
-         startsWith(bytes, size, kJpegSignature, sizeof kJpegSignature);
+constexpr unsigned char kBmpSignature[2] = {'B', 'M'};
+constexpr unsigned char kHdrSignatureRadiance[11] = {'#', '?', 'R', 'A', 'D', 'I', 'A', 'N', 'C', 'E', '\n'};
+constexpr unsigned char kHdrSignatureRgbe[7] = {'#', '?', 'R', 'G', 'B', 'E', '\n'};
+// Formats stb_image also reads but nobody here needs (their decoders have had their share of
+// memory-safety bugs): recognised only to be refused by name.
+constexpr unsigned char kGifSignature[4] = {'G', 'I', 'F', '8'};
+constexpr unsigned char kPsdSignature[4] = {'8', 'B', 'P', 'S'};
+constexpr unsigned char kPicSignature[4] = {0x53, 0x80, 0xF6, 0x34};
+
+// What the first bytes say. TGA has no signature: a file none of the others claims is
+// tried as TGA (stb's TGA test checks the header's fields), and refused when that fails.
+ImageFileFormat formatOfBytes(const std::uint8_t* bytes, std::size_t size) {
+  if (startsWith(bytes, size, kPngSignature, sizeof kPngSignature)) return ImageFileFormat::Png;
+  if (startsWith(bytes, size, kJpegSignature, sizeof kJpegSignature)) return ImageFileFormat::Jpeg;
+  if (isDds(bytes, size)) return ImageFileFormat::Dds;
+  if (startsWith(bytes, size, kHdrSignatureRadiance, sizeof kHdrSignatureRadiance) ||
+      startsWith(bytes, size, kHdrSignatureRgbe, sizeof kHdrSignatureRgbe)) {
+    return ImageFileFormat::Hdr;
+  }
+  if (startsWith(bytes, size, kBmpSignature, sizeof kBmpSignature)) return ImageFileFormat::Bmp;
+  if (startsWith(bytes, size, kGifSignature, sizeof kGifSignature) ||
+      startsWith(bytes, size, kPsdSignature, sizeof kPsdSignature) ||
+      startsWith(bytes, size, kPicSignature, sizeof kPicSignature) ||
+      (size >= 2 && bytes[0] == 'P' && bytes[1] >= '1' && bytes[1] <= '7')) {
+    return ImageFileFormat::Unknown;
+  }
+  return size > 0 ? ImageFileFormat::Tga : ImageFileFormat::Unknown;
 }
+
+constexpr const char* kReadableFormats = "PNG, JPEG, BMP, TGA, DDS or Radiance HDR";
 
 // JPEG markers (ITU T.81, table B.1) this walk needs.
 constexpr std::uint8_t kJpegMarkerDht = 0xC4;  // define Huffman tables
@@ -187,28 +213,79 @@ Image makeImage(int width, int height, std::uint32_t fillRgba) {
 }
 
 bool readImageHeader(const std::uint8_t* bytes, std::size_t size, int& width, int& height) {
-  int channels = 0;
+  const ImageFileFormat format = formatOfBytes(bytes, size);
+  if (format == ImageFileFormat::Unknown || size > static_cast<std::size_t>(INT_MAX)) return false;
+  if (format == ImageFileFormat::Dds) return readDdsHeader(bytes, size, width, height);
   // stb reads a JPEG's Huffman tables while looking for its size, so they are checked first.
-  const bool jpeg = startsWith(bytes, size, kJpegSignature, sizeof kJpegSignature);
-  return isPngOrJpeg(bytes, size) && size <= static_cast<std::size_t>(INT_MAX) &&
-         !(jpeg && !jpegHuffmanProblem(bytes, size).empty()) &&
-         stbi_info_from_memory(bytes, static_cast<int>(size), &width, &height, &channels) != 0;
+  if (format == ImageFileFormat::Jpeg && !jpegHuffmanProblem(bytes, size).empty()) return false;
+  int channels = 0;
+  return stbi_info_from_memory(bytes, static_cast<int>(size), &width, &height, &channels) != 0;
 }
 
+ImageFileFormat imageFileFormat(const std::uint8_t* bytes, std::size_t size) { return formatOfBytes(bytes, size); }
+
+std::string_view toString(ImageFileFormat format) {
+  switch (format) {
+    case ImageFileFormat::Png: return "PNG";
+    case ImageFileFormat::Jpeg: return "JPEG";
+    case ImageFileFormat::Bmp: return "BMP";
+    case ImageFileFormat::Tga: return "TGA";
+    case ImageFileFormat::Hdr: return "Radiance HDR";
+    case ImageFileFormat::Dds: return "DDS";
+    case ImageFileFormat::Unknown: break;
+  }
+  return "unknown";
+}
+
+namespace {
+
+// The checks every stb-decoded format shares: the header first, so a huge declared size is
+// refused before any allocation. Returns the size stb will decode.
+void checkStbHeader(const std::uint8_t* bytes, int length, ImageFileFormat format, const std::string& name, int& width,
+                    int& height) {
+  int channels = 0;
+  if (!stbi_info_from_memory(bytes, length, &width, &height, &channels)) {
+    if (format == ImageFileFormat::Tga) {
+      throw InputError(name + ": not a readable image (no PNG, JPEG, BMP, DDS or HDR signature, and not a TGA "
+                              "header either; expected a " + std::string(kReadableFormats) + " file)");
+    }
+    throw InputError(name + ": not a readable image (" + std::string(toString(format)) + ": " + stbReason() + ")");
+  }
+  if (width <= 0 || height <= 0 || width > kMaxImageSide || height > kMaxImageSide) {
+    throw InputError(name + ": image is " + std::to_string(width) + "x" + std::to_string(height) +
+                     ", expected each side in [1, " + std::to_string(kMaxImageSide) + "]");
+  }
+}
+
+Image decodeDdsLevel0(const std::uint8_t* bytes, std::size_t size, const std::string& name) {
+  const DdsFile file = parseDds(bytes, size, name);
+  const DdsLevel& level = file.levels.front();
+  Image image = makeImage(level.width, level.height);
+  image.rgba = file.blockFormat ? decodeBlockLevel(*file.blockFormat, level.width, level.height, level.data.data())
+                                : level.data;
+  return image;
+}
+
+}  // namespace
+
 Image decodeImage(const std::uint8_t* bytes, std::size_t size, const std::string& nameForMessages) {
-  if (!isPngOrJpeg(bytes, size)) {
-    throw InputError(nameForMessages + ": not a readable image (expected a PNG or JPEG file" +
+  const ImageFileFormat format = formatOfBytes(bytes, size);
+  if (format == ImageFileFormat::Unknown) {
+    throw InputError(nameForMessages + ": not a readable image (expected a " + std::string(kReadableFormats) + " file" +
                      (size == 0 ? std::string(", the file is empty)") : std::string(")")));
   }
-  const std::vector<std::uint8_t> padded =
-      startsWith(bytes, size, kPngSignature, sizeof kPngSignature) ? withFullPalette(bytes, size) : std::vector<std::uint8_t>{};
+  if (format == ImageFileFormat::Hdr) {
+    throw InputError(nameForMessages + ": a Radiance HDR image holds floating-point texels, for environment maps; "
+                                       "a material map takes an 8-bit image (PNG, JPEG, BMP, TGA or DDS)");
+  }
+  if (format == ImageFileFormat::Dds) return decodeDdsLevel0(bytes, size, nameForMessages);
+  const bool png = format == ImageFileFormat::Png;
+  const std::vector<std::uint8_t> padded = png ? withFullPalette(bytes, size) : std::vector<std::uint8_t>{};
   if (!padded.empty()) {
     bytes = padded.data();
     size = padded.size();
   }
-  const std::vector<std::uint8_t> compacted = startsWith(bytes, size, kPngSignature, sizeof kPngSignature)
-                                                  ? withoutEmptyImageData(bytes, size)
-                                                  : std::vector<std::uint8_t>{};
+  const std::vector<std::uint8_t> compacted = png ? withoutEmptyImageData(bytes, size) : std::vector<std::uint8_t>{};
   if (!compacted.empty()) {
     bytes = compacted.data();
     size = compacted.size();
@@ -216,24 +293,20 @@ Image decodeImage(const std::uint8_t* bytes, std::size_t size, const std::string
   if (size > static_cast<std::size_t>(INT_MAX)) {
     throw InputError(nameForMessages + ": image data larger than " + describeBytes(INT_MAX));
   }
-  if (startsWith(bytes, size, kJpegSignature, sizeof kJpegSignature)) {
+  if (format == ImageFileFormat::Jpeg) {
     const std::string problem = jpegHuffmanProblem(bytes, size);
     if (!problem.empty()) throw InputError(nameForMessages + ": corrupt JPEG (" + problem + ")");
   }
   const int length = static_cast<int>(size);
   int width = 0, height = 0, channels = 0;
-  // The header first, so a huge declared size is refused before any allocation.
-  if (!stbi_info_from_memory(bytes, length, &width, &height, &channels)) {
-    throw InputError(nameForMessages + ": not a readable image (" + stbReason() + ")");
-  }
-  if (width <= 0 || height <= 0 || width > kMaxImageSide || height > kMaxImageSide) {
-    throw InputError(nameForMessages + ": image is " + std::to_string(width) + "x" + std::to_string(height) +
-                     ", expected each side in [1, " + std::to_string(kMaxImageSide) + "]");
-  }
+  checkStbHeader(bytes, length, format, nameForMessages, width, height);
   int decodedWidth = 0, decodedHeight = 0;
   std::unique_ptr<stbi_uc, void (*)(void*)> data(
       stbi_load_from_memory(bytes, length, &decodedWidth, &decodedHeight, &channels, 4), stbi_image_free);
-  if (!data) throw InputError(nameForMessages + ": cannot decode image (" + stbReason() + ")");
+  if (!data) {
+    throw InputError(nameForMessages + ": cannot decode image (" + std::string(toString(format)) + ": " + stbReason() +
+                     ")");
+  }
   // The decoder reads the header again; it must agree with what was checked above.
   if (decodedWidth != width || decodedHeight != height) {
     throw InputError(nameForMessages + ": cannot decode image (header and data disagree on the size)");
@@ -241,6 +314,37 @@ Image decodeImage(const std::uint8_t* bytes, std::size_t size, const std::string
   Image image = makeImage(width, height);
   std::memcpy(image.rgba.data(), data.get(), image.rgba.size());
   return image;
+}
+
+ImageF decodeHdrImage(const std::uint8_t* bytes, std::size_t size, const std::string& nameForMessages) {
+  if (formatOfBytes(bytes, size) != ImageFileFormat::Hdr) {
+    throw InputError(nameForMessages + ": not a Radiance HDR image (no '#?RADIANCE' or '#?RGBE' line at the start)");
+  }
+  if (size > static_cast<std::size_t>(INT_MAX)) {
+    throw InputError(nameForMessages + ": image data larger than " + describeBytes(INT_MAX));
+  }
+  const int length = static_cast<int>(size);
+  int width = 0, height = 0, channels = 0;
+  checkStbHeader(bytes, length, ImageFileFormat::Hdr, nameForMessages, width, height);
+  int decodedWidth = 0, decodedHeight = 0;
+  std::unique_ptr<float, void (*)(void*)> data(
+      stbi_loadf_from_memory(bytes, length, &decodedWidth, &decodedHeight, &channels, 4), stbi_image_free);
+  if (!data) throw InputError(nameForMessages + ": cannot decode the Radiance HDR image (" + stbReason() + ")");
+  if (decodedWidth != width || decodedHeight != height) {
+    throw InputError(nameForMessages + ": cannot decode image (header and data disagree on the size)");
+  }
+  ImageF image;
+  image.width = width;
+  image.height = height;
+  image.rgba.assign(data.get(), data.get() + static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
+  return image;
+}
+
+ImageF loadHdrImage(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(path + ": image file not found");
+  const std::string bytes = readFileCapped(path, kMaxImageFileBytes, "image file");
+  return decodeHdrImage(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), path);
 }
 
 Image loadPng(const std::string& path) {

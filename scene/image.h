@@ -1,10 +1,12 @@
-// RGBA8 images and PNG I/O (stb_image / stb_image_write from libstb-dev).
+// Images and image files: PNG, JPEG, BMP and TGA through stb_image (libstb-dev), DDS through
+// scene/dds.h, Radiance HDR (float) through stb_image; PNG writing through stb_image_write.
 // Image pixels are stored top row first, as image files are.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace twr {
@@ -29,15 +31,34 @@ Image makeImage(int width, int height, std::uint32_t fillRgba = 0);
 // Largest image file read (inclusive, bytes).
 inline constexpr std::uintmax_t kMaxImageFileBytes = 256ull * 1024 * 1024;
 
-// Loads a PNG (grey, grey + alpha, palette, RGB, RGBA; 8 or 16 bits, interlaced or not) or a
-// JPEG through stb_image, converted to RGBA8; other formats stb knows are refused, as is a
-// side outside [1, kMaxImageSide], checked in the header before anything is decoded.
-// Throws InputError naming the file and the reason.
+// Linear floating-point RGBA (Radiance HDR), top row first; alpha 1.
+struct ImageF {
+  int width = 0;
+  int height = 0;
+  std::vector<float> rgba;  // width * height * 4
+};
+
+// Which format the first bytes announce. TGA has no signature: a file that none of the others
+// claims (and that is not GIF, PSD, PIC or PNM, which are refused) is taken for a TGA.
+enum class ImageFileFormat { Png, Jpeg, Bmp, Tga, Hdr, Dds, Unknown };
+ImageFileFormat imageFileFormat(const std::uint8_t* bytes, std::size_t size);
+std::string_view toString(ImageFileFormat format);
+
+// Loads an 8-bit image converted to RGBA8: PNG (grey, grey + alpha, palette, RGB, RGBA; 8 or
+// 16 bits, interlaced or not), JPEG (baseline and progressive), BMP (1 to 32 bits, no RLE),
+// TGA (true colour, grey, colour-mapped, RLE or not) through stb_image, DDS (level 0,
+// decoded; scene/dds.h). Radiance HDR is refused here (loadHdrImage reads it), so are the
+// other formats stb knows and a side outside [1, kMaxImageSide], checked in the header before
+// anything is decoded. Throws InputError naming the file and the reason.
 Image loadPng(const std::string& path);
+inline Image loadImage(const std::string& path) { return loadPng(path); }
 // The same from bytes in memory; `nameForMessages` starts every error message.
 Image decodeImage(const std::uint8_t* bytes, std::size_t size, const std::string& nameForMessages);
-// Width and height from a PNG or JPEG header, without decoding; false when there is none.
+// Width and height from an image header, without decoding; false when there is none.
 bool readImageHeader(const std::uint8_t* bytes, std::size_t size, int& width, int& height);
+// Radiance HDR (RLE or flat RGBE) as linear floats; throws InputError naming the file.
+ImageF decodeHdrImage(const std::uint8_t* bytes, std::size_t size, const std::string& nameForMessages);
+ImageF loadHdrImage(const std::string& path);
 // Throws InputError when the file cannot be written.
 void savePng(const std::string& path, const Image& image);
 

@@ -40,6 +40,7 @@ struct MeshDesc {
   int rings = 32, sides = 16;       // torus segments around the major / minor circle
   std::string path;                 // obj: resolved path
   int objPart = -1;                 // obj: which part (one per material) to build; -1 merges all
+  bool objMtl = true;               // obj: read the MTL files its mtllib lines name
   std::vector<vec3> positions;      // triangles: three per triangle
   std::vector<vec2> uvs;            // triangles: optional, one per position
   std::vector<vec3> normals;        // triangles: optional, one per position

@@ -320,14 +320,133 @@ class StringBuffer : public std::streambuf {
   explicit StringBuffer(std::string& text) { setg(text.data(), text.data(), text.data() + text.size()); }
 };
 
+// ---- MTL keywords nobody draws ----
+
+// What each MTL keyword this loader does not draw would have done; a keyword whose value is
+// the no-op default (d 1, Tr 0, Ke 0 0 0, illum 1 or 2) changes nothing and is not reported.
+struct UnusedKeyword {
+  std::string_view keyword;
+  std::string_view what;
+};
+constexpr UnusedKeyword kUnusedMtlKeywords[] = {
+    {"map_Ka", "ambient map (ambient uses Ka times the diffuse map)"},
+    {"map_d", "alpha map (no transparency is drawn)"},
+    {"map_Ns", "shininess map"},
+    {"map_Ke", "emission map"},
+    {"map_Tr", "transparency map"},
+    {"refl", "reflection map"},
+    {"map_refl", "reflection map"},
+    {"Ke", "emission"},
+    {"d", "dissolve (no transparency is drawn)"},
+    {"Tr", "transparency (no transparency is drawn)"},
+    {"Tf", "transmission filter"},
+    {"Ni", "index of refraction"},
+    {"illum", "illumination model (Phong with specular is drawn)"},
+    {"Pr", "PBR roughness"}, {"Pm", "PBR metallic"}, {"Ps", "PBR sheen"}, {"Pc", "PBR clearcoat"},
+    {"Pcr", "PBR clearcoat roughness"}, {"aniso", "anisotropy"}, {"anisor", "anisotropy rotation"},
+    {"map_Pr", "PBR roughness map"}, {"map_Pm", "PBR metallic map"}, {"map_Ps", "PBR sheen map"},
+};
+// Map keywords whose options are read (the others' options are covered by the keyword's own
+// warning), and the options honoured.
+constexpr std::string_view kDrawnMapKeywords[] = {"map_Kd", "map_Ks", "map_Bump", "map_bump", "bump", "norm", "disp"};
+constexpr std::string_view kHonouredOptions[] = {"-s", "-o", "-clamp", "-bm"};
+// Arguments each texture option takes (at most; -s, -o and -t take 1 to 3 numbers).
+int optionArguments(std::string_view option) {
+  if (option == "-s" || option == "-o" || option == "-t") return 3;
+  if (option == "-mm") return 2;
+  return 1;  // -blendu, -blendv, -boost, -cc, -clamp, -imfchan, -texres, -bm, -type, -colorspace
+}
+
+bool isNumber(const std::string& token) {
+  char* end = nullptr;
+  std::strtod(token.c_str(), &end);
+  return !token.empty() && end == token.c_str() + token.size();
+}
+
+// A keyword line whose value is the default does nothing.
+bool isNoOp(const std::string& keyword, const std::vector<std::string>& values) {
+  const auto allNumbersEqual = [&](double v) {
+    return !values.empty() && std::all_of(values.begin(), values.end(), [&](const std::string& t) {
+      return isNumber(t) && std::strtod(t.c_str(), nullptr) == v;
+    });
+  };
+  if (keyword == "d") return allNumbersEqual(1.0);
+  if (keyword == "Tr" || keyword == "Ke") return allNumbersEqual(0.0);
+  if (keyword == "Tf") return allNumbersEqual(1.0);
+  if (keyword == "illum") return values.size() == 1 && (values[0] == "1" || values[0] == "2");
+  if (keyword == "Ni") return true;  // refraction is never drawn; Ni alone changes nothing
+  return false;
+}
+
+// One warning per unused keyword or option per file: the first line it is on, and how many
+// more lines have it.
+void warnUnusedMtlKeywords(const std::string& path, const std::string& text, std::vector<std::string>& warnings) {
+  struct Seen {
+    long long firstLine = 0;
+    int more = 0;
+    std::string what;
+  };
+  std::vector<std::pair<std::string, Seen>> seen;  // in order of first appearance
+  const auto note = [&](const std::string& key, long long line, const std::string& what) {
+    for (auto& [k, s] : seen) {
+      if (k == key) {
+        ++s.more;
+        return;
+      }
+    }
+    seen.push_back({key, Seen{line, 0, what}});
+  };
+  std::istringstream lines(text);
+  std::string line;
+  long long lineNumber = 0;
+  while (std::getline(lines, line)) {
+    ++lineNumber;
+    std::istringstream tokens(line);
+    std::string keyword;
+    if (!(tokens >> keyword) || keyword[0] == '#') continue;
+    std::vector<std::string> values;
+    for (std::string t; tokens >> t;) values.push_back(t);
+    const auto unused = std::find_if(std::begin(kUnusedMtlKeywords), std::end(kUnusedMtlKeywords),
+                                     [&](const UnusedKeyword& u) { return u.keyword == keyword; });
+    if (unused != std::end(kUnusedMtlKeywords)) {
+      if (!isNoOp(keyword, values)) {
+        note(keyword, lineNumber, "'" + keyword + "' (" + std::string(unused->what) + ") is not drawn");
+      }
+      continue;
+    }
+    if (std::find(std::begin(kDrawnMapKeywords), std::end(kDrawnMapKeywords), keyword) == std::end(kDrawnMapKeywords)) {
+      continue;
+    }
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      const std::string& option = values[i];
+      if (option.size() < 2 || option[0] != '-' || isNumber(option)) continue;
+      const int arguments = optionArguments(option);
+      std::size_t taken = 0;
+      while (taken < static_cast<std::size_t>(arguments) && i + 1 + taken < values.size() - 1 &&
+             (isNumber(values[i + 1 + taken]) || arguments == 1)) {
+        ++taken;
+      }
+      if (std::find(std::begin(kHonouredOptions), std::end(kHonouredOptions), option) == std::end(kHonouredOptions)) {
+        note(keyword + " " + option, lineNumber, "texture option '" + option + "' on '" + keyword + "' is not used");
+      }
+      i += taken;
+    }
+  }
+  for (const auto& [key, s] : seen) {
+    warnings.push_back(path + ":" + std::to_string(s.firstLine) + ": " + s.what +
+                       (s.more > 0 ? " (and " + std::to_string(s.more) + " more line" + (s.more > 1 ? "s" : "") + ")" : ""));
+  }
+}
+
 // Reads each `mtllib` file relative to the OBJ, with the size limit, the same decoding as
 // the OBJ and names with spaces made one token. Remembers the first file it cannot read.
 class MtlReader : public tinyobj::MaterialReader {
  public:
-  explicit MtlReader(fs::path objDirectory) : objDirectory_(std::move(objDirectory)) {}
+  MtlReader(fs::path objDirectory, bool enabled) : objDirectory_(std::move(objDirectory)), enabled_(enabled) {}
 
   bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
                   std::map<std::string, int>* materialMap, std::string* warning, std::string* error) override {
+    if (!enabled_) return false;
     const std::string path = (objDirectory_ / fs::path(name)).lexically_normal().string();
     std::string text;
     try {
@@ -336,6 +455,7 @@ class MtlReader : public tinyobj::MaterialReader {
       if (firstFailure_.empty()) firstFailure_ = e.what();
       return false;
     }
+    warnUnusedMtlKeywords(path, text, warnings_);
     encodeNamesAfter(text, "newmtl");
     StringBuffer buffer(text);
     std::istream stream(&buffer);
@@ -345,10 +465,13 @@ class MtlReader : public tinyobj::MaterialReader {
 
   // "" when every mtllib file was read.
   const std::string& firstFailure() const { return firstFailure_; }
+  std::vector<std::string>& warnings() { return warnings_; }
 
  private:
   fs::path objDirectory_;
+  bool enabled_;
   std::string firstFailure_;
+  std::vector<std::string> warnings_;
 };
 
 vec3 toVec3(const tinyobj::real_t* values) { return vec3(values[0], values[1], values[2]); }
@@ -356,11 +479,21 @@ vec3 toVec3(const tinyobj::real_t* values) { return vec3(values[0], values[1], v
 // Loads each texture once per model; paths are relative to the MTL file.
 class TextureCache {
  public:
-  TextureCache(std::string objPath, fs::path mtlDirectory, std::uintmax_t budgetBytes)
-      : objPath_(std::move(objPath)), mtlDirectory_(std::move(mtlDirectory)), budgetBytes_(budgetBytes) {}
+  TextureCache(std::string objPath, fs::path mtlDirectory, std::uintmax_t budgetBytes, bool enabled)
+      : objPath_(std::move(objPath)), mtlDirectory_(std::move(mtlDirectory)), budgetBytes_(budgetBytes), enabled_(enabled) {}
 
-  std::shared_ptr<const Texture> get(const std::string& materialName, const char* key, const std::string& name) {
-    if (name.empty()) return nullptr;
+  std::shared_ptr<const Texture> get(const std::string& materialName, const char* key, const std::string& name,
+                                     const tinyobj::texture_option_t& mtlOptions) {
+    if (name.empty() || !enabled_) return nullptr;
+    TextureOptions options;
+    if (mtlOptions.clamp) options.wrap = TextureWrap::ClampToEdge;
+    options.uvScale = vec2(mtlOptions.scale[0], mtlOptions.scale[1]);
+    options.uvOffset = vec2(mtlOptions.origin_offset[0], mtlOptions.origin_offset[1]);
+    if (!std::isfinite(options.uvScale.x) || !std::isfinite(options.uvScale.y) || !std::isfinite(options.uvOffset.x) ||
+        !std::isfinite(options.uvOffset.y)) {
+      throw InputError(objPath_ + ": material '" + materialName + "' " + key + " '" + name +
+                       "': -s or -o is not a finite number");
+    }
     std::string path = (mtlDirectory_ / fs::path(name)).lexically_normal().string();
     if (name.find('\\') != std::string::npos && !fs::exists(path)) {
       // Exported on Windows ("textures\\brick.png"): try the same path with '/'.
@@ -368,37 +501,78 @@ class TextureCache {
       std::replace(slashed.begin(), slashed.end(), '\\', '/');
       path = (mtlDirectory_ / fs::path(slashed)).lexically_normal().string();
     }
-    if (auto found = cache_.find(path); found != cache_.end()) return found->second;
+    for (const auto& [k, texture] : cache_) {
+      if (k.first == path && k.second == options) return texture;
+    }
     std::shared_ptr<const Texture> texture;
     try {
-      texture = std::make_shared<const Texture>(loadTexture(path, budgetBytes_));
+      texture = std::make_shared<const Texture>(loadTexture(path, options, budgetBytes_));
     } catch (const InputError& error) {
       throw InputError(objPath_ + ": material '" + materialName + "' " + key + " '" + name +
                        "' cannot be loaded: " + error.what());
     }
-    cache_.emplace(path, texture);
+    for (const std::string& w : texture->warnings) warnings_.push_back(w);
+    cache_.push_back({{path, options}, texture});
     return texture;
   }
+
+  std::vector<std::string>& warnings() { return warnings_; }
 
  private:
   std::string objPath_;
   fs::path mtlDirectory_;
   std::uintmax_t budgetBytes_;  // texel bytes still allowed
-  std::map<std::string, std::shared_ptr<const Texture>> cache_;
+  bool enabled_;
+  std::vector<std::pair<std::pair<std::string, TextureOptions>, std::shared_ptr<const Texture>>> cache_;
+  std::vector<std::string> warnings_;
 };
 
-Material toMaterial(const tinyobj::material_t& source, TextureCache& textures) {
+// Whether every texel is grey (r = g = b): a height map, not a tangent-space normal map
+// (whose flat texel is (128, 128, 255)).
+bool isGreyTexture(const Texture& texture) {
+  for (std::size_t i = 0; i + 3 < texture.rgba.size(); i += 4) {
+    if (texture.rgba[i] != texture.rgba[i + 1] || texture.rgba[i] != texture.rgba[i + 2]) return false;
+  }
+  return true;
+}
+
+Material toMaterial(const tinyobj::material_t& source, TextureCache& textures, const std::string& objPath) {
   Material material;
   material.name = decodeName(source.name);
   material.ka = toVec3(source.ambient);
   material.kd = toVec3(source.diffuse);
   material.ks = toVec3(source.specular);
   material.shininess = source.shininess;
-  material.diffuseMap = textures.get(material.name, "map_Kd", source.diffuse_texname);
-  material.specularMap = textures.get(material.name, "map_Ks", source.specular_texname);
-  // `norm` is the explicit normal map; many exporters put the normal map in map_Bump/bump.
-  const std::string& normalName = source.normal_texname.empty() ? source.bump_texname : source.normal_texname;
-  material.normalMap = textures.get(material.name, source.normal_texname.empty() ? "map_Bump" : "norm", normalName);
+  material.diffuseMap = textures.get(material.name, "map_Kd", source.diffuse_texname, source.diffuse_texopt);
+  material.specularMap = textures.get(material.name, "map_Ks", source.specular_texname, source.specular_texopt);
+  // `norm` is the explicit normal map; many exporters put the normal map in map_Bump/bump,
+  // and others a height map there: grey texels say which.
+  if (!source.normal_texname.empty()) {
+    material.normalMap = textures.get(material.name, "norm", source.normal_texname, source.normal_texopt);
+    material.normalStrength = source.normal_texopt.bump_multiplier;
+  }
+  if (!source.bump_texname.empty()) {
+    std::shared_ptr<const Texture> bump = textures.get(material.name, "map_Bump", source.bump_texname, source.bump_texopt);
+    if (bump && isGreyTexture(*bump)) {
+      material.heightMap = bump;
+      material.heightScale = source.bump_texopt.bump_multiplier;
+    } else if (bump && !material.normalMap) {
+      material.normalMap = bump;
+      material.normalStrength = source.bump_texopt.bump_multiplier;
+    }
+  }
+  if (!source.displacement_texname.empty()) {
+    material.heightMap = textures.get(material.name, "disp", source.displacement_texname, source.displacement_texopt);
+    material.heightScale = source.displacement_texopt.bump_multiplier;
+  }
+  if (material.heightMap) {
+    textures.warnings().push_back(objPath + ": material '" + material.name + "': height map '" +
+                                  material.heightMap->path + "' is kept for bump and parallax mapping, which this "
+                                  "version does not draw yet");
+  }
+  if (!std::isfinite(material.normalStrength) || !std::isfinite(material.heightScale)) {
+    throw InputError(objPath + ": material '" + material.name + "': -bm is not a finite number");
+  }
   return material;
 }
 
@@ -470,7 +644,7 @@ void checkFiniteAttributes(const std::string& path, const std::string& text, con
 
 }  // namespace
 
-ObjModel loadObj(const std::string& path, const ObjLimits& limits) {
+ObjModel loadObj(const std::string& path, const ObjLimits& limits, const ObjReadOptions& read) {
   const std::size_t maxTriangles = limits.maxTriangles;
   std::string text = decodeText(readFileCapped(path, kMaxObjFileBytes, "OBJ file"), path);
   const ObjPrescan prescan = prescanObj(path, text, maxTriangles);
@@ -480,7 +654,7 @@ ObjModel loadObj(const std::string& path, const ObjLimits& limits) {
   std::vector<tinyobj::shape_t> shapes;
   std::vector<tinyobj::material_t> sourceMaterials;
   std::string warning, error;
-  MtlReader mtlReader(fs::path(path).parent_path());
+  MtlReader mtlReader(fs::path(path).parent_path(), read.readMtl);
   {
     StringBuffer buffer(text);
     std::istream stream(&buffer);
@@ -492,8 +666,12 @@ ObjModel loadObj(const std::string& path, const ObjLimits& limits) {
   // A missing MTL file, or a usemtl naming a material the MTL lacks, is only a warning to
   // tinyobjloader; the model would silently render white, so both are errors here. (A
   // usemtl in a file without any mtllib is common in exports and just means no material.)
-  if (!mtlReader.firstFailure().empty()) throw InputError(path + ": mtllib: " + mtlReader.firstFailure());
-  if (prescan.hasMtllib) {
+  std::vector<std::string> warnings = std::move(mtlReader.warnings());
+  if (!mtlReader.firstFailure().empty()) {
+    if (read.loadMaps) throw InputError(path + ": mtllib: " + mtlReader.firstFailure());
+    warnings.push_back(path + ": mtllib: " + mtlReader.firstFailure() + " (the scene gives the node its own material)");
+  }
+  if (prescan.hasMtllib && read.readMtl && mtlReader.firstFailure().empty()) {
     std::set<std::string> defined;
     for (const tinyobj::material_t& m : sourceMaterials) defined.insert(decodeName(m.name));
     for (const NamedLine& used : usedMaterials) {
@@ -510,13 +688,14 @@ ObjModel loadObj(const std::string& path, const ObjLimits& limits) {
                                static_cast<long long>(attrib.texcoords.size() / 2),
                                static_cast<long long>(attrib.normals.size() / 3)};
 
-  TextureCache textures(path, prescan.mtlDirectory, limits.maxTextureBytes);
+  TextureCache textures(path, prescan.mtlDirectory, limits.maxTextureBytes, read.loadMaps);
   std::vector<Material> materials;
   materials.reserve(sourceMaterials.size());
   for (const tinyobj::material_t& source : sourceMaterials) {
-    materials.push_back(toMaterial(source, textures));
+    materials.push_back(toMaterial(source, textures, path));
     requireValidMaterial(path, materials.back());
   }
+  for (std::string& w : textures.warnings()) warnings.push_back(std::move(w));
 
   // Material id (-1 = none) -> mesh, in order of first use.
   std::map<int, std::size_t> builderByMaterial;
@@ -602,6 +781,7 @@ ObjModel loadObj(const std::string& path, const ObjLimits& limits) {
   if (builders.empty()) throw InputError(path + ": the OBJ file has no triangles (no 'f' lines with 3+ corners)");
 
   ObjModel model;
+  model.warnings = std::move(warnings);
   for (std::size_t b = 0; b < builders.size(); ++b) {
     MeshBuilder& builder = builders[b];
     Mesh& mesh = builder.mesh;

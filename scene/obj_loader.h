@@ -1,5 +1,4 @@
-// Wavefront OBJ through tinyobjloader: positions, normals, uvs; MTL Kd/Ks/Ka/Ns and the
-// diffuse (map_Kd), normal (norm / map_Bump / bump) and specular (map_Ks) maps.
+// Wavefront OBJ through tinyobjloader: positions, normals, uvs; MTL colours and maps.
 #pragma once
 
 #include "scene/mesh.h"
@@ -16,6 +15,16 @@ struct ObjModel {
   std::vector<Mesh> meshes;
   std::vector<Material> materials;  // parallel to meshes; name "" where the OBJ has none
   std::vector<bool> hasMaterial;    // false where the OBJ gave no material for that part
+  // MTL keywords and texture options read and not used, a height map kept but not drawn, an
+  // MTL not read: one line each, "file:line: ...".
+  std::vector<std::string> warnings;
+};
+
+// What to read besides the geometry.
+struct ObjReadOptions {
+  bool readMtl = true;   // false: mtllib lines are skipped; every face has no material
+  bool loadMaps = true;  // false: materials keep their colours, no map file is opened (and a
+                         // missing MTL is a warning): the scene gives the node its own material
 };
 
 // Largest OBJ file and MTL file read (inclusive, bytes): 256 MiB of OBJ text is about 5
@@ -33,6 +42,10 @@ struct ObjLimits {
 // UTF-8 (with or without a byte-order mark) or UTF-16 (with a byte-order mark, or starting
 // with an ASCII character), with any line ends; material names may contain spaces; texture
 // paths may use '\\'.
-ObjModel loadObj(const std::string& path, const ObjLimits& limits = {});
+// MTL: Ka, Kd, Ks, Ns, map_Kd, map_Ks, norm (normal map), map_Bump / bump (a normal map, or a
+// height map when its texels are grey), disp (height map); texture options -s and -o (the
+// map's uv scale and offset), -clamp (clamp_to_edge), -bm (normal strength or height scale).
+// Anything else that changes the picture is named in `warnings`.
+ObjModel loadObj(const std::string& path, const ObjLimits& limits = {}, const ObjReadOptions& read = {});
 
 }  // namespace twr

@@ -349,7 +349,10 @@ Mesh buildMesh(const MeshDesc& desc) {
     case MeshType::Triangles:
       return makeTriangles(desc.positions, desc.uvs, desc.normals);
     case MeshType::Obj: {
-      ObjModel model = loadObj(desc.path);
+      ObjReadOptions read;  // geometry only: parts follow the MTL's materials, no map is read
+      read.readMtl = desc.objMtl;
+      read.loadMaps = false;
+      ObjModel model = loadObj(desc.path, {}, read);
       if (desc.objPart >= 0) {
         if (desc.objPart >= static_cast<int>(model.meshes.size())) {
           throw InputError(desc.path + ": has " + std::to_string(model.meshes.size()) + " parts, part " +

@@ -32,6 +32,13 @@ struct Material {
   std::shared_ptr<const Texture> diffuseMap;
   std::shared_ptr<const Texture> normalMap;
   std::shared_ptr<const Texture> specularMap;
+  // A height map (grey levels, white = high): kept for bump and parallax mapping; neither
+  // renderer reads it yet. heightScale: the MTL's -bm (world units per full grey range).
+  std::shared_ptr<const Texture> heightMap;
+  float heightScale = 1.0f;
+  // Tangent-space normal strength: the mapped normal's x and y are scaled by this before
+  // normalising (the MTL's -bm on a normal map; 1 leaves the map as it is).
+  float normalStrength = 1.0f;
 };
 
 struct PointLight {
@@ -69,6 +76,9 @@ struct Scene {
   std::vector<Mesh> meshes;
   std::vector<Node> nodes;  // roots
   RenderSettings settings;
+  // What was read and ignored, or read another way than asked: one line each, naming the
+  // file (and line or key). The CLI prints each as "warning: ..." on stderr; the GUI lists them.
+  std::vector<std::string> warnings;
 };
 
 // parentFromNode = T * Rz * Ry * Rx * S (so X rotates first, then Y, then Z).

@@ -368,25 +368,67 @@ class SceneReader {
       if (const Json* v = find(mj, "kd")) material.kd = readColour(*v, childPath(materialPath, "kd"), NumberRule::Colour);
       if (const Json* v = find(mj, "ks")) material.ks = readColour(*v, childPath(materialPath, "ks"), NumberRule::Colour);
       if (const Json* v = find(mj, "shininess")) material.shininess = readNumber(*v, childPath(materialPath, "shininess"), NumberRule::NonNegative);
-      if (const Json* v = find(mj, "diffuse_map")) material.diffuseMap = readTexture(*v, childPath(materialPath, "diffuse_map"));
-      if (const Json* v = find(mj, "normal_map")) material.normalMap = readTexture(*v, childPath(materialPath, "normal_map"));
-      if (const Json* v = find(mj, "specular_map")) material.specularMap = readTexture(*v, childPath(materialPath, "specular_map"));
+      if (const Json* v = find(mj, "diffuse_map")) {
+        material.diffuseMap = readTexture(*v, childPath(materialPath, "diffuse_map"), MapRole::Colour);
+      }
+      if (const Json* v = find(mj, "normal_map")) {
+        material.normalMap = readTexture(*v, childPath(materialPath, "normal_map"), MapRole::Normal);
+      }
+      if (const Json* v = find(mj, "specular_map")) {
+        material.specularMap = readTexture(*v, childPath(materialPath, "specular_map"), MapRole::Colour);
+      }
       materialIndex_[material.name] = static_cast<int>(scene_.materials.size());
       scene_.materials.push_back(std::move(material));
     }
   }
 
-  // Materials naming the same file share one Texture.
-  std::shared_ptr<const Texture> readTexture(const Json& j, const std::string& path) {
-    const std::string file = resolvePath(readString(j, path, "a PNG file path relative to the scene file"));
-    if (const auto it = textures_.find(file); it != textures_.end()) return it->second;
+  enum class MapRole { Colour, Normal };
+
+  // A map is a path string or {"path", "flip_v", "wrap", "srgb"} (+ "green" on a normal map).
+  // Materials naming the same file with the same options share one Texture.
+  std::shared_ptr<const Texture> readTexture(const Json& j, const std::string& path, MapRole role) {
+    const char* pathWhat = "an image file path relative to the scene file (PNG, JPEG, BMP, TGA or DDS)";
+    TextureOptions options;
+    std::string relative;
+    std::string filePath = path;
+    if (j.is_object()) {
+      if (role == MapRole::Normal) {
+        checkKeys(j, path, {"path", "flip_v", "wrap", "srgb", "green"}, "a normal map");
+      } else {
+        checkKeys(j, path, {"path", "flip_v", "wrap", "srgb"}, "a texture");
+      }
+      const Json* p = find(j, "path");
+      filePath = childPath(path, "path");
+      if (!p) fail(filePath, std::string("missing; expected ") + pathWhat);
+      relative = readString(*p, filePath, pathWhat);
+      if (const Json* v = find(j, "flip_v")) options.flipV = readBool(*v, childPath(path, "flip_v"));
+      if (const Json* v = find(j, "wrap")) options.wrap = readEnum<TextureWrap>(*v, childPath(path, "wrap"));
+      if (const Json* v = find(j, "srgb")) options.srgb = readBool(*v, childPath(path, "srgb"));
+      if (const Json* v = find(j, "green")) options.green = readEnum<GreenAxis>(*v, childPath(path, "green"));
+      if (role == MapRole::Normal && options.srgb) {
+        scene_.warnings.push_back(fileName_ + ": " + childPath(path, "srgb") +
+                                  ": a normal map holds directions, not colours; decoding it as sRGB bends every "
+                                  "normal (done as asked)");
+      }
+    } else if (j.is_string()) {
+      relative = readString(j, path, pathWhat);
+    } else {
+      fail(path, std::string("expected ") + pathWhat + " or an object {\"path\": ..., \"flip_v\", \"wrap\", \"srgb\"" +
+                     (role == MapRole::Normal ? ", \"green\"" : "") + "}, got " + quote(j));
+    }
+    const std::string file = resolvePath(relative);
+    const auto key = std::make_pair(file, options);
+    for (const auto& [k, texture] : textures_) {
+      if (k.first == key.first && k.second == key.second) return texture;
+    }
     std::shared_ptr<const Texture> texture;
     try {
-      texture = std::make_shared<const Texture>(loadTexture(file, textureBudget_));
+      texture = std::make_shared<const Texture>(loadTexture(file, options, textureBudget_));
     } catch (const InputError& e) {
-      fail(path, e.what());
+      fail(filePath, e.what());
     }
-    textures_.emplace(file, texture);
+    for (const std::string& w : texture->warnings) scene_.warnings.push_back(fileName_ + ": " + path + ": " + w);
+    textures_.emplace_back(key, texture);
     return texture;
   }
 
@@ -394,7 +436,7 @@ class SceneReader {
     requireObject(j, path);
     checkKeys(j, path,
               {"cull", "front_face", "clip", "user_clip_planes", "view", "lighting_space", "tangent_transform",
-               "texture_filter", "tbn_lines"},
+               "texture_filter", "anisotropy", "tbn_lines"},
               "settings");
     RenderSettings& s = scene_.settings;
     if (const Json* v = find(j, "cull")) s.cull = readEnum<CullMode>(*v, childPath(path, "cull"));
@@ -407,6 +449,13 @@ class SceneReader {
       s.tangentTransform = readEnum<TangentTransform>(*v, childPath(path, "tangent_transform"));
     }
     if (const Json* v = find(j, "texture_filter")) s.textureFilter = readEnum<TextureFilter>(*v, childPath(path, "texture_filter"));
+    if (const Json* v = find(j, "anisotropy")) {
+      const std::string at = childPath(path, "anisotropy");
+      s.anisotropy = readNumber(*v, at, NumberRule::Finite);
+      if (!(s.anisotropy >= 1.0f && s.anisotropy <= kMaxTextureAnisotropy)) {
+        fail(at, "expected a number in [1, 16] (1 = isotropic), got " + quote(*v));
+      }
+    }
     if (const Json* v = find(j, "tbn_lines")) readTbnLines(*v, childPath(path, "tbn_lines"));
   }
 
@@ -514,11 +563,17 @@ class SceneReader {
     const std::string filePath = childPath(path, "path");
     ObjModel model;
     try {
-      model = loadObj(desc.path, ObjLimits{kMaxSceneTriangles - trianglesSoFar_, textureBudget_});
+      // The node's own material replaces the MTL's: their maps are not read (a missing one
+      // must not stop the model); "mtl": false ignores the MTL files altogether.
+      ObjReadOptions read;
+      read.readMtl = desc.objMtl;
+      read.loadMaps = node.materialIndex < 0;
+      model = loadObj(desc.path, ObjLimits{kMaxSceneTriangles - trianglesSoFar_, textureBudget_}, read);
     } catch (const InputError& e) {
       fail(filePath, e.what());
     }
     if (model.meshes.empty()) fail(filePath, desc.path + ": the OBJ holds no faces");
+    for (const std::string& w : model.warnings) scene_.warnings.push_back(w);
     if (depth + 1 > kMaxNodeDepth) {
       fail(path, "an obj mesh adds a level of child nodes, which would nest deeper than " +
                      std::to_string(kMaxNodeDepth) + " levels");
@@ -529,8 +584,10 @@ class SceneReader {
     // The OBJ kept within what was left; its maps (each file once) now use up that much.
     std::set<const Texture*> objTextures;
     for (const Material& m : model.materials) {
-      for (const Texture* map : {m.diffuseMap.get(), m.normalMap.get(), m.specularMap.get()}) {
-        if (map && objTextures.insert(map).second) textureBudget_ -= std::min<std::uintmax_t>(textureBudget_, map->rgba.size());
+      for (const Texture* map : {m.diffuseMap.get(), m.normalMap.get(), m.specularMap.get(), m.heightMap.get()}) {
+        if (map && objTextures.insert(map).second) {
+          textureBudget_ -= std::min<std::uintmax_t>(textureBudget_, textureTexelBytes(*map));
+        }
       }
     }
 
@@ -610,10 +667,11 @@ class SceneReader {
         }
         break;
       case MeshType::Obj: {
-        checkKeys(j, path, {"type", "path"}, where);
+        checkKeys(j, path, {"type", "path", "mtl"}, where);
         const Json* v = find(j, "path");
         if (!v) fail(at("path"), "missing; expected the OBJ file path relative to the scene file");
         desc.path = resolvePath(readString(*v, at("path"), "an OBJ file path relative to the scene file"));
+        if (const Json* m = find(j, "mtl")) desc.objMtl = readBool(*m, at("mtl"));
         break;
       }
       case MeshType::Triangles:
@@ -692,7 +750,8 @@ class SceneReader {
   std::string baseDir_;
   Scene scene_;
   std::map<std::string, int> materialIndex_;
-  std::map<std::string, std::shared_ptr<const Texture>> textures_;
+  // Loaded maps by (file, options): a handful per scene, searched linearly.
+  std::vector<std::pair<std::pair<std::string, TextureOptions>, std::shared_ptr<const Texture>>> textures_;
   std::size_t trianglesSoFar_ = 0;
   std::uintmax_t textureBudget_ = kMaxSceneTextureBytes;  // texel bytes still allowed
 };

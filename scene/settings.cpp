@@ -25,7 +25,16 @@ constexpr NameTable<View, 10> kView{{{View::Shaded, "shaded"},
 constexpr NameTable<LightingSpace, 2> kSpace{{{LightingSpace::World, "world"}, {LightingSpace::Tangent, "tangent"}}};
 constexpr NameTable<TangentTransform, 2> kTangent{
     {{TangentTransform::Model, "model"}, {TangentTransform::InverseTranspose, "inverse_transpose"}}};
-constexpr NameTable<TextureFilter, 2> kFilter{{{TextureFilter::Nearest, "nearest"}, {TextureFilter::Bilinear, "bilinear"}}};
+constexpr NameTable<TextureFilter, 6> kFilter{{{TextureFilter::Nearest, "nearest"},
+                                              {TextureFilter::Bilinear, "bilinear"},
+                                              {TextureFilter::Trilinear, "trilinear"},
+                                              {TextureFilter::NearestMipmapNearest, "nearest_mipmap_nearest"},
+                                              {TextureFilter::LinearMipmapNearest, "linear_mipmap_nearest"},
+                                              {TextureFilter::NearestMipmapLinear, "nearest_mipmap_linear"}}};
+// GL's own names for two of them, accepted as well.
+constexpr NameTable<TextureFilter, 3> kFilterAliases{{{TextureFilter::Nearest, "nearest"},
+                                                     {TextureFilter::Bilinear, "linear"},
+                                                     {TextureFilter::Trilinear, "linear_mipmap_linear"}}};
 constexpr NameTable<LineMode, 2> kLine{{{LineMode::Core, "core"}, {LineMode::Immediate, "immediate"}}};
 
 template <typename E, std::size_t N>
@@ -61,7 +70,7 @@ bool parse(std::string_view s, FrontFace& out) { return valueOf(kFront, s, out);
 bool parse(std::string_view s, View& out) { return valueOf(kView, s, out); }
 bool parse(std::string_view s, LightingSpace& out) { return valueOf(kSpace, s, out); }
 bool parse(std::string_view s, TangentTransform& out) { return valueOf(kTangent, s, out); }
-bool parse(std::string_view s, TextureFilter& out) { return valueOf(kFilter, s, out); }
+bool parse(std::string_view s, TextureFilter& out) { return valueOf(kFilter, s, out) || valueOf(kFilterAliases, s, out); }
 bool parse(std::string_view s, LineMode& out) { return valueOf(kLine, s, out); }
 
 std::string allViewNames() {

@@ -14,7 +14,25 @@ enum class FrontFace { Ccw, Cw };
 enum class View { Shaded, Albedo, Normal, Tangent, Bitangent, MappedNormal, Uv, Depth, LightTangent, EyeTangent };
 enum class LightingSpace { World, Tangent };
 enum class TangentTransform { Model, InverseTranspose };
-enum class TextureFilter { Nearest, Bilinear };
+// GL's minification filters (docs/textures.md): nearest = GL_NEAREST, bilinear = GL_LINEAR
+// (level 0 only), trilinear = GL_LINEAR_MIPMAP_LINEAR, and the other three mipmapped ones by
+// their GL names. Magnification uses GL_NEAREST for the *nearest* ones' texel filter
+// (nearest, nearest_mipmap_*), GL_LINEAR for the others.
+enum class TextureFilter { Nearest, Bilinear, Trilinear, NearestMipmapNearest, LinearMipmapNearest, NearestMipmapLinear };
+inline constexpr TextureFilter kAllTextureFilters[] = {
+    TextureFilter::Nearest, TextureFilter::Bilinear, TextureFilter::Trilinear, TextureFilter::NearestMipmapNearest,
+    TextureFilter::LinearMipmapNearest, TextureFilter::NearestMipmapLinear};
+// Whether the filter reads mip levels (else level 0 only).
+constexpr bool usesMipmaps(TextureFilter f) { return f != TextureFilter::Nearest && f != TextureFilter::Bilinear; }
+// Whether texels within a level are blended bilinearly (GL_LINEAR*) or picked (GL_NEAREST*).
+constexpr bool texelsLinear(TextureFilter f) {
+  return f == TextureFilter::Bilinear || f == TextureFilter::Trilinear || f == TextureFilter::LinearMipmapNearest;
+}
+// Whether two levels are blended (GL_*_MIPMAP_LINEAR).
+constexpr bool levelsLinear(TextureFilter f) { return f == TextureFilter::Trilinear || f == TextureFilter::NearestMipmapLinear; }
+
+// Most anisotropy (GL_TEXTURE_MAX_ANISOTROPY): 1 = isotropic, up to 16 as GL drivers offer.
+inline constexpr float kMaxTextureAnisotropy = 16.0f;
 enum class LineMode { Core, Immediate };
 
 // Each frustum plane of the homogeneous clipper, on (true) or off.
@@ -37,6 +55,7 @@ struct RenderSettings {
   LightingSpace lightingSpace = LightingSpace::World;
   TangentTransform tangentTransform = TangentTransform::Model;
   TextureFilter textureFilter = TextureFilter::Bilinear;
+  float anisotropy = 1.0f;  // GL_TEXTURE_MAX_ANISOTROPY, in [1, kMaxTextureAnisotropy]
   TbnLines tbnLines;
 };
 

@@ -3,6 +3,7 @@
 // It also names the CPU fast path's target on this machine (what --cpu-isa auto runs) and
 // every target this binary and this CPU can run.
 #include "app/cli/commands.h"
+#include "app/cli/common.h"
 #include "scene/scene.h"
 #include "scene/scene_file.h"
 #include "softrender/cpu_renderer.h"
@@ -313,6 +314,7 @@ const bool registered = registerCommand(10, [](CLI::App& app) {
                 "cpu_isas_supported: every --cpu-isa this machine runs, best first)");
   cmd->callback([request] {
     const Scene scene = loadSceneFile(request->scenePath);
+    printSceneWarnings(scene);
     if (request->json) {
       Json j = sceneJson(scene);
       addCpuJson(j);

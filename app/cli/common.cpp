@@ -4,6 +4,8 @@
 #include "scene/image.h"
 #include "scene/scene_file.h"
 
+#include <iostream>
+
 namespace twr::cli {
 
 namespace {
@@ -30,8 +32,18 @@ void addRenderOptions(CLI::App& cmd, RenderRequest& request) {
   cmd.add_option("--lighting-space", request.lightingSpace, "Override settings.lighting_space: world|tangent");
   cmd.add_option("--tangent-transform", request.tangentTransform,
                  "Override settings.tangent_transform: model|inverse_transpose");
-  cmd.add_option("--filter", request.textureFilter, "Override settings.texture_filter: nearest|bilinear");
+  cmd.add_option("--filter", request.textureFilter,
+                 "Override settings.texture_filter: nearest|bilinear|trilinear|nearest_mipmap_nearest|"
+                 "linear_mipmap_nearest|nearest_mipmap_linear");
   cmd.add_flag("--verbose,-v", request.verbose, "Print GL_VERSION, GL_RENDERER and timings on stderr");
+}
+
+void printSceneWarnings(const Scene& scene) {
+  for (const std::string& w : scene.warnings) std::cerr << "warning: " << w << "\n";
+  if (scene.settings.anisotropy > 1.0f) {
+    std::cerr << "warning: settings.anisotropy " << scene.settings.anisotropy
+              << " is not drawn yet: both renderers filter isotropically (anisotropy 1)\n";
+  }
 }
 
 Scene loadRequestedScene(const RenderRequest& request) {
@@ -42,7 +54,9 @@ Scene loadRequestedScene(const RenderRequest& request) {
   applyOverride(request.frontFace, "--front-face", s.frontFace, "ccw|cw");
   applyOverride(request.lightingSpace, "--lighting-space", s.lightingSpace, "world|tangent");
   applyOverride(request.tangentTransform, "--tangent-transform", s.tangentTransform, "model|inverse_transpose");
-  applyOverride(request.textureFilter, "--filter", s.textureFilter, "nearest|bilinear");
+  applyOverride(request.textureFilter, "--filter", s.textureFilter,
+                "nearest|bilinear|trilinear|nearest_mipmap_nearest|linear_mipmap_nearest|nearest_mipmap_linear");
+  printSceneWarnings(scene);
   return scene;
 }
 

@@ -23,6 +23,9 @@ struct RenderRequest {
 void addRenderOptions(CLI::App& cmd, RenderRequest& request);
 
 // Loads the scene and applies the overrides; throws InputError (exit 2) on bad input.
+// "warning: ..." on stderr for each of the scene's warnings (scene.h) and for settings it
+// reads but neither renderer draws yet.
+void printSceneWarnings(const Scene& scene);
 Scene loadRequestedScene(const RenderRequest& request);
 int requestedWidth(const RenderRequest& request, const Scene& scene);
 int requestedHeight(const RenderRequest& request, const Scene& scene);

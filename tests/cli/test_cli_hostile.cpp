@@ -115,7 +115,7 @@ TEST(CliHostile, BadTexturesAndModels) {
   writeText(dir / "gif.png", "GIF89a");
   writeText(dir / "gif.json", R"({"materials": {"m": {"normal_map": "gif.png"}}, "nodes": []})");
   expectRefused(dir, quoted(dir / "gif.json"), (dir / "gif.json").string() + ": materials.m.normal_map: ",
-                "expected a PNG or JPEG file");
+                "expected a PNG, JPEG, BMP, TGA, DDS or Radiance HDR file");
   writeText(dir / "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n");
   writeText(dir / "obj.json", R"({"nodes": [{"mesh": {"type": "obj", "path": "bad.obj"}}]})");
   expectRefused(dir, quoted(dir / "obj.json"), (dir / "obj.json").string() + ": nodes[0].mesh.path: " +

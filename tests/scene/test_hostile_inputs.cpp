@@ -349,15 +349,17 @@ TEST(HostilePng, OtherFormatsAreRefused) {
   // Valid headers of formats stb_image decodes but loadPng does not accept.
   const std::vector<std::pair<std::string, std::string>> others{
       {"gif.png", "GIF89a\x01\x00\x01\x00\x00\x00\x00;"},
-      {"bmp.png", std::string("BM") + std::string(60, '\0')},
       {"pnm.png", "P6\n1 1\n255\nabc"},
       {"psd.png", "8BPS" + std::string(40, '\0')},
   };
   for (const auto& [name, bytes] : others) {
     const std::string path = writeText(dir / name, bytes);
     const std::string message = errorOf([&] { loadPng(path); });
-    EXPECT_EQ(message, path + ": not a readable image (expected a PNG or JPEG file)");
+    EXPECT_EQ(message, path + ": not a readable image (expected a PNG, JPEG, BMP, TGA, DDS or Radiance HDR file)");
   }
+  // BMP is read now; a broken one says so.
+  const std::string bmp = writeText(dir / "bmp.png", std::string("BM") + std::string(60, '\0'));
+  expectStartsWith(errorOf([&] { loadPng(bmp); }), bmp + ": not a readable image (BMP: ");
 }
 
 // Debian 12's stb_image overruns its Huffman arrays on a DHT segment declaring more than 256
@@ -414,12 +416,14 @@ TEST(HostilePng, TextureBudgetRefusesBeforeDecoding) {
   PngSpec big = rgba4x2();
   big.width = 4096;  // the header says 4096 x 2 = 32 KiB of texels; the data is still 4 x 2
   const std::string liar = writeFile(dir / "liar.png", makePng(big));
-  std::uintmax_t budget = 32 + 4096 * 2 * 4 - 1;  // room for small.png and one byte short of liar.png
+  // liar.png with its chain: 32768 + 32768 / 3 = 43690 bytes.
+  std::uintmax_t budget = 44 + 43690 - 1;  // room for small.png and one byte short of liar.png
   const Texture texture = loadTexture(small, budget);
-  EXPECT_EQ(budget, std::uintmax_t{4096 * 2 * 4 - 1}) << "the 4x2 texture uses 32 bytes";
+  EXPECT_EQ(budget, std::uintmax_t{43690 - 1}) << "the 4x2 texture uses 32 bytes, its 2x1 and 1x1 levels 12";
   const std::string message = errorOf([&] { loadTexture(liar, budget); });
-  expectStartsWith(message, liar + ": image is 4096x2 (32768 bytes of texels), more than the 32767 bytes left");
-  EXPECT_EQ(budget, std::uintmax_t{4096 * 2 * 4 - 1}) << "a refused texture uses nothing";
+  expectStartsWith(message, liar + ": image is 4096x2 (43690 bytes of texels with its mip chain), more than the 43689 "
+                                   "bytes left");
+  EXPECT_EQ(budget, std::uintmax_t{43690 - 1}) << "a refused texture uses nothing";
 }
 
 // ---- scene files ----
@@ -510,8 +514,8 @@ TEST(HostileScene, BadTexturesNameSceneKeyAndFile) {
 }
 
 TEST(HostileScene, TextureMemoryIsBoundedPerScene) {
-  // A first map takes 32 bytes of the 1 GiB; a second one whose header claims 16384^2
-  // (exactly 1 GiB) no longer fits and is refused before decoding.
+  // A first map takes 44 bytes (32 and its chain) of the 1 GiB; a second one whose header
+  // claims 16384^2 (1 GiB, 1365 MiB with its chain) does not fit and is refused before decoding.
   const fs::path dir = caseDir();
   writeFile(dir / "small.png", makePng(rgba4x2()));
   PngSpec huge = rgba4x2();
@@ -525,8 +529,9 @@ TEST(HostileScene, TextureMemoryIsBoundedPerScene) {
   const std::string message = errorOf([&] { loadSceneFile(scene); });
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));
   expectStartsWith(message, scene + ": materials.b.diffuse_map: " + (dir / "huge.png").string() +
-                                ": image is 16384x16384 (1024 MiB of texels), more than the 1073741792 bytes (1024.0 MiB) left "
-                                "of the scene's texture memory limit of 1024 MiB");
+                                ": image is 16384x16384 (1431655765 bytes (1365.3 MiB) of texels with its mip chain), "
+                                "more than the 1073741780 bytes (1024.0 MiB) left of the scene's texture memory limit of "
+                                "1024 MiB");
   // The same map twice is one texture: it counts once.
   writeText(dir / "twice.json", R"({"materials": {"a": {"diffuse_map": "small.png", "normal_map": "small.png"}}, "nodes": []})");
   const Scene twice = loadSceneFile((dir / "twice.json").string());
