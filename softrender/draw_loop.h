@@ -72,7 +72,12 @@ void drawClippedTriangle(const LoopItemT<T>& s, const ClipVertexT<T>& v0, const 
     for (int px = span.xBegin; px < span.xEnd; ++px) {
       const PixelWeightsT<T> weights = pixelWeights(interpolation, px, py);
       if (!(weights.depth < target.storedDepth(px, py))) continue;  // GL_LESS, before shading
-      const FragmentT<T> fragment = interpolateFragment(v0, v1, v2, weights, s.tangentLighting, tangentLights);
+      FragmentT<T> fragment = interpolateFragment(v0, v1, v2, weights, s.tangentLighting, tangentLights);
+      if (usesMipmaps(s.shade.filter)) {
+        // The pixel's 2x2 quad (even column and row): its uv differences give the LOD.
+        setQuadUvDifferencesLanes<T>(interpolation, v0, v1, v2, static_cast<double>(px & ~1), static_cast<double>(py & ~1),
+                                     fragment);
+      }
       target.write(px, py, shadeFragment<Features>(fragment, s.shade, nullptr), weights.depth, triangleId);
       ++stats.pixelsShaded;
     }

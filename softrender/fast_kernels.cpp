@@ -41,29 +41,42 @@ namespace HWY_NAMESPACE {
 constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(float);
 
 // ---- a TiledTexture as texture_sample-inl.h reads it ----
-HWY_INLINE int texWidth(const TiledTexture& t) { return t.width; }
-HWY_INLINE int texHeight(const TiledTexture& t) { return t.height; }
+HWY_INLINE int texLevelCount(const TiledTexture& t) { return static_cast<int>(t.levels.size()); }
+HWY_INLINE int texLevelWidth(const TiledTexture& t, int level) { return t.levels[static_cast<std::size_t>(level)].width; }
+HWY_INLINE int texLevelHeight(const TiledTexture& t, int level) { return t.levels[static_cast<std::size_t>(level)].height; }
+HWY_INLINE TextureWrap texWrap(const TiledTexture& t) { return t.wrap; }
+HWY_INLINE bool texSrgb(const TiledTexture& t) { return t.srgb; }
 
-// texelAt per lane: byte * (1 / 255) from the tiled index
+// fetchTexelBytes per lane from the tiled index
 // ((y / 4) blocksPerRow + x / 4) 16 + (y % 4) 4 + x % 4.
 template <typename L>
-HWY_INLINE Vec4L<LaneF> fetchTexel(const TiledTexture& t, LaneI x, LaneI y) {
+HWY_INLINE Vec4L<LaneF> fetchTexelBytes(const TiledTexture& t, int levelIndex, LaneI x, LaneI y) {
   static_assert(std::is_same_v<L, LaneF>);
+  const TiledLevel& level = t.levels[static_cast<std::size_t>(levelIndex)];
   const DI di;
   const DU du;
   const auto three = hn::Set(di, kTexelBlockSide - 1);
-  const auto row = hn::Add(hn::Mul(hn::ShiftRight<2>(y.v), hn::Set(di, t.blocksPerRow * kTexelBlockSide * kTexelBlockSide)),
+  const auto row = hn::Add(hn::Mul(hn::ShiftRight<2>(y.v), hn::Set(di, level.blocksPerRow * kTexelBlockSide * kTexelBlockSide)),
                            hn::ShiftLeft<2>(hn::And(y.v, three)));
   const auto column = hn::Add(hn::ShiftLeft<4>(hn::ShiftRight<2>(x.v)), hn::And(x.v, three));
-  const auto words = hn::BitCast(du, hn::GatherIndex(di, reinterpret_cast<const std::int32_t*>(t.blocks.data()),
+  const auto words = hn::BitCast(du, hn::GatherIndex(di, reinterpret_cast<const std::int32_t*>(level.blocks.data()),
                                                      hn::Add(row, column)));
-  const LaneF scale(1.0f / 255.0f);  // texelAt's T(1) / T(255)
   const auto channel = [&](auto shift) HWY_ATTR {
     const auto bytes = hn::And(hn::ShiftRight<decltype(shift)::value>(words), hn::Set(du, 0xFFu));
-    return LaneF(hn::ConvertTo(DF(), hn::BitCast(di, bytes))) * scale;
+    return LaneF(hn::ConvertTo(DF(), hn::BitCast(di, bytes)));
   };
   return Vec4L<LaneF>(channel(std::integral_constant<int, 0>()), channel(std::integral_constant<int, 8>()),
                       channel(std::integral_constant<int, 16>()), channel(std::integral_constant<int, 24>()));
+}
+
+// The sRGB decode of byte values, from texture_sample.h's table (doubles rounded to float).
+HWY_INLINE LaneF linearFromSrgbByte(LaneF byte) {
+  static const std::array<float, 256> table = [] {
+    std::array<float, 256> t{};
+    for (std::size_t c = 0; c < t.size(); ++c) t[c] = static_cast<float>(srgbDecodeTable()[c]);
+    return t;
+  }();
+  return {hn::GatherIndex(DF(), table.data(), hn::ConvertTo(DI(), byte.v))};
 }
 
 }  // namespace HWY_NAMESPACE
@@ -265,8 +278,15 @@ void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps,
 
   const PixelWeightsL<LaneF> weights =
       pixelWeightsLanes<LaneF>(planes, pixelColumns(s.x), LaneW(static_cast<double>(s.py)));
-  const FragmentL<LaneF> fragment =
+  FragmentL<LaneF> fragment =
       interpolateFragmentLanes<LaneF>(vertices[0], vertices[1], vertices[2], weights, tangent, tangent ? lightCount : 0);
+  if (usesMipmaps(item.shade.filter)) {
+    // Each lane's 2x2 quad: the even column and row at or below it.
+    const LaneW columns = pixelColumns(s.x);
+    const LaneW quadColumns = floorOf(columns * LaneW(0.5)) * LaneW(2.0);
+    const double quadRow = static_cast<double>(s.py - (s.py & 1));
+    setQuadUvDifferencesLanes<LaneF>(planes, vertices[0], vertices[1], vertices[2], quadColumns, LaneW(quadRow), fragment);
+  }
   const Vec4L<LaneF> colour =
       shadeFragmentLanes<Features, LaneF>(fragment, item.shade, maps, static_cast<std::nullptr_t*>(nullptr));
 
@@ -453,18 +473,26 @@ FastKernels fastKernelsFor(CpuIsa isa) {
 
 TiledTexture makeTiledTexture(const Texture& texture) {
   TiledTexture out;
-  out.width = texture.width;
-  out.height = texture.height;
-  out.blocksPerRow = (texture.width + kTexelBlockSide - 1) / kTexelBlockSide;
-  const int blockRows = (texture.height + kTexelBlockSide - 1) / kTexelBlockSide;
-  out.blocks.resize(static_cast<std::size_t>(out.blocksPerRow) * static_cast<std::size_t>(blockRows));
-  for (int y = 0; y < texture.height; ++y) {
-    for (int x = 0; x < texture.width; ++x) {
-      TexelBlock& block = out.blocks[static_cast<std::size_t>(y / kTexelBlockSide) * static_cast<std::size_t>(out.blocksPerRow) +
-                                     static_cast<std::size_t>(x / kTexelBlockSide)];
-      std::memcpy(&block.texels[static_cast<std::size_t>((y % kTexelBlockSide) * kTexelBlockSide + x % kTexelBlockSide)],
-                  texture.texel(x, y), sizeof(std::uint32_t));
+  out.wrap = texture.options.wrap;
+  out.srgb = texture.options.srgb;
+  for (int l = 0; l < texture.levelCount(); ++l) {
+    TiledLevel level;
+    level.width = texture.levelWidth(l);
+    level.height = texture.levelHeight(l);
+    level.blocksPerRow = (level.width + kTexelBlockSide - 1) / kTexelBlockSide;
+    const int blockRows = (level.height + kTexelBlockSide - 1) / kTexelBlockSide;
+    level.blocks.resize(static_cast<std::size_t>(level.blocksPerRow) * static_cast<std::size_t>(blockRows));
+    const std::vector<std::uint8_t>& texels = texture.levelTexels(l);
+    for (int y = 0; y < level.height; ++y) {
+      for (int x = 0; x < level.width; ++x) {
+        TexelBlock& block = level.blocks[static_cast<std::size_t>(y / kTexelBlockSide) * static_cast<std::size_t>(level.blocksPerRow) +
+                                         static_cast<std::size_t>(x / kTexelBlockSide)];
+        std::memcpy(&block.texels[static_cast<std::size_t>((y % kTexelBlockSide) * kTexelBlockSide + x % kTexelBlockSide)],
+                    &texels[(static_cast<std::size_t>(y) * static_cast<std::size_t>(level.width) + static_cast<std::size_t>(x)) * 4],
+                    sizeof(std::uint32_t));
+      }
     }
+    out.levels.push_back(std::move(level));
   }
   return out;
 }

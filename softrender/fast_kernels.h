@@ -63,10 +63,15 @@ inline constexpr int kTexelBlockSide = 4;
 struct alignas(64) TexelBlock {
   std::array<std::uint32_t, kTexelBlockSide * kTexelBlockSide> texels{};
 };
-struct TiledTexture {
-  int width = 0, height = 0;  // texels, as the source texture
+struct TiledLevel {
+  int width = 0, height = 0;  // texels, as the source level
   int blocksPerRow = 0;
   std::vector<TexelBlock> blocks;
+};
+struct TiledTexture {
+  std::vector<TiledLevel> levels;  // every level of the source texture, level 0 first
+  TextureWrap wrap = TextureWrap::Repeat;
+  bool srgb = false;
 };
 TiledTexture makeTiledTexture(const Texture& texture);
 

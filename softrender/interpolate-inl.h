@@ -50,6 +50,7 @@ template <typename L>
 struct FragmentL {
   Vec3L<L> posWorld, nWorld, tWorld, bWorld;
   Vec2L<L> uv;
+  Vec2L<L> uvDx, uvDy;
   std::array<Vec3L<L>, kMaxLights> lightDirTangent;
   Vec3L<L> eyeDirTangent;
   L depth;
@@ -115,7 +116,33 @@ TWR_LANE_INLINE FragmentL<L> interpolateFragmentLanes(const VertexL<L>& v0, cons
   }
   f.eyeDirTangent = tangentLighting ? v0.eyeDirTangent * p0 + v1.eyeDirTangent * p1 + v2.eyeDirTangent * p2 : zero3;
   f.depth = weights.depth;
+  f.uvDx = Vec2L<L>(L(S(0)));
+  f.uvDy = Vec2L<L>(L(S(0)));
   return f;
+}
+
+// The uv the triangle gives pixel (px, py), covered or not (a helper pixel of a quad).
+template <typename L>
+TWR_LANE_INLINE Vec2L<L> uvAtPixelLanes(const InterpolationL<L>& s, const VertexL<L>& v0, const VertexL<L>& v1,
+                                        const VertexL<L>& v2, const WideOf<L>& px, const WideOf<L>& py) {
+  const PixelWeightsL<L> w = pixelWeightsLanes<L>(s, px, py);
+  return v0.uv * w.perspective[0] + v1.uv * w.perspective[1] + v2.uv * w.perspective[2];
+}
+
+// The quad differences of uv for pixel (px, py): its 2x2 quad starts at the even column and
+// the even row (GL window rows, from the bottom); du/dx = uv(x0 + 1, y0) - uv(x0, y0),
+// du/dy = uv(x0, y0 + 1) - uv(x0, y0), the same for all four pixels (llvmpipe's per-quad LOD).
+// qx, qy: the quad's first column and row.
+template <typename L>
+TWR_LANE_INLINE void setQuadUvDifferencesLanes(const InterpolationL<L>& s, const VertexL<L>& v0, const VertexL<L>& v1,
+                                               const VertexL<L>& v2, const WideOf<L>& qx, const WideOf<L>& qy,
+                                               FragmentL<L>& f) {
+  using W = WideOf<L>;
+  const Vec2L<L> topLeft = uvAtPixelLanes<L>(s, v0, v1, v2, qx, qy);
+  const Vec2L<L> right = uvAtPixelLanes<L>(s, v0, v1, v2, qx + W(1.0), qy);
+  const Vec2L<L> above = uvAtPixelLanes<L>(s, v0, v1, v2, qx, qy + W(1.0));
+  f.uvDx = right - topLeft;
+  f.uvDy = above - topLeft;
 }
 
 TWR_LANES_END

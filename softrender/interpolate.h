@@ -52,6 +52,9 @@ struct FragmentT {
   Vec3T<T> tWorld{T(0)};
   Vec3T<T> bWorld{T(0)};
   Vec2T<T> uv{T(0)};
+  // The 2x2 quad's uv differences, top-left pixel to its right and upper neighbours (helper
+  // pixels included, as a GPU takes them): set for mipmapped filters only, else 0.
+  Vec2T<T> uvDx{T(0)}, uvDy{T(0)};
   std::array<Vec3T<T>, kMaxLights> lightDirTangent{};
   Vec3T<T> eyeDirTangent{T(0)};
   T depth = T(0);  // window depth

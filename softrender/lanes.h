@@ -109,6 +109,31 @@ inline bool isNaN(S a) {
   return a != a;
 }
 inline bool anyOf(bool mask) { return mask; }
+template <ScalarLane S>
+inline S absOf(S a) {
+  return std::fabs(a);
+}
+// The smallest and largest lane: the value itself for one lane.
+template <ScalarLane S>
+inline S lowestLane(S a) {
+  return a;
+}
+template <ScalarLane S>
+inline S highestLane(S a) {
+  return a;
+}
+// IEEE single fields of a float value x = m 2^e (normal): m in [1, 2) and e, exact. For a
+// double lane the value is taken as the float it holds (the reference computes LODs as GL).
+template <ScalarLane S>
+inline S floatMantissaOf(S x) {
+  const std::uint32_t bits = std::bit_cast<std::uint32_t>(static_cast<float>(x));
+  return static_cast<S>(std::bit_cast<float>((bits & 0x007FFFFFu) | 0x3F800000u));
+}
+template <ScalarLane S>
+inline S floatExponentOf(S x) {
+  const std::uint32_t bits = std::bit_cast<std::uint32_t>(static_cast<float>(x));
+  return static_cast<S>(static_cast<int>((bits >> 23) & 0xFFu) - 127);
+}
 
 template <ScalarLane S>
 inline double toWide(S a) {
@@ -168,3 +193,5 @@ inline double exp2Integer(double k) {
 // easy to step through); per target forced inline, because a vector struct passed to a call
 // goes through memory (lanes_target_begin.h).
 #define TWR_LANE_INLINE inline
+// ... and a large one many kernels call (softrender/lanes_target_begin.h).
+#define TWR_LANE_OUTLINE inline

@@ -77,6 +77,25 @@ HWY_INLINE LaneF floorOf(LaneF a) { return {hn::Floor(a.v)}; }
 HWY_INLINE LaneF truncOf(LaneF a) { return {hn::Trunc(a.v)}; }
 HWY_INLINE LaneMask isFinite(LaneF a) { return {hn::IsFinite(a.v)}; }
 HWY_INLINE LaneMask isNaN(LaneF a) { return {hn::IsNaN(a.v)}; }
+HWY_INLINE LaneMask operator==(LaneF a, LaneF b) { return {hn::Eq(a.v, b.v)}; }
+HWY_INLINE LaneMask operator<=(LaneF a, LaneF b) { return {hn::Le(a.v, b.v)}; }
+// Round to nearest, halves to even (Highway's Round is round-half-even, as rintf).
+HWY_INLINE LaneF roundEvenOf(LaneF a) { return {hn::Round(a.v)}; }
+HWY_INLINE LaneF absOf(LaneF a) { return {hn::Abs(a.v)}; }
+// The smallest and largest lane (for integer-valued lanes such as a mip level).
+HWY_INLINE float lowestLane(LaneF a) { return hn::GetLane(hn::MinOfLanes(DF(), a.v)); }
+HWY_INLINE float highestLane(LaneF a) { return hn::GetLane(hn::MaxOfLanes(DF(), a.v)); }
+// Float bits: for x = m 2^e (normal), m in [1, 2) and e, both as floats (exact).
+HWY_INLINE LaneF floatMantissaOf(LaneF x) {
+  const DU du;
+  const auto bits = hn::BitCast(du, x.v);
+  return {hn::BitCast(DF(), hn::Or(hn::And(bits, hn::Set(du, 0x007FFFFFu)), hn::Set(du, 0x3F800000u)))};
+}
+HWY_INLINE LaneF floatExponentOf(LaneF x) {
+  const DU du;
+  const auto biased = hn::And(hn::ShiftRight<23>(hn::BitCast(du, x.v)), hn::Set(du, 0xFFu));
+  return {hn::Sub(hn::ConvertTo(DF(), hn::BitCast(DI(), biased)), hn::Set(DF(), 127.0f))};
+}
 
 struct LaneI {
   hn::Vec<DI> v;
@@ -249,6 +268,10 @@ struct Vec4L {
 template <typename L>
 HWY_INLINE Vec2L<L> operator+(const Vec2L<L>& a, const Vec2L<L>& b) { return {a.x + b.x, a.y + b.y}; }
 template <typename L>
+HWY_INLINE Vec2L<L> operator-(const Vec2L<L>& a, const Vec2L<L>& b) { return {a.x - b.x, a.y - b.y}; }
+template <typename L>
+HWY_INLINE Vec2L<L> operator*(const Vec2L<L>& a, const Vec2L<L>& b) { return {a.x * b.x, a.y * b.y}; }
+template <typename L>
 HWY_INLINE Vec2L<L> operator*(const Vec2L<L>& a, L s) { return {a.x * s, a.y * s}; }
 template <typename L>
 HWY_INLINE Vec3L<L> operator+(const Vec3L<L>& a, const Vec3L<L>& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
@@ -269,6 +292,10 @@ HWY_INLINE Vec3L<L>& operator+=(Vec3L<L>& a, const Vec3L<L>& b) { return a = a +
 template <typename L>
 HWY_INLINE Vec4L<L> operator+(const Vec4L<L>& a, const Vec4L<L>& b) {
   return {a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w};
+}
+template <typename L>
+HWY_INLINE Vec4L<L> operator-(const Vec4L<L>& a, const Vec4L<L>& b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w};
 }
 template <typename L>
 HWY_INLINE Vec4L<L> operator*(const Vec4L<L>& a, L s) { return {a.x * s, a.y * s, a.z * s, a.w * s}; }

@@ -30,3 +30,7 @@
 #else
 #define TWR_LANE_INLINE inline
 #endif
+// A large shared function called from many kernels (sampling one mip level): one out-of-line
+// copy per target, or the kernels' code (and the compile time) grows with every call site.
+#undef TWR_LANE_OUTLINE
+#define TWR_LANE_OUTLINE HWY_NOINLINE

@@ -7,3 +7,5 @@
 #define TWR_LANES_END }
 #undef TWR_LANE_INLINE
 #define TWR_LANE_INLINE inline
+#undef TWR_LANE_OUTLINE
+#define TWR_LANE_OUTLINE inline

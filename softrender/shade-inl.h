@@ -50,6 +50,28 @@ TWR_LANE_INLINE L attenuationLanes(const Vec3T<ScalarOf<L>>& a, L d) {
   return L(S(1)) / maxOf(denominator, L(static_cast<S>(kMinAttenuationDenominator)));
 }
 
+// Which map a uv transform belongs to (ShadeUniformsT::uvTransform).
+inline constexpr std::size_t kDiffuseSlot = 0, kNormalSlot = 1, kSpecularSlot = 2;
+
+// One material map at the fragment's uv: the map's own uv transform first (phong.frag's
+// <MAP>_UV_TRANSFORM, uv * scale + offset), then the LOD of the fragment's quad when the
+// filter uses mipmaps (the differences scale with the transform).
+template <typename L, typename View>
+TWR_LANE_INLINE Vec4L<L> sampleMapLanes(const View& map, const ShadeUniformsT<ScalarOf<L>>& u, std::size_t slot,
+                                        const FragmentL<L>& f) {
+  using S = ScalarOf<L>;
+  Vec2L<L> uv = f.uv, dx = f.uvDx, dy = f.uvDy;
+  if (u.uvTransform[slot]) {
+    const Vec2L<L> scale(L(u.uvScale[slot].x), L(u.uvScale[slot].y));
+    const Vec2L<L> offset(L(u.uvOffset[slot].x), L(u.uvOffset[slot].y));
+    uv = uv * scale + offset;
+    dx = dx * scale;
+    dy = dy * scale;
+  }
+  const L lod = usesMipmaps(u.filter) ? quadLodLanes<L>(dx, dy, texLevelWidth(map, 0), texLevelHeight(map, 0)) : L(S(0));
+  return sampleTextureLanes<L>(map, uv, u.filter, lod);
+}
+
 // Shades one fragment per lane with the permutation `Features` (shade.h's ShaderFeatures).
 // `maps` holds the material's textures as the lane type reads them (members diffuse, normal,
 // specular: pointers to views, see texture_sample-inl.h); `terms`, when not null, receives
@@ -67,19 +89,30 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
 
   Vec3L<L> albedo(one);
   if constexpr (Features::kHasDiffuseMap) {
-    const Vec4L<L> texel = sampleTextureLanes<L>(*maps.diffuse, f.uv, u.filter);
+    const Vec4L<L> texel = sampleMapLanes<L>(*maps.diffuse, u, kDiffuseSlot, f);
     albedo = Vec3L<L>(texel.x, texel.y, texel.z);
   }
   Vec3L<L> specScale(one);
   if constexpr (Features::kHasSpecularMap) {
-    const Vec4L<L> texel = sampleTextureLanes<L>(*maps.specular, f.uv, u.filter);
+    const Vec4L<L> texel = sampleMapLanes<L>(*maps.specular, u, kSpecularSlot, f);
     specScale = Vec3L<L>(texel.x, texel.y, texel.z);
   }
   Vec3L<L> mappedTangent(zero, zero, one);
   Vec4L<L> normalTexel(zero);
   if constexpr (Features::kHasNormalMap) {
-    normalTexel = sampleTextureLanes<L>(*maps.normal, f.uv, u.filter);
-    mappedTangent = safeNormalize3<L>(two * Vec3L<L>(normalTexel.x, normalTexel.y, normalTexel.z) - one);
+    normalTexel = sampleMapLanes<L>(*maps.normal, u, kNormalSlot, f);
+    Vec3L<L> encoded(normalTexel.x, normalTexel.y, normalTexel.z);
+    if (u.normalGreenDown) encoded.y = one - encoded.y;
+    Vec3L<L> tangentNormal = two * encoded - one;
+    if (u.normalXy) {
+      tangentNormal.z = sqrtOf(maxOf(one - (tangentNormal.x * tangentNormal.x + tangentNormal.y * tangentNormal.y), zero));
+    }
+    if (u.normalStrengthOn) {
+      const L strength(u.normalStrength);
+      tangentNormal.x = tangentNormal.x * strength;
+      tangentNormal.y = tangentNormal.y * strength;
+    }
+    mappedTangent = safeNormalize3<L>(tangentNormal);
   }
 
   Vec3L<L> nl = n;

@@ -19,6 +19,20 @@ ShadeUniformsT<T> makeShadeUniforms(const Material& material, const Scene& scene
   u.normalMap = usable(material.normalMap);
   u.specularMap = usable(material.specularMap);
   u.filter = settings.textureFilter;
+  if (u.normalMap) {
+    u.normalGreenDown = u.normalMap->options.green == GreenAxis::Down;
+    u.normalXy = u.normalMap->channels == TextureChannels::RedGreen;
+    u.normalStrengthOn = material.normalStrength != 1.0f;
+    u.normalStrength = static_cast<T>(material.normalStrength);
+  }
+  const Texture* maps[3] = {u.diffuseMap, u.normalMap, u.specularMap};
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (!maps[i]) continue;
+    const TextureOptions& o = maps[i]->options;
+    u.uvTransform[i] = o.uvScale != vec2(1.0f) || o.uvOffset != vec2(0.0f);
+    u.uvScale[i] = Vec2T<T>(o.uvScale);
+    u.uvOffset[i] = Vec2T<T>(o.uvOffset);
+  }
   u.ambient = Vec3T<T>(scene.ambient);
   u.lightCount = std::min(static_cast<int>(scene.lights.size()), kMaxLights);
   for (int i = 0; i < u.lightCount; ++i) {

@@ -42,6 +42,17 @@ struct ShadeUniformsT {
   const Texture* normalMap = nullptr;
   const Texture* specularMap = nullptr;
   TextureFilter filter = TextureFilter::Bilinear;
+  // Normal-map conventions (phong.frag's NORMAL_MAP_* defines): green pointing down (flip it),
+  // two channels (BC5: z rebuilt), a strength scaling x and y (an MTL's -bm).
+  bool normalGreenDown = false;
+  bool normalXy = false;
+  bool normalStrengthOn = false;
+  T normalStrength = T(1);
+  // Each map's own uv transform (<MAP>_UV_TRANSFORM): uv * scale + offset, for diffuse,
+  // normal and specular in that order.
+  std::array<bool, 3> uvTransform{};
+  std::array<Vec2T<T>, 3> uvScale{Vec2T<T>(T(1)), Vec2T<T>(T(1)), Vec2T<T>(T(1))};
+  std::array<Vec2T<T>, 3> uvOffset{};
   Vec3T<T> ambient{T(0)};  // Ia
   std::array<LightUniformT<T>, kMaxLights> lights{};
   int lightCount = 0;  // in [0, kMaxLights]

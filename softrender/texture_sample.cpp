@@ -14,8 +14,16 @@ bool hasTexels(const Texture& texture) { return texture.width > 0 && texture.hei
 
 template <typename T>
 int nearestTexelIndex(T coord, int size) {
-  // The product is rounded to T (float as GL computes it), then floored and wrapped exactly.
-  return wrappedFloorIndex(static_cast<double>(coord * static_cast<T>(size)), size);
+  return (nearestTexelLanes<T>)((sanitizedCoord<T>)(coord), size, TextureWrap::Repeat);
+}
+
+const std::array<double, 256>& srgbDecodeTable() {
+  static const std::array<double, 256> table = [] {
+    std::array<double, 256> t{};
+    for (int c = 0; c < 256; ++c) t[static_cast<std::size_t>(c)] = linearFromSrgb(c / 255.0);
+    return t;
+  }();
+  return table;
 }
 
 template <typename T>
@@ -33,19 +41,19 @@ SampleFootprintT<T> sampleFootprint(const Texture& texture, Vec2T<T> uv, Texture
 template <typename T>
 Vec4T<T> sampleNearest(const Texture& texture, Vec2T<T> uv) {
   if (!hasTexels(texture)) return Vec4T<T>(T(0));
-  return sampleTextureLanes<T>(texture, uv, TextureFilter::Nearest);
+  return sampleTextureLanes<T>(texture, uv, TextureFilter::Nearest, T(0));
 }
 
 template <typename T>
 Vec4T<T> sampleBilinear(const Texture& texture, Vec2T<T> uv) {
   if (!hasTexels(texture)) return Vec4T<T>(T(0));
-  return sampleTextureLanes<T>(texture, uv, TextureFilter::Bilinear);
+  return sampleTextureLanes<T>(texture, uv, TextureFilter::Bilinear, T(0));
 }
 
 template <typename T>
-Vec4T<T> sampleTexture(const Texture& texture, Vec2T<T> uv, TextureFilter filter) {
+Vec4T<T> sampleTexture(const Texture& texture, Vec2T<T> uv, TextureFilter filter, T lod) {
   if (!hasTexels(texture)) return Vec4T<T>(T(0));
-  return sampleTextureLanes<T>(texture, uv, filter);
+  return sampleTextureLanes<T>(texture, uv, filter, lod);
 }
 
 // The two scalar pipelines: float (matches GL) and double (the reference).
@@ -54,7 +62,7 @@ Vec4T<T> sampleTexture(const Texture& texture, Vec2T<T> uv, TextureFilter filter
   template Vec4T<T> texelAt<T>(const Texture&, int, int);                                  \
   template Vec4T<T> sampleNearest<T>(const Texture&, Vec2T<T>);                            \
   template Vec4T<T> sampleBilinear<T>(const Texture&, Vec2T<T>);                           \
-  template Vec4T<T> sampleTexture<T>(const Texture&, Vec2T<T>, TextureFilter);             \
+  template Vec4T<T> sampleTexture<T>(const Texture&, Vec2T<T>, TextureFilter, T);          \
   template SampleFootprintT<T> sampleFootprint<T>(const Texture&, Vec2T<T>, TextureFilter);
 TWR_INSTANTIATE_SAMPLING(float)
 TWR_INSTANTIATE_SAMPLING(double)

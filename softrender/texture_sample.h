@@ -1,9 +1,13 @@
-// Texture sampling exactly as GL 3.3 defines it for GL_REPEAT without mipmaps
-// (spec section 3.8.8), texel centres at +0.5, texels normalised as c / 255:
-//   nearest:  i = floor(u * w), j = floor(v * h), both wrapped into [0, w) and [0, h)
-//   bilinear: u' = u * w - 0.5, i0 = floor(u'), alpha = frac(u'), i1 = i0 + 1 (same for v),
-//             wrapped; result = (1-alpha)(1-beta) T(i0,j0) + alpha (1-beta) T(i1,j0)
-//                             + (1-alpha) beta T(i0,j1) + alpha beta T(i1,j1)
+// Texture sampling as llvmpipe (Mesa 22.3) does it in twinraster's precise mode (its float
+// sampler, GALLIVM_PERF=no_aos_sampling,no_quad_lod; docs/compare.md), measured texel for
+// texel (docs/textures.md): texel centres at +0.5, texels normalised as c / 255, and
+//   nearest   repeat: i = trunc(min(u - floor(u), 1 - 2^-24) w); clamp_to_edge:
+//             clamp(trunc(u w), 0, w - 1); mirrored_repeat: folded into [0, 1] first
+//   bilinear  u' = u w - 0.5, i0 = floor(u'), alpha = u' - i0, i1 = i0 + 1, wrapped (repeat on
+//             a non-power-of-two size takes the fraction of u first); a lerp along u on both
+//             rows, then along v
+//   mipmaps   one LOD per 2x2 quad from its top-left pixel's uv differences, lod =
+//             fastLog2(rho^2) / 2; levels and their blend as texture_sample-inl.h says.
 // Row 0 of a texture is v = 0 (rows are stored bottom row first).
 //
 // The sampling itself is written once over the lane type in texture_sample-inl.h; this header
@@ -17,6 +21,7 @@
 #include "softrender/lanes.h"
 #include "softrender/precision.h"
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -33,19 +38,31 @@ inline std::int32_t wrappedFloorIndex(double s, int size) {
 }
 
 // A Texture as texture_sample-inl.h reads it.
-inline int texWidth(const Texture& t) { return t.width; }
-inline int texHeight(const Texture& t) { return t.height; }
+inline int texLevelCount(const Texture& t) { return t.levelCount(); }
+inline int texLevelWidth(const Texture& t, int level) { return t.levelWidth(level); }
+inline int texLevelHeight(const Texture& t, int level) { return t.levelHeight(level); }
+inline TextureWrap texWrap(const Texture& t) { return t.options.wrap; }
+inline bool texSrgb(const Texture& t) { return t.options.srgb; }
 template <ScalarLane S>
 inline std::int32_t wrapTexelIndex(int size, S integral) {
   return wrappedFloorIndex(static_cast<double>(integral), size);
 }
 inline std::int32_t nextTexelIndex(std::int32_t i, int size) { return i + 1 == size ? 0 : i + 1; }
-template <typename T = float>
-Vec4T<T> texelAt(const Texture& texture, int x, int y);  // RGBA in [0, 1]
 template <typename L>
-inline Vec4T<L> fetchTexel(const Texture& texture, std::int32_t x, std::int32_t y) {
-  return texelAt<L>(texture, x, y);
+inline Vec4T<L> fetchTexelBytes(const Texture& texture, int level, std::int32_t x, std::int32_t y) {
+  const std::uint8_t* t =
+      &texture.levelTexels(level)[(static_cast<std::size_t>(y) * static_cast<std::size_t>(texture.levelWidth(level)) +
+                                   static_cast<std::size_t>(x)) * 4];
+  return Vec4T<L>(t[0], t[1], t[2], t[3]);
 }
+// sRGB byte value -> linear, GL's formula in double rounded to the lane type.
+const std::array<double, 256>& srgbDecodeTable();
+template <ScalarLane S>
+inline S linearFromSrgbByte(S byte) {
+  return static_cast<S>(srgbDecodeTable()[static_cast<std::size_t>(byte)]);
+}
+template <typename T = float>
+Vec4T<T> texelAt(const Texture& texture, int x, int y);  // RGBA in [0, 1], level 0
 
 }  // namespace twr
 
@@ -62,8 +79,9 @@ template <typename T = float>
 Vec4T<T> sampleNearest(const Texture& texture, Vec2T<T> uv);
 template <typename T = float>
 Vec4T<T> sampleBilinear(const Texture& texture, Vec2T<T> uv);
+// `lod` as quadLodLanes gives it (ignored by filters without mipmaps).
 template <typename T = float>
-Vec4T<T> sampleTexture(const Texture& texture, Vec2T<T> uv, TextureFilter filter);
+Vec4T<T> sampleTexture(const Texture& texture, Vec2T<T> uv, TextureFilter filter, T lod = T(0));
 
 // Which texel(s) a sample read and with what weights, for the pixel trace.
 template <typename T>

@@ -37,20 +37,26 @@ HWY_BEFORE_NAMESPACE();
 namespace twr {
 namespace HWY_NAMESPACE {
 constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(float);
-// A plain Texture as the vector lanes read it in this test, texel by texel (texWidth and
-// texHeight are texture_sample.h's own, the indices the fast path's texel_lanes-inl.h).
+// A plain Texture as the vector lanes read it in this test, texel by texel (the level sizes,
+// wrap and sRGB are texture_sample.h's own, the indices the fast path's texel_lanes-inl.h).
 template <typename L>
-HWY_INLINE Vec4L<LaneF> fetchTexel(const Texture& t, LaneI x, LaneI y) {
+HWY_INLINE Vec4L<LaneF> fetchTexelBytes(const Texture& t, int level, LaneI x, LaneI y) {
   HWY_ALIGN std::int32_t xs[kMaxLanes], ys[kMaxLanes];
   HWY_ALIGN float channels[4][kMaxLanes];
   hn::Store(x.v, DI(), xs);
   hn::Store(y.v, DI(), ys);
   for (std::size_t l = 0; l < laneCount(); ++l) {
-    const vec4 texel = texelAt<float>(t, xs[l], ys[l]);
+    const vec4 texel = fetchTexelBytes<float>(t, level, xs[l], ys[l]);
     for (int c = 0; c < 4; ++c) channels[c][l] = texel[c];
   }
   return Vec4L<LaneF>(LaneF(hn::Load(DF(), channels[0])), LaneF(hn::Load(DF(), channels[1])),
                       LaneF(hn::Load(DF(), channels[2])), LaneF(hn::Load(DF(), channels[3])));
+}
+HWY_INLINE LaneF linearFromSrgbByte(LaneF byte) {
+  HWY_ALIGN float values[kMaxLanes];
+  hn::Store(byte.v, DF(), values);
+  for (std::size_t l = 0; l < laneCount(); ++l) values[l] = ::twr::linearFromSrgbByte(values[l]);
+  return {hn::Load(DF(), values)};
 }
 }  // namespace HWY_NAMESPACE
 }  // namespace twr
@@ -124,28 +130,41 @@ void SamplingIsTheSharedSource() {
   texture.height = 3;
   texture.rgba.resize(5 * 3 * 4);
   for (std::size_t i = 0; i < texture.rgba.size(); ++i) texture.rgba[i] = static_cast<std::uint8_t>(i * 37 % 256);
+  buildMipChain(texture);
   std::mt19937 rng(9);
-  std::uniform_real_distribution<float> uv(-3.0f, 3.0f);
-  std::vector<float> us(4000), vs(4000);
-  for (std::size_t i = 0; i < us.size(); ++i) us[i] = uv(rng), vs[i] = uv(rng);
-  for (const TextureFilter filter : {TextureFilter::Nearest, TextureFilter::Bilinear}) {
-    for (int channel = 0; channel < 4; ++channel) {
-      std::size_t at = 0;  // us[i] pairs with vs[i]: both walk the same indices
-      const auto lanes = [&](LaneF u) HWY_ATTR {
-        HWY_ALIGN float v[kMaxLanes];
-        for (std::size_t l = 0; l < laneCount(); ++l) v[l] = at + l < vs.size() ? vs[at + l] : 1.0f;
-        at += laneCount();
-        const Vec4L<LaneF> texel =
-            sampleTextureLanes<LaneF>(texture, Vec2L<LaneF>(u, LaneF(hn::Load(DF(), v))), filter);
-        return channel == 0 ? texel.x : channel == 1 ? texel.y : channel == 2 ? texel.z : texel.w;
-      };
-      std::size_t scalarAt = 0;
-      const auto scalar = [&](float u) {
-        const vec4 texel = sampleTexture<float>(texture, vec2(u, scalarAt < vs.size() ? vs[scalarAt] : 1.0f), filter);
-        ++scalarAt;
-        return texel[channel];
-      };
-      EXPECT_EQ(countDifferences(us, lanes, scalar), 0u) << toString(filter) << " channel " << channel;
+  std::uniform_real_distribution<float> uv(-3.0f, 3.0f), lods(-1.5f, 3.5f);
+  std::vector<float> us(4000), vs(4000), lodValues(4000);
+  for (std::size_t i = 0; i < us.size(); ++i) us[i] = uv(rng), vs[i] = uv(rng), lodValues[i] = lods(rng);
+  for (const TextureWrap wrap : {TextureWrap::Repeat, TextureWrap::MirroredRepeat, TextureWrap::ClampToEdge}) {
+    for (const bool srgb : {false, true}) {
+      texture.options.wrap = wrap;
+      texture.options.srgb = srgb;
+      for (const TextureFilter filter : kAllTextureFilters) {
+        for (int channel = 0; channel < 4; ++channel) {
+          std::size_t at = 0;  // us[i] pairs with vs[i] and lodValues[i]: all walk the same indices
+          const auto lanes = [&](LaneF u) HWY_ATTR {
+            HWY_ALIGN float v[kMaxLanes], lod[kMaxLanes];
+            for (std::size_t l = 0; l < laneCount(); ++l) {
+              v[l] = at + l < vs.size() ? vs[at + l] : 1.0f;
+              lod[l] = at + l < lodValues.size() ? lodValues[at + l] : 0.0f;
+            }
+            at += laneCount();
+            const Vec4L<LaneF> texel = sampleTextureLanes<LaneF>(texture, Vec2L<LaneF>(u, LaneF(hn::Load(DF(), v))),
+                                                                 filter, LaneF(hn::Load(DF(), lod)));
+            return channel == 0 ? texel.x : channel == 1 ? texel.y : channel == 2 ? texel.z : texel.w;
+          };
+          std::size_t scalarAt = 0;
+          const auto scalar = [&](float u) {
+            const bool inRange = scalarAt < vs.size();
+            const vec4 texel = sampleTexture<float>(texture, vec2(u, inRange ? vs[scalarAt] : 1.0f), filter,
+                                                    inRange ? lodValues[scalarAt] : 0.0f);
+            ++scalarAt;
+            return texel[channel];
+          };
+          EXPECT_EQ(countDifferences(us, lanes, scalar), 0u)
+              << toString(filter) << " " << toString(wrap) << (srgb ? " srgb" : "") << " channel " << channel;
+        }
+      }
     }
   }
 }
