@@ -20,6 +20,11 @@ bool usableMap(const std::shared_ptr<const Texture>& map) {
   return map && map->width > 0 && map->height > 0 && !map->rgba.empty();
 }
 
+// Whether a usable map is read at a transformed uv (phong.frag's <MAP>_UV_TRANSFORM).
+bool hasUvTransform(const std::shared_ptr<const Texture>& map) {
+  return usableMap(map) && (map->options.uvScale != vec2(1.0f) || map->options.uvOffset != vec2(0.0f));
+}
+
 // GL does not check indices; one past the vertex array would read outside the buffer.
 void checkIndices(const Mesh& mesh, const std::string& nodeName) {
   const std::uint32_t vertexCount = static_cast<std::uint32_t>(mesh.vertices.size());
@@ -98,6 +103,16 @@ void setUniforms(GLuint program, const Scene& scene, const RenderSettings& setti
   glUniform1i(uniformLocation(program, "diffuseMap"), kDiffuseUnit);
   glUniform1i(uniformLocation(program, "normalMap"), kNormalUnit);
   glUniform1i(uniformLocation(program, "specularMap"), kSpecularUnit);
+  // Only the permutation that declares them has these (-1 otherwise, which GL ignores).
+  glUniform1f(uniformLocation(program, "normalStrength"), material.normalStrength);
+  const auto uvTransform = [&](const std::shared_ptr<const Texture>& map, const char* scale, const char* offset) {
+    if (!hasUvTransform(map)) return;
+    glUniform2fv(uniformLocation(program, scale), 1, &map->options.uvScale.x);
+    glUniform2fv(uniformLocation(program, offset), 1, &map->options.uvOffset.x);
+  };
+  uvTransform(material.diffuseMap, "diffuseUvScale", "diffuseUvOffset");
+  uvTransform(material.normalMap, "normalUvScale", "normalUvOffset");
+  uvTransform(material.specularMap, "specularUvScale", "specularUvOffset");
 }
 
 }  // namespace
@@ -105,8 +120,16 @@ void setUniforms(GLuint program, const Scene& scene, const RenderSettings& setti
 std::vector<std::string> phongDefines(const Material& material, const RenderSettings& settings) {
   std::vector<std::string> defines;
   if (usableMap(material.diffuseMap)) defines.push_back("HAS_DIFFUSE_MAP");
-  if (usableMap(material.normalMap)) defines.push_back("HAS_NORMAL_MAP");
+  if (usableMap(material.normalMap)) {
+    defines.push_back("HAS_NORMAL_MAP");
+    if (material.normalMap->options.green == GreenAxis::Down) defines.push_back("NORMAL_MAP_GREEN_DOWN");
+    if (material.normalMap->channels == TextureChannels::RedGreen) defines.push_back("NORMAL_MAP_XY");
+    if (material.normalStrength != 1.0f) defines.push_back("NORMAL_MAP_STRENGTH");
+  }
   if (usableMap(material.specularMap)) defines.push_back("HAS_SPECULAR_MAP");
+  if (hasUvTransform(material.diffuseMap)) defines.push_back("DIFFUSE_UV_TRANSFORM");
+  if (hasUvTransform(material.normalMap)) defines.push_back("NORMAL_UV_TRANSFORM");
+  if (hasUvTransform(material.specularMap)) defines.push_back("SPECULAR_UV_TRANSFORM");
   if (settings.lightingSpace == LightingSpace::Tangent) defines.push_back("LIGHTING_TANGENT");
   defines.push_back(viewDefine(settings.view));
   return defines;

@@ -2,6 +2,7 @@
 
 #include "scene/errors.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstring>
 #include <string>
@@ -55,36 +56,137 @@ GlMesh makeMesh() {
   return out;
 }
 
-void setFilter(TextureFilter filter) {
-  const GLint glFilter = filter == TextureFilter::Nearest ? GL_NEAREST : GL_LINEAR;
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, glFilter);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, glFilter);
+// GL's name of each filter (scene/settings.h). Magnification has no mip levels: it takes the
+// texel filter alone, GL_NEAREST for the nearest* filters, GL_LINEAR for the others.
+GLint minFilterOf(TextureFilter filter) {
+  switch (filter) {
+    case TextureFilter::Nearest: return GL_NEAREST;
+    case TextureFilter::Bilinear: return GL_LINEAR;
+    case TextureFilter::Trilinear: return GL_LINEAR_MIPMAP_LINEAR;
+    case TextureFilter::NearestMipmapNearest: return GL_NEAREST_MIPMAP_NEAREST;
+    case TextureFilter::LinearMipmapNearest: return GL_LINEAR_MIPMAP_NEAREST;
+    case TextureFilter::NearestMipmapLinear: return GL_NEAREST_MIPMAP_LINEAR;
+  }
+  return GL_LINEAR;
 }
 
-// RGBA8, rows bottom first as stored, GL_REPEAT, no mipmaps, no sRGB. Binds the new texture
-// to the active unit.
-GlTexture uploadTexture(const Texture& texture, TextureFilter filter) {
-  const std::size_t expectedBytes =
-      static_cast<std::size_t>(texture.width) * static_cast<std::size_t>(texture.height) * 4;
-  if (texture.width <= 0 || texture.height <= 0 || texture.rgba.size() != expectedBytes) {
-    throw InputError("GL: texture '" + texture.path + "' has " + std::to_string(texture.rgba.size()) +
-                     " bytes for " + std::to_string(texture.width) + " x " + std::to_string(texture.height) +
-                     " RGBA8 texels (expected width * height * 4, both sides > 0)");
+void setFilter(TextureFilter filter) {
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, minFilterOf(filter));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, texelsLinear(filter) ? GL_LINEAR : GL_NEAREST);
+}
+
+GLint wrapOf(TextureWrap wrap) {
+  switch (wrap) {
+    case TextureWrap::Repeat: return GL_REPEAT;
+    case TextureWrap::MirroredRepeat: return GL_MIRRORED_REPEAT;
+    case TextureWrap::ClampToEdge: return GL_CLAMP_TO_EDGE;
   }
+  return GL_REPEAT;
+}
+
+void setWrap(TextureWrap wrap) {
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrapOf(wrap));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrapOf(wrap));
+}
+
+// The compressed internal format of `format` (EXT_texture_compression_s3tc, EXT_texture_sRGB,
+// RGTC, all in the glad header). BC4 and BC5 hold data, never colour: the loader turns srgb
+// off for them (scene/texture.cpp), so there is no sRGB RGTC format to pick.
+GLenum compressedFormatOf(BlockFormat format, bool srgb) {
+  switch (format) {
+    case BlockFormat::Bc1: return srgb ? GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT : GL_COMPRESSED_RGBA_S3TC_DXT1_EXT;
+    case BlockFormat::Bc2: return srgb ? GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT3_EXT : GL_COMPRESSED_RGBA_S3TC_DXT3_EXT;
+    case BlockFormat::Bc3: return srgb ? GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT : GL_COMPRESSED_RGBA_S3TC_DXT5_EXT;
+    case BlockFormat::Bc4: return GL_COMPRESSED_RED_RGTC1;
+    case BlockFormat::Bc5: return GL_COMPRESSED_RG_RGTC2;
+  }
+  return GL_COMPRESSED_RGBA_S3TC_DXT1_EXT;
+}
+
+[[noreturn]] void throwBadLevel(const Texture& texture, int level, const std::string& what) {
+  throw InputError("GL: texture '" + texture.path + "' level " + std::to_string(level) + ": " + what);
+}
+
+// Every level must have the size GL expects after the one before (floor(previous / 2), at
+// least 1) and its bytes: otherwise GL would silently sample an incomplete texture as black.
+void checkLevels(const Texture& texture) {
+  for (int level = 0; level < texture.levelCount(); ++level) {
+    const int width = texture.levelWidth(level), height = texture.levelHeight(level);
+    const std::size_t bytes = texture.levelTexels(level).size();
+    const std::size_t expectedBytes = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4;
+    if (width <= 0 || height <= 0 || bytes != expectedBytes) {
+      throwBadLevel(texture, level, std::to_string(bytes) + " bytes for " + std::to_string(width) + " x " +
+                                        std::to_string(height) +
+                                        " RGBA8 texels (expected width * height * 4, both sides > 0)");
+    }
+    if (level > 0) {
+      const int expectedWidth = std::max(texture.levelWidth(level - 1) / 2, 1);
+      const int expectedHeight = std::max(texture.levelHeight(level - 1) / 2, 1);
+      if (width != expectedWidth || height != expectedHeight) {
+        throwBadLevel(texture, level, std::to_string(width) + " x " + std::to_string(height) + ", expected " +
+                                          std::to_string(expectedWidth) + " x " + std::to_string(expectedHeight) +
+                                          " (each side half the previous level's, at least 1)");
+      }
+    }
+  }
+  if (texture.blockFormat) {
+    if (texture.blockLevels.size() != static_cast<std::size_t>(texture.levelCount())) {
+      throw InputError("GL: texture '" + texture.path + "' has " + std::to_string(texture.blockLevels.size()) +
+                       " compressed levels for " + std::to_string(texture.levelCount()) +
+                       " levels (expected one per level)");
+    }
+    for (int level = 0; level < texture.levelCount(); ++level) {
+      const std::size_t expected =
+          blockLevelBytes(*texture.blockFormat, texture.levelWidth(level), texture.levelHeight(level));
+      const std::size_t bytes = texture.blockLevels[static_cast<std::size_t>(level)].size();
+      if (bytes != expected) {
+        throwBadLevel(texture, level, std::to_string(bytes) + " bytes of " +
+                                          std::string(toString(*texture.blockFormat)) + " blocks, expected " +
+                                          std::to_string(expected));
+      }
+    }
+  }
+}
+
+// Every level the texture holds, as they are: GL receives the chain both renderers sample
+// (never glGenerateMipmap, whose filter is the driver's), compressed when the texture keeps
+// its file's blocks, else RGBA8 (sRGB8_ALPHA8 with options.srgb). Rows bottom first as stored.
+// Binds the new texture to the active unit.
+GlTexture uploadTexture(const Texture& texture, TextureFilter filter) {
+  checkLevels(texture);
   GlTexture out = makeGlTexture();
   glBindTexture(GL_TEXTURE_2D, out.id());
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, texture.width, texture.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-               texture.rgba.data());
+  for (int level = 0; level < texture.levelCount(); ++level) {
+    const GLsizei width = texture.levelWidth(level), height = texture.levelHeight(level);
+    if (texture.blockFormat) {
+      const std::vector<std::uint8_t>& blocks = texture.blockLevels[static_cast<std::size_t>(level)];
+      glCompressedTexImage2D(GL_TEXTURE_2D, level, compressedFormatOf(*texture.blockFormat, texture.options.srgb),
+                             width, height, 0, static_cast<GLsizei>(blocks.size()), blocks.data());
+    } else {
+      const GLint internalFormat = texture.options.srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8;
+      glTexImage2D(GL_TEXTURE_2D, level, internalFormat, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                   texture.levelTexels(level).data());
+    }
+  }
   setFilter(filter);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  setWrap(texture.options.wrap);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+  // The chain may stop before 1 x 1 (a DDS file's own): the last level held is the last one.
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, texture.levelCount() - 1);
   return out;
 }
 
 }  // namespace
+
+bool setGlTextureAnisotropy(float anisotropy) {
+  // Core in GL 4.6; in 3.3 only through one of the two extensions (llvmpipe offers them).
+  if (!GLAD_GL_EXT_texture_filter_anisotropic && !GLAD_GL_ARB_texture_filter_anisotropic) return false;
+  GLfloat most = 1.0f;
+  glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &most);
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY, std::clamp(anisotropy, 1.0f, most));
+  return true;
+}
 
 void GlUploadCache::beginFrame() { ++frame_; }
 
@@ -107,7 +209,8 @@ const GlMesh& GlUploadCache::mesh(const Mesh& mesh) {
 GLuint GlUploadCache::texture(const std::shared_ptr<const Texture>& texture, TextureFilter filter) {
   auto found = textures_.find(texture.get());
   if (found == textures_.end()) {
-    TextureEntry entry{texture, uploadTexture(*texture, filter), filter, frame_};
+    TextureEntry entry{texture, uploadTexture(*texture, filter), filter, texture->options.wrap,
+                       texture->options.srgb, frame_};
     ++textureUploads_;
     return textures_.emplace(texture.get(), std::move(entry)).first->second.gl.id();
   }
@@ -116,6 +219,17 @@ GLuint GlUploadCache::texture(const std::shared_ptr<const Texture>& texture, Tex
   if (entry.filter != filter) {
     setFilter(filter);
     entry.filter = filter;
+  }
+  // The options are plain fields an owner may change between renders on the same object:
+  // the wrap costs a parameter, sRGB a new upload (another internal format).
+  if (entry.srgb != texture->options.srgb) {
+    entry.gl = uploadTexture(*texture, filter);
+    entry.srgb = texture->options.srgb;
+    entry.wrap = texture->options.wrap;
+    ++textureUploads_;
+  } else if (entry.wrap != texture->options.wrap) {
+    setWrap(texture->options.wrap);
+    entry.wrap = texture->options.wrap;
   }
   entry.lastFrame = frame_;
   return entry.gl.id();

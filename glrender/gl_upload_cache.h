@@ -8,6 +8,9 @@
 //            address can come back for another one, so the address alone proves nothing.
 //   texture  found by the shared_ptr's object; the cache holds a reference, so that address
 //            cannot be reused by another texture while the entry lives, and texels are const.
+//            Every level is uploaded as the Texture holds it (compressed blocks when it keeps
+//            them), never glGenerateMipmap: both renderers must sample the same chain bytes.
+//            A changed filter or wrap re-sets the parameter; a changed srgb re-uploads.
 // Entries one render does not use are dropped when it ends (endFrame), so memory follows the
 // scene. GL objects belong to the context that was current when they were made: one cache
 // per context.
@@ -39,8 +42,9 @@ class GlUploadCache {
   void beginFrame();
   // The uploaded mesh for `mesh`, uploading (or re-uploading changed bytes) when needed.
   const GlMesh& mesh(const Mesh& mesh);
-  // Binds the texture object for `texture`, with `filter` set, to the active unit and returns
-  // it; throws InputError when the texture cannot be uploaded (wrong byte count, a side of 0).
+  // Binds the texture object for `texture`, with `filter` and the texture's wrap set, to the
+  // active unit and returns it; throws InputError when the texture cannot be uploaded (wrong
+  // byte count, a side of 0, a level not half the previous one, a compressed level's size).
   GLuint texture(const std::shared_ptr<const Texture>& texture, TextureFilter filter);
   // Drops what the render since beginFrame() did not use.
   void endFrame();
@@ -59,6 +63,8 @@ class GlUploadCache {
     std::shared_ptr<const Texture> texture;  // held: keeps the address unique
     GlTexture gl;
     TextureFilter filter = TextureFilter::Bilinear;
+    TextureWrap wrap = TextureWrap::Repeat;  // as set on the GL object
+    bool srgb = false;                        // as uploaded
     std::uint64_t lastFrame = 0;
   };
 
@@ -68,5 +74,11 @@ class GlUploadCache {
   std::size_t meshUploads_ = 0;
   std::size_t textureUploads_ = 0;
 };
+
+// Sets GL_TEXTURE_MAX_ANISOTROPY of the texture bound to the active unit to `anisotropy`
+// clamped to [1, GL_MAX_TEXTURE_MAX_ANISOTROPY]; false (nothing set) when the context offers
+// neither EXT_ nor ARB_texture_filter_anisotropic. Not called yet: both renderers sample
+// isotropically until the CPU implements anisotropy (issue 15).
+bool setGlTextureAnisotropy(float anisotropy);
 
 }  // namespace twr

@@ -3,6 +3,12 @@
 // operations; main() here is that function's body.
 // Permutation defines: HAS_DIFFUSE_MAP, HAS_NORMAL_MAP, HAS_SPECULAR_MAP, LIGHTING_TANGENT
 // (else world lighting space), and exactly one VIEW_<NAME> (VIEW_SHADED ... VIEW_EYE_TANGENT).
+// Texture conventions, each set only for a material that needs it (so every other scene
+// compiles the program it always did): NORMAL_MAP_GREEN_DOWN (a Direct3D-style normal map:
+// green flipped), NORMAL_MAP_XY (a two-channel normal map, BC5: z rebuilt from x and y),
+// NORMAL_MAP_STRENGTH (x and y scaled by normalStrength), and DIFFUSE_UV_TRANSFORM,
+// NORMAL_UV_TRANSFORM, SPECULAR_UV_TRANSFORM (that map read at uv * <map>UvScale +
+// <map>UvOffset). The debug views keep the untransformed uv.
 // NO_TRIANGLE_ID: no triangle-id output, as an OpenGL user's shader has none (the lean
 // frame, glrender/gl_renderer.h; llvmpipe pays for gl_PrimitiveID even when no draw buffer
 // takes the output).
@@ -36,6 +42,21 @@ uniform uint firstTriangleId;
 uniform sampler2D diffuseMap;
 uniform sampler2D normalMap;
 uniform sampler2D specularMap;
+#ifdef NORMAL_MAP_STRENGTH
+uniform float normalStrength;  // scales the mapped normal's x and y (an MTL's -bm)
+#endif
+#ifdef DIFFUSE_UV_TRANSFORM
+uniform vec2 diffuseUvScale;
+uniform vec2 diffuseUvOffset;
+#endif
+#ifdef NORMAL_UV_TRANSFORM
+uniform vec2 normalUvScale;
+uniform vec2 normalUvOffset;
+#endif
+#ifdef SPECULAR_UV_TRANSFORM
+uniform vec2 specularUvScale;
+uniform vec2 specularUvOffset;
+#endif
 
 layout(location = 0) out vec4 fragColour;
 #ifndef NO_TRIANGLE_ID
@@ -47,18 +68,44 @@ void main() {
   vec3 t = safeNormalize(tWorld);
   vec3 b = safeNormalize(bWorld);
 
+  // Each map's own uv (the map's uv transform, an MTL's -s and -o).
+  vec2 uvDiffuse = uv;
+#ifdef DIFFUSE_UV_TRANSFORM
+  uvDiffuse = uv * diffuseUvScale + diffuseUvOffset;
+#endif
+  vec2 uvNormal = uv;
+#ifdef NORMAL_UV_TRANSFORM
+  uvNormal = uv * normalUvScale + normalUvOffset;
+#endif
+  vec2 uvSpecular = uv;
+#ifdef SPECULAR_UV_TRANSFORM
+  uvSpecular = uv * specularUvScale + specularUvOffset;
+#endif
+
   vec3 albedo = vec3(1.0);
 #ifdef HAS_DIFFUSE_MAP
-  albedo = texture(diffuseMap, uv).rgb;
+  albedo = texture(diffuseMap, uvDiffuse).rgb;
 #endif
   vec3 specScale = vec3(1.0);
 #ifdef HAS_SPECULAR_MAP
-  specScale = texture(specularMap, uv).rgb;
+  specScale = texture(specularMap, uvSpecular).rgb;
 #endif
   vec3 mappedTangent = vec3(0.0, 0.0, 1.0);
 #ifdef HAS_NORMAL_MAP
-  vec4 normalTexel = texture(normalMap, uv);
-  mappedTangent = safeNormalize(2.0 * normalTexel.rgb - 1.0);
+  vec4 normalTexel = texture(normalMap, uvNormal);
+  vec3 encoded = normalTexel.rgb;
+#ifdef NORMAL_MAP_GREEN_DOWN
+  encoded.g = 1.0 - encoded.g;  // green pointing down: flip it to +v
+#endif
+  vec3 tangentNormal = 2.0 * encoded - 1.0;
+#ifdef NORMAL_MAP_XY
+  // Two channels (BC5 samples as (r, g, 0, 1)): z from unit length, never sqrt of < 0.
+  tangentNormal.z = sqrt(max(1.0 - (tangentNormal.x * tangentNormal.x + tangentNormal.y * tangentNormal.y), 0.0));
+#endif
+#ifdef NORMAL_MAP_STRENGTH
+  tangentNormal.xy = tangentNormal.xy * normalStrength;
+#endif
+  mappedTangent = safeNormalize(tangentNormal);
 #endif
 
   vec3 nl = n;
