@@ -49,6 +49,7 @@ GlContextInfo describeCurrentContext() {
   GlContextInfo info;
   info.version = glString(GL_VERSION);
   info.renderer = glString(GL_RENDERER);
+  info.vendor = glString(GL_VENDOR);
   GLint profileMask = 0;
   glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &profileMask);
   info.compatibility = (profileMask & GL_CONTEXT_COMPATIBILITY_PROFILE_BIT) != 0;
@@ -68,6 +69,12 @@ std::string glRendererString() {
   LastContext& last = lastContext();
   const std::lock_guard lock(last.mutex);
   return last.info.renderer;
+}
+
+std::string glVendorString() {
+  LastContext& last = lastContext();
+  const std::lock_guard lock(last.mutex);
+  return last.info.vendor;
 }
 
 }  // namespace twr
