@@ -317,6 +317,13 @@ void EglContext::makeCurrent() {
   }
 }
 
+void EglContext::release() noexcept {
+  const EglApi& api = *impl_->api;
+  if (api.getCurrentContext() == impl_->context) {
+    api.makeCurrent(impl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  }
+}
+
 GlProc EglContext::procAddress(const char* name) const {
   // Core GL functions come through eglGetProcAddress too (EGL 1.5,
   // EGL_KHR_get_all_proc_addresses); both Mesa and NVIDIA offer that.

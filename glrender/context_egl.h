@@ -48,6 +48,7 @@ class EglContext final : public HeadlessGlContext {
   EglContext& operator=(const EglContext&) = delete;
 
   void makeCurrent() override;
+  void release() noexcept override;
   GlProc procAddress(const char* name) const override;
   bool compatibility() const override { return compatibility_; }
   std::string description() const override;

@@ -45,8 +45,9 @@ void loadCoreGl(const GlProcFunction& procAddress, const std::string& what) {
   }
 }
 
-GlContextInfo describeCurrentContext() {
+GlContextInfo describeCurrentContext(const std::string& context) {
   GlContextInfo info;
+  info.context = context;
   info.version = glString(GL_VERSION);
   info.renderer = glString(GL_RENDERER);
   info.vendor = glString(GL_VENDOR);
@@ -69,6 +70,12 @@ std::string glRendererString() {
   LastContext& last = lastContext();
   const std::lock_guard lock(last.mutex);
   return last.info.renderer;
+}
+
+std::string glContextString() {
+  LastContext& last = lastContext();
+  const std::lock_guard lock(last.mutex);
+  return last.info.context;
 }
 
 std::string glVendorString() {

@@ -19,11 +19,13 @@ struct GlContextInfo {
   std::string version;   // GL_VERSION
   std::string renderer;  // GL_RENDERER
   std::string vendor;    // GL_VENDOR
+  std::string context;   // which context: "OSMesa 3.3 core context", "GLFW window", ...
   bool compatibility = false;  // GL_CONTEXT_PROFILE_MASK has the compatibility bit
 };
 
 // Queries the current context (glad must be loaded) and remembers the answer for
 // glVersionString() / glRendererString() / glVendorString().
-GlContextInfo describeCurrentContext();
+// `context` says which context it is (GlContextInfo::context, glContextString()).
+GlContextInfo describeCurrentContext(const std::string& context);
 
 }  // namespace twr

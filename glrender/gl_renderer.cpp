@@ -98,7 +98,7 @@ std::unique_ptr<GlDevice> makeHeadlessDevice(std::unique_ptr<HeadlessGlContext> 
                                            [raw](const char* name) { return raw->procAddress(name); },
                                            options.shaderDir, options.frame);
   device->makeCurrent();
-  device->info = describeCurrentContext();
+  device->info = describeCurrentContext(device->headless->description());
   return device;
 }
 
@@ -165,6 +165,20 @@ class CallerStateGuard {
   std::array<GLint, 4> viewport_{};
 };
 
+// Releases a headless context at the end of a render (HeadlessGlContext::release).
+class ReleaseAfterRender {
+ public:
+  explicit ReleaseAfterRender(HeadlessGlContext* context) : context_(context) {}
+  ~ReleaseAfterRender() {
+    if (context_) context_->release();
+  }
+  ReleaseAfterRender(const ReleaseAfterRender&) = delete;
+  ReleaseAfterRender& operator=(const ReleaseAfterRender&) = delete;
+
+ private:
+  HeadlessGlContext* context_;
+};
+
 class GlRenderer final : public Renderer {
  public:
   explicit GlRenderer(const GlOptions& options) : options_(options) {}
@@ -175,6 +189,9 @@ class GlRenderer final : public Renderer {
     validateRequest(scene, settings, width, height);
     const bool immediateLines = settings.tbnLines.enabled && settings.tbnLines.mode == LineMode::Immediate;
     GlDevice& device = deviceFor(immediateLines);
+    // Declared before the state guard, so it runs after the guard's last GL call, also
+    // when the render throws.
+    const ReleaseAfterRender release(device.headless.get());
     device.makeCurrent();
     if (immediateLines && !device.immediateLines) {
       device.immediateLines = std::make_unique<ImmediateTbnLines>(device.procAddress);
@@ -226,7 +243,7 @@ class GlRenderer final : public Renderer {
         current_ = std::make_unique<GlDevice>(nullptr, [loader](const char* name) { return loader(name); },
                                               options_.shaderDir, options_.frame);
         current_->makeCurrent();
-        current_->info = describeCurrentContext();
+        current_->info = describeCurrentContext("current context");
         report(*current_, "current context");
       }
       return *current_;

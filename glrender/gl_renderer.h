@@ -73,6 +73,9 @@ std::unique_ptr<Renderer> makeGlRenderer(const GlOptions& options = {});
 std::string glVersionString();
 std::string glRendererString();
 std::string glVendorString();
+// Which context that was: "OSMesa 3.3 core context", "EGL surfaceless platform (driver swrast)
+// 3.3 core context", "EGL device 1 (/dev/dri/card1) 3.3 core context", "GLFW window", ...
+std::string glContextString();
 // "precise" or "fast": how llvmpipe samples textures in this process ("" before the first
 // headless context exists). Precise means GALLIVM_PERF held no_aos_sampling and no_quad_lod.
 // Only llvmpipe reads the variable: another driver samples as it chooses.
