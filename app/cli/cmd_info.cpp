@@ -325,26 +325,19 @@ Json glContextsJson(const std::vector<GlContextProbe>& probes) {
 }
 
 void printGlContexts(std::ostream& out, const std::vector<GlContextProbe>& probes) {
-  out << "
-gl: headless contexts (a 3.3 core context made on each):
-";
+  out << "\ngl: headless contexts (a 3.3 core context made on each):\n";
   for (const GlContextProbe& p : probes) {
     out << "  " << contextOptions(p) << ": ";
     if (!p.error.empty()) {
-      out << "unavailable: " << p.error << "
-";
+      out << "unavailable: " << p.error << "\n";
       continue;
     }
-    out << p.description << "
-    GL_VENDOR " << p.vendor << ", GL_RENDERER " << p.renderer << ", GL_VERSION "
-        << p.version << "
-    compatibility profile " << (p.compatibility ? "yes" : "no")
+    out << p.description << "\n    GL_VENDOR " << p.vendor << ", GL_RENDERER " << p.renderer << ", GL_VERSION "
+        << p.version << "\n    compatibility profile " << (p.compatibility ? "yes" : "no")
         << (isLlvmpipe(p.renderer) ? "; llvmpipe: compare --targets applies"
                                    : "; not llvmpipe: compare reports metrics without --targets verdicts")
-        << "
-";
-    if (!p.deviceDetail.empty()) out << "    device: " << p.deviceDetail << "
-";
+        << "\n";
+    if (!p.deviceDetail.empty()) out << "    device: " << p.deviceDetail << "\n";
   }
 }
 
