@@ -257,7 +257,9 @@ TEST(EglContext, ProbeListsOsMesaSurfacelessAndEveryDevice) {
     EXPECT_FALSE(p.vendor.empty()) << i;
     EXPECT_FALSE(p.renderer.empty()) << i;
     EXPECT_NE(p.version.find("Core Profile"), std::string::npos) << p.version;
-    if (i >= 2) EXPECT_EQ(p.eglDevice, static_cast<int>(i - 2));
+    if (i >= 2) {
+      EXPECT_EQ(p.eglDevice, static_cast<int>(i - 2));
+    }
   }
 }
 
