@@ -594,7 +594,7 @@ ReportData Sweeper::run() {
   }
   bases(data);
   data.machine =
-      machineDescription() + "; GL: " + glRendererString() + ", " + glVersionString() + " (" + glContextString() + ")";
+      machineDescription() + "; GL: " + glRendererString() + ", " + glVersionString() + "; " + glContextString();
   data.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   say("done");
   return data;
