@@ -44,7 +44,10 @@ struct GlDevice {
 
   GlDevice(std::unique_ptr<HeadlessGlContext> context, GlProcFunction proc, const std::string& shaderDir,
            GlFrame frame)
-      : headless(std::move(context)), procAddress(std::move(proc)), programs(ShaderLibrary(shaderDir)), targets(frame) {}
+      : headless(std::move(context)),
+        procAddress(std::move(proc)),
+        programs(ShaderLibrary(shaderDir)),
+        targets(frame) {}
   GlDevice(const GlDevice&) = delete;
   GlDevice& operator=(const GlDevice&) = delete;
   ~GlDevice() {

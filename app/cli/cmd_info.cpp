@@ -368,7 +368,9 @@ const bool registered = registerCommand(10, [](CLI::App& app) {
                 "with the --gl-context / --gl-device that picks it and its GL_VENDOR, GL_RENDERER and GL_VERSION "
                 "(or why it is unavailable)");
   cmd->callback([request] {
-    if (request->scenePath.empty() && !request->gl) throw InputError("info: expected a SCENE file (or --gl)");
+    if (request->scenePath.empty() && !request->gl) {
+      throw InputError("info: scene is required (a SCENE file, or --gl alone)");
+    }
     std::optional<Scene> scene;
     if (!request->scenePath.empty()) scene = loadSceneFile(request->scenePath);
     std::vector<GlContextProbe> probes;

@@ -65,7 +65,8 @@ const bool registered = registerCommand(20, [](CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand("render", "Render a scene with one backend into a PNG (top row first)");
   addRenderOptions(*cmd, args->request);
-  cmd->add_option("--backend,-b", args->backend, "cpu (the software pipeline) or gl (OpenGL 3.3 headless, OSMesa or EGL: --gl-context)")
+  cmd->add_option("--backend,-b", args->backend,
+                  "cpu (the software pipeline) or gl (OpenGL 3.3 headless, OSMesa or EGL: --gl-context)")
       ->check(CLI::IsMember({"cpu", "gl"}))
       ->capture_default_str();
   cmd->add_option("--out,-o", args->outPath, "Output PNG file")->required();

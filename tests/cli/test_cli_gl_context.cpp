@@ -95,9 +95,9 @@ TEST(CliGlContext, RenderThroughEglWritesTheOsMesaBytes) {
   SKIP_WITHOUT_EGL();
   const auto dir = testDir("cli_gl_context");
   for (const char* context : {"egl", "osmesa"}) {
+    const std::string png = (dir / (std::string(context) + ".png")).string();
     const RunResult r = runCli("render \"" + kDefaultScene + "\" --backend gl --gl-context " + context +
-                                   " --width 160 --height 120 --out \"" + (dir / (std::string(context) + ".png")).string() +
-                                   "\"",
+                                   " --width 160 --height 120 --out \"" + png + "\"",
                                dir);
     ASSERT_EQ(r.exitCode, 0) << context << ": " << r.err;
   }
@@ -168,7 +168,7 @@ TEST(CliGlContext, InfoWithoutSceneOrGlExitsTwo) {
   const auto dir = testDir("cli_gl_context");
   const RunResult r = runCli("info", dir);
   EXPECT_EQ(r.exitCode, 2);
-  expectContains(r.err, "info: expected a SCENE file (or --gl)");
+  expectContains(r.err, "info: scene is required (a SCENE file, or --gl alone)");
 }
 
 // softpipe stands in for a GPU: not llvmpipe, so --targets gives no verdict and says so.
