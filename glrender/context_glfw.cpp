@@ -38,7 +38,7 @@ GlfwContext::GlfwContext(const GlfwWindowDesc& desc) : compatibility_(desc.compa
   try {
     makeCurrent();
     glfwSwapInterval(desc.vsync ? 1 : 0);
-    const GlContextInfo info = describeCurrentContext();
+    const GlContextInfo info = describeCurrentContext("GLFW window");
     version_ = info.version;
     renderer_ = info.renderer;
   } catch (...) {

@@ -2,6 +2,7 @@
 // must never meet glad's headers in one translation unit.
 #include "glrender/context_osmesa.h"
 
+#include "glrender/llvmpipe_sampling.h"
 #include "scene/errors.h"
 
 #include <GL/osmesa.h>
@@ -9,72 +10,8 @@
 
 #include <array>
 #include <cstdint>
-#include <cstdlib>
-#include <mutex>
-#include <sstream>
 
 namespace twr {
-namespace {
-
-// llvmpipe's precise texture path: per-pixel LOD and float bilinear weights (issue 5).
-constexpr const char* kPerfVariable = "GALLIVM_PERF";
-constexpr std::array<const char*, 2> kPreciseSamplingFlags = {"no_aos_sampling", "no_quad_lod"};
-
-bool hasFlag(const std::string& list, const std::string& flag) {
-  std::stringstream stream(list);
-  std::string item;
-  while (std::getline(stream, item, ',')) {
-    if (item == flag) return true;
-  }
-  return false;
-}
-
-// llvmpipe reads GALLIVM_PERF once per process, when the first context is created, so
-// this mirrors that: the first call fixes the mode and later calls must agree with it.
-// The lock guards the process-wide environment, which is shared state by nature.
-struct SamplingState {
-  std::mutex mutex;
-  std::string mode;  // "" until the first context
-};
-
-SamplingState& samplingState() {
-  static SamplingState state;
-  return state;
-}
-
-void prepareSampling(bool fastSampling) {
-  SamplingState& state = samplingState();
-  const std::lock_guard lock(state.mutex);
-  const std::string requested = fastSampling ? "fast" : "precise";
-  if (state.mode.empty()) {
-    const char* existing = std::getenv(kPerfVariable);
-    std::string flags = existing ? existing : "";
-    if (!fastSampling) {
-      for (const char* flag : kPreciseSamplingFlags) {
-        if (hasFlag(flags, flag)) continue;
-        if (!flags.empty()) flags += ",";
-        flags += flag;
-      }
-      setenv(kPerfVariable, flags.c_str(), 1);
-    }
-    bool precise = true;
-    for (const char* flag : kPreciseSamplingFlags) precise = precise && hasFlag(flags, flag);
-    state.mode = precise ? "precise" : "fast";
-    if (state.mode != requested) {
-      throw InputError("GL: " + requested + " texture sampling was asked for, but the environment sets " +
-                       kPerfVariable + "=" + flags + " (llvmpipe " + state.mode +
-                       " mode); unset it or drop the request");
-    }
-    return;
-  }
-  if (state.mode != requested) {
-    throw InputError("GL: llvmpipe already samples textures in " + state.mode +
-                     " mode in this process (it reads " + kPerfVariable +
-                     " once, at the first context); " + requested + " sampling needs a new process");
-  }
-}
-
-}  // namespace
 
 struct OsMesaContext::Impl {
   using CreateContextAttribsFn = decltype(&OSMesaCreateContextAttribs);
@@ -99,7 +36,8 @@ OsMesaContext::OsMesaContext(const OsMesaContextDesc& desc)
     const char* reason = dlerror();
     throw InputError("GL: cannot load the OSMesa library '" + desc.library + "' (" +
                      (reason ? reason : "unknown reason") +
-                     "); install libosmesa6 (Debian) for headless rendering");
+                     "); install libosmesa6 (Debian) for headless rendering, or use the EGL context "
+                     "(--gl-context egl)");
   }
   auto symbol = [&](const char* name) {
     void* address = dlsym(library, name);
@@ -111,7 +49,7 @@ OsMesaContext::OsMesaContext(const OsMesaContextDesc& desc)
   impl_->makeCurrent = reinterpret_cast<Impl::MakeCurrentFn>(symbol("OSMesaMakeCurrent"));
   impl_->getProcAddress = reinterpret_cast<Impl::GetProcAddressFn>(symbol("OSMesaGetProcAddress"));
 
-  prepareSampling(desc.fastSampling);
+  prepareLlvmpipeSampling(desc.fastSampling);
 
   constexpr int kDepthBits = 24;  // the window buffer's; the FBO has its own 24-bit depth
   constexpr int kMajorVersion = 3;
@@ -150,10 +88,13 @@ void OsMesaContext::makeCurrent() {
 
 GlProc OsMesaContext::procAddress(const char* name) const { return impl_->getProcAddress(name); }
 
-std::string osmesaSamplingMode() {
-  SamplingState& state = samplingState();
-  const std::lock_guard lock(state.mutex);
-  return state.mode;
+bool osmesaLibraryLoads(const std::string& library) {
+  // Never dlclose'd, like the context's handle: the next dlopen of it is then free.
+  return dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL) != nullptr;
+}
+
+std::string OsMesaContext::description() const {
+  return std::string("OSMesa 3.3 ") + (compatibility_ ? "compatibility" : "core") + " context";
 }
 
 }  // namespace twr

@@ -3,7 +3,7 @@
 // loader failure before main(). GL entry points come through procAddress().
 #pragma once
 
-#include "glrender/gl_renderer.h"
+#include "glrender/headless_context.h"
 
 #include <memory>
 #include <string>
@@ -16,18 +16,19 @@ struct OsMesaContextDesc {
   bool fastSampling = false;   // see GlOptions::fastSampling
 };
 
-class OsMesaContext {
+class OsMesaContext final : public HeadlessGlContext {
  public:
   // Throws InputError when the library is missing or the context cannot be created.
   explicit OsMesaContext(const OsMesaContextDesc& desc);
-  ~OsMesaContext();
+  ~OsMesaContext() override;
   OsMesaContext(const OsMesaContext&) = delete;
   OsMesaContext& operator=(const OsMesaContext&) = delete;
 
   // Binds the context to this thread (throws InputError on failure).
-  void makeCurrent();
-  GlProc procAddress(const char* name) const;
-  bool compatibility() const { return compatibility_; }
+  void makeCurrent() override;
+  GlProc procAddress(const char* name) const override;
+  bool compatibility() const override { return compatibility_; }
+  std::string description() const override;
 
  private:
   struct Impl;
@@ -35,7 +36,7 @@ class OsMesaContext {
   bool compatibility_ = false;
 };
 
-// "precise", "fast", or "" before the first OSMesa context of this process.
-std::string osmesaSamplingMode();
+// True when `library` opens with dlopen (GlContextKind::Auto's test). It stays loaded.
+bool osmesaLibraryLoads(const std::string& library);
 
 }  // namespace twr

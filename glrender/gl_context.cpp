@@ -45,10 +45,12 @@ void loadCoreGl(const GlProcFunction& procAddress, const std::string& what) {
   }
 }
 
-GlContextInfo describeCurrentContext() {
+GlContextInfo describeCurrentContext(const std::string& context) {
   GlContextInfo info;
+  info.context = context;
   info.version = glString(GL_VERSION);
   info.renderer = glString(GL_RENDERER);
+  info.vendor = glString(GL_VENDOR);
   GLint profileMask = 0;
   glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &profileMask);
   info.compatibility = (profileMask & GL_CONTEXT_COMPATIBILITY_PROFILE_BIT) != 0;
@@ -68,6 +70,18 @@ std::string glRendererString() {
   LastContext& last = lastContext();
   const std::lock_guard lock(last.mutex);
   return last.info.renderer;
+}
+
+std::string glContextString() {
+  LastContext& last = lastContext();
+  const std::lock_guard lock(last.mutex);
+  return last.info.context;
+}
+
+std::string glVendorString() {
+  LastContext& last = lastContext();
+  const std::lock_guard lock(last.mutex);
+  return last.info.vendor;
 }
 
 }  // namespace twr

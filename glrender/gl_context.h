@@ -1,4 +1,4 @@
-// Loading glad's core 3.3 entry points into whatever context is current (OSMesa or GLFW),
+// Loading glad's core 3.3 entry points into whatever context is current (OSMesa, EGL or GLFW),
 // and what that context says about itself.
 #pragma once
 
@@ -18,11 +18,14 @@ void loadCoreGl(const GlProcFunction& procAddress, const std::string& what);
 struct GlContextInfo {
   std::string version;   // GL_VERSION
   std::string renderer;  // GL_RENDERER
+  std::string vendor;    // GL_VENDOR
+  std::string context;   // which context: "OSMesa 3.3 core context", "GLFW window", ...
   bool compatibility = false;  // GL_CONTEXT_PROFILE_MASK has the compatibility bit
 };
 
 // Queries the current context (glad must be loaded) and remembers the answer for
-// glVersionString() / glRendererString().
-GlContextInfo describeCurrentContext();
+// glVersionString() / glRendererString() / glVendorString().
+// `context` says which context it is (GlContextInfo::context, glContextString()).
+GlContextInfo describeCurrentContext(const std::string& context);
 
 }  // namespace twr

@@ -1,15 +1,17 @@
-// The GL renderer: owns its contexts (OSMesa core, and compatibility once immediate-mode
-// lines are asked for) or borrows the caller's, and runs one frame per render():
+// The GL renderer: owns its contexts (OSMesa or EGL core, and compatibility once
+// immediate-mode lines are asked for) or borrows the caller's, and runs one frame per render():
 // clear, surfaces, TBN lines (colour and line mask in one pass), read-back. A lean frame
 // (GlOptions::frame) runs the same steps on colour + depth only and reads back the colour.
 #include "glrender/gl_renderer.h"
 
+#include "glrender/context_egl.h"
 #include "glrender/context_osmesa.h"
 #include "glrender/gl_clip_state.h"
 #include "glrender/gl_context.h"
 #include "glrender/gl_program.h"
 #include "glrender/gl_scene_draw.h"
 #include "glrender/gl_targets.h"
+#include "glrender/llvmpipe_sampling.h"
 #include "glrender/tbn_lines.h"
 #include "glrender/tbn_lines_core.h"
 #include "glrender/tbn_lines_immediate.h"
@@ -24,6 +26,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <stdexcept>
 
 namespace twr {
@@ -31,7 +34,7 @@ namespace {
 
 // Everything that belongs to one GL context: GL objects die with their context.
 struct GlDevice {
-  std::unique_ptr<OsMesaContext> osmesa;  // null when drawing in the caller's context
+  std::unique_ptr<HeadlessGlContext> headless;  // null when drawing in the caller's context
   GlProcFunction procAddress;
   GlContextInfo info;
   ProgramCache programs;
@@ -39,28 +42,68 @@ struct GlDevice {
   RenderTargets targets;
   std::unique_ptr<ImmediateTbnLines> immediateLines;  // loaded on first use
 
-  GlDevice(std::unique_ptr<OsMesaContext> context, GlProcFunction proc, const std::string& shaderDir, GlFrame frame)
-      : osmesa(std::move(context)), procAddress(std::move(proc)), programs(ShaderLibrary(shaderDir)), targets(frame) {}
+  GlDevice(std::unique_ptr<HeadlessGlContext> context, GlProcFunction proc, const std::string& shaderDir,
+           GlFrame frame)
+      : headless(std::move(context)),
+        procAddress(std::move(proc)),
+        programs(ShaderLibrary(shaderDir)),
+        targets(frame) {}
   GlDevice(const GlDevice&) = delete;
   GlDevice& operator=(const GlDevice&) = delete;
   ~GlDevice() {
     // The members' GL objects are deleted after this body, in this context.
-    if (!osmesa) return;
+    if (!headless) return;
     try {
-      osmesa->makeCurrent();
-      loadCoreGl(procAddress, "OSMesa context");
+      headless->makeCurrent();
+      loadCoreGl(procAddress, headless->description());
     } catch (const std::exception&) {
       // Nothing sensible to do in a destructor; the context goes with the objects.
     }
   }
 
   // Binds the context and points glad's global functions at it (another context, e.g.
-  // a GLFW window, may have loaded them since).
+  // a GLFW window or the other headless library, may have loaded them since).
   void makeCurrent() {
-    if (osmesa) osmesa->makeCurrent();
-    loadCoreGl(procAddress, osmesa ? "OSMesa context" : "current context");
+    if (headless) headless->makeCurrent();
+    loadCoreGl(procAddress, headless ? headless->description() : "current context");
   }
 };
+
+// A headless context of the kind `options` names (Auto resolved by the caller).
+std::unique_ptr<HeadlessGlContext> makeHeadlessContext(const GlOptions& options, GlContextKind kind,
+                                                       bool compatibility) {
+  if (kind == GlContextKind::Egl) {
+    EglContextDesc desc;
+    desc.library = options.eglLibrary;
+    desc.device = options.eglDevice;
+    desc.compatibility = compatibility;
+    desc.fastSampling = options.fastSampling;
+    return std::make_unique<EglContext>(desc);
+  }
+  OsMesaContextDesc desc;
+  desc.library = options.osmesaLibrary;
+  desc.compatibility = compatibility;
+  desc.fastSampling = options.fastSampling;
+  return std::make_unique<OsMesaContext>(desc);
+}
+
+// Auto: OSMesa where its library loads, else EGL. A device number means EGL.
+GlContextKind resolveContextKind(const GlOptions& options) {
+  if (options.context != GlContextKind::Auto) return options.context;
+  if (options.eglDevice != kEglSurfaceless) return GlContextKind::Egl;
+  return osmesaLibraryLoads(options.osmesaLibrary) ? GlContextKind::OsMesa : GlContextKind::Egl;
+}
+
+// A device for `context`: made current, glad loaded, its strings read.
+std::unique_ptr<GlDevice> makeHeadlessDevice(std::unique_ptr<HeadlessGlContext> context, const GlOptions& options) {
+  HeadlessGlContext* raw = context.get();
+  auto device = std::make_unique<GlDevice>(std::move(context),
+                                           [raw](const char* name) { return raw->procAddress(name); },
+                                           options.shaderDir, options.frame);
+  device->makeCurrent();
+  device->info = describeCurrentContext(device->headless->description());
+  return device;
+}
 
 std::string describeError(GLenum error) {
   switch (error) {
@@ -125,6 +168,20 @@ class CallerStateGuard {
   std::array<GLint, 4> viewport_{};
 };
 
+// Releases a headless context at the end of a render (HeadlessGlContext::release).
+class ReleaseAfterRender {
+ public:
+  explicit ReleaseAfterRender(HeadlessGlContext* context) : context_(context) {}
+  ~ReleaseAfterRender() {
+    if (context_) context_->release();
+  }
+  ReleaseAfterRender(const ReleaseAfterRender&) = delete;
+  ReleaseAfterRender& operator=(const ReleaseAfterRender&) = delete;
+
+ private:
+  HeadlessGlContext* context_;
+};
+
 class GlRenderer final : public Renderer {
  public:
   explicit GlRenderer(const GlOptions& options) : options_(options) {}
@@ -135,6 +192,9 @@ class GlRenderer final : public Renderer {
     validateRequest(scene, settings, width, height);
     const bool immediateLines = settings.tbnLines.enabled && settings.tbnLines.mode == LineMode::Immediate;
     GlDevice& device = deviceFor(immediateLines);
+    // Declared before the state guard, so it runs after the guard's last GL call, also
+    // when the render throws.
+    const ReleaseAfterRender release(device.headless.get());
     device.makeCurrent();
     if (immediateLines && !device.immediateLines) {
       device.immediateLines = std::make_unique<ImmediateTbnLines>(device.procAddress);
@@ -186,25 +246,17 @@ class GlRenderer final : public Renderer {
         current_ = std::make_unique<GlDevice>(nullptr, [loader](const char* name) { return loader(name); },
                                               options_.shaderDir, options_.frame);
         current_->makeCurrent();
-        current_->info = describeCurrentContext();
+        current_->info = describeCurrentContext("current context");
         report(*current_, "current context");
       }
       return *current_;
     }
     std::unique_ptr<GlDevice>& slot = compatibility ? compatibility_ : core_;
     if (!slot) {
-      OsMesaContextDesc desc;
-      desc.library = options_.osmesaLibrary;
-      desc.compatibility = compatibility;
-      desc.fastSampling = options_.fastSampling;
-      auto context = std::make_unique<OsMesaContext>(desc);
-      OsMesaContext* raw = context.get();
-      auto device = std::make_unique<GlDevice>(std::move(context),
-                                               [raw](const char* name) { return raw->procAddress(name); },
-                                               options_.shaderDir, options_.frame);
-      device->makeCurrent();
-      device->info = describeCurrentContext();
-      report(*device, compatibility ? "OSMesa 3.3 compatibility context" : "OSMesa 3.3 core context");
+      // Both contexts of one renderer are of one kind: Auto is decided once.
+      if (!kind_) kind_ = resolveContextKind(options_);
+      auto device = makeHeadlessDevice(makeHeadlessContext(options_, *kind_, compatibility), options_);
+      report(*device, device->headless->description().c_str());
       slot = std::move(device);
     }
     return *slot;
@@ -216,7 +268,9 @@ class GlRenderer final : public Renderer {
     std::fprintf(stderr, "gl: %s: GL_VERSION %s, GL_RENDERER %s, %s profile; texture sampling %s (GALLIVM_PERF=%s)\n",
                  what, device.info.version.c_str(), device.info.renderer.c_str(),
                  device.info.compatibility ? "compatibility" : "core",
-                 device.osmesa ? osmesaSamplingMode().c_str() : "as the driver chooses", perf ? perf : "");
+                 device.headless && isLlvmpipe(device.info.renderer) ? llvmpipeSamplingMode().c_str()
+                                                                     : "as the driver chooses",
+                 perf ? perf : "");
   }
 
   void drawLines(GlDevice& device, const std::vector<DrawItem>& items, const RenderSettings& settings,
@@ -236,8 +290,9 @@ class GlRenderer final : public Renderer {
   }
 
   GlOptions options_;
-  std::unique_ptr<GlDevice> core_;           // OSMesa core profile
-  std::unique_ptr<GlDevice> compatibility_;  // OSMesa compatibility profile
+  std::optional<GlContextKind> kind_;        // OsMesa or Egl, once the first context exists
+  std::unique_ptr<GlDevice> core_;           // headless core profile
+  std::unique_ptr<GlDevice> compatibility_;  // headless compatibility profile
   std::unique_ptr<GlDevice> current_;        // the caller's context
 };
 
@@ -245,6 +300,88 @@ class GlRenderer final : public Renderer {
 
 std::unique_ptr<Renderer> makeGlRenderer(const GlOptions& options) { return std::make_unique<GlRenderer>(options); }
 
-std::string glSamplingMode() { return osmesaSamplingMode(); }
+std::string glSamplingMode() { return llvmpipeSamplingMode(); }
+
+bool isLlvmpipe(const std::string& glRenderer) { return glRenderer.find("llvmpipe") != std::string::npos; }
+
+const char* toString(GlContextKind kind) {
+  switch (kind) {
+    case GlContextKind::OsMesa: return "osmesa";
+    case GlContextKind::Egl: return "egl";
+    case GlContextKind::Auto: return "auto";
+  }
+  return "?";
+}
+
+bool parse(const std::string& text, GlContextKind& kind) {
+  for (const GlContextKind candidate : {GlContextKind::OsMesa, GlContextKind::Egl, GlContextKind::Auto}) {
+    if (text == toString(candidate)) {
+      kind = candidate;
+      return true;
+    }
+  }
+  return false;
+}
+
+namespace {
+
+// One context kind on one device: a core context's strings, then whether a compatibility
+// context can be made too. Every failure is recorded, not thrown.
+GlContextProbe probeOne(const GlOptions& base, GlContextKind kind, int eglDevice, std::string deviceDetail) {
+  GlContextProbe probe;
+  probe.kind = kind;
+  probe.eglDevice = eglDevice;
+  probe.deviceDetail = std::move(deviceDetail);
+  GlOptions options = base;
+  options.eglDevice = eglDevice;
+  try {
+    const std::unique_ptr<GlDevice> core = makeHeadlessDevice(makeHeadlessContext(options, kind, false), options);
+    probe.description = core->headless->description();
+    probe.vendor = core->info.vendor;
+    probe.renderer = core->info.renderer;
+    probe.version = core->info.version;
+  } catch (const InputError& error) {
+    probe.error = error.what();
+    return probe;
+  }
+  try {
+    const std::unique_ptr<GlDevice> compatibility =
+        makeHeadlessDevice(makeHeadlessContext(options, kind, true), options);
+    probe.compatibility = compatibility->info.compatibility;
+  } catch (const InputError&) {
+    probe.compatibility = false;  // core only: immediate-mode lines are refused there
+  }
+  return probe;
+}
+
+}  // namespace
+
+std::vector<GlContextProbe> probeGlContexts(const GlOptions& options) {
+  std::vector<GlContextProbe> probes;
+  probes.push_back(probeOne(options, GlContextKind::OsMesa, kEglSurfaceless, ""));
+  probes.push_back(probeOne(options, GlContextKind::Egl, kEglSurfaceless, "Mesa's surfaceless platform"));
+  const std::string missing = eglLibraryProblem(options.eglLibrary);
+  if (!missing.empty()) return probes;  // the surfaceless entry already says why
+  std::vector<EglDeviceInfo> devices;
+  try {
+    devices = listEglDevices(options.eglLibrary);
+  } catch (const InputError& error) {
+    GlContextProbe probe;
+    probe.kind = GlContextKind::Egl;
+    probe.eglDevice = 0;
+    probe.error = error.what();
+    probes.push_back(probe);
+    return probes;
+  }
+  for (const EglDeviceInfo& device : devices) {
+    std::string detail = device.software ? "software" : "";
+    for (const std::string& file : {device.drmDeviceFile, device.renderNodeFile}) {
+      if (!file.empty()) detail += (detail.empty() ? "" : ", ") + file;
+    }
+    detail += (detail.empty() ? "" : "; ") + std::string("extensions: ") + device.extensions;
+    probes.push_back(probeOne(options, GlContextKind::Egl, device.index, detail));
+  }
+  return probes;
+}
 
 }  // namespace twr

@@ -1,12 +1,14 @@
 // The OpenGL 3.3 renderer behind the Renderer interface. Headless through OSMesa
-// (llvmpipe) by default; the GUI can instead draw in its own current GLFW context
-// (GlOptions::currentContextLoader, see glrender/context_glfw.h).
+// (llvmpipe) by default or through EGL (Mesa's surfaceless platform or a listed device, see
+// glrender/context_egl.h); the GUI can instead draw in its own current GLFW context
+// (GlOptions::currentContextLoader, see glrender/context_glfw.h). docs/gl-path.md compares them.
 #pragma once
 
 #include "scene/renderer.h"
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace twr {
 
@@ -28,6 +30,17 @@ using GlProcLoader = GlProc (*)(const char* name);
 //         reference for the CPU pipeline (gl_lean_* keys).
 enum class GlFrame { Full, Lean };
 
+// Which headless context the renderer makes (when it does not borrow the caller's).
+//   OsMesa  libOSMesa.so.8: Mesa's llvmpipe, the default on Debian 12.
+//   Egl     libEGL.so.1: GlOptions::eglDevice picks Mesa's surfaceless platform or a device.
+//   Auto    OSMesa when its library loads, else EGL's surfaceless platform (Mesa 25.1 and
+//           later ship no OSMesa).
+enum class GlContextKind { OsMesa, Egl, Auto };
+
+// GlOptions::eglDevice for EGL_MESA_platform_surfaceless: no device named, Mesa picks its
+// driver (llvmpipe on a machine without a GPU).
+inline constexpr int kEglSurfaceless = -1;
+
 struct GlOptions {
   bool verbose = false;  // print GL_VERSION / GL_RENDERER on stderr
   // llvmpipe's fast texture path (8-bit bilinear weights, one LOD per quad). Off by default
@@ -36,8 +49,13 @@ struct GlOptions {
   // process, so the first OSMesa context fixes the mode for the whole process.
   bool fastSampling = false;
   std::string shaderDir;  // empty: embedded shaders; else load shaders from this folder
-  // The OSMesa library, opened at run time so a missing library is a clean error.
+  GlContextKind context = GlContextKind::OsMesa;
+  // EGL only: kEglSurfaceless, or N >= 0 for the N-th device eglQueryDevicesEXT lists
+  // (EGL_EXT_platform_device; `twinraster info --gl` lists them).
+  int eglDevice = kEglSurfaceless;
+  // The libraries, opened at run time so a missing one is a clean error.
   std::string osmesaLibrary = "libOSMesa.so.8";
+  std::string eglLibrary = "libEGL.so.1";
   // Non-null: draw in the caller's current context (e.g. a GLFW window) loaded through
   // this function instead of creating OSMesa contexts. Immediate-mode TBN lines then
   // need that context to be a compatibility profile.
@@ -45,16 +63,47 @@ struct GlOptions {
   GlFrame frame = GlFrame::Full;
 };
 
-// Throws InputError (exit 2) when OSMesa is missing, the context cannot be created or a
-// shader fails to compile or link (with the GLSL log and file/line). Contexts are created
-// on the first render (core 3.3; compatibility 3.3 once immediate-mode lines are asked for).
+// Throws InputError (exit 2) when the context's library (OSMesa, EGL) or the EGL device is
+// missing, the context cannot be created or a shader fails to compile or link (with the GLSL
+// log and file/line). Contexts are created on the first render (core 3.3; compatibility 3.3
+// once immediate-mode lines are asked for).
 std::unique_ptr<Renderer> makeGlRenderer(const GlOptions& options = {});
 
-// GL_VERSION and GL_RENDERER of the last created context ("" before one exists).
+// GL_VERSION, GL_RENDERER and GL_VENDOR of the last created context ("" before one exists).
 std::string glVersionString();
 std::string glRendererString();
+std::string glVendorString();
+// Which context that was: "OSMesa 3.3 core context", "EGL surfaceless platform (driver swrast)
+// 3.3 core context", "EGL device 1 (/dev/dri/card1) 3.3 core context", "GLFW window", ...
+std::string glContextString();
 // "precise" or "fast": how llvmpipe samples textures in this process ("" before the first
-// OSMesa context exists). Precise means GALLIVM_PERF held no_aos_sampling and no_quad_lod.
+// headless context exists). Precise means GALLIVM_PERF held no_aos_sampling and no_quad_lod.
+// Only llvmpipe reads the variable: another driver samples as it chooses.
 std::string glSamplingMode();
+
+// True when GL_RENDERER names Mesa's llvmpipe, the rasteriser the project's CPU-vs-GL
+// targets (compare --targets) are measured against.
+bool isLlvmpipe(const std::string& glRenderer);
+
+// "osmesa", "egl" or "auto" (what --gl-context takes), and back; parse returns false for
+// anything else.
+const char* toString(GlContextKind kind);
+bool parse(const std::string& text, GlContextKind& kind);
+
+// One headless context `twinraster info --gl` tried: what it is and what GL it gave.
+struct GlContextProbe {
+  GlContextKind kind = GlContextKind::OsMesa;
+  int eglDevice = kEglSurfaceless;  // EGL: the device index, kEglSurfaceless for the platform
+  std::string description;          // "OSMesa 3.3 core context", "EGL device 0 ... context"
+  std::string deviceDetail;         // EGL devices: DRM device file, "software", extensions
+  std::string vendor, renderer, version;  // of its 3.3 core context; "" when `error` is set
+  bool compatibility = false;       // a 3.3 compatibility context can be made too
+  std::string error;                // why no 3.3 core context ("" when there is one)
+};
+
+// Makes a 3.3 core (and a compatibility) context on OSMesa, on EGL's surfaceless platform and
+// on every EGL device, and reports each; a missing library becomes one entry with `error`.
+// Sets llvmpipe's sampling mode for the process like a render would (options.fastSampling).
+std::vector<GlContextProbe> probeGlContexts(const GlOptions& options = {});
 
 }  // namespace twr

@@ -7,6 +7,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libglfw3-dev libglm-dev python3-glad libimgui-dev libosmesa6-dev
+  libegl-dev libegl-mesa0    # EGL headers, and Mesa's EGL (surfaceless llvmpipe) opened at run time
   libtinyobjloader-dev libstb-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libbenchmark-dev
   libhwy-dev                 # Google Highway: the fast path's portable SIMD

@@ -76,6 +76,7 @@ struct BenchArgs {
   int warmup = 2;
   std::optional<int> threads;  // default: hardware_concurrency()
   CpuRequest cpu;
+  GlRequest gl;
   bool cpuScalar = false;  // the old spelling of --cpu-isa scalar
   bool allIsas = false;    // also time the fast path on every supported target
   bool json = false;
@@ -219,6 +220,7 @@ std::vector<std::string> childArguments(const BenchArgs& args, int width, int he
                                    "--warmup", std::to_string(args.warmup),
                                    "--threads", std::to_string(threads),
                                    "--gl-precise-child"};
+  for (const std::string& argument : glRequestArguments(args.gl)) argv.push_back(argument);
   const std::array<std::pair<const char*, const std::string*>, 6> overrides = {{
       {"--view", &r.view},
       {"--cull", &r.cull},
@@ -331,7 +333,8 @@ void printText(const Json& j, const Timing& cpu, const Timing& gl, const Timing&
                 << " ms  cpu/gl lean " << fixed(entry["ratio_cpu_over_gl_lean"].get<double>(), 3) << "\n";
     }
   }
-  std::cout << "  gl: " << j["gl_renderer"].get<std::string>() << ", " << j["gl_version"].get<std::string>() << "\n";
+  std::cout << "  gl: " << j["gl_renderer"].get<std::string>() << ", " << j["gl_version"].get<std::string>() << "; "
+            << j["gl_context"].get<std::string>() << "\n";
   if (j.contains("note")) std::cout << "  note: " << j["note"].get<std::string>() << "\n";
 }
 
@@ -352,7 +355,7 @@ void validate(const BenchArgs& args) {
 
 // The child of --gl-precise: GL only, precise sampling, JSON on stdout.
 void runPreciseChild(const BenchArgs& args, const Scene& scene, int width, int height) {
-  GlOptions options;
+  GlOptions options = requestedGlOptions(args.gl);
   options.fastSampling = false;
   const std::unique_ptr<Renderer> gl = makeGlRenderer(options);
   RenderOutput out;
@@ -383,6 +386,7 @@ void runBench(BenchArgs args) {
   if (args.cpuScalar) args.cpu.isa = "scalar";  // --cpu-scalar is --cpu-isa scalar (they exclude each other)
   const int threads = args.threads.value_or(defaultThreads());
   const CpuOptions cpuOptions = requestedCpuOptions(args.cpu, threads);
+  GlOptions glOptions = requestedGlOptions(args.gl);
   const Scene scene = loadRequestedScene(args.request);
   const int width = requestedWidth(args.request, scene);
   const int height = requestedHeight(args.request, scene);
@@ -392,7 +396,6 @@ void runBench(BenchArgs args) {
     return;
   }
 
-  GlOptions glOptions;
   glOptions.verbose = args.request.verbose;
   glOptions.fastSampling = true;  // llvmpipe's default, what a user gets
   const std::unique_ptr<Renderer> gl = makeGlRenderer(glOptions);
@@ -492,6 +495,7 @@ void runBench(BenchArgs args) {
   json["gl_sampling"] = glSamplingMode();
   json["gl_renderer"] = glRendererString();
   json["gl_version"] = glVersionString();
+  json["gl_context"] = glContextString();
   if (glPreciseTiming) {
     addTiming(json, "gl_precise", *glPreciseTiming);
     json["ratio_cpu_over_gl_precise"] = cpuTiming.median / glPreciseTiming->median;
@@ -529,6 +533,7 @@ const bool registered = registerCommand(50, [](CLI::App& app) {
   cmd->add_option("--warmup", args->warmup, "Untimed frames per backend first (shader compilation, caches)")
       ->capture_default_str();
   CLI::Option* cpuIsa = addCpuOptions(*cmd, args->cpu);
+  addGlOptions(*cmd, args->gl);
   cmd->add_flag("--cpu-scalar", args->cpuScalar, "Same as --cpu-isa scalar (kept for scripts that use it)")
       ->excludes(cpuIsa);
   cmd->add_flag("--all-isas", args->allIsas,

@@ -17,6 +17,7 @@ namespace {
 struct RenderArgs {
   RenderRequest request;
   CpuRequest cpu;
+  GlRequest gl;
   std::string backend = "cpu";
   std::string outPath;
   bool glFastSampling = false;
@@ -30,6 +31,7 @@ Image imageFromOutput(const RenderOutput& output) {
 
 void runRender(const RenderArgs& args) {
   const CpuOptions cpuOptions = requestedCpuOptions(args.cpu);
+  GlOptions glOptions = requestedGlOptions(args.gl);
   Scene scene = loadRequestedScene(args.request);
   const int width = requestedWidth(args.request, scene);
   const int height = requestedHeight(args.request, scene);
@@ -39,10 +41,9 @@ void runRender(const RenderArgs& args) {
     renderer = makeCpuRenderer(cpuOptions);
     rendererName = "cpu " + cpuPathName(cpuOptions);
   } else {
-    GlOptions options;
-    options.verbose = args.request.verbose;
-    options.fastSampling = args.glFastSampling;
-    renderer = makeGlRenderer(options);
+    glOptions.verbose = args.request.verbose;
+    glOptions.fastSampling = args.glFastSampling;
+    renderer = makeGlRenderer(glOptions);
   }
   const RenderOutput output = renderer->render(scene, scene.settings, width, height);
   savePng(args.outPath, imageFromOutput(output));
@@ -64,11 +65,13 @@ const bool registered = registerCommand(20, [](CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand("render", "Render a scene with one backend into a PNG (top row first)");
   addRenderOptions(*cmd, args->request);
-  cmd->add_option("--backend,-b", args->backend, "cpu (the software pipeline) or gl (OpenGL 3.3 via OSMesa)")
+  cmd->add_option("--backend,-b", args->backend,
+                  "cpu (the software pipeline) or gl (OpenGL 3.3 headless, OSMesa or EGL: --gl-context)")
       ->check(CLI::IsMember({"cpu", "gl"}))
       ->capture_default_str();
   cmd->add_option("--out,-o", args->outPath, "Output PNG file")->required();
   addCpuOptions(*cmd, args->cpu);
+  addGlOptions(*cmd, args->gl);
   cmd->add_flag("--gl-fast-sampling", args->glFastSampling,
                 "Let llvmpipe use its fast 8-bit bilinear path (default: the precise mode, see docs/compare.md)");
   cmd->callback([args] { runRender(*args); });

@@ -20,6 +20,7 @@ struct ReportArgs {
   std::string outDir = "out/report";
   std::string assetsDir;  // empty: found next to the working directory or the executable
   bool quick = false;
+  GlRequest gl;
 };
 
 struct ChildArgs {
@@ -27,6 +28,7 @@ struct ChildArgs {
   int width = 0, height = 0;
   int frames = 1;
   bool fastSampling = false;
+  GlRequest gl;
   std::string outPath;
 };
 
@@ -60,6 +62,8 @@ void runReport(const ReportArgs& args) {
   namespace fs = std::filesystem;
   ReportOptions options;
   options.quick = args.quick;
+  options.gl = args.gl;
+  requestedGlOptions(args.gl);  // a bad combination exits 2 before any sweep runs
   options.assetsDir = findAssets(args.assetsDir);
   options.selfExecutable = "/proc/self/exe";
   std::error_code error;
@@ -92,6 +96,7 @@ const bool registered = registerCommand(60, [](CLI::App& app) {
   cmd->add_flag("--quick", args->quick, "Smaller images, fewer settings and frames");
   cmd->add_option("--assets", args->assetsDir,
                   "The repository's assets/ folder (default: ./assets or one above the executable)");
+  addGlOptions(*cmd, args->gl);
   cmd->callback([args] { runReport(*args); });
 
   auto child = std::make_shared<ChildArgs>();
@@ -103,8 +108,10 @@ const bool registered = registerCommand(60, [](CLI::App& app) {
   childCmd->add_option("--frames", child->frames)->check(CLI::Range(1, 1000));
   childCmd->add_flag("--fast-sampling", child->fastSampling);
   childCmd->add_option("--out", child->outPath)->required();
+  addGlOptions(*childCmd, child->gl);
   childCmd->callback([child] {
-    runGlChild(child->scenePath, child->width, child->height, child->frames, child->fastSampling, child->outPath);
+    runGlChild(child->scenePath, child->width, child->height, child->frames, child->fastSampling, child->gl,
+               child->outPath);
   });
 });
 

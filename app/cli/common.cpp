@@ -105,6 +105,44 @@ std::string resolvedCpuIsaName(const CpuOptions& options) {
   return std::string(toString(resolveCpuIsa(options.isa)));
 }
 
+void addGlOptions(CLI::App& cmd, GlRequest& request) {
+  cmd.add_option("--gl-context", request.context,
+                 "Headless GL context: osmesa (libOSMesa, Mesa's llvmpipe), egl (libEGL: Mesa's surfaceless "
+                 "platform, or the device --gl-device names) or auto (OSMesa where its library loads, else EGL); "
+                 "docs/gl-path.md")
+      ->check(CLI::IsMember({"osmesa", "egl", "auto"}))
+      ->capture_default_str();
+  cmd.add_option("--gl-device", request.device,
+                 "With --gl-context egl: draw on EGL device N (EGL_EXT_platform_device; `twinraster info --gl` lists "
+                 "them with their GL_RENDERER) instead of Mesa's surfaceless platform")
+      ->check(CLI::NonNegativeNumber)
+      ->type_name("N");
+}
+
+GlOptions requestedGlOptions(const GlRequest& request) {
+  GlOptions options;
+  if (!parse(request.context, options.context)) {
+    throw InputError("--gl-context: expected one of osmesa, egl, auto, got '" + request.context + "'");
+  }
+  if (request.device) {
+    if (options.context == GlContextKind::OsMesa) {
+      throw InputError("--gl-device " + std::to_string(*request.device) +
+                       ": devices are EGL's; add --gl-context egl (OSMesa has no devices)");
+    }
+    options.eglDevice = *request.device;
+  }
+  return options;
+}
+
+std::vector<std::string> glRequestArguments(const GlRequest& request) {
+  std::vector<std::string> arguments = {"--gl-context", request.context};
+  if (request.device) {
+    arguments.push_back("--gl-device");
+    arguments.push_back(std::to_string(*request.device));
+  }
+  return arguments;
+}
+
 int requestedWidth(const RenderRequest& request, const Scene& scene) {
   return request.width.value_or(scene.output.width);
 }

@@ -1,6 +1,7 @@
 // Options shared by the subcommands that render: scene loading and setting overrides.
 #pragma once
 
+#include "glrender/gl_renderer.h"
 #include "scene/scene.h"
 #include "softrender/cpu_renderer.h"
 
@@ -8,6 +9,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace twr::cli {
 
@@ -50,5 +52,21 @@ CpuOptions requestedCpuOptions(const CpuRequest& request, int threads = 1);
 // The fast path's target the options run on ("avx2"), or "" for the teaching path.
 std::string resolvedCpuIsaName(const CpuOptions& options);
 
+// --gl-context and --gl-device, for the subcommands that draw with GL.
+struct GlRequest {
+  std::string context = "osmesa";  // osmesa|egl|auto
+  std::optional<int> device;       // an EGL device (info --gl lists them); default: surfaceless
+};
+
+// Adds --gl-context and --gl-device to `cmd`.
+void addGlOptions(CLI::App& cmd, GlRequest& request);
+
+// The GlOptions fields the request sets (context kind and EGL device); the rest stay at their
+// defaults. Throws InputError (exit 2) for --gl-device with --gl-context osmesa: OSMesa has
+// no devices.
+GlOptions requestedGlOptions(const GlRequest& request);
+
+// The same request as arguments for a child process of this executable ("--gl-context", ...).
+std::vector<std::string> glRequestArguments(const GlRequest& request);
 
 }  // namespace twr::cli

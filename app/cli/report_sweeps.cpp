@@ -111,7 +111,7 @@ class Sweeper {
   }
   std::string scenePath(const std::string& name) const { return options_.assetsDir + "/scenes/" + name; }
   Renderer& gl() {
-    if (!gl_) gl_ = makeGlRenderer();
+    if (!gl_) gl_ = makeGlRenderer(requestedGlOptions(options_.gl));
     return *gl_;
   }
   RenderOutput reference(const Scene& scene, const RenderSettings& settings, int width, int height,
@@ -276,6 +276,7 @@ bool Sweeper::measureGlChild(KnobResult& knob, const std::string& setting, const
                                    "--width", std::to_string(width), "--height", std::to_string(height),
                                    "--frames", std::to_string(frames_), "--out", stem + ".bin"};
   if (fastSampling) argv.push_back("--fast-sampling");
+  for (const std::string& argument : glRequestArguments(options_.gl)) argv.push_back(argument);
   const int code = runChildProcess(argv, llvmpipeThreads, stem + ".stderr.txt");
   RenderOutput out;
   Timing timing;
@@ -592,7 +593,8 @@ ReportData Sweeper::run() {
     knob.reading = reading.detail;
   }
   bases(data);
-  data.machine = machineDescription() + "; GL: " + glRendererString() + ", " + glVersionString();
+  data.machine =
+      machineDescription() + "; GL: " + glRendererString() + ", " + glVersionString() + "; " + glContextString();
   data.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   say("done");
   return data;
@@ -606,9 +608,9 @@ ReportData runReportSweeps(const ReportOptions& options, std::ostream& progress)
 }
 
 void runGlChild(const std::string& scenePath, int width, int height, int frames, bool fastSampling,
-                const std::string& outPath) {
+                const GlRequest& gl, const std::string& outPath) {
   const Scene scene = loadSceneFile(scenePath);
-  GlOptions options;
+  GlOptions options = requestedGlOptions(gl);
   options.fastSampling = fastSampling;
   std::unique_ptr<Renderer> renderer = makeGlRenderer(options);
   RenderOutput out;

@@ -3,6 +3,7 @@
 // llvmpipe (sampling mode, thread count) run in child processes of this executable.
 #pragma once
 
+#include "app/cli/common.h"
 #include "app/cli/report_model.h"
 
 #include <ostream>
@@ -15,6 +16,7 @@ struct ReportOptions {
   std::string assetsDir;       // folder holding scenes/ and textures/
   std::string workDir;         // scratch folder for child-process outputs (inside the output folder)
   std::string selfExecutable;  // this program, for child processes ("/proc/self/exe")
+  GlRequest gl;                // --gl-context / --gl-device, for this process and the GL children
 };
 
 // Runs every sweep, printing progress lines on `progress` (which knob, which point, elapsed).
@@ -24,6 +26,6 @@ ReportData runReportSweeps(const ReportOptions& options, std::ostream& progress)
 // whatever LP_NUM_THREADS the parent set), one warm-up and `frames` timed frames, and writes
 // the last image and the timings to `outPath` (read back by the parent). Throws InputError.
 void runGlChild(const std::string& scenePath, int width, int height, int frames, bool fastSampling,
-                const std::string& outPath);
+                const GlRequest& gl, const std::string& outPath);
 
 }  // namespace twr::cli
