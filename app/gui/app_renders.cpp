@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 
 namespace twr::gui {
 namespace {
@@ -53,12 +54,28 @@ void GuiApp::syncRenders() {
     renderHeight_ = height;
     doc_.touch();
   }
+  if (width != timedWidth_ || height != timedHeight_) {
+    // Times at another size are another workload: start the medians again.
+    timedWidth_ = width;
+    timedHeight_ = height;
+    const std::string reason = "render size " + std::to_string(width) + " x " + std::to_string(height);
+    cpuMs_.restart(reason);
+    glMs_.restart(reason);
+  }
   if (pin_.pixel && (pin_.pixel->x < 0 || pin_.pixel->x >= width || pin_.pixel->yTop < 0 || pin_.pixel->yTop >= height)) {
+    if (!commandLinePinChecked_ && options_.pin && *pin_.pixel == *options_.pin) {
+      // Said, not silently dropped: the render size is only known now.
+      pinWarning_ = "--pin " + std::to_string(pin_.pixel->x) + "," + std::to_string(pin_.pixel->yTop) +
+                    " is outside the " + std::to_string(width) + " x " + std::to_string(height) +
+                    " px render (x in [0, " + std::to_string(width - 1) + "], y in [0, " + std::to_string(height - 1) +
+                    "]): nothing is pinned.";
+      std::cerr << "twinraster-gui: warning: " << pinWarning_ << "\n";
+    }
     pinPixel(std::nullopt);
   }
+  commandLinePinChecked_ = true;
 
-  renderBlocker_ = validateCamera(doc_.scene.camera);
-  if (!renderBlocker_.empty()) renderBlocker_ = "camera: " + renderBlocker_;
+  refreshRenderBlocker();
   if (renderBlocker_.empty()) {
     if (glFrame_.revision != doc_.revision) renderGl();
     submitCpu();
@@ -68,8 +85,25 @@ void GuiApp::syncRenders() {
   refreshTextures();
 }
 
+void GuiApp::refreshRenderBlocker() {
+  renderBlocker_ = validateCamera(doc_.scene.camera);
+  if (!renderBlocker_.empty()) renderBlocker_ = "camera: " + renderBlocker_;
+}
+
+ShownRevisions GuiApp::shownRevisions() const {
+  ShownRevisions shown;
+  const auto atSize = [this](const std::shared_ptr<const RenderOutput>& output) {
+    return output && output->width == renderWidth_ && output->height == renderHeight_;
+  };
+  shown.cpu = atSize(cpuFrame_.output) ? cpuFrame_.revision : 0;
+  shown.gl = atSize(glFrame_.output) ? glFrame_.revision : 0;
+  shown.diff = diff_.result ? diff_.revision : 0;
+  return shown;
+}
+
 void GuiApp::pinPixel(std::optional<PixelPos> pixel) {
   pin_ = PinState{};
+  if (pixel) pinWarning_.clear();
   pin_.pixel = pixel;
 }
 
@@ -81,7 +115,14 @@ void GuiApp::takeCpuFrames() {
       cpuFrame_.error = frame.error;
       cpuFrame_.finishedAt = frame.finishedAt;
       cpuFrame_.cpuPath = frame.cpuPath;
-      if (frame.output) cpuMs_.add(frame.output->stats.milliseconds);
+      if (frame.output && frame.width == timedWidth_ && frame.height == timedHeight_ &&
+          frame.revision >= timingsFromRevision_) {
+        if (frame.cpuPath != timedCpuPath_) {
+          if (!timedCpuPath_.empty()) cpuMs_.restart("CPU path " + frame.cpuPath);
+          timedCpuPath_ = frame.cpuPath;
+        }
+        cpuMs_.add(frame.output->stats.milliseconds);
+      }
       cpuTextureStale_ = true;
     }
     if (frame.probe && pin_.pixel && frame.probe->pixel == *pin_.pixel && frame.width == renderWidth_ &&
@@ -98,7 +139,7 @@ void GuiApp::renderGl() {
   try {
     glFrame_.output = std::make_shared<const RenderOutput>(
         glRenderer_->render(doc_.scene, doc_.scene.settings, renderWidth_, renderHeight_));
-    glMs_.add(glFrame_.output->stats.milliseconds);
+    if (renderWidth_ == timedWidth_ && renderHeight_ == timedHeight_) glMs_.add(glFrame_.output->stats.milliseconds);
   } catch (const std::exception& e) {
     glFrame_.error = e.what();
   }

@@ -104,10 +104,15 @@ void GuiApp::drawInspectorPanel() {
     }
     ImGui::EndTable();
   }
-  if (diff_.result && diff_.result->pixels.width == renderWidth_ && diff_.result->pixels.height == renderHeight_) {
+  const ShownRevisions shown = shownRevisions();
+  if (pairState(shown) == PairState::SameEdit && diff_.result && diff_.result->pixels.width == renderWidth_ &&
+      diff_.result->pixels.height == renderHeight_) {
     const std::size_t i = diff_.result->pixels.index(p.x, p.yTop);
-    ImGui::Text("diff %d levels, class %s", diff_.result->pixels.diffLevels[i],
-                std::string(toString(diff_.result->pixels.pixelClass[i])).c_str());
+    ImGui::Text("diff %d levels, class %s (both of edit %llu)", diff_.result->pixels.diffLevels[i],
+                std::string(toString(diff_.result->pixels.pixelClass[i])).c_str(),
+                static_cast<unsigned long long>(diff_.revision));
+  } else if (pairState(shown) != PairState::SameEdit) {
+    warningText(pairNote(shown));
   }
 
   if (!pin_.cpu) {

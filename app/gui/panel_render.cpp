@@ -98,8 +98,15 @@ void GuiApp::drawRenderingTab() {
 
   sectionTitle("Clipping");
   ImGui::TextUnformatted("Frustum planes");
-  helpMarker("A switched-off near or far plane becomes depth clamping (GL_DEPTH_CLAMP); a switched-off side "
-             "plane leaves the guard band to the rasterizer.");
+  helpMarker("A switched-off side plane leaves the guard band to the rasterizer. A switched-off near or far "
+             "plane becomes depth clamping (GL_DEPTH_CLAMP): geometry beyond it is no longer cut, its window "
+             "depth is clamped to [0, 1]. Beyond the far plane that depth is 1.0, the value the depth buffer is "
+             "cleared to, and the depth test is GL_LESS (1.0 < 1.0 fails): so those fragments are still not drawn, "
+             "on both backends. Near clamping does show: geometry in front of the near plane gets depth 0.");
+  if (!settings.clip.far) {
+    hintText("Far plane off: depth beyond it clamps to 1.0, which fails GL_LESS against the cleared 1.0, so "
+             "nothing beyond far appears (see the (?) above). Raise the camera's far instead to see it.");
+  }
   if (ImGui::BeginTable("##frustum", 3)) {
     const std::pair<const char*, bool*> planes[] = {
         {"left", &settings.clip.left}, {"bottom", &settings.clip.bottom}, {"near", &settings.clip.near},

@@ -74,6 +74,7 @@ void GuiApp::drawSceneTab() {
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - openWidth - ImGui::GetStyle().ItemSpacing.x);
   const bool entered = ImGui::InputTextWithHint("##scenePath", "path/to/scene.json", &scenePathInput_,
                                                 ImGuiInputTextFlags_EnterReturnsTrue);
+  probe_.item("scene_path");
   ImGui::SameLine();
   if (ImGui::Button("Open") || entered) openScene(scenePathInput_);
   if (!doc_.scene.sourcePath.empty()) {

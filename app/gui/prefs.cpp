@@ -115,6 +115,8 @@ GuiPrefs loadPrefs(const std::filesystem::path& path, std::string& warning) {
   readString(object, "cpu_path", name, problems);
   if (name == "teaching") prefs.cpuPath = CpuPath::Teaching;
   else if (!name.empty() && name != "fast") problems += "; cpu_path: expected fast|teaching";
+  readFloat(object, "controls_width", 0.0f, kMaxSavedPanelPoints, prefs.controlsWidth, problems);
+  readFloat(object, "stats_height", 0.0f, kMaxSavedPanelPoints, prefs.statsHeight, problems);
   name.clear();
   readString(object, "cpu_isa", name, problems);
   if (!name.empty()) {
@@ -150,6 +152,8 @@ bool savePrefs(const std::filesystem::path& path, const GuiPrefs& prefs, std::st
       {"screenshot_dir", prefs.screenshotDir},
       {"cpu_path", toString(prefs.cpuPath)},
       {"cpu_isa", toString(prefs.cpuIsa)},
+      {"controls_width", prefs.controlsWidth},
+      {"stats_height", prefs.statsHeight},
   };
   std::error_code code;
   std::filesystem::create_directories(path.parent_path(), code);

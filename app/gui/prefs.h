@@ -42,7 +42,15 @@ struct GuiPrefs {
   // CPU cannot run falls back to auto with a warning).
   CpuPath cpuPath = CpuPath::Fast;
   CpuIsa cpuIsa = CpuIsa::Auto;
+  // The panel sizes the user dragged to, points at UI scale 1; 0: the default. Kept here,
+  // not in imgui.ini, so a window squeezed for a moment never saves a squeezed panel
+  // (panel_sizing.h); a value below the panel's minimum is raised to it when used.
+  float controlsWidth = 0.0f;
+  float statsHeight = 0.0f;
 };
+
+// Largest panel size the settings file may hold, points (inclusive).
+inline constexpr float kMaxSavedPanelPoints = 10000.0f;
 
 struct PrefsPaths {
   std::filesystem::path dir;   // empty when neither XDG_CONFIG_HOME nor HOME is set

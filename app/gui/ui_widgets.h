@@ -29,9 +29,20 @@ bool enumRadio(const char* label, Enum& value, const Enum (&values)[N], float la
   ImGui::AlignTextToFramePadding();
   ImGui::TextUnformatted(label);
   for (std::size_t i = 0; i < N; ++i) {
-    if (i == 0 && labelWidth > 0.0f) ImGui::SameLine(labelWidth);
-    else ImGui::SameLine();
     const std::string name(toString(values[i]));
+    // A button that would not fit on the line starts a new one at labelWidth, so a narrow
+    // panel wraps the choices instead of cutting them off.
+    const float buttonWidth = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x +
+                              ImGui::CalcTextSize(name.c_str()).x;
+    const float lineEnd = ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + buttonWidth;
+    const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+    if (i > 0 && lineEnd > right) {
+      if (labelWidth > 0.0f) ImGui::SetCursorPosX(labelWidth);
+    } else if (i == 0 && labelWidth > 0.0f) {
+      ImGui::SameLine(labelWidth);
+    } else {
+      ImGui::SameLine();
+    }
     if (ImGui::RadioButton(name.c_str(), value == values[i]) && value != values[i]) {
       value = values[i];
       changed = true;
