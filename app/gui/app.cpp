@@ -1,4 +1,5 @@
 #include "app/gui/app.h"
+#include "app/gui/scene_picker.h"
 
 #include "compare/heatmap.h"
 #include "compare/side_by_side.h"
@@ -288,6 +289,7 @@ void GuiApp::openScene(const std::string& path) {
     std::error_code code;
     const std::filesystem::path absolute = std::filesystem::absolute(path, code);
     prefs_.lastScene = code ? path : absolute.lexically_normal().string();
+    rememberRecent(prefs_.recentScenes, prefs_.lastScene);
     scenePathInput_ = path;
     pin_ = PinState{};
     // Another scene: the old scene's frame times say nothing about this one.

@@ -177,6 +177,7 @@ class GuiApp {
   double flickerStart_ = 0.0;
   float leftPanelWidth_ = 0.0f, bottomPanelHeight_ = 0.0f;  // as shown this frame, ImGui units
   std::string pinWarning_;  // why the --pin pixel could not be pinned
+  std::string lightsHint_;  // which lights are ticked but off screen, else empty
   bool commandLinePinChecked_ = false;
   // Per panel, the last exception its drawing threw and when (glfwGetTime(), seconds).
   struct PanelFault {

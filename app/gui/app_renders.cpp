@@ -1,6 +1,7 @@
 // Keeping both backends' frames, the diff and the pinned pixel's probes in step with the
 // scene: GL renders on this (the UI) thread in the window's context, the CPU on the worker.
 #include "app/gui/app.h"
+#include "app/gui/debug_views.h"
 
 #include "compare/heatmap.h"
 #include "compare/side_by_side.h"
@@ -56,11 +57,14 @@ void GuiApp::syncRenders() {
   }
   if (width != timedWidth_ || height != timedHeight_) {
     // Times at another size are another workload: start the medians again.
+    // The first size of a run keeps the reason it had ("scene loaded").
+    if (timedWidth_ != 0) {
+      const std::string reason = "render size " + std::to_string(width) + " x " + std::to_string(height);
+      cpuMs_.restart(reason);
+      glMs_.restart(reason);
+    }
     timedWidth_ = width;
     timedHeight_ = height;
-    const std::string reason = "render size " + std::to_string(width) + " x " + std::to_string(height);
-    cpuMs_.restart(reason);
-    glMs_.restart(reason);
   }
   if (pin_.pixel && (pin_.pixel->x < 0 || pin_.pixel->x >= width || pin_.pixel->yTop < 0 || pin_.pixel->yTop >= height)) {
     if (!commandLinePinChecked_ && options_.pin && *pin_.pixel == *options_.pin) {
@@ -225,12 +229,19 @@ void GuiApp::probeGl() {
 
 void GuiApp::refreshTextures() {
   const BackgroundMode background = prefs_.checkerBackground ? BackgroundMode::Checker : BackgroundMode::RendererColour;
+  // The Depth view linearised for display only: the diff and the read-backs keep window depth.
+  const Camera& camera = doc_.scene.camera;
+  const bool linear = doc_.scene.settings.view == View::Depth && prefs_.linearDepth;
+  const auto shown = [&](const RenderOutput& output) {
+    return linear ? viewImage(withLinearDepth(output, camera.near, camera.far), background)
+                  : viewImage(output, background);
+  };
   if (cpuTextureStale_) {
-    if (cpuFrame_.output) cpuTexture_.upload(viewImage(*cpuFrame_.output, background));
+    if (cpuFrame_.output) cpuTexture_.upload(shown(*cpuFrame_.output));
     cpuTextureStale_ = false;
   }
   if (glTextureStale_) {
-    if (glFrame_.output) glTexture_.upload(viewImage(*glFrame_.output, background));
+    if (glFrame_.output) glTexture_.upload(shown(*glFrame_.output));
     glTextureStale_ = false;
   }
   if (diff_.texturesStale) {

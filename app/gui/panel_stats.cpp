@@ -120,7 +120,13 @@ void GuiApp::drawStatsPanel() {
                                   ? " at (" + std::to_string(m.maxAbsDiffX) + ", " + std::to_string(m.maxAbsDiffY) + ")"
                                   : "";
     metricRow("max |diff|", std::to_string(m.maxAbsDiff) + " levels" + maxAt,
-              "Largest per-pixel difference (max over RGB) where both covered, 0..255.");
+              "Largest per-pixel difference (max over RGB) where both covered, 0..255. Click 'inspect' to pin "
+              "that pixel.");
+    if (m.hasMaxAbsDiffAt()) {
+      ImGui::SameLine();
+      if (ImGui::SmallButton("inspect")) pinPixel(PixelPos{m.maxAbsDiffX, m.maxAbsDiffY});
+      itemTooltip("Pin the first pixel (top-left scan) with the largest difference in the inspector.");
+    }
     metricRow("mean |diff|, RMSE", number(m.meanAbsDiff, "%.4f") + ", " + number(m.rmse, "%.4f") + " levels",
               "Over pixels both covered x 3 channels.");
     metricRow("PSNR", number(m.psnr, "%.2f dB"), "20 log10(255 / RMSE), capped at 100 dB.");

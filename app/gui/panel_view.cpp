@@ -178,6 +178,7 @@ void GuiApp::drawViewMessages(ImVec2 regionMin, ImVec2 regionSize) {
   };
   if (!sceneError_.empty()) box(sceneError_, kErrorBanner, IM_COL32(255, 235, 235, 255), true);
   if (!pinWarning_.empty()) box(pinWarning_, kMessageBackground, IM_COL32(255, 200, 90, 255));
+  if (!lightsHint_.empty()) box(lightsHint_, kMessageBackground, IM_COL32(220, 220, 220, 255));
   if (!screenshotMessage_.empty() && glfwGetTime() - screenshotMessageTime_ < kMessageSeconds) {
     box(screenshotMessage_, kMessageBackground, IM_COL32(220, 220, 220, 255));
   }
@@ -199,6 +200,10 @@ void GuiApp::drawViewCaption() {
     text += shown.cpu == shown.gl ? "; both images show edit " + std::to_string(shown.cpu)
                                   : "; CPU shows edit " + std::to_string(shown.cpu) + ", GL edit " +
                                         std::to_string(shown.gl) + " (the CPU is catching up)";
+  }
+  if (doc_.scene.settings.view == View::Depth) {
+    text += prefs_.linearDepth ? "; depth shown linearised (eye distance, near black, far white)"
+                               : "; window depth (0 black at near, 1 white at far)";
   }
   hintText(text.c_str());
 }
@@ -458,6 +463,25 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
     }
   }
 
+  // Lights ticked but not on screen get a hint (drawViewMessages): a marker nobody sees
+  // does not say where the light went.
+  lightsHint_.clear();
+  if (prefs_.showLights && renderBlocker_.empty() && renderWidth_ > 0 && renderHeight_ > 0) {
+    std::string behind, outside;
+    for (std::size_t i = 0; i < doc_.scene.lights.size(); ++i) {
+      const std::optional<ImVec2> at =
+          projectToRect(doc_.scene.camera, doc_.scene.lights[i].posWorld, image, renderWidth_, renderHeight_);
+      std::string& list = !at ? behind : outside;
+      if (at && image.contains(*at)) continue;
+      list += (list.empty() ? "L" : ", L") + std::to_string(i);
+    }
+    if (!behind.empty()) lightsHint_ += behind + " behind the camera";
+    if (!outside.empty()) lightsHint_ += (lightsHint_.empty() ? "" : "; ") + outside + " outside the image";
+    if (!lightsHint_.empty()) {
+      lightsHint_ = "Lights off screen: " + lightsHint_ +
+                    ". Orbit or zoom out to see them, or move them in the Scene tab (Lights, Position).";
+    }
+  }
   // The lights, in every image: a disc of the light's diffuse colour, and its index.
   if (prefs_.showLights && renderBlocker_.empty() && renderWidth_ > 0 && renderHeight_ > 0) {
     for (const Rect& slot : slots) {

@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace twr::gui {
 
@@ -47,6 +48,8 @@ struct GuiPrefs {
   // (panel_sizing.h); a value below the panel's minimum is raised to it when used.
   float controlsWidth = 0.0f;
   float statsHeight = 0.0f;
+  bool linearDepth = false;  // the Depth view shows the eye distance between near and far (debug_views.h)
+  std::vector<std::string> recentScenes;  // newest first, at most kMaxRecentScenes
 };
 
 // Largest panel size the settings file may hold, points (inclusive).

@@ -22,12 +22,15 @@ void itemTooltip(const char* text);
 // One radio button per value, on one line after the label (the first button at labelWidth
 // from the line start when it is > 0, so rows line up); values are named with toString().
 // Returns true when the value changed.
+// `help`, when given, is the tooltip of the label and of every button.
 template <typename Enum, std::size_t N>
-bool enumRadio(const char* label, Enum& value, const Enum (&values)[N], float labelWidth = 0.0f) {
+bool enumRadio(const char* label, Enum& value, const Enum (&values)[N], float labelWidth = 0.0f,
+               const char* help = nullptr) {
   bool changed = false;
   ImGui::PushID(label);
   ImGui::AlignTextToFramePadding();
   ImGui::TextUnformatted(label);
+  if (help) itemTooltip(help);
   for (std::size_t i = 0; i < N; ++i) {
     const std::string name(toString(values[i]));
     // A button that would not fit on the line starts a new one at labelWidth, so a narrow
@@ -47,6 +50,7 @@ bool enumRadio(const char* label, Enum& value, const Enum (&values)[N], float la
       value = values[i];
       changed = true;
     }
+    if (help) itemTooltip(help);
   }
   ImGui::PopID();
   return changed;
