@@ -1,6 +1,7 @@
 // Keeping both backends' frames, the diff and the pinned pixel's probes in step with the
 // scene: GL renders on this (the UI) thread in the window's context, the CPU on the worker.
 #include "app/gui/app.h"
+#include "app/gui/text_concat.h"
 #include "app/gui/debug_views.h"
 
 #include "compare/heatmap.h"
@@ -59,7 +60,7 @@ void GuiApp::syncRenders() {
     // Times at another size are another workload: start the medians again.
     // The first size of a run keeps the reason it had ("scene loaded").
     if (timedWidth_ != 0) {
-      const std::string reason = "render size " + std::to_string(width) + " x " + std::to_string(height);
+      const std::string reason = concat("render size ", width, " x ", height);
       cpuMs_.restart(reason);
       glMs_.restart(reason);
     }
@@ -69,10 +70,8 @@ void GuiApp::syncRenders() {
   if (pin_.pixel && (pin_.pixel->x < 0 || pin_.pixel->x >= width || pin_.pixel->yTop < 0 || pin_.pixel->yTop >= height)) {
     if (!commandLinePinChecked_ && options_.pin && *pin_.pixel == *options_.pin) {
       // Said, not silently dropped: the render size is only known now.
-      pinWarning_ = "--pin " + std::to_string(pin_.pixel->x) + "," + std::to_string(pin_.pixel->yTop) +
-                    " is outside the " + std::to_string(width) + " x " + std::to_string(height) +
-                    " px render (x in [0, " + std::to_string(width - 1) + "], y in [0, " + std::to_string(height - 1) +
-                    "]): nothing is pinned.";
+      pinWarning_ = concat("--pin ", pin_.pixel->x, ',', pin_.pixel->yTop, " is outside the ", width, " x ", height,
+                           " px render (x in [0, ", width - 1, "], y in [0, ", height - 1, "]): nothing is pinned.");
       std::cerr << "twinraster-gui: warning: " << pinWarning_ << "\n";
     }
     pinPixel(std::nullopt);

@@ -5,6 +5,7 @@
 // shown images and the diff come from the same edit.
 #pragma once
 
+#include "app/gui/text_concat.h"
 #include <cstdint>
 #include <string>
 
@@ -35,10 +36,10 @@ inline std::string pairNote(const ShownRevisions& shown) {
     case PairState::Missing:
       return "no diff: one image is missing";
     case PairState::DifferentEdits:
-      return "no diff: CPU shows edit " + std::to_string(shown.cpu) + ", GL edit " + std::to_string(shown.gl) +
-             " (different edits; the CPU is catching up)";
+      return concat("no diff: CPU shows edit ", shown.cpu, ", GL edit ", shown.gl,
+                    " (different edits; the CPU is catching up)");
     case PairState::SameEditNoDiff:
-      return "no diff yet for edit " + std::to_string(shown.cpu);
+      return concat("no diff yet for edit ", shown.cpu);
     case PairState::SameEdit:
       break;
   }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "app/gui/moving_median.h"
+#include "app/gui/text_concat.h"
 
 #include <cstddef>
 #include <optional>
@@ -47,13 +48,13 @@ class FrameTimes {
   // What the median covers, e.g. "median of the last 7 frames since scene loaded (first 2
   // skipped)", or "waiting: 1 of 2 cold frames skipped since scene loaded".
   std::string describe() const {
-    const std::string since = reason_.empty() ? "" : " since " + reason_;
+    const std::string since = reason_.empty() ? std::string() : concat(" since ", reason_);
     if (counted_ == 0) {
-      return "no frame timed yet" + since + " (the first " + std::to_string(coldFrames_) + " are skipped: " +
-             std::to_string(seen_ < coldFrames_ ? seen_ : coldFrames_) + " seen)";
+      return concat("no frame timed yet", since, " (the first ", coldFrames_, " are skipped: ",
+                    seen_ < coldFrames_ ? seen_ : coldFrames_, " seen)");
     }
-    return "median of the last " + std::to_string(counted_) + (counted_ == 1 ? " frame" : " frames") + since +
-           " (first " + std::to_string(coldFrames_) + " skipped)";
+    return concat("median of the last ", counted_, counted_ == 1 ? " frame" : " frames", since, " (first ",
+                  coldFrames_, " skipped)");
   }
 
  private:

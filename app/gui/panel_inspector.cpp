@@ -2,6 +2,7 @@
 // debug view read back from both at that pixel, and the CPU pixel trace (which triangles
 // reach it, clipping, barycentrics, uv, T/B/N, the normal-map texel, each lighting term).
 #include "app/gui/app.h"
+#include "app/gui/text_concat.h"
 #include "app/gui/debug_views.h"
 #include "app/gui/ui_widgets.h"
 
@@ -181,9 +182,9 @@ void GuiApp::drawTraceSection(const PixelTrace& trace) {
     const TriangleVisit& visit = trace.visits[n];
     ImGui::PushID(static_cast<int>(n));
     const bool isWinner = &visit == winner;
-    const std::string label = "#" + std::to_string(n + 1) + " triangle " + std::to_string(visit.triangleId) + " ('" +
-                              visit.nodeName + "' " + std::to_string(visit.triangleInMesh) + "): " +
-                              toString(visit.outcome) + (isWinner ? "  <- wrote the pixel" : "");
+    const std::string label = concat('#', n + 1, " triangle ", visit.triangleId, " ('", visit.nodeName, "' ",
+                                     visit.triangleInMesh, "): ", toString(visit.outcome),
+                                     isWinner ? "  <- wrote the pixel" : "");
     if (isWinner) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.6f, 1.0f, 0.6f, 1.0f));
     const bool open = ImGui::TreeNodeEx("##visit", isWinner ? ImGuiTreeNodeFlags_DefaultOpen : 0, "%s", label.c_str());
     if (isWinner) ImGui::PopStyleColor();

@@ -1,6 +1,7 @@
 // Stats: per-backend frame times (moving median) and pipeline counts, the GL context, and
 // the live diff metrics of the last frame pair both backends rendered from the same edit.
 #include "app/gui/app.h"
+#include "app/gui/text_concat.h"
 #include "app/gui/ui_widgets.h"
 
 #include <cstdio>
@@ -64,12 +65,12 @@ void GuiApp::drawStatsPanel() {
     ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(kCpuAccent), "CPU");
     ImGui::TableSetColumnIndex(2);
     ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(kGlAccent), "GL");
-    const std::string timingHelp =
+    const std::string timingHelp = concat(
         "Wall time of render(): CPU on its worker thread, GL including the read-back of every buffer. The median "
-        "of the last " + std::to_string(kTimingWindow) + " frames at most; it starts again when a scene is loaded, "
-        "the render size changes or the CPU path changes, and skips the first " +
-        std::to_string(kColdFramesSkipped) + " frames after that (cold: shader compilation, uploads, allocation).\nCPU: " +
-        cpuMs_.describe() + ".\nGL: " + glMs_.describe() + ".";
+        "of the last ", kTimingWindow, " frames at most; it starts again when a scene is loaded, the render size "
+        "changes or the CPU path changes, and skips the first ", kColdFramesSkipped,
+        " frames after that (cold: shader compilation, uploads, allocation).\nCPU: ", cpuMs_.describe(),
+        ".\nGL: ", glMs_.describe(), '.');
     row("frame, median", milliseconds(cpuMs_.median()), milliseconds(glMs_.median()), timingHelp.c_str());
     row("  frames in it", std::to_string(cpuMs_.counted()), std::to_string(glMs_.counted()), timingHelp.c_str());
     row("last frame", cpu ? milliseconds(cpu->milliseconds) : "-", gl ? milliseconds(gl->milliseconds) : "-",
@@ -101,7 +102,7 @@ void GuiApp::drawStatsPanel() {
                       static_cast<double>(ImGui::GetIO().Framerate), window_->glVersion().c_str(),
                       window_->glRenderer().c_str());
 
-  sectionTitle(diff_.result ? ("Diff (CPU vs GL, both of edit " + std::to_string(diff_.revision) + ")").c_str()
+  sectionTitle(diff_.result ? concat("Diff (CPU vs GL, both of edit ", diff_.revision, ')').c_str()
                             : "Diff (CPU vs GL, same edit)");
   if (!diff_.result) {
     hintText(diff_.error.empty() ? "Waiting for both backends to finish a frame of the same edit." : diff_.error.c_str());
@@ -110,10 +111,10 @@ void GuiApp::drawStatsPanel() {
   const CompareMetrics& m = diff_.result->metrics;
   if (diff_.revision != doc_.revision) {
     warningText(!renderBlocker_.empty()
-                    ? "These numbers are for edit " + std::to_string(diff_.revision) +
-                          "; nothing renders until this is fixed: " + renderBlocker_
-                    : "These numbers are for edit " + std::to_string(diff_.revision) + "; the CPU is rendering edit " +
-                          std::to_string(doc_.revision) + ".");
+                    ? concat("These numbers are for edit ", diff_.revision, "; nothing renders until this is fixed: ",
+                             renderBlocker_)
+                    : concat("These numbers are for edit ", diff_.revision, "; the CPU is rendering edit ",
+                             doc_.revision, '.'));
   }
   if (ImGui::BeginTable("##metrics", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
     const std::string maxAt = m.hasMaxAbsDiffAt()

@@ -1,6 +1,7 @@
 // The view panel: toolbar, the images in the chosen view mode, mouse camera control and
 // pixel pinning, and a status line about the frames on screen.
 #include "app/gui/app.h"
+#include "app/gui/text_concat.h"
 #include "app/gui/camera_control.h"
 #include "app/gui/ui_widgets.h"
 
@@ -178,12 +179,22 @@ void GuiApp::drawViewMessages(ImVec2 regionMin, ImVec2 regionSize) {
   };
   if (!sceneError_.empty()) box(sceneError_, kErrorBanner, IM_COL32(255, 235, 235, 255), true);
   if (!pinWarning_.empty()) box(pinWarning_, kMessageBackground, IM_COL32(255, 200, 90, 255));
-  if (!lightsHint_.empty()) box(lightsHint_, kMessageBackground, IM_COL32(220, 220, 220, 255));
   if (!screenshotMessage_.empty() && glfwGetTime() - screenshotMessageTime_ < kMessageSeconds) {
     box(screenshotMessage_, kMessageBackground, IM_COL32(220, 220, 220, 255));
   }
+  // The lights hint stays as long as the lights are off screen: at the bottom, clear of
+  // the image tags at the top.
+  if (!lightsHint_.empty()) {
+    const ImVec2 size = ImGui::CalcTextSize(lightsHint_.c_str(), nullptr, false, wrap);
+    const ImVec2 min(regionMin.x + padding, regionMin.y + regionSize.y - size.y - 3.0f * padding);
+    draw->AddRectFilled(min, ImVec2(min.x + size.x + 2.0f * padding, min.y + size.y + 2.0f * padding),
+                        IM_COL32(0, 0, 0, 150), 3.0f);
+    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(min.x + padding, min.y + padding),
+                  IM_COL32(200, 200, 200, 255), lightsHint_.c_str(), nullptr, wrap);
+  }
   if (probe_.enabled()) {
     nlohmann::json& state = probe_.state();
+    state["lights_hint"] = lightsHint_;
     state["scene_error"] = sceneError_;
     state["screenshot_message"] =
         glfwGetTime() - screenshotMessageTime_ < kMessageSeconds ? screenshotMessage_ : std::string();
@@ -197,9 +208,9 @@ void GuiApp::drawViewCaption() {
   if (!renderBlocker_.empty()) {
     text += "; nothing renders: " + renderBlocker_;
   } else if (shown.cpu != 0 && shown.gl != 0) {
-    text += shown.cpu == shown.gl ? "; both images show edit " + std::to_string(shown.cpu)
-                                  : "; CPU shows edit " + std::to_string(shown.cpu) + ", GL edit " +
-                                        std::to_string(shown.gl) + " (the CPU is catching up)";
+    text += shown.cpu == shown.gl
+                ? concat("; both images show edit ", shown.cpu)
+                : concat("; CPU shows edit ", shown.cpu, ", GL edit ", shown.gl, " (the CPU is catching up)");
   }
   if (doc_.scene.settings.view == View::Depth) {
     text += prefs_.linearDepth ? "; depth shown linearised (eye distance, near black, far white)"
@@ -217,7 +228,7 @@ void GuiApp::drawViewToolbar() {
       prefs_.viewMode = mode;
       flickerStart_ = glfwGetTime();
     }
-    probe_.item(("mode_" + std::string(toString(mode))).c_str());
+    probe_.item(concat("mode_", toString(mode)).c_str());
     if (selected) ImGui::PopStyleColor();
     ImGui::SameLine(0.0f, 2.0f);
   }
@@ -366,7 +377,7 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
   const auto details = [this](const BackendFrame& frame) {
     std::string text = ageText(frame);
     if (frame.revision == 0) return text;
-    text += ", edit " + std::to_string(frame.revision);
+    text += concat(", edit ", frame.revision);
     if (frame.revision != doc_.revision) {
       text += !renderBlocker_.empty() ? " (nothing renders: invalid camera)" : ", rendering the new one...";
     }
@@ -428,7 +439,7 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
       const ImageTexture& texture = prefs_.diffShowClasses ? classTexture_ : heatTexture_;
       if (diff_.result) {
         drawTexture(draw, texture, fitRect(slots.front(), texture.width(), texture.height()));
-        std::string details = "CPU and GL of edit " + std::to_string(diff_.revision);
+        std::string details = concat("CPU and GL of edit ", diff_.revision);
         if (diff_.revision != doc_.revision) {
           details += !renderBlocker_.empty() ? " (nothing renders: invalid camera)" : "; the CPU is rendering the new one...";
         }
@@ -473,13 +484,12 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
           projectToRect(doc_.scene.camera, doc_.scene.lights[i].posWorld, image, renderWidth_, renderHeight_);
       std::string& list = !at ? behind : outside;
       if (at && image.contains(*at)) continue;
-      list += (list.empty() ? "L" : ", L") + std::to_string(i);
+      list += concat(list.empty() ? "L" : ", L", i);
     }
     if (!behind.empty()) lightsHint_ += behind + " behind the camera";
     if (!outside.empty()) lightsHint_ += (lightsHint_.empty() ? "" : "; ") + outside + " outside the image";
     if (!lightsHint_.empty()) {
-      lightsHint_ = "Lights off screen: " + lightsHint_ +
-                    ". Orbit or zoom out to see them, or move them in the Scene tab (Lights, Position).";
+      lightsHint_ = "Lights off screen: " + lightsHint_ + " (orbit or zoom out to see their markers).";
     }
   }
   // The lights, in every image: a disc of the light's diffuse colour, and its index.
@@ -496,7 +506,7 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
         draw->AddCircleFilled(*at, radius + 1.5f, IM_COL32(0, 0, 0, 220));
         draw->AddCircleFilled(*at, radius, IM_COL32(static_cast<int>(colour.r), static_cast<int>(colour.g),
                                                     static_cast<int>(colour.b), 255));
-        const std::string name = "L" + std::to_string(i);
+        const std::string name = concat('L', i);
         draw->AddText(ImVec2(at->x + radius + 3.0f, at->y - radius - 3.0f), IM_COL32(255, 255, 255, 230), name.c_str());
       }
       draw->PopClipRect();
@@ -623,7 +633,7 @@ void GuiApp::drawStatusLine() {
   }
   const PixelPos p = *hovered_;
   const ShownRevisions shown = shownRevisions();
-  std::string line = "(" + std::to_string(p.x) + ", " + std::to_string(p.yTop) + ")";
+  std::string line = concat('(', p.x, ", ", p.yTop, ')');
   ImGui::Text("(%d, %d)", p.x, p.yTop);
   const auto show = [&](const char* name, ImU32 accent, const std::shared_ptr<const RenderOutput>& output,
                         std::uint64_t revision) {
@@ -647,7 +657,7 @@ void GuiApp::drawStatusLine() {
     std::snprintf(details, sizeof details, "z %.5f (edit %llu)", static_cast<double>(output->depth[i]),
                   static_cast<unsigned long long>(revision));
     ImGui::TextDisabled("%s", details);
-    line += " " + std::to_string(rgba[0]) + " " + std::to_string(rgba[1]) + " " + std::to_string(rgba[2]) + " " + details;
+    line += concat(' ', int{rgba[0]}, ' ', int{rgba[1]}, ' ', int{rgba[2]}, ' ', details);
   };
   show("CPU", kCpuAccent, cpuFrame_.output, shown.cpu);
   show("GL", kGlAccent, glFrame_.output, shown.gl);
@@ -657,8 +667,8 @@ void GuiApp::drawStatusLine() {
   if (pairState(shown) == PairState::SameEdit && diff_.result && diff_.result->pixels.width == renderWidth_ &&
       diff_.result->pixels.height == renderHeight_) {
     const std::size_t i = diff_.result->pixels.index(p.x, p.yTop);
-    const std::string text = "diff " + std::to_string(diff_.result->pixels.diffLevels[i]) + " (" +
-                             std::string(toString(diff_.result->pixels.pixelClass[i])) + ")";
+    const std::string text =
+        concat("diff ", diff_.result->pixels.diffLevels[i], " (", toString(diff_.result->pixels.pixelClass[i]), ')');
     ImGui::TextUnformatted(text.c_str());
     line += " " + text;
     diffShown = true;
