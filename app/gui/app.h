@@ -6,6 +6,7 @@
 #pragma once
 
 #include "app/gui/cpu_worker.h"
+#include "app/gui/debug_views.h"
 #include "app/gui/frame_pairing.h"
 #include "app/gui/frame_timing.h"
 #include "app/gui/gui_options.h"
@@ -177,7 +178,8 @@ class GuiApp {
   double flickerStart_ = 0.0;
   float leftPanelWidth_ = 0.0f, bottomPanelHeight_ = 0.0f;  // as shown this frame, ImGui units
   std::string pinWarning_;  // why the --pin pixel could not be pinned
-  std::string lightsHint_;  // which lights are ticked but off screen, else empty
+  std::string lightsHint_;
+  EyeRange linearDepthRange_;  // the grey ramp of the linearised depth view, world units  // which lights are ticked but off screen, else empty
   bool commandLinePinChecked_ = false;
   // Per panel, the last exception its drawing threw and when (glfwGetTime(), seconds).
   struct PanelFault {

@@ -231,8 +231,13 @@ void GuiApp::refreshTextures() {
   // The Depth view linearised for display only: the diff and the read-backs keep window depth.
   const Camera& camera = doc_.scene.camera;
   const bool linear = doc_.scene.settings.view == View::Depth && prefs_.linearDepth;
+  if (linear && (cpuTextureStale_ || glTextureStale_)) {
+    // One mapping for both images, from the nearest to the farthest drawn pixel of either.
+    linearDepthRange_ = drawnEyeRange({cpuFrame_.output.get(), glFrame_.output.get()}, camera.near, camera.far);
+    cpuTextureStale_ = glTextureStale_ = true;
+  }
   const auto shown = [&](const RenderOutput& output) {
-    return linear ? viewImage(withLinearDepth(output, camera.near, camera.far), background)
+    return linear ? viewImage(withLinearDepth(output, camera.near, camera.far, linearDepthRange_), background)
                   : viewImage(output, background);
   };
   if (cpuTextureStale_) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace twr::gui {
 
@@ -30,7 +31,7 @@ const char* viewLegend(View view) {
     case View::Depth:
       return "Window depth d as grey: black 0 at the near plane, white 1 at the far plane. d is 1 / z-like, so "
              "nearly everything beyond a few near distances is almost white; 'linearised' shows the eye "
-             "distance between near (black) and far (white) instead.";
+             "distance instead, from the nearest drawn pixel (black) to the farthest (white).";
     case View::LightTangent:
       return "Direction to light 0 in tangent space as (L + 1) / 2: red = along T, green = along B, blue = along "
              "N. Blue-ish: the light is above the surface. Grey (128, 128, 128): no light.";
@@ -74,12 +75,36 @@ float linearDepth(float windowDepth, float near, float far) {
   return static_cast<float>(std::clamp((zEye - n) / (f - n), 0.0, 1.0));
 }
 
-RenderOutput withLinearDepth(const RenderOutput& output, float near, float far) {
+float eyeDistance(float windowDepth, float near, float far) {
+  if (!(near > 0.0f) || !(far > near) || !std::isfinite(far)) return near;
+  return near + linearDepth(windowDepth, near, far) * (far - near);
+}
+
+EyeRange drawnEyeRange(std::initializer_list<const RenderOutput*> outputs, float near, float far) {
+  EyeRange range{std::numeric_limits<float>::max(), 0.0f};
+  bool any = false;
+  for (const RenderOutput* output : outputs) {
+    if (!output) continue;
+    for (std::size_t i = 0; i < output->depth.size() && i * 4 + 3 < output->rgba.size(); ++i) {
+      if (output->rgba[i * 4 + 3] == 0) continue;
+      const float distance = eyeDistance(output->depth[i], near, far);
+      range.nearest = std::min(range.nearest, distance);
+      range.farthest = std::max(range.farthest, distance);
+      any = true;
+    }
+  }
+  return any ? range : EyeRange{};
+}
+
+RenderOutput withLinearDepth(const RenderOutput& output, float near, float far, EyeRange range) {
   RenderOutput out = output;
+  const float span = range.farthest - range.nearest;
   const std::size_t count = out.depth.size();
   for (std::size_t i = 0; i < count && i * 4 + 3 < out.rgba.size(); ++i) {
     if (out.rgba[i * 4 + 3] == 0) continue;
-    const auto grey = static_cast<std::uint8_t>(std::lround(linearDepth(out.depth[i], near, far) * 255.0f));
+    const float distance = eyeDistance(out.depth[i], near, far);
+    const float shade = span > 0.0f ? std::clamp((distance - range.nearest) / span, 0.0f, 1.0f) : 0.0f;
+    const auto grey = static_cast<std::uint8_t>(std::lround(shade * 255.0f));
     out.rgba[i * 4 + 0] = out.rgba[i * 4 + 1] = out.rgba[i * 4 + 2] = grey;
   }
   return out;

@@ -9,6 +9,7 @@
 #include "scene/renderer.h"
 #include "scene/settings.h"
 
+#include <initializer_list>
 #include <string>
 
 namespace twr::gui {
@@ -28,8 +29,24 @@ std::string describeViewSample(View view, const PixelSample& sample);
 // non-finite inputs clamp to [0, 1]; near >= far gives d unchanged.
 float linearDepth(float windowDepth, float near, float far);
 
-// The output with its colour replaced by linearDepth of its depth buffer as grey; pixels
-// nothing covered (alpha 0) keep their colour and alpha. For the Depth view only.
-RenderOutput withLinearDepth(const RenderOutput& output, float near, float far);
+// Window depth d back to the eye distance along -z, world units: 2 n f / ((f + n) - z_ndc (f - n)).
+// Clamped to [near, far]; near >= far gives near.
+float eyeDistance(float windowDepth, float near, float far);
+
+// The nearest and farthest eye distance of the drawn pixels (alpha > 0), world units.
+struct EyeRange {
+  float nearest = 0.0f;
+  float farthest = 0.0f;
+  bool empty() const { return !(farthest > 0.0f) || farthest < nearest; }
+};
+// Over every output given (both backends, so both images share one mapping); empty when none
+// has a drawn pixel.
+EyeRange drawnEyeRange(std::initializer_list<const RenderOutput*> outputs, float near, float far);
+
+// The output with its colour replaced by the eye distance as grey, from range.nearest (black)
+// to range.farthest (white); pixels nothing covered (alpha 0) keep their colour and alpha.
+// For the Depth view only: most of a scene sits in a thin slice of window depth, but spreads
+// over the whole grey ramp here.
+RenderOutput withLinearDepth(const RenderOutput& output, float near, float far, EyeRange range);
 
 }  // namespace twr::gui

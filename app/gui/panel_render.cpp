@@ -94,11 +94,12 @@ void GuiApp::drawRenderingTab() {
               "(vectors as (v + 1) / 2, see docs/shading.md).");
   hintText(viewLegend(settings.view));
   if (settings.view == View::Depth) {
-    if (ImGui::Checkbox("linearised (eye distance, near = black, far = white)", &prefs_.linearDepth)) {
+    if (ImGui::Checkbox("linearised (eye distance)", &prefs_.linearDepth)) {
       cpuTextureStale_ = glTextureStale_ = true;
     }
-    itemTooltip("Shows the eye distance z_eye = 2 n f / ((f + n) - z_ndc (f - n)), mapped from near (black) to far "
-                "(white), instead of window depth. Display only: the diff, the hover line and the inspector keep "
+    itemTooltip("Shows the eye distance z_eye = 2 n f / ((f + n) - z_ndc (f - n)) instead of window depth, from the "
+                "nearest drawn pixel (black) to the farthest (white) of both images; the row above the images gives "
+                "the two distances in world units. Display only: the diff, the hover line and the inspector keep "
                 "window depth.");
   }
 

@@ -87,7 +87,7 @@ void GuiApp::drawStatsPanel() {
         "With Cull = none only the zero-area ones are counted, so this is rarely 0.");
     row("  drawn", cpuCount(&RenderStats::trianglesProduced), "n/a",
         "Reaching the rasterizer after clipping (a clipped triangle becomes a fan of several).");
-    row("fragments passing depth", cpuCount(&RenderStats::pixelsShaded), glCount(&RenderStats::pixelsShaded),
+    row("depth-test passes", cpuCount(&RenderStats::pixelsShaded), glCount(&RenderStats::pixelsShaded),
         "Fragments that passed the depth test when they were drawn (GL: GL_SAMPLES_PASSED), overdraw included: a "
         "surface drawn first and hidden later counts too. So it is not the covered pixel count, and the two "
         "backends may differ while their images match: where two surfaces lie at nearly the same depth (back "

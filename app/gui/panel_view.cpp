@@ -213,8 +213,14 @@ void GuiApp::drawViewCaption() {
                 : concat("; CPU shows edit ", shown.cpu, ", GL edit ", shown.gl, " (the CPU is catching up)");
   }
   if (doc_.scene.settings.view == View::Depth) {
-    text += prefs_.linearDepth ? "; depth shown linearised (eye distance, near black, far white)"
-                               : "; window depth (0 black at near, 1 white at far)";
+    char depthText[128];
+    if (prefs_.linearDepth && !linearDepthRange_.empty()) {
+      std::snprintf(depthText, sizeof depthText, "; depth linearised: eye distance %.3g (black) to %.3g (white) world units",
+                    static_cast<double>(linearDepthRange_.nearest), static_cast<double>(linearDepthRange_.farthest));
+    } else {
+      std::snprintf(depthText, sizeof depthText, "; window depth: 0 black at near, 1 white at far");
+    }
+    text += depthText;
   }
   hintText(text.c_str());
 }

@@ -58,17 +58,41 @@ TEST(DebugViews, LinearDepthGuardsItsInputs) {
   EXPECT_EQ(linearDepth(0.25f, 0.0f, 10.0f), 0.25f);  // no valid camera: unchanged
 }
 
-TEST(DebugViews, WithLinearDepthKeepsEmptyPixels) {
+TEST(DebugViews, EyeDistanceInvertsTheProjection) {
+  EXPECT_NEAR(eyeDistance(0.0f, 0.1f, 50.0f), 0.1f, 1e-6f);
+  EXPECT_NEAR(eyeDistance(1.0f, 0.1f, 50.0f), 50.0f, 1e-4f);
+}
+
+TEST(DebugViews, LinearDepthSpansTheDrawnRangeAndKeepsEmptyPixels) {
+  const float near = 0.1f, far = 50.0f;
+  // Window depth of eye distances 2 and 6: both above 0.95, nearly the same grey raw.
+  const auto windowDepth = [&](float zEye) {
+    return static_cast<float>(0.5 * (((far + near) - 2.0 * far * near / zEye) / (far - near)) + 0.5);
+  };
   RenderOutput output;
-  output.width = 2;
+  output.width = 3;
   output.height = 1;
-  output.rgba = {9, 9, 9, 0, 255, 255, 255, 255};
-  output.depth = {1.0f, 0.0f};
-  const RenderOutput linear = withLinearDepth(output, 0.1f, 10.0f);
-  EXPECT_EQ(linear.rgba[0], 9);
+  output.rgba = {9, 9, 9, 0, 255, 255, 255, 255, 255, 255, 255, 255};
+  output.depth = {1.0f, windowDepth(2.0f), windowDepth(6.0f)};
+  const EyeRange range = drawnEyeRange({&output, nullptr}, near, far);
+  ASSERT_FALSE(range.empty());
+  EXPECT_NEAR(range.nearest, 2.0f, 1e-2f);
+  EXPECT_NEAR(range.farthest, 6.0f, 1e-2f);
+  const RenderOutput linear = withLinearDepth(output, near, far, range);
+  EXPECT_EQ(linear.rgba[0], 9);  // nothing drawn: untouched
   EXPECT_EQ(linear.rgba[3], 0);
-  EXPECT_EQ(linear.rgba[4], 0);  // depth 0: at the near plane, black
+  EXPECT_EQ(linear.rgba[4], 0);  // the nearest drawn pixel: black
+  EXPECT_EQ(linear.rgba[8], 255);  // the farthest: white
   EXPECT_EQ(linear.rgba[7], 255);
+}
+
+TEST(DebugViews, NoDrawnPixelNoRange) {
+  RenderOutput output;
+  output.width = 1;
+  output.height = 1;
+  output.rgba = {0, 0, 0, 0};
+  output.depth = {1.0f};
+  EXPECT_TRUE(drawnEyeRange({&output}, 0.1f, 10.0f).empty());
 }
 
 TEST(ScenePicker, ListsTheJsonFilesSorted) {
