@@ -381,6 +381,7 @@ void GuiApp::frame(bool& finalFrame) {
     state["settled"] = settled();
   }
   probe_.endFrame();
+  interacting_ = dragMode_ != DragMode::None || ImGui::IsAnyItemActive();
   ImGui::Render();
 
   int width = 0, height = 0;

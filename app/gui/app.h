@@ -167,6 +167,7 @@ class GuiApp {
   bool cpuTextureStale_ = true, glTextureStale_ = true;
 
   DragMode dragMode_ = DragMode::None;
+  bool interacting_ = false;  // last frame: a drag over the image or an active widget (probeGl waits)
   int dragLight_ = -1;  // the light a DragMode::Light moves
   ImVec2 pressPos_{0.0f, 0.0f};
   bool dragged_ = false;

@@ -209,6 +209,9 @@ PixelSample GuiApp::glSampleAt(View view, PixelPos pixel) {
 
 void GuiApp::probeGl() {
   if (!pin_.pixel) return;
+  // Each view is a full GL frame on this thread: while the user drags or types, the UI
+  // frame already renders the main image, so the probe waits until the interaction ends.
+  if (interacting_) return;
   if (pin_.glRevision != doc_.revision) {
     pin_.gl = ViewSamples{};
     pin_.glError.clear();
