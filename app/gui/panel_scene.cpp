@@ -50,13 +50,18 @@ std::shared_ptr<const Texture>& mapSlot(Material& material, std::size_t which) {
 
 bool segmentsField(const char* label, int& value, int minimum) {
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
-  return ImGui::SliderInt(label, &value, minimum, kSegmentSliderMax);
+  const bool changed = ImGui::SliderInt(label, &value, minimum, kSegmentSliderMax);
+  itemTooltip("Subdivisions of the primitive, a count; more follow the round shape more closely. Ctrl+click to "
+              "type more than the slider offers.");
+  return changed;
 }
 
 bool dimensionField(const char* label, float& value) {
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
-  return ImGui::DragFloat(label, &value, kSizeDragSpeed, kMinDimension, kMaxCoordinate, "%.3f",
-                          ImGuiSliderFlags_AlwaysClamp);
+  const bool changed = ImGui::DragFloat(label, &value, kSizeDragSpeed, kMinDimension, kMaxCoordinate, "%.3f",
+                                        ImGuiSliderFlags_AlwaysClamp);
+  itemTooltip("World units (uv scale: texture repeats across the plane, no unit), before the node's scale.");
+  return changed;
 }
 
 int countNodesUsingMesh(const std::vector<Node>& nodes, int meshIndex) {
@@ -152,10 +157,11 @@ void GuiApp::drawNode(Node& node) {
   itemTooltip("Offset from the parent node, world units.");
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
   changed |= ImGui::DragFloat3("Rotate (deg)", &node.rotateDeg.x, kRotateDragSpeed, -720.0f, 720.0f, "%.1f");
-  itemTooltip("Applied X, then Y, then Z (right-handed).");
+  itemTooltip("Degrees about the node's X, then Y, then Z axis (right-handed).");
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
   changed |= ImGui::DragFloat3("Scale", &node.scale.x, kScaleDragSpeed, -kMaxCoordinate, kMaxCoordinate, "%.3f");
-  itemTooltip("A negative scale mirrors: the bitangent sign flips (see the tangent_transform setting).");
+  itemTooltip("Scale factor per axis, no unit. A negative scale mirrors: the bitangent sign flips (see the "
+              "tangent_transform setting).");
 
   const auto& materials = doc_.scene.materials;
   const std::string current = node.materialIndex >= 0 && node.materialIndex < static_cast<int>(materials.size())
