@@ -11,7 +11,7 @@ packages=(
   libtinyobjloader-dev libstb-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libbenchmark-dev
   libhwy-dev                 # Google Highway: the fast path's portable SIMD
-  xvfb xauth
+  xvfb xauth xdotool         # xdotool drives the desktop app in tests/gui/test_gui_scripted
   imagemagick                # writes the BMP, TGA and DDS files the texture tests read
   clang libclang-rt-14-dev   # libFuzzer and clang's sanitizers (scripts/run-fuzzers.sh)
   assimp-testmodels          # real-world OBJ files for fuzz/test_real_world_models.cpp

@@ -1,4 +1,5 @@
 #include "app/gui/app.h"
+#include "app/gui/scene_picker.h"
 
 #include "compare/heatmap.h"
 #include "compare/side_by_side.h"
@@ -11,7 +12,10 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <imgui_internal.h>
+
 #include <algorithm>
+#include <csignal>
 #include <cmath>
 #include <cstring>
 #include <ctime>
@@ -46,6 +50,12 @@ constexpr float kClearColour[3] = {0.08f, 0.08f, 0.10f};
 
 const char* const kUiFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 const char* const kMonoFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf";
+
+// Set by SIGTERM or SIGINT: the loop closes the window as if the user had, so the settings
+// are saved (a script or a test ends the app this way).
+volatile std::sig_atomic_t gQuitRequested = 0;
+
+extern "C" void requestQuit(int) { gQuitRequested = 1; }
 
 bool fileExists(const char* path) {
   std::error_code code;
@@ -129,6 +139,8 @@ GuiApp::GuiApp(GuiOptions options) : options_(std::move(options)) {
     pin_.pixel = options_.pin;
   }
   flickerStart_ = glfwGetTime();
+  std::signal(SIGTERM, requestQuit);
+  std::signal(SIGINT, requestQuit);
 }
 
 GuiApp::~GuiApp() {
@@ -162,9 +174,11 @@ void GuiApp::createWindow(bool compatibility) {
   // a frame still counts (ImGui 1.86 only sees keys held down at a frame's start).
   glfwSetWindowUserPointer(window_->window(), this);
   glfwSetKeyCallback(window_->window(), [](GLFWwindow* window, int key, int, int action, int) {
-    if (key == GLFW_KEY_F12 && action == GLFW_PRESS) {
-      static_cast<GuiApp*>(glfwGetWindowUserPointer(window))->windowShotRequested_ = true;
-    }
+    GuiApp& app = *static_cast<GuiApp*>(glfwGetWindowUserPointer(window));
+    if (key == GLFW_KEY_F12 && action == GLFW_PRESS) app.windowShotRequested_ = true;
+    // A press and its release between two frames: hold the key for the next frame (holdTappedKeys).
+    if (action == GLFW_PRESS) app.keysPressedSinceFrame_.insert(key);
+    if (action == GLFW_RELEASE && app.keysPressedSinceFrame_.count(key) != 0) app.keysToHold_.insert(key);
   });
   ImGui_ImplGlfw_InitForOpenGL(window_->window(), true);
   ImGui_ImplOpenGL3_Init("#version 330");
@@ -275,8 +289,13 @@ void GuiApp::openScene(const std::string& path) {
     std::error_code code;
     const std::filesystem::path absolute = std::filesystem::absolute(path, code);
     prefs_.lastScene = code ? path : absolute.lexically_normal().string();
+    rememberRecent(prefs_.recentScenes, prefs_.lastScene);
     scenePathInput_ = path;
     pin_ = PinState{};
+    // Another scene: the old scene's frame times say nothing about this one.
+    cpuMs_.restart("scene loaded");
+    glMs_.restart("scene loaded");
+    timingsFromRevision_ = doc_.revision;
     if (window_) {
       const std::string title = "twinraster - " + std::filesystem::path(path).filename().string();
       glfwSetWindowTitle(window_->window(), title.c_str());
@@ -305,14 +324,64 @@ bool GuiApp::settled() const {
   return true;
 }
 
+void GuiApp::holdTappedKeys() {
+  // ImGui 1.86 reads keys as "down at the start of a frame": a key pressed and released
+  // between two frames (a fast typist, xdotool, a loaded machine) would be lost. Such a key
+  // is held down for one frame and released at the next.
+  ImGuiIO& io = ImGui::GetIO();
+  const auto setDown = [&io](int key, bool down) {
+    if (key >= 0 && key < static_cast<int>(IM_ARRAYSIZE(io.KeysDown))) io.KeysDown[key] = down;
+  };
+  for (int key : keysHeld_) {
+    if (keysToHold_.count(key) == 0 && glfwGetKey(window_->window(), key) != GLFW_PRESS) setDown(key, false);
+  }
+  keysHeld_ = keysToHold_;
+  for (int key : keysHeld_) setDown(key, true);
+  keysToHold_.clear();
+  keysPressedSinceFrame_.clear();
+  io.KeyCtrl = io.KeysDown[GLFW_KEY_LEFT_CONTROL] || io.KeysDown[GLFW_KEY_RIGHT_CONTROL];
+  io.KeyShift = io.KeysDown[GLFW_KEY_LEFT_SHIFT] || io.KeysDown[GLFW_KEY_RIGHT_SHIFT];
+  io.KeyAlt = io.KeysDown[GLFW_KEY_LEFT_ALT] || io.KeysDown[GLFW_KEY_RIGHT_ALT];
+  io.KeySuper = io.KeysDown[GLFW_KEY_LEFT_SUPER] || io.KeysDown[GLFW_KEY_RIGHT_SUPER];
+}
+
 void GuiApp::frame(bool& finalFrame) {
-  syncRenders();
+  // No exception may end the app: the renders report theirs per backend, the panels theirs
+  // per panel (drawGuarded); anything else is shown over the whole window.
+  try {
+    syncRenders();
+  } catch (const std::exception& e) {
+    showScreenshotMessage(std::string("Internal error while updating the renders: ") + e.what());
+    std::cerr << "twinraster-gui: error: " << e.what() << "\n";
+  }
   if (finalFrame) finalFrame = settled();
 
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
+  holdTappedKeys();
   ImGui::NewFrame();
-  drawLayout();
+  probe_.beginFrame();
+  try {
+    drawLayout();
+  } catch (const std::exception& e) {
+    ImGui::ErrorCheckEndFrameRecover(nullptr);
+    showScreenshotMessage(std::string("Internal error while drawing the window: ") + e.what());
+    std::cerr << "twinraster-gui: error: " << e.what() << "\n";
+  }
+  if (probe_.enabled()) {
+    nlohmann::json& state = probe_.state();
+    state["render"] = {renderWidth_, renderHeight_};
+    state["edit"] = doc_.revision;
+    state["cpu_edit"] = cpuFrame_.revision;
+    state["gl_edit"] = glFrame_.revision;
+    state["diff_edit"] = diff_.result ? diff_.revision : 0;
+    state["render_blocker"] = renderBlocker_;
+    state["camera"] = {{"near", doc_.scene.camera.near}, {"far", doc_.scene.camera.far}};
+    state["frames"] = ImGui::GetFrameCount();
+    state["settled"] = settled();
+  }
+  probe_.endFrame();
+  interacting_ = dragMode_ != DragMode::None || ImGui::IsAnyItemActive();
   ImGui::Render();
 
   int width = 0, height = 0;
@@ -330,6 +399,7 @@ int GuiApp::run() {
   int exitCode = kExitOk;
   bool idle = false;
   while (!glfwWindowShouldClose(window_->window())) {
+    if (gQuitRequested) break;
     recreateWindowIfNeeded();
     if (options_.frames > 0) glfwPollEvents();  // scripted runs go as fast as they can
     else glfwWaitEventsTimeout(idle ? kIdleWaitSeconds : kBusyFrameSeconds);

@@ -6,26 +6,29 @@
 #pragma once
 
 #include "app/gui/cpu_worker.h"
+#include "app/gui/debug_views.h"
+#include "app/gui/frame_pairing.h"
+#include "app/gui/frame_timing.h"
 #include "app/gui/gui_options.h"
 #include "app/gui/image_texture.h"
-#include "app/gui/moving_median.h"
+#include "app/gui/panel_sizing.h"
 #include "app/gui/pixel_probe.h"
 #include "app/gui/prefs.h"
 #include "app/gui/scene_doc.h"
+#include "app/gui/test_probe.h"
 #include "compare/metrics.h"
 #include "glrender/context_glfw.h"
 
 #include <imgui.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 
 namespace twr::gui {
-
-// Frame times kept for the moving median (samples).
-inline constexpr std::size_t kTimingWindow = 31;
 
 // A finished frame of one backend as the UI shows it.
 struct BackendFrame {
@@ -75,6 +78,7 @@ class GuiApp {
   void recreateWindowIfNeeded();
   void openScene(const std::string& path);
   void frame(bool& finalFrame);
+  void holdTappedKeys();
   bool settled() const;
   void saveWindowScreenshot(const std::string& path);
   void saveViewScreenshots();
@@ -90,10 +94,17 @@ class GuiApp {
   void refreshTextures();
   PixelSample glSampleAt(View view, PixelPos pixel);
   bool renderInputsValid() const { return renderBlocker_.empty(); }
+  // Checks the camera again: a panel drawn after an edit must not use a stale verdict.
+  void refreshRenderBlocker();
+  ShownRevisions shownRevisions() const;
   void pinPixel(std::optional<PixelPos> pixel);
 
   // ---- panels ----
   void drawLayout();
+  // Draws one panel's contents; an exception thrown while drawing is caught, the panel's
+  // ImGui stacks are unwound, and the message is shown in red at the panel's top.
+  void drawGuarded(const char* panel, const std::function<void()>& draw);
+  void drawPanelFault(const char* panel);
   void drawControlsPanel();
   void drawRenderingTab();
   void drawCpuRendererSection();
@@ -106,6 +117,8 @@ class GuiApp {
   void drawViewPanel();
   void drawViewToolbar();
   void drawDiffLegend();
+  void drawViewCaption();
+  void drawViewMessages(ImVec2 regionMin, ImVec2 regionSize);
   void drawImages(ImVec2 regionMin, ImVec2 regionSize);
   void handleImageMouse(ImVec2 regionMin, ImVec2 regionSize);
   void drawStatusLine();
@@ -119,6 +132,7 @@ class GuiApp {
   GuiPrefs prefs_;
   std::string iniPath_;  // ImGui keeps a pointer to it
   std::string prefsWarning_;
+  TestProbe probe_;
 
   std::unique_ptr<GlfwContext> window_;
   float uiScale_ = 1.0f;  // layout sizes in ImGui units per point at scale 1 (see the constructor)
@@ -141,7 +155,11 @@ class GuiApp {
   BackendFrame cpuFrame_, glFrame_;
   std::uint64_t cpuSubmitted_ = 0;  // revision of the last full CPU job
   std::map<std::uint64_t, std::shared_ptr<const RenderOutput>> glForCpu_;  // GL frames awaiting their CPU twin
-  MovingMedian cpuMs_{kTimingWindow}, glMs_{kTimingWindow};
+  FrameTimes cpuMs_, glMs_;
+  // What the timings were taken at; a change restarts them (see frame_timing.h).
+  int timedWidth_ = 0, timedHeight_ = 0;
+  std::string timedCpuPath_;
+  std::uint64_t timingsFromRevision_ = 0;  // CPU frames of older edits (another scene) are not timed
   DiffState diff_;
   PinState pin_;
 
@@ -149,6 +167,7 @@ class GuiApp {
   bool cpuTextureStale_ = true, glTextureStale_ = true;
 
   DragMode dragMode_ = DragMode::None;
+  bool interacting_ = false;  // last frame: a drag over the image or an active widget (probeGl waits)
   int dragLight_ = -1;  // the light a DragMode::Light moves
   ImVec2 pressPos_{0.0f, 0.0f};
   bool dragged_ = false;
@@ -158,7 +177,20 @@ class GuiApp {
   bool windowShotRequested_ = false;  // F12: save the whole window after this frame is drawn
   bool selectSceneTab_ = false;       // show the Scene tab once (a scene failed to open)
   double flickerStart_ = 0.0;
-  float leftPanelWidth_ = 0.0f, bottomPanelHeight_ = 0.0f;
+  float leftPanelWidth_ = 0.0f, bottomPanelHeight_ = 0.0f;  // as shown this frame, ImGui units
+  std::string pinWarning_;  // why the --pin pixel could not be pinned
+  std::string lightsHint_;
+  EyeRange linearDepthRange_;  // the grey ramp of the linearised depth view, world units  // which lights are ticked but off screen, else empty
+  bool commandLinePinChecked_ = false;
+  // Per panel, the last exception its drawing threw and when (glfwGetTime(), seconds).
+  struct PanelFault {
+    std::string message;
+    double time = 0.0;
+  };
+  std::map<std::string, PanelFault> panelFaults_;
+  // Keys pressed and released between two frames: ImGui 1.86 only sees a key held at a
+  // frame's start, so such a tap is held down for one frame (keyLatch in app.cpp).
+  std::set<int> keysPressedSinceFrame_, keysToHold_, keysHeld_;
 };
 
 }  // namespace twr::gui

@@ -1,6 +1,8 @@
 // Keeping both backends' frames, the diff and the pinned pixel's probes in step with the
 // scene: GL renders on this (the UI) thread in the window's context, the CPU on the worker.
 #include "app/gui/app.h"
+#include "app/gui/text_concat.h"
+#include "app/gui/debug_views.h"
 
 #include "compare/heatmap.h"
 #include "compare/side_by_side.h"
@@ -9,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 
 namespace twr::gui {
 namespace {
@@ -53,12 +56,29 @@ void GuiApp::syncRenders() {
     renderHeight_ = height;
     doc_.touch();
   }
+  if (width != timedWidth_ || height != timedHeight_) {
+    // Times at another size are another workload: start the medians again.
+    // The first size of a run keeps the reason it had ("scene loaded").
+    if (timedWidth_ != 0) {
+      const std::string reason = concat("render size ", width, " x ", height);
+      cpuMs_.restart(reason);
+      glMs_.restart(reason);
+    }
+    timedWidth_ = width;
+    timedHeight_ = height;
+  }
   if (pin_.pixel && (pin_.pixel->x < 0 || pin_.pixel->x >= width || pin_.pixel->yTop < 0 || pin_.pixel->yTop >= height)) {
+    if (!commandLinePinChecked_ && options_.pin && *pin_.pixel == *options_.pin) {
+      // Said, not silently dropped: the render size is only known now.
+      pinWarning_ = concat("--pin ", pin_.pixel->x, ',', pin_.pixel->yTop, " is outside the ", width, " x ", height,
+                           " px render (x in [0, ", width - 1, "], y in [0, ", height - 1, "]): nothing is pinned.");
+      std::cerr << "twinraster-gui: warning: " << pinWarning_ << "\n";
+    }
     pinPixel(std::nullopt);
   }
+  commandLinePinChecked_ = true;
 
-  renderBlocker_ = validateCamera(doc_.scene.camera);
-  if (!renderBlocker_.empty()) renderBlocker_ = "camera: " + renderBlocker_;
+  refreshRenderBlocker();
   if (renderBlocker_.empty()) {
     if (glFrame_.revision != doc_.revision) renderGl();
     submitCpu();
@@ -68,8 +88,25 @@ void GuiApp::syncRenders() {
   refreshTextures();
 }
 
+void GuiApp::refreshRenderBlocker() {
+  renderBlocker_ = validateCamera(doc_.scene.camera);
+  if (!renderBlocker_.empty()) renderBlocker_ = "camera: " + renderBlocker_;
+}
+
+ShownRevisions GuiApp::shownRevisions() const {
+  ShownRevisions shown;
+  const auto atSize = [this](const std::shared_ptr<const RenderOutput>& output) {
+    return output && output->width == renderWidth_ && output->height == renderHeight_;
+  };
+  shown.cpu = atSize(cpuFrame_.output) ? cpuFrame_.revision : 0;
+  shown.gl = atSize(glFrame_.output) ? glFrame_.revision : 0;
+  shown.diff = diff_.result ? diff_.revision : 0;
+  return shown;
+}
+
 void GuiApp::pinPixel(std::optional<PixelPos> pixel) {
   pin_ = PinState{};
+  if (pixel) pinWarning_.clear();
   pin_.pixel = pixel;
 }
 
@@ -81,7 +118,14 @@ void GuiApp::takeCpuFrames() {
       cpuFrame_.error = frame.error;
       cpuFrame_.finishedAt = frame.finishedAt;
       cpuFrame_.cpuPath = frame.cpuPath;
-      if (frame.output) cpuMs_.add(frame.output->stats.milliseconds);
+      if (frame.output && frame.width == timedWidth_ && frame.height == timedHeight_ &&
+          frame.revision >= timingsFromRevision_) {
+        if (frame.cpuPath != timedCpuPath_) {
+          if (!timedCpuPath_.empty()) cpuMs_.restart("CPU path " + frame.cpuPath);
+          timedCpuPath_ = frame.cpuPath;
+        }
+        cpuMs_.add(frame.output->stats.milliseconds);
+      }
       cpuTextureStale_ = true;
     }
     if (frame.probe && pin_.pixel && frame.probe->pixel == *pin_.pixel && frame.width == renderWidth_ &&
@@ -98,7 +142,7 @@ void GuiApp::renderGl() {
   try {
     glFrame_.output = std::make_shared<const RenderOutput>(
         glRenderer_->render(doc_.scene, doc_.scene.settings, renderWidth_, renderHeight_));
-    glMs_.add(glFrame_.output->stats.milliseconds);
+    if (renderWidth_ == timedWidth_ && renderHeight_ == timedHeight_) glMs_.add(glFrame_.output->stats.milliseconds);
   } catch (const std::exception& e) {
     glFrame_.error = e.what();
   }
@@ -165,6 +209,9 @@ PixelSample GuiApp::glSampleAt(View view, PixelPos pixel) {
 
 void GuiApp::probeGl() {
   if (!pin_.pixel) return;
+  // Each view is a full GL frame on this thread: while the user drags or types, the UI
+  // frame already renders the main image, so the probe waits until the interaction ends.
+  if (interacting_) return;
   if (pin_.glRevision != doc_.revision) {
     pin_.gl = ViewSamples{};
     pin_.glError.clear();
@@ -184,12 +231,24 @@ void GuiApp::probeGl() {
 
 void GuiApp::refreshTextures() {
   const BackgroundMode background = prefs_.checkerBackground ? BackgroundMode::Checker : BackgroundMode::RendererColour;
+  // The Depth view linearised for display only: the diff and the read-backs keep window depth.
+  const Camera& camera = doc_.scene.camera;
+  const bool linear = doc_.scene.settings.view == View::Depth && prefs_.linearDepth;
+  if (linear && (cpuTextureStale_ || glTextureStale_)) {
+    // One mapping for both images, from the nearest to the farthest drawn pixel of either.
+    linearDepthRange_ = drawnEyeRange({cpuFrame_.output.get(), glFrame_.output.get()}, camera.near, camera.far);
+    cpuTextureStale_ = glTextureStale_ = true;
+  }
+  const auto shown = [&](const RenderOutput& output) {
+    return linear ? viewImage(withLinearDepth(output, camera.near, camera.far, linearDepthRange_), background)
+                  : viewImage(output, background);
+  };
   if (cpuTextureStale_) {
-    if (cpuFrame_.output) cpuTexture_.upload(viewImage(*cpuFrame_.output, background));
+    if (cpuFrame_.output) cpuTexture_.upload(shown(*cpuFrame_.output));
     cpuTextureStale_ = false;
   }
   if (glTextureStale_) {
-    if (glFrame_.output) glTexture_.upload(viewImage(*glFrame_.output, background));
+    if (glFrame_.output) glTexture_.upload(shown(*glFrame_.output));
     glTextureStale_ = false;
   }
   if (diff_.texturesStale) {

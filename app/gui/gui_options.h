@@ -12,6 +12,8 @@ namespace twr::gui {
 
 // Longest --frames run waits for the CPU frame of the final settings, milliseconds.
 inline constexpr int kSettleTimeoutMs = 120'000;
+// Most frames --frames accepts (inclusive): a day at 60 frames a second.
+inline constexpr int kMaxFrames = 5'184'000;
 
 struct GuiOptions {
   std::string scenePath;              // empty: the remembered scene, else the default one

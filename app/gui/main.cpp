@@ -53,14 +53,22 @@ int main(int argc, char** argv) {
   app.add_option("--frames", options.frames,
                  "Quit after N frames (for tests and scripts); the last frame waits until the CPU frame, the diff "
                  "and any pinned pixel's probes for the final settings are done (at most 120 s)")
-      ->check(CLI::PositiveNumber)
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            int frames = 0;
+            if (CLI::detail::lexical_cast(text, frames) && frames >= 1 && frames <= gui::kMaxFrames) return "";
+            return "expected an integer in [1, " + std::to_string(gui::kMaxFrames) + "], got '" + text + "'";
+          },
+          "", "frame count"))
       ->type_name("N");
   app.add_option("--screenshot", options.screenshotPath,
                  "With --frames: save the whole window as this PNG on the last frame")
       ->type_name("FILE.png");
   app.add_option("--view-mode", viewMode, "Start in this view: " + gui::allViewModeNames())
       ->check(CLI::IsMember({"cpu", "gl", "side", "split", "diff", "flicker"}));
-  app.add_option("--pin", pin, "Pin the pixel X,Y (from the top-left, at the render size) in the inspector")
+  app.add_option("--pin", pin,
+                 "Pin the pixel X,Y (from the top-left, at the render size) in the inspector; a pixel outside "
+                 "the render is reported on stderr and in the window, and nothing is pinned")
       ->type_name("X,Y");
   app.add_option("--window-size", [&options](const CLI::results_t& values) {
                    const bool ok = CLI::detail::lexical_cast(values[0], options.width) &&

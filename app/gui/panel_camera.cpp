@@ -21,15 +21,22 @@ void GuiApp::drawCameraTab() {
   const float fieldWidth = ImGui::GetContentRegionAvail().x * 0.6f;
   ImGui::SetNextItemWidth(fieldWidth);
   changed |= ImGui::DragFloat3("Position P", &camera.position.x, kPositionDragSpeed, 0.0f, 0.0f, "%.3f");
+  itemTooltip("The eye, world units. P - T must not be parallel to the world up (0, 1, 0).");
   ImGui::SetNextItemWidth(fieldWidth);
   changed |= ImGui::DragFloat3("Target T", &camera.target.x, kPositionDragSpeed, 0.0f, 0.0f, "%.3f");
+  itemTooltip("The point looked at, world units; must differ from P.");
   ImGui::SetNextItemWidth(fieldWidth);
   changed |= ImGui::SliderFloat("fov (deg)", &camera.fovDeg, kMinFovDeg, kMaxFovDeg, "%.1f");
-  itemTooltip("Vertical field of view.");
+  itemTooltip("Vertical field of view, degrees, in (0, 180) exclusive.");
   ImGui::SetNextItemWidth(fieldWidth);
   changed |= ImGui::DragFloat("near", &camera.near, 0.001f, 0.0f, 0.0f, "%.4f");
+  probe_.item("near");
+  itemTooltip("Distance from P to the near clip plane, world units; must be > 0. Ctrl+click to type a value. "
+              "While it is invalid nothing renders and the reason shows below in red.");
   ImGui::SetNextItemWidth(fieldWidth);
   changed |= ImGui::DragFloat("far", &camera.far, 0.1f, 0.0f, 0.0f, "%.2f");
+  probe_.item("far");
+  itemTooltip("Distance from P to the far clip plane, world units; must be > near. Window depth 1 lies on it.");
   if (ImGui::Button("Reset camera")) {
     camera = doc_.fileCamera;
     changed = true;

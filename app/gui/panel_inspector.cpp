@@ -2,6 +2,8 @@
 // debug view read back from both at that pixel, and the CPU pixel trace (which triangles
 // reach it, clipping, barycentrics, uv, T/B/N, the normal-map texel, each lighting term).
 #include "app/gui/app.h"
+#include "app/gui/text_concat.h"
+#include "app/gui/debug_views.h"
 #include "app/gui/ui_widgets.h"
 
 #include <algorithm>
@@ -11,16 +13,6 @@
 
 namespace twr::gui {
 namespace {
-
-bool isVectorView(View view) {
-  return view == View::Normal || view == View::Tangent || view == View::Bitangent || view == View::MappedNormal ||
-         view == View::LightTangent || view == View::EyeTangent;
-}
-
-// A debug view's colour back as the vector it shows: c / 255 * 2 - 1.
-vec3 decodeVector(const std::array<std::uint8_t, 4>& rgba) {
-  return vec3(rgba[0], rgba[1], rgba[2]) / 255.0f * 2.0f - 1.0f;
-}
 
 int maxChannelDifference(const std::array<std::uint8_t, 4>& a, const std::array<std::uint8_t, 4>& b) {
   int largest = 0;
@@ -34,10 +26,15 @@ void sampleCell(const std::optional<PixelSample>& sample, View view) {
     return;
   }
   rgbaValue(sample->rgba.data(), false);
-  if (isVectorView(view)) {
+  // Only what was drawn is decoded: an empty pixel's background colour is not a vector.
+  if (view != View::Shaded && view != View::Albedo) {
     ImGui::SameLine();
-    ImGui::TextDisabled("(%s)", formatVec(decodeVector(sample->rgba), 2).c_str());
+    ImGui::TextDisabled("(%s)", describeViewSample(view, *sample).c_str());
+  } else if (sample->rgba[3] == 0) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("(empty)");
   }
+  itemTooltip(viewLegend(view));
 }
 
 // The planes that cut a triangle, by name, and what was left.
@@ -104,10 +101,15 @@ void GuiApp::drawInspectorPanel() {
     }
     ImGui::EndTable();
   }
-  if (diff_.result && diff_.result->pixels.width == renderWidth_ && diff_.result->pixels.height == renderHeight_) {
+  const ShownRevisions shown = shownRevisions();
+  if (pairState(shown) == PairState::SameEdit && diff_.result && diff_.result->pixels.width == renderWidth_ &&
+      diff_.result->pixels.height == renderHeight_) {
     const std::size_t i = diff_.result->pixels.index(p.x, p.yTop);
-    ImGui::Text("diff %d levels, class %s", diff_.result->pixels.diffLevels[i],
-                std::string(toString(diff_.result->pixels.pixelClass[i])).c_str());
+    ImGui::Text("diff %d levels, class %s (both of edit %llu)", diff_.result->pixels.diffLevels[i],
+                std::string(toString(diff_.result->pixels.pixelClass[i])).c_str(),
+                static_cast<unsigned long long>(diff_.revision));
+  } else if (pairState(shown) != PairState::SameEdit) {
+    warningText(pairNote(shown));
   }
 
   if (!pin_.cpu) {
@@ -130,7 +132,8 @@ void GuiApp::drawViewProbeSection() {
   if (!cpuCurrent) title += " (CPU updating...)";
   title += "###views";
   if (ImGui::CollapsingHeader(title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
-    hintText("Each view rendered by both backends with TBN lines off; vectors decoded as c / 255 * 2 - 1.");
+    hintText("Each view rendered by both backends with TBN lines off; vectors decoded as c / 255 * 2 - 1 where "
+             "something was drawn (alpha > 0). Hover a value for what its colours mean.");
     if (!pin_.glError.empty()) errorText("GL: " + pin_.glError);
     if (ImGui::BeginTable("##views", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
       ImGui::TableSetupColumn("view", ImGuiTableColumnFlags_WidthStretch, 0.7f);
@@ -179,9 +182,9 @@ void GuiApp::drawTraceSection(const PixelTrace& trace) {
     const TriangleVisit& visit = trace.visits[n];
     ImGui::PushID(static_cast<int>(n));
     const bool isWinner = &visit == winner;
-    const std::string label = "#" + std::to_string(n + 1) + " triangle " + std::to_string(visit.triangleId) + " ('" +
-                              visit.nodeName + "' " + std::to_string(visit.triangleInMesh) + "): " +
-                              toString(visit.outcome) + (isWinner ? "  <- wrote the pixel" : "");
+    const std::string label = concat('#', n + 1, " triangle ", visit.triangleId, " ('", visit.nodeName, "' ",
+                                     visit.triangleInMesh, "): ", toString(visit.outcome),
+                                     isWinner ? "  <- wrote the pixel" : "");
     if (isWinner) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.6f, 1.0f, 0.6f, 1.0f));
     const bool open = ImGui::TreeNodeEx("##visit", isWinner ? ImGuiTreeNodeFlags_DefaultOpen : 0, "%s", label.c_str());
     if (isWinner) ImGui::PopStyleColor();

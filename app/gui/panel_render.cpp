@@ -1,6 +1,7 @@
 // The Rendering tab: the CPU renderer's own choices (path and SIMD target), then every field
 // of RenderSettings, applied to both backends.
 #include "app/gui/app.h"
+#include "app/gui/debug_views.h"
 #include "app/gui/ui_widgets.h"
 #include "softrender/cpu_renderer.h"
 
@@ -91,15 +92,36 @@ void GuiApp::drawRenderingTab() {
   changed |= enumCombo("##view", settings.view, kAllViews);
   itemTooltip("What both backends write per pixel: the shaded colour, or one shading input as a colour "
               "(vectors as (v + 1) / 2, see docs/shading.md).");
+  hintText(viewLegend(settings.view));
+  if (settings.view == View::Depth) {
+    if (ImGui::Checkbox("linearised (eye distance)", &prefs_.linearDepth)) {
+      cpuTextureStale_ = glTextureStale_ = true;
+    }
+    itemTooltip("Shows the eye distance z_eye = 2 n f / ((f + n) - z_ndc (f - n)) instead of window depth, from the "
+                "nearest drawn pixel (black) to the farthest (white) of both images; the row above the images gives "
+                "the two distances in world units. Display only: the diff, the hover line and the inspector keep "
+                "window depth.");
+  }
 
   sectionTitle("Rasterizer");
-  changed |= enumRadio("Cull", settings.cull, kCullModes, labelWidth);
-  changed |= enumRadio("Front face", settings.frontFace, kFrontFaces, labelWidth);
+  changed |= enumRadio("Cull", settings.cull, kCullModes, labelWidth,
+                       "Which triangles setup removes: none, the back-facing or the front-facing ones (GL_CULL_FACE). "
+                       "Facing comes from the winding on screen and Front face.");
+  changed |= enumRadio("Front face", settings.frontFace, kFrontFaces, labelWidth,
+                       "Which winding on screen counts as front-facing: counter-clockwise (GL's default) or "
+                       "clockwise (glFrontFace).");
 
   sectionTitle("Clipping");
   ImGui::TextUnformatted("Frustum planes");
-  helpMarker("A switched-off near or far plane becomes depth clamping (GL_DEPTH_CLAMP); a switched-off side "
-             "plane leaves the guard band to the rasterizer.");
+  helpMarker("A switched-off side plane leaves the guard band to the rasterizer. A switched-off near or far "
+             "plane becomes depth clamping (GL_DEPTH_CLAMP): geometry beyond it is no longer cut, its window "
+             "depth is clamped to [0, 1]. Beyond the far plane that depth is 1.0, the value the depth buffer is "
+             "cleared to, and the depth test is GL_LESS (1.0 < 1.0 fails): so those fragments are still not drawn, "
+             "on both backends. Near clamping does show: geometry in front of the near plane gets depth 0.");
+  if (!settings.clip.far) {
+    hintText("Far plane off: depth beyond it clamps to 1.0, which fails GL_LESS against the cleared 1.0, so "
+             "nothing beyond far appears (see the (?) above). Raise the camera's far instead to see it.");
+  }
   if (ImGui::BeginTable("##frustum", 3)) {
     const std::pair<const char*, bool*> planes[] = {
         {"left", &settings.clip.left}, {"bottom", &settings.clip.bottom}, {"near", &settings.clip.near},
@@ -107,6 +129,7 @@ void GuiApp::drawRenderingTab() {
     for (const auto& [name, value] : planes) {
       ImGui::TableNextColumn();
       changed |= ImGui::Checkbox(name, value);
+      itemTooltip("Clip against this frustum plane (on), or not (off: see the (?) above).");
     }
     ImGui::EndTable();
   }
@@ -117,6 +140,8 @@ void GuiApp::drawRenderingTab() {
     ImGui::PushID(static_cast<int>(i));
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::GetFrameHeight() - ImGui::GetStyle().ItemSpacing.x);
     changed |= ImGui::DragFloat4("##plane", &settings.userClipPlanes[i].x, kPlaneDragSpeed, -100.0f, 100.0f, "%.2f");
+    itemTooltip("a b c d: keeps world points with a*x + b*y + c*z + d >= 0; (a, b, c) is the normal (need not be "
+                "unit length), d in world units times its length.");
     ImGui::SameLine();
     if (ImGui::Button("x", ImVec2(ImGui::GetFrameHeight(), 0.0f))) removeIndex = static_cast<int>(i);
     itemTooltip("Remove this plane");
@@ -134,20 +159,24 @@ void GuiApp::drawRenderingTab() {
   ImGui::EndDisabled();
 
   sectionTitle("Shading");
-  changed |= enumRadio("Lighting space", settings.lightingSpace, kLightingSpaces, labelWidth);
-  itemTooltip("world: N from the normal map is rotated to world space per pixel. tangent: L and V are rotated "
-              "into tangent space per vertex and interpolated (the tutorial's way).");
-  changed |= enumRadio("Tangent transform", settings.tangentTransform, kTangentTransforms, labelWidth);
-  itemTooltip("model: tangents transform with the model matrix (they lie in the surface). inverse_transpose: "
-              "like normals (wrong under non-uniform scale: compare the two).");
-  changed |= enumRadio("Texture filter", settings.textureFilter, kTextureFilters, labelWidth);
+  changed |= enumRadio("Lighting space", settings.lightingSpace, kLightingSpaces, labelWidth,
+                       "world: N from the normal map is rotated to world space per pixel. tangent: L and V are "
+                       "rotated into tangent space per vertex and interpolated (the tutorial's way).");
+  changed |= enumRadio("Tangent transform", settings.tangentTransform, kTangentTransforms, labelWidth,
+                       "model: tangents transform with the model matrix (they lie in the surface). "
+                       "inverse_transpose: like normals (wrong under non-uniform scale: compare the two).");
+  changed |= enumRadio("Texture filter", settings.textureFilter, kTextureFilters, labelWidth,
+                       "How every map is sampled: nearest texel, or bilinear between the four nearest (texel "
+                       "centres at +0.5), on the mip level GL would choose.");
 
   sectionTitle("TBN lines");
   changed |= ImGui::Checkbox("Draw T (red), B (green), N (blue) at every vertex", &settings.tbnLines.enabled);
+  itemTooltip("Debug lines from every vertex along its tangent frame, drawn by both backends after shading.");
   ImGui::BeginDisabled(!settings.tbnLines.enabled);
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
   changed |= ImGui::SliderFloat("Length (world units)", &settings.tbnLines.length, kMinLineLength, kMaxLineLength,
                                 "%.3f", ImGuiSliderFlags_Logarithmic);
+  itemTooltip("Length of each T, B, N line, world units.");
   ImGui::BeginDisabled(compatibilityFailed_);
   changed |= enumRadio("GL drawing", settings.tbnLines.mode, kLineModes, labelWidth);
   ImGui::EndDisabled();

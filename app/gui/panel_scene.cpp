@@ -1,6 +1,7 @@
 // The Scene tab: open a file, the node tree with transforms and live mesh parameters,
 // materials, lights, ambient and the output size.
 #include "app/gui/app.h"
+#include "app/gui/scene_picker.h"
 #include "app/gui/ui_widgets.h"
 
 #include "scene/errors.h"
@@ -10,6 +11,7 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <string>
 
 namespace twr::gui {
@@ -48,13 +50,18 @@ std::shared_ptr<const Texture>& mapSlot(Material& material, std::size_t which) {
 
 bool segmentsField(const char* label, int& value, int minimum) {
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
-  return ImGui::SliderInt(label, &value, minimum, kSegmentSliderMax);
+  const bool changed = ImGui::SliderInt(label, &value, minimum, kSegmentSliderMax);
+  itemTooltip("Subdivisions of the primitive, a count; more follow the round shape more closely. Ctrl+click to "
+              "type more than the slider offers.");
+  return changed;
 }
 
 bool dimensionField(const char* label, float& value) {
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
-  return ImGui::DragFloat(label, &value, kSizeDragSpeed, kMinDimension, kMaxCoordinate, "%.3f",
-                          ImGuiSliderFlags_AlwaysClamp);
+  const bool changed = ImGui::DragFloat(label, &value, kSizeDragSpeed, kMinDimension, kMaxCoordinate, "%.3f",
+                                        ImGuiSliderFlags_AlwaysClamp);
+  itemTooltip("World units (uv scale: texture repeats across the plane, no unit), before the node's scale.");
+  return changed;
 }
 
 int countNodesUsingMesh(const std::vector<Node>& nodes, int meshIndex) {
@@ -74,8 +81,36 @@ void GuiApp::drawSceneTab() {
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - openWidth - ImGui::GetStyle().ItemSpacing.x);
   const bool entered = ImGui::InputTextWithHint("##scenePath", "path/to/scene.json", &scenePathInput_,
                                                 ImGuiInputTextFlags_EnterReturnsTrue);
+  probe_.item("scene_path");
   ImGui::SameLine();
   if (ImGui::Button("Open") || entered) openScene(scenePathInput_);
+  // Pick instead of typing: the scenes shipped in assets/scenes/, then the recent files.
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  if (ImGui::BeginCombo("##scenePicker", "Pick a scene: assets/scenes/ or a recent file")) {
+    std::string picked;
+    const std::string defaultScene = findStartupScene("");
+    const std::filesystem::path folder =
+        defaultScene.empty() ? std::filesystem::path("assets/scenes") : std::filesystem::path(defaultScene).parent_path();
+    ImGui::TextDisabled("%s", folder.string().c_str());
+    for (const std::filesystem::path& file : sceneFilesIn(folder)) {
+      if (ImGui::Selectable(file.filename().string().c_str(), file.string() == doc_.scene.sourcePath)) picked = file.string();
+    }
+    if (!prefs_.recentScenes.empty()) {
+      ImGui::Separator();
+      ImGui::TextDisabled("recent");
+      for (std::size_t i = 0; i < prefs_.recentScenes.size(); ++i) {
+        ImGui::PushID(static_cast<int>(i));
+        if (ImGui::Selectable(prefs_.recentScenes[i].c_str())) picked = prefs_.recentScenes[i];
+        ImGui::PopID();
+      }
+    }
+    ImGui::EndCombo();
+    if (!picked.empty()) {
+      scenePathInput_ = picked;
+      openScene(picked);
+    }
+  }
+  itemTooltip("The scene files in assets/scenes/ (each a lesson: docs/scene-format.md) and the last files opened.");
   if (!doc_.scene.sourcePath.empty()) {
     ImGui::TextDisabled("%s", doc_.scene.sourcePath.c_str());
     ImGui::SameLine();
@@ -95,7 +130,9 @@ void GuiApp::drawSceneTab() {
   }
   itemTooltip("The render size when the view's resolution is 'scene output' (times the scale).");
   changed |= ImGui::ColorEdit3("Background", &doc_.scene.output.background.x, kColourFlags);
+  itemTooltip("Linear RGB in [0, 1] where no triangle is drawn (alpha 0 in the outputs).");
   changed |= ImGui::ColorEdit3("Ambient Ia", &doc_.scene.ambient.x, kColourFlags);
+  itemTooltip("Ambient light intensity, linear RGB (may exceed 1): adds ka * albedo * Ia to every lit pixel.");
 
   sectionTitle("Nodes");
   if (doc_.scene.nodes.empty()) hintText("No nodes.");
@@ -117,12 +154,14 @@ void GuiApp::drawNode(Node& node) {
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
   changed |= ImGui::DragFloat3("Translate", &node.translate.x, kTranslateDragSpeed, -kMaxCoordinate, kMaxCoordinate,
                                "%.3f");
+  itemTooltip("Offset from the parent node, world units.");
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
   changed |= ImGui::DragFloat3("Rotate (deg)", &node.rotateDeg.x, kRotateDragSpeed, -720.0f, 720.0f, "%.1f");
-  itemTooltip("Applied X, then Y, then Z (right-handed).");
+  itemTooltip("Degrees about the node's X, then Y, then Z axis (right-handed).");
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
   changed |= ImGui::DragFloat3("Scale", &node.scale.x, kScaleDragSpeed, -kMaxCoordinate, kMaxCoordinate, "%.3f");
-  itemTooltip("A negative scale mirrors: the bitangent sign flips (see the tangent_transform setting).");
+  itemTooltip("Scale factor per axis, no unit. A negative scale mirrors: the bitangent sign flips (see the "
+              "tangent_transform setting).");
 
   const auto& materials = doc_.scene.materials;
   const std::string current = node.materialIndex >= 0 && node.materialIndex < static_cast<int>(materials.size())
@@ -227,6 +266,7 @@ void GuiApp::drawMaterialsSection() {
       ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
       changed |= ImGui::SliderFloat("Shininess", &material.shininess, 0.0f, kMaxShininess, "%.1f",
                                     ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+      itemTooltip("Phong exponent n in (R.V)^n, no unit: larger is a smaller, sharper highlight.");
       for (std::size_t which = 0; which < 3; ++which) {
         const std::shared_ptr<const Texture>& loaded =
             m < doc_.loadedMaps.size() ? doc_.loadedMaps[m][which] : std::shared_ptr<const Texture>();
@@ -266,7 +306,9 @@ void GuiApp::drawLightsSection() {
                                    kMaxCoordinate, "%.2f");
       itemTooltip("World space. Drag the numbers to move the light.");
       changed |= ImGui::ColorEdit3("Diffuse Id", &light.diffuse.x, kColourFlags);
+      itemTooltip("Diffuse intensity of the light, linear RGB (may exceed 1).");
       changed |= ImGui::ColorEdit3("Specular Is", &light.specular.x, kColourFlags);
+      itemTooltip("Specular intensity of the light, linear RGB (may exceed 1).");
       ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
       changed |= ImGui::DragFloat3("A_C A_L A_Q", &light.attenuation.x, kAttenuationDragSpeed, 0.0f, 10.0f,
                                    "%.4f", ImGuiSliderFlags_AlwaysClamp);

@@ -1,6 +1,7 @@
 // Stats: per-backend frame times (moving median) and pipeline counts, the GL context, and
 // the live diff metrics of the last frame pair both backends rendered from the same edit.
 #include "app/gui/app.h"
+#include "app/gui/text_concat.h"
 #include "app/gui/ui_widgets.h"
 
 #include <cstdio>
@@ -64,10 +65,16 @@ void GuiApp::drawStatsPanel() {
     ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(kCpuAccent), "CPU");
     ImGui::TableSetColumnIndex(2);
     ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(kGlAccent), "GL");
-    const std::string medianName = "frame (median of " + std::to_string(kTimingWindow) + ")";
-    row(medianName.c_str(), milliseconds(cpuMs_.median()), milliseconds(glMs_.median()),
-        "Wall time of render(): CPU on its worker thread, GL including the read-back of every buffer.");
-    row("last frame", cpu ? milliseconds(cpu->milliseconds) : "-", gl ? milliseconds(gl->milliseconds) : "-");
+    const std::string timingHelp = concat(
+        "Wall time of render(): CPU on its worker thread, GL including the read-back of every buffer. The median "
+        "of the last ", kTimingWindow, " frames at most; it starts again when a scene is loaded, the render size "
+        "changes or the CPU path changes, and skips the first ", kColdFramesSkipped,
+        " frames after that (cold: shader compilation, uploads, allocation).\nCPU: ", cpuMs_.describe(),
+        ".\nGL: ", glMs_.describe(), '.');
+    row("frame, median", milliseconds(cpuMs_.median()), milliseconds(glMs_.median()), timingHelp.c_str());
+    row("  frames in it", std::to_string(cpuMs_.counted()), std::to_string(glMs_.counted()), timingHelp.c_str());
+    row("last frame", cpu ? milliseconds(cpu->milliseconds) : "-", gl ? milliseconds(gl->milliseconds) : "-",
+        "The frame on screen, cold or not.");
     row("path (SIMD target)", cpuFrame_.cpuPath.empty() ? "-" : cpuFrame_.cpuPath, "n/a",
         "The CPU traversal that drew the frame shown, and for the fast path the Highway target it ran on (auto "
         "resolved). Switch both in the Rendering tab.");
@@ -75,30 +82,52 @@ void GuiApp::drawStatsPanel() {
         "Submitted to the clipper (GL: submitted to glDrawElements).");
     row("  clipped", cpuCount(&RenderStats::trianglesClipped), "n/a",
         "Touched by at least one clip plane. GL clips inside the driver and does not say.");
-    row("  culled", cpuCount(&RenderStats::trianglesCulled), "n/a",
-        "Removed by face culling, or zero area after snapping to 1/256 pixel.");
+    row("  culled or zero-area", cpuCount(&RenderStats::trianglesCulled), "n/a",
+        "Removed by face culling, or of zero area after snapping to 1/256 pixel (edge-on or tiny triangles). "
+        "With Cull = none only the zero-area ones are counted, so this is rarely 0.");
     row("  drawn", cpuCount(&RenderStats::trianglesProduced), "n/a",
         "Reaching the rasterizer after clipping (a clipped triangle becomes a fan of several).");
-    row("pixels shaded", cpuCount(&RenderStats::pixelsShaded), glCount(&RenderStats::pixelsShaded),
-        "Fragments that passed the depth test (GL: GL_SAMPLES_PASSED).");
+    row("depth-test passes", cpuCount(&RenderStats::pixelsShaded), glCount(&RenderStats::pixelsShaded),
+        "Fragments that passed the depth test when they were drawn (GL: GL_SAMPLES_PASSED), overdraw included: a "
+        "surface drawn first and hidden later counts too. So it is not the covered pixel count, and the two "
+        "backends may differ while their images match: where two surfaces lie at nearly the same depth (back "
+        "and front faces at a silhouette with Cull = none, touching objects) GL compares 24-bit depth and the "
+        "CPU 32-bit float, so a later fragment passes on one and fails on the other. The visible result is the "
+        "same; the diff below is what compares images.");
     ImGui::EndTable();
   }
-  ImGui::TextDisabled("UI %.0f redraws/s (fewer when idle). GL: %s, %s", static_cast<double>(ImGui::GetIO().Framerate),
-                      window_->glVersion().c_str(), window_->glRenderer().c_str());
+  ImGui::TextDisabled("Timings since %s; the first %zu frames after that are skipped.", cpuMs_.restartReason().c_str(),
+                      cpuMs_.coldFrames());
+  ImGui::TextDisabled("UI %.0f redraws/s (ImGui's average over the last 60 redraws; fewer when idle). GL: %s, %s",
+                      static_cast<double>(ImGui::GetIO().Framerate), window_->glVersion().c_str(),
+                      window_->glRenderer().c_str());
 
-  sectionTitle("Diff (CPU vs GL, same edit)");
+  sectionTitle(diff_.result ? concat("Diff (CPU vs GL, both of edit ", diff_.revision, ')').c_str()
+                            : "Diff (CPU vs GL, same edit)");
   if (!diff_.result) {
     hintText(diff_.error.empty() ? "Waiting for both backends to finish a frame of the same edit." : diff_.error.c_str());
     return;
   }
   const CompareMetrics& m = diff_.result->metrics;
-  if (diff_.revision != doc_.revision) warningText("These numbers are for the previous edit; the CPU is rendering.");
+  if (diff_.revision != doc_.revision) {
+    warningText(!renderBlocker_.empty()
+                    ? concat("These numbers are for edit ", diff_.revision, "; nothing renders until this is fixed: ",
+                             renderBlocker_)
+                    : concat("These numbers are for edit ", diff_.revision, "; the CPU is rendering edit ",
+                             doc_.revision, '.'));
+  }
   if (ImGui::BeginTable("##metrics", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
     const std::string maxAt = m.hasMaxAbsDiffAt()
                                   ? " at (" + std::to_string(m.maxAbsDiffX) + ", " + std::to_string(m.maxAbsDiffY) + ")"
                                   : "";
     metricRow("max |diff|", std::to_string(m.maxAbsDiff) + " levels" + maxAt,
-              "Largest per-pixel difference (max over RGB) where both covered, 0..255.");
+              "Largest per-pixel difference (max over RGB) where both covered, 0..255. Click 'inspect' to pin "
+              "that pixel.");
+    if (m.hasMaxAbsDiffAt()) {
+      ImGui::SameLine();
+      if (ImGui::SmallButton("inspect")) pinPixel(PixelPos{m.maxAbsDiffX, m.maxAbsDiffY});
+      itemTooltip("Pin the first pixel (top-left scan) with the largest difference in the inspector.");
+    }
     metricRow("mean |diff|, RMSE", number(m.meanAbsDiff, "%.4f") + ", " + number(m.rmse, "%.4f") + " levels",
               "Over pixels both covered x 3 channels.");
     metricRow("PSNR", number(m.psnr, "%.2f dB"), "20 log10(255 / RMSE), capped at 100 dB.");

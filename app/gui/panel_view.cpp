@@ -1,6 +1,7 @@
 // The view panel: toolbar, the images in the chosen view mode, mouse camera control and
 // pixel pinning, and a status line about the frames on screen.
 #include "app/gui/app.h"
+#include "app/gui/text_concat.h"
 #include "app/gui/camera_control.h"
 #include "app/gui/ui_widgets.h"
 
@@ -35,6 +36,12 @@ constexpr float kLightMarkerPoints = 6.0f;
 constexpr float kLightGrabPoints = 10.0f;
 // Steps of the heat ramp drawn in the legend.
 constexpr int kLegendRampSteps = 64;
+// Rows of controls above the images (toolbar, resolution, the legend or caption), in
+// frame heights; fixed, so no widget or message changes the image area.
+constexpr float kViewHeaderRows = 4.0f;
+
+const ImU32 kErrorBanner = IM_COL32(89, 20, 20, 255);  // opaque: tests/cli/test_gui_smoke looks for it
+const ImU32 kMessageBackground = IM_COL32(0, 0, 0, 200);
 
 const ImU32 kMarkerColour = IM_COL32(255, 230, 40, 255);
 const ImU32 kMarkerShadow = IM_COL32(0, 0, 0, 200);
@@ -96,9 +103,12 @@ void drawCentredMessage(ImDrawList* draw, const Rect& rect, const std::string& t
   draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), at, colour, text.c_str(), nullptr, wrap);
 }
 
-// Where a world point lands on an image rect, or nothing behind the camera. The camera must
-// be valid (validateCamera).
+// Where a world point lands on an image rect, or nothing behind the camera or for a camera
+// that validateCamera rejects.
 std::optional<ImVec2> projectToRect(const Camera& camera, const vec3& posWorld, const Rect& rect, int width, int height) {
+  // The camera may have been edited into an invalid one earlier in this frame (a field still
+  // being typed): no projection then, rather than an exception.
+  if (width < 1 || height < 1 || !validateCamera(camera).empty()) return std::nullopt;
   const mat4 clipFromWorld =
       clipFromView(camera, static_cast<float>(width) / static_cast<float>(height)) * viewFromWorld(camera);
   const vec4 posClip = clipFromWorld * vec4(posWorld, 1.0f);
@@ -119,19 +129,18 @@ std::string ageText(const BackendFrame& frame) {
 }  // namespace
 
 void GuiApp::drawViewPanel() {
-  if (!sceneError_.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_ChildBg, ImVec4(0.35f, 0.08f, 0.08f, 1.0f));
-    const float wrapWidth = ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().WindowPadding.x;
-    const float textHeight = ImGui::CalcTextSize(sceneError_.c_str(), nullptr, false, wrapWidth).y;
-    ImGui::BeginChild("##sceneError", ImVec2(0.0f, textHeight + 2.0f * ImGui::GetStyle().WindowPadding.y), true);
-    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + wrapWidth);
-    ImGui::TextUnformatted(sceneError_.c_str());
-    ImGui::PopTextWrapPos();
-    ImGui::EndChild();
-    ImGui::PopStyleColor();
+  // The rows above the images have a fixed height in every view mode, whatever they hold
+  // (the diff legend, heat or class map), and messages and error banners are drawn over the
+  // images: the "fit view" render size depends only on what the user sizes (the window,
+  // the panels, the scale), so showing a message never re-renders both backends.
+  const float headerHeight = kViewHeaderRows * ImGui::GetFrameHeightWithSpacing();
+  if (ImGui::BeginChild("##viewHeader", ImVec2(0.0f, headerHeight), false,
+                        ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse)) {
+    drawViewToolbar();
+    if (prefs_.viewMode == ViewMode::Diff) drawDiffLegend();
+    else drawViewCaption();
   }
-  drawViewToolbar();
-  if (prefs_.viewMode == ViewMode::Diff) drawDiffLegend();
+  ImGui::EndChild();
   ImGui::Separator();
   const float statusHeight = ImGui::GetFrameHeightWithSpacing();
   const ImVec2 regionMin = ImGui::GetCursorScreenPos();
@@ -145,9 +154,75 @@ void GuiApp::drawViewPanel() {
   imagePanelPixels_ = ImVec2(std::floor(slot.width() * framebufferScale.x), std::floor(slot.height() * framebufferScale.y));
 
   drawImages(regionMin, regionSize);
+  drawViewMessages(regionMin, regionSize);
   handleImageMouse(regionMin, regionSize);
+  probe_.item("view_images");
   ImGui::SetCursorScreenPos(ImVec2(regionMin.x, regionMin.y + regionSize.y + ImGui::GetStyle().ItemSpacing.y));
   drawStatusLine();
+}
+
+void GuiApp::drawViewMessages(ImVec2 regionMin, ImVec2 regionSize) {
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const float padding = 6.0f * uiScale_;
+  const float wrap = std::max(50.0f, regionSize.x - 4.0f * padding);
+  float y = regionMin.y + padding;
+  // One box per message, stacked from the top of the image region, over the images.
+  const auto box = [&](const std::string& text, ImU32 background, ImU32 colour, bool fullWidth = false) {
+    const ImVec2 size = ImGui::CalcTextSize(text.c_str(), nullptr, false, wrap);
+    const ImVec2 min(regionMin.x + padding, y);
+    const float width = fullWidth ? regionSize.x - 2.0f * padding : size.x + 2.0f * padding;
+    const ImVec2 max(min.x + width, min.y + size.y + 2.0f * padding);
+    draw->AddRectFilled(min, max, background, 3.0f);
+    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(min.x + padding, min.y + padding), colour,
+                  text.c_str(), nullptr, wrap);
+    y = max.y + padding;
+  };
+  if (!sceneError_.empty()) box(sceneError_, kErrorBanner, IM_COL32(255, 235, 235, 255), true);
+  if (!pinWarning_.empty()) box(pinWarning_, kMessageBackground, IM_COL32(255, 200, 90, 255));
+  if (!screenshotMessage_.empty() && glfwGetTime() - screenshotMessageTime_ < kMessageSeconds) {
+    box(screenshotMessage_, kMessageBackground, IM_COL32(220, 220, 220, 255));
+  }
+  // The lights hint stays as long as the lights are off screen: at the bottom, clear of
+  // the image tags at the top.
+  if (!lightsHint_.empty()) {
+    const ImVec2 size = ImGui::CalcTextSize(lightsHint_.c_str(), nullptr, false, wrap);
+    const ImVec2 min(regionMin.x + padding, regionMin.y + regionSize.y - size.y - 3.0f * padding);
+    draw->AddRectFilled(min, ImVec2(min.x + size.x + 2.0f * padding, min.y + size.y + 2.0f * padding),
+                        IM_COL32(0, 0, 0, 150), 3.0f);
+    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(min.x + padding, min.y + padding),
+                  IM_COL32(200, 200, 200, 255), lightsHint_.c_str(), nullptr, wrap);
+  }
+  if (probe_.enabled()) {
+    nlohmann::json& state = probe_.state();
+    state["lights_hint"] = lightsHint_;
+    state["scene_error"] = sceneError_;
+    state["screenshot_message"] =
+        glfwGetTime() - screenshotMessageTime_ < kMessageSeconds ? screenshotMessage_ : std::string();
+  }
+}
+
+void GuiApp::drawViewCaption() {
+  // Row 3 outside the diff view: what the images are, so every number says what it covers.
+  const ShownRevisions shown = shownRevisions();
+  std::string text = std::to_string(renderWidth_) + " x " + std::to_string(renderHeight_) + " px per image";
+  if (!renderBlocker_.empty()) {
+    text += "; nothing renders: " + renderBlocker_;
+  } else if (shown.cpu != 0 && shown.gl != 0) {
+    text += shown.cpu == shown.gl
+                ? concat("; both images show edit ", shown.cpu)
+                : concat("; CPU shows edit ", shown.cpu, ", GL edit ", shown.gl, " (the CPU is catching up)");
+  }
+  if (doc_.scene.settings.view == View::Depth) {
+    char depthText[128];
+    if (prefs_.linearDepth && !linearDepthRange_.empty()) {
+      std::snprintf(depthText, sizeof depthText, "; depth linearised: eye distance %.3g (black) to %.3g (white) world units",
+                    static_cast<double>(linearDepthRange_.nearest), static_cast<double>(linearDepthRange_.farthest));
+    } else {
+      std::snprintf(depthText, sizeof depthText, "; window depth: 0 black at near, 1 white at far");
+    }
+    text += depthText;
+  }
+  hintText(text.c_str());
 }
 
 void GuiApp::drawViewToolbar() {
@@ -159,6 +234,7 @@ void GuiApp::drawViewToolbar() {
       prefs_.viewMode = mode;
       flickerStart_ = glfwGetTime();
     }
+    probe_.item(concat("mode_", toString(mode)).c_str());
     if (selected) ImGui::PopStyleColor();
     ImGui::SameLine(0.0f, 2.0f);
   }
@@ -166,6 +242,7 @@ void GuiApp::drawViewToolbar() {
   const float shotWidth = ImGui::CalcTextSize(shotLabel).x + 2.0f * ImGui::GetStyle().FramePadding.x;
   ImGui::SameLine(std::max(ImGui::GetCursorPosX() + 8.0f, ImGui::GetWindowContentRegionMax().x - shotWidth));
   if (ImGui::Button(shotLabel)) saveViewScreenshots();
+  probe_.item("screenshot");
   // F12 saves the whole window (app.cpp).
   if (ImGui::BeginPopupContextItem("##shotFolder")) {
     ImGui::TextUnformatted("Screenshot folder");
@@ -214,11 +291,10 @@ void GuiApp::drawViewToolbar() {
   } else if (prefs_.viewMode == ViewMode::Diff) {
     ImGui::SameLine();
     if (ImGui::RadioButton("Heat map", !prefs_.diffShowClasses)) prefs_.diffShowClasses = false;
+    probe_.item("diff_heat");
     ImGui::SameLine();
     if (ImGui::RadioButton("Class map", prefs_.diffShowClasses)) prefs_.diffShowClasses = true;
-  }
-  if (!screenshotMessage_.empty() && glfwGetTime() - screenshotMessageTime_ < kMessageSeconds) {
-    hintText(screenshotMessage_.c_str());
+    probe_.item("diff_class");
   }
 }
 
@@ -303,11 +379,18 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
     if (!frame.output) return std::string(name) + ": rendering the first frame...";
     return "";
   };
-  const auto cpuDetails = [this] {
-    std::string text = ageText(cpuFrame_);
-    if (cpuFrame_.revision != 0 && cpuFrame_.revision != doc_.revision) text += ", rendering the new one...";
+  // The frame's age and edit; an older edit says whether a newer one is on its way.
+  const auto details = [this](const BackendFrame& frame) {
+    std::string text = ageText(frame);
+    if (frame.revision == 0) return text;
+    text += concat(", edit ", frame.revision);
+    if (frame.revision != doc_.revision) {
+      text += !renderBlocker_.empty() ? " (nothing renders: invalid camera)" : ", rendering the new one...";
+    }
     return text;
   };
+  const auto cpuDetails = [&] { return details(cpuFrame_); };
+  const auto glDetails = [&] { return details(glFrame_); };
   const ImVec2 tagOffset(6.0f, 6.0f);
   const auto tagAt = [&](const Rect& rect) { return ImVec2(rect.min.x + tagOffset.x, rect.min.y + tagOffset.y); };
 
@@ -320,7 +403,7 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
       const std::string message = backendMessage(frame, cpu ? "CPU" : "GL");
       if (frame.output) drawTexture(draw, texture, fitRect(slots.front(), texture.width(), texture.height()));
       if (!message.empty()) drawCentredMessage(draw, slots.front(), message, IM_COL32(230, 200, 120, 255));
-      drawTag(draw, tagAt(image), cpu ? "CPU" : "GL", cpu ? kCpuAccent : kGlAccent, cpu ? cpuDetails() : ageText(glFrame_));
+      drawTag(draw, tagAt(image), cpu ? "CPU" : "GL", cpu ? kCpuAccent : kGlAccent, cpu ? cpuDetails() : glDetails());
       break;
     }
     case ViewMode::SideBySide: {
@@ -334,7 +417,7 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
         const std::string message = backendMessage(*frames[i], i == 0 ? "CPU" : "GL");
         if (!message.empty()) drawCentredMessage(draw, slots[i], message, IM_COL32(230, 200, 120, 255));
         drawTag(draw, tagAt(rect), i == 0 ? "CPU" : "GL", i == 0 ? kCpuAccent : kGlAccent,
-                i == 0 ? cpuDetails() : ageText(glFrame_));
+                i == 0 ? cpuDetails() : glDetails());
       }
       break;
     }
@@ -349,8 +432,10 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
       draw->AddText(ImVec2(handle.x - 4.0f * uiScale_, handle.y - 0.5f * ImGui::GetFontSize()), IM_COL32(0, 0, 0, 255), "|");
       drawTag(draw, tagAt(image), "CPU", kCpuAccent, cpuDetails());
       const char* glName = "GL";
-      const float glTagWidth = ImGui::CalcTextSize(glName).x + 12.0f;
-      drawTag(draw, ImVec2(image.max.x - glTagWidth - tagOffset.x, image.min.y + tagOffset.y), glName, kGlAccent, "");
+      const std::string glText = glDetails();
+      const float glTagWidth = ImGui::CalcTextSize(glName).x + 8.0f + ImGui::CalcTextSize(glText.c_str()).x + 12.0f;
+      drawTag(draw, ImVec2(image.max.x - glTagWidth - tagOffset.x, image.min.y + tagOffset.y + ImGui::GetFrameHeight()),
+              glName, kGlAccent, glText);
       const std::string message = !backendMessage(cpuFrame_, "CPU").empty() ? backendMessage(cpuFrame_, "CPU")
                                                                            : backendMessage(glFrame_, "GL");
       if (!message.empty()) drawCentredMessage(draw, slots.front(), message, IM_COL32(230, 200, 120, 255));
@@ -360,7 +445,10 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
       const ImageTexture& texture = prefs_.diffShowClasses ? classTexture_ : heatTexture_;
       if (diff_.result) {
         drawTexture(draw, texture, fitRect(slots.front(), texture.width(), texture.height()));
-        std::string details = diff_.revision == doc_.revision ? "current frame" : "previous frame; CPU is rendering...";
+        std::string details = concat("CPU and GL of edit ", diff_.revision);
+        if (diff_.revision != doc_.revision) {
+          details += !renderBlocker_.empty() ? " (nothing renders: invalid camera)" : "; the CPU is rendering the new one...";
+        }
         drawTag(draw, tagAt(image), prefs_.diffShowClasses ? "Classes" : "|CPU - GL|", IM_COL32(255, 255, 255, 255),
                 details);
       } else {
@@ -376,13 +464,40 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
       const bool cpu = static_cast<long long>(std::floor(phase)) % 2 == 0;
       const ImageTexture& texture = cpu ? cpuTexture_ : glTexture_;
       if ((cpu ? cpuFrame_ : glFrame_).output) drawTexture(draw, texture, fitRect(slots.front(), texture.width(), texture.height()));
-      char details[48];
-      std::snprintf(details, sizeof details, "flicker at %.2g Hz", static_cast<double>(prefs_.flickerHz));
-      drawTag(draw, tagAt(image), cpu ? "CPU" : "GL", cpu ? kCpuAccent : kGlAccent, details);
+      // Each redraw shows one image, so the eye sees at most one switch per redraw.
+      const double redraws = static_cast<double>(ImGui::GetIO().Framerate);
+      const double asked = static_cast<double>(prefs_.flickerHz);
+      char rate[96];
+      if (redraws < asked) {
+        std::snprintf(rate, sizeof rate, "asked %.2g Hz; about %.0f switches/s shown (the UI redraws %.0f times/s)",
+                      asked, redraws, redraws);
+      } else {
+        std::snprintf(rate, sizeof rate, "%.2g switches/s", asked);
+      }
+      drawTag(draw, tagAt(image), cpu ? "CPU" : "GL", cpu ? kCpuAccent : kGlAccent,
+              std::string(rate) + "; " + (cpu ? cpuDetails() : glDetails()));
       break;
     }
   }
 
+  // Lights ticked but not on screen get a hint (drawViewMessages): a marker nobody sees
+  // does not say where the light went.
+  lightsHint_.clear();
+  if (prefs_.showLights && renderBlocker_.empty() && renderWidth_ > 0 && renderHeight_ > 0) {
+    std::string behind, outside;
+    for (std::size_t i = 0; i < doc_.scene.lights.size(); ++i) {
+      const std::optional<ImVec2> at =
+          projectToRect(doc_.scene.camera, doc_.scene.lights[i].posWorld, image, renderWidth_, renderHeight_);
+      std::string& list = !at ? behind : outside;
+      if (at && image.contains(*at)) continue;
+      list += concat(list.empty() ? "L" : ", L", i);
+    }
+    if (!behind.empty()) lightsHint_ += behind + " behind the camera";
+    if (!outside.empty()) lightsHint_ += (lightsHint_.empty() ? "" : "; ") + outside + " outside the image";
+    if (!lightsHint_.empty()) {
+      lightsHint_ = "Lights off screen: " + lightsHint_ + " (orbit or zoom out to see their markers).";
+    }
+  }
   // The lights, in every image: a disc of the light's diffuse colour, and its index.
   if (prefs_.showLights && renderBlocker_.empty() && renderWidth_ > 0 && renderHeight_ > 0) {
     for (const Rect& slot : slots) {
@@ -397,7 +512,7 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
         draw->AddCircleFilled(*at, radius + 1.5f, IM_COL32(0, 0, 0, 220));
         draw->AddCircleFilled(*at, radius, IM_COL32(static_cast<int>(colour.r), static_cast<int>(colour.g),
                                                     static_cast<int>(colour.b), 255));
-        const std::string name = "L" + std::to_string(i);
+        const std::string name = concat('L', i);
         draw->AddText(ImVec2(at->x + radius + 3.0f, at->y - radius - 3.0f), IM_COL32(255, 255, 255, 230), name.c_str());
       }
       draw->PopClipRect();
@@ -519,33 +634,61 @@ void GuiApp::drawStatusLine() {
   if (!hovered_) {
     ImGui::TextDisabled("%d x %d px, edit %llu.  Hover the image to read pixels; click to pin one.", renderWidth_,
                         renderHeight_, static_cast<unsigned long long>(doc_.revision));
+    if (probe_.enabled()) probe_.state()["hover"] = nullptr;
     return;
   }
   const PixelPos p = *hovered_;
+  const ShownRevisions shown = shownRevisions();
+  std::string line = concat('(', p.x, ", ", p.yTop, ')');
   ImGui::Text("(%d, %d)", p.x, p.yTop);
-  const auto show = [&](const char* name, ImU32 accent, const std::shared_ptr<const RenderOutput>& output) {
+  const auto show = [&](const char* name, ImU32 accent, const std::shared_ptr<const RenderOutput>& output,
+                        std::uint64_t revision) {
     ImGui::SameLine(0.0f, 14.0f);
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::ColorConvertU32ToFloat4(accent));
     ImGui::TextUnformatted(name);
     ImGui::PopStyleColor();
     ImGui::SameLine();
+    line += std::string(" ") + name;
     if (!output || output->width != renderWidth_ || output->height != renderHeight_) {
       ImGui::TextDisabled("-");
+      line += " -";
       return;
     }
     const std::size_t i = static_cast<std::size_t>(p.yTop) * static_cast<std::size_t>(output->width) +
                           static_cast<std::size_t>(p.x);
-    rgbaValue(&output->rgba[i * 4], false);
+    const std::uint8_t* rgba = &output->rgba[i * 4];
+    rgbaValue(rgba, false);
     ImGui::SameLine();
-    ImGui::TextDisabled("z %.5f", static_cast<double>(output->depth[i]));
+    char details[64];
+    std::snprintf(details, sizeof details, "z %.5f (edit %llu)", static_cast<double>(output->depth[i]),
+                  static_cast<unsigned long long>(revision));
+    ImGui::TextDisabled("%s", details);
+    line += concat(' ', int{rgba[0]}, ' ', int{rgba[1]}, ' ', int{rgba[2]}, ' ', details);
   };
-  show("CPU", kCpuAccent, cpuFrame_.output);
-  show("GL", kGlAccent, glFrame_.output);
-  if (diff_.result && diff_.result->pixels.width == renderWidth_ && diff_.result->pixels.height == renderHeight_) {
+  show("CPU", kCpuAccent, cpuFrame_.output, shown.cpu);
+  show("GL", kGlAccent, glFrame_.output, shown.gl);
+  // A diff only between the two images shown, and only when they are from the same edit.
+  ImGui::SameLine(0.0f, 14.0f);
+  bool diffShown = false;
+  if (pairState(shown) == PairState::SameEdit && diff_.result && diff_.result->pixels.width == renderWidth_ &&
+      diff_.result->pixels.height == renderHeight_) {
     const std::size_t i = diff_.result->pixels.index(p.x, p.yTop);
-    ImGui::SameLine(0.0f, 14.0f);
-    ImGui::Text("diff %d (%s)", diff_.result->pixels.diffLevels[i],
-                std::string(toString(diff_.result->pixels.pixelClass[i])).c_str());
+    const std::string text =
+        concat("diff ", diff_.result->pixels.diffLevels[i], " (", toString(diff_.result->pixels.pixelClass[i]), ')');
+    ImGui::TextUnformatted(text.c_str());
+    line += " " + text;
+    diffShown = true;
+  } else {
+    const std::string note = pairState(shown) == PairState::SameEdit ? "no diff at this size yet" : pairNote(shown);
+    ImGui::TextColored(kWarningColour, "%s", note.c_str());
+    line += " " + note;
+  }
+  if (probe_.enabled()) {
+    probe_.state()["hover"] = {{"text", line},
+                               {"cpu_edit", shown.cpu},
+                               {"gl_edit", shown.gl},
+                               {"diff_edit", shown.diff},
+                               {"diff_shown", diffShown}};
   }
 }
 

@@ -1,4 +1,5 @@
 #include "app/gui/prefs.h"
+#include "app/gui/scene_picker.h"
 
 #include <nlohmann/json.hpp>
 
@@ -115,6 +116,18 @@ GuiPrefs loadPrefs(const std::filesystem::path& path, std::string& warning) {
   readString(object, "cpu_path", name, problems);
   if (name == "teaching") prefs.cpuPath = CpuPath::Teaching;
   else if (!name.empty() && name != "fast") problems += "; cpu_path: expected fast|teaching";
+  readBool(object, "linear_depth", prefs.linearDepth, problems);
+  if (object.contains("recent_scenes")) {
+    const json& recent = object["recent_scenes"];
+    bool ok = recent.is_array();
+    for (std::size_t i = 0; ok && i < recent.size() && prefs.recentScenes.size() < kMaxRecentScenes; ++i) {
+      ok = recent[i].is_string();
+      if (ok) prefs.recentScenes.push_back(recent[i].get<std::string>());
+    }
+    if (!ok) problems += "; recent_scenes: expected an array of paths";
+  }
+  readFloat(object, "controls_width", 0.0f, kMaxSavedPanelPoints, prefs.controlsWidth, problems);
+  readFloat(object, "stats_height", 0.0f, kMaxSavedPanelPoints, prefs.statsHeight, problems);
   name.clear();
   readString(object, "cpu_isa", name, problems);
   if (!name.empty()) {
@@ -150,6 +163,10 @@ bool savePrefs(const std::filesystem::path& path, const GuiPrefs& prefs, std::st
       {"screenshot_dir", prefs.screenshotDir},
       {"cpu_path", toString(prefs.cpuPath)},
       {"cpu_isa", toString(prefs.cpuIsa)},
+      {"controls_width", prefs.controlsWidth},
+      {"stats_height", prefs.statsHeight},
+      {"linear_depth", prefs.linearDepth},
+      {"recent_scenes", prefs.recentScenes},
   };
   std::error_code code;
   std::filesystem::create_directories(path.parent_path(), code);

@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace twr::gui {
 
@@ -42,7 +43,17 @@ struct GuiPrefs {
   // CPU cannot run falls back to auto with a warning).
   CpuPath cpuPath = CpuPath::Fast;
   CpuIsa cpuIsa = CpuIsa::Auto;
+  // The panel sizes the user dragged to, points at UI scale 1; 0: the default. Kept here,
+  // not in imgui.ini, so a window squeezed for a moment never saves a squeezed panel
+  // (panel_sizing.h); a value below the panel's minimum is raised to it when used.
+  float controlsWidth = 0.0f;
+  float statsHeight = 0.0f;
+  bool linearDepth = false;  // the Depth view shows the eye distance between near and far (debug_views.h)
+  std::vector<std::string> recentScenes;  // newest first, at most kMaxRecentScenes
 };
+
+// Largest panel size the settings file may hold, points (inclusive).
+inline constexpr float kMaxSavedPanelPoints = 10000.0f;
 
 struct PrefsPaths {
   std::filesystem::path dir;   // empty when neither XDG_CONFIG_HOME nor HOME is set

@@ -73,7 +73,8 @@ std::string formatComponents(const glm::vec<N, float>& v, int decimals) {
   char buffer[32];
   for (int i = 0; i < N; ++i) {
     std::snprintf(buffer, sizeof buffer, "%.*f", decimals, static_cast<double>(v[i]));
-    text += (i ? " " : "") + std::string(buffer);
+    if (i) text += ' ';
+    text += buffer;
   }
   return text;
 }

@@ -22,20 +22,35 @@ void itemTooltip(const char* text);
 // One radio button per value, on one line after the label (the first button at labelWidth
 // from the line start when it is > 0, so rows line up); values are named with toString().
 // Returns true when the value changed.
+// `help`, when given, is the tooltip of the label and of every button.
 template <typename Enum, std::size_t N>
-bool enumRadio(const char* label, Enum& value, const Enum (&values)[N], float labelWidth = 0.0f) {
+bool enumRadio(const char* label, Enum& value, const Enum (&values)[N], float labelWidth = 0.0f,
+               const char* help = nullptr) {
   bool changed = false;
   ImGui::PushID(label);
   ImGui::AlignTextToFramePadding();
   ImGui::TextUnformatted(label);
+  if (help) itemTooltip(help);
   for (std::size_t i = 0; i < N; ++i) {
-    if (i == 0 && labelWidth > 0.0f) ImGui::SameLine(labelWidth);
-    else ImGui::SameLine();
     const std::string name(toString(values[i]));
+    // A button that would not fit on the line starts a new one at labelWidth, so a narrow
+    // panel wraps the choices instead of cutting them off.
+    const float buttonWidth = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x +
+                              ImGui::CalcTextSize(name.c_str()).x;
+    const float lineEnd = ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + buttonWidth;
+    const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+    if (i > 0 && lineEnd > right) {
+      if (labelWidth > 0.0f) ImGui::SetCursorPosX(labelWidth);
+    } else if (i == 0 && labelWidth > 0.0f) {
+      ImGui::SameLine(labelWidth);
+    } else {
+      ImGui::SameLine();
+    }
     if (ImGui::RadioButton(name.c_str(), value == values[i]) && value != values[i]) {
       value = values[i];
       changed = true;
     }
+    if (help) itemTooltip(help);
   }
   ImGui::PopID();
   return changed;

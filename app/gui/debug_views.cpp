@@ -1,0 +1,113 @@
+#include "app/gui/debug_views.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace twr::gui {
+
+const char* viewLegend(View view) {
+  switch (view) {
+    case View::Shaded:
+      return "The lit colour: ambient + diffuse + specular of every light (docs/shading.md).";
+    case View::Albedo:
+      return "kd times the diffuse map: the surface colour before lighting.";
+    case View::Normal:
+      return "Interpolated normal N in world space as (N + 1) / 2: red = x, green = y, blue = z. "
+             "(128, 255, 128) faces up (+y), (128, 128, 255) faces +z, (255, 128, 128) faces +x.";
+    case View::Tangent:
+      return "Tangent T in world space as (T + 1) / 2: red = x, green = y, blue = z. It follows the "
+             "direction u grows on the surface.";
+    case View::Bitangent:
+      return "Bitangent B = sign * cross(N, T) in world space as (B + 1) / 2: red = x, green = y, blue = z. It "
+             "follows the direction v grows.";
+    case View::MappedNormal:
+      return "The normal used for lighting (from the normal map when there is one) as (N + 1) / 2: red = x, "
+             "green = y, blue = z, in the lighting space chosen above.";
+    case View::Uv:
+      return "Texture coordinates, fractional part: red = u, green = v (0 black, 1 full). Each repeat of the "
+             "texture is one black-to-red-green ramp.";
+    case View::Depth:
+      return "Window depth d as grey: black 0 at the near plane, white 1 at the far plane. d is 1 / z-like, so "
+             "nearly everything beyond a few near distances is almost white; 'linearised' shows the eye "
+             "distance instead, from the nearest drawn pixel (black) to the farthest (white).";
+    case View::LightTangent:
+      return "Direction to light 0 in tangent space as (L + 1) / 2: red = along T, green = along B, blue = along "
+             "N. Blue-ish: the light is above the surface. Grey (128, 128, 128): no light.";
+    case View::EyeTangent:
+      return "Direction to the eye in tangent space as (V + 1) / 2: red = along T, green = along B, blue = "
+             "along N. Blue-ish: the surface faces the camera.";
+  }
+  return "";
+}
+
+bool isVectorView(View view) {
+  return view == View::Normal || view == View::Tangent || view == View::Bitangent || view == View::MappedNormal ||
+         view == View::LightTangent || view == View::EyeTangent;
+}
+
+std::string describeViewSample(View view, const PixelSample& sample) {
+  if (sample.rgba[3] == 0) return "empty (nothing drawn: background colour)";
+  const auto unit = [&sample](int c) { return static_cast<double>(sample.rgba[static_cast<std::size_t>(c)]) / 255.0; };
+  char text[96];
+  if (isVectorView(view)) {
+    std::snprintf(text, sizeof text, "vector %.2f %.2f %.2f", unit(0) * 2.0 - 1.0, unit(1) * 2.0 - 1.0,
+                  unit(2) * 2.0 - 1.0);
+  } else if (view == View::Uv) {
+    std::snprintf(text, sizeof text, "uv %.3f %.3f (fractional part)", unit(0), unit(1));
+  } else if (view == View::Depth) {
+    std::snprintf(text, sizeof text, "depth %.7f", static_cast<double>(sample.depth));
+  } else {
+    std::snprintf(text, sizeof text, "rgb %.3f %.3f %.3f", unit(0), unit(1), unit(2));
+  }
+  return text;
+}
+
+float linearDepth(float windowDepth, float near, float far) {
+  if (!std::isfinite(windowDepth)) return 1.0f;
+  const float d = std::clamp(windowDepth, 0.0f, 1.0f);
+  if (!(near > 0.0f) || !(far > near) || !std::isfinite(far)) return d;
+  const double n = near, f = far;
+  const double zNdc = 2.0 * static_cast<double>(d) - 1.0;
+  const double denominator = (f + n) - zNdc * (f - n);  // >= 2 n > 0 for z_ndc in [-1, 1]
+  const double zEye = 2.0 * n * f / denominator;
+  return static_cast<float>(std::clamp((zEye - n) / (f - n), 0.0, 1.0));
+}
+
+float eyeDistance(float windowDepth, float near, float far) {
+  if (!(near > 0.0f) || !(far > near) || !std::isfinite(far)) return near;
+  return near + linearDepth(windowDepth, near, far) * (far - near);
+}
+
+EyeRange drawnEyeRange(std::initializer_list<const RenderOutput*> outputs, float near, float far) {
+  EyeRange range{std::numeric_limits<float>::max(), 0.0f};
+  bool any = false;
+  for (const RenderOutput* output : outputs) {
+    if (!output) continue;
+    for (std::size_t i = 0; i < output->depth.size() && i * 4 + 3 < output->rgba.size(); ++i) {
+      if (output->rgba[i * 4 + 3] == 0) continue;
+      const float distance = eyeDistance(output->depth[i], near, far);
+      range.nearest = std::min(range.nearest, distance);
+      range.farthest = std::max(range.farthest, distance);
+      any = true;
+    }
+  }
+  return any ? range : EyeRange{};
+}
+
+RenderOutput withLinearDepth(const RenderOutput& output, float near, float far, EyeRange range) {
+  RenderOutput out = output;
+  const float span = range.farthest - range.nearest;
+  const std::size_t count = out.depth.size();
+  for (std::size_t i = 0; i < count && i * 4 + 3 < out.rgba.size(); ++i) {
+    if (out.rgba[i * 4 + 3] == 0) continue;
+    const float distance = eyeDistance(out.depth[i], near, far);
+    const float shade = span > 0.0f ? std::clamp((distance - range.nearest) / span, 0.0f, 1.0f) : 0.0f;
+    const auto grey = static_cast<std::uint8_t>(std::lround(shade * 255.0f));
+    out.rgba[i * 4 + 0] = out.rgba[i * 4 + 1] = out.rgba[i * 4 + 2] = grey;
+  }
+  return out;
+}
+
+}  // namespace twr::gui

@@ -1,0 +1,52 @@
+// What a student needs to read the debug views: a legend per view (which colour is which
+// axis, how depth maps), a pinned pixel's value decoded only where something was drawn
+// (an empty pixel holds the background colour, not a vector), and depth linearised to the
+// eye distance, since window depth crowds everything beyond a few near distances into the
+// last few levels below white.
+#pragma once
+
+#include "app/gui/pixel_probe.h"
+#include "scene/renderer.h"
+#include "scene/settings.h"
+
+#include <initializer_list>
+#include <string>
+
+namespace twr::gui {
+
+// One or two sentences: what the colours of `view` mean.
+const char* viewLegend(View view);
+
+// True for the views that show a unit vector as (v + 1) / 2.
+bool isVectorView(View view);
+
+// A pixel read back from `view`: "empty (nothing drawn: background colour)" where alpha is
+// 0, else the value the colour encodes ("vector x y z", "uv u v", "depth d", "rgb r g b").
+std::string describeViewSample(View view, const PixelSample& sample);
+
+// Window depth d in [0, 1] back to the eye distance, mapped to [0, 1] between near (0) and
+// far (1): z_ndc = 2 d - 1, z_eye = 2 n f / ((f + n) - z_ndc (f - n)). Out-of-range or
+// non-finite inputs clamp to [0, 1]; near >= far gives d unchanged.
+float linearDepth(float windowDepth, float near, float far);
+
+// Window depth d back to the eye distance along -z, world units: 2 n f / ((f + n) - z_ndc (f - n)).
+// Clamped to [near, far]; near >= far gives near.
+float eyeDistance(float windowDepth, float near, float far);
+
+// The nearest and farthest eye distance of the drawn pixels (alpha > 0), world units.
+struct EyeRange {
+  float nearest = 0.0f;
+  float farthest = 0.0f;
+  bool empty() const { return !(farthest > 0.0f) || farthest < nearest; }
+};
+// Over every output given (both backends, so both images share one mapping); empty when none
+// has a drawn pixel.
+EyeRange drawnEyeRange(std::initializer_list<const RenderOutput*> outputs, float near, float far);
+
+// The output with its colour replaced by the eye distance as grey, from range.nearest (black)
+// to range.farthest (white); pixels nothing covered (alpha 0) keep their colour and alpha.
+// For the Depth view only: most of a scene sits in a thin slice of window depth, but spreads
+// over the whole grey ramp here.
+RenderOutput withLinearDepth(const RenderOutput& output, float near, float far, EyeRange range);
+
+}  // namespace twr::gui

@@ -1,0 +1,123 @@
+// The debug-view helpers a student reads the views with (issue 20, "what a student
+// misses"): empty pixels are not decoded as vectors, depth linearises to the eye distance,
+// every view has a legend; and the scene picker's lists.
+#include "app/gui/debug_views.h"
+#include "app/gui/scene_picker.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+
+namespace twr::gui {
+namespace {
+
+TEST(DebugViews, EmptyPixelsAreNotDecodedAsVectors) {
+  PixelSample background;
+  background.rgba = {13, 13, 20, 0};  // the background colour, alpha 0: nothing drawn
+  const std::string text = describeViewSample(View::Normal, background);
+  EXPECT_NE(text.find("empty"), std::string::npos) << text;
+  EXPECT_EQ(text.find("-0.9"), std::string::npos) << text;
+}
+
+TEST(DebugViews, DrawnPixelsDecodeAsTheirView) {
+  PixelSample up;
+  up.rgba = {128, 255, 128, 255};
+  EXPECT_EQ(describeViewSample(View::Normal, up), "vector 0.00 1.00 0.00");
+  PixelSample uv;
+  uv.rgba = {255, 0, 0, 255};
+  EXPECT_EQ(describeViewSample(View::Uv, uv), "uv 1.000 0.000 (fractional part)");
+  PixelSample depth;
+  depth.rgba = {250, 250, 250, 255};
+  depth.depth = 0.98f;
+  EXPECT_EQ(describeViewSample(View::Depth, depth), "depth 0.9800000");
+}
+
+TEST(DebugViews, EveryViewHasALegend) {
+  for (View view : kAllViews) EXPECT_GT(std::string(viewLegend(view)).size(), 20u) << toString(view);
+}
+
+TEST(DebugViews, LinearDepthMapsNearToZeroAndFarToOne) {
+  const float near = 0.1f, far = 50.0f;
+  EXPECT_NEAR(linearDepth(0.0f, near, far), 0.0f, 1e-6f);
+  EXPECT_NEAR(linearDepth(1.0f, near, far), 1.0f, 1e-6f);
+  // A point halfway between near and far in eye distance sits at window depth ~0.999 and
+  // comes back to about 0.5.
+  const float zEye = 0.5f * (near + far);
+  const double zNdc = ((far + near) - 2.0 * far * near / zEye) / (far - near);
+  const float d = static_cast<float>(0.5 * zNdc + 0.5);
+  EXPECT_GT(d, 0.99f);
+  EXPECT_NEAR(linearDepth(d, near, far), 0.5f, 1e-3f);
+}
+
+TEST(DebugViews, LinearDepthGuardsItsInputs) {
+  EXPECT_EQ(linearDepth(std::numeric_limits<float>::quiet_NaN(), 0.1f, 10.0f), 1.0f);
+  EXPECT_EQ(linearDepth(2.0f, 0.1f, 10.0f), 1.0f);
+  EXPECT_EQ(linearDepth(0.25f, 0.0f, 10.0f), 0.25f);  // no valid camera: unchanged
+}
+
+TEST(DebugViews, EyeDistanceInvertsTheProjection) {
+  EXPECT_NEAR(eyeDistance(0.0f, 0.1f, 50.0f), 0.1f, 1e-6f);
+  EXPECT_NEAR(eyeDistance(1.0f, 0.1f, 50.0f), 50.0f, 1e-4f);
+}
+
+TEST(DebugViews, LinearDepthSpansTheDrawnRangeAndKeepsEmptyPixels) {
+  const float near = 0.1f, far = 50.0f;
+  // Window depth of eye distances 2 and 6: both above 0.95, nearly the same grey raw.
+  const auto windowDepth = [&](float zEye) {
+    return static_cast<float>(0.5 * (((far + near) - 2.0 * far * near / zEye) / (far - near)) + 0.5);
+  };
+  RenderOutput output;
+  output.width = 3;
+  output.height = 1;
+  output.rgba = {9, 9, 9, 0, 255, 255, 255, 255, 255, 255, 255, 255};
+  output.depth = {1.0f, windowDepth(2.0f), windowDepth(6.0f)};
+  const EyeRange range = drawnEyeRange({&output, nullptr}, near, far);
+  ASSERT_FALSE(range.empty());
+  EXPECT_NEAR(range.nearest, 2.0f, 1e-2f);
+  EXPECT_NEAR(range.farthest, 6.0f, 1e-2f);
+  const RenderOutput linear = withLinearDepth(output, near, far, range);
+  EXPECT_EQ(linear.rgba[0], 9);  // nothing drawn: untouched
+  EXPECT_EQ(linear.rgba[3], 0);
+  EXPECT_EQ(linear.rgba[4], 0);  // the nearest drawn pixel: black
+  EXPECT_EQ(linear.rgba[8], 255);  // the farthest: white
+  EXPECT_EQ(linear.rgba[7], 255);
+}
+
+TEST(DebugViews, NoDrawnPixelNoRange) {
+  RenderOutput output;
+  output.width = 1;
+  output.height = 1;
+  output.rgba = {0, 0, 0, 0};
+  output.depth = {1.0f};
+  EXPECT_TRUE(drawnEyeRange({&output}, 0.1f, 10.0f).empty());
+}
+
+TEST(ScenePicker, ListsTheJsonFilesSorted) {
+  const std::filesystem::path folder = std::filesystem::path(TWINRASTER_TEST_OUT) / "scene_picker";
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  for (const char* name : {"b.json", "a.json", "notes.txt"}) std::ofstream(folder / name) << "{}";
+  const auto files = sceneFilesIn(folder);
+  ASSERT_EQ(files.size(), 2u);
+  EXPECT_EQ(files[0].filename(), "a.json");
+  EXPECT_EQ(files[1].filename(), "b.json");
+  EXPECT_TRUE(sceneFilesIn(folder / "missing").empty());
+  EXPECT_GE(sceneFilesIn(std::filesystem::path(TWINRASTER_SOURCE_DIR) / "assets" / "scenes").size(), 10u);
+}
+
+TEST(ScenePicker, RecentFilesNewestFirstWithoutDuplicates) {
+  std::vector<std::string> recent;
+  rememberRecent(recent, "a.json", 3);
+  rememberRecent(recent, "b.json", 3);
+  rememberRecent(recent, "a.json", 3);
+  EXPECT_EQ(recent, (std::vector<std::string>{"a.json", "b.json"}));
+  rememberRecent(recent, "c.json", 3);
+  rememberRecent(recent, "d.json", 3);
+  EXPECT_EQ(recent, (std::vector<std::string>{"d.json", "c.json", "a.json"}));
+}
+
+}  // namespace
+}  // namespace twr::gui
