@@ -15,7 +15,7 @@ constexpr CullMode kCullModes[] = {CullMode::None, CullMode::Back, CullMode::Fro
 constexpr FrontFace kFrontFaces[] = {FrontFace::Ccw, FrontFace::Cw};
 constexpr LightingSpace kLightingSpaces[] = {LightingSpace::World, LightingSpace::Tangent};
 constexpr TangentTransform kTangentTransforms[] = {TangentTransform::Model, TangentTransform::InverseTranspose};
-constexpr TextureFilter kTextureFilters[] = {TextureFilter::Nearest, TextureFilter::Bilinear};
+constexpr const TextureFilter (&kTextureFilters)[6] = kAllTextureFilters;
 constexpr LineMode kLineModes[] = {LineMode::Core, LineMode::Immediate};
 
 // TBN line length range offered by the slider, world units (inclusive).
@@ -166,8 +166,11 @@ void GuiApp::drawRenderingTab() {
                        "model: tangents transform with the model matrix (they lie in the surface). "
                        "inverse_transpose: like normals (wrong under non-uniform scale: compare the two).");
   changed |= enumRadio("Texture filter", settings.textureFilter, kTextureFilters, labelWidth,
-                       "How every map is sampled: nearest texel, or bilinear between the four nearest (texel "
-                       "centres at +0.5), on the mip level GL would choose.");
+                       "How every map is sampled (GL's filters): nearest texel or bilinear between the four "
+                       "nearest (texel centres at +0.5) on level 0; trilinear blends bilinear samples of the two "
+                       "mip levels around the LOD; *_mipmap_nearest picks the nearest level, nearest_mipmap_linear "
+                       "blends nearest texels of two levels. The LOD is one per 2x2 pixel quad, "
+                       "log2 of the texels one pixel step covers (docs/textures.md).");
 
   sectionTitle("TBN lines");
   changed |= ImGui::Checkbox("Draw T (red), B (green), N (blue) at every vertex", &settings.tbnLines.enabled);
