@@ -35,6 +35,8 @@ struct SuiteCase {
   View view = View::Shaded;
   bool overrideView = false;
   std::string cull, frontFace;  // empty: the scene's own
+  std::string filter;           // empty: the scene's own texture_filter
+  int width = 0, height = 0;    // 0: the scene's output size
   std::string name;
 };
 
@@ -58,6 +60,24 @@ std::vector<SuiteCase> suiteCases() {
       c.name = stem(scene) + "_view_" + std::string(toString(view));
       cases.push_back(c);
     }
+  }
+  // Every scene again with trilinear filtering: mip levels and the per-quad LOD must agree with
+  // llvmpipe's as well as level 0 does; the default scene also at 1280x720.
+  for (const suite::SceneTolerance& row : suite::kSceneTolerances) {
+    SuiteCase c;
+    c.scene = std::string(row.scene);
+    c.filter = "trilinear";
+    c.name = stem(c.scene) + "_trilinear";
+    cases.push_back(c);
+  }
+  if (!kQuickSuite) {
+    SuiteCase c;
+    c.scene = "default.json";
+    c.filter = "trilinear";
+    c.width = 1280;
+    c.height = 720;
+    c.name = "default_trilinear_1280x720";
+    cases.push_back(c);
   }
   for (const char* cull : {"none", "back", "front"}) {
     for (const char* front : {"ccw", "cw"}) {
@@ -94,8 +114,12 @@ TEST_P(SceneSuite, CpuMatchesLlvmpipeWithinTolerance) {
   if (!c.frontFace.empty()) {
     ASSERT_TRUE(parse(c.frontFace, scene.settings.frontFace));
   }
+  if (!c.filter.empty()) {
+    ASSERT_TRUE(parse(c.filter, scene.settings.textureFilter));
+  }
   const int divisor = kQuickSuite ? 2 : 1;
-  const int width = scene.output.width / divisor, height = scene.output.height / divisor;
+  const int width = c.width > 0 ? c.width : scene.output.width / divisor;
+  const int height = c.height > 0 ? c.height : scene.output.height / divisor;
 
   const RenderOutput cpu = makeCpuRenderer()->render(scene, scene.settings, width, height);
   const RenderOutput gl = makeGlRenderer()->render(scene, scene.settings, width, height);
