@@ -304,6 +304,42 @@ KnobReading readPrecision(const KnobResult& knob) {
   return r;
 }
 
+// Where mipmaps pay: each filter's error against the footprint-averaged reference and its time,
+// against bilinear (level 0), per backend.
+KnobReading readMinification(const KnobResult& knob) {
+  KnobReading r;
+  const ReportPoint* bilinear = find(knob, "cpu", "bilinear");
+  const ReportPoint* trilinear = find(knob, "cpu", "trilinear");
+  const ReportPoint* nearest = find(knob, "cpu", "nearest");
+  if (bilinear && trilinear) {
+    const double gain = trilinear->vsReference.rmse > 0.0 ? bilinear->vsReference.rmse / trilinear->vsReference.rmse : 0.0;
+    r.summary = "Trilinear is " + levels(trilinear->vsReference.rmse) + " from the footprint average where bilinear "
+                "is " + levels(bilinear->vsReference.rmse) + " (" + times(gain) + " less error) at " +
+                times(trilinear->msMedian / bilinear->msMedian) + " bilinear's CPU time.";
+  }
+  for (const std::string backend : {"cpu", "gl"}) {
+    const ReportPoint* base = find(knob, backend, "bilinear");
+    if (!base) continue;
+    r.detail += (backend == "cpu" ? "CPU" : "GL") + std::string(":");
+    for (const ReportPoint& p : knob.points) {
+      if (p.backend != backend) continue;
+      r.detail += " " + p.setting + " " + levels(p.vsReference.rmse) + " in " + ms(p.msMedian) +
+                  (p.setting == "bilinear" ? "" : " (" + times(p.msMedian / base->msMedian) + ")") + ";";
+    }
+    r.detail += " ";
+  }
+  if (nearest && bilinear) {
+    r.detail += "Level 0 aliases either way: nearest " + levels(nearest->vsReference.rmse) + ", bilinear " +
+                levels(bilinear->vsReference.rmse) + ". The mipmapped filters pay where a pixel covers more than a "
+                "texel (the far floor); near the camera they read level 0 like bilinear. ";
+  }
+  const ReportPoint* glTrilinear = find(knob, "gl", "trilinear");
+  if (glTrilinear && glTrilinear->cpuVsGl) {
+    r.detail += "CPU and GL trilinear are " + levels(glTrilinear->cpuVsGl->rmse) + " apart.";
+  }
+  return r;
+}
+
 std::string trimmed(std::string s) {
   while (!s.empty() && s.back() == ' ') s.pop_back();
   return s;
@@ -316,6 +352,7 @@ KnobReading readKnob(const KnobResult& knob) {
   KnobReading r;
   if (knob.id == "tessellation") r = readTessellation(knob);
   else if (knob.id == "texture_filter") r = readTwo(knob, "nearest", "bilinear");
+  else if (knob.id == "minification") r = readMinification(knob);
   else if (knob.id == "lighting_space") r = readTwo(knob, "tangent", "world");
   else if (knob.id == "tangent_transform") r = readTwo(knob, "inverse_transpose", "model");
   else if (knob.id == "gl_sampling") r = readTwo(knob, "fast", "precise");

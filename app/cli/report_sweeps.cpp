@@ -131,6 +131,7 @@ class Sweeper {
                       const RenderOutput* cpuOutput, RenderOutput* glCopy = nullptr);
 
   KnobResult tessellation();
+  KnobResult minification();
   KnobResult twoSettings(const std::string& id);
   KnobResult glSampling();
   KnobResult resolution();
@@ -359,6 +360,72 @@ KnobResult Sweeper::tessellation() {
   return knob;
 }
 
+// A floor seen at grazing angles: 200 x 200 world units, the brick albedo repeating 100 times
+// across, the camera 0.6 units above it looking at the horizon. Albedo view, so only texture
+// filtering differs between the settings.
+Scene grazingFloorScene(const std::shared_ptr<const Texture>& albedo) {
+  Scene scene;
+  scene.camera.position = vec3(0.0f, 0.6f, 4.0f);
+  scene.camera.target = vec3(0.0f, 0.0f, -40.0f);
+  scene.camera.fovDeg = 60.0f;
+  scene.camera.near = 0.1f;
+  scene.camera.far = 300.0f;
+  scene.output.background = vec3(0.0f);
+  Material material;
+  material.diffuseMap = albedo;
+  scene.materials.push_back(material);
+  constexpr float kFloorSide = 200.0f;  // world units
+  constexpr float kRepeats = 100.0f;    // the texture across the floor
+  MeshDesc desc;
+  desc.type = MeshType::Plane;
+  desc.planeSize = vec2(kFloorSide);
+  desc.uvScale = kRepeats;
+  scene.meshDescs.push_back(desc);
+  scene.meshes.push_back(makePlane(desc.planeSize, desc.uvScale));
+  Node node;
+  node.name = "floor";
+  node.meshIndex = 0;
+  node.materialIndex = 0;
+  scene.nodes.push_back(node);
+  scene.settings.view = View::Albedo;
+  scene.settings.cull = CullMode::None;
+  return scene;
+}
+
+KnobResult Sweeper::minification() {
+  KnobResult knob;
+  knob.id = "minification";
+  knob.title = "Minification: mipmaps on a grazing floor";
+  // N of the N x N reference: a pixel near the horizon covers hundreds of texels, so the
+  // reference averages many more samples than the other knobs' (256 per pixel; quick: 64).
+  const int samples = options_.quick ? 8 : 16;
+  knob.question = "Far away a pixel covers many texels: sampling level 0 (nearest, bilinear) picks a few of them "
+                  "and aliases; mipmaps read a pre-averaged level chosen by the LOD of each 2x2 quad, blending two "
+                  "levels with trilinear. (Anisotropic filtering is not drawn yet: settings.anisotropy is read "
+                  "and warned about.)";
+  knob.reference = "The same stages in double with bilinear filtering of level 0 and " + std::to_string(samples) + "x" +
+                   std::to_string(samples) + " samples per pixel (box filter): the texture averaged over each "
+                   "pixel's footprint.";
+  knob.scene = "a 200 x 200 floor with the brick albedo repeated 100 times, camera 0.6 above it, albedo view, " +
+               sizeText(width_, height_);
+  auto albedo = std::make_shared<const Texture>(loadTexture(options_.assetsDir + "/textures/bricks_diffuse.png"));
+  const Scene scene = grazingFloorScene(albedo);
+  RenderSettings exact = scene.settings;
+  exact.textureFilter = TextureFilter::Bilinear;
+  say("minification: reference (double, " + std::to_string(samples) + "x" + std::to_string(samples) + " samples) at " +
+      sizeText(width_, height_));
+  ReferenceOptions options;
+  options.samplesPerAxis = samples;
+  options.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const RenderOutput ref = makeReferenceRenderer(options)->render(scene, exact, width_, height_);
+  for (const TextureFilter filter : kAllTextureFilters) {
+    RenderSettings settings = scene.settings;
+    settings.textureFilter = filter;
+    measureBoth(knob, std::string(toString(filter)), scene, settings, width_, height_, ref);
+  }
+  return knob;
+}
+
 // The knobs with two settings measured on an asset scene: texture filter, lighting space,
 // tangent transform. The reference uses the exact setting (bilinear, world, model).
 KnobResult Sweeper::twoSettings(const std::string& id) {
@@ -581,6 +648,7 @@ ReportData Sweeper::run() {
 
   data.knobs.push_back(tessellation());
   data.knobs.push_back(twoSettings("texture_filter"));
+  data.knobs.push_back(minification());
   data.knobs.push_back(twoSettings("lighting_space"));
   data.knobs.push_back(twoSettings("tangent_transform"));
   data.knobs.push_back(glSampling());

@@ -75,8 +75,8 @@ TEST(CliReport, QuickWritesHtmlAndCsvWithEveryKnob) {
     EXPECT_GT(std::stod(cells[3]), 0.0) << "time per frame: " << line;
     EXPECT_GE(std::stod(cells[6]), 0.0) << "rmse: " << line;
   }
-  for (const char* knob : {"tessellation", "texture_filter", "lighting_space", "tangent_transform", "resolution",
-                           "threads", "precision"}) {
+  for (const char* knob : {"tessellation", "texture_filter", "minification", "lighting_space", "tangent_transform",
+                           "resolution", "threads", "precision"}) {
     EXPECT_TRUE(knobBackends.count({knob, "cpu"})) << knob << " has no cpu row";
     EXPECT_TRUE(knobBackends.count({knob, "gl"})) << knob << " has no gl row";
   }
@@ -85,7 +85,7 @@ TEST(CliReport, QuickWritesHtmlAndCsvWithEveryKnob) {
 
   const std::string html = readFile(out / "report.html");
   expectContains(html, "<!DOCTYPE html>");
-  EXPECT_EQ(count(html, "<svg"), 8u) << "one chart per knob";
+  EXPECT_EQ(count(html, "<svg"), 9u) << "one chart per knob";
   expectContains(html, "time per frame, ms");
   expectContains(html, "RMSE vs reference, levels");
   expectContains(html, "duff_2017");
