@@ -218,8 +218,22 @@ TWR_LANE_OUTLINE Vec4L<L> sampleTextureLanes(const View& texture, const Vec2L<L>
       const L level0 = select(below, zero, select(atLast, lastL, floorLod));
       const L fraction = select(below | atLast, zero, clamped - floorLod);
       const L level1 = minOf(level0 + L(S(1)), lastL);
-      const Vec4L<L> s0 = (sampleLevelsLanes<L>)(texture, level0, uv, linear);
-      const Vec4L<L> s1 = (sampleLevelsLanes<L>)(texture, level1, uv, linear);
+      // Each level the lanes need, once, for the lanes that take it as their first or second
+      // level (lanes straddling a level boundary share the level between them).
+      const int lowest = static_cast<int>(lowestLane(level0));
+      const int highest = static_cast<int>(highestLane(level1));
+      Vec4L<L> s0 = (sampleLevelLanes<L>)(texture, lowest, uv, linear);
+      Vec4L<L> s1 = s0;
+      for (int l = lowest + 1; l <= highest; ++l) {
+        const L here(static_cast<S>(l));
+        const auto first = level0 == here, second = level1 == here;
+        if (!anyOf(first | second)) continue;
+        const Vec4L<L> r = (sampleLevelLanes<L>)(texture, l, uv, linear);
+        s0 = Vec4L<L>(select(first, r.x, s0.x), select(first, r.y, s0.y), select(first, r.z, s0.z),
+                      select(first, r.w, s0.w));
+        s1 = Vec4L<L>(select(second, r.x, s1.x), select(second, r.y, s1.y), select(second, r.z, s1.z),
+                      select(second, r.w, s1.w));
+      }
       result = s0 + (s1 - s0) * fraction;
     }
   }

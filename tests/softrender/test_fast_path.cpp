@@ -149,7 +149,7 @@ TEST_P(FastPath, EveryViewBothLightingSpacesAndFilters) {
       expectPathsAgree(scene, settings, 160, 120, std::string(file) + " view " + std::string(toString(view)));
     }
     for (LightingSpace space : {LightingSpace::World, LightingSpace::Tangent}) {
-      for (TextureFilter filter : {TextureFilter::Nearest, TextureFilter::Bilinear}) {
+      for (TextureFilter filter : kAllTextureFilters) {
         RenderSettings settings = scene.settings;
         settings.lightingSpace = space;
         settings.textureFilter = filter;
@@ -198,6 +198,7 @@ std::shared_ptr<Texture> noiseTexture(int width, int height, std::uint32_t seed)
   std::uniform_int_distribution<int> byte(0, 255);
   texture->rgba.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
   for (std::uint8_t& c : texture->rgba) c = static_cast<std::uint8_t>(byte(rng));
+  buildMipChain(*texture);  // odd sides all the way down: the mipmapped filters read every level
   return texture;
 }
 
@@ -246,7 +247,7 @@ TEST_P(FastPath, SyntheticMaterialsTexturesAndExponents) {
   expectTargetInUse(GetParam());
   for (float shininess : {0.0f, 0.5f, 1.0f, 7.3f, 32.0f, 1000.0f}) {
     const Scene scene = syntheticScene(vec2(-1.3f, -0.2f), vec2(2.0f, 3.1f), 37, 20, shininess);
-    for (TextureFilter filter : {TextureFilter::Nearest, TextureFilter::Bilinear}) {
+    for (TextureFilter filter : kAllTextureFilters) {
       for (LightingSpace space : {LightingSpace::World, LightingSpace::Tangent}) {
         RenderSettings settings = scene.settings;
         settings.textureFilter = filter;
@@ -255,6 +256,38 @@ TEST_P(FastPath, SyntheticMaterialsTexturesAndExponents) {
         expectPathsAgree(scene, settings, 123, 77,
                          "shininess " + std::to_string(shininess) + " " + std::string(toString(filter)) + " " +
                              std::string(toString(space)));
+      }
+    }
+  }
+}
+
+// The texture options the sampler branches on: each wrap mode, sRGB decoding, and the
+// normal-map conventions (green down, two channels, strength), under the filters that read
+// one level, two levels and the quad's LOD.
+TEST_P(FastPath, WrapModesSrgbAndNormalMapConventions) {
+  expectTargetInUse(GetParam());
+  for (TextureWrap wrap : {TextureWrap::Repeat, TextureWrap::MirroredRepeat, TextureWrap::ClampToEdge}) {
+    for (bool srgb : {false, true}) {
+      Scene scene = syntheticScene(vec2(-2.3f, -1.2f), vec2(3.0f, 2.1f), 37, 20, 12.0f);
+      Material& m = scene.materials[0];
+      auto diffuse = std::make_shared<Texture>(*m.diffuseMap);
+      diffuse->options.wrap = wrap;
+      diffuse->options.srgb = srgb;
+      auto normal = std::make_shared<Texture>(*m.normalMap);
+      normal->options.wrap = wrap;
+      normal->options.green = srgb ? GreenAxis::Down : GreenAxis::Up;
+      normal->channels = srgb ? TextureChannels::RedGreen : TextureChannels::Rgba;
+      m.diffuseMap = diffuse;
+      m.normalMap = normal;
+      m.normalStrength = srgb ? 0.4f : 1.0f;
+      for (TextureFilter filter : {TextureFilter::Nearest, TextureFilter::Bilinear, TextureFilter::Trilinear,
+                                   TextureFilter::NearestMipmapNearest}) {
+        RenderSettings settings = scene.settings;
+        settings.textureFilter = filter;
+        settings.cull = CullMode::None;
+        expectPathsAgree(scene, settings, 97, 61,
+                         std::string(toString(wrap)) + (srgb ? " srgb, green down, xy, strength 0.4" : "") + " " +
+                             std::string(toString(filter)));
       }
     }
   }
