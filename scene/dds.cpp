@@ -103,7 +103,8 @@ struct Reader {
     c.mask = mask;
     c.shift = std::countr_zero(mask);
     c.bits = std::popcount(mask);
-    if ((mask >> c.shift) != (std::uint32_t{1} << c.bits) - 1 && c.bits != 32) {
+    // A full 32-bit mask is one run too; 1 << 32 would be undefined (found by review).
+    if (c.bits != 32 && (mask >> c.shift) != (std::uint32_t{1} << c.bits) - 1) {
       fail(std::string("the ") + which + " mask " + hexOf(mask) + " is not one run of bits");
     }
     if (c.bits > 16) fail(std::string("the ") + which + " channel has " + std::to_string(c.bits) + " bits (at most 16 read)");

@@ -196,6 +196,190 @@ std::vector<std::uint8_t> withoutEmptyImageData(const std::uint8_t* bytes, std::
   return out;
 }
 
+// Radiance HDR, as Debian 12's stb_image 2.27 reads it. Its header lines are tokens up to a
+// newline (at most 1023 bytes; a NUL ends a token early, as stb compares them as C strings).
+constexpr std::size_t kHdrTokenBytes = 1023;
+// Scanlines of a width in [8, 32768) may be run-length encoded: 2, 2, then the width in two
+// bytes (high first, its top bit clear), then each of the 4 RGBE channels as packets: a count
+// byte over 128 repeats the next byte count - 128 times, else count bytes follow.
+constexpr int kHdrRleMinWidth = 8, kHdrRleMaxWidth = 32768;  // [inclusive, exclusive)
+constexpr std::uint8_t kHdrRleRunBase = 128;
+constexpr int kHdrChannels = 4;  // R, G, B, shared exponent (bytes per pixel)
+
+// Debian 12's stb_image decodes Radiance pixel data without checking where the file ends: a
+// zero-length packet (or the zeros it reads past the end of a truncated file) never moves its
+// loop forward, so it spins forever (found by fuzzing), and flat pixels past the end are left
+// as whatever its stack held. This walks the data after the header exactly as stb will and
+// returns "" when stb can decode it to the end (or refuses it by itself), else what is wrong.
+// width and height are the header's, already checked.
+std::string hdrDataProblem(const std::uint8_t* bytes, std::size_t size, int width, int height) {
+  std::size_t at = 0;
+  const auto get8 = [&]() -> std::uint8_t { return at < size ? bytes[at++] : 0; };
+  const auto token = [&]() {
+    std::string text;
+    std::uint8_t c = get8();
+    while (at < size && c != '\n') {
+      text.push_back(static_cast<char>(c));
+      if (text.size() == kHdrTokenBytes) {
+        while (at < size && get8() != '\n') {
+        }
+        break;
+      }
+      c = get8();
+    }
+    return text;
+  };
+  (void)token();  // "#?RADIANCE" or "#?RGBE"
+  for (;;) {
+    const std::string line = token();
+    if (line.empty() || line[0] == '\0') break;
+  }
+  (void)token();  // "-Y height +X width"
+  const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  const std::size_t flatBytes = pixels * kHdrChannels;
+  const auto flatProblem = [&](std::size_t from) -> std::string {
+    if (size - std::min(size, from) >= flatBytes) return "";
+    return "the file ends inside the pixel data (" + std::to_string(width) + "x" + std::to_string(height) +
+           " pixels of 4 bytes from byte " + std::to_string(from) + ", " + std::to_string(size - std::min(size, from)) +
+           " bytes left)";
+  };
+  if (width < kHdrRleMinWidth || width >= kHdrRleMaxWidth) return flatProblem(at);
+  for (int row = 0; row < height; ++row) {
+    const std::size_t rowStart = at;
+    if (size - at < 4) return "the file ends at scanline " + std::to_string(row) + " of " + std::to_string(height);
+    const std::uint8_t c1 = get8(), c2 = get8(), high = get8();
+    // Not run-length encoded: stb reads the rest of the image (from its first pixel) flat.
+    if (c1 != 2 || c2 != 2 || (high & 0x80)) return flatProblem(rowStart);
+    const int length = (high << 8) | get8();
+    if (length != width) return "";  // stb refuses it
+    for (int channel = 0; channel < kHdrChannels; ++channel) {
+      for (int x = 0; x < width;) {
+        if (at >= size) {
+          return "the file ends inside scanline " + std::to_string(row) + " (stb_image would read zeros forever)";
+        }
+        const int count = get8();
+        if (count > kHdrRleRunBase) {
+          if (at >= size) return "the file ends inside scanline " + std::to_string(row);
+          (void)get8();
+          if (count - kHdrRleRunBase > width - x) return "";  // stb refuses it
+          x += count - kHdrRleRunBase;
+        } else {
+          if (count == 0) {
+            return "scanline " + std::to_string(row) + " holds a packet of length 0 (stb_image would read it forever)";
+          }
+          if (count > width - x) return "";  // stb refuses it
+          if (size - at < static_cast<std::size_t>(count)) return "the file ends inside scanline " + std::to_string(row);
+          at += static_cast<std::size_t>(count);
+          x += count;
+        }
+      }
+    }
+  }
+  return "";
+}
+
+std::uint32_t readLittleEndian16(const std::uint8_t* bytes, std::size_t size, std::size_t at) {
+  const auto byte = [&](std::size_t i) -> std::uint32_t { return i < size ? bytes[i] : 0; };  // stb reads 0 past the end
+  return byte(at) | (byte(at + 1) << 8);
+}
+std::uint32_t readLittleEndian32(const std::uint8_t* bytes, std::size_t size, std::size_t at) {
+  return readLittleEndian16(bytes, size, at) | (readLittleEndian16(bytes, size, at + 2) << 16);
+}
+
+std::string endsInsidePixels(std::size_t needed, std::size_t from, std::size_t size) {
+  return "the file ends inside the pixel data (" + std::to_string(needed) + " bytes from byte " + std::to_string(from) +
+         ", " + std::to_string(size - std::min(size, from)) + " left)";
+}
+
+// TGA (Truevision TGA 2.0) header: ID length, colour-map type, image type, colour-map start,
+// length and entry bits, origin, width, height, bits per pixel, descriptor (bytes).
+constexpr std::size_t kTgaHeaderBytes = 18;
+constexpr std::uint8_t kTgaRleFlag = 8;      // image types 9, 10, 11
+constexpr std::uint8_t kTgaRepeatFlag = 0x80, kTgaCountMask = 0x7F;  // RLE packet header
+
+// stb_image's test for a TGA header (colour-map type 0 or 1, an image type it reads, a
+// size, bits it reads), repeated here so that a file is called TGA only when stb's TGA decoder
+// is the one that reads it: stb tries its other decoders first, and bytes 0xFF 0xD8 that we
+// do not call JPEG would reach its JPEG decoder past the Huffman-table walk.
+bool looksLikeTga(const std::uint8_t* bytes, std::size_t size) {
+  const auto byte = [&](std::size_t i) -> std::uint8_t { return i < size ? bytes[i] : 0; };
+  const std::uint8_t mapType = byte(1), type = byte(2);
+  const auto bitsOk = [](std::uint8_t bits) { return bits == 8 || bits == 15 || bits == 16 || bits == 24 || bits == 32; };
+  if (mapType > 1) return false;
+  if (mapType == 1) {
+    if (type != 1 && type != 9) return false;
+    if (!bitsOk(byte(7))) return false;
+  } else if (type != 2 && type != 3 && type != 10 && type != 11) {
+    return false;
+  }
+  if (readLittleEndian16(bytes, size, 12) < 1 || readLittleEndian16(bytes, size, 14) < 1) return false;
+  const std::uint8_t bits = byte(16);
+  if (mapType == 1 && bits != 8 && bits != 16) return false;
+  return bitsOk(bits);
+}
+
+// Debian 12's stb_image reads a plain (not RLE, not colour-mapped) TGA's rows with a copy that
+// leaves the rest of its buffer as malloc left it when the file ends early, so texels of a
+// truncated file are whatever the heap held, different from run to run (found by fuzzing:
+// two loads of one file disagreed); and a few header bytes can declare a 16384 x 16384 image
+// that it then decodes from nothing. Every TGA must hold its palette and all of its pixels:
+// returns "" when it does (or stb refuses the header by itself), else what is missing.
+std::string tgaDataProblem(const std::uint8_t* bytes, std::size_t size) {
+  const auto byte = [&](std::size_t i) -> std::uint8_t { return i < size ? bytes[i] : 0; };
+  const bool mapped = byte(1) != 0, rle = (byte(2) & kTgaRleFlag) != 0;
+  const std::size_t mapStart = readLittleEndian16(bytes, size, 3), mapLength = readLittleEndian16(bytes, size, 5);
+  const std::uint8_t mapBits = byte(7), bits = byte(16);
+  const std::size_t width = readLittleEndian16(bytes, size, 12), height = readLittleEndian16(bytes, size, 14);
+  // Bytes per stored pixel (or palette entry), as stb's tga_get_comp decides.
+  const auto bytesOf = [&](std::uint8_t b) -> std::size_t {
+    switch (b) {
+      case 8: return 1;
+      case 15: return 2;
+      case 16: return 2;
+      case 24: return 3;
+      case 32: return 4;
+      default: return 0;
+    }
+  };
+  std::size_t at = kTgaHeaderBytes + byte(0);  // after the image ID
+  if (mapped) {
+    if (bytesOf(mapBits) == 0 || mapLength == 0) return "";  // stb refuses it
+    at += mapStart + mapLength * bytesOf(mapBits);
+    if (at > size) return "the file ends inside the colour map";
+  }
+  const std::size_t pixelBytes = bytesOf(bits);
+  if (pixelBytes == 0) return "";  // stb refuses it
+  const std::size_t pixels = width * height;
+  if (!rle) return size - std::min(size, at) >= pixels * pixelBytes ? "" : endsInsidePixels(pixels * pixelBytes, at, size);
+  for (std::size_t done = 0; done < pixels;) {
+    if (at >= size) return "the file ends inside the run-length-encoded pixels (" + std::to_string(done) + " of " +
+                           std::to_string(pixels) + " read)";
+    const std::uint8_t packet = bytes[at++];
+    const std::size_t count = std::min<std::size_t>(1 + (packet & kTgaCountMask), pixels - done);
+    const std::size_t stored = (packet & kTgaRepeatFlag) ? pixelBytes : count * pixelBytes;
+    if (size - at < stored) return "the file ends inside the run-length-encoded pixels";
+    at += stored;
+    done += count;
+  }
+  return "";
+}
+
+// BMP: Debian 12's stb_image reads rows byte by byte and takes zeros past the end, so a 60-byte
+// file can declare 16384 x 16384 pixels and have stb allocate and fill 1 GiB from nothing.
+// Every row must be in the file (stb reads BMP only uncompressed or with bit fields; each row
+// padded to 4 bytes). width and height are the header's, already checked.
+constexpr std::size_t kBmpOffsetPixelData = 10, kBmpOffsetHeaderSize = 14;
+constexpr std::uint32_t kBmpCoreHeaderBytes = 12;  // OS/2 BITMAPCOREHEADER: 16-bit sides
+std::string bmpDataProblem(const std::uint8_t* bytes, std::size_t size, int width, int height) {
+  const std::uint32_t headerSize = readLittleEndian32(bytes, size, kBmpOffsetHeaderSize);
+  const std::size_t bitsAt = headerSize == kBmpCoreHeaderBytes ? 24 : 28;
+  const std::size_t bits = readLittleEndian16(bytes, size, bitsAt);
+  const std::size_t rowBytes = (static_cast<std::size_t>(width) * bits + 31) / 32 * 4;
+  const std::size_t needed = rowBytes * static_cast<std::size_t>(height);
+  const std::size_t from = readLittleEndian32(bytes, size, kBmpOffsetPixelData);
+  return size - std::min(size, from) >= needed ? "" : endsInsidePixels(needed, from, size);
+}
+
 }  // namespace
 
 Image makeImage(int width, int height, std::uint32_t fillRgba) {
@@ -212,14 +396,25 @@ Image makeImage(int width, int height, std::uint32_t fillRgba) {
   return image;
 }
 
+namespace {
+// A BMP's height is negative when its rows are stored top first; stb_image 2.27's info call
+// returns it as stored while its loader decodes abs(height) rows, so a top-down BMP was refused
+// as "2x-2" (found writing the regression tests). INT_MIN has no absolute value: it stays out
+// of range and is refused with the size.
+int bmpRows(int height) { return height < 0 && height != INT_MIN ? -height : height; }
+}  // namespace
+
 bool readImageHeader(const std::uint8_t* bytes, std::size_t size, int& width, int& height) {
   const ImageFileFormat format = formatOfBytes(bytes, size);
   if (format == ImageFileFormat::Unknown || size > static_cast<std::size_t>(INT_MAX)) return false;
   if (format == ImageFileFormat::Dds) return readDdsHeader(bytes, size, width, height);
   // stb reads a JPEG's Huffman tables while looking for its size, so they are checked first.
   if (format == ImageFileFormat::Jpeg && !jpegHuffmanProblem(bytes, size).empty()) return false;
+  if (format == ImageFileFormat::Tga && !looksLikeTga(bytes, size)) return false;
   int channels = 0;
-  return stbi_info_from_memory(bytes, static_cast<int>(size), &width, &height, &channels) != 0;
+  if (!stbi_info_from_memory(bytes, static_cast<int>(size), &width, &height, &channels)) return false;
+  if (format == ImageFileFormat::Bmp) height = bmpRows(height);
+  return true;
 }
 
 ImageFileFormat imageFileFormat(const std::uint8_t* bytes, std::size_t size) { return formatOfBytes(bytes, size); }
@@ -244,13 +439,15 @@ namespace {
 void checkStbHeader(const std::uint8_t* bytes, int length, ImageFileFormat format, const std::string& name, int& width,
                     int& height) {
   int channels = 0;
-  if (!stbi_info_from_memory(bytes, length, &width, &height, &channels)) {
+  if ((format == ImageFileFormat::Tga && !looksLikeTga(bytes, static_cast<std::size_t>(length))) ||
+      !stbi_info_from_memory(bytes, length, &width, &height, &channels)) {
     if (format == ImageFileFormat::Tga) {
       throw InputError(name + ": not a readable image (no PNG, JPEG, BMP, DDS or HDR signature, and not a TGA "
                               "header either; expected a " + std::string(kReadableFormats) + " file)");
     }
     throw InputError(name + ": not a readable image (" + std::string(toString(format)) + ": " + stbReason() + ")");
   }
+  if (format == ImageFileFormat::Bmp) height = bmpRows(height);
   if (width <= 0 || height <= 0 || width > kMaxImageSide || height > kMaxImageSide) {
     throw InputError(name + ": image is " + std::to_string(width) + "x" + std::to_string(height) +
                      ", expected each side in [1, " + std::to_string(kMaxImageSide) + "]");
@@ -300,6 +497,10 @@ Image decodeImage(const std::uint8_t* bytes, std::size_t size, const std::string
   const int length = static_cast<int>(size);
   int width = 0, height = 0, channels = 0;
   checkStbHeader(bytes, length, format, nameForMessages, width, height);
+  const std::string problem = format == ImageFileFormat::Tga   ? tgaDataProblem(bytes, size)
+                              : format == ImageFileFormat::Bmp ? bmpDataProblem(bytes, size, width, height)
+                                                               : std::string();
+  if (!problem.empty()) throw InputError(nameForMessages + ": corrupt " + std::string(toString(format)) + " (" + problem + ")");
   int decodedWidth = 0, decodedHeight = 0;
   std::unique_ptr<stbi_uc, void (*)(void*)> data(
       stbi_load_from_memory(bytes, length, &decodedWidth, &decodedHeight, &channels, 4), stbi_image_free);
@@ -326,6 +527,8 @@ ImageF decodeHdrImage(const std::uint8_t* bytes, std::size_t size, const std::st
   const int length = static_cast<int>(size);
   int width = 0, height = 0, channels = 0;
   checkStbHeader(bytes, length, ImageFileFormat::Hdr, nameForMessages, width, height);
+  const std::string problem = hdrDataProblem(bytes, size, width, height);
+  if (!problem.empty()) throw InputError(nameForMessages + ": corrupt Radiance HDR image (" + problem + ")");
   int decodedWidth = 0, decodedHeight = 0;
   std::unique_ptr<float, void (*)(void*)> data(
       stbi_loadf_from_memory(bytes, length, &decodedWidth, &decodedHeight, &channels, 4), stbi_image_free);

@@ -401,6 +401,145 @@ TEST(HostileJpeg, HuffmanTableWithTooManyCodesIsRefused) {
   expectContains(errorOf([&] { loadPng(cut); }), {cut + ": corrupt JPEG (a Huffman table with 282 codes"});
 }
 
+// Debian 12's stb_image loops forever on a run-length-encoded Radiance scanline holding a
+// packet of length 0, and on one cut off by the end of the file (it reads zeros there), and
+// leaves flat pixels past the end as its stack held them (found by fuzzing: a hang). The data
+// is walked before stb sees it; a valid RLE file still decodes.
+TEST(HostileHdr, ZeroLengthPacketsAndTruncatedDataAreRefused) {
+  const fs::path dir = caseDir();
+  const std::string header = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 8\n";
+  // One RLE scanline of 8 pixels: each channel a run of 8 (0x88) of one value.
+  std::string rle = header + std::string("\x02\x02\x00\x08", 4);
+  for (const char value : {'\x80', '\x40', '\x20', '\x81'}) rle += std::string("\x88", 1) + value;
+  const ImageF image = loadHdrImage(writeText(dir / "valid.hdr", rle));
+  ASSERT_EQ(image.width, 8);
+  ASSERT_EQ(image.height, 1);
+  for (int x = 0; x < 8; ++x) {
+    EXPECT_FLOAT_EQ(image.rgba[static_cast<std::size_t>(x) * 4 + 0], 1.0f) << x;   // 128 * 2^(129-136)
+    EXPECT_FLOAT_EQ(image.rgba[static_cast<std::size_t>(x) * 4 + 1], 0.5f) << x;
+    EXPECT_FLOAT_EQ(image.rgba[static_cast<std::size_t>(x) * 4 + 3], 1.0f) << x;
+  }
+
+  const std::string zero = writeText(dir / "zero.hdr", header + std::string("\x02\x02\x00\x08\x00", 5));
+  const std::string zeroMessage = errorOf([&] { loadHdrImage(zero); });
+  expectContains(zeroMessage, {zero + ": corrupt Radiance HDR image (", "packet of length 0"});
+  const std::string cut = writeText(dir / "cut.hdr", rle.substr(0, rle.size() - 3));
+  expectContains(errorOf([&] { loadHdrImage(cut); }), {cut + ": corrupt Radiance HDR image (the file ends inside"});
+  // Flat pixels (a width under 8 is never RLE): every byte must be there.
+  const std::string flat = writeText(dir / "flat.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 2\n" +
+                                                           std::string(15, '\x80'));
+  expectContains(errorOf([&] { loadHdrImage(flat); }), {flat + ": corrupt Radiance HDR image (the file ends inside"});
+  // Never a material map.
+  expectContains(errorOf([&] { loadTexture(zero); }), {zero + ": a Radiance HDR image holds floating-point texels"});
+}
+
+void appendLittleEndian(Bytes& out, std::uint32_t v, int bytes) {
+  for (int i = 0; i < bytes; ++i) out.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+}
+
+// A TGA header (18 bytes): no ID, no colour map, `type` (2 true colour, 10 RLE), top-left origin.
+Bytes tgaHeader(std::uint8_t type, int width, int height, std::uint8_t bits) {
+  Bytes out{0, 0, type, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+  appendLittleEndian(out, static_cast<std::uint32_t>(width), 2);
+  appendLittleEndian(out, static_cast<std::uint32_t>(height), 2);
+  out.push_back(bits);
+  out.push_back(bits == 32 ? 0x28 : 0x20);  // top-left origin, alpha bits
+  return out;
+}
+
+// Debian 12's stb_image copies a plain TGA's rows with a read that leaves its buffer as malloc
+// left it when the file ends early: the texels of a truncated TGA were heap garbage, different
+// from one load to the next (found by fuzzing: loadPng and loadTexture disagreed), and 18
+// header bytes could declare 16384 x 16384 pixels (a timeout). Every TGA must hold its pixels.
+TEST(HostileTga, TruncatedPixelDataIsRefused) {
+  const fs::path dir = caseDir();
+  Bytes plain = tgaHeader(2, 2, 2, 32);
+  for (int i = 0; i < 4; ++i) plain.insert(plain.end(), {0x30, 0x20, 0x10, 0xFF});  // B, G, R, A
+  const Image image = loadPng(writeFile(dir / "plain.tga", plain));
+  ASSERT_EQ(image.width, 2);
+  EXPECT_EQ(pixelOf(image, 1, 1), (std::array<int, 4>{0x10, 0x20, 0x30, 0xFF}));
+  const std::string cut = writeFile(dir / "cut.tga", Bytes(plain.begin(), plain.end() - 1));
+  expectContains(errorOf([&] { loadPng(cut); }), {cut + ": corrupt TGA (the file ends inside the pixel data (16 bytes"});
+  expectStartsWith(errorOf([&] { loadTexture(cut); }), cut + ": corrupt TGA");
+  const std::string huge = writeFile(dir / "huge.tga", tgaHeader(2, 16384, 16384, 8));
+  const auto start = std::chrono::steady_clock::now();
+  expectContains(errorOf([&] { loadTexture(huge); }), {huge + ": corrupt TGA (the file ends inside the pixel data"});
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));
+
+  // RLE: one packet repeating a pixel 4 times loads; without its pixel it is refused.
+  Bytes rle = tgaHeader(10, 2, 2, 24);
+  rle.insert(rle.end(), {0x83, 0x30, 0x20, 0x10});
+  const Image rleImage = loadPng(writeFile(dir / "rle.tga", rle));
+  EXPECT_EQ(pixelOf(rleImage, 0, 1), (std::array<int, 4>{0x10, 0x20, 0x30, 0xFF}));
+  const std::string rleCut = writeFile(dir / "rle_cut.tga", Bytes(rle.begin(), rle.end() - 2));
+  expectContains(errorOf([&] { loadPng(rleCut); }), {rleCut + ": corrupt TGA (the file ends inside the run-length"});
+}
+
+// TGA has no signature and stb_image tries its other decoders first: bytes starting 0xFF 0xD8
+// that are not our 3-byte JPEG signature reached stb's JPEG decoder without the Huffman-table
+// walk. Only a header stb's own TGA test accepts is taken for a TGA (found by review).
+TEST(HostileTga, OnlyATgaHeaderReachesTheTgaDecoder) {
+  const fs::path dir = caseDir();
+  Bytes jpegLike{0xFF, 0xD8, 0x00, 0xFF, 0xC4, 0x00, 0x14, 0x00};
+  jpegLike.resize(64, 0xFF);
+  const std::string path = writeFile(dir / "soi.tga", jpegLike);
+  expectContains(errorOf([&] { loadPng(path); }), {path + ": not a readable image (", "not a TGA header either"});
+  int width = 0, height = 0;
+  EXPECT_FALSE(readImageHeader(jpegLike.data(), jpegLike.size(), width, height));
+}
+
+// Debian 12's stb_image reads BMP rows byte by byte with zeros past the end: a 70-byte file could
+// declare 16384 x 16384 pixels and have it decode 1 GiB from nothing. Every row must be there.
+TEST(HostileBmp, TruncatedPixelDataIsRefused) {
+  const fs::path dir = caseDir();
+  const auto bmp = [](int width, int height, std::size_t rowBytes) {
+    Bytes out{'B', 'M'};
+    appendLittleEndian(out, static_cast<std::uint32_t>(54 + rowBytes * 2), 4);
+    appendLittleEndian(out, 0, 4);
+    appendLittleEndian(out, 54, 4);  // pixel data offset
+    appendLittleEndian(out, 40, 4);  // BITMAPINFOHEADER
+    appendLittleEndian(out, static_cast<std::uint32_t>(width), 4);
+    appendLittleEndian(out, static_cast<std::uint32_t>(-height), 4);  // top-down
+    appendLittleEndian(out, 1, 2);
+    appendLittleEndian(out, 24, 2);
+    for (int i = 0; i < 6; ++i) appendLittleEndian(out, 0, 4);
+    for (int row = 0; row < 2; ++row) out.insert(out.end(), {0x30, 0x20, 0x10, 0x30, 0x20, 0x10, 0, 0});  // 2 BGR + pad
+    return out;
+  };
+  const Bytes valid = bmp(2, 2, 8);
+  const Image image = loadPng(writeFile(dir / "valid.bmp", valid));
+  ASSERT_EQ(image.width, 2);
+  EXPECT_EQ(pixelOf(image, 1, 1), (std::array<int, 4>{0x10, 0x20, 0x30, 0xFF}));
+  const std::string cut = writeFile(dir / "cut.bmp", Bytes(valid.begin(), valid.end() - 3));
+  expectContains(errorOf([&] { loadPng(cut); }), {cut + ": corrupt BMP (the file ends inside the pixel data (16 bytes"});
+  const std::string huge = writeFile(dir / "huge.bmp", bmp(16384, 16384, 8));
+  expectContains(errorOf([&] { loadTexture(huge); }), {huge + ": corrupt BMP (the file ends inside the pixel data"});
+}
+
+// A DDS bit mask of all 32 bits shifted 1 by 32 (undefined behaviour) while being checked for one
+// run of bits (found by review); it is one run, refused as more bits than are read.
+TEST(HostileDds, FullThirtyTwoBitMaskIsRefusedCleanly) {
+  const fs::path dir = caseDir();
+  Bytes dds{'D', 'D', 'S', ' '};
+  appendLittleEndian(dds, 124, 4);     // header size
+  appendLittleEndian(dds, 0x100F, 4);  // caps, height, width, pitch, pixel format
+  appendLittleEndian(dds, 1, 4);       // height
+  appendLittleEndian(dds, 1, 4);       // width
+  dds.resize(76, 0);  // the pixel format starts at byte 76 of the file
+  appendLittleEndian(dds, 32, 4);          // pixel-format size
+  appendLittleEndian(dds, 0x40, 4);        // RGB
+  appendLittleEndian(dds, 0, 4);           // FourCC
+  appendLittleEndian(dds, 32, 4);          // bits per texel
+  appendLittleEndian(dds, 0xFFFFFFFFu, 4);  // red mask
+  appendLittleEndian(dds, 0xFF00, 4);
+  appendLittleEndian(dds, 0xFF0000, 4);
+  appendLittleEndian(dds, 0, 4);
+  dds.resize(128, 0);  // caps: none
+  dds.insert(dds.end(), {0x10, 0x20, 0x30, 0x40});
+  const std::string path = writeFile(dir / "mask.dds", dds);
+  expectContains(errorOf([&] { loadPng(path); }), {path + ": DDS: the red channel has 32 bits (at most 16 read)"});
+}
+
 TEST(HostilePng, SpecialFilesAreRefused) {
   const fs::path dir = caseDir();
   expectStartsWith(errorOf([&] { loadPng(dir.string()); }), dir.string() + ": cannot open image file (it is a directory)");
