@@ -380,6 +380,36 @@ std::string bmpDataProblem(const std::uint8_t* bytes, std::size_t size, int widt
   return size - std::min(size, from) >= needed ? "" : endsInsidePixels(needed, from, size);
 }
 
+// stb_image 2.27 keeps a BMP's palette in a 256-entry array on its stack and fills only the
+// entries the file gives, so a 1-, 4- or 8-bit pixel index past a short palette read whatever
+// the stack held (found by review; the PNG twin above was found by fuzzing). Returns a copy
+// with the palette padded to 2^bits entries (black; stb makes every entry opaque) and the
+// pixel data offset moved past them, or an empty vector when the file needs no change.
+// Call after bmpDataProblem: the offset is then inside the file.
+std::vector<std::uint8_t> withFullBmpPalette(const std::uint8_t* bytes, std::size_t size) {
+  const std::uint32_t headerSize = readLittleEndian32(bytes, size, kBmpOffsetHeaderSize);
+  const bool core = headerSize == kBmpCoreHeaderBytes;
+  const std::uint32_t bits = readLittleEndian16(bytes, size, core ? 24 : 28);
+  if (bits != 1 && bits != 4 && bits != 8) return {};
+  const std::int64_t offset = readLittleEndian32(bytes, size, kBmpOffsetPixelData);
+  // Entries stb reads, as it counts them: OS/2 core headers 3 bytes each (counted from byte 38),
+  // the others 4 bytes each after the header.
+  constexpr std::int64_t kFileHeaderBytes = 14, kCoreCountFrom = 38;
+  const std::int64_t entryBytes = core ? 3 : 4;
+  const std::int64_t entries = core ? (offset - kCoreCountFrom) / 3 : (offset - kFileHeaderBytes - headerSize) / 4;
+  const std::int64_t full = std::int64_t{1} << bits;
+  if (entries < 1 || entries >= full) return {};  // stb refuses an empty palette; a full one needs nothing
+  const std::size_t insertAt = static_cast<std::size_t>(kFileHeaderBytes + headerSize + entries * entryBytes);
+  if (insertAt > size || static_cast<std::size_t>(offset) > size) return {};
+  const std::size_t added = static_cast<std::size_t>((full - entries) * entryBytes);
+  std::vector<std::uint8_t> out(bytes, bytes + insertAt);
+  out.insert(out.end(), added, 0);
+  out.insert(out.end(), bytes + insertAt, bytes + size);
+  const std::uint32_t moved = static_cast<std::uint32_t>(offset) + static_cast<std::uint32_t>(added);
+  for (std::size_t i = 0; i < 4; ++i) out[kBmpOffsetPixelData + i] = static_cast<std::uint8_t>(moved >> (8 * i));
+  return out;
+}
+
 }  // namespace
 
 Image makeImage(int width, int height, std::uint32_t fillRgba) {
@@ -501,9 +531,16 @@ Image decodeImage(const std::uint8_t* bytes, std::size_t size, const std::string
                               : format == ImageFileFormat::Bmp ? bmpDataProblem(bytes, size, width, height)
                                                                : std::string();
   if (!problem.empty()) throw InputError(nameForMessages + ": corrupt " + std::string(toString(format)) + " (" + problem + ")");
+  const std::vector<std::uint8_t> bmpPadded =
+      format == ImageFileFormat::Bmp ? withFullBmpPalette(bytes, size) : std::vector<std::uint8_t>{};
+  if (bmpPadded.size() > static_cast<std::size_t>(INT_MAX)) {
+    throw InputError(nameForMessages + ": image data larger than " + describeBytes(INT_MAX));
+  }
+  const std::uint8_t* decodeBytes = bmpPadded.empty() ? bytes : bmpPadded.data();
+  const int decodeLength = bmpPadded.empty() ? length : static_cast<int>(bmpPadded.size());
   int decodedWidth = 0, decodedHeight = 0;
   std::unique_ptr<stbi_uc, void (*)(void*)> data(
-      stbi_load_from_memory(bytes, length, &decodedWidth, &decodedHeight, &channels, 4), stbi_image_free);
+      stbi_load_from_memory(decodeBytes, decodeLength, &decodedWidth, &decodedHeight, &channels, 4), stbi_image_free);
   if (!data) {
     throw InputError(nameForMessages + ": cannot decode image (" + std::string(toString(format)) + ": " + stbReason() +
                      ")");

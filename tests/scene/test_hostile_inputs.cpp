@@ -516,6 +516,29 @@ TEST(HostileBmp, TruncatedPixelDataIsRefused) {
   expectContains(errorOf([&] { loadTexture(huge); }), {huge + ": corrupt BMP (the file ends inside the pixel data"});
 }
 
+// stb_image 2.27 keeps a BMP palette on its stack and fills only the file's entries: an 8-bit
+// index past a one-entry palette read stack garbage (found by review). The palette is padded
+// with black, so the pixel is opaque black every time.
+TEST(HostileBmp, PaletteIndexPastThePaletteIsOpaqueBlack) {
+  const fs::path dir = caseDir();
+  Bytes out{'B', 'M'};
+  appendLittleEndian(out, 14 + 40 + 4 + 4, 4);
+  appendLittleEndian(out, 0, 4);
+  appendLittleEndian(out, 14 + 40 + 4, 4);  // pixel data after one palette entry
+  appendLittleEndian(out, 40, 4);
+  appendLittleEndian(out, 2, 4);   // width
+  appendLittleEndian(out, 1, 4);   // height
+  appendLittleEndian(out, 1, 2);
+  appendLittleEndian(out, 8, 2);   // bits per pixel
+  for (int i = 0; i < 6; ++i) appendLittleEndian(out, 0, 4);
+  out.insert(out.end(), {0x30, 0x20, 0x10, 0x00});  // entry 0: B, G, R, reserved
+  out.insert(out.end(), {0, 200, 0, 0});             // indices 0 and 200, padding
+  const Image image = loadPng(writeFile(dir / "short_palette.bmp", out));
+  ASSERT_EQ(image.width, 2);
+  EXPECT_EQ(pixelOf(image, 0, 0), (std::array<int, 4>{0x10, 0x20, 0x30, 0xFF}));
+  EXPECT_EQ(pixelOf(image, 1, 0), (std::array<int, 4>{0, 0, 0, 0xFF}));
+}
+
 // A DDS bit mask of all 32 bits shifted 1 by 32 (undefined behaviour) while being checked for one
 // run of bits (found by review); it is one run, refused as more bits than are read.
 TEST(HostileDds, FullThirtyTwoBitMaskIsRefusedCleanly) {
