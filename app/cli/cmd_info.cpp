@@ -157,9 +157,28 @@ void printNode(std::ostream& out, const Scene& scene, const Node& node, int dept
   for (const Node& child : node.children) printNode(out, scene, child, depth + 1);
 }
 
+std::string_view mipSourceName(MipSource source) {
+  switch (source) {
+    case MipSource::File: return "file";
+    case MipSource::Built: return "built";
+    case MipSource::None: break;
+  }
+  return "none";
+}
+
 Json mapJson(const std::shared_ptr<const Texture>& map) {
   if (!map) return nullptr;
-  return Json{{"path", map->path}, {"width", map->width}, {"height", map->height}};
+  return Json{{"path", map->path},
+              {"width", map->width},
+              {"height", map->height},
+              {"format", map->formatName},
+              {"levels", map->levelCount()},
+              {"levels_from", std::string(mipSourceName(map->mipSource))},
+              {"gl_upload", map->blockFormat ? "compressed" : "rgba8"},
+              {"wrap", std::string(toString(map->options.wrap))},
+              {"srgb", map->options.srgb},
+              {"flip_v", map->options.flipV},
+              {"green", std::string(toString(map->options.green))}};
 }
 
 Json settingsJson(const RenderSettings& s) {
@@ -227,8 +246,17 @@ std::string mapsText(const Material& m) {
       {"diffuse", &m.diffuseMap}, {"normal", &m.normalMap}, {"specular", &m.specularMap}};
   for (const auto& [name, map] : entries) {
     if (!*map) continue;
-    maps += std::string(maps.empty() ? "" : ", ") + name + " " + (*map)->path + " (" + std::to_string((*map)->width) +
-            "x" + std::to_string((*map)->height) + ")";
+    const Texture& t = **map;
+    std::string options;
+    if (t.options.wrap != TextureWrap::Repeat) options += ", " + std::string(toString(t.options.wrap));
+    if (t.options.srgb) options += ", srgb";
+    if (t.options.flipV) options += ", flip_v";
+    if (t.options.green == GreenAxis::Down) options += ", green down";
+    maps += std::string(maps.empty() ? "" : ", ") + name + " " + t.path + " (" + std::to_string(t.width) + "x" +
+            std::to_string(t.height) + " " + (t.formatName.empty() ? std::string("RGBA8") : t.formatName) + ", " +
+            std::to_string(t.levelCount()) + " levels" +
+            (t.mipSource == MipSource::File ? " from the file" : t.mipSource == MipSource::Built ? " built" : "") +
+            (t.blockFormat ? ", uploaded compressed" : "") + options + ")";
   }
   return maps.empty() ? "none" : maps;
 }

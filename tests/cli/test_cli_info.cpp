@@ -24,8 +24,8 @@ TEST(CliInfo, TextListingOfTheDefaultScene) {
   expectContains(r.out, "  box: cube size 1.2; 12 triangles, 24 vertices; material bricks");
   expectContains(r.out, "total: 3982 triangles, 2173 vertices in 3 drawn meshes");
   expectContains(r.out, "materials (2):");
-  expectContains(r.out, "shininess 32; maps: diffuse " + kSource + "/assets/textures/bricks_diffuse.png (512x512), normal " +
-                            kSource + "/assets/textures/bricks_normal.png (512x512), specular ");
+  expectContains(r.out, "shininess 32; maps: diffuse " + kSource + "/assets/textures/bricks_diffuse.png (512x512 PNG, 10 levels built), normal " +
+                            kSource + "/assets/textures/bricks_normal.png (512x512 PNG, 10 levels built), specular ");
   expectContains(r.out, "lights (2)");
   expectContains(r.out, "[1] position (-4, 3, -1)");
   expectContains(r.out, "camera: position (0.3, 1.7, 4.4), target (0, 0.5, 0), fov_deg 50");
