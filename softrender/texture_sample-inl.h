@@ -108,16 +108,12 @@ TWR_LANE_INLINE AxisFootprintL<L> linearAxisLanes(const L& c, int size, TextureW
   const L i = floorOf(scaled);
   AxisFootprintL<L> a;
   a.weight = scaled - i;
-  switch (wrap) {
-    case TextureWrap::Repeat:
-      a.i0 = wrapTexelIndex(size, i);
-      a.i1 = nextTexelIndex(a.i0, size);
-      break;
-    case TextureWrap::ClampToEdge:
-    case TextureWrap::MirroredRepeat:
-      a.i0 = wrapTexelIndex(size, minOf(maxOf(i, zero), last));
-      a.i1 = wrapTexelIndex(size, minOf(maxOf(i + one, zero), last));
-      break;
+  if (wrap == TextureWrap::Repeat) {
+    a.i0 = wrapTexelIndex(size, i);
+    a.i1 = nextTexelIndex(a.i0, size);
+  } else {  // clamp_to_edge, and mirrored_repeat (already folded into [0, 1])
+    a.i0 = wrapTexelIndex(size, minOf(maxOf(i, zero), last));
+    a.i1 = wrapTexelIndex(size, minOf(maxOf(i + one, zero), last));
   }
   return a;
 }
