@@ -133,8 +133,8 @@ TWR_LANE_INLINE Vec4L<L> texelValue(const View& texture, const Vec4L<L>& bytes) 
 }
 
 // One level, the same for every lane: RGBA in [0, 1]. Bilinear is a lerp along u on both rows,
-// then along v: a + w (b - a) (llvmpipe fuses each into one FMA; the CPU rounds twice, a few
-// parts in 10^7 apart).
+// then along v: a + w (b - a) (llvmpipe fuses each into one FMA; the CPU rounds twice, about
+// one float ULP apart).
 template <typename L, typename View>
 TWR_LANE_OUTLINE Vec4L<L> sampleLevelLanes(const View& texture, int level, const Vec2L<L>& uv, bool linear) {
   const int width = texLevelWidth(texture, level), height = texLevelHeight(texture, level);
@@ -154,21 +154,30 @@ TWR_LANE_OUTLINE Vec4L<L> sampleLevelLanes(const View& texture, int level, const
   return bottomRow + (topRow - bottomRow) * ay.weight;
 }
 
-// The level given per lane (integer values): each distinct level once, kept where it applies.
+// Lanes may read different levels. For a first and a second level per lane (integer values,
+// level1 >= level0), each distinct level is sampled once, for every lane that takes it as its
+// first or its second level: a vector straddling a level boundary reads 3 levels for trilinear,
+// not 4. One level per lane is the pair (level, level).
+template <typename L>
+TWR_LANE_INLINE Vec4L<L> selectVec4(const MaskOf<L>& mask, const Vec4L<L>& a, const Vec4L<L>& b) {
+  return Vec4L<L>(select(mask, a.x, b.x), select(mask, a.y, b.y), select(mask, a.z, b.z), select(mask, a.w, b.w));
+}
 template <typename L, typename View>
-TWR_LANE_INLINE Vec4L<L> sampleLevelsLanes(const View& texture, const L& level, const Vec2L<L>& uv, bool linear) {
+TWR_LANE_INLINE void sampleLevelPairLanes(const View& texture, const L& level0, const L& level1, const Vec2L<L>& uv,
+                                          bool linear, Vec4L<L>& s0, Vec4L<L>& s1) {
   using S = ScalarOf<L>;
-  const int lowest = static_cast<int>(lowestLane(level));
-  const int highest = static_cast<int>(highestLane(level));
-  Vec4L<L> result = (sampleLevelLanes<L>)(texture, lowest, uv, linear);
+  const int lowest = static_cast<int>(lowestLane(level0));
+  const int highest = static_cast<int>(highestLane(level1));
+  s0 = (sampleLevelLanes<L>)(texture, lowest, uv, linear);
+  s1 = s0;
   for (int l = lowest + 1; l <= highest; ++l) {
-    const auto here = level == L(static_cast<S>(l));
-    if (!anyOf(here)) continue;
+    const L here(static_cast<S>(l));
+    const auto first = level0 == here, second = level1 == here;
+    if (!anyOf(first | second)) continue;
     const Vec4L<L> r = (sampleLevelLanes<L>)(texture, l, uv, linear);
-    result = Vec4L<L>(select(here, r.x, result.x), select(here, r.y, result.y), select(here, r.z, result.z),
-                      select(here, r.w, result.w));
+    s0 = (selectVec4<L>)(first, r, s0);
+    s1 = (selectVec4<L>)(second, r, s1);
   }
-  return result;
 }
 
 // The LOD of a quad from its uv differences (top-left pixel to its right and upper
@@ -204,9 +213,11 @@ TWR_LANE_OUTLINE Vec4L<L> sampleTextureLanes(const View& texture, const Vec2L<L>
   } else {
     const L zero(S(0)), lastL(static_cast<S>(last));
     const L clamped = minOf(lod, lastL);
+    Vec4L<L> s0, s1;
     if (!levelsLinear(filter)) {
       const L level = minOf(maxOf(roundEvenOf(clamped), zero), lastL);
-      result = (sampleLevelsLanes<L>)(texture, level, uv, linear);
+      (sampleLevelPairLanes<L>)(texture, level, level, uv, linear, s0, s1);
+      result = s0;
     } else {
       const L floorLod = floorOf(clamped);
       const auto below = floorLod < zero;
@@ -214,22 +225,7 @@ TWR_LANE_OUTLINE Vec4L<L> sampleTextureLanes(const View& texture, const Vec2L<L>
       const L level0 = select(below, zero, select(atLast, lastL, floorLod));
       const L fraction = select(below | atLast, zero, clamped - floorLod);
       const L level1 = minOf(level0 + L(S(1)), lastL);
-      // Each level the lanes need, once, for the lanes that take it as their first or second
-      // level (lanes straddling a level boundary share the level between them).
-      const int lowest = static_cast<int>(lowestLane(level0));
-      const int highest = static_cast<int>(highestLane(level1));
-      Vec4L<L> s0 = (sampleLevelLanes<L>)(texture, lowest, uv, linear);
-      Vec4L<L> s1 = s0;
-      for (int l = lowest + 1; l <= highest; ++l) {
-        const L here(static_cast<S>(l));
-        const auto first = level0 == here, second = level1 == here;
-        if (!anyOf(first | second)) continue;
-        const Vec4L<L> r = (sampleLevelLanes<L>)(texture, l, uv, linear);
-        s0 = Vec4L<L>(select(first, r.x, s0.x), select(first, r.y, s0.y), select(first, r.z, s0.z),
-                      select(first, r.w, s0.w));
-        s1 = Vec4L<L>(select(second, r.x, s1.x), select(second, r.y, s1.y), select(second, r.z, s1.z),
-                      select(second, r.w, s1.w));
-      }
+      (sampleLevelPairLanes<L>)(texture, level0, level1, uv, linear, s0, s1);
       result = s0 + (s1 - s0) * fraction;
     }
   }
