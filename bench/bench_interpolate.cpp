@@ -39,7 +39,7 @@ const Floor& floorTriangle() {
         TriangleSetup setup;
         if (setupTriangle(window, s.cull, s.frontFace, s.viewport, setup) != SetupResult::Ready) continue;
         if (!coversPixel(setup, kPatchX, kPatchY) || !coversPixel(setup, kPatchX + kPatch, kPatchY + kPatch)) continue;
-        f.interpolation = makeInterpolationSetup(window, setup);
+        f.interpolation = makeInterpolationSetup(window, {f.v[0].uv, f.v[1].uv, f.v[2].uv}, setup);
         return f;
       }
     }

@@ -274,7 +274,7 @@ void rasterizeFanTriangle(const std::array<WindowVertex, 3>& window, const ClipV
   if (setup.x0 > setup.x1 || setup.y0 > setup.y1) return;
   require(setup.x0 >= 0 && setup.x1 < viewport.width && setup.y0 >= 0 && setup.y1 < viewport.height,
           "bounding box outside the viewport");
-  const InterpolationSetup interpolation = makeInterpolationSetup(window, setup);
+  const InterpolationSetup interpolation = makeInterpolationSetup(window, {v0.uv, v1.uv, v2.uv}, setup);
   rasterizeTriangle(setup, 0, viewport.height, [&](int py, Span span) {
     const std::string where = "row " + std::to_string(py);
     require(py >= setup.y0 && py <= setup.y1, where + ": outside the bounding box");

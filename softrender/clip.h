@@ -64,6 +64,15 @@ struct ClipPolygonT {
 };
 using ClipPolygon = ClipPolygonT<float>;
 
+// The polygon's vertices forming fan triangle k (k = 0 .. count - 3), in the corner order Mesa's
+// clipper hands them to llvmpipe's setup (draw_pipe_clip.c, GL's last-vertex provoking
+// convention): (v[k + 1], v[k + 2], v[0]) for a polygon the clipper made; an unclipped triangle
+// stays (v[0], v[1], v[2]). Coverage does not depend on the rotation, but llvmpipe builds its
+// attribute planes from the first corner, so the uv roundings do (interpolate.h).
+inline std::array<int, 3> fanTriangleCorners(int k, bool clipped) {
+  return clipped ? std::array<int, 3>{k + 1, k + 2, 0} : std::array<int, 3>{0, 1, 2};
+}
+
 // Signed distance of a vertex from plane `plane` (inside when >= 0).
 template <typename T>
 T clipDistanceTo(const ClipVertexT<T>& vertex, int plane, const ClipConfig& config);

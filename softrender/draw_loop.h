@@ -66,7 +66,7 @@ void drawClippedTriangle(const LoopItemT<T>& s, const ClipVertexT<T>& v0, const 
   }
   if (band.countsTriangles) ++stats.trianglesProduced;
   if (setup.y1 < band.rowBegin || setup.y0 >= band.rowEnd) return;
-  const InterpolationSetupT<T> interpolation = makeInterpolationSetup(window, setup);
+  const InterpolationSetupT<T> interpolation = makeInterpolationSetup(window, {v0.uv, v1.uv, v2.uv}, setup);
   const int tangentLights = s.tangentLighting ? s.shade.lightCount : 0;
   rasterizeTriangle(setup, band.rowBegin, band.rowEnd, [&](int py, Span span) {
     for (int px = span.xBegin; px < span.xEnd; ++px) {
@@ -75,8 +75,7 @@ void drawClippedTriangle(const LoopItemT<T>& s, const ClipVertexT<T>& v0, const 
       FragmentT<T> fragment = interpolateFragment(v0, v1, v2, weights, s.tangentLighting, tangentLights);
       if (usesMipmaps(s.shade.filter)) {
         // The pixel's 2x2 quad (even column and row): its uv differences give the LOD.
-        setQuadUvDifferencesLanes<T>(interpolation, v0, v1, v2, static_cast<double>(px & ~1), static_cast<double>(py & ~1),
-                                     fragment);
+        setQuadUvDifferencesLanes<T>(interpolation, static_cast<T>(px & ~1), static_cast<T>(py & ~1), fragment);
       }
       target.write(px, py, shadeFragment<Features>(fragment, s.shade, nullptr), weights.depth, triangleId);
       ++stats.pixelsShaded;
@@ -85,7 +84,7 @@ void drawClippedTriangle(const LoopItemT<T>& s, const ClipVertexT<T>& v0, const 
 }
 
 // Every triangle of one item: clip, then the fan of the convex clipped polygon around its
-// first vertex.
+// first vertex, each fan triangle's corners in llvmpipe's order (fanTriangleCorners).
 template <typename Features, typename T, typename Target>
 void drawItem(const LoopItemT<T>& s, const RowBand& band, Target& target, RenderStats& stats) {
   const Mesh& mesh = *s.mesh;
@@ -98,9 +97,10 @@ void drawItem(const LoopItemT<T>& s, const RowBand& band, Target& target, Render
     const std::uint32_t planesCut = clipTriangle(a, b, c, s.clip, polygon, scratch);
     if (planesCut != 0 && band.countsTriangles) ++stats.trianglesClipped;
     const std::uint32_t triangleId = s.firstTriangleId + static_cast<std::uint32_t>(t);
-    for (int i = 1; i + 1 < polygon.count; ++i) {
-      drawClippedTriangle<Features>(s, polygon.v[0], polygon.v[static_cast<std::size_t>(i)],
-                                    polygon.v[static_cast<std::size_t>(i + 1)], triangleId, band, target, stats);
+    for (int k = 0; k + 3 <= polygon.count; ++k) {
+      const std::array<int, 3> c = fanTriangleCorners(k, planesCut != 0);
+      const auto at = [&](int i) -> const ClipVertexT<T>& { return polygon.v[static_cast<std::size_t>(c[static_cast<std::size_t>(i)])]; };
+      drawClippedTriangle<Features>(s, at(0), at(1), at(2), triangleId, band, target, stats);
     }
   }
 }

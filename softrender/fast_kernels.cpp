@@ -99,28 +99,31 @@ HWY_INLINE LaneMask lanesOf(std::uint64_t bits) {
   for (std::size_t l = 0; l < laneCount(); ++l) flags[l] = static_cast<std::int32_t>((bits >> l) & 1u);
   return {hn::RebindMask(DF(), hn::Ne(hn::Load(DI(), flags), hn::Zero(DI())))};
 }
-// x, x + 1, ... as double lanes (pixel indices are exact in float).
-HWY_INLINE LaneW pixelColumns(int x) { return toWide(LaneF(hn::Iota(DF(), static_cast<float>(x)))); }
+// x, x + 1, ... as float lanes (pixel indices are exact in float), and as double lanes.
+HWY_INLINE LaneF pixelColumnsF(int x) { return LaneF(hn::Iota(DF(), static_cast<float>(x))); }
+HWY_INLINE LaneW pixelColumns(int x) { return toWide(pixelColumnsF(x)); }
 
-HWY_INLINE InterpolationL<LaneF> broadcastInterpolation(const std::array<double, 3>& atOrigin,
-                                                       const std::array<double, 3>& dx,
-                                                       const std::array<double, 3>& dy,
-                                                       const std::array<float, 3>& zWindow,
-                                                       const std::array<float, 3>& invW) {
+HWY_INLINE AttributePlaneL<LaneF> broadcastPlane(const AttributePlaneT<float>& p) {
+  return {LaneF(p.atOrigin), LaneF(p.dx), LaneF(p.dy)};
+}
+
+template <typename Setup>
+HWY_INLINE InterpolationL<LaneF> broadcastInterpolation(const Setup& t) {
   InterpolationL<LaneF> s;
   for (std::size_t i = 0; i < 3; ++i) {
-    s.atOrigin[i] = LaneW(atOrigin[i]);
-    s.dx[i] = LaneW(dx[i]);
-    s.dy[i] = LaneW(dy[i]);
-    s.zWindow[i] = LaneF(zWindow[i]);
-    s.invW[i] = LaneF(invW[i]);
+    s.atOrigin[i] = LaneW(t.atOrigin[i]);
+    s.dx[i] = LaneW(t.dx[i]);
+    s.dy[i] = LaneW(t.dy[i]);
+    s.zWindow[i] = LaneF(t.zWindow[i]);
+    s.invW[i] = LaneF(t.invW[i]);
   }
+  s.uv = {broadcastPlane(t.uv.uOverW), broadcastPlane(t.uv.vOverW), broadcastPlane(t.uv.oneOverW)};
   return s;
 }
 
 // ---- pass 1: visibility ----
-std::uint64_t Visibility(const TriangleSetup& setup, const std::array<WindowVertex, 3>& window, std::uint32_t slot,
-                         int rowBegin, int rowEnd, Framebuffer& fb, std::uint32_t* slots,
+std::uint64_t Visibility(const TriangleSetup& setup, const std::array<WindowVertex, 3>& window,
+                         const std::array<vec2, 3>& uv, std::uint32_t slot, int rowBegin, int rowEnd, Framebuffer& fb, std::uint32_t* slots,
                          InterpolationSetup& interpolation, bool& covered) {
   const int yFirst = std::max(setup.y0, rowBegin);
   const int yLast = std::min(setup.y1, rowEnd - 1);
@@ -136,17 +139,16 @@ std::uint64_t Visibility(const TriangleSetup& setup, const std::array<WindowVert
     const Span span = coveredSpan(setup, py);
     if (span.xBegin >= span.xEnd) continue;
     if (!covered) {
-      interpolation = makeInterpolationSetup<float>(window, setup);
+      interpolation = makeInterpolationSetup<float>(window, uv, setup);
       covered = true;
-      planes = broadcastInterpolation(interpolation.atOrigin, interpolation.dx, interpolation.dy,
-                                      interpolation.zWindow, interpolation.invW);
+      planes = broadcastInterpolation(interpolation);
     }
     const LaneW pyW(static_cast<double>(py));
     float* depthRow = &fb.depth[fb.index(0, py)];
     std::uint32_t* slotRow = slots + static_cast<std::size_t>(py - rowBegin) * width;
     for (int x = span.xBegin; x < span.xEnd; x += static_cast<int>(lanes)) {
       const std::size_t count = std::min(lanes, static_cast<std::size_t>(span.xEnd - x));
-      const LaneF depth = pixelWeightsLanes<LaneF>(planes, pixelColumns(x), pyW).depth;
+      const LaneF depth = windowDepthLanes<LaneF>(planes, pixelColumns(x), pyW);
       // GL_LESS against the stored depth; a vector past the row's end goes through a buffer.
       HWY_ALIGN float depthBuffer[kMaxLanes];
       HWY_ALIGN std::uint32_t slotBuffer[kMaxLanes];
@@ -236,10 +238,11 @@ void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps,
   std::array<VertexL<LaneF>, 3> vertices;
   if (oneTriangle) {
     const BinTriangle& t = triangles[firstSlot];
-    planes = broadcastInterpolation(t.atOrigin, t.dx, t.dy, t.zWindow, t.invW);
+    planes = broadcastInterpolation(t);
     for (std::size_t c = 0; c < 3; ++c) vertices[c] = vertexLanes(BroadcastVarying{t.varyings[c]}, tangent, lightCount);
   } else {
     HWY_ALIGN double planeColumns[5][3][kMaxLanes];
+    HWY_ALIGN float uvColumns[3][3][kMaxLanes];  // [u/w, v/w, 1/w][atOrigin, dx, dy][lane]
     HWY_ALIGN float vertexColumns[3][kMaxVaryings * kMaxLanes];
     const int floats = varyingCount(tangent, lightCount);
     for (std::size_t l = 0; l < lanes; ++l) {
@@ -250,6 +253,10 @@ void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps,
         planeColumns[2][i][l] = t.dy[i];
         planeColumns[3][i][l] = t.zWindow[i];
         planeColumns[4][i][l] = t.invW[i];
+        const AttributePlaneT<float>& uvPlane = i == 0 ? t.uv.uOverW : i == 1 ? t.uv.vOverW : t.uv.oneOverW;
+        uvColumns[i][0][l] = uvPlane.atOrigin;
+        uvColumns[i][1][l] = uvPlane.dx;
+        uvColumns[i][2][l] = uvPlane.dy;
         for (int k = 0; k < floats; ++k) {
           vertexColumns[i][static_cast<std::size_t>(k) * kMaxLanes + l] = t.varyings[i][k];
         }
@@ -273,6 +280,11 @@ void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps,
       planes.invW[i] = toNarrowLanes(wideColumn(4));
       vertices[i] = vertexLanes(ColumnVarying{vertexColumns[i]}, tangent, lightCount);
     }
+    const auto uvPlane = [&](std::size_t which) HWY_ATTR {
+      return AttributePlaneL<LaneF>{LaneF(hn::Load(df, uvColumns[which][0])), LaneF(hn::Load(df, uvColumns[which][1])),
+                                    LaneF(hn::Load(df, uvColumns[which][2]))};
+    };
+    planes.uv = {uvPlane(0), uvPlane(1), uvPlane(2)};
     (void)wide;
   }
 
@@ -281,11 +293,10 @@ void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps,
   FragmentL<LaneF> fragment =
       interpolateFragmentLanes<LaneF>(vertices[0], vertices[1], vertices[2], weights, tangent, tangent ? lightCount : 0);
   if (usesMipmaps(item.shade.filter)) {
-    // Each lane's 2x2 quad: the even column and row at or below it.
-    const LaneW columns = pixelColumns(s.x);
-    const LaneW quadColumns = floorOf(columns * LaneW(0.5)) * LaneW(2.0);
-    const double quadRow = static_cast<double>(s.py - (s.py & 1));
-    setQuadUvDifferencesLanes<LaneF>(planes, vertices[0], vertices[1], vertices[2], quadColumns, LaneW(quadRow), fragment);
+    // Each lane's 2x2 quad: the even column and row at or below it (exact in float).
+    const LaneF quadColumns = floorOf(pixelColumnsF(s.x) * LaneF(0.5f)) * LaneF(2.0f);
+    const LaneF quadRow(static_cast<float>(s.py - (s.py & 1)));
+    setQuadUvDifferencesLanes<LaneF>(planes, quadColumns, quadRow, fragment);
   }
   const Vec4L<LaneF> colour =
       shadeFragmentLanes<Features, LaneF>(fragment, item.shade, maps, static_cast<std::nullptr_t*>(nullptr));

@@ -50,6 +50,7 @@ inline constexpr std::uint32_t kNoSlot = 0xFFFFFFFFu;
 struct BinTriangle {
   std::array<double, 3> atOrigin{}, dx{}, dy{};  // InterpolationSetup's barycentric planes
   std::array<float, 3> zWindow{}, invW{};
+  UvPlanesT<float> uv;                           // ... and its uv planes
   std::uint32_t triangleId = 0;
   std::uint32_t item = 0;                     // index into the frame's ItemState list
   std::array<const float*, 3> varyings{};     // each vertex's varyings, submission order
@@ -89,10 +90,10 @@ struct FastKernels {
 
   // Visibility pass for one triangle over rows [rowBegin, rowEnd) (exclusive end). `slots`
   // holds the bin's rows: pixel (px, py) at (py - rowBegin) * fb.width + px. On the first
-  // covered pixel it computes `interpolation` = makeInterpolationSetup(window, setup) and sets
-  // `covered`; returns how many pixels passed the depth test.
+  // covered pixel it computes `interpolation` = makeInterpolationSetup(window, uv, setup) and
+  // sets `covered`; returns how many pixels passed the depth test.
   std::uint64_t (*visibility)(const TriangleSetup& setup, const std::array<WindowVertex, 3>& window,
-                              std::uint32_t slot, int rowBegin, int rowEnd, Framebuffer& fb, std::uint32_t* slots,
+                              const std::array<vec2, 3>& uv, std::uint32_t slot, int rowBegin, int rowEnd, Framebuffer& fb, std::uint32_t* slots,
                               InterpolationSetup& interpolation, bool& covered) = nullptr;
 
   // Shading pass over rows [rowBegin, rowEnd), writing colour and triangle id of every pixel:

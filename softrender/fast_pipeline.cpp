@@ -178,11 +178,11 @@ void FastPipeline::clipAndEmit(const ItemState& s, std::size_t k, std::uint32_t 
     loadVaryings(&source.varyings[i * stride], s.tangentLighting, s.shade.lightCount, corners[c]);
     for (std::size_t j = 0; j < planes; ++j) corners[c].clipDistance[j] = source.clipDistances[i * planes + j];
   }
-  if (clipTriangle(corners[0], corners[1], corners[2], s.clip, out.polygon, out.scratch) != 0) {
-    ++out.stats.trianglesClipped;
-  }
+  const bool clipped = clipTriangle(corners[0], corners[1], corners[2], s.clip, out.polygon, out.scratch) != 0;
+  if (clipped) ++out.stats.trianglesClipped;
   // The clipped polygon's vertices (original ones copied, new ones from the clipper) with their
-  // window positions, then its fan around vertex 0, as the teaching path draws it.
+  // window positions, then its fan around vertex 0 in llvmpipe's corner order, as the teaching
+  // path draws it.
   const std::size_t base = out.clipped.size();
   for (int i = 0; i < out.polygon.count; ++i) {
     const ClipVertex& polygonVertex = out.polygon.v[static_cast<std::size_t>(i)];
@@ -192,12 +192,13 @@ void FastPipeline::clipAndEmit(const ItemState& s, std::size_t k, std::uint32_t 
     v.vertex.yFixed = snapToSubpixel(v.vertex.window.y);
     storeVaryings(polygonVertex, s.tangentLighting, s.shade.lightCount, v.varyings.data());
   }
-  const ClippedVertex& first = out.clipped[base];
-  for (int i = 1; i + 1 < out.polygon.count; ++i) {
-    const ClippedVertex& b = out.clipped[base + static_cast<std::size_t>(i)];
-    const ClippedVertex& c = out.clipped[base + static_cast<std::size_t>(i + 1)];
-    emit(s, item, triangleId, {&first.vertex, &b.vertex, &c.vertex}, {first.varyings.data(), b.varyings.data(), c.varyings.data()},
-         out);
+  for (int k = 0; k + 3 <= out.polygon.count; ++k) {
+    const std::array<int, 3> corner = fanTriangleCorners(k, clipped);
+    const auto at = [&](std::size_t i) -> const ClippedVertex& {
+      return out.clipped[base + static_cast<std::size_t>(corner[i])];
+    };
+    emit(s, item, triangleId, {&at(0).vertex, &at(1).vertex, &at(2).vertex},
+         {at(0).varyings.data(), at(1).varyings.data(), at(2).varyings.data()}, out);
   }
 }
 
@@ -269,8 +270,11 @@ std::uint64_t FastPipeline::drawBin(const std::vector<ItemState>& items, int bin
       const std::uint32_t slot = static_cast<std::uint32_t>(scratch.triangles.size());
       InterpolationSetup interpolation;
       bool covered = false;
-      passed += kernels_.visibility(setup, {r.v[0]->window, r.v[1]->window, r.v[2]->window}, slot, rowBegin, rowEnd, fb,
-                                 scratch.slots.data(), interpolation, covered);
+      const auto uvOf = [&](std::size_t c) {
+        return vec2(r.varyings[c][kVaryingUv], r.varyings[c][kVaryingUv + 1]);
+      };
+      passed += kernels_.visibility(setup, {r.v[0]->window, r.v[1]->window, r.v[2]->window}, {uvOf(0), uvOf(1), uvOf(2)},
+                                    slot, rowBegin, rowEnd, fb, scratch.slots.data(), interpolation, covered);
       if (!covered) continue;  // no pixel holds this slot
       BinTriangle& t = scratch.triangles.emplace_back();
       t.atOrigin = interpolation.atOrigin;
@@ -278,6 +282,7 @@ std::uint64_t FastPipeline::drawBin(const std::vector<ItemState>& items, int bin
       t.dy = interpolation.dy;
       t.zWindow = interpolation.zWindow;
       t.invW = interpolation.invW;
+      t.uv = interpolation.uv;
       t.triangleId = r.triangleId;
       t.item = r.item;
       t.varyings = r.varyings;

@@ -27,12 +27,22 @@
 TWR_LANES_BEGIN
 
 #if defined(TWR_LANES_HIGHWAY)
+// The texture coordinate's planes as lanes (interpolate.h).
+template <typename L>
+struct AttributePlaneL {
+  L atOrigin, dx, dy;
+};
+template <typename L>
+struct UvPlanesL {
+  AttributePlaneL<L> uOverW, vOverW, oneOverW;
+};
 // The fast path's lanes of one triangle's interpolation setup (each lane may belong to
 // another triangle), of its vertices' varyings, of the weights and of the fragment.
 template <typename L>
 struct InterpolationL {
   std::array<WideOf<L>, 3> atOrigin, dx, dy;  // lambda_i = atOrigin + dx px + dy py
   std::array<L, 3> zWindow, invW;
+  UvPlanesL<L> uv;
 };
 template <typename L>
 struct VertexL {
@@ -45,6 +55,7 @@ template <typename L>
 struct PixelWeightsL {
   std::array<L, 3> screen, perspective;
   L depth;
+  Vec2L<L> uv;
 };
 template <typename L>
 struct FragmentL {
@@ -58,6 +69,10 @@ struct FragmentL {
 #else
 // Plainly the teaching path's own types (interpolate.h).
 template <typename L>
+using AttributePlaneL = AttributePlaneT<L>;
+template <typename L>
+using UvPlanesL = UvPlanesT<L>;
+template <typename L>
 using InterpolationL = InterpolationSetupT<L>;
 template <typename L>
 using VertexL = ClipVertexT<L>;
@@ -67,13 +82,49 @@ template <typename L>
 using FragmentL = FragmentT<L>;
 #endif
 
-// lambda_i at pixel (px, py), depth = sum lambda_i z_i from 0 (linear in screen space,
-// clamped to [0, 1], 1 if not finite), p_i = (lambda_i / w_i) / sum_k (lambda_k / w_k) (the
-// screen weight where the sum is not positive: a centre a hair outside the float triangle).
+// An attribute plane at pixel (px, py): two fused multiply-adds, as llvmpipe evaluates it.
+template <typename L>
+TWR_LANE_INLINE L planeAtLanes(const AttributePlaneL<L>& p, const L& px, const L& py) {
+  return fusedMulAdd(p.dy, py, fusedMulAdd(p.dx, px, p.atOrigin));
+}
+
+// The uv at pixel (px, py), covered or not (a helper pixel of a quad): (u/w, v/w) times the
+// reciprocal of 1/w.
+template <typename L>
+TWR_LANE_INLINE Vec2L<L> uvAtPixelLanes(const UvPlanesL<L>& s, const L& px, const L& py) {
+  using S = ScalarOf<L>;
+  const L w = L(S(1)) / planeAtLanes<L>(s.oneOverW, px, py);
+  return Vec2L<L>(planeAtLanes<L>(s.uOverW, px, py) * w, planeAtLanes<L>(s.vOverW, px, py) * w);
+}
+
+// A window depth as GL stores it: rounded to L, clamped to [0, 1], 1 if not finite.
+template <typename L>
+TWR_LANE_INLINE L clampedDepthLanes(const WideOf<L>& depth) {
+  using S = ScalarOf<L>;
+  const L rounded = toNarrow<L>(depth);
+  const L zero(S(0)), one(S(1));
+  return select(isFinite(rounded), minOf(maxOf(rounded, zero), one), one);
+}
+
+// Window depth at pixel (px, py): sum lambda_i z_i from 0 (linear in screen space), clamped
+// to [0, 1], 1 if not finite. All the visibility pass needs.
+template <typename L>
+TWR_LANE_INLINE L windowDepthLanes(const InterpolationL<L>& s, const WideOf<L>& px, const WideOf<L>& py) {
+  using W = WideOf<L>;
+  W depth(0.0);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const W lambda = (W(s.atOrigin[i]) + W(s.dx[i]) * px) + W(s.dy[i]) * py;
+    depth += lambda * toWide(s.zWindow[i]);
+  }
+  return clampedDepthLanes<L>(depth);
+}
+
+// lambda_i at pixel (px, py), depth as windowDepthLanes, p_i = (lambda_i / w_i) /
+// sum_k (lambda_k / w_k) (the screen weight where the sum is not positive: a centre a hair
+// outside the float triangle), and the uv from its planes.
 template <typename L>
 TWR_LANE_INLINE PixelWeightsL<L> pixelWeightsLanes(const InterpolationL<L>& s, const WideOf<L>& px, const WideOf<L>& py) {
   using W = WideOf<L>;
-  using S = ScalarOf<L>;
   PixelWeightsL<L> w;
   std::array<W, 3> lambda, perspective;
   W perspectiveSum(0.0), depth(0.0);
@@ -88,9 +139,8 @@ TWR_LANE_INLINE PixelWeightsL<L> pixelWeightsLanes(const InterpolationL<L>& s, c
   for (std::size_t i = 0; i < 3; ++i) {
     w.perspective[i] = toNarrow<L>(select(positive, perspective[i] / perspectiveSum, lambda[i]));
   }
-  const L clamped = toNarrow<L>(depth);
-  const L zero(S(0)), one(S(1));
-  w.depth = select(isFinite(clamped), minOf(maxOf(clamped, zero), one), one);
+  w.depth = clampedDepthLanes<L>(depth);
+  w.uv = uvAtPixelLanes<L>(s.uv, toNarrow<L>(px), toNarrow<L>(py));
   return w;
 }
 
@@ -107,7 +157,7 @@ TWR_LANE_INLINE FragmentL<L> interpolateFragmentLanes(const VertexL<L>& v0, cons
   f.nWorld = v0.nWorld * p0 + v1.nWorld * p1 + v2.nWorld * p2;
   f.tWorld = v0.tWorld * p0 + v1.tWorld * p1 + v2.tWorld * p2;
   f.bWorld = v0.bWorld * p0 + v1.bWorld * p1 + v2.bWorld * p2;
-  f.uv = v0.uv * p0 + v1.uv * p1 + v2.uv * p2;
+  f.uv = weights.uv;  // from the uv planes, as llvmpipe interpolates it
   const Vec3L<L> zero3(L(S(0)));
   for (std::size_t k = 0; k < static_cast<std::size_t>(kMaxLights); ++k) {
     f.lightDirTangent[k] = tangentLighting && static_cast<int>(k) < tangentLightCount
@@ -121,26 +171,16 @@ TWR_LANE_INLINE FragmentL<L> interpolateFragmentLanes(const VertexL<L>& v0, cons
   return f;
 }
 
-// The uv the triangle gives pixel (px, py), covered or not (a helper pixel of a quad).
-template <typename L>
-TWR_LANE_INLINE Vec2L<L> uvAtPixelLanes(const InterpolationL<L>& s, const VertexL<L>& v0, const VertexL<L>& v1,
-                                        const VertexL<L>& v2, const WideOf<L>& px, const WideOf<L>& py) {
-  const PixelWeightsL<L> w = pixelWeightsLanes<L>(s, px, py);
-  return v0.uv * w.perspective[0] + v1.uv * w.perspective[1] + v2.uv * w.perspective[2];
-}
-
 // The quad differences of uv for pixel (px, py): its 2x2 quad starts at the even column and
 // the even row (GL window rows, from the bottom); du/dx = uv(x0 + 1, y0) - uv(x0, y0),
 // du/dy = uv(x0, y0 + 1) - uv(x0, y0), the same for all four pixels (llvmpipe's per-quad LOD).
 // qx, qy: the quad's first column and row.
 template <typename L>
-TWR_LANE_INLINE void setQuadUvDifferencesLanes(const InterpolationL<L>& s, const VertexL<L>& v0, const VertexL<L>& v1,
-                                               const VertexL<L>& v2, const WideOf<L>& qx, const WideOf<L>& qy,
-                                               FragmentL<L>& f) {
-  using W = WideOf<L>;
-  const Vec2L<L> topLeft = uvAtPixelLanes<L>(s, v0, v1, v2, qx, qy);
-  const Vec2L<L> right = uvAtPixelLanes<L>(s, v0, v1, v2, qx + W(1.0), qy);
-  const Vec2L<L> above = uvAtPixelLanes<L>(s, v0, v1, v2, qx, qy + W(1.0));
+TWR_LANE_INLINE void setQuadUvDifferencesLanes(const InterpolationL<L>& s, const L& qx, const L& qy, FragmentL<L>& f) {
+  using S = ScalarOf<L>;
+  const Vec2L<L> topLeft = uvAtPixelLanes<L>(s.uv, qx, qy);
+  const Vec2L<L> right = uvAtPixelLanes<L>(s.uv, qx + L(S(1)), qy);
+  const Vec2L<L> above = uvAtPixelLanes<L>(s.uv, qx, qy + L(S(1)));
   f.uvDx = right - topLeft;
   f.uvDy = above - topLeft;
 }

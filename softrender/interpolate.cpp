@@ -29,9 +29,52 @@ bool barycentricPlanes(const std::array<double, 3>& x, const std::array<double, 
 }  // namespace
 
 template <typename T>
+UvPlanesT<T> makeUvPlanes(const std::array<WindowVertexT<T>, 3>& window, const std::array<Vec2T<T>, 3>& uv,
+                          const TriangleSetup& setup) {
+  // Setup's corner order: llvmpipe builds its planes from the triangle as its rasterizer
+  // orders it, and the roundings depend on which corner comes first.
+  const auto corner = [&](std::size_t c) { return static_cast<std::size_t>(setup.corner[c]); };
+  const WindowVertexT<T>& w0 = window[corner(0)];
+  const WindowVertexT<T>& w1 = window[corner(1)];
+  const WindowVertexT<T>& w2 = window[corner(2)];
+  const T dx01 = w0.x - w1.x, dy01 = w0.y - w1.y;
+  const T dx20 = w2.x - w0.x, dy20 = w2.y - w0.y;
+  const T oneOverArea = T(1) / (dx01 * dy20 - dy01 * dx20);
+  const T dx20a = dx20 * oneOverArea, dy20a = dy20 * oneOverArea;
+  const T dx01a = dx01 * oneOverArea, dy01a = dy01 * oneOverArea;
+  const T half(0.5);  // pixel centres at + 0.5 px
+  const auto planeOf = [&](T a0, T a1, T a2) {
+    const T da01 = a0 - a1, da20 = a2 - a0;
+    AttributePlaneT<T> p;
+    p.dx = da01 * dy20a - da20 * dy01a;
+    p.dy = da20 * dx01a - da01 * dx20a;
+    p.atOrigin = a0 - (p.dx * (w0.x - half) + p.dy * (w0.y - half));
+    return p;
+  };
+  // Perspective-correct: the planes of u/w, v/w and 1/w, divided per pixel.
+  const auto overW = [&](std::size_t c, int component) { return uv[corner(c)][component] * window[corner(c)].invW; };
+  UvPlanesT<T> out;
+  out.uOverW = planeOf(overW(0, 0), overW(1, 0), overW(2, 0));
+  out.vOverW = planeOf(overW(0, 1), overW(1, 1), overW(2, 1));
+  out.oneOverW = planeOf(w0.invW, w1.invW, w2.invW);
+  bool finite = true;
+  for (const AttributePlaneT<T>* p : {&out.uOverW, &out.vOverW, &out.oneOverW}) {
+    finite = finite && std::isfinite(p->atOrigin) && std::isfinite(p->dx) && std::isfinite(p->dy);
+  }
+  if (!finite) {
+    const auto constant = [](T a) { return AttributePlaneT<T>{a, T(0), T(0)}; };
+    out.uOverW = constant(uv[0].x);
+    out.vOverW = constant(uv[0].y);
+    out.oneOverW = constant(T(1));
+  }
+  return out;
+}
+
+template <typename T>
 InterpolationSetupT<T> makeInterpolationSetup(const std::array<WindowVertexT<T>, 3>& window,
-                                              const TriangleSetup& setup) {
+                                              const std::array<Vec2T<T>, 3>& uv, const TriangleSetup& setup) {
   InterpolationSetupT<T> out;
+  out.uv = makeUvPlanes(window, uv, setup);
   std::array<double, 3> x{}, y{};
   for (std::size_t i = 0; i < 3; ++i) {
     x[i] = window[i].x;
@@ -58,7 +101,13 @@ InterpolationSetupT<T> makeInterpolationSetup(const std::array<WindowVertexT<T>,
 
 // The two pipelines: float (matches GL) and double (the reference).
 template InterpolationSetupT<float> makeInterpolationSetup<float>(const std::array<WindowVertexT<float>, 3>&,
+                                                                  const std::array<Vec2T<float>, 3>&,
                                                                   const TriangleSetup&);
 template InterpolationSetupT<double> makeInterpolationSetup<double>(const std::array<WindowVertexT<double>, 3>&,
+                                                                    const std::array<Vec2T<double>, 3>&,
                                                                     const TriangleSetup&);
+template UvPlanesT<float> makeUvPlanes<float>(const std::array<WindowVertexT<float>, 3>&,
+                                              const std::array<Vec2T<float>, 3>&, const TriangleSetup&);
+template UvPlanesT<double> makeUvPlanes<double>(const std::array<WindowVertexT<double>, 3>&,
+                                                const std::array<Vec2T<double>, 3>&, const TriangleSetup&);
 }  // namespace twr

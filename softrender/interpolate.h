@@ -8,6 +8,17 @@
 // Barycentrics come from the unsnapped window positions (as llvmpipe's attribute setup),
 // in double precision; the snapped positions stand in when those have no area.
 //
+// The texture coordinate is the one varying interpolated exactly as llvmpipe does it,
+// because a nearest-filtered texel flips on one ULP of uv (docs/textures.md, "Which texel"):
+// u/w, v/w and 1/w are each a plane set up in float from the float window positions, in the
+// corner order setup uses (a counter-clockwise triangle has its first two corners swapped):
+//   da01 = a0 - a1, da20 = a2 - a0, 1/area = 1 / (dx01 dy20 - dy01 dx20)
+//   dadx = da01 (dy20 / area) - da20 (dy01 / area),  dady = da20 (dx01 / area) - da01 (dx20 / area)
+//   a(px, py) = fma(dady, py, fma(dadx, px, A0)),     A0 = a0 - (dadx (x0 - 0.5) + dady (y0 - 0.5))
+//   uv = (u/w, v/w) * (1 / (1/w))                      (a product with the reciprocal, not a quotient)
+// with one rounding per operation and the two fused multiply-adds llvmpipe's JIT code emits on
+// a CPU with FMA (every x86-64 CPU since 2013, every AArch64 one).
+//
 // The per-pixel part (weights and varyings) is written once over the lane type in
 // interpolate-inl.h; the functions below are its scalar entry points, templated on T (float:
 // the pipeline, double: the reference).
@@ -20,6 +31,18 @@
 
 namespace twr {
 
+// One attribute as a plane over pixel indices: a(px, py) = fma(dy, py, fma(dx, px, atOrigin))
+// (the pixel-centre offset folded into atOrigin).
+template <typename T>
+struct AttributePlaneT {
+  T atOrigin = T(0), dx = T(0), dy = T(0);
+};
+// The texture coordinate's three planes (see above).
+template <typename T>
+struct UvPlanesT {
+  AttributePlaneT<T> uOverW, vOverW, oneOverW;
+};
+
 // lambda_i(px, py) = atOrigin[i] + dx[i] * px + dy[i] * py (pixel indices; the centre offset
 // is folded into atOrigin).
 template <typename T>
@@ -27,19 +50,28 @@ struct InterpolationSetupT {
   std::array<double, 3> atOrigin{}, dx{}, dy{};
   std::array<T, 3> zWindow{};  // window depth of each corner
   std::array<T, 3> invW{};     // 1 / w_clip of each corner
+  UvPlanesT<T> uv;             // the texture coordinate, as llvmpipe interpolates it
 };
 using InterpolationSetup = InterpolationSetupT<float>;
 
-// Corner i of `window` is vertex i of the triangle (before setup's reordering).
+// Corner i of `window` and of `uv` is vertex i of the triangle (before setup's reordering).
 template <typename T = float>
 InterpolationSetupT<T> makeInterpolationSetup(const std::array<WindowVertexT<T>, 3>& window,
-                                              const TriangleSetup& setup);
+                                              const std::array<Vec2T<T>, 3>& uv, const TriangleSetup& setup);
+
+// The uv planes alone (part of makeInterpolationSetup). Where the float corners are collinear
+// (setup accepted their snapped positions) the planes would divide by zero; they then hold the
+// first corner's uv everywhere.
+template <typename T>
+UvPlanesT<T> makeUvPlanes(const std::array<WindowVertexT<T>, 3>& window, const std::array<Vec2T<T>, 3>& uv,
+                          const TriangleSetup& setup);
 
 template <typename T>
 struct PixelWeightsT {
   std::array<T, 3> screen{};       // lambda_i, sum 1
   std::array<T, 3> perspective{};  // p_i, sum 1
   T depth = T(0);                  // window depth clamped to [0, 1] (GL clamps to the depth range)
+  Vec2T<T> uv{T(0)};               // the texture coordinate, from the uv planes
 };
 using PixelWeights = PixelWeightsT<float>;
 

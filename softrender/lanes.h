@@ -8,7 +8,7 @@
 // output_merge-inl.h, shade-inl.h) use only what every lane type provides:
 //   + - * / on L, comparisons giving MaskOf<L>, & | ! on masks, select(mask, a, b),
 //   maxOf / minOf (written as selects, so every target treats NaN alike), sqrtOf, floorOf,
-//   truncOf, isFinite, anyOf, WideOf<L> (double lanes for the parts computed in double) with
+//   truncOf, isFinite, anyOf, fusedMulAdd (a b + c rounded once), WideOf<L> (double lanes for the parts computed in double) with
 //   toWide / toNarrow, IntOf<L> for texel indices, and Vec2L / Vec3L / Vec4L of lanes.
 // Every operation is IEEE single or double with round-to-nearest, contraction off (set in
 // CMakeLists.txt), no approximate reciprocal or square root: each lane of a vector computes
@@ -94,6 +94,12 @@ inline S floorOf(S a) {
 template <ScalarLane S>
 inline S truncOf(S a) {
   return std::trunc(a);
+}
+// a b + c with one rounding (IEEE fusedMultiplyAdd): llvmpipe evaluates its attribute planes
+// this way on CPUs with FMA.
+template <ScalarLane S>
+inline S fusedMulAdd(S a, S b, S c) {
+  return std::fma(a, b, c);
 }
 // Round to the nearest integer, halves to even (the default rounding mode).
 template <ScalarLane S>

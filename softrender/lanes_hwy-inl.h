@@ -205,6 +205,45 @@ HWY_INLINE LaneF toNarrowLanes(LaneW a) {
 #endif
 }
 
+// a b + c rounded once, as std::fma. Targets with FMA instructions (AVX2, AVX-512, NEON on
+// AArch64) fuse; the others (SSE4, SSSE3, EMU128, SCALAR) compute it exactly in double: the
+// product of two floats is exact there, the sum is rounded to odd (Boldo and Melquiond: a
+// result with at least two more bits than float, rounded to odd, then rounded to float, is
+// the correctly rounded float), so every target gives std::fma's bits.
+#if !HWY_NATIVE_FMA
+HWY_INLINE hn::Vec<DW> sumRoundedToOddHalf(hn::Vec<DW> p, hn::Vec<DW> c) {
+  const DW dw;
+  const DW64 du;
+  const auto sum = hn::Add(p, c);
+  // Knuth's two-sum: sum + error == p + c exactly.
+  const auto cPart = hn::Sub(sum, p);
+  const auto pPart = hn::Sub(sum, cPart);
+  const auto error = hn::Add(hn::Sub(p, pPart), hn::Sub(c, cPart));
+  // Inexact and even: step one ULP towards the exact value (magnitude up when the error has
+  // the sum's sign, down otherwise), which makes the last bit 1.
+  const auto bits = hn::BitCast(du, sum);
+  const auto even = hn::Eq(hn::And(bits, hn::Set(du, 1u)), hn::Zero(du));
+  const auto inexact = hn::And(hn::Ne(error, hn::Zero(dw)), hn::IsFinite(sum));
+  const auto sameSign = hn::Eq(hn::ShiftRight<63>(hn::Xor(bits, hn::BitCast(du, error))), hn::Zero(du));
+  const auto stepped = hn::IfThenElse(sameSign, hn::Add(bits, hn::Set(du, 1u)), hn::Sub(bits, hn::Set(du, 1u)));
+  const auto adjust = hn::And(hn::RebindMask(du, inexact), even);
+  return hn::BitCast(dw, hn::IfThenElse(adjust, stepped, bits));
+}
+#endif
+HWY_INLINE LaneF fusedMulAdd(LaneF a, LaneF b, LaneF c) {
+#if HWY_NATIVE_FMA
+  return {hn::MulAdd(a.v, b.v, c.v)};
+#else
+  const LaneW p = toWide(a) * toWide(b);
+  const LaneW cw = toWide(c);
+#if HWY_TARGET == HWY_SCALAR
+  return toNarrowLanes(LaneW(sumRoundedToOddHalf(p.lo, cw.lo)));
+#else
+  return toNarrowLanes(LaneW(sumRoundedToOddHalf(p.lo, cw.lo), sumRoundedToOddHalf(p.hi, cw.hi)));
+#endif
+#endif
+}
+
 // Bit-level helpers of lanes.h's mantissaOf / exponentOf / exp2Integer, lane by lane (each
 // exact, so the same bits as the scalar versions).
 HWY_INLINE hn::Vec<DW> mantissaOfHalf(hn::Vec<DW> x) {

@@ -55,21 +55,23 @@ void traceTriangle(const DrawItem& item, std::size_t t, const VertexUniforms& ve
 
   const bool tangentLighting = vertexUniforms.tangentLighting;
   for (int i = 1; i + 1 < polygon.count; ++i) {
-    const ClipVertex& a = polygon.v[0];
-    const ClipVertex& b = polygon.v[static_cast<std::size_t>(i)];
-    const ClipVertex& c = polygon.v[static_cast<std::size_t>(i + 1)];
+    const std::array<int, 3> corners = fanTriangleCorners(i - 1, visit.planesCut != 0);
+    const ClipVertex& a = polygon.v[static_cast<std::size_t>(corners[0])];
+    const ClipVertex& b = polygon.v[static_cast<std::size_t>(corners[1])];
+    const ClipVertex& c = polygon.v[static_cast<std::size_t>(corners[2])];
     const std::array<WindowVertex, 3> window = windowTriangle(a, b, c, viewport);
     TriangleSetup setup;
     // Coverage does not depend on culling, so set up without it and decide culling after.
     if (setupTriangle(window, CullMode::None, settings.frontFace, viewport, setup) != SetupResult::Ready) continue;
     if (!coversPixel(setup, x, yGl)) continue;
     visit.fanTriangle = i;
+    visit.fanCorners = corners;
     visit.window = window;
     visit.xFixed = setup.xFixed;
     visit.yFixed = setup.yFixed;
     for (std::size_t e = 0; e < 3; ++e) visit.edgeValue[e] = setup.edges[e].at(x, yGl);
     visit.frontFacing = setup.frontFacing;
-    visit.weights = pixelWeights(makeInterpolationSetup(window, setup), x, yGl);
+    visit.weights = pixelWeights(makeInterpolationSetup(window, {a.uv, b.uv, c.uv}, setup), x, yGl);
     visit.fragment =
         interpolateFragment(a, b, c, visit.weights, tangentLighting, tangentLighting ? shadeUniforms.lightCount : 0);
     visit.depthBefore = depth;
@@ -199,7 +201,8 @@ std::string formatPixelTrace(const PixelTrace& tr) {
       o << "\n";
     }
     if (v.fanTriangle >= 0 && v.planesCut != 0) {
-      o << "  covered by fan triangle (0, " << v.fanTriangle << ", " << v.fanTriangle + 1 << ")\n";
+      o << "  covered by fan triangle (0, " << v.fanTriangle << ", " << v.fanTriangle + 1 << "), corners in setup order ("
+        << v.fanCorners[0] << ", " << v.fanCorners[1] << ", " << v.fanCorners[2] << ")\n";
     }
     for (std::size_t k = 0; k < 3; ++k) {
       o << "  window v" << k << " (" << fmt(v.window[k].x) << ", " << fmt(v.window[k].y) << ") z "
@@ -270,6 +273,7 @@ nlohmann::json pixelTraceToJson(const PixelTrace& tr) {
     for (const vec4& p : v.clippedPolygon) poly.push_back(toJson(p));
     jv["clipped_polygon"] = poly;
     jv["fan_triangle"] = v.fanTriangle;
+    jv["fan_corners"] = {v.fanCorners[0], v.fanCorners[1], v.fanCorners[2]};
     json window = json::array(), snapped = json::array();
     for (std::size_t k = 0; k < 3; ++k) {
       window.push_back({v.window[k].x, v.window[k].y, v.window[k].z, v.window[k].invW});

@@ -42,6 +42,7 @@ struct TriangleVisit {
   std::uint32_t planesCut = 0;         // mask, see clip.h
   std::vector<vec4> clippedPolygon;    // posClip of each vertex after clipping
   int fanTriangle = -1;                // i: fan triangle (0, i, i+1) that covers the pixel
+  std::array<int, 3> fanCorners{};     // ... its polygon vertices in llvmpipe's setup order
   std::array<WindowVertex, 3> window{};
   std::array<std::int32_t, 3> xFixed{}, yFixed{};  // after setup's corner ordering
   std::array<std::int64_t, 3> edgeValue{};         // E_i at the pixel (> 0 inside)

@@ -1,5 +1,6 @@
 // The scene suite: every scene in assets/scenes/ rendered by both backends headless and held
-// to its row in scene_tolerances.h; every debug view on the default and tangent-space scenes;
+// to its row in scene_tolerances.h, with its own filter and with every other one; every debug
+// view on the default and tangent-space scenes;
 // every cull mode with both front faces on the culling scene. On failure the images and
 // metrics stay under TWINRASTER_TEST_OUT/suite/<case>/ and the test prints their paths.
 #include "compare/scene_tolerances.h"
@@ -61,23 +62,34 @@ std::vector<SuiteCase> suiteCases() {
       cases.push_back(c);
     }
   }
-  // Every scene again with trilinear filtering: mip levels and the per-quad LOD must agree with
-  // llvmpipe's as well as level 0 does; the default scene also at 1280x720.
-  for (const suite::SceneTolerance& row : suite::kSceneTolerances) {
-    SuiteCase c;
-    c.scene = std::string(row.scene);
-    c.filter = "trilinear";
-    c.name = stem(c.scene) + "_trilinear";
-    cases.push_back(c);
+  // Every scene again with every other filter (most scenes' own is bilinear): texel choice,
+  // mip levels and the per-quad LOD must agree with llvmpipe's as well as bilinear level 0
+  // does; nearest flips a whole texel on one ULP of uv, so it checks the uv interpolation bit
+  // for bit. The default scene also at 1280x720 with each filter.
+  const std::vector<std::string> filters =
+      kQuickSuite ? std::vector<std::string>{"nearest", "trilinear"}
+                  : std::vector<std::string>{"nearest", "trilinear", "nearest_mipmap_nearest", "linear_mipmap_nearest",
+                                             "nearest_mipmap_linear"};
+  for (const std::string& filter : filters) {
+    for (const suite::SceneTolerance& row : suite::kSceneTolerances) {
+      SuiteCase c;
+      c.scene = std::string(row.scene);
+      c.filter = filter;
+      c.name = stem(c.scene) + "_" + filter;
+      cases.push_back(c);
+    }
   }
   if (!kQuickSuite) {
-    SuiteCase c;
-    c.scene = "default.json";
-    c.filter = "trilinear";
-    c.width = 1280;
-    c.height = 720;
-    c.name = "default_trilinear_1280x720";
-    cases.push_back(c);
+    for (const char* filter : {"bilinear", "nearest", "trilinear", "nearest_mipmap_nearest", "linear_mipmap_nearest",
+                               "nearest_mipmap_linear"}) {
+      SuiteCase c;
+      c.scene = "default.json";
+      c.filter = filter;
+      c.width = 1280;
+      c.height = 720;
+      c.name = std::string("default_") + filter + "_1280x720";
+      cases.push_back(c);
+    }
   }
   for (const char* cull : {"none", "back", "front"}) {
     for (const char* front : {"ccw", "cw"}) {

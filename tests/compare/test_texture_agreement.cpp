@@ -54,7 +54,8 @@ std::string sceneJson(const std::string& materialJson, const std::string& filter
 }
 
 void expectAgreement(const std::string& name, const std::string& materialJson) {
-  for (const char* filter : {"bilinear", "trilinear", "linear_mipmap_nearest"}) {
+  for (const char* filter : {"nearest", "bilinear", "trilinear", "nearest_mipmap_nearest", "linear_mipmap_nearest",
+                             "nearest_mipmap_linear"}) {
     const std::string caseName = name + "_" + filter;
     const fs::path dir = caseDir(caseName);
     const std::string path = (dir / "scene.json").string();
@@ -63,15 +64,9 @@ void expectAgreement(const std::string& name, const std::string& materialJson) {
     const RenderOutput cpu = makeCpuRenderer()->render(scene, scene.settings, 320, 240);
     const RenderOutput gl = makeGlRenderer()->render(scene, scene.settings, 320, 240);
     const CompareResult result = compareDetailed(cpu, gl);
-    Thresholds limits = issueTargets(cpu.stats.trianglesClipped > 0);
-    if (std::string(filter) == "linear_mipmap_nearest") {
-      // Picking one level flips where the LOD is within a few ULPs of k + 0.5, and the CPU's
-      // interpolated uv differs from llvmpipe's in the last bits (docs/textures.md, "Where
-      // nearest filtering still differs"): a handful of isolated pixels read the next level.
-      // Until the interpolation is llvmpipe's bit for bit, only how many may differ is bounded.
-      limits.maxAbsDiff.reset();
-      limits.maxOver1Pct = 0.05;  // % of covered pixels; measured 0.01-0.02 %
-    }
+    // The project's targets for every filter, nearest ones included: a texel or level pick
+    // flips on one ULP of uv, so these hold only with llvmpipe's uv interpolation bit for bit.
+    const Thresholds limits = issueTargets(cpu.stats.trianglesClipped > 0);
     const std::vector<ThresholdViolation> violations = checkThresholds(result.metrics, limits);
     EXPECT_GT(result.metrics.coveredCpu, 0u);
     if (!violations.empty()) {

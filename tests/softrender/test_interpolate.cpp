@@ -19,10 +19,10 @@ WindowVertex win(float x, float y, float z, float invW) {
   return v;
 }
 
-InterpolationSetup setupFor(const std::array<WindowVertex, 3>& w) {
+InterpolationSetup setupFor(const std::array<WindowVertex, 3>& w, const std::array<vec2, 3>& uv = {}) {
   TriangleSetup s;
   EXPECT_EQ(setupTriangle(w, CullMode::None, FrontFace::Ccw, Viewport{64, 64}, s), SetupResult::Ready);
-  return makeInterpolationSetup(w, s);
+  return makeInterpolationSetup(w, uv, s);
 }
 
 TEST(Interpolate, BarycentricsAtTheCornersArePure) {
@@ -44,7 +44,8 @@ TEST(Interpolate, BarycentricsAtTheCornersArePure) {
 TEST(Interpolate, VaryingsArePerspectiveCorrect) {
   // w = 1 at corner 0, w = 2 at corner 1: halfway in screen space the weights are
   // (0.5 / 1, 0.5 / 2) / (0.5 + 0.25) = (2/3, 1/3), not (1/2, 1/2).
-  const InterpolationSetup s = setupFor({win(0.5f, 0.5f, 0.0f, 1.0f), win(10.5f, 0.5f, 1.0f, 0.5f), win(0.5f, 10.5f, 0.0f, 1.0f)});
+  const InterpolationSetup s = setupFor({win(0.5f, 0.5f, 0.0f, 1.0f), win(10.5f, 0.5f, 1.0f, 0.5f), win(0.5f, 10.5f, 0.0f, 1.0f)},
+                                       {vec2(0, 0), vec2(3, 0), vec2(0, 3)});
   const PixelWeights w = pixelWeights(s, 5, 0);
   EXPECT_NEAR(w.perspective[0], 2.0f / 3.0f, 1e-6f);
   EXPECT_NEAR(w.perspective[1], 1.0f / 3.0f, 1e-6f);
@@ -69,9 +70,11 @@ TEST(Interpolate, DepthIsClampedToTheDepthRange) {
 }
 
 TEST(Interpolate, DegenerateUvsStayConstantAndFinite) {
-  const InterpolationSetup s = setupFor({win(0.5f, 0.5f, 0.5f, 1), win(30.5f, 2.5f, 0.5f, 0.25f), win(3.5f, 40.5f, 0.5f, 2)});
+  const vec2 uv(0.25f, 0.75f);
+  const InterpolationSetup s =
+      setupFor({win(0.5f, 0.5f, 0.5f, 1), win(30.5f, 2.5f, 0.5f, 0.25f), win(3.5f, 40.5f, 0.5f, 2)}, {uv, uv, uv});
   ClipVertex v0, v1, v2;
-  v0.uv = v1.uv = v2.uv = vec2(0.25f, 0.75f);
+  v0.uv = v1.uv = v2.uv = uv;
   for (int py = 0; py < 40; py += 7) {
     for (int px = 0; px < 30; px += 5) {
       const Fragment f = interpolateFragment(v0, v1, v2, pixelWeights(s, px, py), false, 0);
@@ -100,11 +103,13 @@ TEST(Interpolate, CollinearFloatPositionsFallBackToTheSnappedOnes) {
   TriangleSetup snapped;
   snapped.xFixed = {128, 2176, 1152};  // (1, 1), (9, 9), (5.0039, 5) px minus the centre offset
   snapped.yFixed = {128, 2176, 1151};
-  const InterpolationSetup s = makeInterpolationSetup(w, snapped);
+  const InterpolationSetup s = makeInterpolationSetup(w, {vec2(0.25f, 0.5f), vec2(0.25f, 0.5f), vec2(0.25f, 0.5f)}, snapped);
   const PixelWeights p = pixelWeights(s, 4, 4);
   EXPECT_TRUE(std::isfinite(p.screen[0]) && std::isfinite(p.screen[1]) && std::isfinite(p.screen[2]));
   EXPECT_NEAR(p.screen[0] + p.screen[1] + p.screen[2], 1.0f, 1e-5f);
   EXPECT_TRUE(std::isfinite(p.depth));
+  // The uv planes would divide by the zero float area: they hold the first corner's uv.
+  EXPECT_EQ(p.uv, vec2(0.25f, 0.5f));
 }
 
 }  // namespace

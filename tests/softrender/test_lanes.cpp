@@ -1,7 +1,7 @@
 // The one shading source (softrender/*-inl.h) compiled here for every Highway target, as
 // softrender/fast_kernels.cpp compiles it, and checked lane by lane against its float
-// instantiation: the attenuation, the Phong exponent, texture sampling and the byte
-// conversion give the float path's bits on every target. A deliberately reordered copy of the
+// instantiation: the attenuation, the Phong exponent, the fused multiply-add, texture sampling
+// and the byte conversion give the float path's bits on every target. A deliberately reordered copy of the
 // attenuation (Horner's form, algebraically equal) must NOT give them: it proves that these
 // comparisons see a change in the order of operations, so a SIMD path that did not run the
 // shared source would fail them.
@@ -109,6 +109,50 @@ void AttenuationIsTheSharedSourceAndSeesAReordering() {
       << "a reordered attenuation gave the shared source's bits: the bit-identity tests could not see it";
 }
 
+// fusedMulAdd, the uv planes' one rounding: std::fma's bits on every target, those with FMA
+// instructions and those that compute it in double rounded to odd. The inputs include
+// products landing exactly on a float rounding tie plus a tiny c, where rounding the double
+// sum again to float (double rounding) picks the wrong neighbour: proven below.
+void FusedMulAddIsStdFmaOnEveryTarget() {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> any(-1000.0f, 1000.0f);
+  std::uniform_int_distribution<std::uint32_t> bits13(4096, 8191);
+  std::vector<float> as, bs, cs;
+  for (int i = 0; i < 20000; ++i) {
+    if (i % 2 == 0) {
+      as.push_back(any(rng));
+      bs.push_back(any(rng));
+      cs.push_back(i % 4 == 0 ? any(rng) : -as.back() * bs.back());  // also near-total cancellation
+    } else {
+      // Two 13-bit integers: a 25- or 26-bit product, often exactly halfway between floats;
+      // c a tiny nudge either way decides the rounding.
+      as.push_back(static_cast<float>(bits13(rng)));
+      bs.push_back(static_cast<float>(bits13(rng)) * 0.5f);
+      cs.push_back((i % 4 == 1 ? 1.0f : -1.0f) * 1e-20f);
+    }
+  }
+  HWY_ALIGN float a[kMaxLanes], b[kMaxLanes], c[kMaxLanes], out[kMaxLanes];
+  std::size_t differences = 0, doubleRoundingMisses = 0;
+  for (std::size_t i = 0; i + laneCount() <= as.size(); i += laneCount()) {
+    for (std::size_t l = 0; l < laneCount(); ++l) {
+      a[l] = as[i + l];
+      b[l] = bs[i + l];
+      c[l] = cs[i + l];
+    }
+    const LaneF r = fusedMulAdd(LaneF(hn::Load(DF(), a)), LaneF(hn::Load(DF(), b)), LaneF(hn::Load(DF(), c)));
+    hn::Store(r.v, DF(), out);
+    for (std::size_t l = 0; l < laneCount(); ++l) {
+      const float expected = std::fma(a[l], b[l], c[l]);
+      if (std::bit_cast<std::uint32_t>(out[l]) != std::bit_cast<std::uint32_t>(expected)) ++differences;
+      const float doubleRounded =
+          static_cast<float>(static_cast<double>(a[l]) * static_cast<double>(b[l]) + static_cast<double>(c[l]));
+      if (doubleRounded != expected) ++doubleRoundingMisses;
+    }
+  }
+  EXPECT_EQ(differences, 0u) << "target " << hwy::TargetName(HWY_TARGET);
+  EXPECT_GT(doubleRoundingMisses, 100u) << "no input where double rounding fails: the test could not see it";
+}
+
 void PhongPowAndBytesAreTheSharedSource() {
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> x(-0.1f, 1.1f);
@@ -181,6 +225,7 @@ namespace {
 HWY_BEFORE_TEST(SharedSource);
 HWY_EXPORT_AND_TEST_P(SharedSource, AttenuationIsTheSharedSourceAndSeesAReordering);
 HWY_EXPORT_AND_TEST_P(SharedSource, PhongPowAndBytesAreTheSharedSource);
+HWY_EXPORT_AND_TEST_P(SharedSource, FusedMulAddIsStdFmaOnEveryTarget);
 HWY_EXPORT_AND_TEST_P(SharedSource, SamplingIsTheSharedSource);
 }  // namespace
 }  // namespace twr
