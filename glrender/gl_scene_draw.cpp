@@ -148,7 +148,7 @@ SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const S
     if (!usableMap(map)) return;
     // Select the unit first: uploading binds the new texture to the active unit.
     glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
-    uploads.texture(map, settings.textureFilter);
+    uploads.texture(map, settings.textureFilter, settings.anisotropy);
   };
 
   GlQuery samples;

@@ -206,11 +206,12 @@ const GlMesh& GlUploadCache::mesh(const Mesh& mesh) {
   return entry.gl;
 }
 
-GLuint GlUploadCache::texture(const std::shared_ptr<const Texture>& texture, TextureFilter filter) {
+GLuint GlUploadCache::texture(const std::shared_ptr<const Texture>& texture, TextureFilter filter, float anisotropy) {
   auto found = textures_.find(texture.get());
   if (found == textures_.end()) {
     TextureEntry entry{texture, uploadTexture(*texture, filter), filter, texture->options.wrap,
-                       texture->options.srgb, frame_};
+                       texture->options.srgb, 1.0f, frame_};
+    if (anisotropy != 1.0f && setGlTextureAnisotropy(anisotropy)) entry.anisotropy = anisotropy;
     ++textureUploads_;
     return textures_.emplace(texture.get(), std::move(entry)).first->second.gl.id();
   }
@@ -220,10 +221,13 @@ GLuint GlUploadCache::texture(const std::shared_ptr<const Texture>& texture, Tex
     setFilter(filter);
     entry.filter = filter;
   }
+  if (entry.anisotropy != anisotropy && setGlTextureAnisotropy(anisotropy)) entry.anisotropy = anisotropy;
   // The options are plain fields an owner may change between renders on the same object:
   // the wrap costs a parameter, sRGB a new upload (another internal format).
   if (entry.srgb != texture->options.srgb) {
     entry.gl = uploadTexture(*texture, filter);
+    entry.anisotropy = 1.0f;
+    if (anisotropy != 1.0f && setGlTextureAnisotropy(anisotropy)) entry.anisotropy = anisotropy;
     entry.srgb = texture->options.srgb;
     entry.wrap = texture->options.wrap;
     ++textureUploads_;

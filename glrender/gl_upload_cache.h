@@ -42,10 +42,11 @@ class GlUploadCache {
   void beginFrame();
   // The uploaded mesh for `mesh`, uploading (or re-uploading changed bytes) when needed.
   const GlMesh& mesh(const Mesh& mesh);
-  // Binds the texture object for `texture`, with `filter` and the texture's wrap set, to the
+  // Binds the texture object for `texture`, with `filter`, `anisotropy` (1: isotropic) and the
+  // texture's wrap set, to the
   // active unit and returns it; throws InputError when the texture cannot be uploaded (wrong
   // byte count, a side of 0, a level not half the previous one, a compressed level's size).
-  GLuint texture(const std::shared_ptr<const Texture>& texture, TextureFilter filter);
+  GLuint texture(const std::shared_ptr<const Texture>& texture, TextureFilter filter, float anisotropy = 1.0f);
   // Drops what the render since beginFrame() did not use.
   void endFrame();
 
@@ -65,6 +66,7 @@ class GlUploadCache {
     TextureFilter filter = TextureFilter::Bilinear;
     TextureWrap wrap = TextureWrap::Repeat;  // as set on the GL object
     bool srgb = false;                        // as uploaded
+    float anisotropy = 1.0f;                  // GL_TEXTURE_MAX_ANISOTROPY as set
     std::uint64_t lastFrame = 0;
   };
 
@@ -77,8 +79,7 @@ class GlUploadCache {
 
 // Sets GL_TEXTURE_MAX_ANISOTROPY of the texture bound to the active unit to `anisotropy`
 // clamped to [1, GL_MAX_TEXTURE_MAX_ANISOTROPY]; false (nothing set) when the context offers
-// neither EXT_ nor ARB_texture_filter_anisotropic. Not called yet: both renderers sample
-// isotropically until the CPU implements anisotropy (issue 15).
+// neither EXT_ nor ARB_texture_filter_anisotropic.
 bool setGlTextureAnisotropy(float anisotropy);
 
 }  // namespace twr

@@ -73,7 +73,7 @@ void drawClippedTriangle(const LoopItemT<T>& s, const ClipVertexT<T>& v0, const 
       const PixelWeightsT<T> weights = pixelWeights(interpolation, px, py);
       if (!(weights.depth < target.storedDepth(px, py))) continue;  // GL_LESS, before shading
       FragmentT<T> fragment = interpolateFragment(v0, v1, v2, weights, s.tangentLighting, tangentLights);
-      if (usesMipmaps(s.shade.filter)) {
+      if (s.shade.needsQuadDifferences()) {
         // The pixel's 2x2 quad (even column and row): its uv differences give the LOD.
         setQuadUvDifferencesLanes<T>(interpolation, static_cast<T>(px & ~1), static_cast<T>(py & ~1), fragment);
       }

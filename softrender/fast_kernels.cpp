@@ -292,7 +292,7 @@ void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps,
       pixelWeightsLanes<LaneF>(planes, pixelColumns(s.x), LaneW(static_cast<double>(s.py)));
   FragmentL<LaneF> fragment =
       interpolateFragmentLanes<LaneF>(vertices[0], vertices[1], vertices[2], weights, tangent, tangent ? lightCount : 0);
-  if (usesMipmaps(item.shade.filter)) {
+  if (item.shade.needsQuadDifferences()) {
     // Each lane's 2x2 quad: the even column and row at or below it (exact in float).
     const LaneF quadColumns = floorOf(pixelColumnsF(s.x) * LaneF(0.5f)) * LaneF(2.0f);
     const LaneF quadRow(static_cast<float>(s.py - (s.py & 1)));

@@ -101,6 +101,11 @@ template <ScalarLane S>
 inline S fusedMulAdd(S a, S b, S c) {
   return std::fma(a, b, c);
 }
+// table[index] for an integer-valued index in [0, table size) (a gather on vector lanes).
+template <ScalarLane S>
+inline S lookupLanes(const float* table, S index) {
+  return static_cast<S>(table[static_cast<std::size_t>(index)]);
+}
 // Round to the nearest integer, halves to even (the default rounding mode).
 template <ScalarLane S>
 inline S roundEvenOf(S a) {

@@ -82,6 +82,10 @@ HWY_INLINE LaneMask operator<=(LaneF a, LaneF b) { return {hn::Le(a.v, b.v)}; }
 // Round to nearest, halves to even (Highway's Round is round-half-even, as rintf).
 HWY_INLINE LaneF roundEvenOf(LaneF a) { return {hn::Round(a.v)}; }
 HWY_INLINE LaneF absOf(LaneF a) { return {hn::Abs(a.v)}; }
+// table[index] per lane, for integer-valued indices within the table.
+HWY_INLINE LaneF lookupLanes(const float* table, LaneF index) {
+  return {hn::GatherIndex(DF(), table, hn::ConvertTo(DI(), index.v))};
+}
 // The smallest and largest lane (for integer-valued lanes such as a mip level).
 HWY_INLINE float lowestLane(LaneF a) { return hn::GetLane(hn::MinOfLanes(DF(), a.v)); }
 HWY_INLINE float highestLane(LaneF a) { return hn::GetLane(hn::MaxOfLanes(DF(), a.v)); }

@@ -55,7 +55,8 @@ inline constexpr std::size_t kDiffuseSlot = 0, kNormalSlot = 1, kSpecularSlot = 
 
 // One material map at the fragment's uv: the map's own uv transform first (phong.frag's
 // <MAP>_UV_TRANSFORM, uv * scale + offset), then the LOD of the fragment's quad when the
-// filter uses mipmaps (the differences scale with the transform).
+// filter uses mipmaps (the differences scale with the transform), or with anisotropy the
+// elliptical filter over the quad's differences.
 template <typename L, typename View>
 TWR_LANE_INLINE Vec4L<L> sampleMapLanes(const View& map, const ShadeUniformsT<ScalarOf<L>>& u, std::size_t slot,
                                         const FragmentL<L>& f) {
@@ -68,6 +69,7 @@ TWR_LANE_INLINE Vec4L<L> sampleMapLanes(const View& map, const ShadeUniformsT<Sc
     dx = dx * scale;
     dy = dy * scale;
   }
+  if (u.anisotropic) return sampleTextureAnisotropicLanes<L>(map, uv, u.filter, dx, dy);
   const L lod = usesMipmaps(u.filter) ? quadLodLanes<L>(dx, dy, texLevelWidth(map, 0), texLevelHeight(map, 0)) : L(S(0));
   return sampleTextureLanes<L>(map, uv, u.filter, lod);
 }

@@ -19,6 +19,7 @@ ShadeUniformsT<T> makeShadeUniforms(const Material& material, const Scene& scene
   u.normalMap = usable(material.normalMap);
   u.specularMap = usable(material.specularMap);
   u.filter = settings.textureFilter;
+  u.anisotropic = settings.anisotropy > 1.0f;
   if (u.normalMap) {
     u.normalGreenDown = u.normalMap->options.green == GreenAxis::Down;
     u.normalXy = u.normalMap->channels == TextureChannels::RedGreen;

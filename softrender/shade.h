@@ -42,6 +42,11 @@ struct ShadeUniformsT {
   const Texture* normalMap = nullptr;
   const Texture* specularMap = nullptr;
   TextureFilter filter = TextureFilter::Bilinear;
+  // settings.anisotropy > 1: llvmpipe's elliptical filter (texture_sample-inl.h), which does not
+  // depend on the ratio itself.
+  bool anisotropic = false;
+  // Whether fragments need their quad's uv differences (a LOD or the filter's ellipse).
+  bool needsQuadDifferences() const { return usesMipmaps(filter) || anisotropic; }
   // Normal-map conventions (phong.frag's NORMAL_MAP_* defines): green pointing down (flip it),
   // two channels (BC5: z rebuilt), a strength scaling x and y (an MTL's -bm).
   bool normalGreenDown = false;

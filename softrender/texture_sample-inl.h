@@ -232,6 +232,125 @@ TWR_LANE_OUTLINE Vec4L<L> sampleTextureLanes(const View& texture, const Vec2L<L>
   return result;
 }
 
+// ---- Anisotropic filtering (GL_TEXTURE_MAX_ANISOTROPY > 1), as llvmpipe does it ----
+// llvmpipe (lp_bld_sample_soa.c) filters with Heckbert's elliptical weighted average: the
+// pixel's footprint in the texture is the ellipse the quad's uv differences span, every texel
+// of its bounding box is read with GL_NEAREST, weighted by a Gaussian of its distance inside
+// the ellipse (weights 1 .. e^-2 from a 1024-entry table, 0 outside), and the sum divided by
+// the total weight. One level, picked from the *shorter* axis: lod = fastLog2(min(rx, ry)) / 2
+// with rx, ry as quadLodLanes, level = clamp(trunc(lod), 0, last) for a mipmapped filter
+// (level 0 otherwise); the texel filter and the mip filter are otherwise ignored. llvmpipe's
+// clamp of the short axis to long / max_anisotropy compares the short axis with itself and
+// never fires (Mesa 22.3), so every anisotropy above 1 draws the same picture: 2x and 16x are
+// identical on llvmpipe, measured, and on the CPU by construction.
+
+// Half the bounding box the CPU reads at most, texels of the level (a deviation: llvmpipe has
+// no bound, and past it a pixel reads millions of texels).
+inline constexpr float kMaxEwaHalfExtent = 1024.0f;
+
+// The ellipse filter on one level for the lanes in `lanes` (the others compute nothing:
+// their box is empty). width0, height0: level 0's size.
+template <typename L, typename View>
+TWR_LANE_OUTLINE Vec4L<L> sampleEwaLevelLanes(const View& texture, int level, const Vec2L<L>& uv,
+                                              const Vec2L<L>& dUvDx, const Vec2L<L>& dUvDy, const MaskOf<L>& lanes) {
+  using S = ScalarOf<L>;
+  const TextureWrap wrap = texWrap(texture);
+  const int width = texLevelWidth(texture, level), height = texLevelHeight(texture, level);
+  const S scaling = S(1) / static_cast<S>(1 << level);  // level 0 texels to this level's
+  const L width0(static_cast<S>(texLevelWidth(texture, 0))), height0(static_cast<S>(texLevelHeight(texture, 0)));
+  const L one(S(1)), zero(S(0));
+  // The differences in this level's texels: (ux, vx) along a pixel step in x, (uy, vy) in y.
+  const L ux = dUvDx.x * width0 * L(scaling), uy = dUvDy.x * width0 * L(scaling);
+  const L vx = dUvDx.y * height0 * L(scaling), vy = dUvDy.y * height0 * L(scaling);
+  // The ellipse A u^2 + B u v + C v^2 = F (the +1 keeps it at least a texel wide).
+  const L a = (vx * vx + vy * vy) + one;
+  const L b = (ux * vx + uy * vy) * L(S(-2));
+  const L c = (ux * ux + uy * uy) + one;
+  const L f = a * c - b * b / L(S(4));
+  const L d = (zero - b * b) + a * c * L(S(4));
+  // Half the bounding box, then the form scaled so that F is the table's last entry.
+  L boxU = L(S(2)) / d * sqrtOf(d * c * f);
+  L boxV = L(S(2)) / d * sqrtOf(a * d * f);
+  const L formScale = L(static_cast<S>(kEwaWeightCount - 1)) / f;
+  const L aScaled = a * formScale, bScaled = b * formScale, cScaled = c * formScale;
+  const L ddq = aScaled * L(S(2));
+  // The sample point in texels of this level, texel centres at integers.
+  const L texU = uv.x * (width0 * L(scaling)) + L(S(-0.5));
+  const L texV = uv.y * (height0 * L(scaling)) + L(S(-0.5));
+  // Texel indices stay exact in float (and the loops finite) below 2^22 texels; a lane beyond
+  // that, or with a non-finite box, reads nothing and falls back to bilinear.
+  const L limit(static_cast<S>(kMaxEwaHalfExtent)), farthest(S(4194304));
+  const auto usable = lanes & isFinite(boxU) & isFinite(boxV) & (absOf(texU) < farthest) & (absOf(texV) < farthest);
+  boxU = select(usable, minOf(boxU, limit), zero);
+  boxV = select(usable, minOf(boxV, limit), zero);
+  // An unused lane's box is empty: last < first.
+  const L u0 = select(usable, floorOf(texU - boxU), zero), v0 = select(usable, floorOf(texV - boxV), zero);
+  const L u1 = select(usable, zero - floorOf(zero - (texU + boxU)), zero - one);  // ceil
+  const L v1 = select(usable, zero - floorOf(zero - (texV + boxV)), zero - one);
+  // q = A U^2 + B U V + C V^2 at each texel, stepped along u with dq and ddq.
+  const L uStart = u0 - texU;
+  const L dqBase = (uStart * L(S(2)) + one) * aScaled;
+  const L qBase = uStart * uStart * aScaled;
+  const float* weights = ewaWeightTable().data();
+  const L lastWeight(static_cast<S>(kEwaWeightCount));
+  const L intLow(S(-2147483648.0)), intHigh(S(2147483648.0));
+  Vec4L<L> sum(zero);
+  L total = zero;
+  for (L v = v0; anyOf(v <= v1); v = v + one) {
+    const auto inV = v <= v1;
+    const L rowV = v - texV;
+    L dq = rowV * bScaled + dqBase;
+    L q = (cScaled * rowV + bScaled * uStart) * rowV + qBase;
+    for (L u = u0; anyOf(inV & (u <= u1)); u = u + one) {
+      // llvmpipe truncates q to an int32 (x86: out of range or NaN gives INT_MIN, which reads
+      // entry 0); from 1024 on the texel is outside the ellipse.
+      const auto converts = (q >= intLow) & (q < intHigh);
+      const auto outside = converts & (q >= lastWeight);
+      const L index = select(converts & !outside, maxOf(truncOf(q), zero), zero);
+      const L weight = select(inV & (u <= u1) & !outside, (lookupLanes)(weights, index), zero);
+      const Vec4L<L> texel = texelValue<L>(
+          texture, fetchTexelBytes<L>(texture, level, (nearestTexelLanes<L>)(u / L(static_cast<S>(width)), width, wrap),
+                                      (nearestTexelLanes<L>)(v / L(static_cast<S>(height)), height, wrap)));
+      sum = sum + texel * weight;
+      total = total + weight;
+      q = q + dq;
+      dq = dq + ddq;
+    }
+  }
+  const Vec4L<L> filtered(sum.x / total, sum.y / total, sum.z / total, sum.w / total);
+  const auto empty = total == zero;
+  if (!anyOf(empty)) return filtered;
+  // No weight at all: llvmpipe falls back to bilinear on the level.
+  return (selectVec4<L>)(empty, (sampleLevelLanes<L>)(texture, level, uv, true), filtered);
+}
+
+// The anisotropic sample: each lane's level (see above), each distinct level filtered once.
+template <typename L, typename View>
+TWR_LANE_OUTLINE Vec4L<L> sampleTextureAnisotropicLanes(const View& texture, const Vec2L<L>& uvIn, TextureFilter filter,
+                                                        const Vec2L<L>& dUvDx, const Vec2L<L>& dUvDy) {
+  using S = ScalarOf<L>;
+  const Vec2L<L> uv((sanitizedCoord<L>)(uvIn.x), (sanitizedCoord<L>)(uvIn.y));
+  const int last = texLevelCount(texture) - 1;
+  const L zero(S(0));
+  L level = zero;
+  if (usesMipmaps(filter) && last > 0) {
+    const L w(static_cast<S>(texLevelWidth(texture, 0))), h(static_cast<S>(texLevelHeight(texture, 0)));
+    const L a = dUvDx.x * w, b = dUvDy.x * w, c = dUvDx.y * h, d = dUvDy.y * h;
+    const L rx = a * a + c * c, ry = b * b + d * d;
+    const L shorter = minOf(rx, ry);
+    const L lod = (floatExponentOf(shorter) + (floatMantissaOf(shorter) - L(S(1)))) * L(S(0.5));
+    level = minOf(maxOf(truncOf(lod), zero), L(static_cast<S>(last)));
+  }
+  const int lowest = static_cast<int>(lowestLane(level)), highest = static_cast<int>(highestLane(level));
+  Vec4L<L> result = (sampleEwaLevelLanes<L>)(texture, lowest, uv, dUvDx, dUvDy, level == L(static_cast<S>(lowest)));
+  for (int l = lowest + 1; l <= highest; ++l) {
+    const auto here = level == L(static_cast<S>(l));
+    if (!anyOf(here)) continue;
+    result = (selectVec4<L>)(here, (sampleEwaLevelLanes<L>)(texture, l, uv, dUvDx, dUvDy, here), result);
+  }
+  return result;
+}
+
 // The level-0 footprint of a sample (the pixel trace's picture of one texture read).
 template <typename L, typename View>
 TWR_LANE_INLINE FootprintL<L> sampleFootprintLanes(const View& texture, const Vec2L<L>& uvIn, TextureFilter filter) {

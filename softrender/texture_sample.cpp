@@ -2,6 +2,9 @@
 // T = float and double, reading a Texture.
 #include "softrender/texture_sample.h"
 
+#include <cstdio>
+#include <cstdlib>
+
 namespace twr {
 
 namespace {
@@ -21,6 +24,23 @@ const std::array<double, 256>& srgbDecodeTable() {
   static const std::array<double, 256> table = [] {
     std::array<double, 256> t{};
     for (int c = 0; c < 256; ++c) t[static_cast<std::size_t>(c)] = linearFromSrgb(c / 255.0);
+    return t;
+  }();
+  return table;
+}
+
+const std::array<float, kEwaWeightCount>& ewaWeightTable() {
+  static const std::array<float, kEwaWeightCount> table = [] {
+    std::array<float, kEwaWeightCount> t{};
+    const float alpha = 2.0f;  // the Gaussian's falloff: weight e^-2 at the ellipse's edge
+    for (int i = 0; i < kEwaWeightCount; ++i) {
+      const float r2 = static_cast<float>(i) / static_cast<float>(kEwaWeightCount - 1);
+      // The six decimals llvmpipe's table was printed with, then the C compiler's reading:
+      // the decimal to double, the double to float.
+      char printed[32];
+      std::snprintf(printed, sizeof printed, "%f", static_cast<double>(std::exp(-alpha * r2)));
+      t[static_cast<std::size_t>(i)] = static_cast<float>(std::strtod(printed, nullptr));
+    }
     return t;
   }();
   return table;
@@ -56,8 +76,16 @@ Vec4T<T> sampleTexture(const Texture& texture, Vec2T<T> uv, TextureFilter filter
   return sampleTextureLanes<T>(texture, uv, filter, lod);
 }
 
+template <typename T>
+Vec4T<T> sampleTextureAnisotropic(const Texture& texture, Vec2T<T> uv, TextureFilter filter, Vec2T<T> dUvDx,
+                                  Vec2T<T> dUvDy) {
+  if (!hasTexels(texture)) return Vec4T<T>(T(0));
+  return sampleTextureAnisotropicLanes<T>(texture, uv, filter, dUvDx, dUvDy);
+}
+
 // The two scalar pipelines: float (matches GL) and double (the reference).
 #define TWR_INSTANTIATE_SAMPLING(T)                                                        \
+  template Vec4T<T> sampleTextureAnisotropic<T>(const Texture&, Vec2T<T>, TextureFilter, Vec2T<T>, Vec2T<T>); \
   template int nearestTexelIndex<T>(T, int);                                               \
   template Vec4T<T> texelAt<T>(const Texture&, int, int);                                  \
   template Vec4T<T> sampleNearest<T>(const Texture&, Vec2T<T>);                            \

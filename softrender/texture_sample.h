@@ -64,6 +64,12 @@ inline S linearFromSrgbByte(S byte) {
 template <typename T = float>
 Vec4T<T> texelAt(const Texture& texture, int x, int y);  // RGBA in [0, 1], level 0
 
+// The anisotropic filter's weights (texture_sample-inl.h, sampleEwaLevelLanes), as llvmpipe
+// holds them: exp(-2 i / 1023) in float for i in [0, 1024), printed with six decimals into
+// its source and read back as float (gallivm's aniso_filter_table).
+inline constexpr int kEwaWeightCount = 1024;
+const std::array<float, kEwaWeightCount>& ewaWeightTable();
+
 }  // namespace twr
 
 #include "softrender/texture_sample-inl.h"
@@ -82,6 +88,10 @@ Vec4T<T> sampleBilinear(const Texture& texture, Vec2T<T> uv);
 // `lod` as quadLodLanes gives it (ignored by filters without mipmaps).
 template <typename T = float>
 Vec4T<T> sampleTexture(const Texture& texture, Vec2T<T> uv, TextureFilter filter, T lod = T(0));
+// With GL_TEXTURE_MAX_ANISOTROPY > 1: the quad's uv differences instead of a LOD.
+template <typename T = float>
+Vec4T<T> sampleTextureAnisotropic(const Texture& texture, Vec2T<T> uv, TextureFilter filter, Vec2T<T> dUvDx,
+                                  Vec2T<T> dUvDy);
 
 // Which texel(s) a sample read and with what weights, for the pixel trace.
 template <typename T>

@@ -166,6 +166,22 @@ TEST_P(FastPath, EveryViewBothLightingSpacesAndFilters) {
   }
 }
 
+// llvmpipe's elliptical filter (anisotropy > 1): its per-lane loops over each lane's own
+// bounding box and its per-lane levels, on a mipmapped filter and on level 0.
+TEST_P(FastPath, AnisotropicFilter) {
+  expectTargetInUse(GetParam());
+  const Scene scene = loadSceneFile(kScenes + "/default.json");
+  // Small: the teaching path reads every texel of every ellipse one pixel at a time, and on
+  // level 0 the floor's far ellipses hold hundreds of texels.
+  for (const auto& [filter, width] : {std::pair{TextureFilter::Trilinear, 120}, std::pair{TextureFilter::Nearest, 40}}) {
+    RenderSettings settings = scene.settings;
+    settings.textureFilter = filter;
+    settings.anisotropy = 16.0f;
+    expectPathsAgree(scene, settings, width, width * 3 / 4,
+                     std::string("anisotropy 16 ") + std::string(toString(filter)));
+  }
+}
+
 TEST_P(FastPath, EveryCullModeAndFrontFace) {
   expectTargetInUse(GetParam());
   const Scene scene = loadSceneFile(kScenes + "/culling.json");
