@@ -308,6 +308,13 @@ TWR_LANE_OUTLINE Vec4L<L> sampleEwaLevelLanes(const View& texture, int level, co
       const auto outside = converts & (q >= lastWeight);
       const L index = select(converts & !outside, maxOf(truncOf(q), zero), zero);
       const L weight = select(inV & (u <= u1) & !outside, (lookupLanes)(weights, index), zero);
+      // Most of a thin ellipse's box is outside it: no lane weighs this texel, so skip the read
+      // (as llvmpipe does; adding zeros would not change the sums).
+      if (!anyOf(weight > zero)) {
+        q = q + dq;
+        dq = dq + ddq;
+        continue;
+      }
       const Vec4L<L> texel = texelValue<L>(
           texture, fetchTexelBytes<L>(texture, level, (nearestTexelLanes<L>)(u / L(static_cast<S>(width)), width, wrap),
                                       (nearestTexelLanes<L>)(v / L(static_cast<S>(height)), height, wrap)));

@@ -333,9 +333,27 @@ KnobReading readMinification(const KnobResult& knob) {
                 levels(bilinear->vsReference.rmse) + ". The mipmapped filters pay where a pixel covers more than a "
                 "texel (the far floor); near the camera they read level 0 like bilinear. ";
   }
+  const ReportPoint* aniso2 = find(knob, "cpu", "trilinear_aniso_2x");
+  const ReportPoint* aniso16 = find(knob, "cpu", "trilinear_aniso_16x");
+  if (aniso16 && trilinear && bilinear) {
+    const double gain = aniso16->vsReference.rmse > 0.0 ? bilinear->vsReference.rmse / aniso16->vsReference.rmse : 0.0;
+    r.summary += " Anisotropic filtering is " + levels(aniso16->vsReference.rmse) + " from it (" + times(gain) +
+                 " less error than bilinear) at " + times(aniso16->msMedian / trilinear->msMedian) +
+                 " trilinear's CPU time.";
+    if (aniso2) {
+      r.detail += aniso2->vsReference.rmse == aniso16->vsReference.rmse
+                      ? "Anisotropy 2x and 16x measure the same: llvmpipe's filter ignores the ratio (its clamp of "
+                        "the short axis never fires), and the CPU draws what llvmpipe draws. "
+                      : "Anisotropy 2x and 16x differ: " + levels(aniso2->vsReference.rmse) + " and " +
+                            levels(aniso16->vsReference.rmse) + ". ";
+    }
+  }
   const ReportPoint* glTrilinear = find(knob, "gl", "trilinear");
   if (glTrilinear && glTrilinear->cpuVsGl) {
-    r.detail += "CPU and GL trilinear are " + levels(glTrilinear->cpuVsGl->rmse) + " apart.";
+    r.detail += "CPU and GL trilinear are " + levels(glTrilinear->cpuVsGl->rmse) + " apart";
+    const ReportPoint* glAniso = find(knob, "gl", "trilinear_aniso_16x");
+    if (glAniso && glAniso->cpuVsGl) r.detail += ", anisotropic " + levels(glAniso->cpuVsGl->rmse);
+    r.detail += ".";
   }
   return r;
 }
