@@ -4,6 +4,8 @@
 // (GlOptions::frame) runs the same steps on colour + depth only and reads back the colour.
 #include "glrender/gl_renderer.h"
 
+#include "scene/mip_level_view.h"
+
 #include "glrender/context_egl.h"
 #include "glrender/context_osmesa.h"
 #include "glrender/gl_clip_state.h"
@@ -207,15 +209,18 @@ class GlRenderer final : public Renderer {
     const mat4 viewFromWorldMatrix = viewFromWorld(scene.camera);
     const mat4 clipFromViewMatrix = clipFromView(scene.camera, aspect);
     const mat4 clipFromWorld = clipFromViewMatrix * viewFromWorldMatrix;
-    const std::vector<DrawItem> items = flattenScene(scene);
+    std::vector<DrawItem> items = flattenScene(scene);
+    RenderSettings drawSettings = settings;
+    MipLevelView mipLevelView;  // owns the stand-in materials while they are drawn
+    if (settings.view == View::MipLevel) mipLevelView = applyMipLevelView(items, drawSettings);
 
     device.targets.prepare(width, height);
     device.targets.bind();
     device.targets.clear(scene.output.background);
     device.targets.drawSurfaces();
-    const GlClipState clipState = makeGlClipState(settings, scene.camera);
-    const SceneDrawStats drawStats =
-        drawScene(device.programs, device.uploads, scene, settings, clipState, items, clipFromWorld, options_.frame);
+    const GlClipState clipState = makeGlClipState(drawSettings, scene.camera);
+    const SceneDrawStats drawStats = drawScene(device.programs, device.uploads, scene, drawSettings, clipState, items,
+                                               clipFromWorld, options_.frame);
     checkGlErrors("drawing the scene");
 
     if (settings.tbnLines.enabled) {

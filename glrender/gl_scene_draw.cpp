@@ -41,7 +41,8 @@ void checkIndices(const Mesh& mesh, const std::string& nodeName) {
 }
 
 std::string viewDefine(View view) {
-  std::string name(toString(view));
+  // mip_level is drawn as albedo of stand-in textures (scene/mip_level_view.h).
+  std::string name(toString(view == View::MipLevel ? View::Albedo : view));
   std::transform(name.begin(), name.end(), name.begin(),
                  [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
   return "VIEW_" + name;

@@ -12,7 +12,7 @@ using NameTable = std::array<std::pair<E, std::string_view>, N>;
 
 constexpr NameTable<CullMode, 3> kCull{{{CullMode::None, "none"}, {CullMode::Back, "back"}, {CullMode::Front, "front"}}};
 constexpr NameTable<FrontFace, 2> kFront{{{FrontFace::Ccw, "ccw"}, {FrontFace::Cw, "cw"}}};
-constexpr NameTable<View, 10> kView{{{View::Shaded, "shaded"},
+constexpr NameTable<View, 11> kView{{{View::Shaded, "shaded"},
                                      {View::Albedo, "albedo"},
                                      {View::Normal, "normal"},
                                      {View::Tangent, "tangent"},
@@ -21,7 +21,8 @@ constexpr NameTable<View, 10> kView{{{View::Shaded, "shaded"},
                                      {View::Uv, "uv"},
                                      {View::Depth, "depth"},
                                      {View::LightTangent, "light_tangent"},
-                                     {View::EyeTangent, "eye_tangent"}}};
+                                     {View::EyeTangent, "eye_tangent"},
+                                     {View::MipLevel, "mip_level"}}};
 constexpr NameTable<LightingSpace, 2> kSpace{{{LightingSpace::World, "world"}, {LightingSpace::Tangent, "tangent"}}};
 constexpr NameTable<TangentTransform, 2> kTangent{
     {{TangentTransform::Model, "model"}, {TangentTransform::InverseTranspose, "inverse_transpose"}}};

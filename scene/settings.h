@@ -11,7 +11,9 @@ namespace twr {
 
 enum class CullMode { None, Back, Front };
 enum class FrontFace { Ccw, Cw };
-enum class View { Shaded, Albedo, Normal, Tangent, Bitangent, MappedNormal, Uv, Depth, LightTangent, EyeTangent };
+// MipLevel: which mip level the sampler reads, as colours (scene/mip_level_view.h); both
+// renderers draw it as the albedo of a stand-in texture, so no shader has a case for it.
+enum class View { Shaded, Albedo, Normal, Tangent, Bitangent, MappedNormal, Uv, Depth, LightTangent, EyeTangent, MipLevel };
 enum class LightingSpace { World, Tangent };
 enum class TangentTransform { Model, InverseTranspose };
 // GL's minification filters (docs/textures.md): nearest = GL_NEAREST, bilinear = GL_LINEAR
@@ -81,6 +83,6 @@ bool parse(std::string_view s, LineMode& out);
 std::string allViewNames();
 inline constexpr View kAllViews[] = {View::Shaded, View::Albedo, View::Normal, View::Tangent, View::Bitangent,
                                      View::MappedNormal, View::Uv, View::Depth, View::LightTangent,
-                                     View::EyeTangent};
+                                     View::EyeTangent, View::MipLevel};
 
 }  // namespace twr

@@ -6,6 +6,7 @@
 
 #include "scene/errors.h"
 #include "scene/image.h"
+#include "scene/mip_level_view.h"
 #include "softrender/clip.h"
 #include "softrender/debug_lines.h"
 #include "softrender/draw_list.h"
@@ -80,12 +81,15 @@ class CpuRenderer final : public Renderer {
     Framebuffer fb = fast_ ? fast_->allocateFramebuffer(width, height)  // draw() clears it bin by bin
                            : makeFramebuffer(width, height, scene.output.background);
     const mat4 clipFromWorld = clipFromWorldFor(scene.camera, width, height);
-    const std::vector<DrawItem> drawItems = flattenScene(scene);
+    std::vector<DrawItem> drawItems = flattenScene(scene);
+    RenderSettings drawSettings = settings;
+    MipLevelView mipLevelView;  // owns the stand-in materials while they are drawn
+    if (settings.view == View::MipLevel) mipLevelView = applyMipLevelView(drawItems, drawSettings);
     std::vector<ItemState> items;
     items.reserve(drawItems.size());
     for (const DrawItem& item : drawItems) {
       validateIndices(item);
-      items.push_back(makeItemState(item, clipFromWorld, scene, settings, width, height));
+      items.push_back(makeItemState(item, clipFromWorld, scene, drawSettings, width, height));
     }
 
     if (options_.path == CpuPath::Teaching) {

@@ -346,7 +346,9 @@ SegmentKernel kernelFor(const ShaderKey& key) {
   const bool d = key.diffuseMap, n = key.normalMap;
   switch (key.view) {
     case View::Shaded: break;
-    case View::Albedo: return debugKernel<View::Albedo>(d, n, tangent);
+    case View::Albedo:
+    case View::MipLevel:  // drawn as albedo (scene/mip_level_view.h); never reaches the kernels
+      return debugKernel<View::Albedo>(d, n, tangent);
     case View::Normal: return debugKernel<View::Normal>(d, n, tangent);
     case View::Tangent: return debugKernel<View::Tangent>(d, n, tangent);
     case View::Bitangent: return debugKernel<View::Bitangent>(d, n, tangent);

@@ -1,6 +1,7 @@
 #include "softrender/pixel_trace.h"
 
 #include "scene/errors.h"
+#include "scene/mip_level_view.h"
 #include "softrender/cpu_renderer.h"
 #include "softrender/framebuffer.h"
 #include "softrender/output_merge.h"
@@ -138,9 +139,10 @@ nlohmann::json toJson(const glm::vec<N, float>& v) {
 
 }  // namespace
 
-PixelTrace tracePixel(const Scene& scene, const RenderSettings& settings, int width, int height, int x, int yTop) {
+PixelTrace tracePixel(const Scene& scene, const RenderSettings& requested, int width, int height, int x, int yTop) {
   // The full render gives the final pixel (and validates the size and the meshes).
-  const RenderOutput output = makeCpuRenderer()->render(scene, settings, width, height);
+  const RenderOutput output = makeCpuRenderer()->render(scene, requested, width, height);
+  RenderSettings settings = requested;  // mip_level: albedo of stand-ins, below
   if (x < 0 || x >= width || yTop < 0 || yTop >= height) {
     throw InputError("trace: pixel (" + std::to_string(x) + ", " + std::to_string(yTop) + ") is outside the " +
                      std::to_string(width) + "x" + std::to_string(height) + " image (x in [0, " +
@@ -152,7 +154,7 @@ PixelTrace tracePixel(const Scene& scene, const RenderSettings& settings, int wi
   trace.yGl = height - 1 - yTop;
   trace.width = width;
   trace.height = height;
-  trace.view = settings.view;
+  trace.view = requested.view;
   trace.lightingSpace = settings.lightingSpace;
   const std::size_t i = static_cast<std::size_t>(yTop) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
   for (std::size_t c = 0; c < 4; ++c) trace.rgba[c] = output.rgba[i * 4 + c];
@@ -163,7 +165,10 @@ PixelTrace tracePixel(const Scene& scene, const RenderSettings& settings, int wi
   const Viewport viewport{width, height};
   const mat4 clipFromWorld = clipFromWorldFor(scene.camera, width, height);
   float depth = kClearDepth;
-  for (const DrawItem& item : flattenScene(scene)) {
+  std::vector<DrawItem> items = flattenScene(scene);
+  MipLevelView mipLevelView;  // owns the stand-in materials while they are traced
+  if (settings.view == View::MipLevel) mipLevelView = applyMipLevelView(items, settings);
+  for (const DrawItem& item : items) {
     const VertexUniforms vertexUniforms = makeVertexUniforms(item.worldFromModel, clipFromWorld, scene, settings);
     const ShadeUniforms shadeUniforms = makeShadeUniforms(*item.material, scene, settings);
     const ShaderKey key = shaderKeyFor(shadeUniforms, settings);

@@ -5,6 +5,8 @@
 // (ReferenceOptions::doublePrecision).
 #include "softrender/reference_renderer.h"
 
+#include "scene/mip_level_view.h"
+
 #include "scene/camera.h"
 #include "scene/errors.h"
 #include "scene/image.h"
@@ -113,10 +115,13 @@ class ReferenceRenderer final : public Renderer {
 
  private:
   template <typename T>
-  RenderOutput renderWith(const Scene& scene, const RenderSettings& settings, int width, int height) {
+  RenderOutput renderWith(const Scene& scene, const RenderSettings& requested, int width, int height) {
     validateImageSize(width, height, "reference renderer");
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<DrawItem> items = flattenScene(scene);
+    std::vector<DrawItem> items = flattenScene(scene);
+    RenderSettings settings = requested;
+    MipLevelView mipLevelView;  // owns the stand-in materials while they are drawn
+    if (requested.view == View::MipLevel) mipLevelView = applyMipLevelView(items, settings);
     const std::vector<glm::dmat4> worldFromModel = referenceWorldFromModel(scene);
     for (const DrawItem& item : items) validateIndices(item);
     const glm::dmat4 clipFromWorldCentre = referenceClipFromWorld(scene.camera, width, height);

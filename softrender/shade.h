@@ -154,7 +154,10 @@ void withShaderFeatures(const ShaderKey& key, Body&& body) {
   auto withView = [&]<bool D, bool N, bool S, LightingSpace L>() {
     switch (key.view) {
       case View::Shaded: body.template operator()<ShaderFeatures<D, N, S, L, View::Shaded>>(); break;
-      case View::Albedo: body.template operator()<ShaderFeatures<D, N, S, L, View::Albedo>>(); break;
+      case View::Albedo:
+      case View::MipLevel:  // drawn as albedo (scene/mip_level_view.h)
+        body.template operator()<ShaderFeatures<D, N, S, L, View::Albedo>>();
+        break;
       case View::Normal: body.template operator()<ShaderFeatures<D, N, S, L, View::Normal>>(); break;
       case View::Tangent: body.template operator()<ShaderFeatures<D, N, S, L, View::Tangent>>(); break;
       case View::Bitangent: body.template operator()<ShaderFeatures<D, N, S, L, View::Bitangent>>(); break;

@@ -1,5 +1,7 @@
 #include "app/gui/debug_views.h"
 
+#include "scene/mip_level_view.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -38,6 +40,11 @@ const char* viewLegend(View view) {
     case View::EyeTangent:
       return "Direction to the eye in tangent space as (V + 1) / 2: red = along T, green = along B, blue = "
              "along N. Blue-ish: the surface faces the camera.";
+    case View::MipLevel:
+      return "The mip level each pixel's texture reads, as the sampler chose it: level 0 blue, 1 cyan, 2 green, 3 "
+             "yellow, 4 red, 5 magenta, 6 white, 7 light grey, 8 grey, 9 black, 10 navy, 11 purple, 12 maroon; "
+             "trilinear blends neighbours (cyan-green = level 1.5). Nearest and bilinear read level 0 only; "
+             "brown surfaces have no map.";
   }
   return "";
 }
@@ -54,6 +61,13 @@ std::string describeViewSample(View view, const PixelSample& sample) {
   if (isVectorView(view)) {
     std::snprintf(text, sizeof text, "vector %.2f %.2f %.2f", unit(0) * 2.0 - 1.0, unit(1) * 2.0 - 1.0,
                   unit(2) * 2.0 - 1.0);
+  } else if (view == View::MipLevel) {
+    const std::optional<float> level = mipLevelFromColour({sample.rgba[0], sample.rgba[1], sample.rgba[2]});
+    if (level) {
+      std::snprintf(text, sizeof text, "mip level %.2f", static_cast<double>(*level));
+    } else {
+      std::snprintf(text, sizeof text, "no level colour (no map)");
+    }
   } else if (view == View::Uv) {
     std::snprintf(text, sizeof text, "uv %.3f %.3f (fractional part)", unit(0), unit(1));
   } else if (view == View::Depth) {

@@ -9,6 +9,7 @@
 #include "compare/thresholds.h"
 #include "glrender/gl_renderer.h"
 #include "scene/block_compression.h"
+#include "scene/mip_level_view.h"
 #include "scene/scene_file.h"
 #include "softrender/cpu_renderer.h"
 
@@ -18,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -140,6 +142,29 @@ TEST(TextureAgreement, AnisotropicFilter) {
   if (!violations.empty()) {
     writeCompareArtifacts(dir.string(), cpu, gl, result, metricsToJson(result.metrics));
     ADD_FAILURE() << "anisotropic level 0 exceeds the targets (images in " << dir.string() << ")";
+  }
+}
+
+// The mip_level view: both renderers sample stand-in textures whose levels are solid colours,
+// so the images show each sampler's level choice; they must be the same, and the grazing
+// floor must show several levels (a view that drew one colour would prove nothing).
+TEST(TextureAgreement, MipLevelViewShowsTheSameLevels) {
+  const std::string material = maps(R"(")" + kTextures + R"(bricks_diffuse.png")", R"(")" + kTextures + R"(bricks_normal.png")");
+  for (const char* filter : {"trilinear", "nearest_mipmap_nearest"}) {
+    for (const char* extra : {"", R"(, "anisotropy": 16)"}) {
+      const fs::path dir = caseDir(std::string("mip_level_") + filter + (*extra ? "_aniso" : ""));
+      const auto [cpu, gl] =
+          renderBoth(dir, sceneJson(material, filter, std::string(R"(, "view": "mip_level")") + extra), 160, 120);
+      const CompareResult result = compareDetailed(cpu, gl);
+      EXPECT_LE(result.metrics.maxAbsDiff, 1.0) << filter << extra;
+      std::set<int> levels;
+      for (std::size_t i = 0; i + 3 < cpu.rgba.size(); i += 4) {
+        const std::optional<float> level = mipLevelFromColour({cpu.rgba[i], cpu.rgba[i + 1], cpu.rgba[i + 2]});
+        if (level) levels.insert(static_cast<int>(std::lround(*level)));
+      }
+      EXPECT_GE(levels.size(), 4u) << filter << extra << ": the floor should recede through several levels";
+      if (HasFailure()) writeCompareArtifacts(dir.string(), cpu, gl, result, metricsToJson(result.metrics));
+    }
   }
 }
 
