@@ -72,9 +72,15 @@ void traceTriangle(const DrawItem& item, std::size_t t, const VertexUniforms& ve
     visit.yFixed = setup.yFixed;
     for (std::size_t e = 0; e < 3; ++e) visit.edgeValue[e] = setup.edges[e].at(x, yGl);
     visit.frontFacing = setup.frontFacing;
-    visit.weights = pixelWeights(makeInterpolationSetup(window, {a.uv, b.uv, c.uv}, setup), x, yGl);
+    const InterpolationSetup interpolation = makeInterpolationSetup(window, {a.uv, b.uv, c.uv}, setup);
+    visit.weights = pixelWeights(interpolation, x, yGl);
     visit.fragment =
         interpolateFragment(a, b, c, visit.weights, tangentLighting, tangentLighting ? shadeUniforms.lightCount : 0);
+    if (shadeUniforms.needsQuadDifferences()) {
+      // The LOD (or the anisotropic ellipse) from the pixel's 2x2 quad, as the renderers take it.
+      setQuadUvDifferencesLanes<float>(interpolation, static_cast<float>(x & ~1), static_cast<float>(yGl & ~1),
+                                       visit.fragment);
+    }
     visit.depthBefore = depth;
     if (settings.cull == CullMode::Back && !setup.frontFacing) {
       visit.outcome = TraceOutcome::CulledBack;
@@ -225,6 +231,10 @@ std::string formatPixelTrace(const PixelTrace& tr) {
     o << "  depth " << fmt(v.weights.depth) << " vs stored " << fmt(v.depthBefore) << "\n";
     const Fragment& f = v.fragment;
     o << "  posWorld " << fmt(f.posWorld) << " uv " << fmt(f.uv) << "\n";
+    if (f.uvDx != vec2(0.0f) || f.uvDy != vec2(0.0f)) {
+      o << "  quad uv differences (top-left pixel to its right, and to the pixel above): d/dx " << fmt(f.uvDx)
+        << " d/dy " << fmt(f.uvDy) << "\n";
+    }
     o << "  nWorld " << fmt(f.nWorld) << " tWorld " << fmt(f.tWorld) << " bWorld " << fmt(f.bWorld) << "\n";
     if (v.outcome != TraceOutcome::Shaded) continue;
     const ShadeTerms& s = v.terms;
@@ -295,6 +305,8 @@ nlohmann::json pixelTraceToJson(const PixelTrace& tr) {
       jv["depth"] = v.weights.depth;
       jv["pos_world"] = toJson(v.fragment.posWorld);
       jv["uv"] = toJson(v.fragment.uv);
+      jv["uv_dx"] = toJson(v.fragment.uvDx);
+      jv["uv_dy"] = toJson(v.fragment.uvDy);
       jv["n_world"] = toJson(v.fragment.nWorld);
       jv["t_world"] = toJson(v.fragment.tWorld);
       jv["b_world"] = toJson(v.fragment.bWorld);
