@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <mutex>
+#include <sstream>
 #include <string>
 
 namespace twr {
@@ -80,19 +81,22 @@ std::optional<float> mipLevelFromColour(const std::array<std::uint8_t, 3>& rgb, 
 
 std::shared_ptr<const Texture> mipLevelTexture(const Texture& like) {
   // The key: every level's size and the options that change sampling.
-  std::string key = std::to_string(static_cast<int>(like.options.wrap)) + ":" + std::to_string(like.options.uvScale.x) +
-                    "," + std::to_string(like.options.uvScale.y) + "," + std::to_string(like.options.uvOffset.x) + "," +
-                    std::to_string(like.options.uvOffset.y);
+  // (A stream: GCC 12 for aarch64 warns falsely on "literal" + std::string under -Werror.)
+  std::ostringstream keyStream;
+  keyStream << std::hexfloat << static_cast<int>(like.options.wrap) << ':' << like.options.uvScale.x << ',' << like.options.uvScale.y
+            << ',' << like.options.uvOffset.x << ',' << like.options.uvOffset.y;
   for (int level = 0; level < like.levelCount(); ++level) {
-    key += ";" + std::to_string(like.levelWidth(level)) + "x" + std::to_string(like.levelHeight(level));
+    keyStream << ';' << like.levelWidth(level) << 'x' << like.levelHeight(level);
   }
+  const std::string key = keyStream.str();
   static std::mutex mutex;
   static std::map<std::string, std::shared_ptr<const Texture>> cache;
   const std::lock_guard<std::mutex> lock(mutex);
   if (const auto found = cache.find(key); found != cache.end()) return found->second;
 
   auto texture = std::make_shared<Texture>();
-  texture->path = like.path + " (mip_level view)";
+  texture->path = like.path;
+  texture->path += " (mip_level view)";
   texture->formatName = "mip_level view";
   texture->width = like.width;
   texture->height = like.height;
