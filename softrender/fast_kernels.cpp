@@ -132,7 +132,7 @@ std::uint64_t Visibility(const TriangleSetup& setup, const std::array<WindowVert
   const DU du;
   const std::size_t lanes = laneCount();
   const std::size_t width = static_cast<std::size_t>(fb.width);
-  InterpolationL<LaneF> planes;
+  InterpolationL<LaneF> planes{};  // set on the first covered row (zeroed: GCC 12 for aarch64 cannot see that)
   const auto slotLanes = hn::Set(du, slot);
   std::uint64_t passed = 0;
   for (int py = yFirst; py <= yLast; ++py) {
