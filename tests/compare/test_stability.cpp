@@ -110,12 +110,12 @@ Both renderBoth(const Scene& scene, const RenderSettings& settings, int width = 
 
 std::size_t coveredCount(const RenderOutput& out) {
   std::size_t n = 0;
-  for (std::size_t i = 3; i < out.rgba.size(); i += 4) n += out.rgba[i] > 0 ? 1 : 0;
+  for (std::size_t i = 0; i < out.depth.size(); ++i) n += coveredAt(out, i) ? 1 : 0;
   return n;
 }
 
 bool covered(const RenderOutput& out, int x, int yTop) {
-  return out.rgba[(static_cast<std::size_t>(yTop) * out.width + x) * 4 + 3] > 0;
+  return coveredAt(out, static_cast<std::size_t>(yTop) * static_cast<std::size_t>(out.width) + static_cast<std::size_t>(x));
 }
 
 const std::uint8_t* pixelAt(const RenderOutput& out, int x, int yTop) {
@@ -647,7 +647,7 @@ TEST(Stability, TangentParallelToNormalFallsBackToTheSameFrameOnBothBackends) {
   std::size_t checked = 0;
   for (const RenderOutput* out : {&b.cpu, &b.gl}) {
     for (std::size_t i = 0; i + 3 < out->rgba.size(); i += 4) {
-      if (out->rgba[i + 3] == 0) continue;
+      if (!coveredAt(*out, i / 4)) continue;
       ASSERT_NEAR(out->rgba[i + 0], 128, 1);
       ASSERT_NEAR(out->rgba[i + 1], 128, 1);
       ASSERT_EQ(out->rgba[i + 2], 255);

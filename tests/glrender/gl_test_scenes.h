@@ -57,7 +57,8 @@ inline std::size_t index(const RenderOutput& out, int x, int y) {
   return static_cast<std::size_t>(y) * static_cast<std::size_t>(out.width) + static_cast<std::size_t>(x);
 }
 inline const std::uint8_t* pixel(const RenderOutput& out, int x, int y) { return &out.rgba[index(out, x, y) * 4]; }
-inline bool covered(const RenderOutput& out, int x, int y) { return pixel(out, x, y)[3] == 255; }
+// A triangle covers (x, y): its id (coveredAt); a lean frame, without ids, says it in alpha.
+inline bool covered(const RenderOutput& out, int x, int y) { return coveredAt(out, index(out, x, y)); }
 
 inline std::size_t coveredCount(const RenderOutput& out) {
   std::size_t count = 0;
