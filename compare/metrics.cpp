@@ -11,7 +11,7 @@ namespace twr {
 namespace {
 
 constexpr int kRgbaChannels = 4;
-constexpr int kColourChannels = 3;  // RGB; alpha is never diffed
+constexpr int kColourChannels = 3;  // RGB; alpha (the background's where nothing is drawn) is never diffed
 constexpr int kOver1Levels = 1, kOver3Levels = 3, kOver12Levels = 12;  // exclusive bounds
 constexpr double kPercent = 100.0;
 constexpr double kPerTenThousand = 10000.0;

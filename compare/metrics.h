@@ -5,7 +5,7 @@
 //   count only in excludedLinePixels and nanPixels, nowhere else.
 // - A pixel is "covered" by a backend when a triangle was drawn there: its triangle id is not
 //   kNoTriangle (coveredAt; alpha > 0 for an output without ids, such as the analytic-sphere
-//   reference), not alpha.
+//   reference). Alpha is not coverage: the background has the scene's alpha, 1 by default.
 // - Colour differences are over RGB only; alpha is never diffed.
 //   A pixel's difference is the largest of its three channel differences, in 0..255 levels.
 // - Colour and depth metrics are over pixels both backends covered ("bothCovered").

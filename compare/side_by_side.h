@@ -7,7 +7,7 @@
 namespace twr {
 
 // How pixels where nothing was drawn (drawnAt: no triangle id, no line) are shown in viewable
-// images (not alpha).
+// images. Alpha does not say it: the background has the scene's alpha, 1 by default.
 enum class BackgroundMode {
   RendererColour,  // keep the RGB the renderer wrote (the scene's background colour): RGB unchanged
   // The dark checker of the diff images where nothing was drawn; a drawn pixel composited
@@ -16,8 +16,8 @@ enum class BackgroundMode {
   Checker,
 };
 
-// The render exactly as produced, alpha included (alpha 0 where nothing was drawn), for
-// cpu.png / gl.png.
+// The render exactly as produced, alpha included (the scene's background alpha where nothing
+// was drawn), for cpu.png / gl.png.
 Image rawImage(const RenderOutput& output);
 // The render with alpha 255 everywhere, background shown as `mode` says.
 Image viewImage(const RenderOutput& output, BackgroundMode mode);

@@ -30,8 +30,8 @@ struct RenderStats {
 struct RenderOutput {
   int width = 0;
   int height = 0;
-  // RGBA8; alpha 255 where geometry was drawn, 0 elsewhere. Coverage is the triangle id, not
-  // alpha: see coveredAt().
+  // RGBA8; alpha 255 where geometry was drawn, the background's alpha elsewhere
+  // (OutputDesc::background, 1 by default): alpha is not coverage, see coveredAt().
   std::vector<std::uint8_t> rgba;
   std::vector<float> depth;                // window depth in [0, 1], 1 where nothing was drawn
   std::vector<std::uint32_t> triangleId;   // global triangle id (DrawItem::firstTriangleId + i), kNoTriangle where none

@@ -292,7 +292,7 @@ std::uint64_t FastPipeline::drawBin(const std::vector<ItemState>& items, int bin
   return passed;
 }
 
-void FastPipeline::draw(const std::vector<ItemState>& items, vec3 background, Framebuffer& fb, RenderStats& stats) {
+void FastPipeline::draw(const std::vector<ItemState>& items, vec4 background, Framebuffer& fb, RenderStats& stats) {
   const std::uint32_t backgroundRgba = backgroundWord(background);
   runVertexStage(items);
   const int binCount = (fb.height + kBinRows - 1) / kBinRows;

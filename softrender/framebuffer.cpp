@@ -15,14 +15,15 @@ std::uint8_t unitToByte(float c) {
   return static_cast<std::uint8_t>(std::lround(clamped * kByteMax));
 }
 
-std::uint32_t backgroundWord(vec3 background) {
-  const std::uint8_t bytes[4] = {unitToByte(background.r), unitToByte(background.g), unitToByte(background.b), 0};
+std::uint32_t backgroundWord(vec4 background) {
+  const std::uint8_t bytes[4] = {unitToByte(background.r), unitToByte(background.g), unitToByte(background.b),
+                                 unitToByte(background.a)};
   std::uint32_t word = 0;
   std::memcpy(&word, bytes, sizeof(word));
   return word;
 }
 
-Framebuffer makeFramebuffer(int width, int height, vec3 background) {
+Framebuffer makeFramebuffer(int width, int height, vec4 background) {
   Framebuffer fb;
   fb.width = width;
   fb.height = height;

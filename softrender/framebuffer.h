@@ -33,12 +33,13 @@ struct Framebuffer {
 // round(clamp(c, 0, 1) * 255); NaN gives 0.
 std::uint8_t unitToByte(float c);
 
-// The RGBA8 word (bytes r, g, b, 0 in memory order) the background clears colour to: alpha 0
-// marks pixels where no geometry was drawn.
-std::uint32_t backgroundWord(vec3 background);
+// The RGBA8 word (bytes r, g, b, a in memory order) the background clears colour to, each
+// unitToByte of `background` (OutputDesc::background: alpha as the scene asks, not coverage,
+// which the triangle ids carry).
+std::uint32_t backgroundWord(vec4 background);
 
-// Cleared to `background` with alpha 0, depth kClearDepth, no triangle, no line.
-Framebuffer makeFramebuffer(int width, int height, vec3 background);
+// Cleared to `background`, depth kClearDepth, no triangle, no line.
+Framebuffer makeFramebuffer(int width, int height, vec4 background);
 
 // The buffers, top row first, as RenderOutput promises (moved out of `framebuffer`).
 RenderOutput toRenderOutput(Framebuffer&& framebuffer);

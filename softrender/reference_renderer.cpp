@@ -123,7 +123,7 @@ class ReferenceRenderer final : public Renderer {
     const Viewport viewport{width, height};
     const std::vector<SampleOffset> offsets = sampleOffsets(options_.samplesPerAxis);
     const std::size_t pixelCount = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-    const glm::dvec3 background(scene.output.background);
+    const glm::dvec3 background(vec3(scene.output.background));  // RGB: alpha here is coverage
 
     std::vector<glm::dvec3> colourSum(pixelCount, glm::dvec3(0.0));
     std::vector<int> coveredSamples(pixelCount, 0);

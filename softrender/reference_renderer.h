@@ -10,9 +10,10 @@
 // What the RenderOutput holds:
 //   rgb        mean of the N^2 sample colours, a sample nobody covers counting as the
 //              background (the true box-filtered image), rounded to 8 bits once at the end
-//   alpha      round(255 * covered samples / N^2): the coverage fraction. compare() counts a
-//              pixel as covered when alpha > 0, i.e. when any sample is covered, and diffs RGB
-//              only, so edge pixels carry their aliasing error in the colour metrics
+//   alpha      round(255 * covered samples / N^2): the coverage fraction, whatever the
+//              background's alpha. compare() counts a pixel as covered by its triangle id,
+//              set when any sample is covered, and diffs RGB only, so edge pixels carry
+//              their aliasing error in the colour metrics
 //   depth, triangleId   those of the covered sample nearest the pixel centre (1 and
 //              kNoTriangle where no sample is covered)
 //   lineMask   all 0: the reference draws no TBN debug lines (compare skips line pixels of

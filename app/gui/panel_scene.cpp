@@ -129,8 +129,10 @@ void GuiApp::drawSceneTab() {
     changed = true;
   }
   itemTooltip("The render size when the view's resolution is 'scene output' (times the scale).");
-  changed |= ImGui::ColorEdit3("Background", &doc_.scene.output.background.x, kColourFlags);
-  itemTooltip("Linear RGB in [0, 1] where no triangle is drawn (alpha 0 in the outputs).");
+  changed |= ImGui::ColorEdit4("Background", &doc_.scene.output.background.x,
+                                ImGuiColorEditFlags_Float | ImGuiColorEditFlags_AlphaBar);
+  itemTooltip("Linear RGB and alpha, each in [0, 1], where no triangle is drawn. Alpha 1 (default) saves opaque "
+              "PNGs, 0 transparent ones; coverage (Checker bg, the diff) comes from the triangle ids, not alpha.");
   changed |= ImGui::ColorEdit3("Ambient Ia", &doc_.scene.ambient.x, kColourFlags);
   itemTooltip("Ambient light intensity, linear RGB (may exceed 1): adds ka * albedo * Ia to every lit pixel.");
 

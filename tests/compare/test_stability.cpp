@@ -49,7 +49,7 @@ Scene frontScene(float near = 0.1f, float far = 100.0f) {
   scene.camera.fovDeg = 90.0f;
   scene.camera.near = near;
   scene.camera.far = far;
-  scene.output.background = vec3(0.0f);
+  scene.output.background = vec4(0.0f, 0.0f, 0.0f, 1.0f);
   scene.settings.cull = CullMode::None;
   scene.settings.view = View::Albedo;  // colour = kd: flat, so coverage and ties are easy to read
   return scene;
@@ -556,7 +556,7 @@ Scene litScene() {
   scene.camera.position = vec3(0.0f, 0.4f, 2.6f);
   scene.camera.target = vec3(0.0f);
   scene.camera.fovDeg = 50.0f;
-  scene.output.background = vec3(0.05f);
+  scene.output.background = vec4(0.05f, 0.05f, 0.05f, 1.0f);
   PointLight light;
   light.posWorld = vec3(1.5f, 2.0f, 2.5f);
   scene.lights.push_back(light);

@@ -24,7 +24,7 @@ Scene quadScene(float leftEdgeX) {
   scene.camera.position = vec3(0, 0, 1);
   scene.camera.target = vec3(0, 0, 0);
   scene.camera.fovDeg = 90.0f;
-  scene.output.background = vec3(0.0f);
+  scene.output.background = vec4(0.0f, 0.0f, 0.0f, 1.0f);  // the reference's alpha is coverage anyway
   // Two triangles from x = leftEdgeX to 2 (beyond the right border), y from -2 to 2.
   const std::vector<vec3> positions{{leftEdgeX, -2, 0}, {2, -2, 0}, {2, 2, 0},
                                     {leftEdgeX, -2, 0}, {2, 2, 0},  {leftEdgeX, 2, 0}};
