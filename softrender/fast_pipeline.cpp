@@ -92,6 +92,12 @@ void FastPipeline::prepareMaps(const std::vector<ItemState>& items) {
     if (inserted) {
       found->second.texture = owner;
       missing.push_back(&found->second);
+    } else {
+      // Options are plain fields an owner may change between frames on the same object (as
+      // GlUploadCache allows): the tiled texels do not depend on wrap or srgb, so only the
+      // copies of those are refreshed. Texels are const; new texels come as a new Texture.
+      found->second.tiled.wrap = raw->options.wrap;
+      found->second.tiled.srgb = raw->options.srgb;
     }
     found->second.lastFrame = frame_;
     return &found->second.tiled;
