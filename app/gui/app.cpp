@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <csignal>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <ctime>
 #include <filesystem>
@@ -286,6 +287,7 @@ void GuiApp::openScene(const std::string& path) {
     sceneError_.clear();
     meshError_.clear();
     meshErrorIndex_ = -1;
+    mapMessages_.clear();
     std::error_code code;
     const std::filesystem::path absolute = std::filesystem::absolute(path, code);
     prefs_.lastScene = code ? path : absolute.lexically_normal().string();
@@ -379,6 +381,26 @@ void GuiApp::frame(bool& finalFrame) {
     state["camera"] = {{"near", doc_.scene.camera.near}, {"far", doc_.scene.camera.far}};
     state["frames"] = ImGui::GetFrameCount();
     state["settled"] = settled();
+    // Every loaded map with its options, whether it is drawn, and its Texture object (a new
+    // one after each option edit).
+    nlohmann::json maps = nlohmann::json::array();
+    for (std::size_t m = 0; m < doc_.scene.materials.size(); ++m) {
+      for (const MapSlot slot : kMapSlots) {
+        const std::shared_ptr<const Texture> map = loadedMap(doc_, m, slot);
+        if (!map) continue;
+        const auto message = mapMessages_.find({m, slot});
+        maps.push_back({{"material", m},
+                        {"slot", std::string(toString(slot))},
+                        {"on", mapOn(doc_, m, slot)},
+                        {"flip_v", map->options.flipV},
+                        {"srgb", map->options.srgb},
+                        {"wrap", std::string(toString(map->options.wrap))},
+                        {"green", std::string(toString(map->options.green))},
+                        {"object", reinterpret_cast<std::uintptr_t>(map.get())},
+                        {"message", message != mapMessages_.end() ? message->second.text : std::string()}});
+      }
+    }
+    state["maps"] = std::move(maps);
   }
   probe_.endFrame();
   interacting_ = dragMode_ != DragMode::None || ImGui::IsAnyItemActive();
