@@ -377,6 +377,13 @@ void GuiApp::frame(bool& finalFrame) {
     state["cpu_edit"] = cpuFrame_.revision;
     state["gl_edit"] = glFrame_.revision;
     state["diff_edit"] = diff_.result ? diff_.revision : 0;
+    if (diff_.result) {
+      const CompareMetrics& m = diff_.result->metrics;
+      state["diff"] = {{"max_abs_diff", m.maxAbsDiff},
+                       {"covered_cpu", m.coveredCpu},
+                       {"covered_gl", m.coveredGl},
+                       {"coverage_mismatch", m.coverageMismatch}};
+    }
     state["render_blocker"] = renderBlocker_;
     state["camera"] = {{"near", doc_.scene.camera.near}, {"far", doc_.scene.camera.far}};
     state["frames"] = ImGui::GetFrameCount();
@@ -401,6 +408,8 @@ void GuiApp::frame(bool& finalFrame) {
       }
     }
     state["maps"] = std::move(maps);
+    state["anisotropy"] = doc_.scene.settings.anisotropy;
+    state["view"] = std::string(toString(doc_.scene.settings.view));
   }
   probe_.endFrame();
   interacting_ = dragMode_ != DragMode::None || ImGui::IsAnyItemActive();
