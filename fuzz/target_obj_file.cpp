@@ -89,7 +89,7 @@ void fuzzObjFile(const Workspace& workspace, const std::uint8_t* data, std::size
   scene.lights.emplace_back();
   scene.settings.cull = CullMode::None;
   const RenderOutput output = makeCpuRenderer()->render(scene, scene.settings, kRenderWidth, kRenderHeight);
-  checkRenderOutput(output, kRenderWidth, kRenderHeight, triangles, unitToByte(scene.output.background.a),
+  checkRenderOutput(output, kRenderWidth, kRenderHeight, triangles, clearByte(scene.output.background.a),
                     "obj render");
 }
 

@@ -46,7 +46,7 @@ void fuzzSceneFile(const Workspace& workspace, const std::uint8_t* data, std::si
   } catch (const InputError& error) {
     throw InvariantViolation(std::string("a scene the loader accepted cannot be rendered: ") + error.what());
   }
-  checkRenderOutput(output, kRenderWidth, kRenderHeight, triangles, unitToByte(scene.output.background.a),
+  checkRenderOutput(output, kRenderWidth, kRenderHeight, triangles, clearByte(scene.output.background.a),
                     "scene render");
 }
 

@@ -173,7 +173,7 @@ TEST(RealWorldModels, EveryAssimpObjRendersOrIsRefusedClearly) {
       RenderOutput output;
       ASSERT_NO_THROW(output = renderer->render(scene, scene.settings, kWidth, kHeight));
       EXPECT_NO_THROW(
-          fuzz::checkRenderOutput(output, kWidth, kHeight, triangles, unitToByte(scene.output.background.a), name));
+          fuzz::checkRenderOutput(output, kWidth, kHeight, triangles, clearByte(scene.output.background.a), name));
       EXPECT_GT(coveredPixels(output), 0u) << "the framed model covers no pixel";
     }
   }

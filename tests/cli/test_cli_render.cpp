@@ -52,7 +52,7 @@ TEST(CliRender, ABackgroundWithAlphaZeroWritesATransparentPng) {
     const std::uint8_t* sky = image.pixel(80, 0);
     EXPECT_EQ(sky[3], 0) << backend;
     EXPECT_EQ(sky[0], 26) << backend;  // round(0.1 * 255): the RGB is kept under alpha 0
-    EXPECT_EQ(sky[2], 77) << backend;
+    EXPECT_EQ(sky[2], 76) << backend;  // 0.3 * 255 = 76.5: a clear rounds ties to even, as llvmpipe
   }
 }
 

@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -76,7 +78,7 @@ TEST(BackgroundAlpha, BothBackendsWriteItAndCoverageMetricsStayExact) {
     for (const float alpha : kAlphas) {
       SCOPED_TRACE("alpha " + std::to_string(alpha));
       scene.output.background.a = alpha;
-      const std::uint8_t byte = unitToByte(alpha);
+      const std::uint8_t byte = clearByte(alpha);
       const RenderOutput cpu = cpuRenderer().render(scene, scene.settings, kWidth, kHeight);
       const RenderOutput gl = glRenderer().render(scene, scene.settings, kWidth, kHeight);
       for (const RenderOutput* out : {&cpu, &gl}) {
@@ -114,6 +116,33 @@ TEST(BackgroundAlpha, BothBackendsWriteItAndCoverageMetricsStayExact) {
       }
     }
   }
+}
+
+// The background bytes themselves, RGB and alpha, on every rounding tie k + 0.5 (0.3f * 255
+// = 76.5 is one) and values between: llvmpipe stores a clear colour rounded to nearest with
+// ties to even, and so must the CPU (clearByte), though fragments round ties away from zero.
+TEST(BackgroundAlpha, ClearBytesAreLlvmpipesOnEveryTie) {
+  Scene scene;  // no nodes: every pixel is background
+  std::size_t ties = 0;
+  for (int k = 0; k < 256; k += 4) {
+    vec4 background;
+    for (int c = 0; c < 4; ++c) {
+      // Channel c: a tie (k + c + 0.5) / 255 on even k, the value just above it on odd ones.
+      const float tie = std::min(1.0f, (static_cast<float>(k + c) + 0.5f) / 255.0f);
+      background[c] = (k / 4) % 2 == 0 ? tie : std::nextafter(tie, 2.0f);
+      ties += clearByte(background[c]) != unitToByte(background[c]) ? 1 : 0;
+    }
+    scene.output.background = background;
+    const RenderOutput cpu = cpuRenderer().render(scene, scene.settings, 4, 4);
+    const RenderOutput gl = glRenderer().render(scene, scene.settings, 4, 4);
+    const std::uint32_t word = backgroundWord(background);
+    for (std::size_t i = 0; i < cpu.rgba.size(); ++i) {
+      ASSERT_EQ(int{cpu.rgba[i]}, int{gl.rgba[i]}) << "k " << k << ", channel " << i % 4 << ": "
+                                                   << background[static_cast<int>(i % 4)];
+      ASSERT_EQ(cpu.rgba[i], reinterpret_cast<const std::uint8_t*>(&word)[i % 4]);
+    }
+  }
+  EXPECT_GT(ties, 10u) << "the values must include ties the two roundings disagree on";
 }
 
 TEST(BackgroundAlpha, CheckerViewFollowsCoverageNotAlpha) {
