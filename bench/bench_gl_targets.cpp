@@ -102,10 +102,13 @@ Gl& gl() {
   return instance;
 }
 
+// What the renderer clears colour to: an opaque grey, as a scene file's [r, g, b] gives.
+const vec4 kBackground{0.1f, 0.1f, 0.1f, 1.0f};
+
 void clearColourAndDepth() {
   const std::array<GLenum, 1> colourOnly = {GL_COLOR_ATTACHMENT0};
   glDrawBuffers(static_cast<GLsizei>(colourOnly.size()), colourOnly.data());
-  const std::array<GLfloat, 4> background = {0.1f, 0.1f, 0.1f, 0.0f};
+  const std::array<GLfloat, 4> background = {kBackground.r, kBackground.g, kBackground.b, kBackground.a};
   glClearBufferfv(GL_COLOR, 0, background.data());
   const GLfloat farDepth = 1.0f;
   glClearBufferfv(GL_DEPTH, 0, &farDepth);
@@ -114,7 +117,7 @@ void clearColourAndDepth() {
 void BM_ClearFourAttachments(benchmark::State& state) {
   Gl& g = gl();
   for (auto _ : state) {
-    g.targets.clear(vec3(0.1f));
+    g.targets.clear(kBackground);
     glFinish();
   }
 }
@@ -141,7 +144,7 @@ void BM_FullScreenColourAndId(benchmark::State& state) {
   Gl& g = gl();
   glUseProgram(g.colourAndIdProgram);
   for (auto _ : state) {
-    g.targets.clear(vec3(0.1f));
+    g.targets.clear(kBackground);
     g.targets.drawSurfaces();
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glFinish();
@@ -151,7 +154,7 @@ void BM_FullScreenColourAndId(benchmark::State& state) {
 // Args: 0 colour RGBA8, 1 triangle id R32UI, 2 line mask RGBA8, 3 depth as float.
 void BM_ReadOneAttachment(benchmark::State& state) {
   Gl& g = gl();
-  g.targets.clear(vec3(0.1f));
+  g.targets.clear(kBackground);
   glFinish();
   const int which = static_cast<int>(state.range(0));
   const std::array<GLenum, 4> attachments = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_NONE};
@@ -170,7 +173,7 @@ void BM_ReadOneAttachment(benchmark::State& state) {
 
 void BM_ReadBackAsAFrameDoes(benchmark::State& state) {
   Gl& g = gl();
-  g.targets.clear(vec3(0.1f));
+  g.targets.clear(kBackground);
   glFinish();
   for (auto _ : state) {
     RenderOutput out;

@@ -67,7 +67,7 @@ void BM_Visibility(benchmark::State& state) {
   }
   const FastKernels kernels = fastKernelsFor(isas[static_cast<std::size_t>(state.range(0))]);
   state.SetLabel(std::string(toString(kernels.isa)));
-  Framebuffer fb = makeFramebuffer(benchstage::kWidth, benchstage::kHeight, vec3(0.0f));
+  Framebuffer fb = makeFramebuffer(benchstage::kWidth, benchstage::kHeight, vec4(0.0f, 0.0f, 0.0f, 1.0f));
   const std::array<vec2, 3> kCornerUvs{vec2(0.0f, 0.0f), vec2(1.0f, 0.0f), vec2(0.0f, 1.0f)};  // any: same cost
   std::vector<std::uint32_t> slots(static_cast<std::size_t>(benchstage::kWidth) * benchstage::kHeight, kNoSlot);
   std::int64_t passed = 0;

@@ -20,7 +20,7 @@ struct ArtifactOptions {
 };
 
 struct ArtifactPaths {
-  std::string cpu;         // rawImage(cpu): alpha 0 where nothing was drawn
+  std::string cpu;         // rawImage(cpu): the background's alpha where nothing was drawn
   std::string gl;          // rawImage(gl)
   std::string sideBySide;  // makeSideBySide
   std::string diff;        // makeHeatMap

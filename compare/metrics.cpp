@@ -11,8 +11,7 @@ namespace twr {
 namespace {
 
 constexpr int kRgbaChannels = 4;
-constexpr int kColourChannels = 3;  // RGB; alpha is coverage, never diffed
-constexpr int kAlphaChannel = 3;
+constexpr int kColourChannels = 3;  // RGB; alpha (the background's where nothing is drawn) is never diffed
 constexpr int kOver1Levels = 1, kOver3Levels = 3, kOver12Levels = 12;  // exclusive bounds
 constexpr double kPercent = 100.0;
 constexpr double kPerTenThousand = 10000.0;
@@ -98,8 +97,8 @@ CompareResult compareDetailed(const RenderOutput& cpu, const RenderOutput& gl, c
     ++m.comparedPixels;
     const std::uint8_t* cpuPixel = &cpu.rgba[i * kRgbaChannels];
     const std::uint8_t* glPixel = &gl.rgba[i * kRgbaChannels];
-    const bool cpuCovered = cpuPixel[kAlphaChannel] > 0;
-    const bool glCovered = glPixel[kAlphaChannel] > 0;
+    const bool cpuCovered = coveredAt(cpu, i);
+    const bool glCovered = coveredAt(gl, i);
     m.coveredCpu += cpuCovered;
     m.coveredGl += glCovered;
     if (!cpuCovered && !glCovered) continue;  // PixelClass::Empty

@@ -3,8 +3,10 @@
 // Which pixels each number is over (see docs/compare.md for the full table):
 // - A pixel is "excluded" when either lineMask is 1 there (TBN debug lines); excluded pixels
 //   count only in excludedLinePixels and nanPixels, nowhere else.
-// - A pixel is "covered" by a backend when its alpha is > 0 (renderers write 255 or 0).
-// - Colour differences are over RGB only; alpha says coverage and is never diffed.
+// - A pixel is "covered" by a backend when a triangle was drawn there: its triangle id is not
+//   kNoTriangle (coveredAt; alpha > 0 for an output without ids, such as the analytic-sphere
+//   reference). Alpha is not coverage: the background has the scene's alpha, 1 by default.
+// - Colour differences are over RGB only; alpha is never diffed.
 //   A pixel's difference is the largest of its three channel differences, in 0..255 levels.
 // - Colour and depth metrics are over pixels both backends covered ("bothCovered").
 // Buffers are top row first, so (x, y) has a top-left origin.
@@ -64,8 +66,8 @@ struct CompareMetrics {
   int height = 0;
   std::uint64_t comparedPixels = 0;       // width * height - excludedLinePixels
   std::uint64_t excludedLinePixels = 0;   // lineMask set on either side
-  std::uint64_t coveredCpu = 0;           // compared pixels with CPU alpha > 0
-  std::uint64_t coveredGl = 0;            // compared pixels with GL alpha > 0
+  std::uint64_t coveredCpu = 0;           // compared pixels the CPU covered (coveredAt)
+  std::uint64_t coveredGl = 0;            // compared pixels GL covered
   std::uint64_t bothCovered = 0;          // compared pixels covered by both
   std::uint64_t coverageCpuOnly = 0;
   std::uint64_t coverageGlOnly = 0;

@@ -26,6 +26,14 @@ void checkOutput(const RenderOutput& output, const char* name) {
                      " rgba bytes, expected a size in [1, " + std::to_string(kMaxImageSide) +
                      "] and width * height * 4 bytes");
   }
+  // Coverage (drawnAt) reads these; empty means "not available".
+  const std::size_t pixels = expected / 4;
+  for (const std::size_t size : {output.triangleId.size(), output.lineMask.size()}) {
+    if (size != 0 && size != pixels) {
+      throw InputError(std::string("compare: ") + name + " output has a triangle-id or line-mask buffer of " +
+                       std::to_string(size) + " entries, expected 0 or " + std::to_string(pixels));
+    }
+  }
 }
 
 int labelScale(int width) { return std::clamp(width / kLabelScaleStepPx, 1, kMaxLabelScale); }
@@ -54,7 +62,10 @@ Image viewImage(const RenderOutput& output, BackgroundMode mode) {
       std::uint8_t* p = image.pixel(x, y);
       if (mode == BackgroundMode::Checker) {
         const Rgb8 under = checkerColour(x, y);
-        const int a = p[3];
+        // Nothing drawn: the checker whatever the background's alpha; drawn: over it by alpha.
+        const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
+                              static_cast<std::size_t>(x);
+        const int a = drawnAt(output, i) ? p[3] : 0;
         const int underChannels[3] = {under.r, under.g, under.b};
         for (int c = 0; c < 3; ++c) {
           // Rounded integer "over": (rgb * a + under * (255 - a) + 127) / 255.

@@ -6,14 +6,18 @@
 
 namespace twr {
 
-// How pixels with alpha < 255 (the background, alpha 0) are shown in viewable images.
+// How pixels where nothing was drawn (drawnAt: no triangle id, no line) are shown in viewable
+// images. Alpha does not say it: the background has the scene's alpha, 1 by default.
 enum class BackgroundMode {
   RendererColour,  // keep the RGB the renderer wrote (the scene's background colour): RGB unchanged
-  Checker,         // composite over the dark checker of the diff images: rgb * a + checker * (1 - a)
+  // The dark checker of the diff images where nothing was drawn; a drawn pixel composited
+  // over it by its alpha, rgb * a + checker * (1 - a) (255 from the renderers, the coverage
+  // fraction from a supersampled reference).
+  Checker,
 };
 
-// The render exactly as produced, alpha included (alpha 0 where nothing was drawn), for
-// cpu.png / gl.png: reloading the PNG gives back the coverage.
+// The render exactly as produced, alpha included (the scene's background alpha where nothing
+// was drawn), for cpu.png / gl.png.
 Image rawImage(const RenderOutput& output);
 // The render with alpha 255 everywhere, background shown as `mode` says.
 Image viewImage(const RenderOutput& output, BackgroundMode mode);

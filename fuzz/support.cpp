@@ -23,7 +23,7 @@ bool isFinite(vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::
 bool isFinite(vec4 v) { return isFinite(vec3(v)) && std::isfinite(v.w); }
 
 void checkRenderOutput(const RenderOutput& output, int width, int height, std::size_t triangleCount,
-                       const std::string& what) {
+                       std::uint8_t backgroundAlpha, const std::string& what) {
   const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
   require(output.width == width && output.height == height, what + ": output size differs from the request");
   require(output.rgba.size() == 4 * pixels, what + ": rgba holds " + std::to_string(output.rgba.size()) + " bytes");
@@ -42,7 +42,8 @@ void checkRenderOutput(const RenderOutput& output, int width, int height, std::s
                                       std::to_string(triangleCount));
       require(alpha == 255, at + ": drawn by a triangle but alpha is " + std::to_string(alpha));
     } else if (output.lineMask[i] == 0) {
-      require(alpha == 0, at + ": nothing drawn but alpha is " + std::to_string(alpha));
+      require(alpha == backgroundAlpha, at + ": nothing drawn but alpha is " + std::to_string(alpha) +
+                                            ", not the background's " + std::to_string(backgroundAlpha));
       require(depth == 1.0f, at + ": nothing drawn but depth is " + std::to_string(depth));
     }
   }

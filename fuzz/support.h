@@ -21,9 +21,10 @@ void requireNamesInput(const InputError& error, const std::string& name);
 // The Renderer contract for an output of width x height drawing `triangleCount` triangles:
 // every buffer has width * height entries, every depth is finite and in [0, 1], a pixel with
 // a triangle id has id < triangleCount and alpha 255, and a pixel with neither a triangle nor
-// a debug line keeps alpha 0 and the cleared depth 1.
+// a debug line keeps the background's alpha (`backgroundAlpha`, clearByte of
+// OutputDesc::background.a) and the cleared depth 1.
 void checkRenderOutput(const RenderOutput& output, int width, int height, std::size_t triangleCount,
-                       const std::string& what);
+                       std::uint8_t backgroundAlpha, const std::string& what);
 
 // True when every component is finite.
 bool isFinite(vec2 v);

@@ -5,6 +5,7 @@
 
 #include "scene/obj_loader.h"
 #include "softrender/cpu_renderer.h"
+#include "softrender/framebuffer.h"
 
 #include <cmath>
 #include <fstream>
@@ -88,7 +89,8 @@ void fuzzObjFile(const Workspace& workspace, const std::uint8_t* data, std::size
   scene.lights.emplace_back();
   scene.settings.cull = CullMode::None;
   const RenderOutput output = makeCpuRenderer()->render(scene, scene.settings, kRenderWidth, kRenderHeight);
-  checkRenderOutput(output, kRenderWidth, kRenderHeight, triangles, "obj render");
+  checkRenderOutput(output, kRenderWidth, kRenderHeight, triangles, clearByte(scene.output.background.a),
+                    "obj render");
 }
 
 }  // namespace twr::fuzz

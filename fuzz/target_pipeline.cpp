@@ -222,7 +222,7 @@ void renderRandomScene(ByteReader& r) {
   }
   const std::size_t triangles = countTriangles(scene);
   const RenderOutput output = makeCpuRenderer(options)->render(scene, scene.settings, width, height);
-  checkRenderOutput(output, width, height, triangles, "render");
+  checkRenderOutput(output, width, height, triangles, clearByte(scene.output.background.a), "render");
   require(output.stats.trianglesIn == triangles, "stats.trianglesIn differs from the scene's triangle count");
   const int traces = r.intIn(0, kMaxTracedPixels);
   for (int i = 0; i < traces; ++i) {

@@ -4,6 +4,7 @@
 
 #include "scene/scene_file.h"
 #include "softrender/cpu_renderer.h"
+#include "softrender/framebuffer.h"
 
 namespace twr::fuzz {
 
@@ -45,7 +46,8 @@ void fuzzSceneFile(const Workspace& workspace, const std::uint8_t* data, std::si
   } catch (const InputError& error) {
     throw InvariantViolation(std::string("a scene the loader accepted cannot be rendered: ") + error.what());
   }
-  checkRenderOutput(output, kRenderWidth, kRenderHeight, triangles, "scene render");
+  checkRenderOutput(output, kRenderWidth, kRenderHeight, triangles, clearByte(scene.output.background.a),
+                    "scene render");
 }
 
 }  // namespace twr::fuzz

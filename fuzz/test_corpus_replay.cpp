@@ -75,25 +75,30 @@ RenderOutput cleanOutput(int width, int height) {
 }
 
 TEST(FuzzChecks, RenderOutputChecksCatchEachBrokenPromise) {
-  EXPECT_NO_THROW(checkRenderOutput(cleanOutput(3, 2), 3, 2, 0, "clean"));
+  EXPECT_NO_THROW(checkRenderOutput(cleanOutput(3, 2), 3, 2, 0, 0, "clean"));
   RenderOutput nanDepth = cleanOutput(3, 2);
   nanDepth.depth[4] = std::numeric_limits<float>::quiet_NaN();
-  EXPECT_THROW(checkRenderOutput(nanDepth, 3, 2, 0, "nan"), InvariantViolation);
+  EXPECT_THROW(checkRenderOutput(nanDepth, 3, 2, 0, 0, "nan"), InvariantViolation);
   RenderOutput farDepth = cleanOutput(3, 2);
   farDepth.depth[0] = 1.5f;
-  EXPECT_THROW(checkRenderOutput(farDepth, 3, 2, 0, "far"), InvariantViolation);
+  EXPECT_THROW(checkRenderOutput(farDepth, 3, 2, 0, 0, "far"), InvariantViolation);
   RenderOutput badId = cleanOutput(3, 2);
   badId.triangleId[1] = 7;  // only 7 triangles: ids 0..6
   badId.rgba[4 * 1 + 3] = 255;
-  EXPECT_THROW(checkRenderOutput(badId, 3, 2, 7, "id"), InvariantViolation);
+  EXPECT_THROW(checkRenderOutput(badId, 3, 2, 7, 0, "id"), InvariantViolation);
   badId.triangleId[1] = 6;
-  EXPECT_NO_THROW(checkRenderOutput(badId, 3, 2, 7, "id"));
+  EXPECT_NO_THROW(checkRenderOutput(badId, 3, 2, 7, 0, "id"));
   RenderOutput shortBuffer = cleanOutput(3, 2);
   shortBuffer.rgba.pop_back();
-  EXPECT_THROW(checkRenderOutput(shortBuffer, 3, 2, 0, "short"), InvariantViolation);
+  EXPECT_THROW(checkRenderOutput(shortBuffer, 3, 2, 0, 0, "short"), InvariantViolation);
   RenderOutput strayAlpha = cleanOutput(3, 2);
-  strayAlpha.rgba[3] = 255;  // nothing drawn there
-  EXPECT_THROW(checkRenderOutput(strayAlpha, 3, 2, 0, "alpha"), InvariantViolation);
+  strayAlpha.rgba[3] = 255;  // nothing drawn there, the background's alpha is 0
+  EXPECT_THROW(checkRenderOutput(strayAlpha, 3, 2, 0, 0, "alpha"), InvariantViolation);
+  // An opaque background: every empty pixel must hold its alpha, not 0.
+  EXPECT_THROW(checkRenderOutput(strayAlpha, 3, 2, 0, 255, "opaque"), InvariantViolation);
+  RenderOutput opaque = cleanOutput(3, 2);
+  for (std::size_t i = 3; i < opaque.rgba.size(); i += 4) opaque.rgba[i] = 255;
+  EXPECT_NO_THROW(checkRenderOutput(opaque, 3, 2, 0, 255, "opaque"));
 }
 
 TEST(FuzzChecks, AnInputErrorMustNameTheInput) {

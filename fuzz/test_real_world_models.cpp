@@ -11,6 +11,7 @@
 #include "scene/errors.h"
 #include "scene/scene_file.h"
 #include "softrender/cpu_renderer.h"
+#include "softrender/framebuffer.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -171,7 +172,8 @@ TEST(RealWorldModels, EveryAssimpObjRendersOrIsRefusedClearly) {
       SCOPED_TRACE(renderer->name());
       RenderOutput output;
       ASSERT_NO_THROW(output = renderer->render(scene, scene.settings, kWidth, kHeight));
-      EXPECT_NO_THROW(fuzz::checkRenderOutput(output, kWidth, kHeight, triangles, name));
+      EXPECT_NO_THROW(
+          fuzz::checkRenderOutput(output, kWidth, kHeight, triangles, clearByte(scene.output.background.a), name));
       EXPECT_GT(coveredPixels(output), 0u) << "the framed model covers no pixel";
     }
   }

@@ -97,10 +97,10 @@ void RenderTargets::bind() const {
   glViewport(0, 0, width_, height_);
 }
 
-void RenderTargets::clear(const vec3& background) const {
+void RenderTargets::clear(const vec4& background) const {
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(GL_TRUE);
-  const std::array<GLfloat, 4> colour = {background.r, background.g, background.b, 0.0f};
+  const std::array<GLfloat, 4> colour = {background.r, background.g, background.b, background.a};
   const GLfloat farDepth = 1.0f;
   if (set_ == GlFrame::Lean) {
     const GLenum colourOnly = kColourAttachment;

@@ -1,6 +1,7 @@
 // The offscreen framebuffer every GL render draws into, and its read-back into
 // RenderOutput (GL rows are bottom row first; RenderOutput is top row first).
-//   colour attachment 0: RGBA8, cleared to (background, 0); surfaces and lines write alpha 1
+//   colour attachment 0: RGBA8, cleared to the background (RGB and the scene's alpha);
+//                        surfaces and lines write alpha 1
 //   colour attachment 1: R32UI triangle id, cleared to kNoTriangle
 //   colour attachment 2: RGBA8 TBN-line mask, cleared to 0; lines write their colour with
 //                        alpha 1 here too, so alpha != 0 marks a line pixel
@@ -27,7 +28,9 @@ class RenderTargets {
   void prepare(int width, int height);
   // Binds the framebuffer and sets the viewport to the whole target.
   void bind() const;
-  void clear(const vec3& background) const;
+  // Clears colour to `background` (OutputDesc::background, alpha included), ids to
+  // kNoTriangle, the line mask to 0, depth to 1.
+  void clear(const vec4& background) const;
 
   // Which attachments fragment outputs go to (location 0, 1 in the shaders).
   // Full: location 0 -> colour, location 1 -> triangle id. Lean: location 0 -> colour (the

@@ -3,6 +3,7 @@
 
 #include "scene/scene.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -29,12 +30,26 @@ struct RenderStats {
 struct RenderOutput {
   int width = 0;
   int height = 0;
-  std::vector<std::uint8_t> rgba;          // RGBA8; alpha 255 where geometry was drawn, 0 elsewhere
+  // RGBA8; alpha 255 where geometry was drawn, the background's alpha elsewhere
+  // (OutputDesc::background, 1 by default): alpha is not coverage, see coveredAt().
+  std::vector<std::uint8_t> rgba;
   std::vector<float> depth;                // window depth in [0, 1], 1 where nothing was drawn
-  std::vector<std::uint32_t> triangleId;   // global triangle id (DrawItem::firstTriangleId + i)
+  std::vector<std::uint32_t> triangleId;   // global triangle id (DrawItem::firstTriangleId + i), kNoTriangle where none
   std::vector<std::uint8_t> lineMask;      // 1 where a TBN debug line was drawn (compare skips)
   RenderStats stats;
 };
+
+// Whether a triangle covers pixel i (top row first): its triangle id. An output without
+// triangle ids (an empty buffer: GL's lean frame, the analytic-sphere reference) can only
+// say it in alpha > 0, which holds only where its producer cleared alpha to 0; the CPU and
+// GL renderers' full outputs always carry ids.
+inline bool coveredAt(const RenderOutput& out, std::size_t i) {
+  return out.triangleId.empty() ? out.rgba[i * 4 + 3] != 0 : out.triangleId[i] != kNoTriangle;
+}
+// Whether anything was drawn at pixel i: a triangle or a TBN debug line.
+inline bool drawnAt(const RenderOutput& out, std::size_t i) {
+  return coveredAt(out, i) || (!out.lineMask.empty() && out.lineMask[i] != 0);
+}
 
 class Renderer {
  public:

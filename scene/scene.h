@@ -52,7 +52,10 @@ struct PointLight {
 struct OutputDesc {
   int width = 640;   // pixels
   int height = 480;  // pixels
-  vec3 background{0.05f, 0.05f, 0.08f};  // linear RGB in [0, 1], written with alpha 0
+  // Written where no triangle is drawn: linear RGB and alpha, each in [0, 1]. Alpha 1 gives
+  // opaque images, 0 transparent ones; either way coverage comes from the triangle ids
+  // (RenderOutput), never from alpha.
+  vec4 background{0.05f, 0.05f, 0.08f, 1.0f};
 };
 
 struct Node {

@@ -312,9 +312,18 @@ class SceneReader {
     checkKeys(j, path, {"width", "height", "background"}, "output");
     if (const Json* v = find(j, "width")) scene_.output.width = readInt(*v, childPath(path, "width"), 1, kMaxImageSide);
     if (const Json* v = find(j, "height")) scene_.output.height = readInt(*v, childPath(path, "height"), 1, kMaxImageSide);
-    if (const Json* v = find(j, "background")) {
-      scene_.output.background = readColour(*v, childPath(path, "background"), NumberRule::UnitInterval);
+    if (const Json* v = find(j, "background")) scene_.output.background = readBackground(*v, childPath(path, "background"));
+  }
+
+  // [r, g, b] (alpha 1: opaque images, as every scene written before alpha existed gets) or
+  // [r, g, b, a]; each in [0, 1].
+  vec4 readBackground(const Json& j, const std::string& path) const {
+    if (!j.is_array() || (j.size() != 3 && j.size() != 4)) {
+      fail(path, "expected an array of 3 or 4 numbers [r, g, b] or [r, g, b, a] (each " +
+                     describe(NumberRule::UnitInterval) + "), got " + quote(j));
     }
+    if (j.size() == 3) return vec4(readColour(j, path, NumberRule::UnitInterval), 1.0f);
+    return readVector<4>(j, path, NumberRule::UnitInterval);
   }
 
   void readCamera(const Json& j, const std::string& path) {

@@ -92,6 +92,12 @@ void FastPipeline::prepareMaps(const std::vector<ItemState>& items) {
     if (inserted) {
       found->second.texture = owner;
       missing.push_back(&found->second);
+    } else {
+      // Options are plain fields an owner may change between frames on the same object (as
+      // GlUploadCache allows): the tiled texels do not depend on wrap or srgb, so only the
+      // copies of those are refreshed. Texels are const; new texels come as a new Texture.
+      found->second.tiled.wrap = raw->options.wrap;
+      found->second.tiled.srgb = raw->options.srgb;
     }
     found->second.lastFrame = frame_;
     return &found->second.tiled;
@@ -292,7 +298,7 @@ std::uint64_t FastPipeline::drawBin(const std::vector<ItemState>& items, int bin
   return passed;
 }
 
-void FastPipeline::draw(const std::vector<ItemState>& items, vec3 background, Framebuffer& fb, RenderStats& stats) {
+void FastPipeline::draw(const std::vector<ItemState>& items, vec4 background, Framebuffer& fb, RenderStats& stats) {
   const std::uint32_t backgroundRgba = backgroundWord(background);
   runVertexStage(items);
   const int binCount = (fb.height + kBinRows - 1) / kBinRows;

@@ -61,7 +61,7 @@ class FastPipeline {
   // Clears `fb` to `background` (as makeFramebuffer) and draws every item's triangles into it,
   // adding the counts to `stats`. `items` are in submission order; validateIndices must have
   // passed for each.
-  void draw(const std::vector<ItemState>& items, vec3 background, Framebuffer& fb, RenderStats& stats);
+  void draw(const std::vector<ItemState>& items, vec4 background, Framebuffer& fb, RenderStats& stats);
 
  private:
   // One item's vertex stage output, one entry per mesh vertex (capacity kept across frames).

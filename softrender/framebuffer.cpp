@@ -10,19 +10,25 @@ namespace {
 constexpr float kByteMax = 255.0f;
 }  // namespace
 
+std::uint8_t clearByte(float c) {
+  const float clamped = std::fmin(std::fmax(c, 0.0f), 1.0f);  // fmax maps NaN to 0
+  return static_cast<std::uint8_t>(std::nearbyint(clamped * kByteMax));  // FE_TONEAREST: ties to even
+}
+
 std::uint8_t unitToByte(float c) {
   const float clamped = std::fmin(std::fmax(c, 0.0f), 1.0f);  // fmax maps NaN to 0
   return static_cast<std::uint8_t>(std::lround(clamped * kByteMax));
 }
 
-std::uint32_t backgroundWord(vec3 background) {
-  const std::uint8_t bytes[4] = {unitToByte(background.r), unitToByte(background.g), unitToByte(background.b), 0};
+std::uint32_t backgroundWord(vec4 background) {
+  const std::uint8_t bytes[4] = {clearByte(background.r), clearByte(background.g), clearByte(background.b),
+                                 clearByte(background.a)};
   std::uint32_t word = 0;
   std::memcpy(&word, bytes, sizeof(word));
   return word;
 }
 
-Framebuffer makeFramebuffer(int width, int height, vec3 background) {
+Framebuffer makeFramebuffer(int width, int height, vec4 background) {
   Framebuffer fb;
   fb.width = width;
   fb.height = height;

@@ -30,15 +30,20 @@ struct Framebuffer {
   }
 };
 
-// round(clamp(c, 0, 1) * 255); NaN gives 0.
+// round(clamp(c, 0, 1) * 255), ties away from zero; NaN gives 0.
 std::uint8_t unitToByte(float c);
+// A clear colour's channel as llvmpipe stores it in RGBA8: clamp(c, 0, 1) * 255 in float,
+// rounded to nearest with ties to even (Mesa's float-to-unorm pack); NaN gives 0. It differs
+// from unitToByte only at exact ties: 0.3f * 255 = 76.5 clears to 76, not 77.
+std::uint8_t clearByte(float c);
 
-// The RGBA8 word (bytes r, g, b, 0 in memory order) the background clears colour to: alpha 0
-// marks pixels where no geometry was drawn.
-std::uint32_t backgroundWord(vec3 background);
+// The RGBA8 word (bytes r, g, b, a in memory order) the background clears colour to, each
+// clearByte of `background` (OutputDesc::background: alpha as the scene asks, not coverage,
+// which the triangle ids carry).
+std::uint32_t backgroundWord(vec4 background);
 
-// Cleared to `background` with alpha 0, depth kClearDepth, no triangle, no line.
-Framebuffer makeFramebuffer(int width, int height, vec3 background);
+// Cleared to `background`, depth kClearDepth, no triangle, no line.
+Framebuffer makeFramebuffer(int width, int height, vec4 background);
 
 // The buffers, top row first, as RenderOutput promises (moved out of `framebuffer`).
 RenderOutput toRenderOutput(Framebuffer&& framebuffer);

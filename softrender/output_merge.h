@@ -18,7 +18,7 @@ inline void writeFragment(Framebuffer& fb, int x, int y, vec4 colour, float dept
   px[0] = unitToByte(colour.r);
   px[1] = unitToByte(colour.g);
   px[2] = unitToByte(colour.b);
-  px[3] = 255;  // geometry drawn (the background keeps alpha 0)
+  px[3] = 255;  // surfaces are opaque (the background has the scene's alpha)
   fb.depth[i] = depth;
   fb.triangleId[i] = triangleId;
 }

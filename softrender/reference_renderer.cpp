@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -128,7 +129,9 @@ class ReferenceRenderer final : public Renderer {
     const Viewport viewport{width, height};
     const std::vector<SampleOffset> offsets = sampleOffsets(options_.samplesPerAxis);
     const std::size_t pixelCount = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-    const glm::dvec3 background(scene.output.background);
+    const glm::dvec3 background(vec3(scene.output.background));
+    const double backgroundAlpha = scene.output.background.a;
+    const std::uint32_t clearWord = backgroundWord(scene.output.background);
 
     std::vector<glm::dvec3> colourSum(pixelCount, glm::dvec3(0.0));
     std::vector<int> coveredSamples(pixelCount, 0);
@@ -200,11 +203,19 @@ class ReferenceRenderer final : public Renderer {
         const std::size_t from = target.index(x, y);
         const std::size_t to = static_cast<std::size_t>(height - 1 - y) * static_cast<std::size_t>(width) +
                                static_cast<std::size_t>(x);  // top row first
-        const glm::dvec3 mean = colourSum[from] / sampleCount;
-        out.rgba[to * 4 + 0] = unitToByte(static_cast<float>(mean.r));
-        out.rgba[to * 4 + 1] = unitToByte(static_cast<float>(mean.g));
-        out.rgba[to * 4 + 2] = unitToByte(static_cast<float>(mean.b));
-        out.rgba[to * 4 + 3] = unitToByte(static_cast<float>(coveredSamples[from] / sampleCount));
+        const int covered = coveredSamples[from];
+        if (covered == 0) {
+          // Only background: the clear colour, stored as a clear stores it (clearByte).
+          std::memcpy(&out.rgba[to * 4], &clearWord, sizeof(clearWord));
+        } else {
+          // The box filter of every sample's RGBA: surfaces are opaque, the background has its alpha.
+          const glm::dvec3 mean = colourSum[from] / sampleCount;
+          const double alpha = (covered + (sampleCount - covered) * backgroundAlpha) / sampleCount;
+          out.rgba[to * 4 + 0] = unitToByte(static_cast<float>(mean.r));
+          out.rgba[to * 4 + 1] = unitToByte(static_cast<float>(mean.g));
+          out.rgba[to * 4 + 2] = unitToByte(static_cast<float>(mean.b));
+          out.rgba[to * 4 + 3] = unitToByte(static_cast<float>(alpha));
+        }
         out.depth[to] = static_cast<float>(firstDepth[from]);
         out.triangleId[to] = firstTriangleId[from];
       }

@@ -10,16 +10,21 @@
 // What the RenderOutput holds:
 //   rgb        mean of the N^2 sample colours, a sample nobody covers counting as the
 //              background (the true box-filtered image), rounded to 8 bits once at the end
-//   alpha      round(255 * covered samples / N^2): the coverage fraction. compare() counts a
-//              pixel as covered when alpha > 0, i.e. when any sample is covered, and diffs RGB
-//              only, so edge pixels carry their aliasing error in the colour metrics
+//   alpha      the same box filter of the samples' alpha: 1 for a covered sample, the
+//              background's alpha for the others, so with a transparent background
+//              ([r, g, b, 0]) it is round(255 * covered samples / N^2), the coverage fraction.
+//              A pixel no sample covers holds the background exactly as the CPU renderer
+//              clears it (backgroundWord). compare() counts a pixel as covered by its triangle
+//              id, set when any sample is covered, and diffs RGB only, so edge pixels carry
+//              their aliasing error in the colour metrics
 //   depth, triangleId   those of the covered sample nearest the pixel centre (1 and
 //              kNoTriangle where no sample is covered)
 //   lineMask   all 0: the reference draws no TBN debug lines (compare skips line pixels of
 //              the other side anyway)
 //   stats      triangle counts of the first pass; pixelsShaded summed over all samples
 // With N = 1 it is the plain double-precision pipeline (one sample at the pixel centre, alpha
-// 0 or 255), the "double" side of the report's float-versus-double knob.
+// 255 or the background's, as the CPU renderer writes), the "double" side of the report's
+// float-versus-double knob.
 #pragma once
 
 #include "scene/renderer.h"

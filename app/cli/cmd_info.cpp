@@ -265,7 +265,7 @@ void printScene(std::ostream& out, const Scene& scene) {
   const RenderSettings& s = scene.settings;
   out << "scene: " << scene.sourcePath << "\n";
   out << "output: " << scene.output.width << "x" << scene.output.height << ", background "
-      << text(scene.output.background) << "\n";
+      << text(vec3(scene.output.background)) << " alpha " << num(scene.output.background.a) << "\n";
   out << "camera: position " << text(scene.camera.position) << ", target " << text(scene.camera.target)
       << ", fov_deg " << num(scene.camera.fovDeg) << ", near " << num(scene.camera.near) << ", far "
       << num(scene.camera.far) << "\n";

@@ -116,7 +116,7 @@ RenderOutput renderAnalyticSphere(const Scene& scene, const RenderSettings& sett
   const glm::dvec3 eyeWorld(scene.camera.position);
   const ShadeUniformsT<double> shade = makeShadeUniforms<double>(*g.material, scene, settings);
   const int lightCount = shade.lightCount;
-  const glm::dvec3 background(scene.output.background);
+  const glm::dvec3 background(vec3(scene.output.background));  // RGB: alpha here is coverage
   const std::size_t pixelCount = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
   const double sampleCount = static_cast<double>(samplesPerAxis) * samplesPerAxis;
 

@@ -294,8 +294,8 @@ void writeReportHtml(const std::string& path, const ReportData& data) {
        "both cover, as <code>twinraster compare</code> measures it). Lower and further left is better. The reference "
        "is the CPU pipeline's own stages in double precision with "
     << data.referenceSamplesPerAxis << "x" << data.referenceSamplesPerAxis
-    << " samples per pixel, box-filtered (its alpha is the coverage fraction; a pixel counts as covered when any "
-       "sample is, so edge pixels carry their aliasing error in the colour metrics), unless a knob says otherwise. "
+    << " samples per pixel, box-filtered (a pixel counts as covered when any sample is, so edge pixels carry "
+       "their aliasing error in the colour metrics), unless a knob says otherwise. "
        "The tables add the worst pixel, the share of pixels off by more than one level, the coverage mismatch and "
        "how far the CPU and GL images are from each other.</p>\n";
   s << "<h2>Readings</h2>\n<ul class=\"summary\">\n";

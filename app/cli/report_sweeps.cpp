@@ -370,7 +370,7 @@ Scene grazingFloorScene(const std::shared_ptr<const Texture>& albedo) {
   scene.camera.fovDeg = 60.0f;
   scene.camera.near = 0.1f;
   scene.camera.far = 300.0f;
-  scene.output.background = vec3(0.0f);
+  scene.output.background = vec4(0.0f, 0.0f, 0.0f, 1.0f);
   Material material;
   material.diffuseMap = albedo;
   scene.materials.push_back(material);

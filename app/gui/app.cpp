@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <csignal>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <ctime>
 #include <filesystem>
@@ -286,6 +287,7 @@ void GuiApp::openScene(const std::string& path) {
     sceneError_.clear();
     meshError_.clear();
     meshErrorIndex_ = -1;
+    mapMessages_.clear();
     std::error_code code;
     const std::filesystem::path absolute = std::filesystem::absolute(path, code);
     prefs_.lastScene = code ? path : absolute.lexically_normal().string();
@@ -375,10 +377,39 @@ void GuiApp::frame(bool& finalFrame) {
     state["cpu_edit"] = cpuFrame_.revision;
     state["gl_edit"] = glFrame_.revision;
     state["diff_edit"] = diff_.result ? diff_.revision : 0;
+    if (diff_.result) {
+      const CompareMetrics& m = diff_.result->metrics;
+      state["diff"] = {{"max_abs_diff", m.maxAbsDiff},
+                       {"covered_cpu", m.coveredCpu},
+                       {"covered_gl", m.coveredGl},
+                       {"coverage_mismatch", m.coverageMismatch}};
+    }
     state["render_blocker"] = renderBlocker_;
     state["camera"] = {{"near", doc_.scene.camera.near}, {"far", doc_.scene.camera.far}};
     state["frames"] = ImGui::GetFrameCount();
     state["settled"] = settled();
+    // Every loaded map with its options, whether it is drawn, and its Texture object (a new
+    // one after each option edit).
+    nlohmann::json maps = nlohmann::json::array();
+    for (std::size_t m = 0; m < doc_.scene.materials.size(); ++m) {
+      for (const MapSlot slot : kMapSlots) {
+        const std::shared_ptr<const Texture> map = loadedMap(doc_, m, slot);
+        if (!map) continue;
+        const auto message = mapMessages_.find({m, slot});
+        maps.push_back({{"material", m},
+                        {"slot", std::string(toString(slot))},
+                        {"on", mapOn(doc_, m, slot)},
+                        {"flip_v", map->options.flipV},
+                        {"srgb", map->options.srgb},
+                        {"wrap", std::string(toString(map->options.wrap))},
+                        {"green", std::string(toString(map->options.green))},
+                        {"object", reinterpret_cast<std::uintptr_t>(map.get())},
+                        {"message", message != mapMessages_.end() ? message->second.text : std::string()}});
+      }
+    }
+    state["maps"] = std::move(maps);
+    state["anisotropy"] = doc_.scene.settings.anisotropy;
+    state["view"] = std::string(toString(doc_.scene.settings.view));
   }
   probe_.endFrame();
   interacting_ = dragMode_ != DragMode::None || ImGui::IsAnyItemActive();

@@ -11,6 +11,7 @@
 #include "app/gui/frame_timing.h"
 #include "app/gui/gui_options.h"
 #include "app/gui/image_texture.h"
+#include "app/gui/material_maps.h"
 #include "app/gui/panel_sizing.h"
 #include "app/gui/pixel_probe.h"
 #include "app/gui/prefs.h"
@@ -112,6 +113,7 @@ class GuiApp {
   void drawNode(Node& node);
   void drawMeshEditor(int meshIndex);
   void drawMaterialsSection();
+  void drawMapControls(std::size_t material, MapSlot slot);
   void drawLightsSection();
   void drawCameraTab();
   void drawViewPanel();
@@ -147,6 +149,12 @@ class GuiApp {
   std::string sceneError_;
   std::string meshError_;
   int meshErrorIndex_ = -1;
+  // Per (material, map), what the last option edit said: its warnings, or why it failed.
+  struct MapMessage {
+    std::string text;
+    bool error = false;
+  };
+  std::map<std::pair<std::size_t, MapSlot>, MapMessage> mapMessages_;
   std::string renderBlocker_;  // why nothing is rendered right now (invalid camera), else empty
 
   int renderWidth_ = 0, renderHeight_ = 0;  // the size both backends render at

@@ -24,14 +24,6 @@ int scaledSide(float side, float scale) {
   return static_cast<int>(std::clamp<long>(rounded, kMinRenderSide, kMaxImageSide));
 }
 
-PixelSample sampleAt(const RenderOutput& output, PixelPos pixel) {
-  PixelSample sample;
-  const std::size_t i = static_cast<std::size_t>(pixel.yTop) * static_cast<std::size_t>(output.width) +
-                        static_cast<std::size_t>(pixel.x);
-  for (std::size_t c = 0; c < 4; ++c) sample.rgba[c] = output.rgba[i * 4 + c];
-  sample.depth = output.depth[i];
-  return sample;
-}
 
 }  // namespace
 

@@ -1,4 +1,5 @@
 #include "app/gui/cpu_worker.h"
+#include "app/gui/debug_views.h"
 
 #include "softrender/cpu_renderer.h"
 
@@ -7,18 +8,6 @@
 #include <thread>
 
 namespace twr::gui {
-namespace {
-
-PixelSample sampleAt(const RenderOutput& output, PixelPos pixel) {
-  PixelSample sample;
-  const std::size_t i = static_cast<std::size_t>(pixel.yTop) * static_cast<std::size_t>(output.width) +
-                        static_cast<std::size_t>(pixel.x);
-  for (std::size_t c = 0; c < 4; ++c) sample.rgba[c] = output.rgba[i * 4 + c];
-  sample.depth = output.depth[i];
-  return sample;
-}
-
-}  // namespace
 
 CpuWorker::CpuWorker() : thread_([this] { run(); }) {}
 

@@ -54,8 +54,18 @@ bool isVectorView(View view) {
          view == View::LightTangent || view == View::EyeTangent;
 }
 
+PixelSample sampleAt(const RenderOutput& output, PixelPos pixel) {
+  PixelSample sample;
+  const std::size_t i = static_cast<std::size_t>(pixel.yTop) * static_cast<std::size_t>(output.width) +
+                        static_cast<std::size_t>(pixel.x);
+  for (std::size_t c = 0; c < 4; ++c) sample.rgba[c] = output.rgba[i * 4 + c];
+  sample.depth = output.depth[i];
+  sample.drawn = drawnAt(output, i);
+  return sample;
+}
+
 std::string describeViewSample(View view, const PixelSample& sample) {
-  if (sample.rgba[3] == 0) return "empty (nothing drawn: background colour)";
+  if (!sample.drawn) return "empty (nothing drawn: background colour)";
   const auto unit = [&sample](int c) { return static_cast<double>(sample.rgba[static_cast<std::size_t>(c)]) / 255.0; };
   char text[96];
   if (isVectorView(view)) {
@@ -100,7 +110,7 @@ EyeRange drawnEyeRange(std::initializer_list<const RenderOutput*> outputs, float
   for (const RenderOutput* output : outputs) {
     if (!output) continue;
     for (std::size_t i = 0; i < output->depth.size() && i * 4 + 3 < output->rgba.size(); ++i) {
-      if (output->rgba[i * 4 + 3] == 0) continue;
+      if (!drawnAt(*output, i)) continue;
       const float distance = eyeDistance(output->depth[i], near, far);
       range.nearest = std::min(range.nearest, distance);
       range.farthest = std::max(range.farthest, distance);
@@ -115,7 +125,7 @@ RenderOutput withLinearDepth(const RenderOutput& output, float near, float far, 
   const float span = range.farthest - range.nearest;
   const std::size_t count = out.depth.size();
   for (std::size_t i = 0; i < count && i * 4 + 3 < out.rgba.size(); ++i) {
-    if (out.rgba[i * 4 + 3] == 0) continue;
+    if (!drawnAt(out, i)) continue;
     const float distance = eyeDistance(out.depth[i], near, far);
     const float shade = span > 0.0f ? std::clamp((distance - range.nearest) / span, 0.0f, 1.0f) : 0.0f;
     const auto grey = static_cast<std::uint8_t>(std::lround(shade * 255.0f));

@@ -20,8 +20,11 @@ const char* viewLegend(View view);
 // True for the views that show a unit vector as (v + 1) / 2.
 bool isVectorView(View view);
 
-// A pixel read back from `view`: "empty (nothing drawn: background colour)" where alpha is
-// 0, else the value the colour encodes ("vector x y z", "uv u v", "depth d", "rgb r g b").
+// Pixel (x, yTop) of `output` (inside it): colour, depth and whether anything was drawn.
+PixelSample sampleAt(const RenderOutput& output, PixelPos pixel);
+
+// A pixel read back from `view`: "empty (nothing drawn: background colour)" where nothing was
+// drawn, else the value the colour encodes ("vector x y z", "uv u v", "depth d", "rgb r g b").
 std::string describeViewSample(View view, const PixelSample& sample);
 
 // Window depth d in [0, 1] back to the eye distance, mapped to [0, 1] between near (0) and
@@ -33,7 +36,7 @@ float linearDepth(float windowDepth, float near, float far);
 // Clamped to [near, far]; near >= far gives near.
 float eyeDistance(float windowDepth, float near, float far);
 
-// The nearest and farthest eye distance of the drawn pixels (alpha > 0), world units.
+// The nearest and farthest eye distance of the drawn pixels (drawnAt), world units.
 struct EyeRange {
   float nearest = 0.0f;
   float farthest = 0.0f;
@@ -44,7 +47,7 @@ struct EyeRange {
 EyeRange drawnEyeRange(std::initializer_list<const RenderOutput*> outputs, float near, float far);
 
 // The output with its colour replaced by the eye distance as grey, from range.nearest (black)
-// to range.farthest (white); pixels nothing covered (alpha 0) keep their colour and alpha.
+// to range.farthest (white); pixels where nothing was drawn keep their colour and alpha.
 // For the Depth view only: most of a scene sits in a thin slice of window depth, but spreads
 // over the whole grey ramp here.
 RenderOutput withLinearDepth(const RenderOutput& output, float near, float far, EyeRange range);

@@ -30,7 +30,7 @@ void sampleCell(const std::optional<PixelSample>& sample, View view) {
   if (view != View::Shaded && view != View::Albedo) {
     ImGui::SameLine();
     ImGui::TextDisabled("(%s)", describeViewSample(view, *sample).c_str());
-  } else if (sample->rgba[3] == 0) {
+  } else if (!sample->drawn) {
     ImGui::SameLine();
     ImGui::TextDisabled("(empty)");
   }
@@ -133,7 +133,7 @@ void GuiApp::drawViewProbeSection() {
   title += "###views";
   if (ImGui::CollapsingHeader(title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
     hintText("Each view rendered by both backends with TBN lines off; vectors decoded as c / 255 * 2 - 1 where "
-             "something was drawn (alpha > 0). Hover a value for what its colours mean.");
+             "something was drawn (a triangle id). Hover a value for what its colours mean.");
     if (!pin_.glError.empty()) errorText("GL: " + pin_.glError);
     if (ImGui::BeginTable("##views", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
       ImGui::TableSetupColumn("view", ImGuiTableColumnFlags_WidthStretch, 0.7f);

@@ -171,6 +171,21 @@ void GuiApp::drawRenderingTab() {
                        "mip levels around the LOD; *_mipmap_nearest picks the nearest level, nearest_mipmap_linear "
                        "blends nearest texels of two levels. The LOD is one per 2x2 pixel quad, "
                        "log2 of the texels one pixel step covers (docs/textures.md).");
+  // Beside the filter it shapes: the most samples along a footprint, GL_TEXTURE_MAX_ANISOTROPY.
+  const char* const anisotropyHelp =
+      "GL_TEXTURE_MAX_ANISOTROPY, 1 to 16 (no unit): the largest ratio of a pixel's footprint in the texture, "
+      "longer side over shorter, that the filter follows. 1 is isotropic: the mip level follows the longer side, "
+      "so a floor seen at a grazing angle blurs; above 1 the filter may take up to that many samples along the "
+      "longer side at a sharper level. How each renderer draws it: docs/textures.md, Anisotropy.";
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted("Anisotropy");
+  itemTooltip(anisotropyHelp);
+  ImGui::SameLine(labelWidth);
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  changed |= ImGui::SliderFloat("##anisotropy", &settings.anisotropy, 1.0f, kMaxTextureAnisotropy, "%.1f",
+                                ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+  itemTooltip(anisotropyHelp);
+  probe_.item("anisotropy");
 
   sectionTitle("TBN lines");
   changed |= ImGui::Checkbox("Draw T (red), B (green), N (blue) at every vertex", &settings.tbnLines.enabled);

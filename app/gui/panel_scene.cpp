@@ -1,7 +1,9 @@
 // The Scene tab: open a file, the node tree with transforms and live mesh parameters,
 // materials, lights, ambient and the output size.
 #include "app/gui/app.h"
+#include "app/gui/material_maps.h"
 #include "app/gui/scene_picker.h"
+#include "app/gui/text_concat.h"
 #include "app/gui/ui_widgets.h"
 
 #include "scene/errors.h"
@@ -40,13 +42,10 @@ constexpr float kMinDimension = 0.001f;
 // Colours as the scene file writes them (floats; light colours may exceed 1).
 constexpr ImGuiColorEditFlags kColourFlags = ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR;
 
-const char* const kMapNames[] = {"diffuse map", "normal map", "specular map"};
-
-std::shared_ptr<const Texture>& mapSlot(Material& material, std::size_t which) {
-  if (which == 0) return material.diffuseMap;
-  if (which == 1) return material.normalMap;
-  return material.specularMap;
-}
+constexpr TextureWrap kWrapModes[] = {TextureWrap::Repeat, TextureWrap::MirroredRepeat, TextureWrap::ClampToEdge};
+constexpr GreenAxis kGreenAxes[] = {GreenAxis::Up, GreenAxis::Down};
+// Names of the maps in the test probe's widget keys, in kMapSlots order.
+const char* const kMapKeys[] = {"diffuse", "normal", "specular"};
 
 bool segmentsField(const char* label, int& value, int minimum) {
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
@@ -129,8 +128,10 @@ void GuiApp::drawSceneTab() {
     changed = true;
   }
   itemTooltip("The render size when the view's resolution is 'scene output' (times the scale).");
-  changed |= ImGui::ColorEdit3("Background", &doc_.scene.output.background.x, kColourFlags);
-  itemTooltip("Linear RGB in [0, 1] where no triangle is drawn (alpha 0 in the outputs).");
+  changed |= ImGui::ColorEdit4("Background", &doc_.scene.output.background.x,
+                                ImGuiColorEditFlags_Float | ImGuiColorEditFlags_AlphaBar);
+  itemTooltip("Linear RGB and alpha, each in [0, 1], where no triangle is drawn. Alpha 1 (default) saves opaque "
+              "PNGs, 0 transparent ones; coverage (Checker bg, the diff) comes from the triangle ids, not alpha.");
   changed |= ImGui::ColorEdit3("Ambient Ia", &doc_.scene.ambient.x, kColourFlags);
   itemTooltip("Ambient light intensity, linear RGB (may exceed 1): adds ka * albedo * Ia to every lit pixel.");
 
@@ -256,7 +257,9 @@ void GuiApp::drawMaterialsSection() {
   for (std::size_t m = 0; m < doc_.scene.materials.size(); ++m) {
     Material& material = doc_.scene.materials[m];
     ImGui::PushID(static_cast<int>(m));
-    if (ImGui::TreeNode("##material", "%s", material.name.c_str())) {
+    const bool open = ImGui::TreeNode("##material", "%s", material.name.c_str());
+    probe_.item(concat("material", m).c_str());
+    if (open) {
       changed |= ImGui::ColorEdit3("ka", &material.ka.x, kColourFlags);
       itemTooltip("Ambient reflectance (times the diffuse map).");
       changed |= ImGui::ColorEdit3("kd", &material.kd.x, kColourFlags);
@@ -267,25 +270,76 @@ void GuiApp::drawMaterialsSection() {
       changed |= ImGui::SliderFloat("Shininess", &material.shininess, 0.0f, kMaxShininess, "%.1f",
                                     ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
       itemTooltip("Phong exponent n in (R.V)^n, no unit: larger is a smaller, sharper highlight.");
-      for (std::size_t which = 0; which < 3; ++which) {
-        const std::shared_ptr<const Texture>& loaded =
-            m < doc_.loadedMaps.size() ? doc_.loadedMaps[m][which] : std::shared_ptr<const Texture>();
-        if (!loaded) continue;
-        std::shared_ptr<const Texture>& slot = mapSlot(material, which);
-        bool on = slot != nullptr;
-        const std::string label = std::string(kMapNames[which]) + " (" + std::to_string(loaded->width) + "x" +
-                                  std::to_string(loaded->height) + ")";
-        if (ImGui::Checkbox(label.c_str(), &on)) {
-          slot = on ? loaded : nullptr;
-          changed = true;
-        }
-        itemTooltip(loaded->path.c_str());
-      }
+      for (const MapSlot slot : kMapSlots) drawMapControls(m, slot);
       ImGui::TreePop();
     }
     ImGui::PopID();
   }
   if (changed) doc_.touch();
+}
+
+// One map of a material: on/off, then the options a scene file gives it. Applying an edit is
+// material_maps.h's job (a new Texture, so neither backend keeps a stale copy).
+void GuiApp::drawMapControls(std::size_t material, MapSlot slot) {
+  const std::shared_ptr<const Texture> loaded = loadedMap(doc_, material, slot);
+  if (!loaded) return;
+  const std::string key = concat("material", material, '_', kMapKeys[static_cast<std::size_t>(slot)]);
+  ImGui::PushID(static_cast<int>(slot));
+  bool on = mapOn(doc_, material, slot);
+  const std::string label = concat(toString(slot), " (", loaded->width, 'x', loaded->height, ", ",
+                                   loaded->formatName, ')');
+  if (ImGui::Checkbox(label.c_str(), &on)) setMapOn(doc_, material, slot, on);
+  itemTooltip(concat(loaded->path, "\nOff: the material is drawn without this map (it stays loaded, so switching "
+                                   "back costs nothing).")
+                  .c_str());
+  probe_.item(concat(key, "_on").c_str());
+
+  ImGui::Indent();
+  TextureOptions options = loaded->options;
+  bool edited = false;
+  edited |= ImGui::Checkbox("flip v", &options.flipV);
+  itemTooltip("Off: the image file's top row is v = 1, as GL tutorials load images; on: the top row is v = 0. "
+              "The file is read again.");
+  probe_.item(concat(key, "_flip_v").c_str());
+  ImGui::SameLine();
+  edited |= ImGui::Checkbox("sRGB", &options.srgb);
+  itemTooltip(slot == MapSlot::Normal
+                  ? "Decode the texels from sRGB to linear before filtering (GL_SRGB8_ALPHA8). A normal map holds "
+                    "directions, not colours: this bends every normal. The file is read again."
+                  : "Decode the colour channels from sRGB to linear before filtering (GL_SRGB8_ALPHA8), as a "
+                    "colour image painted on screen needs; mip levels are then averaged as linear light. The file "
+                    "is read again.");
+  probe_.item(concat(key, "_srgb").c_str());
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+  edited |= enumCombo("wrap", options.wrap, kWrapModes);
+  itemTooltip("How u and v outside [0, 1] read the texture (GL_TEXTURE_WRAP_S and _T): repeat tiles it, "
+              "mirrored_repeat tiles it mirrored every other time, clamp_to_edge repeats the border texels.");
+  probe_.item(concat(key, "_wrap").c_str());
+  if (offersGreen(slot)) {
+    edited |= enumRadio("green", options.green, kGreenAxes, 0.0f,
+                        "Which way the map's green channel points: up (+v: OpenGL and Blender), or down (Direct3D-"
+                        "style tools, some LearnOpenGL assets): both renderers then use 1 - g.");
+    probe_.item(concat(key, "_green").c_str());
+  }
+  const auto messageKey = std::make_pair(material, slot);
+  if (edited) {
+    MapMessage message;
+    try {
+      for (const std::string& warning : setMapOptions(doc_, material, slot, options)) {
+        if (!message.text.empty()) message.text += '\n';
+        message.text += warning;
+      }
+    } catch (const std::exception& e) {
+      message = MapMessage{e.what(), true};
+    }
+    mapMessages_[messageKey] = message;
+  }
+  if (const auto found = mapMessages_.find(messageKey); found != mapMessages_.end() && !found->second.text.empty()) {
+    if (found->second.error) errorText(found->second.text);
+    else warningText(found->second.text);
+  }
+  ImGui::Unindent();
+  ImGui::PopID();
 }
 
 void GuiApp::drawLightsSection() {

@@ -250,8 +250,9 @@ void GuiApp::drawViewToolbar() {
     ImGui::InputText("##folder", &prefs_.screenshotDir);
     ImGui::EndPopup();
   }
-  const std::string shotHelp = "Saves the current view and both backend images (alpha 0 where nothing was drawn) "
-                               "as PNGs in '" + prefs_.screenshotDir + "'. Right-click to change the folder.";
+  const std::string shotHelp = "Saves the current view and both backend images (the scene's background alpha where "
+                               "nothing was drawn) as PNGs in '" + prefs_.screenshotDir +
+                               "'. Right-click to change the folder.";
   itemTooltip(shotHelp.c_str());
 
   // Row 2: resolution, then what the current mode needs.

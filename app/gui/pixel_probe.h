@@ -23,6 +23,7 @@ inline constexpr std::size_t kViewCount = std::size(kAllViews);
 struct PixelSample {
   std::array<std::uint8_t, 4> rgba{};
   float depth = 1.0f;  // window depth
+  bool drawn = false;  // a triangle or line was drawn there (drawnAt; not alpha, which is the background's)
 };
 
 // Indexed like kAllViews; empty until that view has been read.

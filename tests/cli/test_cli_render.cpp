@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <fstream>
+
 namespace twr::testcli {
 namespace {
 
@@ -26,9 +28,31 @@ TEST(CliRender, BothBackendsWriteAnImageOfTheRequestedSize) {
     const Image image = loadPng(png);
     EXPECT_EQ(image.width, 160);
     EXPECT_EQ(image.height, 120);
-    // The floor fills the bottom row; the sky at the top row is background (alpha 0).
+    // The floor fills the bottom row; the sky at the top row is background, opaque: the file
+    // gives [r, g, b], so alpha 1.
     EXPECT_EQ(image.pixel(80, 119)[3], 255);
-    EXPECT_EQ(image.pixel(80, 0)[3], 0);
+    EXPECT_EQ(image.pixel(80, 0)[3], 255);
+  }
+}
+
+TEST(CliRender, ABackgroundWithAlphaZeroWritesATransparentPng) {
+  const auto dir = testDir("cli_render_alpha");
+  const auto scene = dir / "transparent.json";
+  std::ofstream(scene, std::ios::binary | std::ios::trunc)
+      << R"({"output": {"background": [0.1, 0.2, 0.3, 0]},
+            "nodes": [{"mesh": {"type": "plane", "size": [8, 8]}, "translate": [0, -1, 0]}]})";
+  for (const std::string backend : {"cpu", "gl"}) {
+    const std::string png = (dir / (backend + ".png")).string();
+    const RunResult r = runCli("render \"" + scene.string() + "\" --backend " + backend + " --out \"" + png +
+                                   "\" --width 160 --height 120",
+                               dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const Image image = loadPng(png);
+    EXPECT_EQ(image.pixel(80, 119)[3], 255) << backend;  // the plane
+    const std::uint8_t* sky = image.pixel(80, 0);
+    EXPECT_EQ(sky[3], 0) << backend;
+    EXPECT_EQ(sky[0], 26) << backend;  // round(0.1 * 255): the RGB is kept under alpha 0
+    EXPECT_EQ(sky[2], 76) << backend;  // 0.3 * 255 = 76.5: a clear rounds ties to even, as llvmpipe
   }
 }
 

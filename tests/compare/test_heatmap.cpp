@@ -176,9 +176,13 @@ TEST(SideBySide, DimensionsAndBothHalvesEqualTheInputs) {
 TEST(SideBySide, CheckerBackgroundCompositesByAlpha) {
   RenderOutput out = makeSolidOutput(16, 16, 200, 100, 50);
   clearPixel(out, 9, 2);                // alpha 0: the checker
+  clearPixel(out, 10, 2);               // nothing drawn under an opaque background: the checker too
+  rgbaAt(out, 10, 2)[3] = 255;
   rgbaAt(out, 3, 4)[3] = 128;           // half covered: blended
   const Image view = viewImage(out, BackgroundMode::Checker);
   EXPECT_TRUE(sameRgb(rgbAt(view, 9, 2), checkerColour(9, 2)));
+  EXPECT_TRUE(sameRgb(rgbAt(view, 10, 2), checkerColour(10, 2)));
+  EXPECT_TRUE(sameRgb(rgbAt(viewImage(out, BackgroundMode::RendererColour), 10, 2), {200, 100, 50}));
   EXPECT_TRUE(sameRgb(rgbAt(view, 0, 0), {200, 100, 50}));
   // (3, 4) is in checker cell (0, 0), dark 40: (200 * 128 + 40 * 127 + 127) / 255 = 120, etc.
   EXPECT_TRUE(sameRgb(rgbAt(view, 3, 4), {120, 70, 45}));

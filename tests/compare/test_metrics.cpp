@@ -44,6 +44,31 @@ TEST(CompareMetrics, IdenticalImagesGiveZerosAndPsnrCap) {
   for (PixelClass c : r.pixels.pixelClass) EXPECT_EQ(c, PixelClass::Same);
 }
 
+TEST(CompareMetrics, CoverageIsTheTriangleIdNotAlpha) {
+  RenderOutput cpu = makeSolidOutput(4, 1, 10, 20, 30);
+  RenderOutput gl = cpu;
+  // Pixel 0: empty on both, under an opaque background (alpha 255). Pixel 1: empty on GL only,
+  // under a transparent background. Pixel 2: a triangle drawn with alpha 0 would still count.
+  clearPixel(cpu, 0, 0);
+  clearPixel(gl, 0, 0);
+  rgbaAt(cpu, 0, 0)[3] = rgbaAt(gl, 0, 0)[3] = 255;
+  clearPixel(gl, 1, 0);
+  rgbaAt(cpu, 2, 0)[3] = 0;
+  const CompareResult r = compareDetailed(cpu, gl);
+  EXPECT_EQ(r.pixels.pixelClass[0], PixelClass::Empty);
+  EXPECT_EQ(r.pixels.pixelClass[1], PixelClass::CoverageCpu);
+  EXPECT_EQ(r.pixels.pixelClass[2], PixelClass::Same);
+  EXPECT_EQ(r.metrics.coveredCpu, 3u);
+  EXPECT_EQ(r.metrics.coveredGl, 2u);
+
+  // Without triangle ids (an analytic reference) alpha > 0 is all there is.
+  cpu.triangleId.clear();
+  const CompareResult noIds = compareDetailed(cpu, gl);
+  EXPECT_EQ(noIds.pixels.pixelClass[0], PixelClass::CoverageCpu);  // alpha 255 reads as covered
+  EXPECT_EQ(noIds.pixels.pixelClass[2], PixelClass::CoverageGl);   // alpha 0 reads as empty
+  EXPECT_EQ(noIds.metrics.coveredCpu, 3u);
+}
+
 TEST(CompareMetrics, OnePixelOffByTwoIsOver1AtItsTopLeftCoordinates) {
   const RenderOutput cpu = makeSolidOutput(5, 4, 100, 100, 100);
   RenderOutput gl = cpu;
@@ -160,13 +185,12 @@ TEST(CompareMetrics, DepthToleranceDecidesWhenTriangleIdsAreMissing) {
   EXPECT_EQ(compare(cpu, gl, looser).classDepth, 0u);
 }
 
-TEST(CompareMetrics, NoTriangleOnOneSideFallsBackToDepth) {
+TEST(CompareMetrics, NoTriangleIdsOnOneSideFallsBackToDepth) {
   const RenderOutput cpu = makeSolidOutput(2, 1, 80, 80, 80, 0.25f);
   RenderOutput gl = cpu;
   rgbaAt(gl, 0, 0)[0] = 99;
   rgbaAt(gl, 1, 0)[0] = 99;
-  gl.triangleId[0] = kNoTriangle;  // covered but no id written here
-  gl.triangleId[1] = kNoTriangle;
+  gl.triangleId.clear();  // an output without ids (an analytic reference): covered by alpha
   gl.depth[1] = 0.75f;
   const CompareResult r = compareDetailed(cpu, gl);
   EXPECT_EQ(r.pixels.pixelClass[0], PixelClass::Shading);

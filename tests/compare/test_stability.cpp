@@ -49,7 +49,7 @@ Scene frontScene(float near = 0.1f, float far = 100.0f) {
   scene.camera.fovDeg = 90.0f;
   scene.camera.near = near;
   scene.camera.far = far;
-  scene.output.background = vec3(0.0f);
+  scene.output.background = vec4(0.0f, 0.0f, 0.0f, 1.0f);
   scene.settings.cull = CullMode::None;
   scene.settings.view = View::Albedo;  // colour = kd: flat, so coverage and ties are easy to read
   return scene;
@@ -110,12 +110,12 @@ Both renderBoth(const Scene& scene, const RenderSettings& settings, int width = 
 
 std::size_t coveredCount(const RenderOutput& out) {
   std::size_t n = 0;
-  for (std::size_t i = 3; i < out.rgba.size(); i += 4) n += out.rgba[i] > 0 ? 1 : 0;
+  for (std::size_t i = 0; i < out.depth.size(); ++i) n += coveredAt(out, i) ? 1 : 0;
   return n;
 }
 
 bool covered(const RenderOutput& out, int x, int yTop) {
-  return out.rgba[(static_cast<std::size_t>(yTop) * out.width + x) * 4 + 3] > 0;
+  return coveredAt(out, static_cast<std::size_t>(yTop) * static_cast<std::size_t>(out.width) + static_cast<std::size_t>(x));
 }
 
 const std::uint8_t* pixelAt(const RenderOutput& out, int x, int yTop) {
@@ -158,7 +158,7 @@ Scene groundThroughCamera() {
 }
 
 TEST(Stability, TriangleCrossingWZeroCoversExactlyTheRowsBelowTheFarLine) {
-  const Scene scene = groundThroughCamera();
+  Scene scene = groundThroughCamera();
   for (const bool nearOn : {true, false}) {
     RenderSettings settings = scene.settings;
     settings.clip.near = nearOn;  // off: the w >= kMinClipW plane and GL depth clamp take over
@@ -174,7 +174,9 @@ TEST(Stability, TriangleCrossingWZeroCoversExactlyTheRowsBelowTheFarLine) {
     expectTargets(b, what);
   }
   // The reference's 4 x 4 samples in GL row 31 sit at 31.125 .. 31.875: three rows of four
-  // below 31.68, so alpha is 12/16 of 255 there.
+  // below 31.68, so alpha is 12/16 of 255 there (over a transparent background, alpha is
+  // the coverage fraction).
+  scene.output.background.a = 0.0f;
   const RenderOutput reference = makeReferenceRenderer({4, 1})->render(scene, scene.settings, kSide, kSide);
   EXPECT_EQ(coveredCount(reference), 32u * kSide);
   EXPECT_EQ(pixelAt(reference, 10, 32)[3], static_cast<int>(std::lround(255.0 * 12.0 / 16.0)));
@@ -556,7 +558,7 @@ Scene litScene() {
   scene.camera.position = vec3(0.0f, 0.4f, 2.6f);
   scene.camera.target = vec3(0.0f);
   scene.camera.fovDeg = 50.0f;
-  scene.output.background = vec3(0.05f);
+  scene.output.background = vec4(0.05f, 0.05f, 0.05f, 1.0f);
   PointLight light;
   light.posWorld = vec3(1.5f, 2.0f, 2.5f);
   scene.lights.push_back(light);
@@ -647,7 +649,7 @@ TEST(Stability, TangentParallelToNormalFallsBackToTheSameFrameOnBothBackends) {
   std::size_t checked = 0;
   for (const RenderOutput* out : {&b.cpu, &b.gl}) {
     for (std::size_t i = 0; i + 3 < out->rgba.size(); i += 4) {
-      if (out->rgba[i + 3] == 0) continue;
+      if (!coveredAt(*out, i / 4)) continue;
       ASSERT_NEAR(out->rgba[i + 0], 128, 1);
       ASSERT_NEAR(out->rgba[i + 1], 128, 1);
       ASSERT_EQ(out->rgba[i + 2], 255);

@@ -29,7 +29,7 @@ inline Scene emptyScene() {
   Scene scene;
   scene.output.width = kSide;
   scene.output.height = kSide;
-  scene.output.background = vec3(0.2f, 0.4f, 0.6f);
+  scene.output.background = vec4(0.2f, 0.4f, 0.6f, 1.0f);
   scene.camera = frontCamera();
   scene.lights.push_back(PointLight{vec3(0.0f, 0.0f, 0.0f), vec3(1.0f), vec3(1.0f), vec3(1.0f, 0.0f, 0.0f)});
   return scene;
@@ -57,7 +57,9 @@ inline std::size_t index(const RenderOutput& out, int x, int y) {
   return static_cast<std::size_t>(y) * static_cast<std::size_t>(out.width) + static_cast<std::size_t>(x);
 }
 inline const std::uint8_t* pixel(const RenderOutput& out, int x, int y) { return &out.rgba[index(out, x, y) * 4]; }
-inline bool covered(const RenderOutput& out, int x, int y) { return pixel(out, x, y)[3] == 255; }
+// A triangle covers (x, y): its id (coveredAt); a lean frame, without ids, says it in alpha only
+// when its scene's background alpha is 0.
+inline bool covered(const RenderOutput& out, int x, int y) { return coveredAt(out, index(out, x, y)); }
 
 inline std::size_t coveredCount(const RenderOutput& out) {
   std::size_t count = 0;

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <string>
+#include <utility>
 
 namespace twr {
 namespace {
@@ -38,7 +39,7 @@ RenderOutput renderGl(const Scene& scene, const RenderSettings& settings) {
   return renderer->render(scene, settings, kSide, kSide);
 }
 
-TEST(GlRender, BackgroundIsClearedWithAlphaZeroAndGeometryHasAlphaOne) {
+TEST(GlRender, BackgroundIsClearedWithTheSceneAlphaAndGeometryHasAlphaOne) {
   Scene scene = emptyScene();
   addNode(scene, quadAt(-2.0f, -1.0f, -1.0f, 1.0f, 1.0f), "quad");
   const RenderOutput out = renderGl(scene, scene.settings);
@@ -52,17 +53,32 @@ TEST(GlRender, BackgroundIsClearedWithAlphaZeroAndGeometryHasAlphaOne) {
   EXPECT_FALSE(covered(out, 15, 32));
   EXPECT_FALSE(covered(out, 48, 32));
   EXPECT_EQ(gltest::coveredCount(out), 32u * 32u);
-  // Background (0.2, 0.4, 0.6) -> round(c * 255) = 51, 102, 153, alpha 0.
+  // Background (0.2, 0.4, 0.6, 1) -> round(c * 255) = 51, 102, 153, 255: opaque by default.
   const std::uint8_t* corner = pixel(out, 0, 0);
   EXPECT_EQ(corner[0], 51);
   EXPECT_EQ(corner[1], 102);
   EXPECT_EQ(corner[2], 153);
-  EXPECT_EQ(corner[3], 0);
+  EXPECT_EQ(corner[3], 255);
+  EXPECT_EQ(pixel(out, 32, 32)[3], 255);
   EXPECT_EQ(out.depth[index(out, 0, 0)], 1.0f);
   EXPECT_EQ(out.triangleId[index(out, 0, 0)], kNoTriangle);
   EXPECT_EQ(out.stats.trianglesIn, 2u);
   EXPECT_EQ(out.stats.pixelsShaded, 32u * 32u);
   EXPECT_GT(out.stats.milliseconds, 0.0);
+
+  // Transparent and half-transparent backgrounds: only the empty pixels' alpha moves.
+  for (const auto& [alpha, byte] : {std::pair{0.0f, 0}, std::pair{0.5f, 128}}) {
+    scene.output.background.a = alpha;
+    const RenderOutput other = renderGl(scene, scene.settings);
+    EXPECT_EQ(pixel(other, 0, 0)[3], byte) << alpha;
+    EXPECT_EQ(pixel(other, 32, 32)[3], 255) << alpha;
+    EXPECT_EQ(gltest::coveredCount(other), 32u * 32u) << alpha;
+    for (std::size_t i = 0; i < out.triangleId.size(); ++i) {
+      for (std::size_t c = 0; c < 3; ++c) ASSERT_EQ(other.rgba[i * 4 + c], out.rgba[i * 4 + c]) << i;
+      ASSERT_EQ(other.rgba[i * 4 + 3], out.triangleId[i] != kNoTriangle ? 255 : byte) << i;
+      ASSERT_EQ(other.triangleId[i], out.triangleId[i]) << i;
+    }
+  }
 }
 
 TEST(GlRender, DepthReadBackIsWindowDepthOfAPlaneAtKnownDistance) {
@@ -95,9 +111,18 @@ TEST(GlRender, TriangleIdsAreGlobalAcrossTheDrawList) {
   EXPECT_EQ(out.triangleId[index(out, upperLeft.x, upperLeft.row)], 1u);
   EXPECT_EQ(out.triangleId[index(out, right.x, right.row)], 2u);
   EXPECT_EQ(out.triangleId[index(out, 32, 2)], kNoTriangle);
-  // Ids and alpha agree everywhere.
-  for (int y = 0; y < kSide; ++y)
-    for (int x = 0; x < kSide; ++x) EXPECT_EQ(out.triangleId[index(out, x, y)] != kNoTriangle, covered(out, x, y));
+  // With the default opaque background every alpha is 255; with a transparent one alpha is
+  // 255 exactly where an id was written, and the ids do not move.
+  Scene clear = scene;
+  clear.output.background.a = 0.0f;
+  const RenderOutput transparent = renderGl(clear, clear.settings);
+  for (int y = 0; y < kSide; ++y) {
+    for (int x = 0; x < kSide; ++x) {
+      EXPECT_EQ(pixel(out, x, y)[3], 255);
+      EXPECT_EQ(transparent.triangleId[index(out, x, y)], out.triangleId[index(out, x, y)]);
+      EXPECT_EQ(out.triangleId[index(out, x, y)] != kNoTriangle, pixel(transparent, x, y)[3] == 255);
+    }
+  }
 }
 
 struct CullCase {

@@ -25,14 +25,37 @@ TEST(DebugViews, EmptyPixelsAreNotDecodedAsVectors) {
 TEST(DebugViews, DrawnPixelsDecodeAsTheirView) {
   PixelSample up;
   up.rgba = {128, 255, 128, 255};
+  up.drawn = true;
   EXPECT_EQ(describeViewSample(View::Normal, up), "vector 0.00 1.00 0.00");
   PixelSample uv;
   uv.rgba = {255, 0, 0, 255};
+  uv.drawn = true;
   EXPECT_EQ(describeViewSample(View::Uv, uv), "uv 1.000 0.000 (fractional part)");
   PixelSample depth;
   depth.rgba = {250, 250, 250, 255};
   depth.depth = 0.98f;
+  depth.drawn = true;
   EXPECT_EQ(describeViewSample(View::Depth, depth), "depth 0.9800000");
+}
+
+TEST(DebugViews, ASampleIsDrawnByItsTriangleIdNotItsAlpha) {
+  RenderOutput output;
+  output.width = 3;
+  output.height = 1;
+  // An opaque background (alpha 255) at x = 0, a triangle at x = 1, a TBN line at x = 2.
+  output.rgba = {13, 13, 20, 255, 128, 255, 128, 255, 255, 0, 0, 255};
+  output.depth = {1.0f, 0.5f, 0.4f};
+  output.triangleId = {kNoTriangle, 7, kNoTriangle};
+  output.lineMask = {0, 0, 1};
+  const PixelSample background = sampleAt(output, {0, 0});
+  EXPECT_FALSE(background.drawn);
+  EXPECT_EQ(background.rgba[3], 255);
+  EXPECT_NE(describeViewSample(View::Normal, background).find("empty"), std::string::npos);
+  const PixelSample surface = sampleAt(output, {1, 0});
+  EXPECT_TRUE(surface.drawn);
+  EXPECT_EQ(surface.depth, 0.5f);
+  EXPECT_EQ(describeViewSample(View::Normal, surface), "vector 0.00 1.00 0.00");
+  EXPECT_TRUE(sampleAt(output, {2, 0}).drawn);
 }
 
 TEST(DebugViews, EveryViewHasALegend) {
@@ -84,6 +107,21 @@ TEST(DebugViews, LinearDepthSpansTheDrawnRangeAndKeepsEmptyPixels) {
   EXPECT_EQ(linear.rgba[4], 0);  // the nearest drawn pixel: black
   EXPECT_EQ(linear.rgba[8], 255);  // the farthest: white
   EXPECT_EQ(linear.rgba[7], 255);
+}
+
+TEST(DebugViews, LinearDepthSkipsTheOpaqueBackgroundByTriangleId) {
+  RenderOutput output;
+  output.width = 2;
+  output.height = 1;
+  output.rgba = {9, 9, 9, 255, 255, 255, 255, 255};  // the background is opaque: alpha says nothing
+  output.depth = {1.0f, 0.99f};
+  output.triangleId = {kNoTriangle, 3};
+  const EyeRange range = drawnEyeRange({&output}, 0.1f, 50.0f);
+  ASSERT_FALSE(range.empty());
+  EXPECT_LT(range.farthest, 50.0f) << "the background's depth 1 must not count";
+  const RenderOutput linear = withLinearDepth(output, 0.1f, 50.0f, range);
+  EXPECT_EQ(linear.rgba[0], 9);  // nothing drawn: untouched
+  EXPECT_EQ(linear.rgba[3], 255);
 }
 
 TEST(DebugViews, NoDrawnPixelNoRange) {

@@ -256,7 +256,8 @@ TEST(SceneFileErrors, BadLightCameraAndColours) {
   expectContains(parseError(R"({"nodes": [], "camera": {"position": [0, 5, 0], "target": [0, 0, 0]}})"),
                  {"inline.json: camera: position - target must not be parallel"});
   expectContains(parseError(R"({"nodes": [], "output": {"background": [0.1, 0.2]}})"),
-                 {"inline.json: output.background: expected an array of 3 numbers"});
+                 {"inline.json: output.background: expected an array of 3 or 4 numbers [r, g, b] or [r, g, b, a] "
+                  "(each a number in [0, 1]), got [0.1,0.2]"});
   expectContains(parseError(R"({"nodes": [], "output": {"background": [0.1, 0.2, 1.5]}})"),
                  {"inline.json: output.background[2]: expected a number in [0, 1], got 1.5"});
   expectContains(parseError(R"({"nodes": [], "materials": {"m": {"shininess": -1}}})"),
@@ -265,6 +266,31 @@ TEST(SceneFileErrors, BadLightCameraAndColours) {
                  {"inline.json: settings.user_clip_planes[0]: expected a plane [a, b, c, d] with (a, b, c) not all zero"});
   expectContains(parseError(R"({"nodes": [], "settings": {"tbn_lines": {"length": 0}}})"),
                  {"inline.json: settings.tbn_lines.length: expected a number > 0, got 0"});
+}
+
+TEST(SceneFileErrors, BackgroundAlphaOutOfRangeOrWrongLength) {
+  expectContains(parseError(R"({"nodes": [], "output": {"background": [0.1, 0.2, 0.3, 1.5]}})"),
+                 {"inline.json: output.background[3]: expected a number in [0, 1], got 1.5"});
+  expectContains(parseError(R"({"nodes": [], "output": {"background": [0.1, 0.2, 0.3, -0.5]}})"),
+                 {"inline.json: output.background[3]: expected a number in [0, 1], got -0.5"});
+  expectContains(parseError(R"({"nodes": [], "output": {"background": [0.1, 0.2, 0.3, 1, 1]}})"),
+                 {"inline.json: output.background: expected an array of 3 or 4 numbers"});
+  expectContains(parseError(R"({"nodes": [], "output": {"background": {"r": 0.1}}})"),
+                 {"inline.json: output.background: expected an array of 3 or 4 numbers"});
+  expectContains(parseError(R"({"nodes": [], "output": {"background": [0.1, 0.2, 0.3, "opaque"]}})"),
+                 {"inline.json: output.background[3]: expected a number"});
+}
+
+TEST(SceneFile, BackgroundIsOpaqueUnlessItGivesAnAlpha) {
+  EXPECT_EQ(parseScene(R"({"nodes": []})", kInline, kDataDir).output.background, vec4(0.05f, 0.05f, 0.08f, 1.0f));
+  EXPECT_EQ(parseScene(R"({"output": {"background": [0.1, 0.2, 0.3]}, "nodes": []})", kInline, kDataDir).output.background,
+            vec4(0.1f, 0.2f, 0.3f, 1.0f));
+  EXPECT_EQ(parseScene(R"({"output": {"background": [0.1, 0.2, 0.3, 0]}, "nodes": []})", kInline, kDataDir)
+                .output.background,
+            vec4(0.1f, 0.2f, 0.3f, 0.0f));
+  EXPECT_EQ(parseScene(R"({"output": {"background": [0, 0, 0, 0.25]}, "nodes": []})", kInline, kDataDir)
+                .output.background,
+            vec4(0.0f, 0.0f, 0.0f, 0.25f));
 }
 
 TEST(SceneFileErrors, MissingNodes) {
@@ -336,7 +362,7 @@ TEST(SceneFile, EveryKeyIsRead) {
                                  kInline, kDataDir);
   EXPECT_EQ(scene.output.width, 320);
   EXPECT_EQ(scene.output.height, 200);
-  EXPECT_EQ(scene.output.background, vec3(0.5f, 0.25f, 1.0f));
+  EXPECT_EQ(scene.output.background, vec4(0.5f, 0.25f, 1.0f, 1.0f));
   EXPECT_EQ(scene.camera.position, vec3(1, 2, 3));
   EXPECT_EQ(scene.camera.target, vec3(0, 1, 0));
   EXPECT_FLOAT_EQ(scene.camera.fovDeg, 45.0f);

@@ -44,8 +44,9 @@ std::size_t coveredCount(const RenderOutput& out) {
   return n;
 }
 
-// Alpha, depth and id agree pixel by pixel and depth is finite in [0, 1].
-void expectConsistentBuffers(const RenderOutput& out) {
+// Alpha, depth and id agree pixel by pixel and depth is finite in [0, 1]: drawn pixels have
+// alpha 255, the others the background's (opaque unless the scene says otherwise).
+void expectConsistentBuffers(const RenderOutput& out, std::uint8_t backgroundAlpha = 255) {
   const std::size_t count = static_cast<std::size_t>(out.width) * static_cast<std::size_t>(out.height);
   ASSERT_EQ(out.rgba.size(), count * 4);
   ASSERT_EQ(out.depth.size(), count);
@@ -56,7 +57,7 @@ void expectConsistentBuffers(const RenderOutput& out) {
     ASSERT_GE(out.depth[i], 0.0f);
     ASSERT_LE(out.depth[i], 1.0f);
     const bool drawn = out.triangleId[i] != kNoTriangle || out.lineMask[i] != 0;
-    ASSERT_EQ(out.rgba[i * 4 + 3], drawn ? 255 : 0) << "pixel " << i;
+    ASSERT_EQ(out.rgba[i * 4 + 3], drawn ? 255 : backgroundAlpha) << "pixel " << i;
     if (!drawn) {
       ASSERT_EQ(out.depth[i], 1.0f);
     }
@@ -76,15 +77,37 @@ TEST(CpuRenderer, CubeBuffersAndStatistics) {
   EXPECT_GT(coveredCount(out), 100u);
 }
 
-TEST(CpuRenderer, BackgroundIsTheSceneColourWithAlphaZero) {
-  Scene scene = sceneWith(makeCube(0.1f));
-  scene.output.background = vec3(1.0f, 0.5f, 0.0f);
-  const RenderOutput out = render(scene, scene.settings);
-  EXPECT_EQ(out.triangleId[0], kNoTriangle);
-  EXPECT_EQ(out.rgba[0], 255);
-  EXPECT_EQ(out.rgba[1], 128);  // round(0.5 * 255) = 128 (127.5 rounds up)
-  EXPECT_EQ(out.rgba[2], 0);
-  EXPECT_EQ(out.rgba[3], 0);
+TEST(CpuRenderer, BackgroundIsTheSceneColourAndAlpha) {
+  for (const CpuPath path : {CpuPath::Fast, CpuPath::Teaching}) {
+    SCOPED_TRACE(path == CpuPath::Fast ? "fast" : "teaching");
+    CpuOptions options;
+    options.path = path;
+    Scene scene = sceneWith(makeCube(0.1f));
+    scene.output.background = vec4(1.0f, 0.5f, 0.0f, 1.0f);  // opaque, as a file's [r, g, b]
+    const RenderOutput opaque = makeCpuRenderer(options)->render(scene, scene.settings, 64, 48);
+    EXPECT_EQ(opaque.triangleId[0], kNoTriangle);
+    EXPECT_EQ(opaque.rgba[0], 255);
+    EXPECT_EQ(opaque.rgba[1], 128);  // round(0.5 * 255) = 128 (127.5 rounds up)
+    EXPECT_EQ(opaque.rgba[2], 0);
+    EXPECT_EQ(opaque.rgba[3], 255);
+    expectConsistentBuffers(opaque, 255);
+
+    scene.output.background.a = 0.0f;
+    const RenderOutput clear = makeCpuRenderer(options)->render(scene, scene.settings, 64, 48);
+    EXPECT_EQ(clear.rgba[3], 0);
+    expectConsistentBuffers(clear, 0);
+    scene.output.background.a = 0.5f;
+    const RenderOutput half = makeCpuRenderer(options)->render(scene, scene.settings, 64, 48);
+    expectConsistentBuffers(half, 128);
+
+    // Only the alpha of empty pixels moves: every RGB, depth and id stays.
+    ASSERT_GT(coveredCount(opaque), 0u);
+    for (std::size_t i = 0; i < opaque.depth.size(); ++i) {
+      for (std::size_t c = 0; c < 3; ++c) ASSERT_EQ(opaque.rgba[i * 4 + c], clear.rgba[i * 4 + c]) << i;
+      ASSERT_EQ(opaque.depth[i], clear.depth[i]) << i;
+      ASSERT_EQ(opaque.triangleId[i], clear.triangleId[i]) << i;
+    }
+  }
 }
 
 TEST(CpuRenderer, OutputIsTopRowFirst) {

@@ -315,6 +315,24 @@ TEST_P(FastPath, WrapModesSrgbAndNormalMapConventions) {
   }
 }
 
+// A renderer keeps its tiled copies across frames, keyed by the Texture object. Options changed
+// in place on that object between frames (GlUploadCache allows it too) must be followed, as
+// a new renderer would draw them: the tiled texels do not depend on them, the sampler does.
+TEST(FastPathCache, TextureOptionsChangedInPlaceAreFollowed) {
+  Scene scene = syntheticScene(vec2(-2.3f, -1.2f), vec2(3.0f, 2.1f), 37, 20, 12.0f);
+  const std::shared_ptr<Texture> diffuse = noiseTexture(37, 20, 1);
+  scene.materials[0].diffuseMap = diffuse;
+  RenderSettings settings = scene.settings;
+  settings.cull = CullMode::None;
+  const std::unique_ptr<Renderer> kept = makeCpuRenderer(fastSimd(2));
+  const RenderOutput first = kept->render(scene, settings, 97, 61);
+  diffuse->options.wrap = TextureWrap::MirroredRepeat;
+  diffuse->options.srgb = true;
+  const RenderOutput second = kept->render(scene, settings, 97, 61);
+  EXPECT_NE(first.rgba, second.rgba) << "the options change the picture";
+  expectIdentical(makeCpuRenderer(fastSimd(2))->render(scene, settings, 97, 61), second, "options changed in place");
+}
+
 // Every view on the synthetic material with all its maps and without any, in both lighting
 // spaces and filters, then with user clip planes cutting triangles, then with no light (the
 // light direction view shows grey): each view has its own SIMD kernel in the fast path.

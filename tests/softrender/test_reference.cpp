@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include <tuple>
+
 #include <cmath>
 
 namespace twr {
@@ -19,12 +21,13 @@ constexpr int kSide = 32;  // image width and height, pixels
 
 // Camera at z = 1 looking at the origin with a 90 degree field of view: on the plane z = 0,
 // x_ndc = x and window x = (x + 1) * kSide / 2 (the same for y).
-Scene quadScene(float leftEdgeX) {
+// The background is transparent unless asked: the reference's alpha is then its coverage fraction.
+Scene quadScene(float leftEdgeX, float backgroundAlpha = 0.0f) {
   Scene scene;
   scene.camera.position = vec3(0, 0, 1);
   scene.camera.target = vec3(0, 0, 0);
   scene.camera.fovDeg = 90.0f;
-  scene.output.background = vec3(0.0f);
+  scene.output.background = vec4(0.0f, 0.0f, 0.0f, backgroundAlpha);
   // Two triangles from x = leftEdgeX to 2 (beyond the right border), y from -2 to 2.
   const std::vector<vec3> positions{{leftEdgeX, -2, 0}, {2, -2, 0}, {2, 2, 0},
                                     {leftEdgeX, -2, 0}, {2, 2, 0},  {leftEdgeX, 2, 0}};
@@ -79,23 +82,41 @@ TEST(Reference, CoverageIsTheFractionOfSamplesAndColourTheBoxFilter) {
   }
 }
 
-TEST(Reference, OneSampleIsTheDoublePipelineAndMatchesTheFloatOneHere) {
-  // Edge at 10.25 and interior far from any pixel centre: float and double agree exactly.
-  const Scene scene = quadScene(kEdgeX);
-  const RenderOutput reference = makeReferenceRenderer({1, 1})->render(scene, scene.settings, kSide, kSide);
-  const RenderOutput cpu = makeCpuRenderer()->render(scene, scene.settings, kSide, kSide);
-  ASSERT_EQ(reference.rgba.size(), cpu.rgba.size());
-  for (std::size_t i = 0; i < cpu.rgba.size(); ++i) ASSERT_EQ(reference.rgba[i], cpu.rgba[i]) << "byte " << i;
-  for (std::size_t i = 0; i < cpu.triangleId.size(); ++i) {
-    ASSERT_EQ(reference.triangleId[i], cpu.triangleId[i]) << "pixel " << i;
-    ASSERT_NEAR(reference.depth[i], cpu.depth[i], 1e-6) << "pixel " << i;
+TEST(Reference, AlphaIsTheBoxFilterOfTheSamplesAlpha) {
+  // Pixel 10 has 12 of 16 samples on the (opaque) quad, 4 on the background.
+  const std::size_t p9 = topFirst(9, kSide / 2), p10 = topFirst(10, kSide / 2);
+  for (const auto& [alpha, empty, edge] : {std::tuple{1.0f, 255, 255}, std::tuple{0.5f, 128, 223},  // (12 + 4 * 0.5) / 16
+                                           std::tuple{0.3f, 76, 210}}) {  // clear: 76.5 to even; (12 + 1.2) / 16 * 255 = 210.4
+    const Scene scene = quadScene(kEdgeX, alpha);
+    const RenderOutput out = makeReferenceRenderer({4, 1})->render(scene, scene.settings, kSide, kSide);
+    EXPECT_EQ(out.rgba[p9 * 4 + 3], empty) << alpha;
+    EXPECT_EQ(out.rgba[p10 * 4 + 3], edge) << alpha;
+    EXPECT_EQ(out.triangleId[p9], kNoTriangle) << "coverage is the id, whatever the alpha";
+    EXPECT_NE(out.triangleId[p10], kNoTriangle);
   }
-  EXPECT_EQ(reference.stats.trianglesIn, 2u);
-  EXPECT_EQ(reference.stats.pixelsShaded, cpu.stats.pixelsShaded);
-  // The same loop with the float stages (used to time float against double) draws it too.
-  const RenderOutput floatLoop = makeReferenceRenderer({1, 1, false})->render(scene, scene.settings, kSide, kSide);
-  EXPECT_EQ(floatLoop.rgba, cpu.rgba);
-  EXPECT_EQ(floatLoop.triangleId, cpu.triangleId);
+}
+
+TEST(Reference, OneSampleIsTheDoublePipelineAndMatchesTheFloatOneHere) {
+  // Edge at 10.25 and interior far from any pixel centre: float and double agree exactly,
+  // the background's alpha included (0.3 is a rounding tie, 76.5).
+  for (const float alpha : {0.0f, 1.0f, 0.3f}) {
+    SCOPED_TRACE(alpha);
+    const Scene scene = quadScene(kEdgeX, alpha);
+    const RenderOutput reference = makeReferenceRenderer({1, 1})->render(scene, scene.settings, kSide, kSide);
+    const RenderOutput cpu = makeCpuRenderer()->render(scene, scene.settings, kSide, kSide);
+    ASSERT_EQ(reference.rgba.size(), cpu.rgba.size());
+    for (std::size_t i = 0; i < cpu.rgba.size(); ++i) ASSERT_EQ(reference.rgba[i], cpu.rgba[i]) << "byte " << i;
+    for (std::size_t i = 0; i < cpu.triangleId.size(); ++i) {
+      ASSERT_EQ(reference.triangleId[i], cpu.triangleId[i]) << "pixel " << i;
+      ASSERT_NEAR(reference.depth[i], cpu.depth[i], 1e-6) << "pixel " << i;
+    }
+    EXPECT_EQ(reference.stats.trianglesIn, 2u);
+    EXPECT_EQ(reference.stats.pixelsShaded, cpu.stats.pixelsShaded);
+    // The same loop with the float stages (used to time float against double) draws it too.
+    const RenderOutput floatLoop = makeReferenceRenderer({1, 1, false})->render(scene, scene.settings, kSide, kSide);
+    EXPECT_EQ(floatLoop.rgba, cpu.rgba);
+    EXPECT_EQ(floatLoop.triangleId, cpu.triangleId);
+  }
 }
 
 TEST(Reference, SampleCountsAndPixelsShadedAddUpOverPasses) {
