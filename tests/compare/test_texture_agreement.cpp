@@ -9,6 +9,7 @@
 #include "compare/thresholds.h"
 #include "glrender/gl_renderer.h"
 #include "scene/block_compression.h"
+#include "scene/image.h"
 #include "scene/mip_level_view.h"
 #include "scene/scene_file.h"
 #include "softrender/cpu_renderer.h"
@@ -142,6 +143,92 @@ TEST(TextureAgreement, AnisotropicFilter) {
   if (!violations.empty()) {
     writeCompareArtifacts(dir.string(), cpu, gl, result, metricsToJson(result.metrics));
     ADD_FAILURE() << "anisotropic level 0 exceeds the targets (images in " << dir.string() << ")";
+  }
+}
+
+// A high-contrast texture of any size (deterministic texels), written as PNG for a scene file.
+std::string writeContrastPng(const fs::path& dir, int width, int height) {
+  Image image;
+  image.width = width;
+  image.height = height;
+  image.rgba.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
+  std::mt19937 rng(static_cast<std::uint32_t>(width * 7919 + height));
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+    const std::uint8_t v = (rng() & 1u) ? 255 : 0;  // neighbours differ by the full range
+    image.rgba[i] = v;
+    image.rgba[i + 1] = static_cast<std::uint8_t>(rng() & 0xFFu);
+    image.rgba[i + 2] = static_cast<std::uint8_t>(255 - v);
+    image.rgba[i + 3] = 255;
+  }
+  const std::string path = (dir / ("contrast_" + std::to_string(width) + "x" + std::to_string(height) + ".png")).string();
+  savePng(path, image);
+  return path;
+}
+
+// A floor and a tilted wall (clipped by the view's sides) with `texture`, `wrap`, `filter`.
+std::string contrastSceneJson(const std::string& texture, const char* wrap, const char* filter, double uvScale,
+                              const char* camera) {
+  return std::string(R"({
+    "output": {"width": 200, "height": 150},
+    "camera": )") + camera + R"(,
+    "ambient": [1, 1, 1], "lights": [],
+    "materials": {"m": {"ka": [1, 1, 1], "kd": [0, 0, 0], "ks": [0, 0, 0],
+                        "diffuse_map": {"path": ")" + texture + R"(", "wrap": ")" + wrap + R"("}}},
+    "nodes": [{"name": "floor", "material": "m", "mesh": {"type": "plane", "size": [20, 20], "uv_scale": )" +
+         std::to_string(uvScale) + R"(}},
+              {"name": "wall", "material": "m", "translate": [0.3, 0.6, -1], "rotate_deg": [80, 20, 0],
+               "mesh": {"type": "plane", "size": [2, 2], "uv_scale": 3.1}}],
+    "settings": {"cull": "none", "texture_filter": ")" + filter + R"("}
+  })";
+}
+
+void expectWithinTargets(const fs::path& dir, const std::string& json, const std::string& what) {
+  const auto [cpu, gl] = renderBoth(dir, json, 200, 150);
+  const CompareResult result = compareDetailed(cpu, gl);
+  const std::vector<ThresholdViolation> violations =
+      checkThresholds(result.metrics, issueTargets(cpu.stats.trianglesClipped > 0));
+  EXPECT_GT(result.metrics.coveredCpu, 0u) << what;
+  if (!violations.empty()) {
+    writeCompareArtifacts(dir.string(), cpu, gl, result, metricsToJson(result.metrics));
+    ADD_FAILURE() << what << " exceeds the targets (max " << result.metrics.maxAbsDiff << " levels; images in "
+                  << dir.string() << ")";
+  }
+}
+
+// Nearest filtering flips a whole texel on one ULP of uv (issue 22, class 5): any size, any
+// shape, power of two or not, one texel wide or high, each wrap mode, on random full-contrast
+// texels, so any uv that differs from llvmpipe's in a bit that matters shows as a big
+// difference.
+TEST(TextureAgreement, NearestPicksLlvmpipesTexelOnAnyTextureShape) {
+  const fs::path dir = caseDir("nearest_shapes");
+  const char* camera = R"({"position": [0, 1.5, 4], "target": [0, 0, -2], "fov_deg": 60, "near": 0.1, "far": 80})";
+  for (const auto& [w, h] : {std::pair{513, 1}, std::pair{1, 7}, std::pair{100, 37}, std::pair{64, 64}, std::pair{3, 5}}) {
+    const std::string texture = writeContrastPng(dir, w, h);
+    for (const char* wrap : {"repeat", "mirrored_repeat", "clamp_to_edge"}) {
+      for (const char* filter : {"nearest", "nearest_mipmap_nearest"}) {
+        expectWithinTargets(dir, contrastSceneJson(texture, wrap, filter, 7.3, camera),
+                            std::to_string(w) + "x" + std::to_string(h) + " " + wrap + " " + filter);
+      }
+    }
+  }
+}
+
+// Texture coordinates in the thousands and beyond (issue 22, class 4): a 4000-unit floor seen
+// from 0.3 above, uv up to 2000 and 1e5, every filter family and the uv view.
+TEST(TextureAgreement, LargeTextureCoordinates) {
+  const fs::path dir = caseDir("large_uv");
+  const std::string texture = writeContrastPng(dir, 64, 64);
+  const char* camera = R"({"position": [0, 0.3, 4], "target": [0, 0, -40], "fov_deg": 60, "near": 0.1, "far": 5000})";
+  for (const double uvScale : {400.0, 2000.0, 1e5}) {
+    for (const char* filter : {"nearest", "bilinear", "trilinear"}) {
+      std::string json = contrastSceneJson(texture, "repeat", filter, uvScale, camera);
+      json.replace(json.find("[20, 20]"), 8, "[4000, 4000]");
+      expectWithinTargets(dir, json, "uv_scale " + std::to_string(uvScale) + " " + filter);
+    }
+    std::string uvView = contrastSceneJson(texture, "repeat", "bilinear", uvScale, camera);
+    uvView.replace(uvView.find("[20, 20]"), 8, "[4000, 4000]");
+    uvView.replace(uvView.find(R"("texture_filter")"), 0, R"("view": "uv", )");
+    expectWithinTargets(dir, uvView, "uv view, uv_scale " + std::to_string(uvScale));
   }
 }
 
