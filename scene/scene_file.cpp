@@ -272,6 +272,11 @@ class SceneReader {
     if (!j.is_string() || j.get_ref<const std::string&>().empty()) {
       fail(path, "expected " + what + " (a non-empty string), got " + quote(j));
     }
+    // "\u0000" is valid JSON, but every file API would cut the name there and open another file.
+    if (j.get_ref<const std::string&>().find('\0') != std::string::npos) {
+      fail(path, "expected " + what + ", got a string containing a NUL character (\\u0000), which no file name or "
+                 "name can hold");
+    }
     return j.get<std::string>();
   }
 

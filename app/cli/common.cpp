@@ -20,21 +20,33 @@ void applyOverride(const std::string& text, const char* option, E& target, const
 
 }  // namespace
 
+// An override given with an empty value ("--view ''") is a mistake, not "the scene's own":
+// refused like any other value that names no setting.
+const CLI::Validator kNonEmpty(
+    [](std::string& value) { return value.empty() ? std::string("an empty value names no setting") : std::string(); },
+    "NONEMPTY");
+
 void addRenderOptions(CLI::App& cmd, RenderRequest& request) {
   cmd.add_option("scene", request.scenePath, "Scene file (JSON, see docs/scene-format.md)")->required();
   cmd.add_option("--width", request.width, "Image width in pixels (default: the scene's output.width)")
       ->check(CLI::Range(1, kMaxImageSide));
   cmd.add_option("--height", request.height, "Image height in pixels (default: the scene's output.height)")
       ->check(CLI::Range(1, kMaxImageSide));
-  cmd.add_option("--view", request.view, "Debug colour view: " + allViewNames() + " (default: the scene's)");
-  cmd.add_option("--cull", request.cull, "Override settings.cull: none|back|front");
-  cmd.add_option("--front-face", request.frontFace, "Override settings.front_face: ccw|cw");
-  cmd.add_option("--lighting-space", request.lightingSpace, "Override settings.lighting_space: world|tangent");
+  cmd.add_option("--view", request.view, "Debug colour view: " + allViewNames() + " (default: the scene's)")
+      ->check(kNonEmpty);
+  cmd.add_option("--cull", request.cull, "Override settings.cull: none|back|front")
+      ->check(kNonEmpty);
+  cmd.add_option("--front-face", request.frontFace, "Override settings.front_face: ccw|cw")
+      ->check(kNonEmpty);
+  cmd.add_option("--lighting-space", request.lightingSpace, "Override settings.lighting_space: world|tangent")
+      ->check(kNonEmpty);
   cmd.add_option("--tangent-transform", request.tangentTransform,
-                 "Override settings.tangent_transform: model|inverse_transpose");
+                 "Override settings.tangent_transform: model|inverse_transpose")
+      ->check(kNonEmpty);
   cmd.add_option("--filter", request.textureFilter,
                  "Override settings.texture_filter: nearest|bilinear|trilinear|nearest_mipmap_nearest|"
-                 "linear_mipmap_nearest|nearest_mipmap_linear");
+                 "linear_mipmap_nearest|nearest_mipmap_linear")
+      ->check(kNonEmpty);
   cmd.add_flag("--verbose,-v", request.verbose, "Print GL_VERSION, GL_RENDERER and timings on stderr");
 }
 

@@ -57,6 +57,22 @@ void expectRefused(const fs::path& dir, const std::string& sceneArgument, const 
   EXPECT_FALSE(fs::exists(png)) << "a refused render wrote an image";
 }
 
+// An override with an empty value names no setting (issue 22, class 15): exit 2 naming the
+// option, for each of them, rather than silently using the scene's own.
+TEST(CliHostile, EmptyOverrideValuesAreRefused) {
+  const fs::path dir = fs::path(TWINRASTER_TEST_OUT) / "cli_hostile_empty_overrides";
+  fs::create_directories(dir);
+  const std::string scene = quoted(fs::path(TWINRASTER_SOURCE_DIR) / "assets/scenes/default.json");
+  for (const char* option : {"--view", "--cull", "--front-face", "--lighting-space", "--tangent-transform", "--filter"}) {
+    const fs::path png = dir / "empty.png";
+    fs::remove(png);
+    const RunResult r = runCli("render " + scene + " " + option + " \"\" --out " + quoted(png), dir);
+    EXPECT_EQ(r.exitCode, 2) << option << ": " << r.err;
+    expectContains(r.err, std::string(option) + ": an empty value names no setting");
+    EXPECT_FALSE(fs::exists(png)) << option;
+  }
+}
+
 TEST(CliHostile, RealWorldObjSample) {
   if (!fs::is_directory(kAssimpObj)) {
     GTEST_SKIP() << kAssimpObj << " is missing: install Debian's assimp-testmodels (scripts/install-deps.sh does)";

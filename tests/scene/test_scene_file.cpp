@@ -49,6 +49,17 @@ std::string withMesh(const std::string& mesh) { return R"({"nodes": [{"name": "n
 
 // ---- bad input, one class per test ----
 
+// JSON may spell a NUL ("\u0000"); a file API would cut the name there and open a shorter
+// path (issue 22, class 14). Every path and name is refused with its key instead.
+TEST(SceneFileErrors, NulCharacterInAPathOrName) {
+  expectContains(parseError(R"({"materials": {"m": {"diffuse_map": "a.png\u0000.jpg"}}})"),
+                 {"materials.m.diffuse_map", "NUL character"});
+  expectContains(parseError(R"({"materials": {"m": {"normal_map": {"path": "\u0000"}}}})"),
+                 {"materials.m.normal_map.path", "NUL character"});
+  expectContains(parseError(withMesh(R"({"type": "obj", "path": "model.obj\u0000x"})")), {"mesh.path", "NUL character"});
+  expectContains(parseError(R"({"nodes": [{"name": "a\u0000b"}]})"), {"nodes[0].name", "NUL character"});
+}
+
 TEST(SceneFileErrors, MissingFile) {
   const std::string path = kDataDir + "no_such_scene.json";
   EXPECT_EQ(loadError(path), path + ": cannot open scene file (no such file)");
