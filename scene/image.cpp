@@ -21,15 +21,23 @@ namespace twr {
 namespace {
 
 constexpr unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+// The IHDR chunk follows the signature: length (4 bytes), "IHDR", width, height (big-endian).
+constexpr int kPngWidthAt = 16;
+constexpr int kPngSizeEnd = 24;
 constexpr unsigned char kJpegSignature[3] = {0xFF, 0xD8, 0xFF};
 
 bool startsWith(const std::uint8_t* bytes, std::size_t size, const unsigned char* signature, std::size_t length) {
   return size >= length && std::memcmp(bytes, signature, length) == 0;
 }
 
+// stb's failure reason, in words where its short codes would puzzle a user.
 std::string stbReason() {
   const char* reason = stbi_failure_reason();
-  return reason ? reason : "unknown";
+  if (!reason) return "unknown";
+  const std::string code = reason;
+  if (code == "outofdata") return "the file ends before its image data does: truncated";
+  if (code == "unknown image type") return "not a format stb_image reads, or a corrupt header";
+  return code;
 }
 
 constexpr unsigned char kBmpSignature[2] = {'B', 'M'};
@@ -468,6 +476,20 @@ namespace {
 // refused before any allocation. Returns the size stb will decode.
 void checkStbHeader(const std::uint8_t* bytes, int length, ImageFileFormat format, const std::string& name, int& width,
                     int& height) {
+  // A PNG's size sits at a fixed place in its first chunk: checked here, because stb's header
+  // reader refuses 0 or huge sizes with the reason of the last format it tried.
+  if (format == ImageFileFormat::Png && length >= kPngSizeEnd) {
+    const auto bigEndian = [&](int at) {
+      return (std::uint32_t{bytes[at]} << 24) | (std::uint32_t{bytes[at + 1]} << 16) |
+             (std::uint32_t{bytes[at + 2]} << 8) | std::uint32_t{bytes[at + 3]};
+    };
+    const std::uint32_t declaredWidth = bigEndian(kPngWidthAt), declaredHeight = bigEndian(kPngWidthAt + 4);
+    if (declaredWidth == 0 || declaredHeight == 0 || declaredWidth > static_cast<std::uint32_t>(kMaxImageSide) ||
+        declaredHeight > static_cast<std::uint32_t>(kMaxImageSide)) {
+      throw InputError(name + ": image is " + std::to_string(declaredWidth) + "x" + std::to_string(declaredHeight) +
+                       ", expected each side in [1, " + std::to_string(kMaxImageSide) + "]");
+    }
+  }
   int channels = 0;
   if ((format == ImageFileFormat::Tga && !looksLikeTga(bytes, static_cast<std::size_t>(length))) ||
       !stbi_info_from_memory(bytes, length, &width, &height, &channels)) {
@@ -582,14 +604,18 @@ ImageF decodeHdrImage(const std::uint8_t* bytes, std::size_t size, const std::st
 
 ImageF loadHdrImage(const std::string& path) {
   std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path + ": image file not found");
+  // Not there at all; a path that cannot be looked up (a symlink loop, a name too long) is
+  // left to readFileCapped, which says why.
+  if (!std::filesystem::exists(path, ec) && !ec) throw InputError(path + ": image file not found");
   const std::string bytes = readFileCapped(path, kMaxImageFileBytes, "image file");
   return decodeHdrImage(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), path);
 }
 
 Image loadPng(const std::string& path) {
   std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path + ": image file not found");
+  // Not there at all; a path that cannot be looked up (a symlink loop, a name too long) is
+  // left to readFileCapped, which says why.
+  if (!std::filesystem::exists(path, ec) && !ec) throw InputError(path + ": image file not found");
   const std::string bytes = readFileCapped(path, kMaxImageFileBytes, "image file");
   return decodeImage(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), path);
 }

@@ -28,6 +28,10 @@ std::string readFileCapped(const std::string& path, std::uintmax_t maxBytes, con
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
+  // A symlink loop or a name too long is not "no such file": say what the system said.
+  if (ec && ec != std::errc::no_such_file_or_directory) {
+    throw InputError(path + ": cannot open " + what + " (" + ec.message() + ")");
+  }
   if (!fs::exists(status)) throw InputError(path + ": cannot open " + what + " (no such file)");
   if (fs::is_directory(status)) throw InputError(path + ": cannot open " + what + " (it is a directory)");
   if (!fs::is_regular_file(status)) throw InputError(path + ": cannot open " + what + " (not a regular file)");

@@ -222,7 +222,9 @@ std::uintmax_t textureTexelBytes(const Texture& texture) {
 
 Texture loadTexture(const std::string& path, const TextureOptions& options, std::uintmax_t& budgetBytes) {
   std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path + ": image file not found");
+  // Not there at all; a path that cannot be looked up (a symlink loop, a name too long) is
+  // left to readFileCapped, which says why.
+  if (!std::filesystem::exists(path, ec) && !ec) throw InputError(path + ": image file not found");
   const std::string bytes = readFileCapped(path, kMaxImageFileBytes, "image file");
   const auto* data = reinterpret_cast<const std::uint8_t*>(bytes.data());
   int width = 0, height = 0;

@@ -226,10 +226,16 @@ TEST(HostilePng, HugeSizeInTheHeaderIsRefusedBeforeDecoding) {
       EXPECT_EQ(message, path + ": image is " + std::to_string(side) + "x2, expected each side in [1, 16384]");
     }
   }
+  // A side of 0 is the same size limit, not "unknown image type" (issue 22, class 15).
   PngSpec zero = rgba4x2();
   zero.height = 0;
   const std::string path = writeFile(dir / "zero_height.png", makePng(zero));
-  expectStartsWith(errorOf([&] { loadPng(path); }), path + ": not a readable image");
+  EXPECT_EQ(errorOf([&] { loadPng(path); }), path + ": image is 4x0, expected each side in [1, 16384]");
+  // Huge on both sides (stb gave the reason of the last format it tried).
+  PngSpec huge = rgba4x2();
+  huge.width = huge.height = 100000;
+  const std::string hugePath = writeFile(dir / "huge.png", makePng(huge));
+  EXPECT_EQ(errorOf([&] { loadPng(hugePath); }), hugePath + ": image is 100000x100000, expected each side in [1, 16384]");
 }
 
 TEST(HostilePng, SixteenBitKeepsTheHighByte) {
@@ -570,6 +576,23 @@ TEST(HostilePng, SpecialFilesAreRefused) {
     EXPECT_EQ(errorOf([&] { loadPng("/dev/zero"); }), "/dev/zero: cannot open image file (not a regular file)");
   }
   EXPECT_EQ(errorOf([&] { loadPng((dir / "missing.png").string()); }), (dir / "missing.png").string() + ": image file not found");
+  // A path the system cannot look up is not "not found": the reason is named (issue 22, class 15).
+  std::error_code ec;
+  fs::remove(dir / "loop_a", ec);
+  fs::remove(dir / "loop_b", ec);
+  fs::create_symlink(dir / "loop_b", dir / "loop_a");
+  fs::create_symlink(dir / "loop_a", dir / "loop_b");
+  expectContains(errorOf([&] { loadPng((dir / "loop_a").string()); }), {"cannot open image file (", "symbolic links"});
+  const std::string tooLong = (dir / (std::string(300, 'a') + ".png")).string();
+  expectContains(errorOf([&] { loadPng(tooLong); }), {"cannot open image file (", "too long"});
+}
+
+// A truncated PNG says so in words, not stb's code "outofdata" (issue 22, class 15).
+TEST(HostilePng, TruncatedImageDataIsNamedInWords) {
+  const fs::path dir = caseDir();
+  const Bytes png = makePng(rgba4x2());
+  const std::string path = writeFile(dir / "cut.png", Bytes(png.begin(), png.begin() + 60));
+  expectContains(errorOf([&] { loadPng(path); }), {path + ": ", "truncated"});
 }
 
 TEST(HostilePng, TextureBudgetRefusesBeforeDecoding) {
