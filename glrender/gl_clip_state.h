@@ -4,7 +4,7 @@
 // clip-space clip distance in slot 0 (w + z >= 0 for near, w - z >= 0 for far), applied
 // after the x/y planes and before the user planes, as the CPU's clipper orders them.
 // The user planes then take slots 1..count; with all kMaxUserClipPlanes (8) slots in use
-// there is no room and both near and far stay off (docs/gl-path.md).
+// there is no room: such settings are refused before drawing (clipSlotProblem, scene/settings.h).
 #pragma once
 
 // No GL header here: tbn_lines_immediate.cpp includes this beside the compatibility loader.

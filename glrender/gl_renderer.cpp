@@ -137,6 +137,7 @@ void validateRequest(const Scene& scene, const RenderSettings& settings, int wid
     throw InputError("GL: scene '" + scene.sourcePath + "' has " + std::to_string(settings.userClipPlanes.size()) +
                      " user clip planes, at most " + std::to_string(kMaxUserClipPlanes) + " are supported");
   }
+  if (const std::string problem = clipSlotProblem(settings); !problem.empty()) throw InputError("GL: " + problem);
   if (settings.tbnLines.enabled && !(settings.tbnLines.length >= 0.0f && std::isfinite(settings.tbnLines.length))) {
     throw InputError("GL: tbn_lines.length " + std::to_string(settings.tbnLines.length) +
                      ", expected a finite length >= 0 in world units");

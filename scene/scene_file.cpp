@@ -457,6 +457,9 @@ class SceneReader {
     if (const Json* v = find(j, "front_face")) s.frontFace = readEnum<FrontFace>(*v, childPath(path, "front_face"));
     if (const Json* v = find(j, "clip")) readClip(*v, childPath(path, "clip"));
     if (const Json* v = find(j, "user_clip_planes")) readClipPlanes(*v, childPath(path, "user_clip_planes"));
+    if (const std::string problem = clipSlotProblem(s); !problem.empty()) {
+      fail(childPath(path, "user_clip_planes"), problem);
+    }
     if (const Json* v = find(j, "view")) s.view = readEnum<View>(*v, childPath(path, "view"));
     if (const Json* v = find(j, "lighting_space")) s.lightingSpace = readEnum<LightingSpace>(*v, childPath(path, "lighting_space"));
     if (const Json* v = find(j, "tangent_transform")) {

@@ -74,6 +74,16 @@ bool parse(std::string_view s, TangentTransform& out) { return valueOf(kTangent,
 bool parse(std::string_view s, TextureFilter& out) { return valueOf(kFilter, s, out) || valueOf(kFilterAliases, s, out); }
 bool parse(std::string_view s, LineMode& out) { return valueOf(kLine, s, out); }
 
+std::string clipSlotProblem(const RenderSettings& settings) {
+  const bool oneDepthPlane = settings.clip.near != settings.clip.far;
+  const std::size_t slots = static_cast<std::size_t>(kMaxUserClipPlanes) - (oneDepthPlane ? 1u : 0u);
+  if (settings.userClipPlanes.size() <= slots) return {};
+  return std::to_string(settings.userClipPlanes.size()) + " user clip planes with only the " +
+         (settings.clip.near ? "near" : "far") + " plane on: GL has " + std::to_string(kMaxUserClipPlanes) +
+         " clip distances and that plane takes one, so at most " + std::to_string(slots) +
+         " user planes fit (switch near and far both on or both off, or drop a plane)";
+}
+
 std::string allViewNames() {
   std::string names;
   for (const auto& [v, name] : kView) {

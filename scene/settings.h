@@ -79,6 +79,13 @@ bool parse(std::string_view s, TangentTransform& out);
 bool parse(std::string_view s, TextureFilter& out);
 bool parse(std::string_view s, LineMode& out);
 
+// GL has kMaxUserClipPlanes clip distances. Near or far switched on alone needs one of them
+// (depth clamp turns both off, the one still on comes back as a clip distance,
+// glrender/gl_clip_state.h), so then at most kMaxUserClipPlanes - 1 user planes fit. Empty
+// when the settings fit, else why not: both renderers refuse such settings rather than draw
+// two different scenes.
+std::string clipSlotProblem(const RenderSettings& settings);
+
 // "shaded|albedo|..." for help texts and error messages.
 std::string allViewNames();
 inline constexpr View kAllViews[] = {View::Shaded, View::Albedo, View::Normal, View::Tangent, View::Bitangent,

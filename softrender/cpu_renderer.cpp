@@ -73,6 +73,8 @@ class CpuRenderer final : public Renderer {
 
   RenderOutput render(const Scene& scene, const RenderSettings& settings, int width, int height) override {
     validateImageSize(width, height);
+    // What GL cannot draw is refused here too, so the two never draw different scenes.
+    if (const std::string problem = clipSlotProblem(settings); !problem.empty()) throw InputError("CPU: " + problem);
     const auto start = std::chrono::steady_clock::now();
     RenderStats stats;
     if (options_.path == CpuPath::Fast && !fast_) {

@@ -151,12 +151,18 @@ void GuiApp::drawRenderingTab() {
     settings.userClipPlanes.erase(settings.userClipPlanes.begin() + removeIndex);
     changed = true;
   }
-  ImGui::BeginDisabled(settings.userClipPlanes.size() >= static_cast<std::size_t>(kMaxUserClipPlanes));
+  // GL's clip distances are shared with a lone near or far plane (scene/settings.h).
+  RenderSettings withOneMore = settings;
+  withOneMore.userClipPlanes.push_back(kNewUserPlane);
+  ImGui::BeginDisabled(!clipSlotProblem(withOneMore).empty());
   if (ImGui::Button("Add plane")) {
     settings.userClipPlanes.push_back(kNewUserPlane);
     changed = true;
   }
   ImGui::EndDisabled();
+  if (const std::string problem = clipSlotProblem(settings); !problem.empty()) {
+    hintText(("Neither backend draws this: " + problem + ".").c_str());
+  }
 
   sectionTitle("Shading");
   changed |= enumRadio("Lighting space", settings.lightingSpace, kLightingSpaces, labelWidth,

@@ -60,6 +60,35 @@ TEST(SceneFileErrors, NulCharacterInAPathOrName) {
   expectContains(parseError(R"({"nodes": [{"name": "a\u0000b"}]})"), {"nodes[0].name", "NUL character"});
 }
 
+// GL has 8 clip distances; near or far on alone takes one (issue 22, class 1): 8 user planes
+// then do not fit, and the file is refused with the limit rather than drawn two ways.
+TEST(SceneFileErrors, UserClipPlanesBeyondGlsClipDistances) {
+  std::string planes = "[";
+  for (int i = 0; i < 8; ++i) planes += std::string(i ? ", " : "") + "[0, 1, 0, " + std::to_string(i + 1) + "]";
+  planes += "]";
+  for (const char* clip : {R"({"near": true, "far": false})", R"({"near": false, "far": true})"}) {
+    expectContains(parseError(std::string(R"({"settings": {"clip": )") + clip + R"(, "user_clip_planes": )" + planes + "}}"),
+                   {"settings.user_clip_planes", "at most 7 user planes fit"});
+  }
+  // Both on or both off: all 8 fit; 7 with one of them on fit too.
+  for (const char* clip : {R"({"near": true, "far": true})", R"({"near": false, "far": false})"}) {
+    EXPECT_NO_THROW(parseScene(std::string(R"({"nodes": [], "settings": {"clip": )") + clip + R"(, "user_clip_planes": )" +
+                                   planes + "}}",
+                               kInline, kDataDir));
+  }
+  const std::string seven = planes.substr(0, planes.rfind(", [")) + "]";
+  EXPECT_NO_THROW(parseScene(std::string(R"({"nodes": [], "settings": {"clip": {"far": false}, "user_clip_planes": )") +
+                                 seven + "}}",
+                             kInline, kDataDir));
+  // Settings made in code (the GUI) are refused by both renderers' checks alike.
+  RenderSettings settings;
+  settings.clip.far = false;
+  settings.userClipPlanes.assign(8, vec4(0.0f, 1.0f, 0.0f, 1.0f));
+  EXPECT_NE(clipSlotProblem(settings), "");
+  settings.clip.near = false;
+  EXPECT_EQ(clipSlotProblem(settings), "");
+}
+
 TEST(SceneFileErrors, MissingFile) {
   const std::string path = kDataDir + "no_such_scene.json";
   EXPECT_EQ(loadError(path), path + ": cannot open scene file (no such file)");
