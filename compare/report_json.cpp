@@ -1,5 +1,7 @@
 #include "compare/report_json.h"
 
+#include "scene/json_text.h"
+
 #include "scene/errors.h"
 
 #include <filesystem>
@@ -81,11 +83,25 @@ void writeJsonFile(const std::string& path, const nlohmann::json& json) {
   const std::filesystem::path parent = std::filesystem::path(path).parent_path();
   std::error_code ec;
   if (!parent.empty()) std::filesystem::create_directories(parent, ec);
-  std::ofstream file(path, std::ios::binary | std::ios::trunc);
-  if (!file) throw InputError(path + ": cannot open for writing");
-  file << json.dump(kJsonIndent) << '\n';
-  file.close();
-  if (!file) throw InputError(path + ": cannot write JSON");
+  // The whole text first (invalid UTF-8 in names replaced, so it cannot throw half-way), then
+  // written beside the target and renamed over it: a failed run leaves no truncated file.
+  const std::string text = jsonText(json, kJsonIndent) + "\n";
+  const std::string partial = path + ".partial";
+  {
+    std::ofstream file(partial, std::ios::binary | std::ios::trunc);
+    if (!file) throw InputError(path + ": cannot open for writing");
+    file << text;
+    file.close();
+    if (!file) {
+      std::filesystem::remove(partial, ec);
+      throw InputError(path + ": cannot write JSON");
+    }
+  }
+  std::filesystem::rename(partial, path, ec);
+  if (ec) {
+    std::filesystem::remove(partial, ec);
+    throw InputError(path + ": cannot write JSON");
+  }
 }
 
 }  // namespace twr

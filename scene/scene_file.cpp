@@ -1,6 +1,7 @@
 // JSON scene files; docs/scene-format.md is the contract. Every value is checked where it
 // is read, so each message names the file, the JSON path of the value and what was expected.
 #include "scene/scene_file.h"
+#include "scene/json_text.h"
 
 #include "scene/errors.h"
 #include "scene/obj_loader.h"
@@ -51,7 +52,7 @@ std::string childPath(const std::string& path, const std::string& key) {
   const bool plain = !key.empty() && std::all_of(key.begin(), key.end(), [](char c) {
     return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
   });
-  if (!plain) return path + "[" + Json(key).dump() + "]";
+  if (!plain) return path + "[" + jsonText(Json(key)) + "]";
   return path.empty() ? key : path + "." + key;
 }
 
@@ -551,7 +552,7 @@ class SceneReader {
   std::string definedMaterials() const {
     if (scene_.materials.empty()) return "no materials are defined in \"materials\"";
     std::string names;
-    for (const Material& m : scene_.materials) names += (names.empty() ? "" : ", ") + Json(m.name).dump();
+    for (const Material& m : scene_.materials) names += (names.empty() ? "" : ", ") + jsonText(Json(m.name));
     return "defined: " + names;
   }
 

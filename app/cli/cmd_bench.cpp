@@ -24,6 +24,7 @@
 // GALLIVM_PERF once per process, so --gl-precise re-runs this command in a child process of
 // /proc/self/exe that times only the precise mode, and merges its figures (gl_precise_*).
 #include "app/cli/commands.h"
+#include "scene/json_text.h"
 #include "app/cli/common.h"
 #include "glrender/gl_renderer.h"
 #include "scene/errors.h"
@@ -374,7 +375,7 @@ void runPreciseChild(const BenchArgs& args, const Scene& scene, int width, int h
   Json json;
   addTiming(json, "gl_precise", summarise(ms, processMs));
   json["gl_sampling"] = glSamplingMode();
-  std::cout << json.dump() << "\n";
+  std::cout << jsonText(json) << "\n";
 }
 
 // One fast-path renderer of --all-isas and its frame times (milliseconds).
@@ -519,7 +520,7 @@ void runBench(BenchArgs args) {
   if (!note.empty()) json["note"] = note;
 
   if (args.json) {
-    std::cout << json.dump(2) << "\n";
+    std::cout << jsonText(json, 2) << "\n";
   } else {
     printText(json, cpuTiming, glTiming, glLeanTiming, glPreciseTiming);
   }

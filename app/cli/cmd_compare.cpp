@@ -2,6 +2,7 @@
 // measure the per-pixel difference, write the images and metrics.json, and optionally fail
 // (exit 1) over thresholds.
 #include "app/cli/commands.h"
+#include "scene/json_text.h"
 #include "app/cli/common.h"
 #include "compare/artifacts.h"
 #include "compare/metrics.h"
@@ -139,7 +140,7 @@ void runCompare(CompareArgs& args) {
   const ArtifactPaths paths = writeCompareArtifacts(args.outDir, cpuOut, glOut, result, json);
 
   if (args.json) {
-    std::cout << json.dump(2) << "\n";
+    std::cout << jsonText(json, 2) << "\n";
   } else {
     printSummary(result.metrics, json, paths);
   }

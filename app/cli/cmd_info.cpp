@@ -4,6 +4,7 @@
 // every target this binary and this CPU can run; with --gl, every headless GL context this
 // machine offers (OSMesa, EGL's surfaceless platform, each EGL device) and what GL it gives.
 #include "app/cli/commands.h"
+#include "scene/json_text.h"
 #include "app/cli/common.h"
 #include "glrender/gl_renderer.h"
 #include "scene/errors.h"
@@ -411,7 +412,7 @@ const bool registered = registerCommand(10, [](CLI::App& app) {
       Json j = scene ? sceneJson(*scene) : Json::object();
       addCpuJson(j);
       if (request->gl) j["gl_contexts"] = glContextsJson(probes);
-      std::cout << j.dump(2) << "\n";
+      std::cout << jsonText(j, 2) << "\n";
     } else {
       if (scene) printScene(std::cout, *scene);
       printCpu(std::cout);

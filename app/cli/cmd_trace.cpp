@@ -5,6 +5,7 @@
 // for any other choice the final pixel is rendered again here on the requested path and
 // replaces it (one extra frame; every path draws the same bits, the tests check it).
 #include "app/cli/commands.h"
+#include "scene/json_text.h"
 #include "app/cli/common.h"
 #include "scene/errors.h"
 #include "softrender/cpu_renderer.h"
@@ -54,7 +55,7 @@ void runTrace(const TraceArgs& args) {
   if (args.json) {
     nlohmann::json json = pixelTraceToJson(trace);
     json["cpu_path"] = path;  // the render the final pixel comes from
-    std::cout << json.dump(2) << "\n";
+    std::cout << jsonText(json, 2) << "\n";
   } else {
     std::cout << formatPixelTrace(trace) << "final pixel rendered by the cpu path: " << path << "\n";
   }

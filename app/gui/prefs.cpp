@@ -1,4 +1,5 @@
 #include "app/gui/prefs.h"
+#include "scene/json_text.h"
 #include "app/gui/scene_picker.h"
 
 #include <nlohmann/json.hpp>
@@ -175,7 +176,7 @@ bool savePrefs(const std::filesystem::path& path, const GuiPrefs& prefs, std::st
     error = path.string() + ": cannot write the settings file";
     return false;
   }
-  out << object.dump(2) << "\n";
+  out << jsonText(object, 2) << "\n";
   return static_cast<bool>(out);
 }
 

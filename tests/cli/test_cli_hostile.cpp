@@ -10,6 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <fstream>
+#include <iterator>
+
 namespace twr::testcli {
 namespace {
 
@@ -71,6 +74,30 @@ TEST(CliHostile, EmptyOverrideValuesAreRefused) {
     expectContains(r.err, std::string(option) + ": an empty value names no setting");
     EXPECT_FALSE(fs::exists(png)) << option;
   }
+}
+
+// A scene file whose name is not UTF-8 (issue 22, class 13): the JSON outputs replace the bad
+// byte (U+FFFD) instead of ending in nlohmann's type_error with a 0-byte metrics.json.
+TEST(CliHostile, NonUtf8SceneNameInJsonOutputs) {
+  const fs::path dir = fs::path(TWINRASTER_TEST_OUT) / "cli_hostile_non_utf8";
+  fs::create_directories(dir);
+  std::ifstream in(fs::path(TWINRASTER_SOURCE_DIR) / "assets/scenes/default.json", std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string textures = (fs::path(TWINRASTER_SOURCE_DIR) / "assets/textures/").string();
+  for (std::size_t at = text.find("../textures/"); at != std::string::npos; at = text.find("../textures/", at)) {
+    text.replace(at, 12, textures);
+  }
+  const fs::path scene = dir / std::string("scene\xff\xfe.json");
+  writeText(scene, text);
+  const RunResult compare = runCli("compare " + quoted(scene) + " --width 64 --height 48 --out-dir " + quoted(dir / "out"), dir);
+  EXPECT_EQ(compare.exitCode, 0) << compare.err;
+  std::ifstream metricsFile(dir / "out" / "metrics.json");
+  const nlohmann::json metrics = nlohmann::json::parse(metricsFile, nullptr, false);
+  ASSERT_FALSE(metrics.is_discarded()) << "metrics.json is not JSON";
+  EXPECT_NE(metrics.value("scene", std::string()).find("\xEF\xBF\xBD"), std::string::npos) << "expected U+FFFD";
+  const RunResult info = runCli("info --json " + quoted(scene), dir);
+  EXPECT_EQ(info.exitCode, 0) << info.err;
+  EXPECT_FALSE(nlohmann::json::parse(info.out, nullptr, false).is_discarded()) << info.out.substr(0, 200);
 }
 
 TEST(CliHostile, RealWorldObjSample) {
