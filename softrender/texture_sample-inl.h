@@ -280,7 +280,9 @@ TWR_LANE_OUTLINE Vec4L<L> sampleEwaLevelLanes(const View& texture, int level, co
   // Texel indices stay exact in float (and the loops finite) below 2^22 texels; a lane beyond
   // that, or with a non-finite box, reads nothing and falls back to bilinear.
   const L limit(static_cast<S>(kMaxEwaHalfExtent)), farthest(S(4194304));
-  const auto usable = lanes & isFinite(boxU) & isFinite(boxV) & (absOf(texU) < farthest) & (absOf(texV) < farthest);
+  const auto finiteU = isFinite(boxU), finiteV = isFinite(boxV);  // named: masks combine with &, never &&
+  const auto nearU = absOf(texU) < farthest, nearV = absOf(texV) < farthest;
+  const auto usable = lanes & finiteU & finiteV & nearU & nearV;
   boxU = select(usable, minOf(boxU, limit), zero);
   boxV = select(usable, minOf(boxV, limit), zero);
   // An unused lane's box is empty: last < first.
