@@ -77,6 +77,9 @@ RenderSettings randomSettings(ByteReader& r) {
     if (vec3(plane) == vec3(0.0f)) plane.z = 1.0f;  // the loader refuses a zero normal
     s.userClipPlanes.push_back(plane);
   }
+  // Settings GL cannot draw are refused by both renderers (clipSlotProblem); keep to those
+  // they draw, as the scene loader does.
+  while (!clipSlotProblem(s).empty()) s.userClipPlanes.pop_back();
   s.view = kAllViews[static_cast<std::size_t>(r.intIn(0, static_cast<int>(std::size(kAllViews)) - 1))];
   s.lightingSpace = static_cast<LightingSpace>(r.intIn(0, 1));
   s.tangentTransform = static_cast<TangentTransform>(r.intIn(0, 1));
