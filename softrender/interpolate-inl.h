@@ -90,11 +90,15 @@ TWR_LANE_INLINE L planeAtLanes(const AttributePlaneL<L>& p, const L& px, const L
 
 // The uv at pixel (px, py), covered or not (a helper pixel of a quad): (u/w, v/w) times the
 // reciprocal of 1/w.
+// A non-finite result (a plane overflowing float on extreme inputs, or 1/w rounding to 0 at a
+// helper pixel) becomes 0, which is how llvmpipe's sampler reads such a coordinate anyway.
 template <typename L>
 TWR_LANE_INLINE Vec2L<L> uvAtPixelLanes(const UvPlanesL<L>& s, const L& px, const L& py) {
   using S = ScalarOf<L>;
+  const L zero(S(0));
   const L w = L(S(1)) / planeAtLanes<L>(s.oneOverW, px, py);
-  return Vec2L<L>(planeAtLanes<L>(s.uOverW, px, py) * w, planeAtLanes<L>(s.vOverW, px, py) * w);
+  const L u = planeAtLanes<L>(s.uOverW, px, py) * w, v = planeAtLanes<L>(s.vOverW, px, py) * w;
+  return Vec2L<L>(select(isFinite(u), u, zero), select(isFinite(v), v, zero));
 }
 
 // A window depth as GL stores it: rounded to L, clamped to [0, 1], 1 if not finite.
