@@ -212,8 +212,7 @@ class GlRenderer final : public Renderer {
     const mat4 clipFromWorld = clipFromViewMatrix * viewFromWorldMatrix;
     std::vector<DrawItem> items = flattenScene(scene);
     RenderSettings drawSettings = settings;
-    MipLevelView mipLevelView;  // owns the stand-in materials while they are drawn
-    if (settings.view == View::MipLevel) mipLevelView = applyMipLevelView(items, drawSettings);
+    const MipLevelView mipLevelView = applyMipLevelView(items, drawSettings);  // owns stand-ins while drawn
 
     device.targets.prepare(width, height);
     device.targets.bind();

@@ -118,6 +118,7 @@ std::shared_ptr<const Texture> mipLevelTexture(const Texture& like) {
 
 MipLevelView applyMipLevelView(std::vector<DrawItem>& items, RenderSettings& settings) {
   MipLevelView view;
+  if (settings.view != View::MipLevel) return view;
   std::map<const Material*, const Material*> standIns;
   for (DrawItem& item : items) {
     auto [at, inserted] = standIns.emplace(item.material, nullptr);

@@ -45,7 +45,7 @@ std::shared_ptr<const Texture> mipLevelTexture(const Texture& like);
 struct MipLevelView {
   std::vector<std::unique_ptr<Material>> materials;
 };
-// Points every item at its material's mip_level stand-in (kd = ka = 1, no specular, the first
+// For settings.view == MipLevel (else nothing): points every item at its material's mip_level stand-in (kd = ka = 1, no specular, the first
 // map replaced by mipLevelTexture, no other map; no map at all: kd = kNoMapColour) and sets
 // the view to albedo. Keep the returned storage alive while the items are drawn.
 MipLevelView applyMipLevelView(std::vector<DrawItem>& items, RenderSettings& settings);

@@ -85,8 +85,7 @@ class CpuRenderer final : public Renderer {
     const mat4 clipFromWorld = clipFromWorldFor(scene.camera, width, height);
     std::vector<DrawItem> drawItems = flattenScene(scene);
     RenderSettings drawSettings = settings;
-    MipLevelView mipLevelView;  // owns the stand-in materials while they are drawn
-    if (settings.view == View::MipLevel) mipLevelView = applyMipLevelView(drawItems, drawSettings);
+    const MipLevelView mipLevelView = applyMipLevelView(drawItems, drawSettings);  // owns stand-ins while drawn
     std::vector<ItemState> items;
     items.reserve(drawItems.size());
     for (const DrawItem& item : drawItems) {

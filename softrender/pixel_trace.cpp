@@ -172,8 +172,7 @@ PixelTrace tracePixel(const Scene& scene, const RenderSettings& requested, int w
   const mat4 clipFromWorld = clipFromWorldFor(scene.camera, width, height);
   float depth = kClearDepth;
   std::vector<DrawItem> items = flattenScene(scene);
-  MipLevelView mipLevelView;  // owns the stand-in materials while they are traced
-  if (settings.view == View::MipLevel) mipLevelView = applyMipLevelView(items, settings);
+  const MipLevelView mipLevelView = applyMipLevelView(items, settings);  // owns stand-ins while traced
   for (const DrawItem& item : items) {
     const VertexUniforms vertexUniforms = makeVertexUniforms(item.worldFromModel, clipFromWorld, scene, settings);
     const ShadeUniforms shadeUniforms = makeShadeUniforms(*item.material, scene, settings);

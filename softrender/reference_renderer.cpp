@@ -121,8 +121,7 @@ class ReferenceRenderer final : public Renderer {
     const auto start = std::chrono::steady_clock::now();
     std::vector<DrawItem> items = flattenScene(scene);
     RenderSettings settings = requested;
-    MipLevelView mipLevelView;  // owns the stand-in materials while they are drawn
-    if (requested.view == View::MipLevel) mipLevelView = applyMipLevelView(items, settings);
+    const MipLevelView mipLevelView = applyMipLevelView(items, settings);  // owns stand-ins while drawn
     const std::vector<glm::dmat4> worldFromModel = referenceWorldFromModel(scene);
     for (const DrawItem& item : items) validateIndices(item);
     const glm::dmat4 clipFromWorldCentre = referenceClipFromWorld(scene.camera, width, height);

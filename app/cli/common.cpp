@@ -18,13 +18,13 @@ void applyOverride(const std::string& text, const char* option, E& target, const
   }
 }
 
-}  // namespace
-
 // An override given with an empty value ("--view ''") is a mistake, not "the scene's own":
 // refused like any other value that names no setting.
 const CLI::Validator kNonEmpty(
     [](std::string& value) { return value.empty() ? std::string("an empty value names no setting") : std::string(); },
     "NONEMPTY");
+
+}  // namespace
 
 void addRenderOptions(CLI::App& cmd, RenderRequest& request) {
   cmd.add_option("scene", request.scenePath, "Scene file (JSON, see docs/scene-format.md)")->required();
