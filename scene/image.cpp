@@ -185,18 +185,21 @@ std::vector<std::uint8_t> withFullPalette(const std::uint8_t* bytes, std::size_t
 // stb_image copies each IDAT chunk's data into a buffer it allocates on the first non-empty
 // one: an empty first IDAT makes it memcpy 0 bytes to a null pointer (undefined behaviour,
 // found by fuzzing under UBSan). Empty IDAT chunks carry nothing, so they are dropped: returns
-// a copy without them, or an empty vector when there are none.
+// a copy without them, or an empty vector when there are none. stb reads a chunk whose CRC is
+// cut off by the end of the file (the missing bytes read as 0), so an empty IDAT needs only
+// its length and type to count (found by fuzzing: a file ending 4 bytes into one).
 std::vector<std::uint8_t> withoutEmptyImageData(const std::uint8_t* bytes, std::size_t size) {
+  constexpr std::size_t kLengthAndType = 8;  // bytes
   std::vector<std::uint8_t> out;
   std::size_t copiedUpTo = 0;
   std::size_t at = sizeof kPngSignature;
-  while (size - at >= kPngChunkOverhead) {
+  while (size - at >= kLengthAndType) {
     const std::uint32_t length = readBigEndian32(bytes + at);
-    if (length > size - at - kPngChunkOverhead) break;  // malformed: stb reports it
     if (length == 0 && std::memcmp(bytes + at + 4, "IDAT", 4) == 0) {
       out.insert(out.end(), bytes + copiedUpTo, bytes + at);
-      copiedUpTo = at + kPngChunkOverhead;
+      copiedUpTo = std::min(size, at + kPngChunkOverhead);
     }
+    if (size - at < kPngChunkOverhead || length > size - at - kPngChunkOverhead) break;  // malformed: stb reports it
     at += kPngChunkOverhead + length;
   }
   if (copiedUpTo == 0) return {};
