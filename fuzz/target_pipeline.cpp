@@ -12,6 +12,7 @@
 #include "fuzz/targets.h"
 
 #include "scene/primitives.h"
+#include "scene/projection_checks.h"
 #include "scene/scene_file.h"
 #include "softrender/clip.h"
 #include "softrender/cpu_renderer.h"
@@ -215,13 +216,13 @@ void renderRandomScene(ByteReader& r) {
   CpuOptions options;
   options.threads = r.intIn(1, 3);
   Scene scene = randomScene(r);
-  if (!validateCamera(scene.camera).empty()) {
+  if (!projectionProblem(scene, width, height).empty()) {  // includes validateCamera
     try {
       makeCpuRenderer(options)->render(scene, scene.settings, width, height);
     } catch (const InputError&) {
       return;  // refused, as it should be
     }
-    throw InvariantViolation("the renderer drew with a camera validateCamera refuses");
+    throw InvariantViolation("the renderer drew a scene projectionProblem refuses");
   }
   const std::size_t triangles = countTriangles(scene);
   const RenderOutput output = makeCpuRenderer(options)->render(scene, scene.settings, width, height);

@@ -5,6 +5,7 @@
 #include "glrender/gl_renderer.h"
 
 #include "scene/mip_level_view.h"
+#include "scene/projection_checks.h"
 
 #include "glrender/context_egl.h"
 #include "glrender/context_osmesa.h"
@@ -138,6 +139,9 @@ void validateRequest(const Scene& scene, const RenderSettings& settings, int wid
                      " user clip planes, at most " + std::to_string(kMaxUserClipPlanes) + " are supported");
   }
   if (const std::string problem = clipSlotProblem(settings); !problem.empty()) throw InputError("GL: " + problem);
+  if (const std::string problem = projectionProblem(scene, width, height); !problem.empty()) {
+    throw InputError("GL: " + problem);
+  }
   if (settings.tbnLines.enabled && !(settings.tbnLines.length >= 0.0f && std::isfinite(settings.tbnLines.length))) {
     throw InputError("GL: tbn_lines.length " + std::to_string(settings.tbnLines.length) +
                      ", expected a finite length >= 0 in world units");

@@ -16,10 +16,11 @@ std::string validateCamera(const Camera& camera) {
   if (!(camera.near > 0.0f)) return "near must be > 0";
   if (!(camera.far > camera.near)) return "far must be > near";
   if (!(camera.fovDeg > 0.0f && camera.fovDeg < 180.0f)) return "fov_deg must be in (0, 180)";
-  const vec3 toEye = camera.position - camera.target;
-  const float length = glm::length(toEye);
-  if (!(length > 0.0f) || !std::isfinite(length)) return "position and target must differ";
-  if (glm::length(glm::cross(kWorldUp, toEye / length)) < kMinSineToUp) {
+  // In double: a float length squares the coordinates, which overflows from about 1.8e19.
+  const glm::dvec3 toEye = glm::dvec3(camera.position) - glm::dvec3(camera.target);
+  const double length = glm::length(toEye);
+  if (!(length > 0.0) || !std::isfinite(length)) return "position and target must differ";
+  if (glm::length(glm::cross(glm::dvec3(kWorldUp), toEye / length)) < kMinSineToUp) {
     return "position - target must not be parallel to the world up (0,1,0)";
   }
   return {};
@@ -27,8 +28,11 @@ std::string validateCamera(const Camera& camera) {
 
 mat4 viewFromWorld(const Camera& camera) {
   if (std::string error = validateCamera(camera); !error.empty()) throw InputError("camera: " + error);
-  const vec3 d = glm::normalize(camera.position - camera.target);
-  const vec3 r = glm::normalize(glm::cross(kWorldUp, d));
+  // D and R normalised in double, rounded once: float's squares overflow for a camera more
+  // than about 1.8e19 from its target.
+  const glm::dvec3 dWide = glm::normalize(glm::dvec3(camera.position) - glm::dvec3(camera.target));
+  const vec3 d(dWide);
+  const vec3 r(glm::normalize(glm::cross(glm::dvec3(kWorldUp), glm::dvec3(d))));
   const vec3 u = glm::cross(d, r);
   // Rows R, U, D (GLM is column-major: m[column][row]).
   mat4 rotation(1.0f);
@@ -46,13 +50,17 @@ mat4 clipFromView(const Camera& camera, float aspect) {
   if (std::string error = validateCamera(camera); !error.empty()) throw InputError("camera: " + error);
   if (!(aspect > 0.0f) || !std::isfinite(aspect)) throw InputError("camera: aspect must be > 0");
   const float f = 1.0f / std::tan(0.5f * degreesToRadians(camera.fovDeg));
-  const float n = camera.near, fa = camera.far;
+  // The depth terms in double, rounded once: in float, 2 * far * near overflows for a far
+  // plane near float's range (far 3e38, or a scene in units of 1e20) although the term itself,
+  // about -2 near, fits. projectionProblem (scene/projection_checks.h) refuses what still
+  // does not fit.
+  const double n = camera.near, fa = camera.far;
   mat4 m(0.0f);
   m[0][0] = f / aspect;
   m[1][1] = f;
-  m[2][2] = (fa + n) / (n - fa);
+  m[2][2] = static_cast<float>((fa + n) / (n - fa));
   m[2][3] = -1.0f;
-  m[3][2] = 2.0f * fa * n / (n - fa);
+  m[3][2] = static_cast<float>(2.0 * fa * n / (n - fa));
   return m;
 }
 

@@ -7,6 +7,7 @@
 #include "scene/errors.h"
 #include "scene/image.h"
 #include "scene/mip_level_view.h"
+#include "scene/projection_checks.h"
 #include "softrender/clip.h"
 #include "softrender/debug_lines.h"
 #include "softrender/draw_list.h"
@@ -75,6 +76,9 @@ class CpuRenderer final : public Renderer {
     validateImageSize(width, height);
     // What GL cannot draw is refused here too, so the two never draw different scenes.
     if (const std::string problem = clipSlotProblem(settings); !problem.empty()) throw InputError("CPU: " + problem);
+    if (const std::string problem = projectionProblem(scene, width, height); !problem.empty()) {
+      throw InputError("CPU: " + problem);
+    }
     const auto start = std::chrono::steady_clock::now();
     RenderStats stats;
     if (options_.path == CpuPath::Fast && !fast_) {

@@ -2,6 +2,7 @@
 
 #include "scene/errors.h"
 #include "scene/image.h"
+#include "scene/projection_checks.h"
 #include "scene/scene_file.h"
 
 #include <iostream>
@@ -70,6 +71,11 @@ Scene loadRequestedScene(const RenderRequest& request) {
   applyOverride(request.textureFilter, "--filter", s.textureFilter,
                 "nearest|bilinear|trilinear|nearest_mipmap_nearest|linear_mipmap_nearest|nearest_mipmap_linear");
   printSceneWarnings(scene);
+  const int width = request.width.value_or(scene.output.width), height = request.height.value_or(scene.output.height);
+  if (const std::string problem = projectionProblem(scene, width, height); !problem.empty()) {
+    throw InputError(request.scenePath + ": " + problem);
+  }
+  for (const std::string& w : projectionWarnings(scene, width, height)) std::cerr << "warning: " << w << "\n";
   return scene;
 }
 

@@ -126,6 +126,34 @@ TEST(CliHostile, RealWorldObjSample) {
   EXPECT_EQ(nlohmann::json::parse(r.out).at("nan_pixels"), 0);
 }
 
+// Cameras beyond what float resolves (issue 22, classes 7-9): refused with exit 2 when no
+// faithful picture exists (a view narrower than one float step, a projection out of range),
+// drawn as OpenGL draws it with a "warning:" line when the picture is GL's but not what the
+// scene means (depth rounding to the cleared 1.0), silent for an ordinary camera.
+TEST(CliHostile, CamerasBeyondFloatAreRefusedOrWarned) {
+  const auto dir = testDir("cli_hostile_projection");
+  const auto sceneWithCamera = [&](const std::string& name, const std::string& camera) {
+    const fs::path path = dir / (name + ".json");
+    writeText(path, R"({"camera": )" + camera + R"(, "nodes": [{"name": "box", "mesh": {"type": "cube"}}]})");
+    return path;
+  };
+  for (const char* fov : {"1e-30", "1e-12", "1e-7"}) {
+    const fs::path scene = sceneWithCamera(std::string("fov") + fov, std::string(R"({"fov_deg": )") + fov + "}");
+    expectRefused(dir, quoted(scene), scene.string() + ": camera: fov_deg", "Use fov_deg >=");
+  }
+  const fs::path far = sceneWithCamera("far", R"({"near": 2e38, "far": 3e38, "position": [0, 1e38, 3e38]})");
+  expectRefused(dir, quoted(far), far.string() + ": camera: near 2e+38 and far 3e+38", "beyond float's range");
+
+  const fs::path lost = sceneWithCamera("lost", R"({"near": 1e-9})");
+  const RunResult drawn = runCli("render " + quoted(lost) + " --width 64 --height 48 --out " + quoted(dir / "lost.png"), dir);
+  EXPECT_EQ(drawn.exitCode, 0) << drawn.err;
+  expectContains(drawn.err, "warning: camera.near 1e-09: every vertex in view ('box' 100 %) get window depth 1.0");
+  const fs::path fine = sceneWithCamera("fine", R"({"near": 0.1, "fov_deg": 0.5})");
+  const RunResult quiet = runCli("render " + quoted(fine) + " --width 64 --height 48 --out " + quoted(dir / "fine.png"), dir);
+  EXPECT_EQ(quiet.exitCode, 0) << quiet.err;
+  EXPECT_EQ(quiet.err.find("warning:"), std::string::npos) << quiet.err;
+}
+
 TEST(CliHostile, BadSceneFiles) {
   const auto dir = testDir("cli_hostile");
   writeText(dir / "empty.json", "");
