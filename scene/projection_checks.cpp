@@ -40,12 +40,20 @@ float windowDepthAt(const mat4& clipFromViewMatrix, float d) {
   return zNdc * 0.5f + 0.5f;
 }
 
+bool finite(const mat4& m) {
+  for (int col = 0; col < 4; ++col) {
+    for (int row = 0; row < 4; ++row) {
+      if (!std::isfinite(m[col][row])) return false;
+    }
+  }
+  return true;
+}
+
 // One draw item as the checks see it: its bounding box through its transforms (in double;
 // the renderers' matrices are float, and their entries are what is checked) and its vertices'
 // depths.
 struct ItemExtent {
   std::string node;
-  bool transformFinite = true;  // worldFromModel, as the renderers compute it
   double maxClip = 0.0;  // largest |clip coordinate| of the box's corners (infinity if one overflows)
   glm::dvec3 worldLo{0.0}, worldHi{0.0};  // world-space box of the corners
   std::size_t verticesInView = 0;  // between near and far (along the view axis)
@@ -57,11 +65,6 @@ struct ItemExtent {
 ItemExtent extentOf(const DrawItem& item, const Camera& camera, const mat4& viewFromWorld, const mat4& clipFromView) {
   ItemExtent e;
   e.node = item.nodeName;
-  for (int col = 0; col < 4; ++col) {
-    for (int row = 0; row < 4; ++row) {
-      if (!std::isfinite(item.worldFromModel[col][row])) e.transformFinite = false;
-    }
-  }
   if (item.mesh->vertices.empty()) return e;
   const glm::dmat4 worldFromModel(item.worldFromModel);
   const glm::dmat4 viewFromModel = glm::dmat4(viewFromWorld) * worldFromModel;
@@ -146,9 +149,9 @@ std::string projectionProblem(const Scene& scene, int width, int height) {
       }
     }
   }
-  for (const ItemExtent& e : extentsOf(scene, width, height)) {
-    if (!e.transformFinite) {
-      return "node '" + e.node + "': its transform (translate, rotate_deg, scale, times its parents') overflows "
+  for (const DrawItem& item : flattenScene(scene)) {
+    if (!finite(item.worldFromModel)) {
+      return "node '" + item.nodeName + "': its transform (translate, rotate_deg, scale, times its parents') overflows "
              "float, so none of its vertices has a position; scale the scene down";
     }
   }
@@ -157,7 +160,6 @@ std::string projectionProblem(const Scene& scene, int width, int height) {
 
 std::vector<std::string> projectionWarnings(const Scene& scene, int width, int height) {
   std::vector<std::string> warnings;
-  if (!projectionProblem(scene, width, height).empty()) return warnings;
   const Camera& camera = scene.camera;
   const double steps = floatStepInPixels(camera, height);
   if (steps > 1.0) {

@@ -25,7 +25,8 @@ std::string projectionProblem(const Scene& scene, int width, int height);
 // Drawn as OpenGL draws it, but the user should know (one line each, printed as "warning:"):
 // vertices snapped coarser than a pixel, nodes whose depth rounds to the cleared 1.0 (never
 // pass the depth test), a depth step coarse enough for surfaces to fight, clip coordinates
-// past float's range, distances the shaders' squares overflow.
+// past float's range, distances the shaders' squares overflow. For a scene projectionProblem
+// accepts.
 std::vector<std::string> projectionWarnings(const Scene& scene, int width, int height);
 
 }  // namespace twr

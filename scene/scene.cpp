@@ -5,13 +5,16 @@
 namespace twr {
 
 mat4 localFromNodeTrs(const vec3& translate, const vec3& rotateDeg, const vec3& scale) {
+  // Left to right, skipping the factors that are the identity (a rotation by 0 is exactly
+  // the identity, and so is multiplying by it, up to the sign of a zero): most nodes of big
+  // scenes rotate about one axis or none, and a scene may hold millions of them.
   const mat4 identity(1.0f);
-  const mat4 t = glm::translate(identity, translate);
-  const mat4 rx = glm::rotate(identity, degreesToRadians(rotateDeg.x), vec3(1, 0, 0));
-  const mat4 ry = glm::rotate(identity, degreesToRadians(rotateDeg.y), vec3(0, 1, 0));
-  const mat4 rz = glm::rotate(identity, degreesToRadians(rotateDeg.z), vec3(0, 0, 1));
-  const mat4 s = glm::scale(identity, scale);
-  return t * rz * ry * rx * s;
+  mat4 m = glm::translate(identity, translate);
+  if (rotateDeg.z != 0.0f) m = m * glm::rotate(identity, degreesToRadians(rotateDeg.z), vec3(0, 0, 1));
+  if (rotateDeg.y != 0.0f) m = m * glm::rotate(identity, degreesToRadians(rotateDeg.y), vec3(0, 1, 0));
+  if (rotateDeg.x != 0.0f) m = m * glm::rotate(identity, degreesToRadians(rotateDeg.x), vec3(1, 0, 0));
+  if (scale != vec3(1.0f)) m = m * glm::scale(identity, scale);
+  return m;
 }
 
 const Material& defaultMaterial() {
@@ -31,6 +34,7 @@ namespace {
 
 void flattenNode(const Scene& scene, const Node& node, const mat4& worldFromParent,
                  std::vector<DrawItem>& out, std::uint32_t& nextTriangleId) {
+  if (node.meshIndex < 0 && node.children.empty()) return;  // draws nothing, passes nothing on
   const mat4 worldFromNode = worldFromParent * localFromNodeTrs(node.translate, node.rotateDeg, node.scale);
   if (node.meshIndex >= 0 && node.meshIndex < static_cast<int>(scene.meshes.size())) {
     DrawItem item;

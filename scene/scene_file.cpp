@@ -124,42 +124,44 @@ bool satisfies(float v, NumberRule rule) {
   return false;
 }
 
-// nlohmann keeps the last of two equal keys silently; a scene with "radius" twice is almost
-// certainly a mistake, so the parse callback tracks the JSON path and refuses duplicates.
-class DuplicateKeyCheck {
+// Builds the document from nlohmann's SAX events, checking its structure on the way: nlohmann
+// keeps the last of two equal keys silently, and a scene with "radius" twice is almost
+// certainly a mistake, so the JSON path is tracked and duplicates refused, as is nesting deeper
+// than kMaxJsonDepth. Built here rather than by Json::parse, in time linear in the file: its
+// ordered objects search every key already read before adding one (quadratic in an object of
+// a million materials), and its parse callback searches the enclosing container at the end of
+// every object (quadratic in an array of a million nodes); over 120 s either way. Keys are
+// known to be new here, so they are appended.
+class JsonDocumentBuilder {
  public:
-  explicit DuplicateKeyCheck(std::string fileName) : fileName_(std::move(fileName)) {}
+  JsonDocumentBuilder(std::string fileName, Json& root) : fileName_(std::move(fileName)), root_(root) {}
 
-  bool operator()(int /*depth*/, Json::parse_event_t event, Json& parsed) {
-    switch (event) {
-      case Json::parse_event_t::object_start:
-      case Json::parse_event_t::array_start:
-        if (frames_.size() >= static_cast<std::size_t>(kMaxJsonDepth)) {
-          std::string path = pathThrough(frames_.size());
-          if (path.size() > kMaxQuotedChars) path = path.substr(0, kMaxQuotedChars) + "...";
-          throw InputError(fileName_ + ": " + path + ": JSON nests deeper than " + std::to_string(kMaxJsonDepth) +
-                           " levels");
-        }
-        frames_.push_back({event == Json::parse_event_t::array_start, 0, {}, {}});
-        break;
-      case Json::parse_event_t::key: {
-        Frame& top = frames_.back();
-        std::string key = parsed.get<std::string>();
-        if (!top.keys.insert(key).second) {
-          throw InputError(fileName_ + ": " + pathTo(key) + ": duplicate key; each key may appear once");
-        }
-        top.key = std::move(key);
-        break;
-      }
-      case Json::parse_event_t::object_end:
-      case Json::parse_event_t::array_end:
-        frames_.pop_back();
-        elementDone();
-        break;
-      case Json::parse_event_t::value: elementDone(); break;
+  bool null() { return put(Json(nullptr)); }
+  bool boolean(bool v) { return put(Json(v)); }
+  bool number_integer(Json::number_integer_t v) { return put(Json(v)); }
+  bool number_unsigned(Json::number_unsigned_t v) { return put(Json(v)); }
+  bool number_float(Json::number_float_t v, const Json::string_t&) { return put(Json(v)); }
+  bool string(Json::string_t& v) { return put(Json(std::move(v))); }
+  bool binary(Json::binary_t& v) { return put(Json::binary(std::move(v))); }
+  bool start_object(std::size_t) { return open(false); }
+  bool start_array(std::size_t) { return open(true); }
+  bool end_object() { return close(); }
+  bool end_array() { return close(); }
+  bool key(Json::string_t& key) {
+    Frame& top = frames_.back();
+    if (!top.keys.insert(key).second) {
+      throw InputError(fileName_ + ": " + pathTo(key) + ": duplicate key; each key may appear once");
     }
+    top.key = key;
+    // ordered_map is a vector of pairs; its emplace would search it for the key first.
+    auto& pairs = static_cast<std::vector<Json::object_t::value_type>&>(top.value->get_ref<Json::object_t&>());
+    pairs.emplace_back(key, Json());
+    pendingValue_ = &pairs.back().second;
     return true;
   }
+  // Syntax errors: stop here; parseScene parses again with Json::parse, which reports them
+  // with line and column.
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) { return false; }
 
  private:
   struct Frame {
@@ -167,10 +169,51 @@ class DuplicateKeyCheck {
     std::size_t index;          // arrays: index of the element being read
     std::string key;            // objects: key of the value being read
     std::set<std::string> keys;  // objects: keys seen so far
+    Json* value;                // the container being filled; only the innermost grows, so it stays put
   };
 
-  void elementDone() {
+  // Stores a value where the document stands: the root, the next array element or the value
+  // of the key just read. Returns true (go on).
+  bool put(Json&& value) {
+    place(std::move(value));
+    return elementDone();
+  }
+
+  Json* place(Json&& value) {
+    if (frames_.empty()) {
+      root_ = std::move(value);
+      return &root_;
+    }
+    Frame& top = frames_.back();
+    if (top.isArray) {
+      Json::array_t& array = top.value->get_ref<Json::array_t&>();
+      array.push_back(std::move(value));
+      return &array.back();
+    }
+    *pendingValue_ = std::move(value);
+    return pendingValue_;
+  }
+
+  bool open(bool isArray) {
+    if (frames_.size() >= static_cast<std::size_t>(kMaxJsonDepth)) {
+      std::string path = pathThrough(frames_.size());
+      if (path.size() > kMaxQuotedChars) path = path.substr(0, kMaxQuotedChars) + "...";
+      throw InputError(fileName_ + ": " + path + ": JSON nests deeper than " + std::to_string(kMaxJsonDepth) +
+                       " levels");
+    }
+    Json* container = place(isArray ? Json::array() : Json::object());
+    frames_.push_back({isArray, 0, {}, {}, container});
+    return true;
+  }
+
+  bool close() {
+    frames_.pop_back();
+    return elementDone();
+  }
+
+  bool elementDone() {
     if (!frames_.empty() && frames_.back().isArray) ++frames_.back().index;
+    return true;
   }
 
   // The path through the first `frameCount` open containers.
@@ -185,7 +228,9 @@ class DuplicateKeyCheck {
   std::string pathTo(const std::string& key) const { return childPath(pathThrough(frames_.size() - 1), key); }
 
   std::string fileName_;
+  Json& root_;
   std::vector<Frame> frames_;
+  Json* pendingValue_ = nullptr;  // the value of the key just read
 };
 
 class SceneReader {
@@ -204,6 +249,11 @@ class SceneReader {
     const Json* nodes = find(root, "nodes");
     if (!nodes) fail("nodes", "missing; expected an array of nodes (it may be empty)");
     requireArray(*nodes, "nodes");
+    if (nodes->size() > kMaxSceneNodes) {
+      fail("nodes", std::to_string(nodes->size()) + " nodes, at most " + std::to_string(kMaxSceneNodes) +
+                        " are allowed (counting children)");
+    }
+    scene_.nodes.reserve(nodes->size());
     for (std::size_t i = 0; i < nodes->size(); ++i) {
       scene_.nodes.push_back(readNode((*nodes)[i], indexPath("nodes", i), 1));
     }
@@ -371,6 +421,9 @@ class SceneReader {
 
   void readMaterials(const Json& j, const std::string& path) {
     requireObject(j, path);
+    if (j.size() > kMaxSceneMaterials) {
+      fail(path, std::to_string(j.size()) + " materials, at most " + std::to_string(kMaxSceneMaterials) + " are allowed");
+    }
     for (auto it = j.begin(); it != j.end(); ++it) {
       const std::string materialPath = childPath(path, it.key());
       if (it.key().empty()) fail(path, "a material name must not be empty");
@@ -516,6 +569,10 @@ class SceneReader {
   // ---- nodes and meshes ----
 
   Node readNode(const Json& j, const std::string& path, int depth) {
+    if (++nodesSoFar_ > kMaxSceneNodes) {
+      fail(path, "more than " + std::to_string(kMaxSceneNodes) + " nodes (counting children); at most " +
+                     std::to_string(kMaxSceneNodes) + " are allowed");
+    }
     requireObject(j, path);
     checkKeys(j, path, {"name", "material", "mesh", "translate", "rotate_deg", "scale", "children"}, "a node");
     Node node;
@@ -544,6 +601,7 @@ class SceneReader {
       if (!v->empty() && depth + 1 > kMaxNodeDepth) {
         fail(indexPath(childrenPath, 0), "nodes nest deeper than " + std::to_string(kMaxNodeDepth) + " levels");
       }
+      node.children.reserve(v->size());
       for (std::size_t i = 0; i < v->size(); ++i) node.children.push_back(readNode((*v)[i], indexPath(childrenPath, i), depth + 1));
     }
     return node;
@@ -771,6 +829,7 @@ class SceneReader {
   // Loaded maps by (file, options): a handful per scene, searched linearly.
   std::vector<std::pair<std::pair<std::string, TextureOptions>, std::shared_ptr<const Texture>>> textures_;
   std::size_t trianglesSoFar_ = 0;
+  std::size_t nodesSoFar_ = 0;
   std::uintmax_t textureBudget_ = kMaxSceneTextureBytes;  // texel bytes still allowed
 };
 
@@ -818,7 +877,12 @@ Scene parseScene(const std::string& json, const std::string& nameForMessages, co
   }
   Json root;
   try {
-    root = Json::parse(json, DuplicateKeyCheck(nameForMessages), /*allow_exceptions=*/true, /*ignore_comments=*/true);
+    JsonDocumentBuilder builder(nameForMessages, root);
+    if (!Json::sax_parse(json, &builder, nlohmann::detail::input_format_t::json, /*strict=*/true,
+                         /*ignore_comments=*/true)) {
+      root = Json::parse(json, nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);  // throws the error
+      throw InputError(nameForMessages + ": invalid JSON");  // not reached: the parse above throws
+    }
   } catch (const Json::parse_error& e) {
     throw InputError(nameForMessages + ": " + describeParseError(e.what()) + " (invalid JSON)");
   } catch (const Json::out_of_range& e) {

@@ -660,6 +660,49 @@ TEST(HostileScene, NestingDepthIsBounded) {
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
 }
 
+// Long flat lists (issue 22, class 10): nlohmann's parse callback and its ordered objects made
+// a million nodes or materials quadratic (over 120 s). The document is built in linear time;
+// the order of keys and the duplicate-key check are kept.
+TEST(HostileScene, LongFlatListsParseInLinearTime) {
+  constexpr std::size_t kCount = 300'000;
+  std::string nodes = R"({"nodes": [)", materials = R"({"nodes": [], "materials": {)";
+  for (std::size_t i = 0; i < kCount; ++i) {
+    nodes += i ? ",{}" : "{}";
+    materials += (i ? ",\"m" : "\"m") + std::to_string(i) + "\": {}";
+  }
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(parseScene(nodes + "]}", "nodes.json", ".").nodes.size(), kCount);
+  const Scene scene = parseScene(materials + "}}", "materials.json", ".");
+  ASSERT_EQ(scene.materials.size(), kCount);
+  EXPECT_EQ(scene.materials.front().name, "m0");
+  EXPECT_EQ(scene.materials.back().name, "m" + std::to_string(kCount - 1));
+  expectStartsWith(errorOf([&] { parseScene(materials + R"(, "m5": {}}})", "dup.json", "."); }),
+                   "dup.json: materials.m5: duplicate key");
+  // Quadratic, these took minutes; linear, well under a second (generous for sanitizers).
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(30));
+}
+
+// More nodes or materials than any scene needs: refused with the limit, before they are read.
+TEST(HostileScene, NodeAndMaterialCountsAreBounded) {
+  std::string roots = R"({"nodes": [{})", children = R"({"nodes": [{"children": [{})";
+  std::string materials = R"({"nodes": [], "materials": {"m0": {})";
+  for (std::size_t i = 1; i <= kMaxSceneNodes; ++i) {
+    roots += ",{}";
+    if (i < kMaxSceneNodes) children += ",{}";
+  }
+  for (std::size_t i = 1; i <= kMaxSceneMaterials; ++i) materials += ",\"m" + std::to_string(i) + "\": {}";
+  const std::string limit = std::to_string(kMaxSceneNodes);
+  EXPECT_EQ(errorOf([&] { parseScene(roots + "]}", "roots.json", "."); }),
+            "roots.json: nodes: " + std::to_string(kMaxSceneNodes + 1) + " nodes, at most " + limit +
+                " are allowed (counting children)");
+  expectStartsWith(errorOf([&] { parseScene(children + "]}]}", "children.json", "."); }),
+                   "children.json: nodes[0].children[" + std::to_string(kMaxSceneNodes - 1) + "]: more than " + limit +
+                       " nodes");
+  EXPECT_EQ(errorOf([&] { parseScene(materials + "}}", "materials.json", "."); }),
+            "materials.json: materials: " + std::to_string(kMaxSceneMaterials + 1) + " materials, at most " +
+                std::to_string(kMaxSceneMaterials) + " are allowed");
+}
+
 TEST(HostileScene, ColoursAreBounded) {
   const std::string limit = std::to_string(static_cast<int>(kMaxColourValue));
   EXPECT_NO_THROW(parseScene(R"({"nodes": [], "ambient": [0, 10000, 0]})", "c.json", "."));
