@@ -61,8 +61,8 @@ std::uint64_t drawWorldLine(Framebuffer& fb, vec3 aWorld, vec3 bWorld, vec3 colo
   b.posClip = transformPoint(uniforms.clipFromWorld, bWorld);
   for (int j = 0; j < uniforms.userClipPlaneCount; ++j) {
     const vec4& plane = uniforms.userClipPlanes[static_cast<std::size_t>(j)];
-    a.clipDistance[static_cast<std::size_t>(j)] = glm::dot(plane, vec4(aWorld, 1.0f));
-    b.clipDistance[static_cast<std::size_t>(j)] = glm::dot(plane, vec4(bWorld, 1.0f));
+    a.clipDistance[static_cast<std::size_t>(j)] = clipDistanceFrom(plane, aWorld);
+    b.clipDistance[static_cast<std::size_t>(j)] = clipDistanceFrom(plane, bWorld);
   }
   std::uint32_t planesCut = 0;
   if (!clipSegment(a, b, clipConfig, planesCut)) return 0;

@@ -118,6 +118,7 @@ HWY_INLINE InterpolationL<LaneF> broadcastInterpolation(const Setup& t) {
     s.invW[i] = LaneF(t.invW[i]);
   }
   s.uv = {broadcastPlane(t.uv.uOverW), broadcastPlane(t.uv.vOverW), broadcastPlane(t.uv.oneOverW)};
+  s.depth = broadcastPlane(t.depth);
   return s;
 }
 
@@ -242,7 +243,7 @@ void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps,
     for (std::size_t c = 0; c < 3; ++c) vertices[c] = vertexLanes(BroadcastVarying{t.varyings[c]}, tangent, lightCount);
   } else {
     HWY_ALIGN double planeColumns[5][3][kMaxLanes];
-    HWY_ALIGN float uvColumns[3][3][kMaxLanes];  // [u/w, v/w, 1/w][atOrigin, dx, dy][lane]
+    HWY_ALIGN float uvColumns[4][3][kMaxLanes];  // [u/w, v/w, 1/w, depth][atOrigin, dx, dy][lane]
     HWY_ALIGN float vertexColumns[3][kMaxVaryings * kMaxLanes];
     const int floats = varyingCount(tangent, lightCount);
     for (std::size_t l = 0; l < lanes; ++l) {
@@ -257,6 +258,11 @@ void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps,
         uvColumns[i][0][l] = uvPlane.atOrigin;
         uvColumns[i][1][l] = uvPlane.dx;
         uvColumns[i][2][l] = uvPlane.dy;
+        if (i == 0) {
+          uvColumns[3][0][l] = t.depth.atOrigin;
+          uvColumns[3][1][l] = t.depth.dx;
+          uvColumns[3][2][l] = t.depth.dy;
+        }
         for (int k = 0; k < floats; ++k) {
           vertexColumns[i][static_cast<std::size_t>(k) * kMaxLanes + l] = t.varyings[i][k];
         }
@@ -285,6 +291,7 @@ void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps,
                                     LaneF(hn::Load(df, uvColumns[which][2]))};
     };
     planes.uv = {uvPlane(0), uvPlane(1), uvPlane(2)};
+    planes.depth = uvPlane(3);
     (void)wide;
   }
 

@@ -2,7 +2,7 @@
 // every SIMD target (AVX-512, AVX2, SSE4, NEON, scalar) and picked at run time:
 //   1. visibility, per triangle in submission order: each row's covered span (the teaching
 //      rasterizer's coveredSpan), its pixels a vector of lanes at a time: the window depth
-//      from the double barycentrics (pixelWeightsLanes), GL_LESS against the depth buffer; a
+//      from llvmpipe's depth plane (windowDepthLanes), GL_LESS against the depth buffer; a
 //      passing pixel takes the triangle's depth and its slot in the bin's slot buffer;
 //   2. shading, once per pixel that ended with a slot, a vector of pixels of a row at a time,
 //      grouped by draw item: the shared sources interpolate-inl.h, shade-inl.h (with
@@ -50,7 +50,8 @@ inline constexpr std::uint32_t kNoSlot = 0xFFFFFFFFu;
 struct BinTriangle {
   std::array<double, 3> atOrigin{}, dx{}, dy{};  // InterpolationSetup's barycentric planes
   std::array<float, 3> zWindow{}, invW{};
-  UvPlanesT<float> uv;                           // ... and its uv planes
+  UvPlanesT<float> uv;                           // ... its uv planes
+  AttributePlaneT<float> depth;                  // ... and its window depth plane
   std::uint32_t triangleId = 0;
   std::uint32_t item = 0;                     // index into the frame's ItemState list
   std::array<const float*, 3> varyings{};     // each vertex's varyings, submission order

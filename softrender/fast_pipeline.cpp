@@ -289,6 +289,7 @@ std::uint64_t FastPipeline::drawBin(const std::vector<ItemState>& items, int bin
       t.zWindow = interpolation.zWindow;
       t.invW = interpolation.invW;
       t.uv = interpolation.uv;
+      t.depth = interpolation.depth;
       t.triangleId = r.triangleId;
       t.item = r.item;
       t.varyings = r.varyings;

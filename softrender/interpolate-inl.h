@@ -1,5 +1,5 @@
 // Stage 5, interpolation, over any lane type (interpolate.h has the formulas): barycentrics
-// and window depth in double, perspective weights rounded once to the lane type, then every
+// in double, window depth and uv from float planes as llvmpipe, perspective weights rounded once to the lane type, then every
 // varying as a0 p0 + a1 p1 + a2 p2 summed from the left. Shared source, included plainly and
 // per Highway target (softrender/lanes.h).
 
@@ -43,6 +43,7 @@ struct InterpolationL {
   std::array<WideOf<L>, 3> atOrigin, dx, dy;  // lambda_i = atOrigin + dx px + dy py
   std::array<L, 3> zWindow, invW;
   UvPlanesL<L> uv;
+  AttributePlaneL<L> depth;
 };
 template <typename L>
 struct VertexL {
@@ -101,26 +102,30 @@ TWR_LANE_INLINE Vec2L<L> uvAtPixelLanes(const UvPlanesL<L>& s, const L& px, cons
   return Vec2L<L>(select(isFinite(u), u, zero), select(isFinite(v), v, zero));
 }
 
-// A window depth as GL stores it: rounded to L, clamped to [0, 1], 1 if not finite.
+// Largest value of the 24-bit depth buffer llvmpipe renders into (GL_DEPTH_COMPONENT24).
+inline constexpr float kDepthUnormMax = 16777215.0f;  // 2^24 - 1
+
+// The depth llvmpipe's depth test compares and stores for an interpolated window z: clamped to
+// [0, 1], scaled to 24-bit unorm and rounded to the nearest integer, ties to even (one float
+// multiply, then cvtps2dq), returned as that integer / (2^24 - 1), so comparing two results is
+// comparing the integers. Two fragments whose z round to the same integer tie (GL_LESS keeps the
+// first) as on llvmpipe. A NaN z (a triangle whose float area is 0: its plane divides by it)
+// fails GL_LESS there against any stored depth (probe: a sliver with a snapped area but collinear
+// float corners draws with GL_ALWAYS and not with GL_LESS), so it becomes 1 here, which never
+// passes either; -inf clamps to 0 and +inf to 1, as llvmpipe clamps them.
 template <typename L>
-TWR_LANE_INLINE L clampedDepthLanes(const WideOf<L>& depth) {
+TWR_LANE_INLINE L storedDepthLanes(const L& z) {
   using S = ScalarOf<L>;
-  const L rounded = toNarrow<L>(depth);
-  const L zero(S(0)), one(S(1));
-  return select(isFinite(rounded), minOf(maxOf(rounded, zero), one), one);
+  const L zero(S(0)), one(S(1)), unormMax(static_cast<S>(kDepthUnormMax));
+  const L clamped = minOf(maxOf(z, zero), one);
+  return select(isNaN(z), one, roundEvenOf(clamped * unormMax) / unormMax);
 }
 
-// Window depth at pixel (px, py): sum lambda_i z_i from 0 (linear in screen space), clamped
-// to [0, 1], 1 if not finite. All the visibility pass needs.
+// Window depth at pixel (px, py): the depth plane with two fused multiply-adds, as stored
+// (storedDepthLanes). All the visibility pass needs.
 template <typename L>
 TWR_LANE_INLINE L windowDepthLanes(const InterpolationL<L>& s, const WideOf<L>& px, const WideOf<L>& py) {
-  using W = WideOf<L>;
-  W depth(0.0);
-  for (std::size_t i = 0; i < 3; ++i) {
-    const W lambda = (W(s.atOrigin[i]) + W(s.dx[i]) * px) + W(s.dy[i]) * py;
-    depth += lambda * toWide(s.zWindow[i]);
-  }
-  return clampedDepthLanes<L>(depth);
+  return storedDepthLanes<L>(planeAtLanes<L>(s.depth, toNarrow<L>(px), toNarrow<L>(py)));
 }
 
 // lambda_i at pixel (px, py), depth as windowDepthLanes, p_i = (lambda_i / w_i) /
@@ -131,11 +136,10 @@ TWR_LANE_INLINE PixelWeightsL<L> pixelWeightsLanes(const InterpolationL<L>& s, c
   using W = WideOf<L>;
   PixelWeightsL<L> w;
   std::array<W, 3> lambda, perspective;
-  W perspectiveSum(0.0), depth(0.0);
+  W perspectiveSum(0.0);
   for (std::size_t i = 0; i < 3; ++i) {
     lambda[i] = (W(s.atOrigin[i]) + W(s.dx[i]) * px) + W(s.dy[i]) * py;
     w.screen[i] = toNarrow<L>(lambda[i]);
-    depth += lambda[i] * toWide(s.zWindow[i]);
     perspective[i] = lambda[i] * toWide(s.invW[i]);
     perspectiveSum += perspective[i];
   }
@@ -143,7 +147,7 @@ TWR_LANE_INLINE PixelWeightsL<L> pixelWeightsLanes(const InterpolationL<L>& s, c
   for (std::size_t i = 0; i < 3; ++i) {
     w.perspective[i] = toNarrow<L>(select(positive, perspective[i] / perspectiveSum, lambda[i]));
   }
-  w.depth = clampedDepthLanes<L>(depth);
+  w.depth = windowDepthLanes<L>(s, px, py);
   w.uv = uvAtPixelLanes<L>(s.uv, toNarrow<L>(px), toNarrow<L>(py));
   return w;
 }

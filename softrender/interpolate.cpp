@@ -26,31 +26,50 @@ bool barycentricPlanes(const std::array<double, 3>& x, const std::array<double, 
   return true;
 }
 
-}  // namespace
-
+// llvmpipe's triangle setup (lp_state_setup.c) for attribute planes: the float window corners
+// in setup's corner order (llvmpipe builds its planes from the triangle as its rasterizer orders
+// it, and the roundings depend on which corner comes first), 1 / area, and the pixel-centre
+// offset folded into the value at the origin. Collinear float corners give non-finite planes.
 template <typename T>
-UvPlanesT<T> makeUvPlanes(const std::array<WindowVertexT<T>, 3>& window, const std::array<Vec2T<T>, 3>& uv,
-                          const TriangleSetup& setup) {
-  // Setup's corner order: llvmpipe builds its planes from the triangle as its rasterizer
-  // orders it, and the roundings depend on which corner comes first.
-  const auto corner = [&](std::size_t c) { return static_cast<std::size_t>(setup.corner[c]); };
-  const WindowVertexT<T>& w0 = window[corner(0)];
-  const WindowVertexT<T>& w1 = window[corner(1)];
-  const WindowVertexT<T>& w2 = window[corner(2)];
-  const T dx01 = w0.x - w1.x, dy01 = w0.y - w1.y;
-  const T dx20 = w2.x - w0.x, dy20 = w2.y - w0.y;
-  const T oneOverArea = T(1) / (dx01 * dy20 - dy01 * dx20);
-  const T dx20a = dx20 * oneOverArea, dy20a = dy20 * oneOverArea;
-  const T dx01a = dx01 * oneOverArea, dy01a = dy01 * oneOverArea;
-  const T half(0.5);  // pixel centres at + 0.5 px
-  const auto planeOf = [&](T a0, T a1, T a2) {
+struct PlaneSetup {
+  PlaneSetup(const std::array<WindowVertexT<T>, 3>& window, const TriangleSetup& setup)
+      : w0(window[corner(setup, 0)]) {
+    const WindowVertexT<T>& w1 = window[corner(setup, 1)];
+    const WindowVertexT<T>& w2 = window[corner(setup, 2)];
+    const T dx01 = w0.x - w1.x, dy01 = w0.y - w1.y;
+    const T dx20 = w2.x - w0.x, dy20 = w2.y - w0.y;
+    const T oneOverArea = T(1) / (dx01 * dy20 - dy01 * dx20);
+    dx20a = dx20 * oneOverArea;
+    dy20a = dy20 * oneOverArea;
+    dx01a = dx01 * oneOverArea;
+    dy01a = dy01 * oneOverArea;
+  }
+  static std::size_t corner(const TriangleSetup& setup, std::size_t c) { return static_cast<std::size_t>(setup.corner[c]); }
+  // The plane through a0, a1, a2, the values at setup's corners 0, 1, 2.
+  AttributePlaneT<T> planeOf(T a0, T a1, T a2) const {
+    const T half(0.5);  // pixel centres at + 0.5 px
     const T da01 = a0 - a1, da20 = a2 - a0;
     AttributePlaneT<T> p;
     p.dx = da01 * dy20a - da20 * dy01a;
     p.dy = da20 * dx01a - da01 * dx20a;
     p.atOrigin = a0 - (p.dx * (w0.x - half) + p.dy * (w0.y - half));
     return p;
-  };
+  }
+  WindowVertexT<T> w0;
+  T dx20a = T(0), dy20a = T(0), dx01a = T(0), dy01a = T(0);
+};
+
+}  // namespace
+
+template <typename T>
+UvPlanesT<T> makeUvPlanes(const std::array<WindowVertexT<T>, 3>& window, const std::array<Vec2T<T>, 3>& uv,
+                          const TriangleSetup& setup) {
+  const PlaneSetup<T> planes(window, setup);
+  const auto corner = [&](std::size_t c) { return PlaneSetup<T>::corner(setup, c); };
+  const auto planeOf = [&](T a0, T a1, T a2) { return planes.planeOf(a0, a1, a2); };
+  const WindowVertexT<T>& w0 = window[corner(0)];
+  const WindowVertexT<T>& w1 = window[corner(1)];
+  const WindowVertexT<T>& w2 = window[corner(2)];
   // Perspective-correct: the planes of u/w, v/w and 1/w, divided per pixel.
   const auto overW = [&](std::size_t c, int component) { return uv[corner(c)][component] * window[corner(c)].invW; };
   UvPlanesT<T> out;
@@ -75,6 +94,8 @@ InterpolationSetupT<T> makeInterpolationSetup(const std::array<WindowVertexT<T>,
                                               const std::array<Vec2T<T>, 3>& uv, const TriangleSetup& setup) {
   InterpolationSetupT<T> out;
   out.uv = makeUvPlanes(window, uv, setup);
+  const auto cornerZ = [&](std::size_t c) { return window[PlaneSetup<T>::corner(setup, c)].z; };
+  out.depth = PlaneSetup<T>(window, setup).planeOf(cornerZ(0), cornerZ(1), cornerZ(2));
   std::array<double, 3> x{}, y{};
   for (std::size_t i = 0; i < 3; ++i) {
     x[i] = window[i].x;

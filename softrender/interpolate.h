@@ -2,7 +2,8 @@
 // window depth interpolated linearly in screen space, and every varying interpolated
 // perspective-correctly with 1/w:
 //   lambda_i  = screen-space barycentric of the pixel centre (px + 0.5, py + 0.5)
-//   z_win     = sum lambda_i z_i                                  (linear in screen space)
+//   z_win     = the window z plane, set up and evaluated like uv's below (llvmpipe interpolates
+//               position.z so), then stored as llvmpipe's 24-bit depth buffer holds it
 //   p_i       = (lambda_i / w_i) / sum_k (lambda_k / w_k)          (perspective weights)
 //   attribute = sum p_i a_i
 // Barycentrics come from the unsnapped window positions (as llvmpipe's attribute setup),
@@ -51,6 +52,10 @@ struct InterpolationSetupT {
   std::array<T, 3> zWindow{};  // window depth of each corner
   std::array<T, 3> invW{};     // 1 / w_clip of each corner
   UvPlanesT<T> uv;             // the texture coordinate, as llvmpipe interpolates it
+  // Window depth as llvmpipe interpolates it: its position.z plane, set up like uv's (no 1/w),
+  // left non-finite where the float corners are collinear (llvmpipe's fragments then fail the
+  // depth test; storedDepthLanes).
+  AttributePlaneT<T> depth;
 };
 using InterpolationSetup = InterpolationSetupT<float>;
 
@@ -70,7 +75,7 @@ template <typename T>
 struct PixelWeightsT {
   std::array<T, 3> screen{};       // lambda_i, sum 1
   std::array<T, 3> perspective{};  // p_i, sum 1
-  T depth = T(0);                  // window depth clamped to [0, 1] (GL clamps to the depth range)
+  T depth = T(0);                  // the depth the test compares and stores (storedDepthLanes)
   Vec2T<T> uv{T(0)};               // the texture coordinate, from the uv planes
 };
 using PixelWeights = PixelWeightsT<float>;

@@ -80,7 +80,7 @@ ClipVertexT<T> runVertexStage(const Vertex& vertex, const VertexUniformsT<T>& u)
 
   for (int j = 0; j < u.userClipPlaneCount; ++j) {
     out.clipDistance[static_cast<std::size_t>(j)] =
-        glm::dot(u.userClipPlanes[static_cast<std::size_t>(j)], Vec4T<T>(out.posWorld, T(1)));
+        clipDistanceFrom(u.userClipPlanes[static_cast<std::size_t>(j)], out.posWorld);
   }
   return out;
 }

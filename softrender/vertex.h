@@ -65,6 +65,16 @@ Vec3T<T> transformVector(const Mat3T<T>& m, Vec3T<T> v) {
   return m[0] * v.x + m[1] * v.y + m[2] * v.z;
 }
 
+// gl_ClipDistance = dot(plane, vec4(p, 1)) summed in the order llvmpipe's compiled shader
+// sums it: from the last component, ((c z + d) + b y) + a x (a probe of 4,096 random planes
+// and points matched this order bit for bit, and no other; glm::dot's pairwise sum missed a
+// third). Geometry lying on a plane has distances of a few ULPs either side of 0, so the
+// order decides which vertices are inside.
+template <typename T>
+T clipDistanceFrom(const Vec4T<T>& plane, const Vec3T<T>& p) {
+  return ((plane.z * p.z + plane.w) + plane.y * p.y) + plane.x * p.x;
+}
+
 // Inverse transpose of the upper 3x3; for a singular matrix the cofactor matrix (the same
 // directions up to scale, never Inf or NaN).
 template <typename T>

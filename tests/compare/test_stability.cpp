@@ -523,8 +523,11 @@ TEST(Stability, ZFightingAtDistance100WithNear1e4IsReportedPixelByPixel) {
   EXPECT_GT(countOf(cpuFights), 0u) << "float depth cannot separate 5e-9: the CPU must show fighting";
   EXPECT_GT(countOf(glFights), 0u) << "24-bit depth cannot separate 5e-9: GL must show fighting";
 
-  // Every CPU fight is a tie, not a bug: there the depth buffer holds exactly the depth the red
-  // plane alone gets, and that equals the green plane's.
+  // Depth is llvmpipe's (its float plane, rounded to 24 bits), so the same pixels fight.
+  EXPECT_EQ(cpuFights, glFights);
+
+  // Every CPU fight is a tie or the float plane's rounding, not a bug: there the depth the red
+  // plane alone gets is not below the green plane's.
   Scene redOnly = tiny;
   redOnly.nodes.erase(redOnly.nodes.begin());
   Scene greenOnly = tiny;
@@ -533,7 +536,7 @@ TEST(Stability, ZFightingAtDistance100WithNear1e4IsReportedPixelByPixel) {
   const RenderOutput green = makeCpuRenderer()->render(greenOnly, greenOnly.settings, kSide, kSide);
   for (std::size_t i = 0; i < cpuFights.size(); ++i) {
     if (cpuFights[i]) {
-      ASSERT_EQ(red.depth[i], green.depth[i]) << "pixel " << i;
+      ASSERT_GE(red.depth[i], green.depth[i]) << "pixel " << i;
     } else {
       ASSERT_LT(red.depth[i], green.depth[i]) << "pixel " << i;
     }
