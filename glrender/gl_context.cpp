@@ -4,6 +4,7 @@
 
 #include <glad/gl.h>
 
+#include <atomic>
 #include <mutex>
 
 namespace twr {
@@ -30,9 +31,13 @@ std::string glString(GLenum name) {
   return text ? reinterpret_cast<const char*>(text) : "";
 }
 
+std::atomic<std::uint64_t> gCoreGlLoads{0};
+
 }  // namespace
 
-void loadCoreGl(const GlProcFunction& procAddress, const std::string& what) {
+std::uint64_t coreGlLoadCount() { return gCoreGlLoads.load(); }
+
+std::uint64_t loadCoreGl(const GlProcFunction& procAddress, const std::string& what) {
   GlProcFunction copy = procAddress;
   const int version = gladLoadGLUserPtr(callProcFunction, &copy);
   if (version == 0) throw InputError("GL: could not load OpenGL entry points from the " + what);
@@ -43,6 +48,7 @@ void loadCoreGl(const GlProcFunction& procAddress, const std::string& what) {
     throw InputError("GL: the " + what + " offers OpenGL " + std::to_string(GLAD_VERSION_MAJOR(version)) + "." +
                      std::to_string(GLAD_VERSION_MINOR(version)) + ", 3.3 is required");
   }
+  return ++gCoreGlLoads;
 }
 
 GlContextInfo describeCurrentContext(const std::string& context) {

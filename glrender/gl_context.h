@@ -4,6 +4,7 @@
 
 #include "glrender/gl_renderer.h"
 
+#include <cstdint>
 #include <functional>
 #include <string>
 
@@ -13,7 +14,14 @@ using GlProcFunction = std::function<GlProc(const char* name)>;
 
 // Loads the global glad pointers for the current context. Throws InputError when the
 // context does not offer OpenGL 3.3; `what` names the context in the message.
-void loadCoreGl(const GlProcFunction& procAddress, const std::string& what);
+// Returns the load's number (see coreGlLoadCount).
+std::uint64_t loadCoreGl(const GlProcFunction& procAddress, const std::string& what);
+
+// How many loads the process has made so far. A renderer whose own load is still the last
+// one can skip reloading: glad's pointers are its own. That keeps a renderer on a worker
+// thread from rewriting them on every frame while another thread calls through them (the
+// GUI: EGL and GLX hand out the same libglvnd dispatch stubs, so both threads can share them).
+std::uint64_t coreGlLoadCount();
 
 struct GlContextInfo {
   std::string version;   // GL_VERSION

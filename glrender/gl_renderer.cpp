@@ -64,12 +64,14 @@ struct GlDevice {
     }
   }
 
-  // Binds the context and points glad's global functions at it (another context, e.g.
-  // a GLFW window or the other headless library, may have loaded them since).
+  // Binds the context and points glad's global functions at it when another context (a
+  // GLFW window, the other headless library, another renderer) has loaded them since.
   void makeCurrent() {
     if (headless) headless->makeCurrent();
-    loadCoreGl(procAddress, headless ? headless->description() : "current context");
+    if (loadNumber != 0 && loadNumber == coreGlLoadCount()) return;
+    loadNumber = loadCoreGl(procAddress, headless ? headless->description() : "current context");
   }
+  std::uint64_t loadNumber = 0;  // this device's last loadCoreGl, 0: none yet
 };
 
 // A headless context of the kind `options` names (Auto resolved by the caller).
@@ -196,6 +198,24 @@ class GlRenderer final : public Renderer {
   std::string name() const override { return "gl"; }
 
   RenderOutput render(const Scene& scene, const RenderSettings& settings, int width, int height) override {
+    return draw(scene, settings, width, height, std::nullopt);
+  }
+
+  RenderOutput renderPixel(const Scene& scene, const RenderSettings& settings, int width, int height, int x,
+                           int yTop) {
+    if (options_.frame != GlFrame::Full) throw InputError("GL: a pixel render needs the full frame's attachments");
+    if (x < 0 || x >= width || yTop < 0 || yTop >= height) {
+      throw InputError("GL: pixel (" + std::to_string(x) + ", " + std::to_string(yTop) + ") is outside the " +
+                       std::to_string(width) + " x " + std::to_string(height) + " frame");
+    }
+    return draw(scene, settings, width, height, std::array<int, 2>{x, height - 1 - yTop});
+  }
+
+ private:
+  // A frame, or with `onlyPixel` (x, y in GL window coordinates) the same draws under a
+  // one-pixel scissor and that pixel read back as a 1 x 1 output.
+  RenderOutput draw(const Scene& scene, const RenderSettings& settings, int width, int height,
+                    const std::optional<std::array<int, 2>>& onlyPixel) {
     validateRequest(scene, settings, width, height);
     const bool immediateLines = settings.tbnLines.enabled && settings.tbnLines.mode == LineMode::Immediate;
     GlDevice& device = deviceFor(immediateLines);
@@ -220,6 +240,14 @@ class GlRenderer final : public Renderer {
 
     device.targets.prepare(width, height);
     device.targets.bind();
+    // Set before the clear, which the scissor limits too. Fragments are still shaded in 2x2
+    // quads across the scissor's edge, so derivatives (and the LOD) are the full frame's.
+    if (onlyPixel) {
+      glEnable(GL_SCISSOR_TEST);
+      glScissor((*onlyPixel)[0], (*onlyPixel)[1], 1, 1);
+    } else {
+      glDisable(GL_SCISSOR_TEST);
+    }
     device.targets.clear(scene.output.background);
     device.targets.drawSurfaces();
     const GlClipState clipState = makeGlClipState(drawSettings, scene.camera);
@@ -235,7 +263,12 @@ class GlRenderer final : public Renderer {
     const auto drawn = std::chrono::steady_clock::now();
 
     RenderOutput out;
-    device.targets.readBack(out);
+    if (onlyPixel) {
+      device.targets.readPixel((*onlyPixel)[0], (*onlyPixel)[1], out);
+      glDisable(GL_SCISSOR_TEST);
+    } else {
+      device.targets.readBack(out);
+    }
     checkGlErrors("reading back");
     out.stats.readbackMilliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - drawn).count();
@@ -247,7 +280,6 @@ class GlRenderer final : public Renderer {
     return out;
   }
 
- private:
   GlDevice& deviceFor(bool compatibility) {
     if (options_.currentContextLoader) {
       if (!current_) {
@@ -391,6 +423,13 @@ std::vector<GlContextProbe> probeGlContexts(const GlOptions& options) {
     probes.push_back(probeOne(options, GlContextKind::Egl, device.index, detail));
   }
   return probes;
+}
+
+RenderOutput renderGlPixel(Renderer& renderer, const Scene& scene, const RenderSettings& settings, int width,
+                           int height, int x, int yTop) {
+  auto* gl = dynamic_cast<GlRenderer*>(&renderer);
+  if (!gl) throw InputError("renderGlPixel: the renderer '" + renderer.name() + "' is not the GL renderer");
+  return gl->renderPixel(scene, settings, width, height, x, yTop);
 }
 
 }  // namespace twr

@@ -69,6 +69,16 @@ struct GlOptions {
 // once immediate-mode lines are asked for).
 std::unique_ptr<Renderer> makeGlRenderer(const GlOptions& options = {});
 
+// Pixel (x, yTop) (top-left image coordinates) of the frame renderer.render(scene, settings,
+// width, height) draws, as a 1 x 1 RenderOutput, bit for bit (tests/glrender/test_gl_pixel.cpp):
+// the same programs, state and draw calls under a one-pixel scissor, so llvmpipe rasterizes
+// and shades only that pixel's quad, and one texel of each attachment read back instead of
+// four whole buffers. Its stats count that pixel only. For the GUI's pixel probe, which reads
+// one pixel in every debug view. Throws InputError when `renderer` is not from makeGlRenderer,
+// draws GlFrame::Lean, or the pixel is outside the frame; otherwise as render().
+RenderOutput renderGlPixel(Renderer& renderer, const Scene& scene, const RenderSettings& settings, int width,
+                           int height, int x, int yTop);
+
 // GL_VERSION, GL_RENDERER and GL_VENDOR of the last created context ("" before one exists).
 std::string glVersionString();
 std::string glRendererString();

@@ -53,7 +53,7 @@ void applyPipelineState(const RenderSettings& settings) {
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
-  glDisable(GL_SCISSOR_TEST);
+  // The scissor is the caller's: none for a frame, one pixel for renderGlPixel.
   glDisable(GL_STENCIL_TEST);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);

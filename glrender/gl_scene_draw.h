@@ -22,7 +22,8 @@ struct SceneDrawStats {
 // The permutation defines of the phong program for one material (exposed for tests).
 std::vector<std::string> phongDefines(const Material& material, const RenderSettings& settings);
 
-// Draws `items` into the bound framebuffer's current draw buffers. Throws InputError for
+// Draws `items` into the bound framebuffer's current draw buffers, within the scissor the
+// caller set (GlRenderer: none for a frame, one pixel for renderGlPixel). Throws InputError for
 // textures it cannot upload. Calls uploads.beginFrame() and, when it returns, endFrame().
 // GlFrame::Full wraps the draws in a GL_SAMPLES_PASSED query and waits for its result
 // (samplesPassed), and the programs write the triangle id (location 1). GlFrame::Lean draws

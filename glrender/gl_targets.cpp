@@ -164,4 +164,23 @@ void RenderTargets::readBack(RenderOutput& out) const {
   readAttachment(GL_NONE, GL_DEPTH_COMPONENT, GL_FLOAT, width_, height_, 1, out.depth, rowScratch_);
 }
 
+void RenderTargets::readPixel(int x, int yGl, RenderOutput& out) const {
+  out.width = 1;
+  out.height = 1;
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.id());
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  out.rgba.resize(4);
+  glReadBuffer(kColourAttachment);
+  glReadPixels(x, yGl, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, out.rgba.data());
+  out.triangleId.resize(1);
+  glReadBuffer(kTriangleIdAttachment);
+  glReadPixels(x, yGl, 1, 1, GL_RED_INTEGER, GL_UNSIGNED_INT, out.triangleId.data());
+  std::array<std::uint8_t, 4> line{};
+  glReadBuffer(kLineMaskAttachment);
+  glReadPixels(x, yGl, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, line.data());
+  out.lineMask.assign(1, line[3] != 0 ? 1 : 0);
+  out.depth.resize(1);
+  glReadPixels(x, yGl, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, out.depth.data());
+}
+
 }  // namespace twr

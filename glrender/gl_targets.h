@@ -46,6 +46,9 @@ class RenderTargets {
   // Reads every attachment into `out` (sizes set here), flipping rows to top first. Lean:
   // the colour only; out.depth, triangleId and lineMask are emptied.
   void readBack(RenderOutput& out) const;
+  // Reads pixel (x, yGl) (GL window coordinates, row 0 at the bottom) of every attachment
+  // into `out` as a 1 x 1 output. Full sets only.
+  void readPixel(int x, int yGl, RenderOutput& out) const;
 
  private:
   GlFrame set_;

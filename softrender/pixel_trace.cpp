@@ -3,6 +3,7 @@
 #include "scene/errors.h"
 #include "scene/mip_level_view.h"
 #include "softrender/cpu_renderer.h"
+#include "softrender/draw_list.h"
 #include "softrender/framebuffer.h"
 #include "softrender/output_merge.h"
 #include "softrender/raster.h"
@@ -145,15 +146,17 @@ nlohmann::json toJson(const glm::vec<N, float>& v) {
 
 }  // namespace
 
-PixelTrace tracePixel(const Scene& scene, const RenderSettings& requested, int width, int height, int x, int yTop) {
-  // The full render gives the final pixel (and validates the size and the meshes).
-  const RenderOutput output = makeCpuRenderer()->render(scene, requested, width, height);
-  RenderSettings settings = requested;  // mip_level: albedo of stand-ins, below
+PixelTrace tracePixelVisits(const Scene& scene, const RenderSettings& requested, int width, int height, int x,
+                            int yTop) {
+  // What the renderer would refuse, refused here too: the replay indexes the meshes.
+  validateImageSize(width, height, "trace");
+  if (const std::string problem = clipSlotProblem(requested); !problem.empty()) throw InputError("trace: " + problem);
   if (x < 0 || x >= width || yTop < 0 || yTop >= height) {
     throw InputError("trace: pixel (" + std::to_string(x) + ", " + std::to_string(yTop) + ") is outside the " +
                      std::to_string(width) + "x" + std::to_string(height) + " image (x in [0, " +
                      std::to_string(width) + "), y in [0, " + std::to_string(height) + "))");
   }
+  RenderSettings settings = requested;  // mip_level: albedo of stand-ins, below
   PixelTrace trace;
   trace.x = x;
   trace.yTop = yTop;
@@ -162,16 +165,12 @@ PixelTrace tracePixel(const Scene& scene, const RenderSettings& requested, int w
   trace.height = height;
   trace.view = requested.view;
   trace.lightingSpace = settings.lightingSpace;
-  const std::size_t i = static_cast<std::size_t>(yTop) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
-  for (std::size_t c = 0; c < 4; ++c) trace.rgba[c] = output.rgba[i * 4 + c];
-  trace.depth = output.depth[i];
-  trace.triangleId = output.triangleId[i];
-  trace.debugLine = output.lineMask[i] != 0;
 
   const Viewport viewport{width, height};
   const mat4 clipFromWorld = clipFromWorldFor(scene.camera, width, height);
   float depth = kClearDepth;
   std::vector<DrawItem> items = flattenScene(scene);
+  for (const DrawItem& item : items) validateIndices(item);
   const MipLevelView mipLevelView = applyMipLevelView(items, settings);  // owns stand-ins while traced
   for (const DrawItem& item : items) {
     const VertexUniforms vertexUniforms = makeVertexUniforms(item.worldFromModel, clipFromWorld, scene, settings);
@@ -183,6 +182,18 @@ PixelTrace tracePixel(const Scene& scene, const RenderSettings& requested, int w
                     trace.visits);
     }
   }
+  return trace;
+}
+
+PixelTrace tracePixel(const Scene& scene, const RenderSettings& requested, int width, int height, int x, int yTop) {
+  // The full render gives the final pixel (and validates the size and the meshes).
+  const RenderOutput output = makeCpuRenderer()->render(scene, requested, width, height);
+  PixelTrace trace = tracePixelVisits(scene, requested, width, height, x, yTop);
+  const std::size_t i = static_cast<std::size_t>(yTop) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
+  for (std::size_t c = 0; c < 4; ++c) trace.rgba[c] = output.rgba[i * 4 + c];
+  trace.depth = output.depth[i];
+  trace.triangleId = output.triangleId[i];
+  trace.debugLine = output.lineMask[i] != 0;
   return trace;
 }
 

@@ -69,7 +69,15 @@ struct PixelTrace {
 };
 
 // Throws InputError when the pixel is outside the image or the size is invalid.
+// Renders the frame once (fast path, one thread) for the final pixel, then replays.
 PixelTrace tracePixel(const Scene& scene, const RenderSettings& settings, int width, int height, int x, int yTop);
+
+// The replay alone, for a caller that already has the frame (the GUI's inspector): the
+// visits and the pixel's coordinates, with rgba, depth, triangleId and debugLine left at
+// their defaults. Throws InputError for what the renderer would refuse (size, pixel, clip
+// slots, mesh indices).
+PixelTrace tracePixelVisits(const Scene& scene, const RenderSettings& settings, int width, int height, int x,
+                            int yTop);
 
 // A readable multi-line report.
 std::string formatPixelTrace(const PixelTrace& trace);

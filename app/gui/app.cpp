@@ -109,7 +109,10 @@ GuiApp::GuiApp(GuiOptions options) : options_(std::move(options)) {
   io.IniFilename = iniPath_.empty() ? nullptr : iniPath_.c_str();
   io.ConfigWindowsMoveFromTitleBarOnly = true;
 
-  createWindow(false);
+  createWindow();
+  GlOptions glOptions;
+  glOptions.fastSampling = options_.glFastSampling;
+  glWorker_ = std::make_unique<GlWorker>(glOptions);
 
   // HiDPI comes in two kinds. Where window coordinates are pixels (X11, Windows) the
   // content scale says how much bigger everything must be drawn: scale the layout and the
@@ -149,16 +152,17 @@ GuiApp::~GuiApp() {
   if (!paths_.prefs.empty() && !savePrefs(paths_.prefs, prefs_, error)) {
     std::cerr << "twinraster-gui: warning: " << error << "\n";
   }
+  // First: its renders may load glad's entry points, which the window's end loads again.
+  glWorker_.reset();
   destroyWindow();
   ImGui::DestroyContext();
 }
 
-void GuiApp::createWindow(bool compatibility) {
+void GuiApp::createWindow() {
   GlfwWindowDesc desc;
   desc.width = options_.width;
   desc.height = options_.height;
   desc.title = "twinraster";
-  desc.compatibility = compatibility;
   // GlfwContext ends GLFW with its window, closing the display connection. A server whose
   // last client left may be resetting (Xvfb does), so a new window right after the old one
   // is tried a few times before the failure counts.
@@ -183,14 +187,8 @@ void GuiApp::createWindow(bool compatibility) {
   });
   ImGui_ImplGlfw_InitForOpenGL(window_->window(), true);
   ImGui_ImplOpenGL3_Init("#version 330");
-  GlOptions glOptions;
-  glOptions.currentContextLoader = glfwProcAddress();
-  glOptions.fastSampling = options_.glFastSampling;
-  glRenderer_ = makeGlRenderer(glOptions);
-  // Everything GL lives in the new context: upload and render again.
+  // The textures live in the new context: upload them again.
   cpuTextureStale_ = glTextureStale_ = diff_.texturesStale = true;
-  glFrame_.revision = 0;
-  pin_.glRevision = 0;
 }
 
 void GuiApp::destroyWindow() {
@@ -200,7 +198,6 @@ void GuiApp::destroyWindow() {
   glTexture_.reset();
   heatTexture_.reset();
   classTexture_.reset();
-  glRenderer_.reset();
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   window_.reset();
@@ -248,37 +245,6 @@ void GuiApp::setUpImGuiStyle(float uiScale, float fontRasterScale) {
   style.ScaleAllSizes(uiScale);
 }
 
-void GuiApp::recreateWindowIfNeeded() {
-  const TbnLines& lines = doc_.scene.settings.tbnLines;
-  const bool wantsCompatibility = lines.enabled && lines.mode == LineMode::Immediate;
-  if (!wantsCompatibility || window_->compatibility() || compatibilityFailed_) return;
-  int width = options_.width, height = options_.height;
-  glfwGetWindowSize(window_->window(), &width, &height);
-  if (width > 0 && height > 0) {
-    options_.width = width;
-    options_.height = height;
-  }
-  ImGui::SaveIniSettingsToDisk(iniPath_.empty() ? nullptr : iniPath_.c_str());
-  destroyWindow();
-  try {
-    createWindow(true);
-    contextMessage_ = "The window was recreated with an OpenGL 3.3 compatibility profile (" + window_->glVersion() +
-                      ") so the GL side can draw the lines with glBegin/glEnd.";
-    std::cerr << "twinraster-gui: immediate-mode TBN lines: recreated the window with an OpenGL 3.3 compatibility "
-                 "profile ("
-              << window_->glVersion() << ")\n";
-  } catch (const std::exception& e) {
-    compatibilityFailed_ = true;
-    contextMessage_ = std::string("Immediate mode needs an OpenGL 3.3 compatibility profile, and this display "
-                                  "could not create one: ") +
-                      e.what() + ". The lines stay in core mode (VBO + shader).";
-    std::cerr << "twinraster-gui: warning: " << contextMessage_ << "\n";
-    doc_.scene.settings.tbnLines.mode = LineMode::Core;
-    doc_.touch();
-    createWindow(false);
-  }
-}
-
 void GuiApp::openScene(const std::string& path) {
   try {
     SceneDoc loaded = loadSceneDoc(path);
@@ -312,7 +278,7 @@ void GuiApp::openScene(const std::string& path) {
 
 bool GuiApp::settled() const {
   if (!renderInputsValid()) return true;
-  if (!worker_.idle()) return false;
+  if (!worker_.idle() || (glWorker_ && !glWorker_->idle())) return false;
   const std::uint64_t now = doc_.revision;
   if (cpuFrame_.revision != now || glFrame_.revision != now) return false;
   if (cpuFrame_.output && glFrame_.output && diff_.revision != now) return false;
@@ -320,8 +286,11 @@ bool GuiApp::settled() const {
     // A CPU frame that threw has no probe (its error is shown instead).
     const bool cpuProbeDone = (pin_.cpu && pin_.cpuRevision == now) || !cpuFrame_.error.empty();
     if (!cpuProbeDone) return false;
-    if (pin_.glError.empty() && std::any_of(pin_.gl.begin(), pin_.gl.end(), [](const auto& s) { return !s; }))
-      return false;
+    const bool glProbeDone =
+        (pin_.glRevision == now && (!pin_.glError.empty() ||
+                                    std::all_of(pin_.gl.begin(), pin_.gl.end(), [](const auto& s) { return s.has_value(); }))) ||
+        !glFrame_.error.empty();
+    if (!glProbeDone) return false;
   }
   return true;
 }
@@ -431,15 +400,15 @@ int GuiApp::run() {
   bool idle = false;
   while (!glfwWindowShouldClose(window_->window())) {
     if (gQuitRequested) break;
-    recreateWindowIfNeeded();
     if (options_.frames > 0) glfwPollEvents();  // scripted runs go as fast as they can
     else glfwWaitEventsTimeout(idle ? kIdleWaitSeconds : kBusyFrameSeconds);
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_->window(), &width, &height);
     if (width <= 0 || height <= 0) {
-      // Minimised: nothing to draw into. Keep taking finished CPU frames so the worker
+      // Minimised: nothing to draw into. Keep taking finished frames so the workers
       // does not hold them, and sleep until something happens.
       takeCpuFrames();
+      takeGlFrames();
       glfwWaitEventsTimeout(kMinimisedWaitSeconds);
       continue;
     }
@@ -478,7 +447,10 @@ int GuiApp::run() {
     if (finalFrame) break;
     idle = prefs_.viewMode != ViewMode::Flicker && dragMode_ == DragMode::None &&
            !ImGui::IsAnyItemActive() && settled();
-    if (limitReached) worker_.waitIdle(kSettlePoll);
+    if (limitReached) {
+      worker_.waitIdle(kSettlePoll);
+      glWorker_->waitIdle(kSettlePoll);
+    }
   }
   return exitCode;
 }

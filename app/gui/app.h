@@ -1,6 +1,6 @@
 // The desktop app: one window (glrender's GlfwContext), Dear ImGui panels around an image
-// view, the GL renderer drawing in the window's context on the UI thread and the CPU
-// renderer on a worker thread. The member functions are spread over files by concern:
+// view, and both renderers on worker threads (the GL one in a headless EGL context of its
+// own, gl_worker.h), so the UI keeps redrawing while they work. The member functions are spread over files by concern:
 // app.cpp (window, loop, screenshots), app_renders.cpp (frames, diff, probes),
 // panel_*.cpp (one per panel).
 #pragma once
@@ -9,6 +9,7 @@
 #include "app/gui/debug_views.h"
 #include "app/gui/frame_pairing.h"
 #include "app/gui/frame_timing.h"
+#include "app/gui/gl_worker.h"
 #include "app/gui/gui_options.h"
 #include "app/gui/image_texture.h"
 #include "app/gui/material_maps.h"
@@ -54,9 +55,19 @@ struct PinState {
   std::optional<CpuProbe> cpu;
   std::uint64_t cpuAskedRevision = 0;  // the last probe job sent to the worker
   std::optional<PixelPos> cpuAskedPixel;
-  std::uint64_t glRevision = 0;  // revision of `gl`
+  std::uint64_t glRevision = 0;  // revision of `gl`; 0: not probed yet
   ViewSamples gl;
   std::string glError;
+  std::uint64_t glAskedRevision = 0;  // the last probe job sent to the GL worker
+  std::optional<PixelPos> glAskedPixel;
+};
+
+// One copy of the scene at one edit, shared by the GL and the CPU job of that edit (never
+// changed once made).
+struct SceneSnapshot {
+  std::uint64_t revision = 0;  // 0: none yet
+  std::shared_ptr<const Scene> scene;
+  int width = 0, height = 0;  // the render size, pixels
 };
 
 enum class DragMode { None, Orbit, Pan, Divider, Light };
@@ -73,10 +84,9 @@ class GuiApp {
 
  private:
   // ---- app.cpp ----
-  void createWindow(bool compatibility);
+  void createWindow();
   void destroyWindow();
   void setUpImGuiStyle(float uiScale, float fontRasterScale);
-  void recreateWindowIfNeeded();
   void openScene(const std::string& path);
   void frame(bool& finalFrame);
   void holdTappedKeys();
@@ -88,12 +98,12 @@ class GuiApp {
   // ---- app_renders.cpp ----
   void syncRenders();
   void takeCpuFrames();
-  void renderGl();
+  void takeGlFrames();
+  void submitGl();
   void submitCpu();
+  void keepGlTwins();
   void updateDiff();
-  void probeGl();
   void refreshTextures();
-  PixelSample glSampleAt(View view, PixelPos pixel);
   bool renderInputsValid() const { return renderBlocker_.empty(); }
   // Checks the camera again: a panel drawn after an edit must not use a stale verdict.
   void refreshRenderBlocker();
@@ -139,10 +149,8 @@ class GuiApp {
   std::unique_ptr<GlfwContext> window_;
   float uiScale_ = 1.0f;  // layout sizes in ImGui units per point at scale 1 (see the constructor)
   ImFont* monoFont_ = nullptr;  // the trace report; null: the default font
-  std::string contextMessage_;     // why immediate mode is not available, or what happened
-  bool compatibilityFailed_ = false;
-  std::unique_ptr<Renderer> glRenderer_;
   CpuWorker worker_;
+  std::unique_ptr<GlWorker> glWorker_;  // made once the options are known, ended before the window
 
   SceneDoc doc_;
   std::string scenePathInput_;
@@ -162,7 +170,13 @@ class GuiApp {
 
   BackendFrame cpuFrame_, glFrame_;
   std::uint64_t cpuSubmitted_ = 0;  // revision of the last full CPU job
-  std::map<std::uint64_t, std::shared_ptr<const RenderOutput>> glForCpu_;  // GL frames awaiting their CPU twin
+  std::set<std::uint64_t> cpuPending_;  // revisions of full CPU jobs not back yet
+  // The last snapshot sent to the GL worker. The CPU draws only such snapshots, so every CPU
+  // frame has a GL twin of the same edit to diff against.
+  SceneSnapshot glSnapshot_;
+  // GL frames (null: the render threw) awaiting their CPU twin: of pending CPU jobs, and of
+  // glSnapshot_ (the CPU's next job).
+  std::map<std::uint64_t, std::shared_ptr<const RenderOutput>> glForCpu_;
   FrameTimes cpuMs_, glMs_;
   // What the timings were taken at; a change restarts them (see frame_timing.h).
   int timedWidth_ = 0, timedHeight_ = 0;
@@ -175,7 +189,7 @@ class GuiApp {
   bool cpuTextureStale_ = true, glTextureStale_ = true;
 
   DragMode dragMode_ = DragMode::None;
-  bool interacting_ = false;  // last frame: a drag over the image or an active widget (probeGl waits)
+  bool interacting_ = false;  // last frame: a drag over the image or an active widget (the GL probe waits)
   int dragLight_ = -1;  // the light a DragMode::Light moves
   ImVec2 pressPos_{0.0f, 0.0f};
   bool dragged_ = false;

@@ -1,5 +1,6 @@
 // Keeping both backends' frames, the diff and the pinned pixel's probes in step with the
-// scene: GL renders on this (the UI) thread in the window's context, the CPU on the worker.
+// scene. Both render on workers (gl_worker.h, cpu_worker.h); this (the UI) thread only copies
+// the scene for them, takes their finished frames and uploads them as textures.
 #include "app/gui/app.h"
 #include "app/gui/text_concat.h"
 #include "app/gui/debug_views.h"
@@ -29,6 +30,7 @@ int scaledSide(float side, float scale) {
 
 void GuiApp::syncRenders() {
   takeCpuFrames();
+  takeGlFrames();
 
   int width = 0, height = 0;
   if (prefs_.resolution == ResolutionSource::FitView && imagePanelPixels_.x > 0.0f && imagePanelPixels_.y > 0.0f) {
@@ -72,10 +74,9 @@ void GuiApp::syncRenders() {
 
   refreshRenderBlocker();
   if (renderBlocker_.empty()) {
-    if (glFrame_.revision != doc_.revision) renderGl();
+    submitGl();
     submitCpu();
     updateDiff();
-    probeGl();
   }
   refreshTextures();
 }
@@ -105,6 +106,7 @@ void GuiApp::pinPixel(std::optional<PixelPos> pixel) {
 void GuiApp::takeCpuFrames() {
   for (CpuFrame& frame : worker_.takeFinished()) {
     if (frame.rendered) {
+      std::erase_if(cpuPending_, [&frame](std::uint64_t revision) { return revision <= frame.revision; });
       cpuFrame_.revision = frame.revision;
       cpuFrame_.output = frame.output;
       cpuFrame_.error = frame.error;
@@ -128,45 +130,104 @@ void GuiApp::takeCpuFrames() {
   }
 }
 
-void GuiApp::renderGl() {
-  glFrame_ = BackendFrame{};
-  glFrame_.revision = doc_.revision;
-  try {
-    glFrame_.output = std::make_shared<const RenderOutput>(
-        glRenderer_->render(doc_.scene, doc_.scene.settings, renderWidth_, renderHeight_));
-    if (renderWidth_ == timedWidth_ && renderHeight_ == timedHeight_) glMs_.add(glFrame_.output->stats.milliseconds);
-  } catch (const std::exception& e) {
-    glFrame_.error = e.what();
+void GuiApp::takeGlFrames() {
+  if (!glWorker_) return;
+  for (GlFrameResult& frame : glWorker_->takeFinished()) {
+    if (frame.rendered) {
+      glFrame_ = BackendFrame{};
+      glFrame_.revision = frame.revision;
+      glFrame_.output = frame.output;
+      glFrame_.error = frame.error;
+      glFrame_.finishedAt = frame.finishedAt;
+      if (frame.output && frame.width == timedWidth_ && frame.height == timedHeight_ &&
+          frame.revision >= timingsFromRevision_) {
+        glMs_.add(frame.output->stats.milliseconds);
+      }
+      glTextureStale_ = true;
+      glForCpu_[frame.revision] = frame.output;
+      keepGlTwins();
+    }
+    if (frame.probe && pin_.pixel && frame.probe->pixel == *pin_.pixel && frame.width == renderWidth_ &&
+        frame.height == renderHeight_) {
+      pin_.gl = frame.probe->views;
+      pin_.glError = frame.probe->error;
+      pin_.glRevision = frame.revision;
+    }
   }
-  glFrame_.finishedAt = Clock::now();
-  glTextureStale_ = true;
+}
+
+void GuiApp::keepGlTwins() {
+  // A GL frame is kept only while its CPU twin waits for it or may still come (a CPU job
+  // asked for, or the snapshot the CPU takes next). The rest would pile up while the CPU lags.
+  std::erase_if(glForCpu_, [this](const auto& entry) {
+    const std::uint64_t revision = entry.first;
+    const bool twinWaits = revision == cpuFrame_.revision && diff_.revision != revision;
+    const bool twinMayCome =
+        revision > cpuFrame_.revision && (cpuPending_.count(revision) != 0 || revision == glSnapshot_.revision);
+    return !twinWaits && !twinMayCome;
+  });
+}
+
+void GuiApp::submitGl() {
+  // As submitCpu: one job runs and at most one waits, and a waiting job is never replaced, so
+  // every snapshot the CPU may draw is drawn by GL too.
+  if (!glWorker_ || glWorker_->hasQueued()) return;
+  const std::uint64_t now = doc_.revision;
+  const bool needFrame = glSnapshot_.revision != now;
+  // The per-view reads wait while the user drags or types: each is a GL render of the whole
+  // scene (one pixel drawn), and the next frame matters more.
+  const bool probeNow = pin_.pixel && !interacting_;
+  const bool needProbe = probeNow && (pin_.glAskedRevision != now || pin_.glAskedPixel != pin_.pixel);
+  if (!needFrame && !needProbe) return;
+  if (needFrame) {
+    glSnapshot_ = SceneSnapshot{now, std::make_shared<const Scene>(doc_.scene), renderWidth_, renderHeight_};
+    keepGlTwins();
+  }
+  GlJob job;
+  job.revision = now;
+  job.scene = glSnapshot_.scene;
+  job.width = glSnapshot_.width;
+  job.height = glSnapshot_.height;
+  job.renderFrame = needFrame;
+  if (probeNow) {
+    job.probePixel = pin_.pixel;
+    pin_.glAskedRevision = now;
+    pin_.glAskedPixel = pin_.pixel;
+  }
+  glWorker_->submit(std::move(job));
 }
 
 void GuiApp::submitCpu() {
-  // One job runs and at most one waits: the scene is copied once per job start, not once
-  // per UI frame while a slider is dragged.
-  if (worker_.hasQueued()) return;
-  const std::uint64_t now = doc_.revision;
-  const bool needFrame = cpuSubmitted_ != now;
-  const bool needProbe = pin_.pixel && (pin_.cpuAskedRevision != now || pin_.cpuAskedPixel != pin_.pixel);
+  // One job runs and at most one waits: the scene is copied once per snapshot, not once per
+  // UI frame while a slider is dragged. The CPU draws the edit GL drew last (at most one GL
+  // frame behind the newest), so each CPU frame meets a GL frame of the same edit.
+  if (worker_.hasQueued() || glSnapshot_.revision == 0) return;
+  const SceneSnapshot& snapshot = glSnapshot_;
+  const bool needFrame = cpuSubmitted_ != snapshot.revision;
+  // The pinned pixel is at the current render size; an older snapshot may have another.
+  const bool probeFits = pin_.pixel && snapshot.width == renderWidth_ && snapshot.height == renderHeight_;
+  const bool needProbe =
+      probeFits && (pin_.cpuAskedRevision != snapshot.revision || pin_.cpuAskedPixel != pin_.pixel);
   if (!needFrame && !needProbe) return;
   CpuJob job;
-  job.revision = now;
-  job.scene = doc_.scene;
-  job.settings = doc_.scene.settings;
-  job.width = renderWidth_;
-  job.height = renderHeight_;
+  job.revision = snapshot.revision;
+  job.scene = snapshot.scene;
+  job.settings = snapshot.scene->settings;
+  job.width = snapshot.width;
+  job.height = snapshot.height;
   job.path = prefs_.cpuPath;
   job.isa = prefs_.cpuIsa;
   job.renderFrame = needFrame;
-  job.probePixel = pin_.pixel;
-  if (needFrame) {
-    cpuSubmitted_ = now;
-    if (glFrame_.revision == now) glForCpu_[now] = glFrame_.output;
-  }
-  if (pin_.pixel) {
-    pin_.cpuAskedRevision = now;
+  if (probeFits) {
+    job.probePixel = pin_.pixel;
+    pin_.cpuAskedRevision = snapshot.revision;
     pin_.cpuAskedPixel = pin_.pixel;
+    // A new path or target is a new edit (panel_render.cpp), so this edit's frame is the path's.
+    if (!needFrame && cpuFrame_.revision == snapshot.revision) job.frame = cpuFrame_.output;
+  }
+  if (needFrame) {
+    cpuSubmitted_ = snapshot.revision;
+    cpuPending_.insert(snapshot.revision);
   }
   worker_.submit(std::move(job));
 }
@@ -174,10 +235,11 @@ void GuiApp::submitCpu() {
 void GuiApp::updateDiff() {
   if (cpuFrame_.revision == 0 || cpuFrame_.revision == diff_.revision) return;
   const auto twin = glForCpu_.find(cpuFrame_.revision);
+  // GL draws every edit the CPU draws, usually first; when the CPU won, wait for its twin.
+  if (twin == glForCpu_.end() && glFrame_.revision < cpuFrame_.revision) return;
   const std::shared_ptr<const RenderOutput> gl = twin != glForCpu_.end() ? twin->second : nullptr;
-  // Older GL frames can no longer meet their CPU twin.
-  std::erase_if(glForCpu_, [this](const auto& entry) { return entry.first <= cpuFrame_.revision; });
   diff_.revision = cpuFrame_.revision;
+  keepGlTwins();  // this twin is used, older GL frames can no longer meet theirs
   diff_.texturesStale = true;
   diff_.result.reset();
   diff_.error.clear();
@@ -189,35 +251,6 @@ void GuiApp::updateDiff() {
     diff_.result = compareDetailed(*cpuFrame_.output, *gl);
   } catch (const std::exception& e) {
     diff_.error = e.what();
-  }
-}
-
-PixelSample GuiApp::glSampleAt(View view, PixelPos pixel) {
-  RenderSettings settings = doc_.scene.settings;
-  settings.view = view;
-  settings.tbnLines.enabled = false;  // lines could cover the pixel
-  return sampleAt(glRenderer_->render(doc_.scene, settings, renderWidth_, renderHeight_), pixel);
-}
-
-void GuiApp::probeGl() {
-  if (!pin_.pixel) return;
-  // Each view is a full GL frame on this thread: while the user drags or types, the UI
-  // frame already renders the main image, so the probe waits until the interaction ends.
-  if (interacting_) return;
-  if (pin_.glRevision != doc_.revision) {
-    pin_.gl = ViewSamples{};
-    pin_.glError.clear();
-    pin_.glRevision = doc_.revision;
-  }
-  if (!pin_.glError.empty()) return;
-  // One view per UI frame, so pinning never stalls the UI for ten renders at once.
-  const auto next = std::find_if(pin_.gl.begin(), pin_.gl.end(), [](const auto& sample) { return !sample; });
-  if (next == pin_.gl.end()) return;
-  const std::size_t i = static_cast<std::size_t>(next - pin_.gl.begin());
-  try {
-    pin_.gl[i] = glSampleAt(kAllViews[i], *pin_.pixel);
-  } catch (const std::exception& e) {
-    pin_.glError = e.what();
   }
 }
 

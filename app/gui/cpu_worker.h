@@ -1,19 +1,18 @@
-// Renders CPU frames on a worker thread so a slow frame never blocks the UI. Each job owns
-// its copy of the scene and settings (no mutable state is shared with the UI thread); the
-// newest submitted job wins: a job not yet started is replaced by a newer one, and a
-// pixel probe still running stops early when a newer job is queued.
+// Renders CPU frames on a worker thread so a slow frame never blocks the UI. Each job shares
+// an immutable copy of the scene (no mutable state is shared with the UI thread); the
+// newest submitted job wins (job_queue.h): a job not yet started is replaced by a newer one,
+// and a pixel probe still running stops early when a newer job is queued.
 #pragma once
 
+#include "app/gui/job_queue.h"
 #include "app/gui/pixel_probe.h"
 #include "scene/renderer.h"
 #include "softrender/cpu_renderer.h"
 #include "softrender/pixel_trace.h"
 
 #include <chrono>
-#include <condition_variable>
 #include <cstdint>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
 #include <thread>
@@ -23,8 +22,8 @@ namespace twr::gui {
 using Clock = std::chrono::steady_clock;
 
 struct CpuJob {
-  std::uint64_t revision = 0;  // the UI's edit counter when the job was made
-  Scene scene;                 // own copy
+  std::uint64_t revision = 0;          // the UI's edit counter when the scene was copied
+  std::shared_ptr<const Scene> scene;  // shared with the GL job of the same edit, never changed
   RenderSettings settings;
   int width = 0;   // pixels
   int height = 0;  // pixels
@@ -32,6 +31,9 @@ struct CpuJob {
   CpuIsa isa = CpuIsa::Auto;     // a supported target (the UI offers no other)
   bool renderFrame = true;           // false: only the probe (a new pinned pixel, same frame)
   std::optional<PixelPos> probePixel;  // trace this pixel and read it in every debug view
+  // Probe-only jobs: this edit's frame, already drawn by `path` (the trace's final pixel comes
+  // from it); null: the probe draws the frame once more.
+  std::shared_ptr<const RenderOutput> frame;
 };
 
 struct CpuProbe {
@@ -39,7 +41,7 @@ struct CpuProbe {
   std::shared_ptr<const PixelTrace> trace;  // null when tracing threw
   std::string traceError;
   ViewSamples views;  // the CPU image at the pixel in each debug view (TBN lines off)
-  bool complete = false;  // false when a newer job cut the view renders short
+  bool complete = false;  // false when a newer job cut the views short
 };
 
 struct CpuFrame {
@@ -61,28 +63,21 @@ class CpuWorker {
   CpuWorker& operator=(const CpuWorker&) = delete;
 
   // Queues `job`, replacing a queued job that has not started.
-  void submit(CpuJob job);
+  void submit(CpuJob job) { queue_.submit(std::move(job)); }
   // True when no job is queued or running.
-  bool idle() const;
+  bool idle() const { return queue_.idle(); }
   // True when a job waits for the running one to finish.
-  bool hasQueued() const;
+  bool hasQueued() const { return queue_.hasQueued(); }
   // Finished jobs not yet taken, oldest first (at most a few: the UI takes them every frame).
-  std::vector<CpuFrame> takeFinished();
+  std::vector<CpuFrame> takeFinished() { return queue_.takeFinished(); }
   // Blocks until idle or `timeout` passes; true when idle.
-  bool waitIdle(std::chrono::milliseconds timeout) const;
+  bool waitIdle(std::chrono::milliseconds timeout) const { return queue_.waitIdle(timeout); }
 
  private:
   void run();
-  bool superseded() const;
-  CpuProbe probe(Renderer& renderer, const CpuOptions& options, const CpuJob& job,
-                 const RenderOutput* frameOutput) const;
+  CpuProbe probe(Renderer& renderer, const CpuJob& job, const RenderOutput* frameOutput) const;
 
-  mutable std::mutex mutex_;
-  mutable std::condition_variable changed_;
-  std::optional<CpuJob> queued_;
-  bool running_ = false;
-  bool stopping_ = false;
-  std::vector<CpuFrame> finished_;
+  JobQueue<CpuJob, CpuFrame> queue_;
   std::thread thread_;  // last member: starts once the others exist
 };
 

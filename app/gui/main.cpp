@@ -40,7 +40,7 @@ int main(int argc, char** argv) {
   std::string viewMode, pin, cpuPath, cpuIsa;
   CLI::App app{
       "twinraster-gui: the desktop app. Renders SCENE with the CPU software pipeline (on a worker thread) and "
-      "with OpenGL 3.3 in the window's own context, and shows them side by side, split, flickering or diffed, "
+      "with OpenGL 3.3 (in a headless EGL context on a second worker thread), and shows them side by side, split, flickering or diffed, "
       "with panels for every render setting, the scene, the camera, stats and a pixel inspector.\n"
       "Remembers its view settings in $XDG_CONFIG_HOME/twinraster (else ~/.config/twinraster): gui.json and "
       "imgui.ini.\nIn the window: drag to orbit, right-drag to pan, wheel to zoom, click to pin a pixel, F12 to save the "

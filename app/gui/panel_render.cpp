@@ -201,17 +201,11 @@ void GuiApp::drawRenderingTab() {
   changed |= ImGui::SliderFloat("Length (world units)", &settings.tbnLines.length, kMinLineLength, kMaxLineLength,
                                 "%.3f", ImGuiSliderFlags_Logarithmic);
   itemTooltip("Length of each T, B, N line, world units.");
-  ImGui::BeginDisabled(compatibilityFailed_);
   changed |= enumRadio("GL drawing", settings.tbnLines.mode, kLineModes, labelWidth);
-  ImGui::EndDisabled();
   itemTooltip("core: a VBO and a tiny shader. immediate: glBegin(GL_LINES) as the tutorial does, which needs a "
-              "compatibility-profile context: choosing it recreates the window's context.");
+              "compatibility-profile context: the GL renderer (on its worker thread, in EGL contexts of its own) "
+              "makes one; where the driver has none, the GL image shows why.");
   ImGui::EndDisabled();
-  ImGui::TextDisabled("Window context: OpenGL %s profile", window_->compatibility() ? "compatibility" : "core");
-  if (!contextMessage_.empty()) {
-    if (compatibilityFailed_) warningText(contextMessage_);
-    else hintText(contextMessage_.c_str());
-  }
   hintText("Line pixels are left out of the diff metrics (grey in the diff views).");
 
   if (changed) doc_.touch();

@@ -3,6 +3,7 @@
 #include "app/gui/app.h"
 #include "app/gui/text_concat.h"
 #include "app/gui/ui_widgets.h"
+#include "glrender/gl_renderer.h"
 
 #include <cstdio>
 #include <string>
@@ -98,9 +99,11 @@ void GuiApp::drawStatsPanel() {
   }
   ImGui::TextDisabled("Timings since %s; the first %zu frames after that are skipped.", cpuMs_.restartReason().c_str(),
                       cpuMs_.coldFrames());
-  ImGui::TextDisabled("UI %.0f redraws/s (ImGui's average over the last 60 redraws; fewer when idle). GL: %s, %s",
-                      static_cast<double>(ImGui::GetIO().Framerate), window_->glVersion().c_str(),
-                      window_->glRenderer().c_str());
+  // The last context made is the GL worker's once it has drawn (the window's comes first).
+  ImGui::TextDisabled("UI %.0f redraws/s (ImGui's average over the last 60 redraws; fewer when idle). GL frames: "
+                      "%s, %s, %s",
+                      static_cast<double>(ImGui::GetIO().Framerate), glContextString().c_str(),
+                      glVersionString().c_str(), glRendererString().c_str());
 
   sectionTitle(diff_.result ? concat("Diff (CPU vs GL, both of edit ", diff_.revision, ')').c_str()
                             : "Diff (CPU vs GL, same edit)");
