@@ -128,10 +128,7 @@ void checkGlErrors(const char* where) {
 }
 
 void validateRequest(const Scene& scene, const RenderSettings& settings, int width, int height) {
-  if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide) {
-    throw InputError("GL: image size " + std::to_string(width) + " x " + std::to_string(height) +
-                     ", expected each side in [1, " + std::to_string(kMaxImageSide) + "]");
-  }
+  if (const std::string problem = renderSizeProblem(width, height); !problem.empty()) throw InputError("GL: " + problem);
   if (scene.lights.size() > static_cast<std::size_t>(kMaxLights)) {
     throw InputError("GL: scene '" + scene.sourcePath + "' has " + std::to_string(scene.lights.size()) +
                      " lights, at most " + std::to_string(kMaxLights) + " are supported");

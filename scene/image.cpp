@@ -520,6 +520,18 @@ Image decodeDdsLevel0(const std::uint8_t* bytes, std::size_t size, const std::st
 
 }  // namespace
 
+std::string renderSizeProblem(int width, int height) {
+  const std::string size = std::to_string(width) + "x" + std::to_string(height);
+  if (width < 1 || width > kMaxImageSide || height < 1 || height > kMaxImageSide) {
+    return "image size " + size + " must be within 1.." + std::to_string(kMaxImageSide) + " on each side";
+  }
+  if (static_cast<long long>(width) * height > kMaxRenderPixels) {
+    return "image size " + size + " is " + std::to_string(static_cast<long long>(width) * height) +
+           " pixels, at most " + std::to_string(kMaxRenderPixels) + " (8192x8192, or 16384x4096) are drawn";
+  }
+  return {};
+}
+
 Image decodeImage(const std::uint8_t* bytes, std::size_t size, const std::string& nameForMessages) {
   const ImageFileFormat format = formatOfBytes(bytes, size);
   if (format == ImageFileFormat::Unknown) {

@@ -14,6 +14,16 @@ namespace twr {
 // Largest image or texture side we accept, in pixels (inclusive). Bounds memory:
 // 16384^2 * 4 bytes = 1 GiB.
 inline constexpr int kMaxImageSide = 16384;
+// Most pixels a rendered image may have (inclusive): 8192 x 8192, or 16384 x 4096. `compare`
+// holds about 50 bytes per pixel (two renders with depth and triangle ids, llvmpipe's own
+// buffers, the per-pixel comparison, the heat, class and side-by-side images): about 3.5 GB
+// here (docs/compare.md, "Memory"). A side-by-side image of more would also pass the 2 GiB
+// that stb_image_write's int sizes hold.
+inline constexpr long long kMaxRenderPixels = 8192LL * 8192LL;
+
+// Empty when a rendered image of this size is allowed: each side in [1, kMaxImageSide] and at
+// most kMaxRenderPixels in all; else why not.
+std::string renderSizeProblem(int width, int height);
 
 struct Image {
   int width = 0;

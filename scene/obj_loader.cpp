@@ -194,7 +194,17 @@ struct ObjPrescan {
   fs::path mtlDirectory;  // of the first mtllib: texture paths are relative to the MTL
   bool hasMtllib = false;
   std::size_t triangles = 0;  // after fan triangulation of every 'f' line
+  std::size_t largeFaceCorners = 0;  // corners of faces with more than kLargeFaceCorners
 };
+
+// tinyobjloader triangulates a polygon by ear clipping, in time quadratic in its corners (a
+// face of 16,000 corners takes 0.7 s, one of 400,000 would take minutes). Each face may have
+// at most kMaxFaceCorners, and the faces above kLargeFaceCorners at most
+// kMaxLargeFaceCornersInFile corners in all, which bounds the whole file's triangulation to a
+// few seconds (the sum of squares at most 65,536 x 16,384).
+constexpr std::size_t kMaxFaceCorners = 16384;
+constexpr std::size_t kLargeFaceCorners = 64;
+constexpr std::size_t kMaxLargeFaceCornersInFile = 65536;
 
 // Checks the vertex-data lines before tinyobjloader parses the file (tinyobjloader reads
 // "nan", "inf" or "abc" as 0 without a word, and we want the line number), and counts the
@@ -219,6 +229,21 @@ ObjPrescan prescanObj(const std::string& path, const std::string& text, std::siz
       std::size_t corners = 0;
       std::string corner;
       while (tokens >> corner) ++corners;
+      if (corners > kMaxFaceCorners) {
+        throw InputError(path + ":" + std::to_string(lineNumber) + ": a face of " + std::to_string(corners) +
+                         " corners; at most " + std::to_string(kMaxFaceCorners) +
+                         " are read (tinyobjloader's triangulation takes time quadratic in them)");
+      }
+      if (corners > kLargeFaceCorners) {
+        result.largeFaceCorners += corners;
+        if (result.largeFaceCorners > kMaxLargeFaceCornersInFile) {
+          throw InputError(path + ":" + std::to_string(lineNumber) + ": faces of more than " +
+                           std::to_string(kLargeFaceCorners) + " corners hold more than " +
+                           std::to_string(kMaxLargeFaceCornersInFile) +
+                           " corners in all up to here, the most read (tinyobjloader's triangulation takes time "
+                           "quadratic in each face's corners)");
+        }
+      }
       if (corners >= 3) result.triangles += corners - 2;
       if (result.triangles > maxTriangles) {
         throw InputError(path + ":" + std::to_string(lineNumber) + ": the file has more than " +

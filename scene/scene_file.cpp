@@ -369,6 +369,9 @@ class SceneReader {
     if (const Json* v = find(j, "width")) scene_.output.width = readInt(*v, childPath(path, "width"), 1, kMaxImageSide);
     if (const Json* v = find(j, "height")) scene_.output.height = readInt(*v, childPath(path, "height"), 1, kMaxImageSide);
     if (const Json* v = find(j, "background")) scene_.output.background = readBackground(*v, childPath(path, "background"));
+    if (const std::string problem = renderSizeProblem(scene_.output.width, scene_.output.height); !problem.empty()) {
+      fail(path, problem);
+    }
   }
 
   // [r, g, b] (alpha 1: opaque images, as every scene written before alpha existed gets) or

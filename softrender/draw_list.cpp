@@ -23,9 +23,8 @@ ItemState makeItemState(const DrawItem& item, const mat4& clipFromWorld, const S
 }
 
 void validateImageSize(int width, int height, const char* renderer) {
-  if (width < 1 || width > kMaxImageSide || height < 1 || height > kMaxImageSide) {
-    throw InputError(std::string(renderer) + ": image size " + std::to_string(width) + "x" + std::to_string(height) +
-                     " must be within 1.." + std::to_string(kMaxImageSide) + " on each side");
+  if (const std::string problem = renderSizeProblem(width, height); !problem.empty()) {
+    throw InputError(std::string(renderer) + ": " + problem);
   }
 }
 

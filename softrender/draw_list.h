@@ -26,7 +26,7 @@ struct ItemState {
 ItemState makeItemState(const DrawItem& item, const mat4& clipFromWorld, const Scene& scene,
                         const RenderSettings& settings, int width, int height);
 
-// Throws InputError unless both sides are within [1, kMaxImageSide]; `renderer` starts the
+// Throws InputError unless the size is allowed (renderSizeProblem); `renderer` starts the
 // message ("cpu renderer", "reference renderer").
 void validateImageSize(int width, int height, const char* renderer = "cpu renderer");
 

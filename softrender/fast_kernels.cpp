@@ -243,7 +243,8 @@ void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps,
     for (std::size_t c = 0; c < 3; ++c) vertices[c] = vertexLanes(BroadcastVarying{t.varyings[c]}, tangent, lightCount);
   } else {
     HWY_ALIGN double planeColumns[5][3][kMaxLanes];
-    HWY_ALIGN float uvColumns[4][3][kMaxLanes];  // [u/w, v/w, 1/w, depth][atOrigin, dx, dy][lane]
+    // Zeroed: GCC 12 cannot see that the lane loop fills every column it loads.
+    HWY_ALIGN float uvColumns[4][3][kMaxLanes] = {};  // [u/w, v/w, 1/w, depth][atOrigin, dx, dy][lane]
     HWY_ALIGN float vertexColumns[3][kMaxVaryings * kMaxLanes];
     const int floats = varyingCount(tangent, lightCount);
     for (std::size_t l = 0; l < lanes; ++l) {

@@ -72,6 +72,9 @@ Scene loadRequestedScene(const RenderRequest& request) {
                 "nearest|bilinear|trilinear|nearest_mipmap_nearest|linear_mipmap_nearest|nearest_mipmap_linear");
   printSceneWarnings(scene);
   const int width = request.width.value_or(scene.output.width), height = request.height.value_or(scene.output.height);
+  if (const std::string problem = renderSizeProblem(width, height); !problem.empty()) {
+    throw InputError("--width/--height: " + problem);
+  }
   if (const std::string problem = projectionProblem(scene, width, height); !problem.empty()) {
     throw InputError(request.scenePath + ": " + problem);
   }

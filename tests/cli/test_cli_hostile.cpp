@@ -144,6 +144,12 @@ TEST(CliHostile, CamerasBeyondFloatAreRefusedOrWarned) {
   const fs::path far = sceneWithCamera("far", R"({"near": 2e38, "far": 3e38, "position": [0, 1e38, 3e38]})");
   expectRefused(dir, quoted(far), far.string() + ": camera: near 2e+38 and far 3e+38", "beyond float's range");
 
+  const RunResult big = runCli("render " + quoted(sceneWithCamera("size", "{}")) + " --width 16384 --height 16384 --out " +
+                                    quoted(dir / "big.png"), dir);
+  EXPECT_EQ(big.exitCode, 2) << big.err;
+  expectContains(big.err, "--width/--height: image size 16384x16384 is 268435456 pixels, at most 67108864");
+  EXPECT_FALSE(fs::exists(dir / "big.png"));
+
   const fs::path lost = sceneWithCamera("lost", R"({"near": 1e-9})");
   const RunResult drawn = runCli("render " + quoted(lost) + " --width 64 --height 48 --out " + quoted(dir / "lost.png"), dir);
   EXPECT_EQ(drawn.exitCode, 0) << drawn.err;

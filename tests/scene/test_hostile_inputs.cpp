@@ -16,6 +16,7 @@
 
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
@@ -786,6 +787,38 @@ TEST(HostileObj, SpecialFilesAndSize) {
   fs::resize_file(dir / "big.mtl", kMaxMtlFileBytes + 1);
   expectStartsWith(errorOf([&] { loadObj((dir / "m.obj").string()); }),
                    (dir / "m.obj").string() + ": mtllib: " + (dir / "big.mtl").string() + ": MTL file is 16777217 bytes");
+}
+
+// Faces with many corners (issue 22, class 11): tinyobjloader's ear clipping is quadratic in a
+// face's corners (one face of 400,000 corners took over 120 s). A face may have 16,384, and the
+// faces above 64 corners 65,536 in all; past either, refused with the line, before parsing.
+TEST(HostileObj, FacesWithManyCornersAreBounded) {
+  const fs::path dir = caseDir();
+  // `faces` convex polygons of `corners` corners each, one after the other.
+  const auto polygons = [&](const std::string& name, int faces, int corners) {
+    std::string text;
+    for (int f = 0; f < faces; ++f) {
+      for (int i = 0; i < corners; ++i) {
+        const double a = 6.283185307179586 * i / corners;
+        text += "v " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " " + std::to_string(f) + "\n";
+      }
+      text += "f";
+      for (int i = 0; i < corners; ++i) text += " " + std::to_string(f * corners + i + 1);
+      text += "\n";
+    }
+    writeText(dir / name, text);
+    return (dir / name).string();
+  };
+  const std::string fine = polygons("fine.obj", 2, 2000);
+  EXPECT_EQ(loadObj(fine).meshes.at(0).triangleCount(), 2u * 1998u);
+  const std::string huge = polygons("huge.obj", 1, 16385);
+  EXPECT_EQ(errorOf([&] { loadObj(huge); }),
+            huge + ":16386: a face of 16385 corners; at most 16384 are read (tinyobjloader's triangulation takes time "
+                   "quadratic in them)");
+  const std::string many = polygons("many.obj", 33, 2048);  // the 33rd face passes 65,536 corners
+  expectStartsWith(errorOf([&] { loadObj(many); }),
+                   many + ":" + std::to_string(33 * 2049) + ": faces of more than 64 corners hold more than 65536");
+  EXPECT_NO_THROW(loadObj(polygons("small.obj", 2000, 60)));  // small faces do not count
 }
 
 TEST(HostileObj, TriangleBudgetIsCheckedBeforeParsing) {

@@ -104,6 +104,20 @@ TEST(SceneFileErrors, BadJsonNamesLineAndColumn) {
   expectContains(message, {"invalid JSON"});
 }
 
+// Each side up to 16384, but at most 8192 x 8192 pixels in all (issue 22, class 12: a compare
+// of 16384 x 16384 took 15.9 GB and failed writing its side-by-side image).
+TEST(SceneFileErrors, ImageSizeIsBoundedInPixels) {
+  EXPECT_EQ(parseError(R"({"output": {"width": 16384, "height": 16384}, "nodes": []})"),
+            "inline.json: output: image size 16384x16384 is 268435456 pixels, at most 67108864 (8192x8192, or "
+            "16384x4096) are drawn");
+  EXPECT_EQ(renderSizeProblem(16384, 4096), "");
+  EXPECT_EQ(renderSizeProblem(8192, 8192), "");
+  EXPECT_EQ(renderSizeProblem(16384, 1), "");
+  EXPECT_NE(renderSizeProblem(8193, 8192), "");
+  EXPECT_NE(renderSizeProblem(0, 8), "");
+  EXPECT_NE(renderSizeProblem(16385, 1), "");
+}
+
 TEST(SceneFileErrors, WrongType) {
   EXPECT_EQ(parseError(R"({"output": {"width": "640"}, "nodes": []})"),
             "inline.json: output.width: expected an integer in [1, 16384], got \"640\"");
