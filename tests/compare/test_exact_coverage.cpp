@@ -15,6 +15,7 @@
 #include "softrender/cpu_renderer.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -179,6 +180,29 @@ TEST(ExactCoverage, WideAndTallImages) {
   for (const auto& [width, height] :
        {std::pair{16384, 1}, std::pair{16384, 2}, std::pair{16384, 16}, std::pair{1, 16384}, std::pair{16, 16384}}) {
     expectExactCoverage("default_" + std::to_string(width) + "x" + std::to_string(height), "", width, height, scene);
+  }
+}
+
+// Depth at float's limits (issue 22, classes 8 and 9): a near plane so small that most depths
+// round to the cleared 1.0 or fight, and a far plane near float's range. Drawn with a warning,
+// and the CPU must draw what llvmpipe draws: with depth from llvmpipe's plane and its 24 bits,
+// the same pixels fail and the same surfaces win (before: 19,573 pixels covered by one side at
+// near 3e-7, 125 levels at near 1e-4, 23 at far 3e38).
+TEST(ExactCoverage, DepthAtFloatsLimits) {
+  const std::string source = std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes/default.json";
+  std::ifstream in(source);
+  nlohmann::json json = nlohmann::json::parse(in);
+  for (auto& [key, material] : json["materials"].items()) {
+    for (auto& [name, value] : material.items()) {
+      if (value.is_string()) value = std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes/" + value.get<std::string>();
+    }
+    (void)key;
+  }
+  for (const auto& [near, far] : {std::pair{3e-7, 50.0}, std::pair{1e-5, 50.0}, std::pair{1e-4, 50.0},
+                                  std::pair{1e-3, 3e38}, std::pair{0.1, 1e30}}) {
+    json["camera"]["near"] = near;
+    json["camera"]["far"] = far;
+    expectExactCoverage("depth_near_" + number(near) + "_far_" + number(far), json.dump(), 320, 240);
   }
 }
 
