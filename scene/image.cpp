@@ -381,6 +381,9 @@ std::string tgaDataProblem(const std::uint8_t* bytes, std::size_t size) {
 // padded to 4 bytes). width and height are the header's, already checked.
 constexpr std::size_t kBmpOffsetPixelData = 10, kBmpOffsetHeaderSize = 14;
 constexpr std::uint32_t kBmpCoreHeaderBytes = 12;  // OS/2 BITMAPCOREHEADER: 16-bit sides
+constexpr std::size_t kBmpFileHeaderBytes = 14;
+// stb counts an OS/2 file's 3-byte palette entries from here (bytes; 14 + 24, as it reads them).
+constexpr std::size_t kBmpCorePaletteFrom = 38;
 std::string bmpDataProblem(const std::uint8_t* bytes, std::size_t size, int width, int height) {
   const std::uint32_t headerSize = readLittleEndian32(bytes, size, kBmpOffsetHeaderSize);
   const std::size_t bitsAt = headerSize == kBmpCoreHeaderBytes ? 24 : 28;
@@ -388,6 +391,17 @@ std::string bmpDataProblem(const std::uint8_t* bytes, std::size_t size, int widt
   const std::size_t rowBytes = (static_cast<std::size_t>(width) * bits + 31) / 32 * 4;
   const std::size_t needed = rowBytes * static_cast<std::size_t>(height);
   const std::size_t from = readLittleEndian32(bytes, size, kBmpOffsetPixelData);
+  // Pixel data that starts inside the headers: stb skips a negative distance to the end of the
+  // file (zeros for pixels) and, for 1-, 4- and 8-bit files, counts a negative palette, reads
+  // none of it and indexes its uninitialised stack array (found by fuzzing: a file with offset 0
+  // loaded differently twice).
+  const bool core = headerSize == kBmpCoreHeaderBytes;
+  const std::size_t headersEnd = kBmpFileHeaderBytes + headerSize;
+  const std::size_t paletteFrom = core ? kBmpCorePaletteFrom : headersEnd;  // where stb counts entries from
+  if (from < headersEnd || (bits <= 8 && from < paletteFrom)) {
+    return "the pixel data starts at byte " + std::to_string(from) + ", inside the headers (they end at byte " +
+           std::to_string(std::max(headersEnd, bits <= 8 ? paletteFrom : headersEnd)) + ")";
+  }
   return size - std::min(size, from) >= needed ? "" : endsInsidePixels(needed, from, size);
 }
 

@@ -18,6 +18,7 @@
 #include <chrono>
 #include <cmath>
 #include <sstream>
+#include <tuple>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
@@ -527,6 +528,45 @@ TEST(HostileBmp, TruncatedPixelDataIsRefused) {
 // stb_image 2.27 keeps a BMP palette on its stack and fills only the file's entries: an 8-bit
 // index past a one-entry palette read stack garbage (found by review). The palette is padded
 // with black, so the pixel is opaque black every time.
+// Pixel data said to start inside the headers: stb 2.27 skipped a negative distance (zeros for
+// pixels) or counted a negative palette and indexed its uninitialised stack (found by fuzzing:
+// two loads of one 42-byte file differed). Refused, for every bit depth and both header kinds.
+TEST(HostileBmp, PixelDataInsideTheHeadersIsRefused) {
+  const fs::path dir = caseDir();
+  const auto bmp = [](std::uint32_t headerBytes, int bits, std::uint32_t offset) {
+    Bytes out{'B', 'M'};
+    appendLittleEndian(out, 200, 4);
+    appendLittleEndian(out, 0, 4);
+    appendLittleEndian(out, offset, 4);
+    appendLittleEndian(out, headerBytes, 4);
+    if (headerBytes == 12) {  // OS/2: 16-bit sides, planes, bits
+      appendLittleEndian(out, 2, 2);
+      appendLittleEndian(out, 2, 2);
+      appendLittleEndian(out, 1, 2);
+      appendLittleEndian(out, static_cast<std::uint32_t>(bits), 2);
+    } else {
+      appendLittleEndian(out, 2, 4);
+      appendLittleEndian(out, 2, 4);
+      appendLittleEndian(out, 1, 2);
+      appendLittleEndian(out, static_cast<std::uint32_t>(bits), 2);
+      for (int i = 0; i < 6; ++i) appendLittleEndian(out, 0, 4);
+    }
+    out.resize(std::max<std::size_t>(200, offset + 16), 0x7F);
+    return out;
+  };
+  int n = 0;
+  for (const auto& [header, bits, offset] :
+       {std::tuple{40u, 8, 0u}, std::tuple{40u, 8, 30u}, std::tuple{40u, 24, 0u}, std::tuple{40u, 24, 53u},
+        std::tuple{12u, 8, 30u}, std::tuple{12u, 4, 37u}, std::tuple{12u, 24, 20u}}) {
+    const std::string path = writeFile(dir / ("inside" + std::to_string(n++) + ".bmp"), bmp(header, bits, offset));
+    expectContains(errorOf([&] { loadPng(path); }),
+                   {path + ": corrupt BMP (the pixel data starts at byte " + std::to_string(offset) + ", inside the headers"});
+  }
+  // Right after the headers (24-bit) or a full palette (8-bit): read as before.
+  EXPECT_EQ(loadPng(writeFile(dir / "after.bmp", bmp(40, 24, 54))).width, 2);
+  EXPECT_EQ(loadPng(writeFile(dir / "palette.bmp", bmp(40, 8, 54 + 1024))).width, 2);
+}
+
 TEST(HostileBmp, PaletteIndexPastThePaletteIsOpaqueBlack) {
   const fs::path dir = caseDir();
   Bytes out{'B', 'M'};
