@@ -354,6 +354,7 @@ void GuiApp::frame(bool& finalFrame) {
                        {"coverage_mismatch", m.coverageMismatch}};
     }
     state["render_blocker"] = renderBlocker_;
+    state["projection_warnings"] = projectionWarnings_;
     state["camera"] = {{"near", doc_.scene.camera.near}, {"far", doc_.scene.camera.far}};
     state["frames"] = ImGui::GetFrameCount();
     state["settled"] = settled();

@@ -164,6 +164,12 @@ class GuiApp {
   };
   std::map<std::pair<std::size_t, MapSlot>, MapMessage> mapMessages_;
   std::string renderBlocker_;  // why nothing is rendered right now (invalid camera), else empty
+  // What float lets this camera show at the render size (scene/projection_checks.h): drawn, but
+  // the user should know. Recomputed when the scene or the size changes.
+  std::string projectionProblem_;
+  std::vector<std::string> projectionWarnings_;
+  std::uint64_t projectionCheckedRevision_ = 0;
+  int projectionCheckedWidth_ = 0, projectionCheckedHeight_ = 0;
 
   int renderWidth_ = 0, renderHeight_ = 0;  // the size both backends render at
   ImVec2 imagePanelPixels_{0.0f, 0.0f};       // one image panel on screen, framebuffer pixels

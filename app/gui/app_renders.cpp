@@ -9,6 +9,7 @@
 #include "compare/side_by_side.h"
 #include "scene/camera.h"
 #include "scene/errors.h"
+#include "scene/projection_checks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -83,7 +84,24 @@ void GuiApp::syncRenders() {
 
 void GuiApp::refreshRenderBlocker() {
   renderBlocker_ = validateCamera(doc_.scene.camera);
-  if (!renderBlocker_.empty()) renderBlocker_ = "camera: " + renderBlocker_;
+  if (!renderBlocker_.empty()) {
+    renderBlocker_ = "camera: " + renderBlocker_;
+    return;
+  }
+  if (renderWidth_ <= 0 || renderHeight_ <= 0) return;
+  // What float cannot draw is refused by both renderers too; here it is said once, beside the
+  // camera, and nothing is sent. The warnings walk every vertex: both only when the scene or
+  // the size changed.
+  if (projectionCheckedRevision_ != doc_.revision || projectionCheckedWidth_ != renderWidth_ ||
+      projectionCheckedHeight_ != renderHeight_) {
+    projectionProblem_ = projectionProblem(doc_.scene, renderWidth_, renderHeight_);
+    projectionWarnings_ = projectionProblem_.empty() ? projectionWarnings(doc_.scene, renderWidth_, renderHeight_)
+                                                     : std::vector<std::string>{};
+    projectionCheckedRevision_ = doc_.revision;
+    projectionCheckedWidth_ = renderWidth_;
+    projectionCheckedHeight_ = renderHeight_;
+  }
+  renderBlocker_ = projectionProblem_;
 }
 
 ShownRevisions GuiApp::shownRevisions() const {

@@ -43,6 +43,7 @@ void GuiApp::drawCameraTab() {
   }
   itemTooltip("Back to the camera the scene file gave.");
   if (!renderBlocker_.empty()) errorText(renderBlocker_ + " (nothing is rendered until it is fixed)");
+  for (const std::string& warning : projectionWarnings_) warningText(warning);
   if (changed) doc_.touch();
 
   sectionTitle("Mouse, over the image");

@@ -331,6 +331,28 @@ TEST(GuiScripted, InvalidCameraEditsNeverEndTheApp) {
   EXPECT_EQ(app.quit(), 0) << app.err();
 }
 
+// Issue 22, class 9 in the app: a near plane so small that depth rounds to the cleared 1.0
+// draws what GL draws (nothing) and the Camera tab says why, as the CLI's warning does; a
+// sane near clears it.
+TEST(GuiScripted, CameraTabWarnsWhenDepthRoundsToTheClearValue) {
+  REQUIRE_DISPLAY_AND_XDOTOOL();
+  GuiProcess app(testName(), {kDefaultScene, "--reset", "--view-mode", "side"});
+  app.window();
+  json s = app.waitSettled();
+  EXPECT_TRUE(s["projection_warnings"].empty()) << s.dump(1);
+  app.click("tab_camera");
+  app.waitForItem("near");
+  app.typeInto("near", "1e-8");
+  s = app.waitFor("a depth warning", [](const json& st) {
+    return !st["projection_warnings"].empty() &&
+           st["projection_warnings"][0].get<std::string>().find("window depth 1.0") != std::string::npos;
+  });
+  EXPECT_TRUE(s.value("render_blocker", "x").empty()) << "drawn as GL draws it, not refused: " << s.dump(1);
+  app.typeInto("near", "0.1");
+  s = app.waitFor("no warning", [](const json& st) { return st["projection_warnings"].empty(); });
+  EXPECT_EQ(app.quit(), 0) << app.err();
+}
+
 // Defect 3: in "fit view", the diff view's heat / class map switch, a status message and an
 // error banner changed the image area, so the render size, and both backends re-rendered.
 TEST(GuiScripted, FitViewSizeDependsOnlyOnWhatTheUserSizes) {
