@@ -15,10 +15,10 @@ namespace twr {
 // 16384^2 * 4 bytes = 1 GiB.
 inline constexpr int kMaxImageSide = 16384;
 // Most pixels a rendered image may have (inclusive): 8192 x 8192, or 16384 x 4096. `compare`
-// holds about 50 bytes per pixel (two renders with depth and triangle ids, llvmpipe's own
-// buffers, the per-pixel comparison, the heat, class and side-by-side images): about 3.5 GB
-// here (docs/compare.md, "Memory"). A side-by-side image of more would also pass the 2 GiB
-// that stb_image_write's int sizes hold.
+// holds about 65 bytes per pixel (two renders with depth and triangle ids, llvmpipe's own
+// buffers, the per-pixel comparison, the heat, class and side-by-side images): 4.4 GB peak
+// measured here (docs/compare.md, "Memory"). A side-by-side image of more would also pass the
+// 2 GiB that stb_image_write's int sizes hold.
 inline constexpr long long kMaxRenderPixels = 8192LL * 8192LL;
 
 // Empty when a rendered image of this size is allowed: each side in [1, kMaxImageSide] and at
