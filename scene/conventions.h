@@ -21,6 +21,7 @@ namespace twr {
 
 using glm::mat3;
 using glm::mat4;
+using glm::ivec2;
 using glm::vec2;
 using glm::vec3;
 using glm::vec4;

@@ -580,7 +580,7 @@ Material toMaterial(const tinyobj::material_t& source, TextureCache& textures, c
     std::shared_ptr<const Texture> bump = textures.get(material.name, "map_Bump", source.bump_texname, source.bump_texopt);
     if (bump && isGreyTexture(*bump)) {
       material.heightMap = bump;
-      material.heightScale = source.bump_texopt.bump_multiplier;
+      material.heightScale = kDefaultHeightScale * source.bump_texopt.bump_multiplier;
     } else if (bump && !material.normalMap) {
       material.normalMap = bump;
       material.normalStrength = source.bump_texopt.bump_multiplier;
@@ -588,12 +588,15 @@ Material toMaterial(const tinyobj::material_t& source, TextureCache& textures, c
   }
   if (!source.displacement_texname.empty()) {
     material.heightMap = textures.get(material.name, "disp", source.displacement_texname, source.displacement_texopt);
-    material.heightScale = source.displacement_texopt.bump_multiplier;
+    material.heightScale = kDefaultHeightScale * source.displacement_texopt.bump_multiplier;
   }
-  if (material.heightMap) {
-    textures.warnings().push_back(objPath + ": material '" + material.name + "': height map '" +
-                                  material.heightMap->path + "' is kept for bump and parallax mapping, which this "
-                                  "version does not draw yet");
+  // An MTL names no method: a height map beside a normal map is read but drawn only when a
+  // scene material chooses a surface_detail; a height map alone draws Blinn bumps.
+  if (material.heightMap && !material.normalMap) material.surfaceDetail = SurfaceDetail::BumpBlinn;
+  if (material.heightMap && (material.heightScale < 0.0f || material.heightScale > kMaxHeightScale)) {
+    textures.warnings().push_back(objPath + ": material '" + material.name + "': height map depth " +
+                                  std::to_string(material.heightScale) + " (0.05 x -bm) clamped to [0, 1] uv units");
+    material.heightScale = std::clamp(material.heightScale, 0.0f, kMaxHeightScale);
   }
   if (!std::isfinite(material.normalStrength) || !std::isfinite(material.heightScale)) {
     throw InputError(objPath + ": material '" + material.name + "': -bm is not a finite number");

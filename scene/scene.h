@@ -21,6 +21,17 @@ namespace twr {
 // overflows to Inf and no Inf * 0 makes a NaN.
 inline constexpr float kMaxColourValue = 1e4f;
 
+// Height-field defaults and bounds (docs/parallax.md). Depth in texture-space units (uv units);
+// layer and step counts inclusive.
+inline constexpr float kDefaultHeightScale = 0.05f;
+inline constexpr float kMaxHeightScale = 1.0f;
+inline constexpr int kMaxParallaxLayers = 256;
+inline constexpr int kMaxReliefRefinementSteps = 16;
+inline constexpr int kMinHorizonDirections = 4;
+inline constexpr int kMaxHorizonDirections = 16;
+
+struct HorizonMap;  // scene/horizon_map.h
+
 struct Material {
   std::string name;
   vec3 ka{1.0f};  // ambient reflectance (scaled by the diffuse map, see docs/shading.md)
@@ -32,10 +43,21 @@ struct Material {
   std::shared_ptr<const Texture> diffuseMap;
   std::shared_ptr<const Texture> normalMap;
   std::shared_ptr<const Texture> specularMap;
-  // A height map (grey levels, white = high): kept for bump and parallax mapping; neither
-  // renderer reads it yet. heightScale: the MTL's -bm (world units per full grey range).
+  // A height map (grey, or the red channel; 1 = top) and how it is drawn (docs/parallax.md).
+  // heightScale: depth of the relief in texture-space units (1 = the length of one uv unit
+  // along the surface); the polygon lies at the top (height 1), height 0 lies heightScale below.
   std::shared_ptr<const Texture> heightMap;
-  float heightScale = 1.0f;
+  float heightScale = kDefaultHeightScale;
+  // Default: normal_map when a normal map is given, else bump_blinn when a height map is.
+  SurfaceDetail surfaceDetail = SurfaceDetail::NormalMap;
+  // Layer counts of the marching methods, [min, max], interpolated by view angle (max at
+  // grazing views); both in [1, kMaxParallaxLayers].
+  ivec2 parallaxLayers{8, 32};
+  int reliefRefinementSteps = 5;  // binary-search steps of relief, in [0, kMaxReliefRefinementSteps]
+  SelfShadow selfShadow = SelfShadow::None;
+  int horizonDirections = 8;  // horizon_map: azimuths, in [kMinHorizonDirections, kMaxHorizonDirections]
+  // Built at load from heightMap when selfShadow is HorizonMap (scene/horizon_map.h).
+  std::shared_ptr<const HorizonMap> horizonMap;
   // Tangent-space normal strength: the mapped normal's x and y are scaled by this before
   // normalising (the MTL's -bm on a normal map; 1 leaves the map as it is).
   float normalStrength = 1.0f;

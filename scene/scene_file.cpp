@@ -432,7 +432,10 @@ class SceneReader {
       if (it.key().empty()) fail(path, "a material name must not be empty");
       const Json& mj = it.value();
       requireObject(mj, materialPath);
-      checkKeys(mj, materialPath, {"ka", "kd", "ks", "shininess", "diffuse_map", "normal_map", "specular_map"}, "a material");
+      checkKeys(mj, materialPath,
+                {"ka", "kd", "ks", "shininess", "diffuse_map", "normal_map", "specular_map", "height_map", "height_scale",
+                 "surface_detail", "parallax_layers", "relief_refinement_steps", "self_shadow", "horizon_directions"},
+                "a material");
       Material material;
       material.name = it.key();
       if (const Json* v = find(mj, "ka")) material.ka = readColour(*v, childPath(materialPath, "ka"), NumberRule::Colour);
@@ -448,12 +451,83 @@ class SceneReader {
       if (const Json* v = find(mj, "specular_map")) {
         material.specularMap = readTexture(*v, childPath(materialPath, "specular_map"), MapRole::Colour);
       }
+      readSurfaceDetail(mj, materialPath, material);
       materialIndex_[material.name] = static_cast<int>(scene_.materials.size());
       scene_.materials.push_back(std::move(material));
     }
   }
 
-  enum class MapRole { Colour, Normal };
+  // The height-field keys of a material (docs/parallax.md): the map, its depth, the method
+  // that draws it and the method's knobs. A knob of a method the material does not use is
+  // read and reported as ignored.
+  void readSurfaceDetail(const Json& mj, const std::string& materialPath, Material& material) {
+    const auto at = [&](const char* key) { return childPath(materialPath, key); };
+    if (const Json* v = find(mj, "height_map")) material.heightMap = readTexture(*v, at("height_map"), MapRole::Height);
+    if (const Json* v = find(mj, "height_scale")) {
+      material.heightScale = readNumber(*v, at("height_scale"), NumberRule::NonNegative);
+      if (material.heightScale > kMaxHeightScale) {
+        fail(at("height_scale"), "expected a depth in [0, " + std::to_string(kMaxHeightScale).substr(0, 3) +
+                                     "] texture-space units (1 = one uv unit), got " + quote(*v));
+      }
+    }
+    const bool hasSurfaceDetail = find(mj, "surface_detail") != nullptr;
+    if (const Json* v = find(mj, "surface_detail")) {
+      material.surfaceDetail = readEnum<SurfaceDetail>(*v, at("surface_detail"));
+    } else if (material.heightMap && !material.normalMap) {
+      material.surfaceDetail = SurfaceDetail::BumpBlinn;  // a height map alone draws bumps
+    }
+    if (const Json* v = find(mj, "parallax_layers")) {
+      const std::string path = at("parallax_layers");
+      if (!v->is_array() || v->size() != 2) {
+        fail(path, "expected [min, max] layer counts (integers in [1, " + std::to_string(kMaxParallaxLayers) +
+                       "]), got " + quote(*v));
+      }
+      material.parallaxLayers.x = readInt((*v)[0], indexPath(path, 0), 1, kMaxParallaxLayers);
+      material.parallaxLayers.y = readInt((*v)[1], indexPath(path, 1), 1, kMaxParallaxLayers);
+      if (material.parallaxLayers.x > material.parallaxLayers.y) {
+        fail(path, "expected min <= max, got " + quote(*v));
+      }
+    }
+    if (const Json* v = find(mj, "relief_refinement_steps")) {
+      material.reliefRefinementSteps = readInt(*v, at("relief_refinement_steps"), 0, kMaxReliefRefinementSteps);
+    }
+    if (const Json* v = find(mj, "self_shadow")) material.selfShadow = readEnum<SelfShadow>(*v, at("self_shadow"));
+    if (const Json* v = find(mj, "horizon_directions")) {
+      material.horizonDirections = readInt(*v, at("horizon_directions"), kMinHorizonDirections, kMaxHorizonDirections);
+    }
+
+    // What cannot be drawn as asked: refused when the method has nothing to read, warned when
+    // a knob is read and ignored.
+    const SurfaceDetail d = material.surfaceDetail;
+    if (d != SurfaceDetail::NormalMap && !material.heightMap) {
+      fail(at("surface_detail"), "\"" + std::string(toString(d)) + "\" reads a height map; give \"height_map\"");
+    }
+    if (d == SurfaceDetail::NormalMap && hasSurfaceDetail && !material.normalMap) {
+      scene_.warnings.push_back(fileName_ + ": " + at("surface_detail") +
+                                ": \"normal_map\" without a \"normal_map\" texture draws the interpolated normal");
+    }
+    const auto ignored = [&](const char* key, const std::string& why) {
+      if (find(mj, key)) scene_.warnings.push_back(fileName_ + ": " + at(key) + ": ignored: " + why);
+    };
+    if (material.heightMap && d == SurfaceDetail::NormalMap) {
+      scene_.warnings.push_back(fileName_ + ": " + at("height_map") +
+                                ": read but not drawn: surface_detail is \"normal_map\" (choose one of " +
+                                allSurfaceDetailNames() + ")");
+    }
+    if (!marchesLayers(d)) ignored("parallax_layers", "only steep_parallax, relief and parallax_occlusion march layers");
+    if (d != SurfaceDetail::Relief) ignored("relief_refinement_steps", "only relief refines its hit");
+    if (material.selfShadow != SelfShadow::None && !material.heightMap) {
+      fail(at("self_shadow"), "self-shadowing reads a height map; give \"height_map\"");
+    }
+    if (material.selfShadow != SelfShadow::HorizonMap) ignored("horizon_directions", "self_shadow is not \"horizon_map\"");
+    if (material.selfShadow != SelfShadow::None && d == SurfaceDetail::NormalMap) {
+      scene_.warnings.push_back(fileName_ + ": " + at("self_shadow") +
+                                ": ignored: self-shadowing needs a height-field surface_detail, not \"normal_map\"");
+      material.selfShadow = SelfShadow::None;
+    }
+  }
+
+  enum class MapRole { Colour, Normal, Height };
 
   // A map is a path string or {"path", "flip_v", "wrap", "srgb"} (+ "green" on a normal map).
   // Materials naming the same file with the same options share one Texture.
@@ -476,6 +550,11 @@ class SceneReader {
       if (const Json* v = find(j, "wrap")) options.wrap = readEnum<TextureWrap>(*v, childPath(path, "wrap"));
       if (const Json* v = find(j, "srgb")) options.srgb = readBool(*v, childPath(path, "srgb"));
       if (const Json* v = find(j, "green")) options.green = readEnum<GreenAxis>(*v, childPath(path, "green"));
+      if (role == MapRole::Height && options.srgb) {
+        scene_.warnings.push_back(fileName_ + ": " + childPath(path, "srgb") +
+                                  ": a height map holds heights, not colours; decoding it as sRGB bends every "
+                                  "slope (done as asked)");
+      }
       if (role == MapRole::Normal && options.srgb) {
         scene_.warnings.push_back(fileName_ + ": " + childPath(path, "srgb") +
                                   ": a normal map holds directions, not colours; decoding it as sRGB bends every "

@@ -12,7 +12,7 @@ using NameTable = std::array<std::pair<E, std::string_view>, N>;
 
 constexpr NameTable<CullMode, 3> kCull{{{CullMode::None, "none"}, {CullMode::Back, "back"}, {CullMode::Front, "front"}}};
 constexpr NameTable<FrontFace, 2> kFront{{{FrontFace::Ccw, "ccw"}, {FrontFace::Cw, "cw"}}};
-constexpr NameTable<View, 11> kView{{{View::Shaded, "shaded"},
+constexpr NameTable<View, 15> kView{{{View::Shaded, "shaded"},
                                      {View::Albedo, "albedo"},
                                      {View::Normal, "normal"},
                                      {View::Tangent, "tangent"},
@@ -22,7 +22,11 @@ constexpr NameTable<View, 11> kView{{{View::Shaded, "shaded"},
                                      {View::Depth, "depth"},
                                      {View::LightTangent, "light_tangent"},
                                      {View::EyeTangent, "eye_tangent"},
-                                     {View::MipLevel, "mip_level"}}};
+                                     {View::MipLevel, "mip_level"},
+                                     {View::Height, "height"},
+                                     {View::ParallaxOffset, "parallax_offset"},
+                                     {View::ParallaxSteps, "parallax_steps"},
+                                     {View::SelfShadow, "self_shadow"}}};
 constexpr NameTable<LightingSpace, 2> kSpace{{{LightingSpace::World, "world"}, {LightingSpace::Tangent, "tangent"}}};
 constexpr NameTable<TangentTransform, 2> kTangent{
     {{TangentTransform::Model, "model"}, {TangentTransform::InverseTranspose, "inverse_transpose"}}};
@@ -37,6 +41,16 @@ constexpr NameTable<TextureFilter, 3> kFilterAliases{{{TextureFilter::Nearest, "
                                                      {TextureFilter::Bilinear, "linear"},
                                                      {TextureFilter::Trilinear, "linear_mipmap_linear"}}};
 constexpr NameTable<LineMode, 2> kLine{{{LineMode::Core, "core"}, {LineMode::Immediate, "immediate"}}};
+constexpr NameTable<SurfaceDetail, 8> kSurfaceDetail{{{SurfaceDetail::NormalMap, "normal_map"},
+                                                     {SurfaceDetail::BumpBlinn, "bump_blinn"},
+                                                     {SurfaceDetail::BumpEmboss, "bump_emboss"},
+                                                     {SurfaceDetail::Parallax, "parallax"},
+                                                     {SurfaceDetail::ParallaxOffsetLimited, "parallax_offset_limited"},
+                                                     {SurfaceDetail::SteepParallax, "steep_parallax"},
+                                                     {SurfaceDetail::Relief, "relief"},
+                                                     {SurfaceDetail::ParallaxOcclusion, "parallax_occlusion"}}};
+constexpr NameTable<SelfShadow, 3> kSelfShadow{
+    {{SelfShadow::None, "none"}, {SelfShadow::HeightMarch, "height_march"}, {SelfShadow::HorizonMap, "horizon_map"}}};
 
 template <typename E, std::size_t N>
 std::string_view nameOf(const NameTable<E, N>& table, E value) {
@@ -65,6 +79,8 @@ std::string_view toString(LightingSpace v) { return nameOf(kSpace, v); }
 std::string_view toString(TangentTransform v) { return nameOf(kTangent, v); }
 std::string_view toString(TextureFilter v) { return nameOf(kFilter, v); }
 std::string_view toString(LineMode v) { return nameOf(kLine, v); }
+std::string_view toString(SurfaceDetail v) { return nameOf(kSurfaceDetail, v); }
+std::string_view toString(SelfShadow v) { return nameOf(kSelfShadow, v); }
 
 bool parse(std::string_view s, CullMode& out) { return valueOf(kCull, s, out); }
 bool parse(std::string_view s, FrontFace& out) { return valueOf(kFront, s, out); }
@@ -73,6 +89,8 @@ bool parse(std::string_view s, LightingSpace& out) { return valueOf(kSpace, s, o
 bool parse(std::string_view s, TangentTransform& out) { return valueOf(kTangent, s, out); }
 bool parse(std::string_view s, TextureFilter& out) { return valueOf(kFilter, s, out) || valueOf(kFilterAliases, s, out); }
 bool parse(std::string_view s, LineMode& out) { return valueOf(kLine, s, out); }
+bool parse(std::string_view s, SurfaceDetail& out) { return valueOf(kSurfaceDetail, s, out); }
+bool parse(std::string_view s, SelfShadow& out) { return valueOf(kSelfShadow, s, out); }
 
 std::string clipSlotProblem(const RenderSettings& settings) {
   const bool oneDepthPlane = settings.clip.near != settings.clip.far;
@@ -87,6 +105,15 @@ std::string clipSlotProblem(const RenderSettings& settings) {
 std::string allViewNames() {
   std::string names;
   for (const auto& [v, name] : kView) {
+    if (!names.empty()) names += '|';
+    names += name;
+  }
+  return names;
+}
+
+std::string allSurfaceDetailNames() {
+  std::string names;
+  for (const auto& [v, name] : kSurfaceDetail) {
     if (!names.empty()) names += '|';
     names += name;
   }

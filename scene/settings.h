@@ -13,7 +13,34 @@ enum class CullMode { None, Back, Front };
 enum class FrontFace { Ccw, Cw };
 // MipLevel: which mip level the sampler reads, as colours (scene/mip_level_view.h); both
 // renderers draw it as the albedo of a stand-in texture, so no shader has a case for it.
-enum class View { Shaded, Albedo, Normal, Tangent, Bitangent, MappedNormal, Uv, Depth, LightTangent, EyeTangent, MipLevel };
+// Height, ParallaxOffset, ParallaxSteps, SelfShadow: the height-field views (docs/parallax.md).
+enum class View {
+  Shaded, Albedo, Normal, Tangent, Bitangent, MappedNormal, Uv, Depth, LightTangent, EyeTangent, MipLevel,
+  Height, ParallaxOffset, ParallaxSteps, SelfShadow
+};
+// Whether the view shows a height-field quantity (drawn only where a material has a height map).
+constexpr bool isHeightView(View v) {
+  return v == View::Height || v == View::ParallaxOffset || v == View::ParallaxSteps || v == View::SelfShadow;
+}
+
+// How a material's surface detail is drawn (docs/parallax.md). NormalMap: the normal map alone
+// (today's behaviour). The others read the height map: two bump methods that change the lighting
+// only, and five parallax methods that shift the uv every map is read at.
+enum class SurfaceDetail { NormalMap, BumpBlinn, BumpEmboss, Parallax, ParallaxOffsetLimited, SteepParallax, Relief, ParallaxOcclusion };
+inline constexpr SurfaceDetail kAllSurfaceDetails[] = {
+    SurfaceDetail::NormalMap, SurfaceDetail::BumpBlinn, SurfaceDetail::BumpEmboss, SurfaceDetail::Parallax,
+    SurfaceDetail::ParallaxOffsetLimited, SurfaceDetail::SteepParallax, SurfaceDetail::Relief, SurfaceDetail::ParallaxOcclusion};
+// Whether the method shifts uv (the parallax family), and whether it marches layers.
+constexpr bool shiftsUv(SurfaceDetail d) {
+  return d == SurfaceDetail::Parallax || d == SurfaceDetail::ParallaxOffsetLimited || d == SurfaceDetail::SteepParallax ||
+         d == SurfaceDetail::Relief || d == SurfaceDetail::ParallaxOcclusion;
+}
+constexpr bool marchesLayers(SurfaceDetail d) {
+  return d == SurfaceDetail::SteepParallax || d == SurfaceDetail::Relief || d == SurfaceDetail::ParallaxOcclusion;
+}
+// Self-shadowing of the height field: none, a march towards the light through the height field,
+// or a precomputed horizon map (scene/horizon_map.h).
+enum class SelfShadow { None, HeightMarch, HorizonMap };
 enum class LightingSpace { World, Tangent };
 enum class TangentTransform { Model, InverseTranspose };
 // GL's minification filters (docs/textures.md): nearest = GL_NEAREST, bilinear = GL_LINEAR
@@ -69,6 +96,8 @@ std::string_view toString(LightingSpace v);
 std::string_view toString(TangentTransform v);
 std::string_view toString(TextureFilter v);
 std::string_view toString(LineMode v);
+std::string_view toString(SurfaceDetail v);
+std::string_view toString(SelfShadow v);
 
 // Parsers return false for an unknown name.
 bool parse(std::string_view s, CullMode& out);
@@ -78,6 +107,8 @@ bool parse(std::string_view s, LightingSpace& out);
 bool parse(std::string_view s, TangentTransform& out);
 bool parse(std::string_view s, TextureFilter& out);
 bool parse(std::string_view s, LineMode& out);
+bool parse(std::string_view s, SurfaceDetail& out);
+bool parse(std::string_view s, SelfShadow& out);
 
 // GL has kMaxUserClipPlanes clip distances. Near or far switched on alone needs one of them
 // (depth clamp turns both off, the one still on comes back as a clip distance,
@@ -88,8 +119,11 @@ std::string clipSlotProblem(const RenderSettings& settings);
 
 // "shaded|albedo|..." for help texts and error messages.
 std::string allViewNames();
+std::string allSurfaceDetailNames();
 inline constexpr View kAllViews[] = {View::Shaded, View::Albedo, View::Normal, View::Tangent, View::Bitangent,
                                      View::MappedNormal, View::Uv, View::Depth, View::LightTangent,
-                                     View::EyeTangent, View::MipLevel};
+                                     View::EyeTangent, View::MipLevel, View::Height, View::ParallaxOffset,
+                                     View::ParallaxSteps, View::SelfShadow};
+
 
 }  // namespace twr

@@ -507,7 +507,7 @@ TEST(ObjMaterials, OptionsHeightMapsAndWarnings) {
   ASSERT_TRUE(m.normalMap);
   EXPECT_FLOAT_EQ(m.normalStrength, 0.5f);
   ASSERT_TRUE(m.heightMap);  // grey texels: a height map
-  EXPECT_FLOAT_EQ(m.heightScale, 0.1f);
+  EXPECT_FLOAT_EQ(m.heightScale, kDefaultHeightScale * 0.1f);  // -bm 0.1 scales the default depth
   std::string all;
   for (const std::string& w : model.warnings) all += w + "\n";
   EXPECT_NE(all.find(f.mtl + ":6: 'd' (dissolve"), std::string::npos) << all;  // d 1 (line 3) is a no-op
