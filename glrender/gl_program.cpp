@@ -20,9 +20,15 @@ std::string sharedConstants() {
                 "#define MAX_LIGHTS %d\n"
                 "#define MAX_CLIP_PLANES %d\n"
                 "#define MIN_LENGTH_SQUARED %.9e\n"
-                "#define MIN_ATTENUATION_DENOMINATOR %.9e\n",
+                "#define MIN_ATTENUATION_DENOMINATOR %.9e\n"
+                "#define MIN_PARALLAX_VIEW_Z %.9e\n"
+                "#define SELF_SHADOW_SHARPNESS %.9e\n"
+                "#define HORIZON_SHARPNESS %.9e\n"
+                "#define PARALLAX_OFFSET_VIEW_GAIN %.9e\n",
                 kMaxLights, kMaxUserClipPlanes, static_cast<double>(kMinLengthSquared),
-                static_cast<double>(kMinAttenuationDenominator));
+                static_cast<double>(kMinAttenuationDenominator), static_cast<double>(kMinParallaxViewZ),
+                static_cast<double>(kSelfShadowSharpness), static_cast<double>(kHorizonSharpness),
+                static_cast<double>(kParallaxOffsetViewGain));
   return buffer;
 }
 

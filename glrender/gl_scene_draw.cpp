@@ -2,6 +2,8 @@
 
 #include "glrender/model_transforms.h"
 #include "scene/errors.h"
+#include "scene/horizon_map.h"
+#include "scene/surface_detail.h"
 
 #include <algorithm>
 #include <cctype>
@@ -14,6 +16,8 @@ namespace {
 constexpr GLint kDiffuseUnit = 0;
 constexpr GLint kNormalUnit = 1;
 constexpr GLint kSpecularUnit = 2;
+constexpr GLint kHeightUnit = 3;
+constexpr GLint kFirstHorizonUnit = 4;  // 4 to 7: one per 4 horizon azimuths
 
 // A map without texels is treated as absent, as the CPU does (softrender/shade.cpp).
 bool usableMap(const std::shared_ptr<const Texture>& map) {
@@ -114,6 +118,24 @@ void setUniforms(GLuint program, const Scene& scene, const RenderSettings& setti
   uvTransform(material.diffuseMap, "diffuseUvScale", "diffuseUvOffset");
   uvTransform(material.normalMap, "normalUvScale", "normalUvOffset");
   uvTransform(material.specularMap, "specularUvScale", "specularUvOffset");
+
+  const SurfaceDetailUse use = surfaceDetailUse(material, settings);
+  if (use.heightMap) {
+    const Texture& height = *material.heightMap;
+    glUniform1i(uniformLocation(program, "heightMap"), kHeightUnit);
+    glUniform1f(uniformLocation(program, "heightScale"), material.heightScale);
+    // The same float divisions as softrender/shade.cpp's uniforms.
+    const vec2 texel(1.0f / static_cast<float>(height.width), 1.0f / static_cast<float>(height.height));
+    glUniform2fv(uniformLocation(program, "heightTexel"), 1, &texel.x);
+    glUniform1f(uniformLocation(program, "layersMin"), static_cast<float>(material.parallaxLayers.x));
+    glUniform1f(uniformLocation(program, "layersMax"), static_cast<float>(material.parallaxLayers.y));
+    glUniform1i(uniformLocation(program, "layerCap"), material.parallaxLayers.y);
+    glUniform1i(uniformLocation(program, "refinementSteps"),
+                use.method == SurfaceDetail::Relief ? material.reliefRefinementSteps : 0);
+    for (int k = 0; k < 4; ++k) {
+      glUniform1i(uniformLocation(program, ("horizonMap" + std::to_string(k)).c_str()), kFirstHorizonUnit + k);
+    }
+  }
 }
 
 }  // namespace
@@ -121,7 +143,8 @@ void setUniforms(GLuint program, const Scene& scene, const RenderSettings& setti
 std::vector<std::string> phongDefines(const Material& material, const RenderSettings& settings) {
   std::vector<std::string> defines;
   if (usableMap(material.diffuseMap)) defines.push_back("HAS_DIFFUSE_MAP");
-  if (usableMap(material.normalMap)) {
+  const SurfaceDetailUse use = surfaceDetailUse(material, settings);
+  if (use.normalMap) {
     defines.push_back("HAS_NORMAL_MAP");
     if (material.normalMap->options.green == GreenAxis::Down) defines.push_back("NORMAL_MAP_GREEN_DOWN");
     if (material.normalMap->channels == TextureChannels::RedGreen) defines.push_back("NORMAL_MAP_XY");
@@ -129,9 +152,28 @@ std::vector<std::string> phongDefines(const Material& material, const RenderSett
   }
   if (usableMap(material.specularMap)) defines.push_back("HAS_SPECULAR_MAP");
   if (hasUvTransform(material.diffuseMap)) defines.push_back("DIFFUSE_UV_TRANSFORM");
-  if (hasUvTransform(material.normalMap)) defines.push_back("NORMAL_UV_TRANSFORM");
+  if (use.normalMap && hasUvTransform(material.normalMap)) defines.push_back("NORMAL_UV_TRANSFORM");
   if (hasUvTransform(material.specularMap)) defines.push_back("SPECULAR_UV_TRANSFORM");
   if (settings.lightingSpace == LightingSpace::Tangent) defines.push_back("LIGHTING_TANGENT");
+  if (use.heightMap) {
+    defines.push_back("HAS_HEIGHT_MAP");
+    if (use.method != SurfaceDetail::NormalMap) {
+      std::string method(toString(use.method));
+      std::transform(method.begin(), method.end(), method.begin(),
+                     [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+      defines.push_back("SURFACE_" + method);
+    }
+    if (shiftsUv(use.method)) defines.push_back("PARALLAX_UV");
+    if (use.selfShadow != SelfShadow::None) {
+      defines.push_back("SELF_SHADOW");
+      if (use.selfShadow == SelfShadow::HeightMarch) {
+        defines.push_back("SELF_SHADOW_HEIGHT_MARCH");
+      } else {
+        defines.push_back("SELF_SHADOW_HORIZON_MAP");
+        defines.push_back("HORIZON_DIRECTIONS " + std::to_string(use.horizonDirections));
+      }
+    }
+  }
   defines.push_back(viewDefine(settings.view));
   return defines;
 }
@@ -162,7 +204,7 @@ SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const S
     checkIndices(*item.mesh, item.nodeName);
     stats.trianglesIn += item.mesh->triangleCount();
     const Material& material = *item.material;
-    ProgramDesc desc{"phong", {"common.glsl", "phong.vert"}, {"common.glsl", "phong.frag"},
+    ProgramDesc desc{"phong", {"common.glsl", "phong.vert"}, {"common.glsl", "surface_detail.glsl", "phong.frag"},
                      phongDefines(material, settings)};
     if (frame == GlFrame::Lean) desc.defines.push_back("NO_TRIANGLE_ID");
     const GLuint program = programs.get(desc);
@@ -171,6 +213,11 @@ SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const S
     bindMap(material.diffuseMap, kDiffuseUnit);
     bindMap(material.normalMap, kNormalUnit);
     bindMap(material.specularMap, kSpecularUnit);
+    const SurfaceDetailUse use = surfaceDetailUse(material, settings);
+    if (use.heightMap) bindMap(material.heightMap, kHeightUnit);
+    for (int k = 0; k < use.horizonDirections / 4; ++k) {
+      bindMap(material.horizonMap->textures[static_cast<std::size_t>(k)], kFirstHorizonUnit + k);
+    }
     const GlMesh& mesh = uploads.mesh(*item.mesh);
     glBindVertexArray(mesh.vertexArray.id());
     glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);

@@ -41,6 +41,17 @@ inline constexpr float kMinLengthSquared = 1e-20f;
 // Smallest attenuation denominator A_C + A_L d + A_Q d^2 we divide by (unitless).
 inline constexpr float kMinAttenuationDenominator = 1e-6f;
 
+// Height fields (docs/parallax.md), shared by both renderers' shaders:
+// smallest tangent-space z (cosine to the normal, unitless) the parallax methods divide by, so
+// views at or below the tangent plane give a finite shift;
+inline constexpr float kMinParallaxViewZ = 1e-3f;
+// a height march's shadow: occlusion (depth units, 1 = heightScale) times this, clamped to 1;
+inline constexpr float kSelfShadowSharpness = 8.0f;
+// a horizon map's shadow: 0.5 + (light elevation sine - horizon sine) times this, clamped;
+inline constexpr float kHorizonSharpness = 4.0f;
+// the parallax_offset view: 0.5 + uv shift times this (a shift of 0.05 uv reaches 0 or 1).
+inline constexpr float kParallaxOffsetViewGain = 10.0f;
+
 // normalize() that never returns NaN: a zero-length vector yields `fallback`.
 inline vec3 safeNormalize(vec3 v, vec3 fallback = vec3(0.0f, 0.0f, 1.0f)) {
   const float lengthSquared = glm::dot(v, v);

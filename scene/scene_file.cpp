@@ -1,6 +1,8 @@
 // JSON scene files; docs/scene-format.md is the contract. Every value is checked where it
 // is read, so each message names the file, the JSON path of the value and what was expected.
 #include "scene/scene_file.h"
+
+#include "scene/horizon_map.h"
 #include "scene/json_text.h"
 
 #include "scene/errors.h"
@@ -524,6 +526,14 @@ class SceneReader {
       scene_.warnings.push_back(fileName_ + ": " + at("self_shadow") +
                                 ": ignored: self-shadowing needs a height-field surface_detail, not \"normal_map\"");
       material.selfShadow = SelfShadow::None;
+    }
+    if (material.selfShadow == SelfShadow::HorizonMap) {
+      if (material.horizonDirections % 4 != 0) {
+        fail(at("horizon_directions"), "expected a multiple of 4 (4 azimuths per RGBA texel), got " +
+                                           std::to_string(material.horizonDirections));
+      }
+      material.horizonMap = std::make_shared<const HorizonMap>(
+          makeHorizonMap(*material.heightMap, material.heightScale, material.horizonDirections));
     }
   }
 

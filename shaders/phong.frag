@@ -9,6 +9,10 @@
 // NORMAL_MAP_STRENGTH (x and y scaled by normalStrength), and DIFFUSE_UV_TRANSFORM,
 // NORMAL_UV_TRANSFORM, SPECULAR_UV_TRANSFORM (that map read at uv * <map>UvScale +
 // <map>UvOffset). The debug views keep the untransformed uv.
+// Height fields (shaders/surface_detail.glsl, included before this file): HAS_HEIGHT_MAP, the
+// method's SURFACE_<NAME>, PARALLAX_UV (every map is then read at the shifted uv with the
+// fragment's own uv differences, textureGrad), SELF_SHADOW_*; the views VIEW_HEIGHT,
+// VIEW_PARALLAX_OFFSET, VIEW_PARALLAX_STEPS, VIEW_SELF_SHADOW.
 // NO_TRIANGLE_ID: no triangle-id output, as an OpenGL user's shader has none (the lean
 // frame, glrender/gl_renderer.h; llvmpipe pays for gl_PrimitiveID even when no draw buffer
 // takes the output).
@@ -68,31 +72,77 @@ void main() {
   vec3 t = safeNormalize(tWorld);
   vec3 b = safeNormalize(bWorld);
 
+  // Surface detail from the height map: the parallax methods move the uv every map is read at;
+  // bump_blinn makes the normal; the rest read the height at uv.
+  vec2 uvMaps = uv;
+  float detailHeight = 1.0;
+  float detailSteps = 0.0;
+#ifdef HAS_HEIGHT_MAP
+  uvDx = dFdx(uv);
+  uvDy = dFdy(uv);
+  SurfaceDetail detail = SurfaceDetail(uv, 1.0, 0.0, vec3(0.0, 0.0, 1.0));
+#ifdef PARALLAX_UV
+#ifdef LIGHTING_TANGENT
+  vec3 eyeVec = eyeDirTangent;
+#else
+  vec3 eyeVec = eyePosWorld - posWorld;
+#endif
+  vec3 vT = tangentFromLighting(eyeVec, t, b, n);
+  detail = parallax(uv, vT);
+#else
+#ifdef SURFACE_BUMP_BLINN
+  detail.bumpTangent = bumpBlinn(uv);
+#endif
+  detail.height = heightAt(uv);
+#endif
+  uvMaps = detail.uv;
+  detailHeight = detail.height;
+  detailSteps = detail.steps;
+#endif
+
   // Each map's own uv (the map's uv transform, an MTL's -s and -o).
-  vec2 uvDiffuse = uv;
+  vec2 uvDiffuse = uvMaps;
+  vec2 diffuseScale = vec2(1.0);
 #ifdef DIFFUSE_UV_TRANSFORM
-  uvDiffuse = uv * diffuseUvScale + diffuseUvOffset;
+  uvDiffuse = uvMaps * diffuseUvScale + diffuseUvOffset;
+  diffuseScale = diffuseUvScale;
 #endif
-  vec2 uvNormal = uv;
+  vec2 uvNormal = uvMaps;
+  vec2 normalScale = vec2(1.0);
 #ifdef NORMAL_UV_TRANSFORM
-  uvNormal = uv * normalUvScale + normalUvOffset;
+  uvNormal = uvMaps * normalUvScale + normalUvOffset;
+  normalScale = normalUvScale;
 #endif
-  vec2 uvSpecular = uv;
+  vec2 uvSpecular = uvMaps;
+  vec2 specularScale = vec2(1.0);
 #ifdef SPECULAR_UV_TRANSFORM
-  uvSpecular = uv * specularUvScale + specularUvOffset;
+  uvSpecular = uvMaps * specularUvScale + specularUvOffset;
+  specularScale = specularUvScale;
 #endif
 
   vec3 albedo = vec3(1.0);
 #ifdef HAS_DIFFUSE_MAP
+#ifdef PARALLAX_UV
+  albedo = textureGrad(diffuseMap, uvDiffuse, uvDx * diffuseScale, uvDy * diffuseScale).rgb;
+#else
   albedo = texture(diffuseMap, uvDiffuse).rgb;
+#endif
 #endif
   vec3 specScale = vec3(1.0);
 #ifdef HAS_SPECULAR_MAP
+#ifdef PARALLAX_UV
+  specScale = textureGrad(specularMap, uvSpecular, uvDx * specularScale, uvDy * specularScale).rgb;
+#else
   specScale = texture(specularMap, uvSpecular).rgb;
+#endif
 #endif
   vec3 mappedTangent = vec3(0.0, 0.0, 1.0);
 #ifdef HAS_NORMAL_MAP
+#ifdef PARALLAX_UV
+  vec4 normalTexel = textureGrad(normalMap, uvNormal, uvDx * normalScale, uvDy * normalScale);
+#else
   vec4 normalTexel = texture(normalMap, uvNormal);
+#endif
   vec3 encoded = normalTexel.rgb;
 #ifdef NORMAL_MAP_GREEN_DOWN
   encoded.g = 1.0 - encoded.g;  // green pointing down: flip it to +v
@@ -107,11 +157,14 @@ void main() {
 #endif
   mappedTangent = safeNormalize(tangentNormal);
 #endif
+#ifdef SURFACE_BUMP_BLINN
+  mappedTangent = detail.bumpTangent;
+#endif
 
   vec3 nl = n;
 #if defined(LIGHTING_TANGENT)
   nl = mappedTangent;
-#elif defined(HAS_NORMAL_MAP)
+#elif defined(HAS_NORMAL_MAP) || defined(SURFACE_BUMP_BLINN)
   nl = safeNormalize(t * mappedTangent.x + b * mappedTangent.y + n * mappedTangent.z);
 #endif
 
@@ -135,9 +188,28 @@ void main() {
     float attenuation = 1.0 / max(lights[i].attenuation.x + lights[i].attenuation.y * d +
                                       lights[i].attenuation.z * d * d,
                                   MIN_ATTENUATION_DENOMINATOR);
-    vec3 diffuse = kd * albedo * max(nDotL, 0.0) * lights[i].diffuse;
+#if defined(SURFACE_BUMP_EMBOSS) || defined(SELF_SHADOW)
+    vec3 lT = tangentFromLighting(lVec, t, b, n);  // the light in tangent space
+#endif
+    float diffuseFactor = max(nDotL, 0.0);
+#ifdef SURFACE_BUMP_EMBOSS
+    // Emboss: N'.L ~ N.L + s (h(uv) - h(uv + lT.xy d)) / d, d = one texel; diffuse only.
+    float texel = heightTexel.x;
+    float hShifted = heightAt(vec2(uv.x + lT.x * texel, uv.y + lT.y * texel));
+    diffuseFactor = max(nDotL + heightScale * (detail.height - hShifted) / texel, 0.0);
+#endif
+    vec3 diffuse = kd * albedo * diffuseFactor * lights[i].diffuse;
+#ifdef SURFACE_BUMP_EMBOSS
+    vec3 specular = vec3(0.0);
+#else
     vec3 specular = nDotL > 0.0 ? ks * specScale * phongPow(rDotV, shininess) * lights[i].specular : vec3(0.0);
+#endif
+#ifdef SELF_SHADOW
+    float shadow = selfShadow(detail, lT);
+    sum += ((diffuse + specular) * attenuation) * shadow;
+#else
     sum += (diffuse + specular) * attenuation;
+#endif
   }
   vec3 ambientTerm = ka * albedo * ambient;
   colour = vec4(ambientTerm + sum, 1.0);
@@ -172,6 +244,30 @@ void main() {
 #endif
   }
   colour = vectorAsColour(dirTangent);
+#elif defined(VIEW_HEIGHT)
+  colour = vec4(detailHeight, detailHeight, detailHeight, 1.0);
+#elif defined(VIEW_PARALLAX_OFFSET)
+  colour = vec4(0.5 + (uvMaps.x - uv.x) * PARALLAX_OFFSET_VIEW_GAIN, 0.5 + (uvMaps.y - uv.y) * PARALLAX_OFFSET_VIEW_GAIN,
+                0.5, 1.0);
+#elif defined(VIEW_PARALLAX_STEPS)
+#ifdef HAS_HEIGHT_MAP
+  colour = heatColour(detailSteps / float(layerCap + refinementSteps));
+#else
+  colour = heatColour(0.0);
+#endif
+#elif defined(VIEW_SELF_SHADOW)
+  float shadow = 1.0;
+#ifdef SELF_SHADOW
+  if (lightCount > 0) {
+#ifdef LIGHTING_TANGENT
+    vec3 lVec0 = lightDirTangent[0];
+#else
+    vec3 lVec0 = lights[0].posWorld - posWorld;
+#endif
+    shadow = selfShadow(detail, tangentFromLighting(lVec0, t, b, n));
+  }
+#endif
+  colour = vec4(shadow, shadow, shadow, 1.0);
 #else
 #error "phong.frag: no VIEW_<NAME> defined"
 #endif

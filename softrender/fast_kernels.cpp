@@ -319,55 +319,12 @@ void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps,
 
 using SegmentKernel = void (*)(const Segment&, const ItemState&, const ItemMaps&, std::uint32_t*);
 
-// The kernel of a shader permutation. A debug view is instantiated only for the features it
-// reads (diffuse for Albedo; normal map and lighting space for MappedNormal; lighting space
-// for the two tangent-space directions), so 16 shaded and 15 debug kernels cover every key.
-template <View kView, bool kDiffuse, bool kNormal, bool kSpecular, bool kTangent>
-SegmentKernel kernelOf() {
-  constexpr LightingSpace kSpace = kTangent ? LightingSpace::Tangent : LightingSpace::World;
-  return &ShadeSegment<ShaderFeatures<kDiffuse, kNormal, kSpecular, kSpace, kView>>;
-}
-template <int kIndex>  // diffuse + 2 normal + 4 specular + 8 tangent
-SegmentKernel shadedKernelAt() {
-  return kernelOf<View::Shaded, (kIndex & 1) != 0, (kIndex & 2) != 0, (kIndex & 4) != 0, (kIndex & 8) != 0>();
-}
-template <int... kIndices>
-SegmentKernel shadedKernel(int index, std::integer_sequence<int, kIndices...>) {
-  SegmentKernel kernels[] = {shadedKernelAt<kIndices>()...};
-  return kernels[index];
-}
-template <View kView>
-SegmentKernel debugKernel(bool diffuse, bool normal, bool tangent) {
-  if constexpr (kView == View::Albedo) {
-    return diffuse ? kernelOf<kView, true, false, false, false>() : kernelOf<kView, false, false, false, false>();
-  } else if constexpr (kView == View::MappedNormal) {
-    if (normal) return tangent ? kernelOf<kView, false, true, false, true>() : kernelOf<kView, false, true, false, false>();
-    return tangent ? kernelOf<kView, false, false, false, true>() : kernelOf<kView, false, false, false, false>();
-  } else if constexpr (kView == View::LightTangent || kView == View::EyeTangent) {
-    return tangent ? kernelOf<kView, false, false, false, true>() : kernelOf<kView, false, false, false, false>();
-  } else {
-    return kernelOf<kView, false, false, false, false>();
-  }
-}
+// The kernel of a shader permutation: withShaderFeatures (shade.h) instantiates each view only
+// for the features it reads, so the kernels number what the teaching path's permutations do.
 SegmentKernel kernelFor(const ShaderKey& key) {
-  const bool tangent = key.space == LightingSpace::Tangent;
-  const bool d = key.diffuseMap, n = key.normalMap;
-  switch (key.view) {
-    case View::Shaded: break;
-    case View::Albedo:
-    case View::MipLevel:  // drawn as albedo (scene/mip_level_view.h); never reaches the kernels
-      return debugKernel<View::Albedo>(d, n, tangent);
-    case View::Normal: return debugKernel<View::Normal>(d, n, tangent);
-    case View::Tangent: return debugKernel<View::Tangent>(d, n, tangent);
-    case View::Bitangent: return debugKernel<View::Bitangent>(d, n, tangent);
-    case View::MappedNormal: return debugKernel<View::MappedNormal>(d, n, tangent);
-    case View::Uv: return debugKernel<View::Uv>(d, n, tangent);
-    case View::Depth: return debugKernel<View::Depth>(d, n, tangent);
-    case View::LightTangent: return debugKernel<View::LightTangent>(d, n, tangent);
-    case View::EyeTangent: return debugKernel<View::EyeTangent>(d, n, tangent);
-  }
-  const int index = (d ? 1 : 0) + (n ? 2 : 0) + (key.specularMap ? 4 : 0) + (tangent ? 8 : 0);
-  return shadedKernel(index, std::make_integer_sequence<int, 16>());
+  SegmentKernel kernel = nullptr;
+  withShaderFeatures(key, [&]<typename Features>() { kernel = &ShadeSegment<Features>; });
+  return kernel;
 }
 
 void ShadeBin(const std::vector<BinTriangle>& triangles, const std::vector<ItemState>& items,

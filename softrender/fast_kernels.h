@@ -82,6 +82,8 @@ struct ItemMaps {
   const TiledTexture* diffuse = nullptr;
   const TiledTexture* normal = nullptr;
   const TiledTexture* specular = nullptr;
+  const TiledTexture* height = nullptr;
+  std::array<const TiledTexture*, kMaxHorizonDirections / 4> horizon{};
 };
 
 // One target's kernels.

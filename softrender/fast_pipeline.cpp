@@ -1,5 +1,7 @@
 #include "softrender/fast_pipeline.h"
 
+#include "scene/horizon_map.h"
+
 #include "softrender/interpolate.h"
 #include "softrender/setup.h"
 
@@ -106,7 +108,12 @@ void FastPipeline::prepareMaps(const std::vector<ItemState>& items) {
     const ShadeUniforms& u = items[k].shade;
     const Material& material = *items[k].item->material;
     maps_[k] = ItemMaps{use(u.diffuseMap, material.diffuseMap), use(u.normalMap, material.normalMap),
-                        use(u.specularMap, material.specularMap)};
+                        use(u.specularMap, material.specularMap), use(u.heightMap, material.heightMap)};
+    if (u.horizonDirections > 0 && material.horizonMap) {
+      for (std::size_t i = 0; i < material.horizonMap->textures.size() && i < maps_[k].horizon.size(); ++i) {
+        maps_[k].horizon[i] = use(u.horizonMaps[i], material.horizonMap->textures[i]);
+      }
+    }
   }
   pool_.run(static_cast<int>(missing.size()), [&](int task, int) {
     TiledEntry& entry = *missing[static_cast<std::size_t>(task)];

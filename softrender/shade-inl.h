@@ -25,6 +25,7 @@
 #include "softrender/lane_math-inl.h"
 #include "softrender/lanes.h"
 #include "softrender/phong_pow-inl.h"
+#include "softrender/surface_detail-inl.h"
 #include "softrender/texture_sample-inl.h"
 
 #include <cstddef>
@@ -53,15 +54,16 @@ TWR_LANE_INLINE L attenuationLanes(const Vec3T<ScalarOf<L>>& a, L d) {
 // Which map a uv transform belongs to (ShadeUniformsT::uvTransform).
 inline constexpr std::size_t kDiffuseSlot = 0, kNormalSlot = 1, kSpecularSlot = 2;
 
-// One material map at the fragment's uv: the map's own uv transform first (phong.frag's
-// <MAP>_UV_TRANSFORM, uv * scale + offset), then the LOD of the fragment's quad when the
-// filter uses mipmaps (the differences scale with the transform), or with anisotropy the
-// elliptical filter over the quad's differences.
+// One material map at `uv` (the fragment's, or where a parallax method moved it): the map's
+// own uv transform first (phong.frag's <MAP>_UV_TRANSFORM, uv * scale + offset), then the LOD
+// of the fragment's quad when the filter uses mipmaps (the differences scale with the
+// transform), or with anisotropy the elliptical filter over the quad's differences. The
+// differences are always the fragment's own (a shifted uv is read with textureGrad in GLSL).
 template <typename L, typename View>
 TWR_LANE_INLINE Vec4L<L> sampleMapLanes(const View& map, const ShadeUniformsT<ScalarOf<L>>& u, std::size_t slot,
-                                        const FragmentL<L>& f) {
+                                        const FragmentL<L>& f, const Vec2L<L>& uvIn) {
   using S = ScalarOf<L>;
-  Vec2L<L> uv = f.uv, dx = f.uvDx, dy = f.uvDy;
+  Vec2L<L> uv = uvIn, dx = f.uvDx, dy = f.uvDy;
   if (u.uvTransform[slot]) {
     const Vec2L<L> scale(L(u.uvScale[slot].x), L(u.uvScale[slot].y));
     const Vec2L<L> offset(L(u.uvOffset[slot].x), L(u.uvOffset[slot].y));
@@ -72,6 +74,19 @@ TWR_LANE_INLINE Vec4L<L> sampleMapLanes(const View& map, const ShadeUniformsT<Sc
   if (u.anisotropic) return sampleTextureAnisotropicLanes<L>(map, uv, u.filter, dx, dy);
   const L lod = usesMipmaps(u.filter) ? quadLodLanes<L>(dx, dy, texLevelWidth(map, 0), texLevelHeight(map, 0)) : L(S(0));
   return sampleTextureLanes<L>(map, uv, u.filter, lod);
+}
+
+// Self-shadowing of one light by the height field (1 = lit) at the surface detail's uv; lT is
+// the light in tangent space, normalised. Called only when a height map is bound.
+template <typename L, typename Maps>
+TWR_LANE_INLINE L selfShadowLanes(const Maps& maps, const ShadeUniformsT<ScalarOf<L>>& u, const FragmentL<L>& f,
+                                  const SurfaceDetailL<L>& detail, const Vec3L<L>& lT) {
+  using S = ScalarOf<L>;
+  if (u.selfShadow == SelfShadow::HeightMarch) {
+    return heightMarchShadowLanes<L>(*maps.height, u, f, detail.uv, detail.height, lT);
+  }
+  if (u.selfShadow == SelfShadow::HorizonMap) return horizonShadowLanes<L>(maps, u, f, detail.uv, lT);
+  return L(S(1));
 }
 
 // Shades one fragment per lane with the permutation `Features` (shade.h's ShaderFeatures).
@@ -89,20 +104,37 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
   const Vec3L<L> t = safeNormalize3<L>(f.tWorld);
   const Vec3L<L> b = safeNormalize3<L>(f.bWorld);
 
+  // Surface detail from the height map (surface_detail-inl.h): the parallax methods move the
+  // uv every map is read at; bump_blinn makes the normal; the rest read the height at uv.
+  SurfaceDetailL<L> detail{f.uv, one, zero, Vec3L<L>(zero, zero, one)};
+  if constexpr (Features::kHasHeightMap) {
+    if (shiftsUv(u.surfaceDetail)) {
+      const Vec3L<L> eyeVec = kTangentSpace ? f.eyeDirTangent : Vec3L<L>(u.eyePosWorld) - f.posWorld;
+      const Vec3L<L> vT = tangentFromLightingLanes<L>(eyeVec, t, b, n, kTangentSpace);
+      detail = parallaxLanes<L>(*maps.height, u, f, vT);
+    } else {
+      if (u.surfaceDetail == SurfaceDetail::BumpBlinn) detail.bumpTangent = bumpBlinnLanes<L>(*maps.height, u, f);
+      detail.height = heightAtLanes<L>(*maps.height, u, f.uv, f);
+    }
+  }
+  const bool bumpNormal = Features::kHasHeightMap && u.surfaceDetail == SurfaceDetail::BumpBlinn;
+  const bool emboss = Features::kHasHeightMap && u.surfaceDetail == SurfaceDetail::BumpEmboss;
+  const bool selfShadowOn = Features::kHasHeightMap && u.selfShadow != SelfShadow::None;
+
   Vec3L<L> albedo(one);
   if constexpr (Features::kHasDiffuseMap) {
-    const Vec4L<L> texel = sampleMapLanes<L>(*maps.diffuse, u, kDiffuseSlot, f);
+    const Vec4L<L> texel = sampleMapLanes<L>(*maps.diffuse, u, kDiffuseSlot, f, detail.uv);
     albedo = Vec3L<L>(texel.x, texel.y, texel.z);
   }
   Vec3L<L> specScale(one);
   if constexpr (Features::kHasSpecularMap) {
-    const Vec4L<L> texel = sampleMapLanes<L>(*maps.specular, u, kSpecularSlot, f);
+    const Vec4L<L> texel = sampleMapLanes<L>(*maps.specular, u, kSpecularSlot, f, detail.uv);
     specScale = Vec3L<L>(texel.x, texel.y, texel.z);
   }
   Vec3L<L> mappedTangent(zero, zero, one);
   Vec4L<L> normalTexel(zero);
   if constexpr (Features::kHasNormalMap) {
-    normalTexel = sampleMapLanes<L>(*maps.normal, u, kNormalSlot, f);
+    normalTexel = sampleMapLanes<L>(*maps.normal, u, kNormalSlot, f, detail.uv);
     Vec3L<L> encoded(normalTexel.x, normalTexel.y, normalTexel.z);
     if (u.normalGreenDown) encoded.y = one - encoded.y;
     Vec3L<L> tangentNormal = two * encoded - one;
@@ -116,13 +148,15 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
     }
     mappedTangent = safeNormalize3<L>(tangentNormal);
   }
+  if (bumpNormal) mappedTangent = detail.bumpTangent;
 
   Vec3L<L> nl = n;
   if constexpr (kTangentSpace) {
     nl = mappedTangent;
-  } else if constexpr (Features::kHasNormalMap) {
+  } else if (Features::kHasNormalMap || bumpNormal) {
     nl = safeNormalize3<L>(t * mappedTangent.x + b * mappedTangent.y + n * mappedTangent.z);
   }
+
 
   if constexpr (kTrace) {
     if (terms) {
@@ -134,6 +168,9 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
       terms->normalTexel = normalTexel;
       terms->mappedTangent = mappedTangent;
       terms->nl = nl;
+      terms->uvShifted = detail.uv;
+      terms->height = detail.height;
+      terms->parallaxSteps = detail.steps;
     }
   }
 
@@ -160,14 +197,32 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
       const Vec3L<L> r = (two * nDotL) * nl - l;
       const L rDotV = maxOf(dot3<L>(r, v), zero);
       const L attenuation = attenuationLanes<L>(light.attenuation, d);
-      const Vec3L<L> diffuse = (kdAlbedo * maxOf(nDotL, zero)) * Vec3L<L>(light.diffuse);
+      Vec3L<L> lT(zero, zero, one);  // the light in tangent space (emboss and self-shadowing)
+      if (emboss || selfShadowOn) lT = tangentFromLightingLanes<L>(lVec, t, b, n, kTangentSpace);
+      L diffuseFactor = maxOf(nDotL, zero);
+      if constexpr (Features::kHasHeightMap) {
+        if (emboss) {
+          // Emboss: N'.L ~ N.L + s (h(uv) - h(uv + lT.xy d)) / d, d = one texel: Blinn's first
+          // order term along the light, from two height samples; diffuse only.
+          const L texel(u.heightTexel.x);
+          const L hShifted = heightAtLanes<L>(*maps.height, u, Vec2L<L>(f.uv.x + lT.x * texel, f.uv.y + lT.y * texel), f);
+          diffuseFactor = maxOf(nDotL + L(u.heightScale) * (detail.height - hShifted) / texel, zero);
+        }
+      }
+      const Vec3L<L> diffuse = (kdAlbedo * diffuseFactor) * Vec3L<L>(light.diffuse);
       // The specular term only where N.L > 0 (and pow only when some lane needs it).
       const auto lit = nDotL > zero;
       Vec3L<L> specular(zero);
-      if (anyOf(lit)) {
+      if (!emboss && anyOf(lit)) {
         specular = select3<L>(lit, (ksSpec * phongPow<L>(rDotV, u.shininess)) * Vec3L<L>(light.specular), specular);
       }
-      sum += (diffuse + specular) * attenuation;
+      L shadow = one;
+      if (selfShadowOn) {
+        shadow = selfShadowLanes<L>(maps, u, f, detail, lT);
+        sum += ((diffuse + specular) * attenuation) * shadow;
+      } else {
+        sum += (diffuse + specular) * attenuation;
+      }
       if constexpr (kTrace) {
         if (terms) {
           auto& lt = terms->lights[static_cast<std::size_t>(i)];
@@ -180,6 +235,7 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
           lt.nDotL = nDotL;
           lt.rDotV = rDotV;
           lt.attenuation = attenuation;
+          lt.selfShadow = shadow;
           lt.diffuse = diffuse;
           lt.specular = specular;
         }
@@ -219,6 +275,21 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
       }
     }
     colour = vectorAsColourLanes<L>(dirTangent);
+  } else if constexpr (Features::kView == View::Height) {
+    colour = Vec4L<L>(detail.height, detail.height, detail.height, one);
+  } else if constexpr (Features::kView == View::ParallaxOffset) {
+    const L gain(static_cast<S>(kParallaxOffsetViewGain)), half(S(0.5));
+    colour = Vec4L<L>(half + (detail.uv.x - f.uv.x) * gain, half + (detail.uv.y - f.uv.y) * gain, half, one);
+  } else if constexpr (Features::kView == View::ParallaxSteps) {
+    const L most(static_cast<S>(u.layerCap + u.refinementSteps));
+    colour = heatColourLanes<L>(detail.steps / most);
+  } else if constexpr (Features::kView == View::SelfShadow) {
+    L shadow = one;
+    if (selfShadowOn && u.lightCount > 0) {
+      const Vec3L<L> lVec = kTangentSpace ? f.lightDirTangent[0] : Vec3L<L>(u.lights[0].posWorld) - f.posWorld;
+      shadow = selfShadowLanes<L>(maps, u, f, detail, tangentFromLightingLanes<L>(lVec, t, b, n, kTangentSpace));
+    }
+    colour = Vec4L<L>(shadow, shadow, shadow, one);
   }
   colour = clampUnit4<L>(colour);
   if constexpr (kTrace) {

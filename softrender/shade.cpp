@@ -1,5 +1,8 @@
 #include "softrender/shade.h"
 
+#include "scene/horizon_map.h"
+#include "scene/surface_detail.h"
+
 #include <algorithm>
 
 namespace twr {
@@ -18,6 +21,26 @@ ShadeUniformsT<T> makeShadeUniforms(const Material& material, const Scene& scene
   u.diffuseMap = usable(material.diffuseMap);
   u.normalMap = usable(material.normalMap);
   u.specularMap = usable(material.specularMap);
+  // Height field: read when the method draws it, or when a height view shows it
+  // (scene/surface_detail.h decides for both renderers).
+  const SurfaceDetailUse use = surfaceDetailUse(material, settings);
+  if (!use.normalMap) u.normalMap = nullptr;
+  if (use.heightMap) {
+    const Texture* height = material.heightMap.get();
+    u.heightMap = height;
+    u.surfaceDetail = use.method;
+    u.heightScale = static_cast<T>(material.heightScale);
+    u.heightTexel = Vec2T<T>(T(1.0f / static_cast<float>(height->width)), T(1.0f / static_cast<float>(height->height)));
+    u.layersMin = static_cast<T>(material.parallaxLayers.x);
+    u.layersMax = static_cast<T>(material.parallaxLayers.y);
+    u.layerCap = material.parallaxLayers.y;
+    u.refinementSteps = use.method == SurfaceDetail::Relief ? material.reliefRefinementSteps : 0;
+    u.selfShadow = use.selfShadow;
+    u.horizonDirections = use.horizonDirections;
+    for (int k = 0; k < use.horizonDirections / 4; ++k) {
+      u.horizonMaps[static_cast<std::size_t>(k)] = material.horizonMap->textures[static_cast<std::size_t>(k)].get();
+    }
+  }
   u.filter = settings.textureFilter;
   u.anisotropic = settings.anisotropy > 1.0f;
   if (u.normalMap) {

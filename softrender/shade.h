@@ -58,6 +58,20 @@ struct ShadeUniformsT {
   std::array<bool, 3> uvTransform{};
   std::array<Vec2T<T>, 3> uvScale{Vec2T<T>(T(1)), Vec2T<T>(T(1)), Vec2T<T>(T(1))};
   std::array<Vec2T<T>, 3> uvOffset{};
+  // Height field (surface_detail-inl.h): the method, the depth in texture-space units, one
+  // level-0 texel in uv (Blinn's finite differences), the layer counts as floats, the cap on
+  // any march's iterations (the max layer count), relief's refinement steps, the self-shadow
+  // method and the horizon map's azimuth count (4 per horizon texture).
+  const Texture* heightMap = nullptr;
+  SurfaceDetail surfaceDetail = SurfaceDetail::NormalMap;
+  T heightScale = T(kDefaultHeightScale);
+  Vec2T<T> heightTexel{T(1)};
+  T layersMin = T(8), layersMax = T(32);
+  int layerCap = 32;
+  int refinementSteps = 5;
+  SelfShadow selfShadow = SelfShadow::None;
+  int horizonDirections = 0;
+  std::array<const Texture*, kMaxHorizonDirections / 4> horizonMaps{};
   Vec3T<T> ambient{T(0)};  // Ia
   std::array<LightUniformT<T>, kMaxLights> lights{};
   int lightCount = 0;  // in [0, kMaxLights]
@@ -76,6 +90,7 @@ struct LightTermsT {
   Vec3T<T> l{T(0)}, v{T(0)}, r{T(0)};
   T nDotL = T(0), rDotV = T(0);
   T attenuation = T(0);  // If
+  T selfShadow = T(1);   // 1 = lit, 0 = in the height field's shadow
   Vec3T<T> diffuse{T(0)}, specular{T(0)};
 };
 using LightTerms = LightTermsT<float>;
@@ -86,6 +101,9 @@ struct ShadeTermsT {
   Vec4T<T> normalTexel{T(0)};          // raw normal-map sample in [0, 1] (0 without a map)
   Vec3T<T> mappedTangent{T(0), T(0), T(1)};
   Vec3T<T> nl{T(0)};                   // the normal lighting uses (lighting space)
+  Vec2T<T> uvShifted{T(0)};            // where the maps were read (the parallax methods move it)
+  T height = T(1);                     // the height there (1 without a height map)
+  T parallaxSteps = T(0);              // layers marched
   Vec3T<T> ambient{T(0)};              // ka albedo Ia
   std::array<LightTermsT<T>, kMaxLights> lights{};
   int lightCount = 0;
@@ -100,8 +118,11 @@ Vec4T<T> vectorAsColour(Vec3T<T> v) {
 }
 
 // The compile-time feature set of one shader permutation.
-template <bool DiffuseMap, bool NormalMap, bool SpecularMap, LightingSpace Space, View ViewMode>
+// HeightMap: the material's surface detail reads its height map (surface_detail-inl.h); the
+// method itself is a uniform (one branch per draw item), as each adds a loop, not a variant.
+template <bool DiffuseMap, bool NormalMap, bool SpecularMap, LightingSpace Space, View ViewMode, bool HeightMap = false>
 struct ShaderFeatures {
+  static constexpr bool kHasHeightMap = HeightMap;
   static constexpr bool kHasDiffuseMap = DiffuseMap;
   static constexpr bool kHasNormalMap = NormalMap;
   static constexpr bool kHasSpecularMap = SpecularMap;
@@ -114,6 +135,8 @@ struct TextureMaps {
   const Texture* diffuse = nullptr;
   const Texture* normal = nullptr;
   const Texture* specular = nullptr;
+  const Texture* height = nullptr;
+  std::array<const Texture*, kMaxHorizonDirections / 4> horizon{};
 };
 
 }  // namespace twr
@@ -126,15 +149,41 @@ namespace twr {
 // of the pipeline (float, or double for the reference).
 template <typename Features, typename T>
 Vec4T<T> shadeFragment(const FragmentT<T>& f, const ShadeUniformsT<T>& u, std::type_identity_t<ShadeTermsT<T>>* terms) {
-  return shadeFragmentLanes<Features, T>(f, u, TextureMaps{u.diffuseMap, u.normalMap, u.specularMap}, terms);
+  return shadeFragmentLanes<Features, T>(f, u, TextureMaps{u.diffuseMap, u.normalMap, u.specularMap, u.heightMap, u.horizonMaps},
+                                         terms);
 }
 
 // Which permutation a draw item needs (runtime values of the template parameters).
 struct ShaderKey {
-  bool diffuseMap = false, normalMap = false, specularMap = false;
+  bool diffuseMap = false, normalMap = false, specularMap = false, heightMap = false;
   LightingSpace space = LightingSpace::World;
   View view = View::Shaded;
 };
+
+// The key with the features its view does not read cleared, so equal pictures share one
+// permutation: albedo reads the diffuse map; mapped_normal the normal map; shaded everything;
+// the height views and a parallax method (which moves every map's uv) the height map.
+constexpr bool viewReadsHeightMap(View v) {
+  return v == View::Shaded || v == View::Albedo || v == View::MappedNormal || isHeightView(v);
+}
+inline ShaderKey canonicalShaderKey(ShaderKey key) {
+  switch (key.view) {
+    case View::Shaded: break;
+    case View::Albedo:
+    case View::MipLevel:
+      key.normalMap = key.specularMap = false;
+      break;
+    case View::MappedNormal: key.diffuseMap = key.specularMap = false; break;
+    case View::Height:
+    case View::ParallaxOffset:
+    case View::ParallaxSteps:
+    case View::SelfShadow:
+      key.diffuseMap = key.normalMap = key.specularMap = false;
+      break;
+    default: key.diffuseMap = key.normalMap = key.specularMap = key.heightMap = false; break;
+  }
+  return key;
+}
 
 template <typename T>
 ShaderKey shaderKeyFor(const ShadeUniformsT<T>& uniforms, const RenderSettings& settings) {
@@ -142,57 +191,74 @@ ShaderKey shaderKeyFor(const ShadeUniformsT<T>& uniforms, const RenderSettings& 
   key.diffuseMap = uniforms.diffuseMap != nullptr;
   key.normalMap = uniforms.normalMap != nullptr;
   key.specularMap = uniforms.specularMap != nullptr;
+  key.heightMap = uniforms.heightMap != nullptr;
   key.space = settings.lightingSpace;
   key.view = settings.view;
-  return key;
+  return canonicalShaderKey(key);
 }
 
 // Calls body.template operator()<ShaderFeatures<...>>() for the permutation `key` names: the
-// one runtime branch per draw item, so nothing per pixel is dispatched at run time.
+// one runtime branch per draw item, so nothing per pixel is dispatched at run time. A debug
+// view is instantiated only for the features it reads (canonicalShaderKey clears the others).
 template <typename Body>
-void withShaderFeatures(const ShaderKey& key, Body&& body) {
-  auto withView = [&]<bool D, bool N, bool S, LightingSpace L>() {
-    switch (key.view) {
-      case View::Shaded: body.template operator()<ShaderFeatures<D, N, S, L, View::Shaded>>(); break;
-      case View::Albedo:
-      case View::MipLevel:  // drawn as albedo (scene/mip_level_view.h)
-        body.template operator()<ShaderFeatures<D, N, S, L, View::Albedo>>();
-        break;
-      case View::Normal: body.template operator()<ShaderFeatures<D, N, S, L, View::Normal>>(); break;
-      case View::Tangent: body.template operator()<ShaderFeatures<D, N, S, L, View::Tangent>>(); break;
-      case View::Bitangent: body.template operator()<ShaderFeatures<D, N, S, L, View::Bitangent>>(); break;
-      case View::MappedNormal: body.template operator()<ShaderFeatures<D, N, S, L, View::MappedNormal>>(); break;
-      case View::Uv: body.template operator()<ShaderFeatures<D, N, S, L, View::Uv>>(); break;
-      case View::Depth: body.template operator()<ShaderFeatures<D, N, S, L, View::Depth>>(); break;
-      case View::LightTangent: body.template operator()<ShaderFeatures<D, N, S, L, View::LightTangent>>(); break;
-      case View::EyeTangent: body.template operator()<ShaderFeatures<D, N, S, L, View::EyeTangent>>(); break;
-    }
-  };
-  auto withSpace = [&]<bool D, bool N, bool S>() {
-    if (key.space == LightingSpace::Tangent) {
-      withView.template operator()<D, N, S, LightingSpace::Tangent>();
+void withShaderFeatures(const ShaderKey& keyIn, Body&& body) {
+  const ShaderKey key = canonicalShaderKey(keyIn);
+  constexpr LightingSpace kWorld = LightingSpace::World, kTangent = LightingSpace::Tangent;
+  auto withSpace = [&]<bool D, bool N, bool S, View V, bool H>() {
+    // Views that read no lighting-space vector draw the same in both spaces: one permutation.
+    constexpr bool kSpaceFree = !H && V != View::Shaded && V != View::MappedNormal && V != View::LightTangent &&
+                                V != View::EyeTangent;
+    if constexpr (kSpaceFree) {
+      body.template operator()<ShaderFeatures<D, N, S, kWorld, V, H>>();
+    } else if (key.space == kTangent) {
+      body.template operator()<ShaderFeatures<D, N, S, kTangent, V, H>>();
     } else {
-      withView.template operator()<D, N, S, LightingSpace::World>();
+      body.template operator()<ShaderFeatures<D, N, S, kWorld, V, H>>();
     }
   };
-  auto withSpecular = [&]<bool D, bool N>() {
-    if (key.specularMap) {
-      withSpace.template operator()<D, N, true>();
-    } else {
-      withSpace.template operator()<D, N, false>();
+  // Each level branches only where the view reads that feature (else it is off, compiled out).
+  auto withHeight = [&]<bool D, bool N, bool S, View V>() {
+    if constexpr (viewReadsHeightMap(V)) {
+      if (key.heightMap) return withSpace.template operator()<D, N, S, V, true>();
     }
+    withSpace.template operator()<D, N, S, V, false>();
   };
-  auto withNormal = [&]<bool D>() {
-    if (key.normalMap) {
-      withSpecular.template operator()<D, true>();
-    } else {
-      withSpecular.template operator()<D, false>();
+  auto withDiffuse = [&]<bool N, bool S, View V>() {
+    if constexpr (V == View::Shaded || V == View::Albedo) {
+      if (key.diffuseMap) return withHeight.template operator()<true, N, S, V>();
     }
+    withHeight.template operator()<false, N, S, V>();
   };
-  if (key.diffuseMap) {
-    withNormal.template operator()<true>();
-  } else {
-    withNormal.template operator()<false>();
+  auto withNormal = [&]<bool S, View V>() {
+    if constexpr (V == View::Shaded || V == View::MappedNormal) {
+      if (key.normalMap) return withDiffuse.template operator()<true, S, V>();
+    }
+    withDiffuse.template operator()<false, S, V>();
+  };
+  auto withAll = [&]<View V>() {
+    if constexpr (V == View::Shaded) {
+      if (key.specularMap) return withNormal.template operator()<true, V>();
+    }
+    withNormal.template operator()<false, V>();
+  };
+  switch (key.view) {
+    case View::Shaded: withAll.template operator()<View::Shaded>(); break;
+    case View::Albedo:
+    case View::MipLevel:  // drawn as albedo (scene/mip_level_view.h)
+      withAll.template operator()<View::Albedo>();
+      break;
+    case View::Normal: withAll.template operator()<View::Normal>(); break;
+    case View::Tangent: withAll.template operator()<View::Tangent>(); break;
+    case View::Bitangent: withAll.template operator()<View::Bitangent>(); break;
+    case View::MappedNormal: withAll.template operator()<View::MappedNormal>(); break;
+    case View::Uv: withAll.template operator()<View::Uv>(); break;
+    case View::Depth: withAll.template operator()<View::Depth>(); break;
+    case View::LightTangent: withAll.template operator()<View::LightTangent>(); break;
+    case View::EyeTangent: withAll.template operator()<View::EyeTangent>(); break;
+    case View::Height: withAll.template operator()<View::Height>(); break;
+    case View::ParallaxOffset: withAll.template operator()<View::ParallaxOffset>(); break;
+    case View::ParallaxSteps: withAll.template operator()<View::ParallaxSteps>(); break;
+    case View::SelfShadow: withAll.template operator()<View::SelfShadow>(); break;
   }
 }
 

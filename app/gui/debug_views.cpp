@@ -45,6 +45,21 @@ const char* viewLegend(View view) {
              "yellow, 4 red, 5 magenta, 6 white, 7 light grey, 8 grey, 9 black, 10 navy, 11 purple, 12 maroon; "
              "trilinear blends neighbours (cyan-green = level 1.5). Nearest and bilinear read level 0 only; "
              "brown surfaces have no map.";
+    case View::Height:
+      return "The height field's height where the maps are read (after a parallax shift), as grey: black 0 = "
+             "the bottom of the relief, white 1 = the top, where the polygon lies. White everywhere: no height "
+             "map (docs/parallax.md).";
+    case View::ParallaxOffset:
+      return "How far a parallax method moved uv: red = 0.5 + 10 du, green = 0.5 + 10 dv (grey: no shift; a "
+             "shift of 0.05 uv reaches black or full). Plain parallax's shift grows as 1 / V.z towards grazing "
+             "views; offset limiting caps it at the depth.";
+    case View::ParallaxSteps:
+      return "Layers marched per pixel (steep, relief, occlusion), plus relief's refinement steps, as a heat map: "
+             "blue 0, cyan 1/4, green 1/2, yellow 3/4, red = the most (parallax_layers' max + refinement "
+             "steps). Grazing views march more.";
+    case View::SelfShadow:
+      return "How much light 0 reaches the point through the height field: white lit, black in its shadow "
+             "(height march or horizon map). White everywhere: self_shadow is none or there is no light.";
   }
   return "";
 }

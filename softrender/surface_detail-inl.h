@@ -1,0 +1,264 @@
+// Height fields over any lane type: Blinn's bump mapping, emboss bump mapping, the parallax
+// family (plain, offset limited, steep, relief, parallax occlusion) and self-shadowing by a
+// march towards the light or a horizon map. The C++ twin of the functions of the same names
+// in shaders/surface_detail.glsl, in the same order of operations; docs/parallax.md derives
+// each one. Shared source, included plainly and per Highway target (softrender/lanes.h).
+//
+// Conventions (docs/parallax.md): a height h in [0, 1] is the map's red channel, 1 = top. The
+// polygon lies at the top of the relief; a point of height h lies (1 - h) heightScale below it,
+// in texture-space units (1 = one uv unit along the surface), so depth = 1 - h in [0, 1] is
+// measured in units of heightScale. Every height is read with the fragment's own uv
+// differences (textureGrad in GLSL), so the mip level does not jump where a march moves uv.
+
+#if defined(TWR_LANES_HIGHWAY)
+#if defined(TWR_SURFACE_DETAIL_INL_TARGET) == defined(HWY_TARGET_TOGGLE)
+#ifdef TWR_SURFACE_DETAIL_INL_TARGET
+#undef TWR_SURFACE_DETAIL_INL_TARGET
+#else
+#define TWR_SURFACE_DETAIL_INL_TARGET
+#endif
+#define TWR_SURFACE_DETAIL_INL_EMIT
+#endif
+#elif !defined(TWR_SURFACE_DETAIL_INL_PLAIN)
+#define TWR_SURFACE_DETAIL_INL_PLAIN
+#define TWR_SURFACE_DETAIL_INL_EMIT
+#endif
+
+#ifdef TWR_SURFACE_DETAIL_INL_EMIT
+#undef TWR_SURFACE_DETAIL_INL_EMIT
+
+#include "softrender/interpolate-inl.h"
+#include "softrender/lane_math-inl.h"
+#include "softrender/lanes.h"
+#include "softrender/texture_sample-inl.h"
+
+#include <cstddef>
+
+TWR_LANES_BEGIN
+
+// A map read at `uv` with explicit uv differences (GLSL's textureGrad): the LOD of the
+// differences when the filter uses mipmaps, or the elliptical filter with anisotropy.
+template <typename L, typename View>
+TWR_LANE_INLINE Vec4L<L> sampleGradLanes(const View& map, const ShadeUniformsT<ScalarOf<L>>& u, const Vec2L<L>& uv,
+                                         const Vec2L<L>& dx, const Vec2L<L>& dy) {
+  using S = ScalarOf<L>;
+  if (u.anisotropic) return sampleTextureAnisotropicLanes<L>(map, uv, u.filter, dx, dy);
+  const L lod = usesMipmaps(u.filter) ? quadLodLanes<L>(dx, dy, texLevelWidth(map, 0), texLevelHeight(map, 0)) : L(S(0));
+  return sampleTextureLanes<L>(map, uv, u.filter, lod);
+}
+
+// heightAt: the height in [0, 1] at uv (red channel), with the fragment's uv differences.
+template <typename L, typename View>
+TWR_LANE_INLINE L heightAtLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u, const Vec2L<L>& uv,
+                                const FragmentL<L>& f) {
+  return sampleGradLanes<L>(heightMap, u, uv, f.uvDx, f.uvDy).x;
+}
+
+// A lighting-space direction in the fragment's tangent frame, normalised: tangent space hands
+// the interpolated vector over as it is; world space projects w onto (t, b, n).
+template <typename L>
+TWR_LANE_INLINE Vec3L<L> tangentFromLightingLanes(const Vec3L<L>& w, const Vec3L<L>& t, const Vec3L<L>& b,
+                                                  const Vec3L<L>& n, bool tangentSpace) {
+  if (tangentSpace) return safeNormalize3<L>(w);
+  return safeNormalize3<L>(Vec3L<L>(dot3<L>(t, w), dot3<L>(b, w), dot3<L>(n, w)));
+}
+
+// Layers for a march along `dir` (tangent space, normalised): parallaxLayers' min looking
+// straight down, its max at grazing angles, linear in 1 - |dir.z| (not rounded).
+template <typename L>
+TWR_LANE_INLINE L layerCountLanes(const ShadeUniformsT<ScalarOf<L>>& u, const Vec3L<L>& dir) {
+  using S = ScalarOf<L>;
+  return L(u.layersMin) + L(u.layersMax - u.layersMin) * (L(S(1)) - absOf(dir.z));
+}
+
+// What the surface-detail stage hands to the rest of the shading.
+template <typename L>
+struct SurfaceDetailL {
+  Vec2L<L> uv;            // where every map is read (uv shifted by the parallax methods)
+  L height;               // the height at that uv
+  L steps;                // layers marched, plus refinement steps (parallax_steps view)
+  Vec3L<L> bumpTangent;   // bump_blinn's tangent-space normal, (0, 0, 1) otherwise
+};
+
+// Blinn (1978): the height field displaces the surface along N by heightScale h(u, v); to
+// first order its tangent-space normal is (-s dh/du, -s dh/dv, 1), normalised. The partial
+// derivatives are central differences one level-0 texel (u.heightTexel) either side.
+template <typename L, typename View>
+TWR_LANE_INLINE Vec3L<L> bumpBlinnLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u, const FragmentL<L>& f) {
+  using S = ScalarOf<L>;
+  const L du(u.heightTexel.x), dv(u.heightTexel.y), zero(S(0)), one(S(1)), two(S(2));
+  const L hL = heightAtLanes<L>(heightMap, u, Vec2L<L>(f.uv.x - du, f.uv.y), f);
+  const L hR = heightAtLanes<L>(heightMap, u, Vec2L<L>(f.uv.x + du, f.uv.y), f);
+  const L hD = heightAtLanes<L>(heightMap, u, Vec2L<L>(f.uv.x, f.uv.y - dv), f);
+  const L hU = heightAtLanes<L>(heightMap, u, Vec2L<L>(f.uv.x, f.uv.y + dv), f);
+  const L dhDu = (hR - hL) / (two * du);
+  const L dhDv = (hU - hD) / (two * dv);
+  const L s(u.heightScale);
+  return safeNormalize3<L>(Vec3L<L>(zero - s * dhDu, zero - s * dhDv, one));
+}
+
+// The parallax family: where the view ray through the fragment meets the height field, as uv.
+// vT: the eye direction in tangent space, normalised.
+template <typename L, typename View>
+TWR_LANE_INLINE SurfaceDetailL<L> parallaxLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
+                                                const FragmentL<L>& f, const Vec3L<L>& vT) {
+  using S = ScalarOf<L>;
+  const L zero(S(0)), one(S(1)), half(S(0.5));
+  const L scale(u.heightScale);
+  SurfaceDetailL<L> r{f.uv, one, zero, Vec3L<L>(zero, zero, one)};
+  // A view at or below the tangent plane (interpolated normals at silhouettes) would divide by
+  // zero: vz is kept at kMinParallaxViewZ or above, so the shift stays finite there.
+  const L vz = maxOf(vT.z, L(static_cast<S>(kMinParallaxViewZ)));
+  const L h0 = heightAtLanes<L>(heightMap, u, f.uv, f);
+  if (u.surfaceDetail == SurfaceDetail::Parallax) {
+    // Kaneko et al.: the height at uv, taken as constant along the ray; 1 / vz grows without
+    // bound at grazing angles (docs/parallax.md shows it).
+    const L depth = (one - h0) * scale;
+    r.uv = Vec2L<L>(f.uv.x - vT.x / vz * depth, f.uv.y - vT.y / vz * depth);
+  } else if (u.surfaceDetail == SurfaceDetail::ParallaxOffsetLimited) {
+    // Welsh: without the division, the shift never exceeds the depth.
+    const L depth = (one - h0) * scale;
+    r.uv = Vec2L<L>(f.uv.x - vT.x * depth, f.uv.y - vT.y * depth);
+  } else {
+    // Steep parallax: step down layer by layer until the ray is below the height field.
+    const L layers = layerCountLanes<L>(u, vT);
+    const L layerDepth = one / layers;
+    const L shiftPerLayer = scale / layers;
+    const Vec2L<L> deltaUv(vT.x / vz * shiftPerLayer, vT.y / vz * shiftPerLayer);
+    Vec2L<L> uvC = f.uv;
+    L depthC = zero;             // the ray's depth, in units of heightScale
+    L surfaceDepth = one - h0;   // the height field's depth at uvC
+    L steps = zero;
+    for (int i = 0; i < u.layerCap; ++i) {
+      const auto above = depthC < surfaceDepth;
+      if (!anyOf(above)) break;
+      uvC = Vec2L<L>(select(above, uvC.x - deltaUv.x, uvC.x), select(above, uvC.y - deltaUv.y, uvC.y));
+      depthC = select(above, depthC + layerDepth, depthC);
+      surfaceDepth = select(above, one - heightAtLanes<L>(heightMap, u, uvC, f), surfaceDepth);
+      steps = select(above, steps + one, steps);
+    }
+    if (u.surfaceDetail == SurfaceDetail::Relief) {
+      // Policarpo et al.: binary search in the last layer, starting half a layer back.
+      Vec2L<L> du = deltaUv;
+      L dd = layerDepth;
+      for (int k = 0; k < u.refinementSteps; ++k) {
+        du = Vec2L<L>(du.x * half, du.y * half);
+        dd = dd * half;
+        const auto below = depthC >= surfaceDepth;
+        uvC = Vec2L<L>(select(below, uvC.x + du.x, uvC.x - du.x), select(below, uvC.y + du.y, uvC.y - du.y));
+        depthC = select(below, depthC - dd, depthC + dd);
+        surfaceDepth = one - heightAtLanes<L>(heightMap, u, uvC, f);
+      }
+      steps = steps + L(static_cast<S>(u.refinementSteps));
+    } else if (u.surfaceDetail == SurfaceDetail::ParallaxOcclusion) {
+      // Tatarchuk: intersect the ray with the straight line between the heights of the last
+      // two layers. after <= 0 <= before; a zero denominator keeps the last layer.
+      const Vec2L<L> prevUv(uvC.x + deltaUv.x, uvC.y + deltaUv.y);
+      const L after = surfaceDepth - depthC;
+      const L before = (one - heightAtLanes<L>(heightMap, u, prevUv, f)) - depthC + layerDepth;
+      const L denominator = after - before;
+      const L weight = select(absOf(denominator) > zero, after / denominator, zero);
+      uvC = Vec2L<L>(prevUv.x * weight + uvC.x * (one - weight), prevUv.y * weight + uvC.y * (one - weight));
+    }
+    r.uv = uvC;
+    r.steps = steps;
+  }
+  r.height = u.surfaceDetail == SurfaceDetail::Parallax || u.surfaceDetail == SurfaceDetail::ParallaxOffsetLimited
+                 ? h0
+                 : heightAtLanes<L>(heightMap, u, r.uv, f);
+  return r;
+}
+
+// Self-shadowing by a march from the shaded point (uvP, depth 1 - hP) up towards the light
+// (lT: tangent space, normalised): 1 = lit. Each sample whose height field lies above the ray
+// occludes by how far it lies above, weighted down with the distance along the march; the
+// strongest occluder times kSelfShadowSharpness is the shadow (a soft edge, docs/parallax.md).
+template <typename L, typename View>
+TWR_LANE_INLINE L heightMarchShadowLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
+                                         const FragmentL<L>& f, const Vec2L<L>& uvP, const L& hP, const Vec3L<L>& lT) {
+  using S = ScalarOf<L>;
+  const L zero(S(0)), one(S(1));
+  const L lz = maxOf(lT.z, L(static_cast<S>(kMinParallaxViewZ)));
+  const L layers = layerCountLanes<L>(u, lT);
+  const L startDepth = one - hP;
+  const L layerDepth = startDepth / layers;
+  const L shiftPerLayer = L(u.heightScale) * startDepth / layers;
+  const Vec2L<L> deltaUv(lT.x / lz * shiftPerLayer, lT.y / lz * shiftPerLayer);
+  L occlusion = zero;
+  Vec2L<L> uvC = uvP;
+  L depthC = startDepth;
+  for (int i = 1; i <= u.layerCap; ++i) {
+    const L index(static_cast<S>(i));
+    const auto belowLast = index < layers;
+    const auto underTop = depthC > zero;
+    const auto marching = belowLast & underTop;
+    if (!anyOf(marching)) break;
+    uvC = Vec2L<L>(uvC.x + deltaUv.x, uvC.y + deltaUv.y);
+    depthC = depthC - layerDepth;
+    const L surfaceDepth = one - heightAtLanes<L>(heightMap, u, uvC, f);
+    const L above = (depthC - surfaceDepth) * (one - index / layers);
+    occlusion = select(marching, maxOf(occlusion, above), occlusion);
+  }
+  const L lit = one - minOf(occlusion * L(static_cast<S>(kSelfShadowSharpness)), one);
+  return select(lT.z > zero, lit, zero);
+}
+
+// Horizon mapping (Max 1988; Sloan and Cohen 2000): the map stores, per texel and azimuth,
+// the sine of the horizon's elevation (scene/horizon_map.h). The light's azimuth is a
+// "diamond angle" in [0, 4) (monotonic in the true angle, no atan), so the two stored
+// azimuths around it and the weight between them are found without trigonometry; the light
+// is lit by how far its elevation sine lT.z clears the interpolated horizon.
+template <typename L, typename Maps>
+TWR_LANE_INLINE L horizonShadowLanes(const Maps& maps, const ShadeUniformsT<ScalarOf<L>>& u, const FragmentL<L>& f,
+                                     const Vec2L<L>& uvP, const Vec3L<L>& lT) {
+  using S = ScalarOf<L>;
+  const L zero(S(0)), one(S(1)), two(S(2)), four(S(4)), half(S(0.5));
+  // Every azimuth's sine (4 per texel of each horizon texture).
+  L horizon[kMaxHorizonDirections];
+  const int textures = u.horizonDirections / 4;
+  for (int k = 0; k < textures; ++k) {
+    const Vec4L<L> texel = sampleGradLanes<L>(*maps.horizon[static_cast<std::size_t>(k)], u, uvP, f.uvDx, f.uvDy);
+    horizon[4 * k + 0] = texel.x;
+    horizon[4 * k + 1] = texel.y;
+    horizon[4 * k + 2] = texel.z;
+    horizon[4 * k + 3] = texel.w;
+  }
+  // Diamond angle of (x, y): 0 along +x, 1 along +y, 2 along -x, 3 along -y.
+  const L ax = absOf(lT.x), ay = absOf(lT.y);
+  const L sum = maxOf(ax + ay, L(static_cast<S>(kMinLengthSquared)));
+  const L q = ay / sum;  // in [0, 1] within the quadrant
+  L diamond = select(lT.x >= zero, select(lT.y >= zero, q, four - q), select(lT.y >= zero, two - q, two + q));
+  diamond = select(diamond >= four, diamond - four, diamond);
+  const L position = diamond * L(static_cast<S>(u.horizonDirections)) / four;  // in [0, directions)
+  const L k0f = minOf(floorOf(position), L(static_cast<S>(u.horizonDirections - 1)));
+  const L weight = position - k0f;
+  // Pick horizon[k0] and horizon[k0 + 1] lane by lane (k0 differs between lanes).
+  L h0 = horizon[0], h1 = horizon[1];
+  for (int k = 0; k < u.horizonDirections; ++k) {
+    const auto here = k0f == L(static_cast<S>(k));
+    h0 = select(here, horizon[k], h0);
+    h1 = select(here, horizon[(k + 1) % u.horizonDirections], h1);
+  }
+  const L horizonSine = h0 + (h1 - h0) * weight;
+  const L lit = minOf(maxOf(half + (lT.z - horizonSine) * L(static_cast<S>(kHorizonSharpness)), zero), one);
+  return select(lT.z > zero, lit, zero);
+}
+
+// The parallax_steps view's colour: a blue-cyan-green-yellow-red ramp over t in [0, 1].
+// Each channel is a tent clamp(1.5 - |4 t - centre|, 0, 1): red centred at 3, green at 2,
+// blue at 1.
+template <typename L>
+TWR_LANE_INLINE L heatChannelLanes(const L& t, ScalarOf<L> centre) {
+  using S = ScalarOf<L>;
+  return minOf(maxOf(L(S(1.5)) - absOf(L(S(4)) * t - L(centre)), L(S(0))), L(S(1)));
+}
+template <typename L>
+TWR_LANE_INLINE Vec4L<L> heatColourLanes(const L& tIn) {
+  using S = ScalarOf<L>;
+  const L t = minOf(maxOf(tIn, L(S(0))), L(S(1)));
+  return Vec4L<L>(heatChannelLanes<L>(t, S(3)), heatChannelLanes<L>(t, S(2)), heatChannelLanes<L>(t, S(1)), L(S(1)));
+}
+
+TWR_LANES_END
+
+#endif  // TWR_SURFACE_DETAIL_INL_EMIT
