@@ -76,6 +76,10 @@ void drawClippedTriangle(const LoopItemT<T>& s, const ClipVertexT<T>& v0, const 
       if (s.shade.needsQuadDifferences()) {
         // The pixel's 2x2 quad (even column and row): its uv differences give the LOD.
         setQuadUvDifferencesLanes<T>(interpolation, static_cast<T>(px & ~1), static_cast<T>(py & ~1), fragment);
+        if (s.shade.heightMap) {
+          setFineUvDifferencesLanes<T>(interpolation, static_cast<T>(px & ~1), static_cast<T>(py & ~1),
+                                       static_cast<T>(px), static_cast<T>(py), fragment);
+        }
       }
       target.write(px, py, shadeFragment<Features>(fragment, s.shade, nullptr), weights.depth, triangleId);
       ++stats.pixelsShaded;

@@ -305,6 +305,10 @@ void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps,
     const LaneF quadColumns = floorOf(pixelColumnsF(s.x) * LaneF(0.5f)) * LaneF(2.0f);
     const LaneF quadRow(static_cast<float>(s.py - (s.py & 1)));
     setQuadUvDifferencesLanes<LaneF>(planes, quadColumns, quadRow, fragment);
+    if (item.shade.heightMap) {
+      setFineUvDifferencesLanes<LaneF>(planes, quadColumns, quadRow, pixelColumnsF(s.x),
+                                       LaneF(static_cast<float>(s.py)), fragment);
+    }
   }
   const Vec4L<LaneF> colour =
       shadeFragmentLanes<Features, LaneF>(fragment, item.shade, maps, static_cast<std::nullptr_t*>(nullptr));

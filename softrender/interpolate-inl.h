@@ -63,6 +63,7 @@ struct FragmentL {
   Vec3L<L> posWorld, nWorld, tWorld, bWorld;
   Vec2L<L> uv;
   Vec2L<L> uvDx, uvDy;
+  Vec2L<L> uvDxFine, uvDyFine;
   std::array<Vec3L<L>, kMaxLights> lightDirTangent;
   Vec3L<L> eyeDirTangent;
   L depth;
@@ -178,6 +179,8 @@ TWR_LANE_INLINE FragmentL<L> interpolateFragmentLanes(const VertexL<L>& v0, cons
   f.depth = weights.depth;
   f.uvDx = Vec2L<L>(L(S(0)));
   f.uvDy = Vec2L<L>(L(S(0)));
+  f.uvDxFine = Vec2L<L>(L(S(0)));
+  f.uvDyFine = Vec2L<L>(L(S(0)));
   return f;
 }
 
@@ -193,6 +196,22 @@ TWR_LANE_INLINE void setQuadUvDifferencesLanes(const InterpolationL<L>& s, const
   const Vec2L<L> above = uvAtPixelLanes<L>(s.uv, qx, qy + L(S(1)));
   f.uvDx = right - topLeft;
   f.uvDy = above - topLeft;
+}
+
+// GLSL's dFdx(uv) and dFdy(uv) on llvmpipe, which are "fine": the difference along the
+// pixel's own row of its quad (right - left) and along its own column (upper - lower). The
+// height-field methods read with them (textureGrad), so they differ from the per-quad ones
+// above in the quad's second row and column. qx, qy: the quad's first column and row.
+template <typename L>
+TWR_LANE_INLINE void setFineUvDifferencesLanes(const InterpolationL<L>& s, const L& qx, const L& qy, const L& px,
+                                               const L& py, FragmentL<L>& f) {
+  using S = ScalarOf<L>;
+  const Vec2L<L> left = uvAtPixelLanes<L>(s.uv, qx, py);
+  const Vec2L<L> right = uvAtPixelLanes<L>(s.uv, qx + L(S(1)), py);
+  const Vec2L<L> lower = uvAtPixelLanes<L>(s.uv, px, qy);
+  const Vec2L<L> upper = uvAtPixelLanes<L>(s.uv, px, qy + L(S(1)));
+  f.uvDxFine = right - left;
+  f.uvDyFine = upper - lower;
 }
 
 TWR_LANES_END

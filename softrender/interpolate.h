@@ -92,6 +92,7 @@ struct FragmentT {
   // The 2x2 quad's uv differences, top-left pixel to its right and upper neighbours (helper
   // pixels included, as a GPU takes them): set for mipmapped filters only, else 0.
   Vec2T<T> uvDx{T(0)}, uvDy{T(0)};
+  Vec2T<T> uvDxFine{T(0)}, uvDyFine{T(0)};  // GLSL's dFdx / dFdy (fine, per row and column)
   std::array<Vec3T<T>, kMaxLights> lightDirTangent{};
   Vec3T<T> eyeDirTangent{T(0)};
   T depth = T(0);  // window depth

@@ -81,6 +81,10 @@ void traceTriangle(const DrawItem& item, std::size_t t, const VertexUniforms& ve
       // The LOD (or the anisotropic ellipse) from the pixel's 2x2 quad, as the renderers take it.
       setQuadUvDifferencesLanes<float>(interpolation, static_cast<float>(x & ~1), static_cast<float>(yGl & ~1),
                                        visit.fragment);
+      if (shadeUniforms.heightMap) {
+        setFineUvDifferencesLanes<float>(interpolation, static_cast<float>(x & ~1), static_cast<float>(yGl & ~1),
+                                         static_cast<float>(x), static_cast<float>(yGl), visit.fragment);
+      }
     }
     visit.depthBefore = depth;
     if (settings.cull == CullMode::Back && !setup.frontFacing) {

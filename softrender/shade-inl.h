@@ -61,9 +61,9 @@ inline constexpr std::size_t kDiffuseSlot = 0, kNormalSlot = 1, kSpecularSlot = 
 // differences are always the fragment's own (a shifted uv is read with textureGrad in GLSL).
 template <typename L, typename View>
 TWR_LANE_INLINE Vec4L<L> sampleMapLanes(const View& map, const ShadeUniformsT<ScalarOf<L>>& u, std::size_t slot,
-                                        const FragmentL<L>& f, const Vec2L<L>& uvIn) {
+                                        const FragmentL<L>& f, const Vec2L<L>& uvIn, bool shifted) {
   using S = ScalarOf<L>;
-  Vec2L<L> uv = uvIn, dx = f.uvDx, dy = f.uvDy;
+  Vec2L<L> uv = uvIn, dx = shifted ? f.uvDxFine : f.uvDx, dy = shifted ? f.uvDyFine : f.uvDy;
   if (u.uvTransform[slot]) {
     const Vec2L<L> scale(L(u.uvScale[slot].x), L(u.uvScale[slot].y));
     const Vec2L<L> offset(L(u.uvOffset[slot].x), L(u.uvOffset[slot].y));
@@ -117,24 +117,26 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
       detail.height = heightAtLanes<L>(*maps.height, u, f.uv, f);
     }
   }
+  // A shifted uv is read with GLSL's dFdx / dFdy (textureGrad), the fine differences.
+  const bool uvShifted = Features::kHasHeightMap && shiftsUv(u.surfaceDetail);
   const bool bumpNormal = Features::kHasHeightMap && u.surfaceDetail == SurfaceDetail::BumpBlinn;
   const bool emboss = Features::kHasHeightMap && u.surfaceDetail == SurfaceDetail::BumpEmboss;
   const bool selfShadowOn = Features::kHasHeightMap && u.selfShadow != SelfShadow::None;
 
   Vec3L<L> albedo(one);
   if constexpr (Features::kHasDiffuseMap) {
-    const Vec4L<L> texel = sampleMapLanes<L>(*maps.diffuse, u, kDiffuseSlot, f, detail.uv);
+    const Vec4L<L> texel = sampleMapLanes<L>(*maps.diffuse, u, kDiffuseSlot, f, detail.uv, uvShifted);
     albedo = Vec3L<L>(texel.x, texel.y, texel.z);
   }
   Vec3L<L> specScale(one);
   if constexpr (Features::kHasSpecularMap) {
-    const Vec4L<L> texel = sampleMapLanes<L>(*maps.specular, u, kSpecularSlot, f, detail.uv);
+    const Vec4L<L> texel = sampleMapLanes<L>(*maps.specular, u, kSpecularSlot, f, detail.uv, uvShifted);
     specScale = Vec3L<L>(texel.x, texel.y, texel.z);
   }
   Vec3L<L> mappedTangent(zero, zero, one);
   Vec4L<L> normalTexel(zero);
   if constexpr (Features::kHasNormalMap) {
-    normalTexel = sampleMapLanes<L>(*maps.normal, u, kNormalSlot, f, detail.uv);
+    normalTexel = sampleMapLanes<L>(*maps.normal, u, kNormalSlot, f, detail.uv, uvShifted);
     Vec3L<L> encoded(normalTexel.x, normalTexel.y, normalTexel.z);
     if (u.normalGreenDown) encoded.y = one - encoded.y;
     Vec3L<L> tangentNormal = two * encoded - one;

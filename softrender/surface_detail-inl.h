@@ -8,7 +8,8 @@
 // polygon lies at the top of the relief; a point of height h lies (1 - h) heightScale below it,
 // in texture-space units (1 = one uv unit along the surface), so depth = 1 - h in [0, 1] is
 // measured in units of heightScale. Every height is read with the fragment's own uv
-// differences (textureGrad in GLSL), so the mip level does not jump where a march moves uv.
+// differences (textureGrad in GLSL with dFdx and dFdy: the fine ones, FragmentL::uvDxFine), so
+// the mip level does not jump where a march moves uv.
 
 #if defined(TWR_LANES_HIGHWAY)
 #if defined(TWR_SURFACE_DETAIL_INL_TARGET) == defined(HWY_TARGET_TOGGLE)
@@ -51,7 +52,7 @@ TWR_LANE_INLINE Vec4L<L> sampleGradLanes(const View& map, const ShadeUniformsT<S
 template <typename L, typename View>
 TWR_LANE_INLINE L heightAtLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u, const Vec2L<L>& uv,
                                 const FragmentL<L>& f) {
-  return sampleGradLanes<L>(heightMap, u, uv, f.uvDx, f.uvDy).x;
+  return sampleGradLanes<L>(heightMap, u, uv, f.uvDxFine, f.uvDyFine).x;
 }
 
 // A lighting-space direction in the fragment's tangent frame, normalised: tangent space hands
@@ -217,7 +218,7 @@ TWR_LANE_INLINE L horizonShadowLanes(const Maps& maps, const ShadeUniformsT<Scal
   L horizon[kMaxHorizonDirections];
   const int textures = u.horizonDirections / 4;
   for (int k = 0; k < textures; ++k) {
-    const Vec4L<L> texel = sampleGradLanes<L>(*maps.horizon[static_cast<std::size_t>(k)], u, uvP, f.uvDx, f.uvDy);
+    const Vec4L<L> texel = sampleGradLanes<L>(*maps.horizon[static_cast<std::size_t>(k)], u, uvP, f.uvDxFine, f.uvDyFine);
     horizon[4 * k + 0] = texel.x;
     horizon[4 * k + 1] = texel.y;
     horizon[4 * k + 2] = texel.z;
