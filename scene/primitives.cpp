@@ -1,9 +1,11 @@
 #include "scene/primitives.h"
 
 #include "scene/errors.h"
+#include "scene/height_field.h"
 #include "scene/obj_loader.h"
 #include "scene/tangents.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -18,6 +20,9 @@ constexpr double kTwoPi = 2.0 * kPi;
 // Fewest segments that still enclose a volume (inclusive lower bounds).
 constexpr int kMinSphereStacks = 2;
 constexpr int kMinRoundSegments = 3;  // sphere slices, cylinder slices, torus rings and sides
+// Relative slack (unitless) before rounding a texel count up: a float uv_scale such as 0.3
+// is 0.30000001, and 100 texels * 0.30000001 must still give 30 segments, not 31.
+constexpr double kTexelCountSlack = 1e-6;
 
 bool isFinite(vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 bool isFinite(vec2 v) { return std::isfinite(v.x) && std::isfinite(v.y); }
@@ -186,6 +191,113 @@ Mesh makePlane(vec2 size, float uvScale) {
   return mesh;
 }
 
+ivec2 defaultHeightfieldSegments(const Texture& heightMap, float uvScale, bool* capped) {
+  // Texels across [0, uvScale] along one axis, through the map's own uv scale.
+  const auto texelsAcross = [&](int texels, float mapUvScale) {
+    const double across = static_cast<double>(texels) * std::fabs(static_cast<double>(mapUvScale)) *
+                          std::fabs(static_cast<double>(uvScale));
+    const double wanted = std::ceil(across * (1.0 - kTexelCountSlack));
+    return std::isfinite(wanted) ? std::max(wanted, 1.0) : static_cast<double>(kMaxSegments) + 1.0;
+  };
+  const double wantedX = texelsAcross(heightMap.width, heightMap.options.uvScale.x);
+  const double wantedZ = texelsAcross(heightMap.height, heightMap.options.uvScale.y);
+  double segmentsX = std::min(wantedX, static_cast<double>(kMaxSegments));
+  double segmentsZ = std::min(wantedZ, static_cast<double>(kMaxSegments));
+  const double triangles = 2.0 * segmentsX * segmentsZ;
+  if (triangles > static_cast<double>(kMaxSceneTriangles)) {
+    const double shrink = std::sqrt(static_cast<double>(kMaxSceneTriangles) / triangles);
+    segmentsX = std::max(1.0, std::floor(segmentsX * shrink));
+    segmentsZ = std::max(1.0, std::floor(segmentsZ * shrink));
+  }
+  if (capped) *capped = segmentsX < wantedX || segmentsZ < wantedZ;
+  return ivec2(static_cast<int>(segmentsX), static_cast<int>(segmentsZ));
+}
+
+Mesh makeHeightfield(vec2 size, float uvScale, const Texture& heightMap, float heightScale, ivec2 segments) {
+  requirePositive("heightfield.size[0]", size.x);
+  requirePositive("heightfield.size[1]", size.y);
+  requirePositive("heightfield.uv_scale", uvScale);
+  if (!(heightScale >= 0.0f) || !std::isfinite(heightScale)) {
+    throw InputError("heightfield.height_scale must be a finite number >= 0, got " + std::to_string(heightScale));
+  }
+  const std::size_t texelCount = heightMap.width > 0 && heightMap.height > 0
+                                     ? static_cast<std::size_t>(heightMap.width) * static_cast<std::size_t>(heightMap.height)
+                                     : 0;
+  if (texelCount == 0 || heightMap.rgba.size() < 4 * texelCount) {
+    throw InputError("heightfield.height_map " + heightMap.path + " holds no texels");
+  }
+  requireSegments("heightfield.resolution[0]", segments.x, 1);
+  requireSegments("heightfield.resolution[1]", segments.y, 1);
+  const std::size_t columns = static_cast<std::size_t>(segments.x);
+  const std::size_t rows = static_cast<std::size_t>(segments.y);
+  const std::size_t triangleCount = 2 * columns * rows;
+  requireTriangleBudget("heightfield", triangleCount);
+
+  // World length of one uv unit along x (u) and z (v); the depth is measured in the first.
+  const double worldPerU = static_cast<double>(size.x) / uvScale;
+  const double worldPerV = static_cast<double>(size.y) / uvScale;
+  const double depthWorld = static_cast<double>(heightScale) * worldPerU;  // height 1 -> 0
+  if (!std::isfinite(static_cast<float>(depthWorld))) {
+    throw InputError("heightfield: height_scale * size[0] / uv_scale = " + std::to_string(depthWorld) +
+                     " world units is outside the float range");
+  }
+
+  // Heights on the grid plus a ring one step outside it, so every vertex, border included,
+  // gets a central difference; the ring reads the map through its wrap mode. Grid indices
+  // run over [-1, n + 1] (signed); the vertices are [0, n].
+  const std::ptrdiff_t columnCount = segments.x, rowCount = segments.y;
+  const std::ptrdiff_t ringStride = columnCount + 3;
+  const auto gridU = [&](std::ptrdiff_t column) {
+    return static_cast<double>(uvScale) * static_cast<double>(column) / static_cast<double>(columnCount);
+  };
+  const auto gridV = [&](std::ptrdiff_t row) {
+    return static_cast<double>(uvScale) * static_cast<double>(row) / static_cast<double>(rowCount);
+  };
+  std::vector<double> ringHeights(static_cast<std::size_t>(ringStride * (rowCount + 3)));
+  const auto gridHeight = [&](std::ptrdiff_t column, std::ptrdiff_t row) -> double& {
+    return ringHeights[static_cast<std::size_t>((row + 1) * ringStride + column + 1)];
+  };
+  for (std::ptrdiff_t row = -1; row <= rowCount + 1; ++row) {
+    for (std::ptrdiff_t column = -1; column <= columnCount + 1; ++column) {
+      gridHeight(column, row) = heightAt(heightMap, glm::dvec2(gridU(column), gridV(row)));
+    }
+  }
+
+  Mesh mesh;
+  mesh.vertices.reserve((columns + 1) * (rows + 1));
+  mesh.indices.reserve(3 * triangleCount);
+  const double uStep = static_cast<double>(uvScale) / static_cast<double>(columnCount);
+  const double vStep = static_cast<double>(uvScale) / static_cast<double>(rowCount);
+  for (std::ptrdiff_t row = 0; row <= rowCount; ++row) {
+    for (std::ptrdiff_t column = 0; column <= columnCount; ++column) {
+      // As makePlane: uv (0, 0) at (-x, +z), u along +X, v along -Z. The corners land exactly
+      // on +-size / 2 (size * -0.5 and size * 0.5 are exact).
+      const double across = static_cast<double>(column) / static_cast<double>(columnCount);  // 0 .. 1 along u
+      const double deep = static_cast<double>(row) / static_cast<double>(rowCount);          // 0 .. 1 along v
+      const double xModel = static_cast<double>(size.x) * (across - 0.5);
+      const double zModel = static_cast<double>(size.y) * (0.5 - deep);
+      const double yModel = (gridHeight(column, row) - 1.0) * depthWorld;
+      // dP/du = (worldPerU, dy/du, 0) and dP/dv = (0, dy/dv, -worldPerV), dy from the neighbours.
+      const double dyDu = (gridHeight(column + 1, row) - gridHeight(column - 1, row)) * depthWorld / (2.0 * uStep);
+      const double dyDv = (gridHeight(column, row + 1) - gridHeight(column, row - 1)) * depthWorld / (2.0 * vStep);
+      const glm::dvec3 dPdu(worldPerU, dyDu, 0.0);
+      const glm::dvec3 dPdv(0.0, dyDv, -worldPerV);
+      const glm::dvec3 normal = glm::cross(dPdu, dPdv);
+      const double normalLength = glm::length(normal);
+      const double tangentLength = glm::length(dPdu);
+      // Never NaN: a product past the double range falls back to the flat plane's frame.
+      const bool usable = normalLength > 0.0 && std::isfinite(normalLength) && std::isfinite(tangentLength);
+      const vec3 nModel = usable ? vec3(normal / normalLength) : vec3(0.0f, 1.0f, 0.0f);
+      const vec3 tangentModel = usable ? vec3(dPdu / tangentLength) : vec3(1.0f, 0.0f, 0.0f);
+      const vec3 posModel(static_cast<float>(xModel), static_cast<float>(yModel), static_cast<float>(zModel));
+      const vec2 uv(static_cast<float>(gridU(column)), static_cast<float>(gridV(row)));
+      mesh.vertices.push_back(makeVertex(posModel, nModel, tangentModel, 1.0f, uv));
+    }
+  }
+  addGridTriangles(mesh, 0, segments.x, segments.y);
+  return mesh;
+}
+
 Mesh makeCylinder(float radius, float height, int slices) {
   requirePositive("cylinder.radius", radius);
   requirePositive("cylinder.height", height);
@@ -348,6 +460,12 @@ Mesh buildMesh(const MeshDesc& desc) {
       return makeTorus(desc.major, desc.minor, desc.rings, desc.sides);
     case MeshType::Triangles:
       return makeTriangles(desc.positions, desc.uvs, desc.normals);
+    case MeshType::Heightfield: {
+      if (!desc.heightMap) throw InputError("heightfield.height_map: missing; a heightfield needs a height map");
+      const ivec2 segments =
+          desc.gridSegments == ivec2(0) ? defaultHeightfieldSegments(*desc.heightMap, desc.uvScale) : desc.gridSegments;
+      return makeHeightfield(desc.planeSize, desc.uvScale, *desc.heightMap, desc.heightScale, segments);
+    }
     case MeshType::Obj: {
       ObjReadOptions read;  // geometry only: parts follow the MTL's materials, no map is read
       read.readMtl = desc.objMtl;

@@ -38,8 +38,11 @@ constexpr std::size_t kMaxQuotedChars = 60;
 // Smallest segment counts (inclusive) that still give a closed, non-degenerate primitive.
 constexpr int kMinSphereStacks = 2;
 constexpr int kMinRoundSegments = 3;  // sphere slices, cylinder slices, torus rings and sides
+// Largest relative difference (unitless) between a heightfield's world lengths per uv unit
+// along x and z before the file is warned that parallax's square texels do not hold.
+constexpr double kSquareTexelTolerance = 0.01;
 
-constexpr std::array<std::pair<MeshType, std::string_view>, 7> kMeshTypeNames{{
+constexpr std::array<std::pair<MeshType, std::string_view>, 8> kMeshTypeNames{{
     {MeshType::Cube, "cube"},
     {MeshType::Sphere, "sphere"},
     {MeshType::Plane, "plane"},
@@ -47,6 +50,7 @@ constexpr std::array<std::pair<MeshType, std::string_view>, 7> kMeshTypeNames{{
     {MeshType::Torus, "torus"},
     {MeshType::Obj, "obj"},
     {MeshType::Triangles, "triangles"},
+    {MeshType::Heightfield, "heightfield"},
 }};
 
 // "a.b" for identifier-like keys, a["odd key"] otherwise, so paths stay unambiguous.
@@ -707,7 +711,10 @@ class SceneReader {
   }
 
   void readNodeMesh(const Json& j, const std::string& path, int depth, Node& node) {
-    MeshDesc desc = readMeshDesc(j, path);
+    // The node's material is read before its mesh: a heightfield takes its relief from it.
+    const Material& material =
+        node.materialIndex >= 0 ? scene_.materials[static_cast<std::size_t>(node.materialIndex)] : defaultMaterial();
+    MeshDesc desc = readMeshDesc(j, path, material);
     if (desc.type == MeshType::Obj) {
       readObjParts(desc, path, depth, node);
       return;
@@ -785,7 +792,7 @@ class SceneReader {
                          std::make_move_iterator(parts.end()));
   }
 
-  MeshDesc readMeshDesc(const Json& j, const std::string& path) {
+  MeshDesc readMeshDesc(const Json& j, const std::string& path, const Material& material) {
     requireObject(j, path);
     const Json* typeJson = find(j, "type");
     std::string typeNames;
@@ -846,8 +853,77 @@ class SceneReader {
         checkKeys(j, path, {"type", "positions", "uvs", "normals"}, where);
         readTriangles(j, path, desc);
         break;
+      case MeshType::Heightfield:
+        checkKeys(j, path, {"type", "size", "uv_scale", "height_map", "height_scale", "resolution"}, where);
+        if (const Json* v = find(j, "size")) desc.planeSize = readVector<2>(*v, at("size"), NumberRule::Positive);
+        if (const Json* v = find(j, "uv_scale")) desc.uvScale = readNumber(*v, at("uv_scale"), NumberRule::Positive);
+        readHeightfield(j, path, material, desc);
+        break;
     }
     return desc;
+  }
+
+  // A heightfield's relief: its own height_map and height_scale, else the node's material's,
+  // and its grid (docs/scene-format.md, "Heightfields").
+  void readHeightfield(const Json& j, const std::string& path, const Material& material, MeshDesc& desc) {
+    const auto at = [&](const char* key) { return childPath(path, key); };
+    const auto warn = [&](const std::string& keyPath, const std::string& what) {
+      scene_.warnings.push_back(fileName_ + ": " + keyPath + ": " + what);
+    };
+    desc.heightMap = material.heightMap;
+    desc.heightScale = material.heightScale;
+    if (const Json* v = find(j, "height_map")) desc.heightMap = readTexture(*v, at("height_map"), MapRole::Height);
+    if (!desc.heightMap) {
+      const std::string whose =
+          &material != &defaultMaterial() ? jsonText(Json(material.name)) + " has none" : std::string("the node has none");
+      fail(at("height_map"),
+           "missing; a heightfield needs a height map: give \"height_map\" here or on the node's material (" + whose + ")");
+    }
+    if (const Json* v = find(j, "height_scale")) {
+      desc.heightScale = readNumber(*v, at("height_scale"), NumberRule::NonNegative);
+      if (desc.heightScale > kMaxHeightScale) {
+        fail(at("height_scale"), "expected a depth in [0, " + std::to_string(kMaxHeightScale).substr(0, 3) +
+                                     "] texture-space units (1 = one uv unit), got " + quote(*v));
+      }
+    }
+    if (const Json* v = find(j, "resolution")) {
+      const std::string resolutionPath = at("resolution");
+      if (!v->is_array() || v->size() != 2) {
+        fail(resolutionPath, "expected [nx, nz] segment counts (integers in [1, " + std::to_string(kMaxSegments) +
+                                 "]), got " + quote(*v));
+      }
+      desc.gridSegments.x = readInt((*v)[0], indexPath(resolutionPath, 0), 1, kMaxSegments);
+      desc.gridSegments.y = readInt((*v)[1], indexPath(resolutionPath, 1), 1, kMaxSegments);
+    } else {
+      bool capped = false;
+      const ivec2 segments = defaultHeightfieldSegments(*desc.heightMap, desc.uvScale, &capped);
+      if (capped) {
+        warn(at("resolution"), "defaulted to " + std::to_string(segments.x) + " x " + std::to_string(segments.y) +
+                                   " segments, coarser than one vertex per height-map texel (the limits are " +
+                                   std::to_string(kMaxSegments) + " per axis and " + std::to_string(kMaxSceneTriangles) +
+                                   " triangles)");
+      }
+    }
+    // Parallax measures depth in uv units along the surface, assuming a uv unit is as long
+    // along x as along z; otherwise the relief it draws is not this one.
+    const double worldPerU = static_cast<double>(desc.planeSize.x) / desc.uvScale;
+    const double worldPerV = static_cast<double>(desc.planeSize.y) / desc.uvScale;
+    if (std::fabs(worldPerU - worldPerV) > kSquareTexelTolerance * std::max(worldPerU, worldPerV)) {
+      const auto shortNumber = [](double v) {
+        std::ostringstream text;
+        text << v;  // six significant digits: 1, 0.5, 1.33333
+        return text.str();
+      };
+      warn(at("size"), "one uv unit is " + shortNumber(worldPerU) + " world units along x but " +
+                           shortNumber(worldPerV) + " along z; the depth follows x, and parallax mapping assumes "
+                           "square texels, so it will not match this surface");
+    }
+    if (&material != &defaultMaterial() && material.surfaceDetail != SurfaceDetail::NormalMap) {
+      warn(at("type"), "the material " + jsonText(Json(material.name)) + " draws \"" +
+                           std::string(toString(material.surfaceDetail)) +
+                           "\" on top of this already displaced surface; a reference usually wants surface_detail "
+                           "\"normal_map\" (without a normal map: the surface's own normals)");
+    }
   }
 
   void readTriangles(const Json& j, const std::string& path, MeshDesc& desc) {
@@ -897,6 +973,11 @@ class SceneReader {
       case MeshType::Cylinder: return 4 * n(d.slices);
       case MeshType::Torus: return 2 * n(d.rings) * n(d.sides);
       case MeshType::Triangles: return d.positions.size() / 3;
+      case MeshType::Heightfield: {
+        const bool byDefault = d.gridSegments == ivec2(0) && d.heightMap;
+        const ivec2 segments = byDefault ? defaultHeightfieldSegments(*d.heightMap, d.uvScale) : d.gridSegments;
+        return 2 * n(segments.x) * n(segments.y);
+      }
       case MeshType::Obj: return 0;
     }
     return 0;

@@ -808,6 +808,32 @@ TEST(HostileScene, TextureMemoryIsBoundedPerScene) {
   EXPECT_EQ(twice.materials[0].diffuseMap, twice.materials[0].normalMap);
 }
 
+TEST(HostileScene, HeightfieldsAreBoundedAndNameTheirKeys) {
+  const fs::path dir = caseDir();
+  writeFile(dir / "small.png", makePng(rgba4x2()));
+  writeFile(dir / "empty.png", {});
+  const auto load = [&](const std::string& mesh) {
+    const std::string scene = writeText(dir / "scene.json", R"({"nodes": [{"mesh": )" + mesh + "}]}");
+    return errorOf([&] { loadSceneFile(scene); });
+  };
+  const std::string scene = (dir / "scene.json").string();
+  // A height map that is no image names the mesh's key and the file.
+  expectStartsWith(load(R"({"type": "heightfield", "height_map": "empty.png"})"),
+                   scene + ": nodes[0].mesh.height_map: " + (dir / "empty.png").string() + ": not a readable image");
+  // Segment counts past any integer type, negative, or not integers.
+  for (const char* resolution : {"[18446744073709551615, 1]", "[-1, 1]", "[1e30, 1]", "[1, null]", "{\"x\": 1}"}) {
+    expectStartsWith(load(std::string(R"({"type": "heightfield", "height_map": "small.png", "resolution": )") + resolution + "}"),
+                     scene + ": nodes[0].mesh.resolution");
+  }
+  // A grid of 1000 x 1000 quads (2 million triangles), then one of 4096 x 2200 (18,022,400):
+  // the second is refused from its keys, before its 9 million vertices are built.
+  const std::string first = R"({"mesh": {"type": "heightfield", "height_map": "small.png", "resolution": [1000, 1000]}})";
+  const std::string second = R"({"mesh": {"type": "heightfield", "height_map": "small.png", "resolution": [4096, 2200]}})";
+  const std::string two = writeText(dir / "two.json", R"({"nodes": [)" + first + ", " + second + "]}");
+  const std::string message = errorOf([&] { loadSceneFile(two); });
+  EXPECT_EQ(message, two + ": nodes[1].mesh: this mesh brings the scene to 20022400 triangles; at most 20000000 are allowed");
+}
+
 // ---- OBJ files ----
 
 const char* const kTriangleObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";

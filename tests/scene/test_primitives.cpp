@@ -1,8 +1,11 @@
 // Primitives: counts, closed-ness and consistent winding (on positions welded bit for bit),
 // unit outward normals, orthonormal tangent frames whose T and B follow +u and +v, the
-// sphere's exact parametrisation, and every rejected parameter.
+// sphere's exact parametrisation, the heightfield against the plane and hand-computed
+// heights and slopes, and every rejected parameter.
 #include "scene/errors.h"
+#include "scene/height_field.h"
 #include "scene/primitives.h"
+#include "scene/scene.h"
 
 #include <gtest/gtest.h>
 
@@ -417,6 +420,218 @@ TEST(PrimitiveLimits, RejectsMoreTrianglesThanTheSceneBudget) {
   expectRejected([] { makeTorus(1.0f, 0.5f, kMaxSegments, kMaxSegments); }, "triangles");
 }
 
+// ---- heightAt and heightfield ----
+
+// A texture built in code: `reds` row by row, bottom row (v = 0) first; g, b = 0, a = 255.
+Texture heightTexture(int width, int height, const std::vector<std::uint8_t>& reds,
+                      TextureWrap wrap = TextureWrap::Repeat) {
+  Texture texture;
+  texture.path = "heights-in-code";
+  texture.width = width;
+  texture.height = height;
+  for (std::uint8_t red : reds) texture.rgba.insert(texture.rgba.end(), {red, 0, 0, 255});
+  texture.options.wrap = wrap;
+  return texture;
+}
+
+// 2 x 2, bottom row 0 and 255, top row 51 and 102: texel centres at u, v = 0.25 and 0.75.
+Texture twoByTwo(TextureWrap wrap) { return heightTexture(2, 2, {0, 255, 51, 102}, wrap); }
+
+TEST(HeightAt, BilinearBetweenTexelCentresByHand) {
+  const Texture t = twoByTwo(TextureWrap::Repeat);
+  EXPECT_EQ(heightAt(t, {0.25, 0.25}), 0.0);          // texel (0, 0)'s centre
+  EXPECT_EQ(heightAt(t, {0.75, 0.25}), 1.0);          // texel (1, 0)
+  EXPECT_EQ(heightAt(t, {0.25, 0.75}), 51.0 / 255.0);  // texel (0, 1): rows are bottom first
+  EXPECT_DOUBLE_EQ(heightAt(t, {0.5, 0.25}), 0.5);    // halfway along u on the bottom row
+  EXPECT_DOUBLE_EQ(heightAt(t, {0.5, 0.5}), 102.0 / 255.0);  // (0 + 255 + 51 + 102) / 4 = 102
+  // u = 0.375: a quarter of the way from texel 0 to 1; v = 0.25 + 0.5 * 0.25.
+  EXPECT_DOUBLE_EQ(heightAt(t, {0.375, 0.375}), (0.75 * 0.75 * 0 + 0.25 * 0.75 * 255 + 0.75 * 0.25 * 51 + 0.25 * 0.25 * 102) / 255.0);
+}
+
+TEST(HeightAt, WrapModes) {
+  // u = 0 lies halfway between texel 0 and its left neighbour: texel 1 (repeat), texel 0
+  // itself (clamp, and mirror, which reflects texel 0 about u = 0).
+  EXPECT_DOUBLE_EQ(heightAt(twoByTwo(TextureWrap::Repeat), {0.0, 0.25}), 0.5);
+  EXPECT_EQ(heightAt(twoByTwo(TextureWrap::ClampToEdge), {0.0, 0.25}), 0.0);
+  EXPECT_EQ(heightAt(twoByTwo(TextureWrap::MirroredRepeat), {0.0, 0.25}), 0.0);
+  // Outside [0, 1]: repeat shifts by one, mirror reflects about 1, clamp holds the edge texel.
+  EXPECT_EQ(heightAt(twoByTwo(TextureWrap::Repeat), {1.25, 0.25}), 0.0);
+  EXPECT_EQ(heightAt(twoByTwo(TextureWrap::Repeat), {-0.75, -0.75}), 0.0);
+  EXPECT_EQ(heightAt(twoByTwo(TextureWrap::MirroredRepeat), {1.25, 0.25}), 1.0);
+  EXPECT_EQ(heightAt(twoByTwo(TextureWrap::MirroredRepeat), {-0.25, 0.25}), 0.0);
+  EXPECT_EQ(heightAt(twoByTwo(TextureWrap::ClampToEdge), {7.0, -3.0}), 1.0);
+  // A size that is not a power of two: 3 texels 0, 30, 60; u = 0 is halfway between 60 and 0.
+  const Texture three = heightTexture(3, 1, {0, 30, 60});
+  EXPECT_DOUBLE_EQ(heightAt(three, {0.0, 0.5}), 30.0 / 255.0);
+  EXPECT_DOUBLE_EQ(heightAt(three, {1.0 / 3.0, 0.5}), 15.0 / 255.0);
+}
+
+TEST(HeightAt, SrgbUvTransformAndNonFiniteUv) {
+  Texture srgb = heightTexture(1, 1, {128});
+  EXPECT_EQ(heightAt(srgb, {0.3, 0.7}), 128.0 / 255.0);
+  srgb.options.srgb = true;  // the renderers decode it, so the reference does too
+  EXPECT_EQ(heightAt(srgb, {0.3, 0.7}), linearFromSrgb(128.0 / 255.0));
+  Texture scaled = twoByTwo(TextureWrap::Repeat);
+  scaled.options.uvScale = vec2(2.0f);
+  scaled.options.uvOffset = vec2(0.5f, 0.0f);
+  EXPECT_EQ(heightAt(scaled, {0.125, 0.125}), 1.0);  // looked up at (0.75, 0.25)
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_TRUE(std::isfinite(heightAt(twoByTwo(TextureWrap::Repeat), {nan, 1e300})));
+}
+
+TEST(Heightfield, DefaultGridHasOneVertexPerTexel) {
+  const Texture t = heightTexture(4, 2, std::vector<std::uint8_t>(8, 0));
+  EXPECT_EQ(defaultHeightfieldSegments(t, 1.0f), ivec2(4, 2));
+  EXPECT_EQ(defaultHeightfieldSegments(t, 3.0f), ivec2(12, 6));
+  Texture hundred;
+  hundred.width = hundred.height = 100;
+  // 100 * 0.3f = 30.0000012: still 30 segments; 100 * 0.31 = 31.
+  EXPECT_EQ(defaultHeightfieldSegments(hundred, 0.3f), ivec2(30, 30));
+  EXPECT_EQ(defaultHeightfieldSegments(hundred, 0.305f), ivec2(31, 31));
+  EXPECT_EQ(defaultHeightfieldSegments(hundred, 1e-6f), ivec2(1, 1));
+  bool capped = true;
+  EXPECT_EQ(defaultHeightfieldSegments(hundred, 1.0f, &capped), ivec2(100, 100));
+  EXPECT_FALSE(capped);
+  // 8192 x 16 texels: the long axis stops at kMaxSegments.
+  Texture wide;
+  wide.width = 8192;
+  wide.height = 16;
+  EXPECT_EQ(defaultHeightfieldSegments(wide, 1.0f, &capped), ivec2(kMaxSegments, 16));
+  EXPECT_TRUE(capped);
+  // 16384^2: 4096^2 per axis would be 33.5 million triangles; both axes shrink to fit 20 million.
+  Texture huge;
+  huge.width = huge.height = 16384;
+  const ivec2 segments = defaultHeightfieldSegments(huge, 1.0f, &capped);
+  EXPECT_TRUE(capped);
+  EXPECT_EQ(segments.x, segments.y);
+  EXPECT_LE(2 * static_cast<std::size_t>(segments.x) * static_cast<std::size_t>(segments.y), kMaxSceneTriangles);
+  EXPECT_GT(2 * static_cast<std::size_t>(segments.x + 1) * static_cast<std::size_t>(segments.y + 1), kMaxSceneTriangles);
+}
+
+// A constant map: exactly the plane, lowered by (h - 1) heightScale worldPerUv, with the
+// plane's own normals and tangents.
+TEST(Heightfield, ConstantHeightIsThePlaneShifted) {
+  const vec2 size(4.0f, 2.0f);
+  const float uvScale = 2.0f, heightScale = 0.25f;
+  const Texture t = heightTexture(3, 2, std::vector<std::uint8_t>(6, 153));  // 153 / 255 = 0.6
+  const Mesh plane = makePlane(size, uvScale);
+  const ivec2 segments(5, 3);
+  const Mesh field = makeHeightfield(size, uvScale, t, heightScale, segments);
+  ASSERT_EQ(field.vertices.size(), 6u * 4u);
+  EXPECT_EQ(field.triangleCount(), 2u * 5u * 3u);
+  expectValidFrames(field);
+  expectFramesFollowUv(field);
+  const double worldPerUv = 4.0 / 2.0;
+  const float shift = static_cast<float>((153.0 / 255.0 - 1.0) * heightScale * worldPerUv);
+  EXPECT_FLOAT_EQ(shift, -0.2f);
+  // The grid's corners in the plane's vertex order: uv (0, 0), (s, 0), (s, s), (0, s).
+  const std::size_t stride = static_cast<std::size_t>(segments.x) + 1;
+  const std::size_t corners[4] = {0, static_cast<std::size_t>(segments.x), stride * static_cast<std::size_t>(segments.y) + segments.x,
+                                  stride * static_cast<std::size_t>(segments.y)};
+  for (int i = 0; i < 4; ++i) {
+    const Vertex& p = plane.vertices[static_cast<std::size_t>(i)];
+    const Vertex& f = field.vertices[corners[i]];
+    EXPECT_EQ(f.posModel, p.posModel + vec3(0.0f, shift, 0.0f)) << "corner " << i;
+    EXPECT_EQ(f.uv, p.uv) << "corner " << i;
+  }
+  for (std::size_t i = 0; i < field.vertices.size(); ++i) {
+    const Vertex& f = field.vertices[i];
+    const double column = static_cast<double>(i % stride), row = static_cast<double>(i / stride);
+    EXPECT_EQ(f.posModel.y, shift) << "vertex " << i;
+    EXPECT_FLOAT_EQ(f.posModel.x, static_cast<float>(-2.0 + 4.0 * column / 5.0)) << "vertex " << i;
+    EXPECT_FLOAT_EQ(f.posModel.z, static_cast<float>(1.0 - 2.0 * row / 3.0)) << "vertex " << i;
+    EXPECT_FLOAT_EQ(f.uv.x, static_cast<float>(2.0 * column / 5.0)) << "vertex " << i;
+    EXPECT_FLOAT_EQ(f.uv.y, static_cast<float>(2.0 * row / 3.0)) << "vertex " << i;
+    EXPECT_EQ(f.nModel, plane.vertices[0].nModel) << "vertex " << i;
+    EXPECT_EQ(f.tangentModel, plane.vertices[0].tangentModel) << "vertex " << i;
+  }
+  // Counter-clockwise seen from +Y, like the plane.
+  expectOutwardCcw(field, [](vec3 p) { return vec3(p.x, -10.0f, p.z); });
+  // Height 1 everywhere is the plane itself; height scale 0 flattens any map onto it.
+  const Mesh top = makeHeightfield(size, uvScale, heightTexture(1, 1, {255}), heightScale, {1, 1});
+  const Mesh flattened = makeHeightfield(size, uvScale, twoByTwo(TextureWrap::Repeat), 0.0f, {1, 1});
+  const std::size_t oneQuad[4] = {0, 1, 3, 2};  // a 1 x 1 grid in the plane's corner order
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(top.vertices[oneQuad[i]].posModel, plane.vertices[static_cast<std::size_t>(i)].posModel);
+    EXPECT_EQ(flattened.vertices[oneQuad[i]].posModel, plane.vertices[static_cast<std::size_t>(i)].posModel);
+  }
+}
+
+// A ramp along u, texels 0, 32, ..., 224 (clamped): between the first and last texel centres
+// h(u) = (32 / 255) (8 u - 0.5), so dh/du = 8 * 32 / 255 and the surface rises along +X with
+// slope dy/dx = dh/du * heightScale (worldPerUv cancels). N = (-slope, 1, 0) / |.|,
+// T = (1, slope, 0) / |.|.
+TEST(Heightfield, RampAlongUTiltsTheNormalsByItsSlope) {
+  std::vector<std::uint8_t> reds;
+  for (int row = 0; row < 2; ++row)
+    for (int i = 0; i < 8; ++i) reds.push_back(static_cast<std::uint8_t>(32 * i));
+  const Texture ramp = heightTexture(8, 2, reds, TextureWrap::ClampToEdge);
+  const vec2 size(3.0f, 3.0f);
+  const float heightScale = 0.1f;
+  const Mesh field = makeHeightfield(size, 1.0f, ramp, heightScale, defaultHeightfieldSegments(ramp, 1.0f));
+  ASSERT_EQ(field.vertices.size(), 9u * 3u);
+  expectValidFrames(field);
+  expectFramesFollowUv(field);
+  expectOutwardCcw(field, [](vec3 p) { return vec3(p.x, -10.0f, p.z); });
+  const double slope = 8.0 * 32.0 / 255.0 * static_cast<double>(heightScale);
+  const double length = std::sqrt(1.0 + slope * slope);
+  const double worldPerUv = 3.0;
+  for (std::size_t row = 0; row <= 2; ++row) {
+    // Columns 2..6: the vertex and both neighbours lie between the first and last texel centres.
+    for (std::size_t column = 2; column <= 6; ++column) {
+      const Vertex& v = field.vertices[row * 9 + column];
+      const double u = static_cast<double>(column) / 8.0;
+      const double h = 32.0 / 255.0 * (8.0 * u - 0.5);
+      EXPECT_NEAR(v.posModel.y, (h - 1.0) * heightScale * worldPerUv, 1e-6) << "column " << column;
+      EXPECT_NEAR(v.nModel.x, -slope / length, 1e-6) << "column " << column;
+      EXPECT_NEAR(v.nModel.y, 1.0 / length, 1e-6) << "column " << column;
+      EXPECT_EQ(v.nModel.z, 0.0f) << "column " << column;
+      EXPECT_NEAR(v.tangentModel.x, 1.0 / length, 1e-6) << "column " << column;
+      EXPECT_NEAR(v.tangentModel.y, slope / length, 1e-6) << "column " << column;
+      EXPECT_EQ(v.tangentModel.z, 0.0f) << "column " << column;
+      EXPECT_EQ(v.tangentModel.w, 1.0f);
+    }
+  }
+}
+
+// The same ramp along v (towards -Z): the surface rises towards -Z, so N leans towards +Z;
+// on a non-square plane the slope in world units is dh/dv heightScale worldPerU / worldPerV.
+TEST(Heightfield, RampAlongVLeansTheNormalsTowardsPlusZ) {
+  std::vector<std::uint8_t> reds;
+  for (int i = 0; i < 8; ++i) reds.insert(reds.end(), {static_cast<std::uint8_t>(32 * i), static_cast<std::uint8_t>(32 * i)});
+  const Texture ramp = heightTexture(2, 8, reds, TextureWrap::ClampToEdge);
+  const float heightScale = 0.2f;
+  const Mesh field = makeHeightfield({2.0f, 4.0f}, 1.0f, ramp, heightScale, {2, 8});
+  expectValidFrames(field);
+  expectFramesFollowUv(field);
+  const double slope = 8.0 * 32.0 / 255.0 * static_cast<double>(heightScale) * 2.0 / 4.0;
+  const double length = std::sqrt(1.0 + slope * slope);
+  for (std::size_t row = 2; row <= 6; ++row) {
+    const Vertex& v = field.vertices[row * 3 + 1];
+    EXPECT_EQ(v.nModel.x, 0.0f);
+    EXPECT_NEAR(v.nModel.y, 1.0 / length, 1e-6) << "row " << row;
+    EXPECT_NEAR(v.nModel.z, slope / length, 1e-6) << "row " << row;
+    EXPECT_EQ(vec3(v.tangentModel), vec3(1.0f, 0.0f, 0.0f)) << "row " << row;
+  }
+}
+
+TEST(Heightfield, RejectsBadParameters) {
+  const Texture t = twoByTwo(TextureWrap::Repeat);
+  expectRejected([&] { makeHeightfield({0.0f, 1.0f}, 1.0f, t, 0.1f, {1, 1}); }, "heightfield.size[0]");
+  expectRejected([&] { makeHeightfield({1.0f, 1.0f}, -1.0f, t, 0.1f, {1, 1}); }, "heightfield.uv_scale");
+  expectRejected([&] { makeHeightfield({1.0f, 1.0f}, 1.0f, t, -0.1f, {1, 1}); }, "heightfield.height_scale");
+  expectRejected([&] { makeHeightfield({1.0f, 1.0f}, 1.0f, t, 0.1f, {0, 1}); }, "heightfield.resolution[0]");
+  expectRejected([&] { makeHeightfield({1.0f, 1.0f}, 1.0f, t, 0.1f, {1, kMaxSegments + 1}); }, "heightfield.resolution[1]");
+  expectRejected([&] { makeHeightfield({1.0f, 1.0f}, 1.0f, Texture{}, 0.1f, {1, 1}); }, "heightfield.height_map");
+  // 4096 x 4096 quads: 33.5 million triangles > 20 million, refused before any allocation.
+  expectRejected([&] { makeHeightfield({1.0f, 1.0f}, 1.0f, t, 0.1f, {kMaxSegments, kMaxSegments}); }, "triangles");
+  // A depth past the float range.
+  expectRejected([&] { makeHeightfield({3e38f, 1.0f}, 1e-30f, t, 1.0f, {1, 1}); }, "float range");
+  MeshDesc desc;
+  desc.type = MeshType::Heightfield;
+  expectRejected([&] { buildMesh(desc); }, "heightfield.height_map");
+}
+
 // ---- buildMesh ----
 
 TEST(BuildMesh, DispatchesOnType) {
@@ -438,6 +653,13 @@ TEST(BuildMesh, DispatchesOnType) {
   desc.type = MeshType::Triangles;
   desc.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   EXPECT_EQ(buildMesh(desc).triangleCount(), 1u);
+  desc.type = MeshType::Heightfield;
+  desc.heightMap = std::make_shared<const Texture>(twoByTwo(TextureWrap::Repeat));
+  EXPECT_EQ(buildMesh(desc).triangleCount(), 2u * 2u * 2u);  // default grid: one vertex per texel
+  desc.gridSegments = ivec2(3, 1);
+  EXPECT_EQ(buildMesh(desc).triangleCount(), 2u * 3u * 1u);
+  // The descriptor's depth is the material's default.
+  EXPECT_EQ(MeshDesc{}.heightScale, kDefaultHeightScale);
   desc.type = MeshType::Obj;
   desc.path = "/nonexistent/file.obj";
   EXPECT_THROW(buildMesh(desc), InputError);

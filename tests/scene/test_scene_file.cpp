@@ -2,6 +2,7 @@
 // key or line), then the good paths: defaults, every key, relative paths, OBJ parts, the
 // shipped scenes.
 #include "scene/errors.h"
+#include "scene/image.h"
 #include "scene/scene_file.h"
 
 #include <gtest/gtest.h>
@@ -154,8 +155,8 @@ TEST(SceneFileErrors, UnknownKeyInMesh) {
                  {"inline.json: nodes[0].mesh.size: unknown key in a sphere mesh; expected one of: type, radius, "
                   "stacks, slices"});
   expectContains(parseError(withMesh(R"({"type": "blob"})")),
-                 {"inline.json: nodes[0].mesh.type: expected one of cube|sphere|plane|cylinder|torus|obj|triangles, "
-                  "got \"blob\""});
+                 {"inline.json: nodes[0].mesh.type: expected one of cube|sphere|plane|cylinder|torus|obj|triangles|"
+                  "heightfield, got \"blob\""});
   expectContains(parseError(withMesh(R"({"radius": 1})")), {"inline.json: nodes[0].mesh.type: missing"});
 }
 
@@ -499,6 +500,135 @@ TEST(SceneFile, MeshParametersReachTheDescsAndMeshes) {
   EXPECT_EQ(scene.meshes[4].triangleCount(), 48u);
   EXPECT_EQ(countTriangles(scene), 12u + 16u + 2u + 20u + 48u);
   EXPECT_EQ(toString(MeshType::Torus), "torus");
+}
+
+// ---- heightfields ----
+
+// A folder under the test output with two height maps written as PNGs (top row first in the
+// file, so the file's last row is v = 0): ramp.png, 4 x 2, red 0, 60, 120, 180 on both rows;
+// flat.png, 2 x 2, all 102 (0.4).
+std::string heightfieldDir() {
+  const std::filesystem::path dir = std::filesystem::path(TWINRASTER_TEST_OUT) / "scene_file_heightfield";
+  std::filesystem::create_directories(dir);
+  Image ramp = makeImage(4, 2);
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 4; ++x) {
+      std::uint8_t* p = ramp.pixel(x, y);
+      p[0] = p[1] = p[2] = static_cast<std::uint8_t>(60 * x);
+      p[3] = 255;
+    }
+  savePng((dir / "ramp.png").string(), ramp);
+  savePng((dir / "flat.png").string(), makeImage(2, 2, 0x666666ffu));
+  return dir.string();
+}
+
+Scene parseHeightfieldScene(const std::string& json) { return parseScene(json, kInline, heightfieldDir()); }
+
+std::string heightfieldError(const std::string& json) {
+  return errorOf([&] { parseHeightfieldScene(json); });
+}
+
+TEST(SceneFileHeightfield, TakesTheMaterialsHeightMapAndScale) {
+  const Scene scene = parseHeightfieldScene(R"({
+    "materials": {"relief": {"height_map": "ramp.png", "height_scale": 0.1, "surface_detail": "normal_map"}},
+    "nodes": [{"name": "ground", "material": "relief", "mesh": {"type": "heightfield", "size": [2, 2]}}]})");
+  ASSERT_EQ(scene.meshDescs.size(), 1u);
+  const MeshDesc& desc = scene.meshDescs[0];
+  EXPECT_EQ(desc.type, MeshType::Heightfield);
+  EXPECT_EQ(desc.heightMap, scene.materials.at(0).heightMap);  // the same texture, not a copy
+  EXPECT_FLOAT_EQ(desc.heightScale, 0.1f);
+  EXPECT_EQ(desc.gridSegments, ivec2(0));
+  // Default grid: one vertex per texel, 4 x 2 segments.
+  EXPECT_EQ(scene.meshes[0].vertices.size(), 5u * 3u);
+  EXPECT_EQ(countTriangles(scene), 2u * 4u * 2u);
+  EXPECT_EQ(toString(MeshType::Heightfield), "heightfield");
+  // The corner at uv (0, 0) is (-1, y, 1); h(0) = (180 + 0) / 2 / 255 (repeat wraps to the last
+  // texel), lowered by (h - 1) * 0.1 * worldPerUv 2.
+  const Vertex& corner = scene.meshes[0].vertices[0];
+  EXPECT_EQ(corner.uv, vec2(0.0f));
+  EXPECT_FLOAT_EQ(corner.posModel.x, -1.0f);
+  EXPECT_FLOAT_EQ(corner.posModel.z, 1.0f);
+  EXPECT_FLOAT_EQ(corner.posModel.y, static_cast<float>((90.0 / 255.0 - 1.0) * 0.1 * 2.0));
+  // The material warns about itself (surface_detail "normal_map" with no normal map); the mesh is silent.
+  for (const std::string& w : scene.warnings) EXPECT_EQ(w.find("nodes[0]"), std::string::npos) << w;
+}
+
+TEST(SceneFileHeightfield, OwnKeysOverrideTheMaterialAndShareTheTextureCache) {
+  const Scene scene = parseHeightfieldScene(R"({
+    "materials": {"relief": {"height_map": "ramp.png", "surface_detail": "normal_map"}},
+    "nodes": [
+      {"material": "relief", "mesh": {"type": "heightfield", "height_map": "flat.png", "height_scale": 0.5, "uv_scale": 2,
+                                      "resolution": [3, 5]}},
+      {"mesh": {"type": "heightfield", "height_map": "ramp.png"}}]})");
+  ASSERT_EQ(scene.meshDescs.size(), 2u);
+  const MeshDesc& own = scene.meshDescs[0];
+  EXPECT_NE(own.heightMap, scene.materials.at(0).heightMap);
+  EXPECT_EQ(own.heightMap->width, 2);
+  EXPECT_FLOAT_EQ(own.heightScale, 0.5f);
+  EXPECT_FLOAT_EQ(own.uvScale, 2.0f);
+  EXPECT_EQ(own.gridSegments, ivec2(3, 5));
+  EXPECT_EQ(scene.meshes[0].triangleCount(), 2u * 3u * 5u);
+  // flat 0.4 on a 1 x 1 plane with uv_scale 2: worldPerUv 0.5, depth (0.4 - 1) * 0.5 * 0.5.
+  for (const Vertex& v : scene.meshes[0].vertices) {
+    EXPECT_FLOAT_EQ(v.posModel.y, static_cast<float>((102.0 / 255.0 - 1.0) * 0.5 * 0.5));
+    EXPECT_EQ(v.nModel, vec3(0, 1, 0));
+  }
+  // The node without a material: the default depth; the same file as the material's is one texture.
+  const MeshDesc& plain = scene.meshDescs[1];
+  EXPECT_EQ(plain.heightMap, scene.materials.at(0).heightMap);
+  EXPECT_FLOAT_EQ(plain.heightScale, kDefaultHeightScale);
+  EXPECT_EQ(countTriangles(scene), 30u + 16u);
+}
+
+TEST(SceneFileHeightfield, MissingHeightMapNamesTheKey) {
+  expectContains(heightfieldError(withMesh(R"({"type": "heightfield"})")),
+                 {"inline.json: nodes[0].mesh.height_map: missing; a heightfield needs a height map",
+                  "the node has none"});
+  expectContains(heightfieldError(R"({"materials": {"plain": {"kd": [1, 0, 0]}},
+      "nodes": [{"material": "plain", "mesh": {"type": "heightfield"}}]})"),
+                 {"inline.json: nodes[0].mesh.height_map: missing", "\"plain\" has none"});
+  expectContains(heightfieldError(withMesh(R"({"type": "heightfield", "height_map": "absent.png"})")),
+                 {"inline.json: nodes[0].mesh.height_map", "absent.png"});
+}
+
+TEST(SceneFileHeightfield, BadKeysAndValues) {
+  const auto mesh = [](const std::string& keys) {
+    return withMesh(R"({"type": "heightfield", "height_map": "ramp.png", )" + keys + "}");
+  };
+  expectContains(heightfieldError(mesh(R"("radius": 1)")),
+                 {"inline.json: nodes[0].mesh.radius: unknown key in a heightfield mesh; expected one of: type, size, "
+                  "uv_scale, height_map, height_scale, resolution"});
+  expectContains(heightfieldError(mesh(R"("resolution": 4)")),
+                 {"inline.json: nodes[0].mesh.resolution: expected [nx, nz] segment counts (integers in [1, 4096]), got 4"});
+  expectContains(heightfieldError(mesh(R"("resolution": [4])")), {"nodes[0].mesh.resolution: expected [nx, nz]"});
+  expectContains(heightfieldError(mesh(R"("resolution": [0, 4])")),
+                 {"inline.json: nodes[0].mesh.resolution[0]: expected an integer in [1, 4096], got 0"});
+  expectContains(heightfieldError(mesh(R"("resolution": [4, 4.5])")), {"nodes[0].mesh.resolution[1]: expected an integer"});
+  expectContains(heightfieldError(mesh(R"("resolution": [4, 4097])")), {"nodes[0].mesh.resolution[1]: expected an integer"});
+  expectContains(heightfieldError(mesh(R"("height_scale": 2)")),
+                 {"inline.json: nodes[0].mesh.height_scale: expected a depth in [0, 1.0] texture-space units"});
+  expectContains(heightfieldError(mesh(R"("height_scale": -0.1)")), {"nodes[0].mesh.height_scale: expected a number >= 0"});
+  expectContains(heightfieldError(mesh(R"("size": [1, 0])")), {"nodes[0].mesh.size[1]: expected a number > 0"});
+  // The height map is read as a material's: a texture object without a normal map's "green".
+  expectContains(heightfieldError(withMesh(R"({"type": "heightfield", "height_map": {"path": "ramp.png", "green": "down"}})")),
+                 {"inline.json: nodes[0].mesh.height_map.green: unknown key in a texture"});
+  // 4096 x 4096 quads: refused from the keys, before the grid is built.
+  expectContains(heightfieldError(mesh(R"("resolution": [4096, 4096])")),
+                 {"inline.json: nodes[0].mesh: this mesh brings the scene to 33554432 triangles; at most 20000000"});
+}
+
+TEST(SceneFileHeightfield, WarnsAboutNonSquareTexelsAndReliefDrawnTwice) {
+  const Scene square = parseHeightfieldScene(withMesh(R"({"type": "heightfield", "height_map": "ramp.png", "size": [2, 2.01]})"));
+  EXPECT_TRUE(square.warnings.empty());  // within 1%
+  const Scene stretched = parseHeightfieldScene(withMesh(R"({"type": "heightfield", "height_map": "ramp.png", "size": [2, 1], "uv_scale": 2})"));
+  ASSERT_EQ(stretched.warnings.size(), 1u);
+  expectContains(stretched.warnings[0], {"inline.json: nodes[0].mesh.size: one uv unit is 1 world units along x but 0.5 along z",
+                                         "square texels"});
+  const Scene twice = parseHeightfieldScene(R"({
+    "materials": {"pom": {"height_map": "ramp.png", "surface_detail": "parallax_occlusion"}},
+    "nodes": [{"material": "pom", "mesh": {"type": "heightfield"}}]})");
+  ASSERT_EQ(twice.warnings.size(), 1u);
+  expectContains(twice.warnings[0], {"inline.json: nodes[0].mesh.type: the material \"pom\" draws \"parallax_occlusion\" on top"});
 }
 
 TEST(SceneFile, DefaultSceneLoads) {
