@@ -1,5 +1,6 @@
 #include "scene/horizon_map.h"
 
+#include "scene/height_field.h"
 #include "scene/scene.h"
 
 #include <algorithm>
@@ -7,38 +8,6 @@
 #include <string>
 
 namespace twr {
-namespace {
-
-// One texel index along an axis of `size` texels under the texture's wrap mode.
-int wrapIndex(int i, int size, TextureWrap wrap) {
-  switch (wrap) {
-    case TextureWrap::Repeat: return ((i % size) + size) % size;
-    case TextureWrap::ClampToEdge: return std::clamp(i, 0, size - 1);
-    case TextureWrap::MirroredRepeat: {
-      const int period = 2 * size;
-      const int m = ((i % period) + period) % period;
-      return m < size ? m : period - 1 - m;
-    }
-  }
-  return 0;
-}
-
-// The height (red byte / 255) at uv, bilinear in level 0 with texel centres at +0.5, in double.
-double heightAtUv(const Texture& map, double u, double v) {
-  const double x = u * map.width - 0.5, y = v * map.height - 0.5;
-  const double x0 = std::floor(x), y0 = std::floor(y);
-  const double fx = x - x0, fy = y - y0;
-  const auto at = [&](double xi, double yi) {
-    const int tx = wrapIndex(static_cast<int>(xi), map.width, map.options.wrap);
-    const int ty = wrapIndex(static_cast<int>(yi), map.height, map.options.wrap);
-    return map.texel(tx, ty)[0] / 255.0;
-  };
-  const double bottom = at(x0, y0) + (at(x0 + 1, y0) - at(x0, y0)) * fx;
-  const double top = at(x0, y0 + 1) + (at(x0 + 1, y0 + 1) - at(x0, y0 + 1)) * fx;
-  return bottom + (top - bottom) * fy;
-}
-
-}  // namespace
 
 vec2 horizonDirectionUv(int k, int directions) {
   // Diamond angle a in [0, 4): quadrant floor(a), and the fraction q = |y| / (|x| + |y|).
@@ -79,11 +48,11 @@ HorizonMap makeHorizonMap(const Texture& heightMap, float heightScale, int direc
     for (int y = 0; y < h; ++y) {
       for (int x = 0; x < w; ++x) {
         const double u = (x + 0.5) / w, v = (y + 0.5) / h;
-        const double h0 = heightMap.texel(x, y)[0] / 255.0;
+        const double h0 = heightAt(heightMap, glm::dvec2(u, v));  // the texel centre
         double slope = 0.0;  // the steepest rise seen, texture-space units per uv unit
         for (int s = 1; s <= kHorizonReachTexels; ++s) {
           const double distance = s * step;
-          const double rise = (heightAtUv(heightMap, u + dx * distance, v + dy * distance) - h0) * heightScale;
+          const double rise = (heightAt(heightMap, glm::dvec2(u + dx * distance, v + dy * distance)) - h0) * heightScale;
           slope = std::max(slope, rise / distance);
         }
         const double sine = slope / std::sqrt(1.0 + slope * slope);

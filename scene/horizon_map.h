@@ -31,5 +31,8 @@ HorizonMap makeHorizonMap(const Texture& heightMap, float heightScale, int direc
 // How far the horizon search looks (texels of level 0 along the azimuth): the cost at load is
 // width * height * directions * this.
 inline constexpr int kHorizonReachTexels = 32;
+// Most texels times azimuths a horizon map is built for (inclusive): 1024 x 1024 at 16
+// azimuths, about 5e8 height reads, a few seconds at load. Larger maps are refused.
+inline constexpr long long kMaxHorizonTexelDirections = 1024LL * 1024LL * 16LL;
 
 }  // namespace twr

@@ -593,6 +593,11 @@ Material toMaterial(const tinyobj::material_t& source, TextureCache& textures, c
   // An MTL names no method: a height map beside a normal map is read but drawn only when a
   // scene material chooses a surface_detail; a height map alone draws Blinn bumps.
   if (material.heightMap && !material.normalMap) material.surfaceDetail = SurfaceDetail::BumpBlinn;
+  if (material.heightMap && material.normalMap) {
+    textures.warnings().push_back(objPath + ": material '" + material.name + "': height map '" +
+                                  material.heightMap->path + "' is read but not drawn: the normal map beside it is "
+                                  "(a scene material's \"surface_detail\" chooses a height-field method)");
+  }
   if (material.heightMap && (material.heightScale < 0.0f || material.heightScale > kMaxHeightScale)) {
     textures.warnings().push_back(objPath + ": material '" + material.name + "': height map depth " +
                                   std::to_string(material.heightScale) + " (0.05 x -bm) clamped to [0, 1] uv units");

@@ -536,6 +536,15 @@ class SceneReader {
         fail(at("horizon_directions"), "expected a multiple of 4 (4 azimuths per RGBA texel), got " +
                                            std::to_string(material.horizonDirections));
       }
+      const long long work = static_cast<long long>(material.heightMap->width) * material.heightMap->height *
+                             material.horizonDirections;
+      if (work > kMaxHorizonTexelDirections) {
+        fail(at("self_shadow"), "a horizon map of " + std::to_string(material.heightMap->width) + "x" +
+                                    std::to_string(material.heightMap->height) + " texels at " +
+                                    std::to_string(material.horizonDirections) +
+                                    " azimuths is too costly to build at load (at most 1024x1024 at 16); use "
+                                    "\"height_march\" or a smaller height map");
+      }
       material.horizonMap = std::make_shared<const HorizonMap>(
           makeHorizonMap(*material.heightMap, material.heightScale, material.horizonDirections));
     }

@@ -4,6 +4,10 @@
 // in shaders/surface_detail.glsl, in the same order of operations; docs/parallax.md derives
 // each one. Shared source, included plainly and per Highway target (softrender/lanes.h).
 //
+// The marching functions are TWR_LANE_OUTLINE: one out-of-line copy per target rather than one
+// inside every kernel (a march inlined into each permutation multiplied fast_kernels.cpp's
+// compile time; the loops, not the call, dominate their cost).
+//
 // Conventions (docs/parallax.md): a height h in [0, 1] is the map's red channel, 1 = top. The
 // polygon lies at the top of the relief; a point of height h lies (1 - h) heightScale below it,
 // in texture-space units (1 = one uv unit along the surface), so depth = 1 - h in [0, 1] is
@@ -85,7 +89,7 @@ struct SurfaceDetailL {
 // first order its tangent-space normal is (-s dh/du, -s dh/dv, 1), normalised. The partial
 // derivatives are central differences one level-0 texel (u.heightTexel) either side.
 template <typename L, typename View>
-TWR_LANE_INLINE Vec3L<L> bumpBlinnLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u, const FragmentL<L>& f) {
+TWR_LANE_OUTLINE Vec3L<L> bumpBlinnLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u, const FragmentL<L>& f) {
   using S = ScalarOf<L>;
   const L du(u.heightTexel.x), dv(u.heightTexel.y), zero(S(0)), one(S(1)), two(S(2));
   const L hL = heightAtLanes<L>(heightMap, u, Vec2L<L>(f.uv.x - du, f.uv.y), f);
@@ -101,7 +105,7 @@ TWR_LANE_INLINE Vec3L<L> bumpBlinnLanes(const View& heightMap, const ShadeUnifor
 // The parallax family: where the view ray through the fragment meets the height field, as uv.
 // vT: the eye direction in tangent space, normalised.
 template <typename L, typename View>
-TWR_LANE_INLINE SurfaceDetailL<L> parallaxLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
+TWR_LANE_OUTLINE SurfaceDetailL<L> parallaxLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
                                                 const FragmentL<L>& f, const Vec3L<L>& vT) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), half(S(0.5));
@@ -175,7 +179,7 @@ TWR_LANE_INLINE SurfaceDetailL<L> parallaxLanes(const View& heightMap, const Sha
 // occludes by how far it lies above, weighted down with the distance along the march; the
 // strongest occluder times kSelfShadowSharpness is the shadow (a soft edge, docs/parallax.md).
 template <typename L, typename View>
-TWR_LANE_INLINE L heightMarchShadowLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
+TWR_LANE_OUTLINE L heightMarchShadowLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
                                          const FragmentL<L>& f, const Vec2L<L>& uvP, const L& hP, const Vec3L<L>& lT) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1));
@@ -210,12 +214,12 @@ TWR_LANE_INLINE L heightMarchShadowLanes(const View& heightMap, const ShadeUnifo
 // azimuths around it and the weight between them are found without trigonometry; the light
 // is lit by how far its elevation sine lT.z clears the interpolated horizon.
 template <typename L, typename Maps>
-TWR_LANE_INLINE L horizonShadowLanes(const Maps& maps, const ShadeUniformsT<ScalarOf<L>>& u, const FragmentL<L>& f,
+TWR_LANE_OUTLINE L horizonShadowLanes(const Maps& maps, const ShadeUniformsT<ScalarOf<L>>& u, const FragmentL<L>& f,
                                      const Vec2L<L>& uvP, const Vec3L<L>& lT) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), two(S(2)), four(S(4)), half(S(0.5));
   // Every azimuth's sine (4 per texel of each horizon texture).
-  L horizon[kMaxHorizonDirections];
+  L horizon[kMaxHorizonDirections] = {};
   const int textures = u.horizonDirections / 4;
   for (int k = 0; k < textures; ++k) {
     const Vec4L<L> texel = sampleGradLanes<L>(*maps.horizon[static_cast<std::size_t>(k)], u, uvP, f.uvDxFine, f.uvDyFine);

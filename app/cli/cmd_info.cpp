@@ -80,6 +80,13 @@ Json meshJson(const MeshDesc& d) {
       j["sides"] = d.sides;
       break;
     case MeshType::Obj: j["path"] = d.path; break;
+    case MeshType::Heightfield:
+      j["size"] = toJson(d.planeSize);
+      j["uv_scale"] = clean(d.uvScale);
+      j["height_map"] = d.heightMap ? d.heightMap->path : std::string();
+      j["height_scale"] = clean(d.heightScale);
+      j["resolution"] = {d.gridSegments.x, d.gridSegments.y};
+      break;
     case MeshType::Triangles:
       j["position_count"] = d.positions.size();
       j["has_uvs"] = !d.uvs.empty();
@@ -104,6 +111,9 @@ std::string meshText(const MeshDesc& d) {
       return "torus major " + num(d.major) + ", minor " + num(d.minor) + ", " + std::to_string(d.rings) +
              " rings x " + std::to_string(d.sides) + " sides";
     case MeshType::Obj: return "obj part of " + d.path;
+    case MeshType::Heightfield:
+      return "heightfield " + num(d.planeSize.x) + " x " + num(d.planeSize.y) + ", uv_scale " + num(d.uvScale) +
+             ", height_scale " + num(d.heightScale) + (d.heightMap ? ", height map " + d.heightMap->path : "");
     case MeshType::Triangles: return "triangles";
   }
   return "?";

@@ -207,7 +207,8 @@ TEST(SceneFileErrors, TriangleBudgetRefusedBeforeBuilding) {
 TEST(SceneFileErrors, BadEnumValue) {
   expectContains(parseError(R"({"nodes": [], "settings": {"view": "shiny"}})"),
                  {"inline.json: settings.view: expected one of shaded|albedo|normal|tangent|bitangent|mapped_normal|"
-                  "uv|depth|light_tangent|eye_tangent|mip_level, got \"shiny\""});
+                  "uv|depth|light_tangent|eye_tangent|mip_level|height|parallax_offset|parallax_steps|self_shadow, got "
+                  "\"shiny\""});
   expectContains(parseError(R"({"nodes": [], "settings": {"cull": "sideways"}})"),
                  {"inline.json: settings.cull: expected one of none|back|front, got \"sideways\""});
   expectContains(parseError(R"({"nodes": [], "settings": {"tbn_lines": {"mode": "legacy"}}})"),
