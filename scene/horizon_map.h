@@ -32,7 +32,8 @@ HorizonMap makeHorizonMap(const Texture& heightMap, float heightScale, int direc
 // width * height * directions * this.
 inline constexpr int kHorizonReachTexels = 32;
 // Most texels times azimuths a horizon map is built for (inclusive): 1024 x 1024 at 16
-// azimuths, about 5e8 height reads, a few seconds at load. Larger maps are refused.
+// azimuths, 5.4e8 height reads. Measured at 512 x 512: 1.7 s at 8 azimuths, 3.5 s at 16, so
+// the largest map takes about 14 s at load. Larger maps are refused.
 inline constexpr long long kMaxHorizonTexelDirections = 1024LL * 1024LL * 16LL;
 
 }  // namespace twr

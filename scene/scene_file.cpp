@@ -320,6 +320,26 @@ class SceneReader {
     return static_cast<int>(v);
   }
 
+  // Two integers, each in [minInclusive, maxInclusive]; `what` names them for the message.
+  ivec2 readIntPair(const Json& j, const std::string& path, const std::string& what, int minInclusive,
+                    int maxInclusive) const {
+    if (!j.is_array() || j.size() != 2) {
+      fail(path, "expected " + what + " (integers in [" + std::to_string(minInclusive) + ", " +
+                     std::to_string(maxInclusive) + "]), got " + quote(j));
+    }
+    return ivec2(readInt(j[0], indexPath(path, 0), minInclusive, maxInclusive),
+                 readInt(j[1], indexPath(path, 1), minInclusive, maxInclusive));
+  }
+
+  // A relief depth in texture-space units (materials and heightfield meshes alike).
+  float readHeightScale(const Json& j, const std::string& path) const {
+    const float scale = readNumber(j, path, NumberRule::NonNegative);
+    if (scale > kMaxHeightScale) {
+      fail(path, "expected a depth in [0, 1] texture-space units (1 = one uv unit), got " + quote(j));
+    }
+    return scale;
+  }
+
   bool readBool(const Json& j, const std::string& path) const {
     if (!j.is_boolean()) fail(path, "expected true or false, got " + quote(j));
     return j.get<bool>();
@@ -469,13 +489,7 @@ class SceneReader {
   void readSurfaceDetail(const Json& mj, const std::string& materialPath, Material& material) {
     const auto at = [&](const char* key) { return childPath(materialPath, key); };
     if (const Json* v = find(mj, "height_map")) material.heightMap = readTexture(*v, at("height_map"), MapRole::Height);
-    if (const Json* v = find(mj, "height_scale")) {
-      material.heightScale = readNumber(*v, at("height_scale"), NumberRule::NonNegative);
-      if (material.heightScale > kMaxHeightScale) {
-        fail(at("height_scale"), "expected a depth in [0, " + std::to_string(kMaxHeightScale).substr(0, 3) +
-                                     "] texture-space units (1 = one uv unit), got " + quote(*v));
-      }
-    }
+    if (const Json* v = find(mj, "height_scale")) material.heightScale = readHeightScale(*v, at("height_scale"));
     const bool hasSurfaceDetail = find(mj, "surface_detail") != nullptr;
     if (const Json* v = find(mj, "surface_detail")) {
       material.surfaceDetail = readEnum<SurfaceDetail>(*v, at("surface_detail"));
@@ -483,15 +497,9 @@ class SceneReader {
       material.surfaceDetail = SurfaceDetail::BumpBlinn;  // a height map alone draws bumps
     }
     if (const Json* v = find(mj, "parallax_layers")) {
-      const std::string path = at("parallax_layers");
-      if (!v->is_array() || v->size() != 2) {
-        fail(path, "expected [min, max] layer counts (integers in [1, " + std::to_string(kMaxParallaxLayers) +
-                       "]), got " + quote(*v));
-      }
-      material.parallaxLayers.x = readInt((*v)[0], indexPath(path, 0), 1, kMaxParallaxLayers);
-      material.parallaxLayers.y = readInt((*v)[1], indexPath(path, 1), 1, kMaxParallaxLayers);
+      material.parallaxLayers = readIntPair(*v, at("parallax_layers"), "[min, max] layer counts", 1, kMaxParallaxLayers);
       if (material.parallaxLayers.x > material.parallaxLayers.y) {
-        fail(path, "expected min <= max, got " + quote(*v));
+        fail(at("parallax_layers"), "expected min <= max, got " + quote(*v));
       }
     }
     if (const Json* v = find(mj, "relief_refinement_steps")) {
@@ -518,9 +526,12 @@ class SceneReader {
     if (material.heightMap && d == SurfaceDetail::NormalMap) {
       scene_.warnings.push_back(fileName_ + ": " + at("height_map") +
                                 ": read but not drawn: surface_detail is \"normal_map\" (choose one of " +
-                                allSurfaceDetailNames() + ")");
+                                enumNames<SurfaceDetail>() + ")");
     }
-    if (!marchesLayers(d)) ignored("parallax_layers", "only steep_parallax, relief and parallax_occlusion march layers");
+    // The height march towards the light reads the layer counts too.
+    if (!marchesLayers(d) && material.selfShadow != SelfShadow::HeightMarch) {
+      ignored("parallax_layers", "only steep_parallax, relief, parallax_occlusion and self_shadow height_march march layers");
+    }
     if (d != SurfaceDetail::Relief) ignored("relief_refinement_steps", "only relief refines its hit");
     if (material.selfShadow != SelfShadow::None && !material.heightMap) {
       fail(at("self_shadow"), "self-shadowing reads a height map; give \"height_map\"");
@@ -888,21 +899,9 @@ class SceneReader {
       fail(at("height_map"),
            "missing; a heightfield needs a height map: give \"height_map\" here or on the node's material (" + whose + ")");
     }
-    if (const Json* v = find(j, "height_scale")) {
-      desc.heightScale = readNumber(*v, at("height_scale"), NumberRule::NonNegative);
-      if (desc.heightScale > kMaxHeightScale) {
-        fail(at("height_scale"), "expected a depth in [0, " + std::to_string(kMaxHeightScale).substr(0, 3) +
-                                     "] texture-space units (1 = one uv unit), got " + quote(*v));
-      }
-    }
+    if (const Json* v = find(j, "height_scale")) desc.heightScale = readHeightScale(*v, at("height_scale"));
     if (const Json* v = find(j, "resolution")) {
-      const std::string resolutionPath = at("resolution");
-      if (!v->is_array() || v->size() != 2) {
-        fail(resolutionPath, "expected [nx, nz] segment counts (integers in [1, " + std::to_string(kMaxSegments) +
-                                 "]), got " + quote(*v));
-      }
-      desc.gridSegments.x = readInt((*v)[0], indexPath(resolutionPath, 0), 1, kMaxSegments);
-      desc.gridSegments.y = readInt((*v)[1], indexPath(resolutionPath, 1), 1, kMaxSegments);
+      desc.gridSegments = readIntPair(*v, at("resolution"), "[nx, nz] segment counts", 1, kMaxSegments);
     } else {
       bool capped = false;
       const ivec2 segments = defaultHeightfieldSegments(*desc.heightMap, desc.uvScale, &capped);

@@ -111,13 +111,4 @@ std::string allViewNames() {
   return names;
 }
 
-std::string allSurfaceDetailNames() {
-  std::string names;
-  for (const auto& [v, name] : kSurfaceDetail) {
-    if (!names.empty()) names += '|';
-    names += name;
-  }
-  return names;
-}
-
 }  // namespace twr

@@ -119,7 +119,6 @@ std::string clipSlotProblem(const RenderSettings& settings);
 
 // "shaded|albedo|..." for help texts and error messages.
 std::string allViewNames();
-std::string allSurfaceDetailNames();
 inline constexpr View kAllViews[] = {View::Shaded, View::Albedo, View::Normal, View::Tangent, View::Bitangent,
                                      View::MappedNormal, View::Uv, View::Depth, View::LightTangent,
                                      View::EyeTangent, View::MipLevel, View::Height, View::ParallaxOffset,

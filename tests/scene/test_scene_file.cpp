@@ -607,7 +607,7 @@ TEST(SceneFileHeightfield, BadKeysAndValues) {
   expectContains(heightfieldError(mesh(R"("resolution": [4, 4.5])")), {"nodes[0].mesh.resolution[1]: expected an integer"});
   expectContains(heightfieldError(mesh(R"("resolution": [4, 4097])")), {"nodes[0].mesh.resolution[1]: expected an integer"});
   expectContains(heightfieldError(mesh(R"("height_scale": 2)")),
-                 {"inline.json: nodes[0].mesh.height_scale: expected a depth in [0, 1.0] texture-space units"});
+                 {"inline.json: nodes[0].mesh.height_scale: expected a depth in [0, 1] texture-space units"});
   expectContains(heightfieldError(mesh(R"("height_scale": -0.1)")), {"nodes[0].mesh.height_scale: expected a number >= 0"});
   expectContains(heightfieldError(mesh(R"("size": [1, 0])")), {"nodes[0].mesh.size[1]: expected a number > 0"});
   // The height map is read as a material's: a texture object without a normal map's "green".
@@ -742,6 +742,33 @@ TEST(SceneFile, ObjPartsBecomeChildNodes) {
   EXPECT_EQ(scene.materials.size(), 3u);  // gold, model/red, model/blue
   EXPECT_EQ(scene.meshes.size(), scene.meshDescs.size());
   EXPECT_EQ(countTriangles(scene), 2u + 2u + 12u + 2u + 2u);
+}
+
+}  // namespace
+}  // namespace twr
+
+namespace twr {
+namespace {
+
+// Issue 16's material keys: each bad value names its key and what was expected.
+TEST(SceneFileErrors, HeightFieldMaterialKeys) {
+  expectContains(parseError(R"({"nodes": [], "materials": {"m": {"surface_detail": "displacement"}}})"),
+                 {"inline.json: materials.m.surface_detail: expected one of normal_map|bump_blinn|bump_emboss|"
+                  "parallax|parallax_offset_limited|steep_parallax|relief|parallax_occlusion, got \"displacement\""});
+  expectContains(parseError(R"({"nodes": [], "materials": {"m": {"surface_detail": "relief"}}})"),
+                 {"materials.m.surface_detail: \"relief\" reads a height map; give \"height_map\""});
+  expectContains(parseError(R"({"nodes": [], "materials": {"m": {"parallax_layers": [40, 8]}}})"),
+                 {"materials.m.parallax_layers: expected min <= max"});
+  expectContains(parseError(R"({"nodes": [], "materials": {"m": {"parallax_layers": [0, 8]}}})"),
+                 {"materials.m.parallax_layers[0]: expected an integer in [1, 256]"});
+  expectContains(parseError(R"({"nodes": [], "materials": {"m": {"parallax_layers": 8}}})"),
+                 {"materials.m.parallax_layers: expected [min, max] layer counts (integers in [1, 256])"});
+  expectContains(parseError(R"({"nodes": [], "materials": {"m": {"height_scale": 2}}})"),
+                 {"materials.m.height_scale: expected a depth in [0, 1] texture-space units"});
+  expectContains(parseError(R"({"nodes": [], "materials": {"m": {"relief_refinement_steps": 17}}})"),
+                 {"materials.m.relief_refinement_steps: expected an integer in [0, 16]"});
+  expectContains(parseError(R"({"nodes": [], "materials": {"m": {"self_shadow": "height_march"}}})"),
+                 {"materials.m.self_shadow: self-shadowing reads a height map"});
 }
 
 }  // namespace
