@@ -254,6 +254,18 @@ void GuiApp::openScene(const std::string& path) {
     meshError_.clear();
     meshErrorIndex_ = -1;
     mapMessages_.clear();
+    heightFieldErrors_.clear();
+    horizonFailed_.reset();
+    horizonError_.clear();
+    horizonLastBuild_.clear();
+    // The first material with a height map: the one a height-field lesson is about.
+    selectedMaterial_ = 0;
+    for (std::size_t m = 0; m < doc_.scene.materials.size(); ++m) {
+      if (loadedMap(doc_, m, MapSlot::Height)) {
+        selectedMaterial_ = m;
+        break;
+      }
+    }
     std::error_code code;
     const std::filesystem::path absolute = std::filesystem::absolute(path, code);
     prefs_.lastScene = code ? path : absolute.lexically_normal().string();
@@ -279,6 +291,7 @@ void GuiApp::openScene(const std::string& path) {
 bool GuiApp::settled() const {
   if (!renderInputsValid()) return true;
   if (!worker_.idle() || (glWorker_ && !glWorker_->idle())) return false;
+  if (horizonMapsPending()) return false;  // its frames are still to come
   const std::uint64_t now = doc_.revision;
   if (cpuFrame_.revision != now || glFrame_.revision != now) return false;
   if (cpuFrame_.output && glFrame_.output && diff_.revision != now) return false;
@@ -378,6 +391,33 @@ void GuiApp::frame(bool& finalFrame) {
       }
     }
     state["maps"] = std::move(maps);
+    // Every material's height-field keys, and where its horizon map stands.
+    nlohmann::json materials = nlohmann::json::array();
+    for (std::size_t m = 0; m < doc_.scene.materials.size(); ++m) {
+      const Material& material = doc_.scene.materials[m];
+      nlohmann::json horizon = nullptr;
+      if (material.horizonMap) {
+        horizon = {{"directions", material.horizonMap->directions},
+                   {"object", reinterpret_cast<std::uintptr_t>(material.horizonMap.get())}};
+      }
+      materials.push_back({{"name", material.name},
+                           {"height_map", loadedMap(doc_, m, MapSlot::Height) != nullptr},
+                           {"height_map_on", material.heightMap != nullptr},
+                           {"surface_detail", std::string(toString(material.surfaceDetail))},
+                           {"height_scale", material.heightScale},
+                           {"parallax_layers", {material.parallaxLayers.x, material.parallaxLayers.y}},
+                           {"relief_refinement_steps", material.reliefRefinementSteps},
+                           {"self_shadow", std::string(toString(material.selfShadow))},
+                           {"horizon_directions", material.horizonDirections},
+                           {"horizon_map", horizon},
+                           {"horizon_stale", horizonMapStale(doc_, m)},
+                           {"error", heightFieldErrors_.count(m) != 0 ? heightFieldErrors_.at(m) : std::string()}});
+    }
+    state["materials"] = std::move(materials);
+    state["selected_material"] = selectedMaterial_;
+    state["horizon_building"] = horizonBuilding_ ? nlohmann::json(horizonBuilding_->material) : nlohmann::json(nullptr);
+    state["horizon_status"] = horizonStatus();
+    state["horizon_last_build"] = horizonLastBuild_;
     state["anisotropy"] = doc_.scene.settings.anisotropy;
     state["view"] = std::string(toString(doc_.scene.settings.view));
   }

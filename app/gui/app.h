@@ -11,6 +11,7 @@
 #include "app/gui/frame_timing.h"
 #include "app/gui/gl_worker.h"
 #include "app/gui/gui_options.h"
+#include "app/gui/horizon_worker.h"
 #include "app/gui/image_texture.h"
 #include "app/gui/material_maps.h"
 #include "app/gui/panel_sizing.h"
@@ -109,6 +110,12 @@ class GuiApp {
   void refreshRenderBlocker();
   ShownRevisions shownRevisions() const;
   void pinPixel(std::optional<PixelPos> pixel);
+  // Installs finished horizon maps and starts the next stale one once no widget is being edited.
+  void syncHorizonMaps();
+  // A horizon map is being built or waits to be (not counting one whose build failed).
+  bool horizonMapsPending() const;
+  // What the horizon maps are doing, one line for the user; empty when all are current.
+  std::string horizonStatus() const;
 
   // ---- panels ----
   void drawLayout();
@@ -124,6 +131,9 @@ class GuiApp {
   void drawMeshEditor(int meshIndex);
   void drawMaterialsSection();
   void drawMapControls(std::size_t material, MapSlot slot);
+  void drawHeightFieldControls(std::size_t material);
+  // The parallax_steps view's heat ramp as a bar, labelled with the selected material's counts.
+  void drawParallaxStepsLegend();
   void drawLightsSection();
   void drawCameraTab();
   void drawViewPanel();
@@ -150,6 +160,7 @@ class GuiApp {
   float uiScale_ = 1.0f;  // layout sizes in ImGui units per point at scale 1 (see the constructor)
   ImFont* monoFont_ = nullptr;  // the trace report; null: the default font
   CpuWorker worker_;
+  HorizonWorker horizonWorker_;
   std::unique_ptr<GlWorker> glWorker_;  // made once the options are known, ended before the window
 
   SceneDoc doc_;
@@ -163,6 +174,17 @@ class GuiApp {
     bool error = false;
   };
   std::map<std::pair<std::size_t, MapSlot>, MapMessage> mapMessages_;
+  // The material whose tree node in the Scene tab was opened or edited last: the one the
+  // parallax_steps legend counts layers for.
+  std::size_t selectedMaterial_ = 0;
+  // Per material, why the last height-field edit was refused.
+  std::map<std::size_t, std::string> heightFieldErrors_;
+  // The horizon map the worker is building (nullopt: none), and the last build that threw (not
+  // tried again until its inputs change).
+  std::optional<HorizonRequest> horizonBuilding_;
+  std::optional<HorizonRequest> horizonFailed_;
+  std::string horizonError_;
+  std::string horizonLastBuild_;  // "'bricks': 8 directions in 0.41 s", for the status
   std::string renderBlocker_;  // why nothing is rendered right now (invalid camera), else empty
   // What float lets this camera show at the render size (scene/projection_checks.h): drawn, but
   // the user should know. Recomputed when the scene or the size changes.

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 
 namespace twr::gui {
@@ -32,6 +33,7 @@ int scaledSide(float side, float scale) {
 void GuiApp::syncRenders() {
   takeCpuFrames();
   takeGlFrames();
+  syncHorizonMaps();
 
   int width = 0, height = 0;
   if (prefs_.resolution == ResolutionSource::FitView && imagePanelPixels_.x > 0.0f && imagePanelPixels_.y > 0.0f) {
@@ -80,6 +82,79 @@ void GuiApp::syncRenders() {
     updateDiff();
   }
   refreshTextures();
+}
+
+namespace {
+
+bool sameRequest(const HorizonRequest& a, const HorizonRequest& b) {
+  return a.material == b.material && a.heightMap == b.heightMap && a.heightScale == b.heightScale &&
+         a.directions == b.directions;
+}
+
+// The stale horizon maps the app should build: every one but a build that already threw.
+std::optional<HorizonRequest> nextHorizonToBuild(const SceneDoc& doc, const std::optional<HorizonRequest>& failed) {
+  for (std::size_t m = 0; m < doc.scene.materials.size(); ++m) {
+    if (!horizonMapStale(doc, m)) continue;
+    const Material& material = doc.scene.materials[m];
+    HorizonRequest request{m, material.heightMap, material.heightScale, material.horizonDirections};
+    if (failed && sameRequest(*failed, request)) continue;
+    return request;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+void GuiApp::syncHorizonMaps() {
+  for (HorizonBuilt& built : horizonWorker_.takeFinished()) {
+    horizonBuilding_.reset();
+    const std::size_t m = built.request.material;
+    const std::string name = m < doc_.scene.materials.size() ? doc_.scene.materials[m].name : std::string("?");
+    if (!built.map) {
+      horizonFailed_ = built.request;
+      horizonError_ = concat("the horizon map of '", name, "' could not be built: ", built.error);
+      std::cerr << "twinraster-gui: " << horizonError_ << "\n";
+      continue;
+    }
+    // Outdated by an edit made meanwhile: dropped, and the current keys are built next.
+    if (installHorizonMap(doc_, built.request, std::move(built.map))) {
+      char seconds[32];
+      std::snprintf(seconds, sizeof seconds, "%.2f", built.seconds);
+      horizonLastBuild_ = concat("'", name, "': ", built.request.directions, " directions in ", seconds, " s");
+      horizonError_.clear();
+      horizonFailed_.reset();
+    }
+  }
+  // One build at a time, and only once the edit ends (a slider released, a typed value
+  // entered): a drag of height_scale would otherwise start a build per frame.
+  if (horizonBuilding_ || ImGui::IsAnyItemActive()) return;
+  if (std::optional<HorizonRequest> request = nextHorizonToBuild(doc_, horizonFailed_)) {
+    horizonWorker_.submit(*request);
+    horizonBuilding_ = std::move(request);
+  }
+}
+
+bool GuiApp::horizonMapsPending() const {
+  return horizonBuilding_.has_value() || nextHorizonToBuild(doc_, horizonFailed_).has_value();
+}
+
+std::string GuiApp::horizonStatus() const {
+  if (!horizonError_.empty()) return horizonError_;
+  const auto describe = [this](const HorizonRequest& r) {
+    const std::string name = r.material < doc_.scene.materials.size() ? doc_.scene.materials[r.material].name : "?";
+    const int width = r.heightMap ? r.heightMap->width : 0, height = r.heightMap ? r.heightMap->height : 0;
+    return concat("'", name, "' (", r.directions, " directions, ", width, " x ", height, " texels)");
+  };
+  if (horizonBuilding_) {
+    const std::size_t m = horizonBuilding_->material;
+    const bool previous = m < doc_.scene.materials.size() && doc_.scene.materials[m].horizonMap;
+    return concat("Building the horizon map of ", describe(*horizonBuilding_), "; until it is in, both renderers ",
+                  previous ? "shadow with the previous one." : "draw it unshadowed.");
+  }
+  if (const std::optional<HorizonRequest> next = nextHorizonToBuild(doc_, horizonFailed_)) {
+    return concat("The horizon map of ", describe(*next), " is out of date: it is built again when the edit ends.");
+  }
+  return "";
 }
 
 void GuiApp::refreshRenderBlocker() {

@@ -64,6 +64,17 @@ const char* viewLegend(View view) {
   return "";
 }
 
+vec3 parallaxStepsColour(float tIn) {
+  const float t = std::isnan(tIn) ? 0.0f : std::clamp(tIn, 0.0f, 1.0f);
+  const auto channel = [t](float centre) { return std::clamp(1.5f - std::abs(4.0f * t - centre), 0.0f, 1.0f); };
+  return {channel(3.0f), channel(2.0f), channel(1.0f)};
+}
+
+int parallaxStepsMost(const Material& material) {
+  return material.parallaxLayers.y +
+         (material.surfaceDetail == SurfaceDetail::Relief ? material.reliefRefinementSteps : 0);
+}
+
 bool isVectorView(View view) {
   return view == View::Normal || view == View::Tangent || view == View::Bitangent || view == View::MappedNormal ||
          view == View::LightTangent || view == View::EyeTangent;

@@ -7,6 +7,7 @@
 
 #include "app/gui/pixel_probe.h"
 #include "scene/renderer.h"
+#include "scene/scene.h"
 #include "scene/settings.h"
 
 #include <initializer_list>
@@ -16,6 +17,15 @@ namespace twr::gui {
 
 // One or two sentences: what the colours of `view` mean.
 const char* viewLegend(View view);
+
+// The parallax_steps view's colour for t = steps / parallaxStepsMost in [0, 1] (clamped), as
+// both renderers draw it (heatColour in shaders/surface_detail.glsl): per channel
+// clamp(1.5 - |4 t - c|, 0, 1) with c = 3 (red), 2 (green), 1 (blue), so dark blue at 0, cyan
+// at 1/4, green at 1/2, yellow at 3/4, dark red at 1. Linear RGB in [0, 1].
+vec3 parallaxStepsColour(float t);
+// The step count the parallax_steps view draws red for `material`: parallax_layers' max, plus
+// relief_refinement_steps when the method is relief (the shaders' layerCap + refinementSteps).
+int parallaxStepsMost(const Material& material);
 
 // True for the views that show a unit vector as (v + 1) / 2.
 bool isVectorView(View view);

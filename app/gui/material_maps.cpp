@@ -2,8 +2,10 @@
 
 #include "app/gui/text_concat.h"
 #include "scene/errors.h"
+#include "scene/surface_detail.h"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 namespace twr::gui {
@@ -32,7 +34,6 @@ std::uintmax_t texelBytes(const SceneDoc& doc, std::size_t skipMaterial, MapSlot
       add(mapOf(material, slot).get());
       if (m < doc.loadedMaps.size()) add(doc.loadedMaps[m][slotIndex(slot)].get());
     }
-    add(material.heightMap.get());
   }
   return total;
 }
@@ -44,6 +45,7 @@ std::string_view toString(MapSlot slot) {
     case MapSlot::Diffuse: return "diffuse map";
     case MapSlot::Normal: return "normal map";
     case MapSlot::Specular: return "specular map";
+    case MapSlot::Height: return "height map";
   }
   return "map";
 }
@@ -52,6 +54,7 @@ std::shared_ptr<const Texture>& mapOf(Material& material, MapSlot slot) {
   switch (slot) {
     case MapSlot::Diffuse: return material.diffuseMap;
     case MapSlot::Normal: return material.normalMap;
+    case MapSlot::Height: return material.heightMap;
     case MapSlot::Specular: break;
   }
   return material.specularMap;
@@ -111,10 +114,14 @@ std::vector<std::string> setMapOptions(SceneDoc& doc, std::size_t material, MapS
     made = std::make_shared<Texture>(*old);
     made->options = options;
   }
-  if (slot == MapSlot::Normal && made->options.srgb) {
+  if ((slot == MapSlot::Normal || slot == MapSlot::Height) && made->options.srgb) {
     // As the scene loader says it (scene_file.cpp); done as asked.
-    const std::string warning = concat(made->path, ": a normal map holds directions, not colours; decoding it as "
-                                                   "sRGB bends every normal (done as asked)");
+    const std::string warning =
+        slot == MapSlot::Normal
+            ? concat(made->path, ": a normal map holds directions, not colours; decoding it as sRGB bends every "
+                                 "normal (done as asked)")
+            : concat(made->path, ": a height map holds heights, not colours; decoding it as sRGB bends every slope "
+                                 "(done as asked)");
     if (std::find(made->warnings.begin(), made->warnings.end(), warning) == made->warnings.end()) {
       made->warnings.push_back(warning);
     }
@@ -132,5 +139,93 @@ std::vector<std::string> setMapOptions(SceneDoc& doc, std::size_t material, MapS
 }
 
 std::uintmax_t documentTextureBytes(const SceneDoc& doc) { return texelBytes(doc, 0, MapSlot::Diffuse, false); }
+
+HeightFieldSettings heightFieldOf(const Material& material) {
+  return {material.surfaceDetail,         material.heightScale, material.parallaxLayers,
+          material.reliefRefinementSteps, material.selfShadow,  material.horizonDirections};
+}
+
+HeightFieldSettings clampHeightField(HeightFieldSettings wanted, const HeightFieldSettings& before) {
+  HeightFieldSettings s = wanted;
+  s.heightScale = std::isnan(s.heightScale) ? before.heightScale : std::clamp(s.heightScale, 0.0f, kMaxHeightScale);
+  s.parallaxLayers.x = std::clamp(s.parallaxLayers.x, 1, kMaxParallaxLayers);
+  s.parallaxLayers.y = std::clamp(s.parallaxLayers.y, 1, kMaxParallaxLayers);
+  if (s.parallaxLayers.x > s.parallaxLayers.y) {
+    // The bound the user moved wins; the other follows it.
+    if (s.parallaxLayers.y != before.parallaxLayers.y) s.parallaxLayers.x = s.parallaxLayers.y;
+    else s.parallaxLayers.y = s.parallaxLayers.x;
+  }
+  s.reliefRefinementSteps = std::clamp(s.reliefRefinementSteps, 0, kMaxReliefRefinementSteps);
+  // Nearest multiple of 4 (halves round up), then into range.
+  const int rounded = (std::max(s.horizonDirections, 0) + 2) / 4 * 4;
+  s.horizonDirections = std::clamp(rounded, kMinHorizonDirections, kMaxHorizonDirections);
+  return s;
+}
+
+HeightFieldEdit setHeightField(SceneDoc& doc, std::size_t material, const HeightFieldSettings& wanted) {
+  checkMaterial(doc, material);
+  Material& m = doc.scene.materials[material];
+  const HeightFieldSettings before = heightFieldOf(m);
+  const HeightFieldSettings s = clampHeightField(wanted, before);
+  const bool hasHeightMap = loadedMap(doc, material, MapSlot::Height) != nullptr || m.heightMap != nullptr;
+  if (!hasHeightMap && readsHeightMap(s.surfaceDetail)) {
+    throw InputError(concat("material ", m.name, ": \"", toString(s.surfaceDetail),
+                            "\" reads a height map, and the scene file gives this material none (\"height_map\")"));
+  }
+  if (!hasHeightMap && s.selfShadow != SelfShadow::None) {
+    throw InputError(concat("material ", m.name, ": self-shadowing reads a height map, and the scene file gives this "
+                                                 "material none (\"height_map\")"));
+  }
+  HeightFieldEdit edit;
+  if (s == before) return edit;
+  m.surfaceDetail = s.surfaceDetail;
+  m.heightScale = s.heightScale;
+  m.parallaxLayers = s.parallaxLayers;
+  m.reliefRefinementSteps = s.reliefRefinementSteps;
+  m.selfShadow = s.selfShadow;
+  m.horizonDirections = s.horizonDirections;
+  doc.touch();
+  edit.changed = true;
+  edit.horizonMapStale = horizonMapStale(doc, material);
+  return edit;
+}
+
+bool wantsHorizonMap(const Material& material) {
+  return material.selfShadow == SelfShadow::HorizonMap && readsHeightMap(material.surfaceDetail) &&
+         usableTexture(material.heightMap.get());
+}
+
+bool horizonMapStale(const SceneDoc& doc, std::size_t material) {
+  if (material >= doc.scene.materials.size()) return false;
+  const Material& m = doc.scene.materials[material];
+  if (!wantsHorizonMap(m)) return false;
+  if (!m.horizonMap || material >= doc.horizonSources.size()) return true;
+  const HorizonSource& source = doc.horizonSources[material];
+  const std::shared_ptr<const Texture> builtFrom = source.heightMap.lock();
+  return builtFrom != m.heightMap || source.heightScale != m.heightScale || source.directions != m.horizonDirections;
+}
+
+std::optional<HorizonRequest> staleHorizonMap(const SceneDoc& doc) {
+  for (std::size_t i = 0; i < doc.scene.materials.size(); ++i) {
+    if (!horizonMapStale(doc, i)) continue;
+    const Material& m = doc.scene.materials[i];
+    return HorizonRequest{i, m.heightMap, m.heightScale, m.horizonDirections};
+  }
+  return std::nullopt;
+}
+
+bool installHorizonMap(SceneDoc& doc, const HorizonRequest& request, std::shared_ptr<const HorizonMap> map) {
+  if (!map || request.material >= doc.scene.materials.size()) return false;
+  Material& m = doc.scene.materials[request.material];
+  if (!wantsHorizonMap(m) || m.heightMap != request.heightMap || m.heightScale != request.heightScale ||
+      m.horizonDirections != request.directions) {
+    return false;
+  }
+  m.horizonMap = std::move(map);
+  if (doc.horizonSources.size() < doc.scene.materials.size()) doc.horizonSources.resize(doc.scene.materials.size());
+  doc.horizonSources[request.material] = {request.heightMap, request.heightScale, request.directions};
+  doc.touch();
+  return true;
+}
 
 }  // namespace twr::gui

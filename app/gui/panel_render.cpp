@@ -3,8 +3,12 @@
 #include "app/gui/app.h"
 #include "app/gui/debug_views.h"
 #include "app/gui/ui_widgets.h"
+#include "app/gui/text_concat.h"
 #include "softrender/cpu_renderer.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -23,6 +27,11 @@ constexpr float kMinLineLength = 0.005f;
 constexpr float kMaxLineLength = 1.0f;
 // Drag speed of the clip plane coefficients, units per pixel of mouse travel.
 constexpr float kPlaneDragSpeed = 0.01f;
+
+// Colour steps of the parallax_steps legend bar, and how many of its step counts are labelled
+// (0, 1/4, ..., the most: where the ramp is blue, cyan, green, yellow, red).
+constexpr int kStepsBarSlices = 64;
+constexpr int kStepsBarTicks = 5;
 
 // A new user plane keeps the half space y >= 0 (a horizontal cut at the floor).
 const vec4 kNewUserPlane{0.0f, 1.0f, 0.0f, 0.0f};
@@ -89,10 +98,25 @@ void GuiApp::drawRenderingTab() {
 
   sectionTitle("Debug view");
   ImGui::SetNextItemWidth(-FLT_MIN);
-  changed |= enumCombo("##view", settings.view, kAllViews);
+  // kAllViews, each entry named for the scripted tests (height, parallax_offset, ... included).
+  // Tall enough for every view: a scrolled list hid the height views at its end.
+  if (ImGui::BeginCombo("##view", std::string(toString(settings.view)).c_str(), ImGuiComboFlags_HeightLargest)) {
+    for (const View view : kAllViews) {
+      const bool chosen = settings.view == view;
+      if (ImGui::Selectable(std::string(toString(view)).c_str(), chosen) && !chosen) {
+        settings.view = view;
+        changed = true;
+      }
+      probe_.item(concat("view_", toString(view)).c_str());
+      if (chosen) ImGui::SetItemDefaultFocus();
+    }
+    ImGui::EndCombo();
+  }
+  probe_.item("view");
   itemTooltip("What both backends write per pixel: the shaded colour, or one shading input as a colour "
               "(vectors as (v + 1) / 2, see docs/shading.md).");
   hintText(viewLegend(settings.view));
+  if (settings.view == View::ParallaxSteps) drawParallaxStepsLegend();
   if (settings.view == View::Depth) {
     if (ImGui::Checkbox("linearised (eye distance)", &prefs_.linearDepth)) {
       cpuTextureStale_ = glTextureStale_ = true;
@@ -209,6 +233,80 @@ void GuiApp::drawRenderingTab() {
   hintText("Line pixels are left out of the diff metrics (grey in the diff views).");
 
   if (changed) doc_.touch();
+}
+
+}  // namespace twr::gui
+
+namespace twr::gui {
+
+void GuiApp::drawParallaxStepsLegend() {
+  const std::vector<Material>& materials = doc_.scene.materials;
+  if (materials.empty()) {
+    hintText("No materials: nothing marches layers.");
+    return;
+  }
+  const std::size_t index = std::min(selectedMaterial_, materials.size() - 1);
+  const Material& material = materials[index];
+  const int most = parallaxStepsMost(material);
+
+  // The ramp, as both renderers draw it (parallaxStepsColour), left 0 to right `most`.
+  const float width = ImGui::GetContentRegionAvail().x;
+  const float barHeight = ImGui::GetTextLineHeight();
+  const ImVec2 corner = ImGui::GetCursorScreenPos();
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  for (int i = 0; i < kStepsBarSlices; ++i) {
+    const float t = (static_cast<float>(i) + 0.5f) / kStepsBarSlices;
+    const vec3 c = parallaxStepsColour(t);
+    const float x0 = corner.x + width * static_cast<float>(i) / kStepsBarSlices;
+    const float x1 = corner.x + width * static_cast<float>(i + 1) / kStepsBarSlices;
+    draw->AddRectFilled(ImVec2(x0, corner.y), ImVec2(x1, corner.y + barHeight),
+                        ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, 1.0f)));
+  }
+  draw->AddRect(corner, ImVec2(corner.x + width, corner.y + barHeight), IM_COL32(140, 140, 140, 255));
+  ImGui::Dummy(ImVec2(width, barHeight));
+  probe_.item("parallax_steps_bar");
+
+  // Step counts under the ticks: the layers (and refinement steps) each colour stands for.
+  const float labelTop = ImGui::GetCursorScreenPos().y;
+  const ImU32 labelColour = ImGui::GetColorU32(ImGuiCol_Text);
+  nlohmann::json ticks = nlohmann::json::array();
+  for (int k = 0; k < kStepsBarTicks; ++k) {
+    const float fraction = static_cast<float>(k) / (kStepsBarTicks - 1);
+    const float steps = fraction * static_cast<float>(most);
+    char text[16];
+    std::snprintf(text, sizeof text, "%g", static_cast<double>(std::round(steps * 10.0f) / 10.0f));
+    ticks.push_back(text);
+    const float tickX = corner.x + fraction * width;
+    draw->AddLine(ImVec2(tickX, corner.y + barHeight), ImVec2(tickX, labelTop + 2.0f), labelColour);
+    const float textWidth = ImGui::CalcTextSize(text).x;
+    const float x = std::clamp(tickX - 0.5f * textWidth, corner.x, corner.x + width - textWidth);
+    draw->AddText(ImVec2(x, labelTop + 2.0f), labelColour, text);
+  }
+  ImGui::Dummy(ImVec2(width, ImGui::GetTextLineHeight() + 2.0f));
+
+  std::string caption;
+  if (!marchesLayers(material.surfaceDetail)) {
+    caption = concat("Steps of '", material.name, "' (selected in the Scene tab): ", toString(material.surfaceDetail),
+                     " marches no layers, so its pixels are dark blue (0). steep_parallax, relief and "
+                     "parallax_occlusion march; red would be its parallax_layers max, ", material.parallaxLayers.y, '.');
+  } else {
+    caption = concat("Steps of '", material.name, "' (selected in the Scene tab): ", material.parallaxLayers.x,
+                     " layers facing the camera, up to ", material.parallaxLayers.y, " at grazing views");
+    if (material.surfaceDetail == SurfaceDetail::Relief) {
+      caption += concat(", plus ", material.reliefRefinementSteps, " refinement steps: red = ", most);
+    } else {
+      caption += concat(": red = ", most);
+    }
+    caption += '.';
+  }
+  const auto othersMarch = std::any_of(materials.begin(), materials.end(), [&](const Material& other) {
+    return &other != &material && other.heightMap && marchesLayers(other.surfaceDetail);
+  });
+  if (othersMarch) caption += " Each material is red at its own most; select another to read its counts.";
+  hintText(caption.c_str());
+  if (probe_.enabled()) {
+    probe_.state()["parallax_steps_legend"] = {{"material", index}, {"most", most}, {"ticks", ticks}};
+  }
 }
 
 }  // namespace twr::gui

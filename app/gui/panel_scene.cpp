@@ -45,7 +45,62 @@ constexpr ImGuiColorEditFlags kColourFlags = ImGuiColorEditFlags_Float | ImGuiCo
 constexpr TextureWrap kWrapModes[] = {TextureWrap::Repeat, TextureWrap::MirroredRepeat, TextureWrap::ClampToEdge};
 constexpr GreenAxis kGreenAxes[] = {GreenAxis::Up, GreenAxis::Down};
 // Names of the maps in the test probe's widget keys, in kMapSlots order.
-const char* const kMapKeys[] = {"diffuse", "normal", "specular"};
+const char* const kMapKeys[] = {"diffuse", "normal", "specular", "height"};
+constexpr SelfShadow kSelfShadows[] = {SelfShadow::None, SelfShadow::HeightMarch, SelfShadow::HorizonMap};
+// The height_scale slider's range, texture-space units (Ctrl+click types up to kMaxHeightScale):
+// real reliefs are a few hundredths of a uv unit deep.
+constexpr float kHeightScaleSliderMax = 0.2f;
+
+// What each method does, for its tooltip (docs/parallax.md derives them).
+const char* surfaceDetailHelp(SurfaceDetail method) {
+  switch (method) {
+    case SurfaceDetail::NormalMap:
+      return "normal_map: the normal map alone (without one, the interpolated normal). The height map is not read "
+             "(except by the height views): the surface is lit as bumpy but stays flat to the eye.";
+    case SurfaceDetail::BumpBlinn:
+      return "bump_blinn (Blinn 1978): a normal made from the height map's slopes (central differences, times "
+             "height_scale) replaces the normal map. Only the lighting changes: uv is not shifted, so the texture "
+             "and the silhouette stay flat.";
+    case SurfaceDetail::BumpEmboss:
+      return "bump_emboss: the fixed-function trick. The height is read again one texel towards the light and the "
+             "difference, times height_scale, is added to N.L: diffuse only, no specular, no new normal.";
+    case SurfaceDetail::Parallax:
+      return "parallax (Kaneko 2001): uv moves by V.xy / V.z times the depth (1 - h) height_scale read at the "
+             "pixel. The division by V.z makes the shift grow without bound towards grazing views, where the "
+             "texture swims and tears.";
+    case SurfaceDetail::ParallaxOffsetLimited:
+      return "parallax_offset_limited (Welsh 2004): plain parallax without the division by V.z, so the shift never "
+             "exceeds height_scale: stable at grazing views, at the price of less apparent depth there.";
+    case SurfaceDetail::SteepParallax:
+      return "steep_parallax (McGuire 2005): marches the view ray down through the relief in parallax_layers "
+             "layers (min facing the camera, max at grazing views) and stops at the first layer below the height "
+             "field: correct occlusion, but the layers show as steps.";
+    case SurfaceDetail::Relief:
+      return "relief (Policarpo 2005): steep parallax's march, then a binary search between the last two layers "
+             "(relief_refinement_steps halvings) for where the ray meets the height field.";
+    case SurfaceDetail::ParallaxOcclusion:
+      return "parallax_occlusion (Tatarchuk 2006): steep parallax's march, then the hit interpolated linearly "
+             "between the last two layers: smooth, with no reads beyond the march.";
+  }
+  return "";
+}
+
+const char* selfShadowHelp(SelfShadow shadow) {
+  switch (shadow) {
+    case SelfShadow::None:
+      return "none: the height field casts no shadow on itself.";
+    case SelfShadow::HeightMarch:
+      return "height_march: from the shaded point, march towards each light through the height field in "
+             "parallax_layers layers; the more the field rises above that ray, the darker. Costs a march per "
+             "light per pixel.";
+    case SelfShadow::HorizonMap:
+      return "horizon_map (Max 1988; Sloan and Cohen 2000): per texel and horizon_directions azimuths, the "
+             "elevation of the horizon is computed once; a light below it is shadowed. One or a few texture reads "
+             "per light, but the map must be built again when the height map, height_scale or the directions "
+             "change.";
+  }
+  return "";
+}
 
 bool segmentsField(const char* label, int& value, int minimum) {
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
@@ -242,6 +297,33 @@ void GuiApp::drawMeshEditor(int meshIndex) {
     case MeshType::Triangles:
       ImGui::TextDisabled("%zu positions from the scene file", desc.positions.size());
       break;
+    case MeshType::Heightfield: {
+      // Up to millions of triangles (one vertex per texel): built again when an edit ends, not
+      // on every frame of a drag.
+      const auto finished = [] { return ImGui::IsItemDeactivatedAfterEdit(); };
+      ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+      ImGui::DragFloat2("Size", &desc.planeSize.x, kSizeDragSpeed, kMinDimension, kMaxCoordinate, "%.3f",
+                        ImGuiSliderFlags_AlwaysClamp);
+      edited |= finished();
+      ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+      ImGui::DragFloat("uv scale", &desc.uvScale, kSizeDragSpeed, kMinDimension, kMaxCoordinate, "%.3f",
+                       ImGuiSliderFlags_AlwaysClamp);
+      itemTooltip("How often the height map repeats across the surface, no unit.");
+      edited |= finished();
+      ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+      ImGui::SliderFloat("Height scale", &desc.heightScale, 0.0f, kHeightScaleSliderMax, "%.3f");
+      desc.heightScale = std::clamp(desc.heightScale, 0.0f, kMaxHeightScale);
+      itemTooltip("The mesh's own relief depth, texture-space units (as a material's height_scale; Ctrl+click "
+                  "types up to 1): the true displaced surface parallax mapping is measured against. The mesh is "
+                  "built again when the edit ends.");
+      edited |= finished();
+      ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+      ImGui::DragInt2("Grid", &desc.gridSegments.x, 1.0f, 0, kMaxSegments, "%d", ImGuiSliderFlags_AlwaysClamp);
+      itemTooltip("Quads along x (u) and z (v); 0 0: one vertex per height-map texel. Built again when the edit ends.");
+      edited |= finished();
+      if (desc.gridSegments != ivec2(0)) desc.gridSegments = glm::max(desc.gridSegments, ivec2(1));
+      break;
+    }
   }
   if (edited) {
     try {
@@ -265,7 +347,11 @@ void GuiApp::drawMaterialsSection() {
   for (std::size_t m = 0; m < doc_.scene.materials.size(); ++m) {
     Material& material = doc_.scene.materials[m];
     ImGui::PushID(static_cast<int>(m));
-    const bool open = ImGui::TreeNode("##material", "%s", material.name.c_str());
+    const ImGuiTreeNodeFlags selected = selectedMaterial_ == m ? ImGuiTreeNodeFlags_Selected : 0;
+    const bool open = ImGui::TreeNodeEx("##material", selected, "%s", material.name.c_str());
+    if (ImGui::IsItemClicked() || ImGui::IsItemToggledOpen()) selectedMaterial_ = m;
+    itemTooltip("Open to edit the material. The highlighted one is the material the parallax_steps legend "
+                "(Rendering tab) counts layers for.");
     probe_.item(concat("material", m).c_str());
     if (open) {
       changed |= ImGui::ColorEdit3("ka", &material.ka.x, kColourFlags);
@@ -279,11 +365,150 @@ void GuiApp::drawMaterialsSection() {
                                     ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
       itemTooltip("Phong exponent n in (R.V)^n, no unit: larger is a smaller, sharper highlight.");
       for (const MapSlot slot : kMapSlots) drawMapControls(m, slot);
+      drawHeightFieldControls(m);
       ImGui::TreePop();
     }
     ImGui::PopID();
   }
   if (changed) doc_.touch();
+}
+
+// The height-field keys of a material (issue 16): how the height map is drawn and each method's
+// knobs, greyed where the method does not read them. Applying an edit, and knowing when the horizon
+// map must be built again, is material_maps.h's job.
+void GuiApp::drawHeightFieldControls(std::size_t index) {
+  const Material& material = doc_.scene.materials[index];
+  const std::string key = concat("material", index, '_');
+  const bool hasHeightMap = loadedMap(doc_, index, MapSlot::Height) != nullptr || material.heightMap != nullptr;
+  HeightFieldSettings s = heightFieldOf(material);
+  bool edited = false;
+  const float fieldWidth = ImGui::GetContentRegionAvail().x * 0.6f;
+
+  ImGui::PushID("height_field");
+  ImGui::TextDisabled("height field");
+  ImGui::Indent();
+  if (!hasHeightMap) {
+    hintText("No height map: bump, parallax and self-shadowing need \"height_map\" in the scene file.");
+  } else if (!material.heightMap) {
+    hintText("Height map off: drawn as normal_map until it is on again.");
+  }
+
+  ImGui::SetNextItemWidth(fieldWidth);
+  const std::string current(toString(s.surfaceDetail));
+  if (ImGui::BeginCombo("surface detail", current.c_str())) {
+    for (const SurfaceDetail method : kAllSurfaceDetails) {
+      const bool unavailable = readsHeightMap(method) && !hasHeightMap;
+      const bool chosen = method == s.surfaceDetail;
+      ImGui::BeginDisabled(unavailable);
+      if (ImGui::Selectable(std::string(toString(method)).c_str(), chosen) && !chosen) {
+        s.surfaceDetail = method;
+        edited = true;
+      }
+      ImGui::EndDisabled();
+      itemTooltip(unavailable ? concat(surfaceDetailHelp(method),
+                                       "\n\nUnavailable: it reads a height map, and this material has none.")
+                                    .c_str()
+                              : surfaceDetailHelp(method));
+      probe_.item(concat(key, "surface_detail_", toString(method)).c_str());
+      if (chosen) ImGui::SetItemDefaultFocus();
+    }
+    ImGui::EndCombo();
+  }
+  itemTooltip(concat("How the surface detail is drawn (surface_detail).\n\n", surfaceDetailHelp(s.surfaceDetail)).c_str());
+  probe_.item(concat(key, "surface_detail").c_str());
+
+  const bool heightField = hasHeightMap && readsHeightMap(s.surfaceDetail);
+  ImGui::BeginDisabled(!hasHeightMap);
+  ImGui::SetNextItemWidth(fieldWidth);
+  // No AlwaysClamp: Ctrl+click may type a depth beyond the slider, up to kMaxHeightScale
+  // (clampHeightField). Every frame of a drag redraws; the horizon map waits for the release.
+  if (ImGui::SliderFloat("height scale", &s.heightScale, 0.0f, kHeightScaleSliderMax, "%.3f")) edited = true;
+  itemTooltip("Depth of the relief in texture-space units (height_scale): 1 = one uv unit along the surface; "
+              "height 0 lies this far below the polygon. Ctrl+click to type a value up to 1. Bump methods scale "
+              "their slopes by it, parallax methods their shift.");
+  probe_.item(concat(key, "height_scale").c_str());
+
+  ImGui::BeginDisabled(!readsParallaxLayers(s));
+  ImGui::SetNextItemWidth(fieldWidth);
+  if (ImGui::DragIntRange2("parallax layers", &s.parallaxLayers.x, &s.parallaxLayers.y, 0.25f, 1, kMaxParallaxLayers,
+                           "min %d", "max %d", ImGuiSliderFlags_AlwaysClamp)) {
+    edited = true;
+  }
+  itemTooltip("Layers the march takes (parallax_layers [min, max], each in [1, 256], min <= max): min when the "
+              "view (or the light, for height_march) is straight on, up to max at grazing angles. More layers, "
+              "fewer steps visible, more texture reads. Read by steep_parallax, relief, parallax_occlusion and "
+              "the height_march self-shadow. Ctrl+click to type.");
+  probe_.item(concat(key, "parallax_layers").c_str());
+  ImGui::EndDisabled();
+
+  ImGui::BeginDisabled(s.surfaceDetail != SurfaceDetail::Relief);
+  ImGui::SetNextItemWidth(fieldWidth);
+  if (ImGui::SliderInt("refinement steps", &s.reliefRefinementSteps, 0, kMaxReliefRefinementSteps, "%d",
+                       ImGuiSliderFlags_AlwaysClamp)) {
+    edited = true;
+  }
+  itemTooltip("relief only (relief_refinement_steps, 0 to 16): halvings of the binary search after the march; "
+              "each halves the error of the hit and costs one more read.");
+  probe_.item(concat(key, "relief_refinement_steps").c_str());
+  ImGui::EndDisabled();
+
+  ImGui::BeginDisabled(!heightField);
+  ImGui::SetNextItemWidth(fieldWidth);
+  const std::string shadowName(toString(s.selfShadow));
+  if (ImGui::BeginCombo("self shadow", shadowName.c_str())) {
+    for (const SelfShadow shadow : kSelfShadows) {
+      const bool chosen = shadow == s.selfShadow;
+      if (ImGui::Selectable(std::string(toString(shadow)).c_str(), chosen) && !chosen) {
+        s.selfShadow = shadow;
+        edited = true;
+      }
+      itemTooltip(selfShadowHelp(shadow));
+      probe_.item(concat(key, "self_shadow_", toString(shadow)).c_str());
+      if (chosen) ImGui::SetItemDefaultFocus();
+    }
+    ImGui::EndCombo();
+  }
+  itemTooltip(heightField ? concat("Whether the height field shadows itself (self_shadow).\n\n",
+                                   selfShadowHelp(s.selfShadow)).c_str()
+                          : "Self-shadowing needs a height map and a height-field method (not normal_map).");
+  probe_.item(concat(key, "self_shadow").c_str());
+  ImGui::EndDisabled();
+
+  ImGui::BeginDisabled(!heightField || s.selfShadow != SelfShadow::HorizonMap);
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted("horizon directions");
+  const char* directionsHelp =
+      "horizon_map only (horizon_directions): azimuths the horizon map stores, 4 per RGBA texture; more follow a "
+      "light circling the surface more smoothly, each 4 cost a texture read per light and a longer build.";
+  itemTooltip(directionsHelp);
+  for (const int directions : kHorizonDirectionChoices) {
+    ImGui::SameLine();
+    if (ImGui::RadioButton(std::to_string(directions).c_str(), s.horizonDirections == directions) &&
+        s.horizonDirections != directions) {
+      s.horizonDirections = directions;
+      edited = true;
+    }
+    itemTooltip(directionsHelp);
+    probe_.item(concat(key, "horizon_directions_", directions).c_str());
+  }
+  ImGui::EndDisabled();
+  ImGui::EndDisabled();  // !hasHeightMap
+
+  if (edited) {
+    selectedMaterial_ = index;
+    try {
+      setHeightField(doc_, index, s);
+      heightFieldErrors_.erase(index);
+    } catch (const std::exception& e) {
+      heightFieldErrors_[index] = e.what();
+    }
+  }
+  if (const auto error = heightFieldErrors_.find(index); error != heightFieldErrors_.end()) errorText(error->second);
+  if (horizonMapStale(doc_, index) || (horizonBuilding_ && horizonBuilding_->material == index)) {
+    warningText(horizonStatus());
+  }
+  ImGui::Unindent();
+  ImGui::PopID();
 }
 
 // One map of a material: on/off, then the options a scene file gives it. Applying an edit is
@@ -298,7 +523,11 @@ void GuiApp::drawMapControls(std::size_t material, MapSlot slot) {
                                    loaded->formatName, ')');
   if (ImGui::Checkbox(label.c_str(), &on)) setMapOn(doc_, material, slot, on);
   itemTooltip(concat(loaded->path, "\nOff: the material is drawn without this map (it stays loaded, so switching "
-                                   "back costs nothing).")
+                                   "back costs nothing).",
+                     slot == MapSlot::Height
+                         ? "\nThe red channel is the height: 1 = the top of the relief, where the polygon lies, 0 "
+                           "= height_scale below it. Off, every surface_detail draws as normal_map."
+                         : "")
                   .c_str());
   probe_.item(concat(key, "_on").c_str());
 
@@ -314,6 +543,10 @@ void GuiApp::drawMapControls(std::size_t material, MapSlot slot) {
   itemTooltip(slot == MapSlot::Normal
                   ? "Decode the texels from sRGB to linear before filtering (GL_SRGB8_ALPHA8). A normal map holds "
                     "directions, not colours: this bends every normal. The file is read again."
+              : slot == MapSlot::Height
+                  ? "Decode the texels from sRGB to linear before filtering (GL_SRGB8_ALPHA8). A height map holds "
+                    "heights, not colours: this bends every slope. The file is read again (and the horizon map "
+                    "built again)."
                   : "Decode the colour channels from sRGB to linear before filtering (GL_SRGB8_ALPHA8), as a "
                     "colour image painted on screen needs; mip levels are then averaged as linear light. The file "
                     "is read again.");

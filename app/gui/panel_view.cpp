@@ -179,6 +179,9 @@ void GuiApp::drawViewMessages(ImVec2 regionMin, ImVec2 regionSize) {
   };
   if (!sceneError_.empty()) box(sceneError_, kErrorBanner, IM_COL32(255, 235, 235, 255), true);
   if (!pinWarning_.empty()) box(pinWarning_, kMessageBackground, IM_COL32(255, 200, 90, 255));
+  if (const std::string horizon = horizonStatus(); !horizon.empty()) {
+    box(horizon, kMessageBackground, IM_COL32(255, 200, 90, 255));
+  }
   if (!screenshotMessage_.empty() && glfwGetTime() - screenshotMessageTime_ < kMessageSeconds) {
     box(screenshotMessage_, kMessageBackground, IM_COL32(220, 220, 220, 255));
   }

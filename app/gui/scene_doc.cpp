@@ -22,7 +22,11 @@ SceneDoc loadSceneDoc(const std::string& path) {
   doc.scene = loadSceneFile(path);
   doc.fileCamera = doc.scene.camera;
   for (const Material& material : doc.scene.materials) {
-    doc.loadedMaps.push_back({material.diffuseMap, material.normalMap, material.specularMap});
+    doc.loadedMaps.push_back({material.diffuseMap, material.normalMap, material.specularMap, material.heightMap});
+    // The loader builds the horizon map from the keys it read.
+    HorizonSource source;
+    if (material.horizonMap) source = {material.heightMap, material.heightScale, material.horizonDirections};
+    doc.horizonSources.push_back(source);
   }
   return doc;
 }

@@ -12,13 +12,23 @@
 
 namespace twr::gui {
 
-// A material's maps in the order diffuse, normal, specular.
-using MaterialMaps = std::array<std::shared_ptr<const Texture>, 3>;
+// A material's maps in the order diffuse, normal, specular, height.
+using MaterialMaps = std::array<std::shared_ptr<const Texture>, 4>;
+
+// What a material's horizon map was built from (material_maps.h): the height map (weak: a
+// height map that is gone cannot match a new one at the same address), its depth and the
+// number of directions.
+struct HorizonSource {
+  std::weak_ptr<const Texture> heightMap;
+  float heightScale = 0.0f;
+  int directions = 0;
+};
 
 struct SceneDoc {
   Scene scene;
   Camera fileCamera;                      // the camera as loaded, for "reset"
   std::vector<MaterialMaps> loadedMaps;   // per material, the maps as loaded
+  std::vector<HorizonSource> horizonSources;  // per material, what its horizonMap was built from
   std::uint64_t revision = 1;             // bumped by every edit that changes a render
 
   void touch() { ++revision; }

@@ -19,7 +19,8 @@ void helpMarker(const char* text) {
 }
 
 void itemTooltip(const char* text) {
-  if (!ImGui::IsItemHovered()) return;
+  // Disabled items too: their tooltip says why they are greyed.
+  if (!ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) return;
   ImGui::BeginTooltip();
   ImGui::PushTextWrapPos(ImGui::GetFontSize() * 32.0f);
   ImGui::TextUnformatted(text);

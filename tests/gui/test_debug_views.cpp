@@ -22,6 +22,26 @@ TEST(DebugViews, EmptyPixelsAreNotDecodedAsVectors) {
   EXPECT_EQ(text.find("-0.9"), std::string::npos) << text;
 }
 
+// The parallax_steps legend: the shaders' heat(t), blue 0 -> cyan -> green -> yellow -> red.
+TEST(DebugViews, ParallaxStepsRampIsTheShadersHeat) {
+  const auto near = [](vec3 a, vec3 b) { return glm::all(glm::lessThanEqual(glm::abs(a - b), vec3(1e-6f))); };
+  EXPECT_TRUE(near(parallaxStepsColour(0.0f), vec3(0.0f, 0.0f, 0.5f)));
+  EXPECT_TRUE(near(parallaxStepsColour(0.25f), vec3(0.0f, 0.5f, 1.0f)));   // cyan-ish
+  EXPECT_TRUE(near(parallaxStepsColour(0.5f), vec3(0.5f, 1.0f, 0.5f)));    // green
+  EXPECT_TRUE(near(parallaxStepsColour(0.75f), vec3(1.0f, 0.5f, 0.0f)));   // yellow-orange
+  EXPECT_TRUE(near(parallaxStepsColour(1.0f), vec3(0.5f, 0.0f, 0.0f)));    // red
+  EXPECT_TRUE(near(parallaxStepsColour(-3.0f), parallaxStepsColour(0.0f))) << "clamped";
+  EXPECT_TRUE(near(parallaxStepsColour(7.0f), parallaxStepsColour(1.0f)));
+  EXPECT_TRUE(near(parallaxStepsColour(std::numeric_limits<float>::quiet_NaN()), parallaxStepsColour(0.0f)));
+  Material m;
+  m.parallaxLayers = {8, 32};
+  m.reliefRefinementSteps = 5;
+  m.surfaceDetail = SurfaceDetail::ParallaxOcclusion;
+  EXPECT_EQ(parallaxStepsMost(m), 32);
+  m.surfaceDetail = SurfaceDetail::Relief;
+  EXPECT_EQ(parallaxStepsMost(m), 37) << "relief's refinement steps count too";
+}
+
 TEST(DebugViews, DrawnPixelsDecodeAsTheirView) {
   PixelSample up;
   up.rgba = {128, 255, 128, 255};

@@ -231,6 +231,28 @@ class GuiProcess {
     xdotool("type --delay 40 '" + text + "'");
     waitFrames(2);
   }
+  // Scrolls the Controls panel (the mouse wheel over it) until `item` lies inside the window.
+  void scrollTo(const std::string& item) {
+    for (int attempt = 0; attempt < 60; ++attempt) {
+      const json s = waitForItem(item);
+      if (!s.contains("items") || !s["items"].contains(item) || !s.contains("window")) return;
+      const float windowHeight = s["window"][1].get<float>();
+      const float top = s["items"][item][1].get<float>(), bottom = s["items"][item][3].get<float>();
+      // Clear of the panel's title bar at the top and of the window's bottom edge.
+      if (top >= 24.0f && bottom <= windowHeight - 24.0f) return;
+      moveTo(0.5f * s.value("controls_width", 200.0f), 0.5f * windowHeight);
+      waitFrames(1);
+      xdotool(bottom > windowHeight - 24.0f ? "click 5" : "click 4");  // wheel down, up
+      waitFrames(3);
+    }
+    ADD_FAILURE() << "could not scroll " << item << " into the window";
+  }
+  // Opens a combo box and picks one of its entries (each entry is a widget of its own).
+  void pick(const std::string& combo, const std::string& entry) {
+    scrollTo(combo);
+    click(combo);
+    click(entry);
+  }
   // Ctrl+click a drag field into a text field and type a value into it, key by key (every
   // key applies what is typed so far, as for a user), then Enter.
   void typeInto(const std::string& item, const std::string& value) {
@@ -540,6 +562,129 @@ TEST(GuiScripted, TextureOptionEditsRedrawBothBackends) {
 
   app.click("tab_rendering");
   app.waitForItem("anisotropy");
+  EXPECT_FALSE(s.contains("panel_faults")) << s.dump(1);
+  EXPECT_EQ(app.quit(), 0) << app.err();
+}
+
+// Issue 16: every height-field key of the selected material is a live control in the Scene
+// tab. A bricks floor with a height map starts as bump_blinn; surface_detail is switched to
+// parallax_occlusion through the combo box, self_shadow to horizon_map (built on a worker,
+// then both backends draw it), horizon_directions to 16 and height_scale typed (each rebuilds
+// the map); a material without a height map cannot pick a height method; and the parallax_steps
+// view's legend counts the selected material's layers.
+TEST(GuiScripted, HeightFieldControlsRedrawBothBackends) {
+  REQUIRE_DISPLAY_AND_XDOTOOL();
+  const fs::path scene = fs::path(TWINRASTER_TEST_OUT) / "gui_scripted" / (testName() + "_scene");
+  fs::remove_all(scene);
+  fs::create_directories(scene);
+  const fs::path textures = fs::path(TWINRASTER_SOURCE_DIR) / "assets" / "textures";
+  fs::copy_file(textures / "bricks_diffuse.png", scene / "diffuse.png");
+  fs::copy_file(textures / "bricks_height.png", scene / "height.png");
+  std::ofstream(scene / "scene.json") << R"({
+    "camera": {"position": [0, 1.7, 1.7], "target": [0, 0, 0]},
+    "lights": [{"position": [1.6, 0.8, 0.4]}],
+    "materials": {"bricks": {"ks": [0.3, 0.3, 0.3], "diffuse_map": "diffuse.png", "height_map": "height.png",
+                             "height_scale": 0.05, "surface_detail": "bump_blinn"},
+                  "plain": {"kd": [0.7, 0.7, 0.7]}},
+    "nodes": [{"name": "floor", "material": "bricks", "mesh": {"type": "plane", "size": [2.4, 2.4], "uv_scale": 2}},
+              {"name": "box", "material": "plain", "mesh": {"type": "cube", "size": 0.3}, "translate": [0.8, 0.15, 0.8]}]
+  })";
+  GuiProcess app(testName(), {(scene / "scene.json").string(), "--reset", "--view-mode", "side"});
+  app.window();
+  json s = app.waitSettled();
+  ASSERT_TRUE(s.contains("materials") && s["materials"].size() == 2) << s.dump(1);
+  EXPECT_EQ(s["materials"][0]["surface_detail"], "bump_blinn");
+  EXPECT_TRUE(s["materials"][0]["horizon_map"].is_null());
+  EXPECT_EQ(s["selected_material"], 0) << "the material with the height map";
+  // Both backends done with the current edit, compared, and no horizon map waiting.
+  const auto caughtUp = [](const json& st) {
+    return st.value("settled", false) && st["cpu_edit"] == st["edit"] && st["gl_edit"] == st["edit"] &&
+           st["diff_edit"] == st["edit"];
+  };
+  const auto withinTargets = [](const json& st) { return st["diff"]["max_abs_diff"].get<int>() <= 3; };
+  EXPECT_TRUE(withinTargets(s)) << s.dump(1);
+
+  app.click("tab_scene");
+  app.scrollTo("material0");
+  app.click("material0");  // open the material's tree node
+  long edit = s["edit"].get<long>();
+  app.pick("material0_surface_detail", "material0_surface_detail_parallax_occlusion");
+  s = app.waitFor("surface_detail parallax_occlusion", [](const json& st) {
+    return st["materials"][0]["surface_detail"] == "parallax_occlusion";
+  });
+  s = app.waitFor("both backends on parallax_occlusion", [&](const json& st) {
+    return caughtUp(st) && st["edit"].get<long>() > edit;
+  });
+  EXPECT_EQ(s["materials"][0]["surface_detail"], "parallax_occlusion");
+  EXPECT_TRUE(withinTargets(s)) << s.dump(1);
+  EXPECT_EQ(s["materials"][0]["error"], "");
+
+  // Self-shadowing by a horizon map: built on a worker, then drawn by both.
+  edit = s["edit"].get<long>();
+  app.pick("material0_self_shadow", "material0_self_shadow_horizon_map");
+  s = app.waitFor("the horizon map built and drawn", [&](const json& st) {
+    const json& m = st["materials"][0];
+    return m["self_shadow"] == "horizon_map" && !m["horizon_map"].is_null() && !m["horizon_stale"].get<bool>() &&
+           st["horizon_building"].is_null() && caughtUp(st) && st["edit"].get<long>() > edit + 1;
+  });
+  EXPECT_EQ(s["materials"][0]["horizon_map"]["directions"], 8);
+  EXPECT_NE(s["horizon_last_build"].get<std::string>().find("8 directions"), std::string::npos) << s.dump(1);
+  EXPECT_TRUE(withinTargets(s)) << s.dump(1);
+
+  json horizon = s["materials"][0]["horizon_map"];
+  app.scrollTo("material0_horizon_directions_16");
+  app.click("material0_horizon_directions_16");
+  s = app.waitFor("16 directions built and drawn", [&](const json& st) {
+    const json& m = st["materials"][0];
+    return m["horizon_directions"] == 16 && !m["horizon_map"].is_null() && m["horizon_map"]["directions"] == 16 &&
+           !m["horizon_stale"].get<bool>() && caughtUp(st);
+  });
+  EXPECT_TRUE(withinTargets(s)) << s.dump(1);
+
+  horizon = s["materials"][0]["horizon_map"];
+  app.scrollTo("material0_height_scale");
+  app.typeInto("material0_height_scale", "0.08");
+  s = app.waitFor("height_scale 0.08 with its horizon map", [&](const json& st) {
+    const json& m = st["materials"][0];
+    return std::abs(m["height_scale"].get<double>() - 0.08) < 1e-6 && !m["horizon_map"].is_null() &&
+           m["horizon_map"]["object"] != horizon["object"] && !m["horizon_stale"].get<bool>() && caughtUp(st);
+  });
+  EXPECT_TRUE(withinTargets(s)) << s.dump(1);
+  app.xdotool("key F12");  // the window as the user sees it, for a person to look at
+  app.waitFor("the window screenshot", [](const json& st) { return !st.value("screenshot_message", "").empty(); });
+
+  // "plain" has no height map: its height methods are greyed, a click on one does nothing.
+  app.scrollTo("material1");
+  app.click("material1");
+  app.pick("material1_surface_detail", "material1_surface_detail_parallax");
+  s = app.waitFrames(5);
+  EXPECT_EQ(s["materials"][1]["surface_detail"], "normal_map") << s.dump(1);
+  EXPECT_EQ(s["materials"][1]["error"], "");
+  // The disabled entry left the list open: a click on the combo closes it (Escape does not:
+  // keyboard navigation is off).
+  app.click("material1_surface_detail");
+  s = app.waitFor("the list closed", [](const json& st) { return !st["items"].contains("material1_surface_detail_parallax"); });
+
+  // The view picker lists the height views; parallax_steps' legend counts the selected
+  // material's layers (re-select the bricks).
+  app.scrollTo("material0");
+  app.click("material0");
+  s = app.waitFor("bricks selected", [](const json& st) { return st["selected_material"] == 0; });
+  app.scrollTo("tab_rendering");  // the tab bar scrolls with the panel
+  app.click("tab_rendering");
+  app.click("view");
+  s = app.waitForItem("view_parallax_steps");
+  for (const char* view : {"view_height", "view_parallax_offset", "view_parallax_steps", "view_self_shadow"}) {
+    EXPECT_TRUE(s["items"].contains(view)) << view << " is not in the view picker";
+  }
+  app.click("view_parallax_steps");
+  s = app.waitFor("the parallax_steps legend", [&](const json& st) {
+    return st["view"] == "parallax_steps" && st.contains("parallax_steps_legend") && caughtUp(st);
+  });
+  EXPECT_EQ(s["parallax_steps_legend"]["material"], 0);
+  EXPECT_EQ(s["parallax_steps_legend"]["most"], 32) << "parallax_layers' max, no refinement for POM";
+  EXPECT_EQ(s["parallax_steps_legend"]["ticks"], json({"0", "8", "16", "24", "32"}));
+  EXPECT_TRUE(withinTargets(s)) << s.dump(1);
   EXPECT_FALSE(s.contains("panel_faults")) << s.dump(1);
   EXPECT_EQ(app.quit(), 0) << app.err();
 }

@@ -3,6 +3,10 @@
 // leaves every other use of the old one alone, refuses what a scene file refuses, and both
 // renderers, kept alive across the edit as the app keeps them, draw exactly what fresh ones
 // draw from the edited scene (no stale GL upload, no stale tiled copy on the CPU fast path).
+// And the height field's keys (issue 16): kept in the scene file's ranges, refused where it
+// refuses them, and every edit that outdates the horizon map says so, until a map built for
+// exactly the current keys is installed.
+#include "app/gui/debug_views.h"
 #include "app/gui/material_maps.h"
 #include "app/gui/scene_doc.h"
 #include "glrender/gl_renderer.h"
@@ -12,7 +16,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <fstream>
 #include <functional>
 #include <memory>
@@ -211,6 +217,230 @@ TEST(MaterialMaps, EditsRenderFreshOnTheCpuFastPath) {
 TEST(MaterialMaps, EditsRenderFreshOnGl) {
   // One context per process is plenty; a renderer per call is what "fresh" means here.
   expectEditsRenderFresh([] { return makeGlRenderer(); }, "gl");
+}
+
+// A bricks floor with a height map ("relief", drawn with `method` and self_shadow `shadow`) and
+// a cube whose material "plain" has no height map, seen at 45 degrees.
+fs::path writeHeightScene(const std::string& name, const std::string& method, const std::string& shadow) {
+  const fs::path dir = fs::path(TWINRASTER_TEST_OUT) / "material_maps" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  fs::copy_file(kTextures / "bricks_diffuse.png", dir / "diffuse.png");
+  fs::copy_file(kTextures / "bricks_height.png", dir / "height.png");
+  std::ofstream(dir / "scene.json") << R"({
+    "camera": {"position": [0, 1.6, 1.6], "target": [0, 0, 0]},
+    "lights": [{"position": [1.5, 1.0, 0.5]}],
+    "materials": {"relief": {"diffuse_map": "diffuse.png", "height_map": "height.png", "height_scale": 0.05,
+                             "surface_detail": ")" << method << R"(", "self_shadow": ")" << shadow << R"("},
+                  "plain": {"kd": [0.8, 0.8, 0.8]}},
+    "nodes": [{"name": "floor", "material": "relief", "mesh": {"type": "plane", "size": [2, 2], "uv_scale": 2}},
+              {"name": "box", "material": "plain", "mesh": {"type": "cube", "size": 0.3}, "translate": [0.7, 0.15, 0.7]}]
+  })";
+  return dir / "scene.json";
+}
+
+constexpr std::size_t kRelief = 0, kPlain = 1;
+
+TEST(HeightField, ClampKeepsTheSceneFilesRanges) {
+  const HeightFieldSettings before;  // layers [8, 32]
+  HeightFieldSettings s = before;
+  s.heightScale = 5.0f;
+  EXPECT_EQ(clampHeightField(s, before).heightScale, kMaxHeightScale) << "typed beyond the slider: at most 1";
+  s.heightScale = -0.1f;
+  EXPECT_EQ(clampHeightField(s, before).heightScale, 0.0f);
+  s.heightScale = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_EQ(clampHeightField(s, before).heightScale, before.heightScale);
+
+  s = before;
+  s.parallaxLayers = {40, 32};  // min dragged past max: max follows
+  EXPECT_EQ(clampHeightField(s, before).parallaxLayers, ivec2(40, 40));
+  s.parallaxLayers = {8, 4};  // max dragged below min: min follows
+  EXPECT_EQ(clampHeightField(s, before).parallaxLayers, ivec2(4, 4));
+  s.parallaxLayers = {0, 999};
+  EXPECT_EQ(clampHeightField(s, before).parallaxLayers, ivec2(1, kMaxParallaxLayers));
+
+  s = before;
+  s.reliefRefinementSteps = 99;
+  EXPECT_EQ(clampHeightField(s, before).reliefRefinementSteps, kMaxReliefRefinementSteps);
+  s.reliefRefinementSteps = -3;
+  EXPECT_EQ(clampHeightField(s, before).reliefRefinementSteps, 0);
+  for (const auto& [typed, kept] : {std::pair{7, 8}, {6, 8}, {5, 4}, {2, 4}, {0, 4}, {13, 12}, {99, 16}}) {
+    s.horizonDirections = typed;
+    EXPECT_EQ(clampHeightField(s, before).horizonDirections, kept) << typed;
+  }
+}
+
+TEST(HeightField, MethodsThatReadAHeightMapAreRefusedWithoutOne) {
+  SceneDoc doc = loadSceneDoc(writeHeightScene("refused", "bump_blinn", "none").string());
+  const std::uint64_t revision = doc.revision;
+  HeightFieldSettings s = heightFieldOf(doc.scene.materials[kPlain]);
+  for (const SurfaceDetail method : kAllSurfaceDetails) {
+    if (!readsHeightMap(method)) continue;
+    s.surfaceDetail = method;
+    EXPECT_THROW(setHeightField(doc, kPlain, s), InputError) << toString(method);
+  }
+  s = heightFieldOf(doc.scene.materials[kPlain]);
+  s.selfShadow = SelfShadow::HeightMarch;
+  EXPECT_THROW(setHeightField(doc, kPlain, s), InputError);
+  EXPECT_EQ(doc.revision, revision) << "a refused edit changes nothing";
+  EXPECT_EQ(doc.scene.materials[kPlain].surfaceDetail, SurfaceDetail::NormalMap);
+  EXPECT_THROW(setHeightField(doc, 9, s), InputError) << "no such material";
+
+  // The knobs themselves are harmless on normal_map (read by nothing, as in the scene file).
+  s = heightFieldOf(doc.scene.materials[kPlain]);
+  s.heightScale = 0.1f;
+  EXPECT_TRUE(setHeightField(doc, kPlain, s).changed);
+  EXPECT_GT(doc.revision, revision);
+
+  // A height map switched off in the UI still counts: the method waits for it to come back.
+  ASSERT_TRUE(setMapOn(doc, kRelief, MapSlot::Height, false));
+  s = heightFieldOf(doc.scene.materials[kRelief]);
+  s.surfaceDetail = SurfaceDetail::Relief;
+  EXPECT_NO_THROW(setHeightField(doc, kRelief, s));
+  EXPECT_EQ(doc.scene.materials[kRelief].surfaceDetail, SurfaceDetail::Relief);
+}
+
+// Builds what staleHorizonMap asks for, as the app's worker does, and installs it.
+void rebuildHorizonMap(SceneDoc& doc) {
+  const std::optional<HorizonRequest> request = staleHorizonMap(doc);
+  ASSERT_TRUE(request.has_value());
+  const std::uint64_t revision = doc.revision;
+  auto map = std::make_shared<const HorizonMap>(makeHorizonMap(*request->heightMap, request->heightScale, request->directions));
+  ASSERT_TRUE(installHorizonMap(doc, *request, map));
+  EXPECT_EQ(doc.scene.materials[request->material].horizonMap, map);
+  EXPECT_GT(doc.revision, revision) << "both renderers must draw the new map";
+  EXPECT_FALSE(staleHorizonMap(doc).has_value());
+}
+
+TEST(HeightField, EditsSayWhenTheHorizonMapMustBeBuiltAgain) {
+  SceneDoc doc = loadSceneDoc(writeHeightScene("horizon", "parallax_occlusion", "horizon_map").string());
+  const Material& relief = doc.scene.materials[kRelief];
+  ASSERT_TRUE(relief.horizonMap) << "the loader built it";
+  EXPECT_FALSE(horizonMapStale(doc, kRelief)) << "built from the keys the file gave";
+  const auto edit = [&](const std::function<void(HeightFieldSettings&)>& change) {
+    HeightFieldSettings s = heightFieldOf(relief);
+    change(s);
+    return setHeightField(doc, kRelief, s);
+  };
+
+  HeightFieldEdit e = edit([](HeightFieldSettings& s) { s.parallaxLayers = {4, 64}; });
+  EXPECT_TRUE(e.changed);
+  EXPECT_FALSE(e.horizonMapStale) << "the march's layers are not in the horizon map";
+  e = edit([](HeightFieldSettings& s) { s.surfaceDetail = SurfaceDetail::Relief; });
+  EXPECT_FALSE(e.horizonMapStale);
+  EXPECT_FALSE(edit([](HeightFieldSettings&) {}).changed) << "no change, no new frame";
+
+  e = edit([](HeightFieldSettings& s) { s.heightScale = 0.08f; });
+  EXPECT_TRUE(e.horizonMapStale) << "height_scale";
+  const std::optional<HorizonRequest> outdated = staleHorizonMap(doc);
+  ASSERT_TRUE(outdated.has_value());
+  EXPECT_EQ(outdated->material, kRelief);
+  EXPECT_EQ(outdated->heightScale, 0.08f);
+  // The user moves on while it builds: that result is dropped, the current keys are asked for.
+  e = edit([](HeightFieldSettings& s) { s.heightScale = 0.1f; });
+  const auto old = relief.horizonMap;
+  EXPECT_FALSE(installHorizonMap(
+      doc, *outdated,
+      std::make_shared<const HorizonMap>(makeHorizonMap(*outdated->heightMap, outdated->heightScale, outdated->directions))));
+  EXPECT_EQ(relief.horizonMap, old);
+  rebuildHorizonMap(doc);
+
+  e = edit([](HeightFieldSettings& s) { s.horizonDirections = 16; });
+  EXPECT_TRUE(e.horizonMapStale) << "horizon_directions";
+  rebuildHorizonMap(doc);
+  EXPECT_EQ(relief.horizonMap->directions, 16);
+
+  // A new height map (flip_v reads the file again into a new Texture).
+  TextureOptions flipped = loadedMap(doc, kRelief, MapSlot::Height)->options;
+  flipped.flipV = true;
+  setMapOptions(doc, kRelief, MapSlot::Height, flipped);
+  EXPECT_TRUE(horizonMapStale(doc, kRelief)) << "the height map";
+  rebuildHorizonMap(doc);
+
+  // Not drawn, so not wanted: no self-shadow, normal_map, or the height map off.
+  e = edit([](HeightFieldSettings& s) {
+    s.selfShadow = SelfShadow::HeightMarch;
+    s.heightScale = 0.02f;
+  });
+  EXPECT_FALSE(e.horizonMapStale);
+  e = edit([](HeightFieldSettings& s) { s.selfShadow = SelfShadow::HorizonMap; });
+  EXPECT_TRUE(e.horizonMapStale) << "back to horizon_map with another depth";
+  e = edit([](HeightFieldSettings& s) { s.surfaceDetail = SurfaceDetail::NormalMap; });
+  EXPECT_FALSE(horizonMapStale(doc, kRelief)) << "normal_map draws no self-shadow";
+  e = edit([](HeightFieldSettings& s) { s.surfaceDetail = SurfaceDetail::SteepParallax; });
+  ASSERT_TRUE(setMapOn(doc, kRelief, MapSlot::Height, false));
+  EXPECT_FALSE(horizonMapStale(doc, kRelief)) << "height map off";
+  ASSERT_TRUE(setMapOn(doc, kRelief, MapSlot::Height, true));
+  rebuildHorizonMap(doc);
+}
+
+// What the app does for one edit: apply it, rebuild the horizon map when it says so. The
+// renderers, kept alive as the app keeps them, draw what fresh ones draw, and the edit shows.
+void expectHeightEditsRenderFresh(const std::function<std::unique_ptr<Renderer>()>& makeRenderer, const char* what) {
+  SCOPED_TRACE(what);
+  SceneDoc doc = loadSceneDoc(writeHeightScene(std::string("height_render_") + what, "bump_blinn", "none").string());
+  const std::unique_ptr<Renderer> kept = makeRenderer();
+  RenderOutput before = kept->render(doc.scene, doc.scene.settings, kWidth, kHeight);
+  const auto edit = [&](const char* name, const std::function<void(HeightFieldSettings&)>& change) {
+    SCOPED_TRACE(name);
+    HeightFieldSettings s = heightFieldOf(doc.scene.materials[kRelief]);
+    change(s);
+    if (setHeightField(doc, kRelief, s).horizonMapStale) rebuildHorizonMap(doc);
+    const RenderOutput after = kept->render(doc.scene, doc.scene.settings, kWidth, kHeight);
+    const RenderOutput fresh = makeRenderer()->render(doc.scene, doc.scene.settings, kWidth, kHeight);
+    EXPECT_EQ(after.rgba, fresh.rgba) << "the kept renderer drew a stale copy";
+    EXPECT_NE(after.rgba, before.rgba) << "the edit changed nothing on screen";
+    before = after;
+  };
+  edit("parallax_occlusion", [](HeightFieldSettings& s) { s.surfaceDetail = SurfaceDetail::ParallaxOcclusion; });
+  edit("height_scale", [](HeightFieldSettings& s) { s.heightScale = 0.1f; });
+  edit("horizon_map", [](HeightFieldSettings& s) { s.selfShadow = SelfShadow::HorizonMap; });
+  edit("horizon_directions", [](HeightFieldSettings& s) { s.horizonDirections = 4; });
+  edit("height_scale with a horizon map", [](HeightFieldSettings& s) { s.heightScale = 0.03f; });
+  edit("relief", [](HeightFieldSettings& s) {
+    s.surfaceDetail = SurfaceDetail::Relief;
+    s.reliefRefinementSteps = 0;
+  });
+  edit("relief_refinement_steps", [](HeightFieldSettings& s) { s.reliefRefinementSteps = 8; });
+}
+
+TEST(HeightField, EditsRenderFreshOnTheCpuFastPath) {
+  expectHeightEditsRenderFresh([] { return makeCpuRenderer(); }, "cpu_fast");
+}
+
+TEST(HeightField, EditsRenderFreshOnGl) { expectHeightEditsRenderFresh([] { return makeGlRenderer(); }, "gl"); }
+
+// The legend's ramp is the view's: every pixel the parallax_steps view draws on the relief is,
+// to a level, parallaxStepsColour(k / parallaxStepsMost) for a whole number of steps k.
+TEST(HeightField, TheParallaxStepsLegendMatchesTheView) {
+  SceneDoc doc = loadSceneDoc(writeHeightScene("steps_legend", "relief", "none").string());
+  doc.scene.settings.view = View::ParallaxSteps;
+  const Material& relief = doc.scene.materials[kRelief];
+  const int most = parallaxStepsMost(relief);
+  EXPECT_EQ(most, relief.parallaxLayers.y + relief.reliefRefinementSteps);
+  for (const bool gl : {false, true}) {
+    SCOPED_TRACE(gl ? "gl" : "cpu");
+    const std::unique_ptr<Renderer> renderer = gl ? makeGlRenderer() : makeCpuRenderer();
+    const RenderOutput out = renderer->render(doc.scene, doc.scene.settings, kWidth, kHeight);
+    int checked = 0, worst = 0;
+    for (std::size_t i = 0; i < out.depth.size(); ++i) {
+      if (!drawnAt(out, i)) continue;  // the box has no height map: 0 steps, dark blue
+      int best = 255;
+      for (int k = 0; k <= most; ++k) {
+        const vec3 c = parallaxStepsColour(static_cast<float>(k) / static_cast<float>(most));
+        int far = 0;
+        for (int ch = 0; ch < 3; ++ch) {
+          far = std::max(far, std::abs(static_cast<int>(out.rgba[i * 4 + static_cast<std::size_t>(ch)]) -
+                                       static_cast<int>(std::lround(c[ch] * 255.0f))));
+        }
+        best = std::min(best, far);
+      }
+      worst = std::max(worst, best);
+      ++checked;
+    }
+    EXPECT_GT(checked, kWidth * kHeight / 4);
+    EXPECT_LE(worst, 1) << "a colour the legend does not have";
+  }
 }
 
 }  // namespace
