@@ -286,14 +286,6 @@ void GuiApp::drawMeshEditor(int meshIndex) {
     case MeshType::Obj:
       ImGui::TextDisabled("%s", desc.path.c_str());
       break;
-    case MeshType::Heightfield:
-      ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
-      edited |= ImGui::DragFloat2("Size", &desc.planeSize.x, kSizeDragSpeed, kMinDimension, kMaxCoordinate, "%.3f",
-                                  ImGuiSliderFlags_AlwaysClamp);
-      edited |= dimensionField("uv scale", desc.uvScale);
-      ImGui::TextDisabled("height map %s, height_scale %.3f (the true displaced surface, docs/parallax.md)",
-                          desc.heightMap ? desc.heightMap->path.c_str() : "(none)", static_cast<double>(desc.heightScale));
-      break;
     case MeshType::Triangles:
       ImGui::TextDisabled("%zu positions from the scene file", desc.positions.size());
       break;
