@@ -1,6 +1,7 @@
-// Stage 5, interpolation: pixelWeights (double barycentrics, depth, perspective weights) and
-// interpolateFragment (the varyings) at every pixel of a 64 x 64 patch inside the default
-// scene's floor, scalar, as the teaching path runs them.
+// Stage 5, interpolation: pixelWeights (double barycentrics, depth, perspective weights; the
+// pixel trace's), the varying planes' setup per triangle, and interpolateFragment (the
+// varyings from their planes) at every pixel of a 64 x 64 patch inside the default scene's
+// floor, scalar, as the teaching path runs them.
 #include "bench_stage_common.h"
 #include "softrender/clip.h"
 #include "softrender/interpolate.h"
@@ -18,7 +19,10 @@ constexpr int kPatchX = 600, kPatchY = 40;
 
 struct Floor {
   std::array<ClipVertex, 3> v;
+  std::array<WindowVertex, 3> window;
+  TriangleSetup setup;
   InterpolationSetup interpolation;
+  VaryingPlanes varyings;
 };
 
 // The floor's fan triangle holding the patch.
@@ -39,7 +43,10 @@ const Floor& floorTriangle() {
         TriangleSetup setup;
         if (setupTriangle(window, s.cull, s.frontFace, s.viewport, setup) != SetupResult::Ready) continue;
         if (!coversPixel(setup, kPatchX, kPatchY) || !coversPixel(setup, kPatchX + kPatch, kPatchY + kPatch)) continue;
+        f.window = window;
+        f.setup = setup;
         f.interpolation = makeInterpolationSetup(window, {f.v[0].uv, f.v[1].uv, f.v[2].uv}, setup);
+        f.varyings = makeVaryingPlanes(window, f.v[0], f.v[1], f.v[2], false, 0, setup);
         return f;
       }
     }
@@ -59,12 +66,20 @@ void BM_PixelWeights(benchmark::State& state) {
 }
 BENCHMARK(BM_PixelWeights);
 
+void BM_VaryingPlanes(benchmark::State& state) {
+  const Floor& f = floorTriangle();
+  for (auto _ : state) benchmark::DoNotOptimize(makeVaryingPlanes(f.window, f.v[0], f.v[1], f.v[2], false, 0, f.setup));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_VaryingPlanes);
+
 void BM_InterpolateFragment(benchmark::State& state) {
   const Floor& f = floorTriangle();
-  const PixelWeights weights = pixelWeights(f.interpolation, kPatchX, kPatchY);
   for (auto _ : state) {
-    for (int i = 0; i < kPatch * kPatch; ++i) {
-      benchmark::DoNotOptimize(interpolateFragment(f.v[0], f.v[1], f.v[2], weights, false, 0));
+    for (int y = kPatchY; y < kPatchY + kPatch; ++y) {
+      for (int x = kPatchX; x < kPatchX + kPatch; ++x) {
+        benchmark::DoNotOptimize(interpolateFragment(f.varyings, x, y, 0.5f));
+      }
     }
   }
   state.SetItemsProcessed(state.iterations() * kPatch * kPatch);

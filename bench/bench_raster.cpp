@@ -68,7 +68,6 @@ void BM_Visibility(benchmark::State& state) {
   const FastKernels kernels = fastKernelsFor(isas[static_cast<std::size_t>(state.range(0))]);
   state.SetLabel(std::string(toString(kernels.isa)));
   Framebuffer fb = makeFramebuffer(benchstage::kWidth, benchstage::kHeight, vec4(0.0f, 0.0f, 0.0f, 1.0f));
-  const std::array<vec2, 3> kCornerUvs{vec2(0.0f, 0.0f), vec2(1.0f, 0.0f), vec2(0.0f, 1.0f)};  // any: same cost
   std::vector<std::uint32_t> slots(static_cast<std::size_t>(benchstage::kWidth) * benchstage::kHeight, kNoSlot);
   std::int64_t passed = 0;
   for (auto _ : state) {
@@ -77,10 +76,10 @@ void BM_Visibility(benchmark::State& state) {
     state.ResumeTiming();
     std::uint32_t slot = 0;
     for (const SetUpTriangle& t : acceptedTriangles()) {
-      InterpolationSetup interpolation;
+      AttributePlaneT<float> depth;
       bool covered = false;
-      passed += static_cast<std::int64_t>(kernels.visibility(t.setup, t.window, kCornerUvs, slot++, 0,
-                                                           benchstage::kHeight, fb, slots.data(), interpolation, covered));
+      passed += static_cast<std::int64_t>(
+          kernels.visibility(t.setup, t.window, slot++, 0, benchstage::kHeight, fb, slots.data(), depth, covered));
     }
   }
   state.SetItemsProcessed(passed);

@@ -4,6 +4,8 @@
 // fast path's version of it (phongPow over each target's vectors) per value.
 #include "bench_stage_common.h"
 #include "softrender/fast_kernels.h"
+#include "softrender/interpolate.h"
+#include "softrender/setup.h"
 #include "softrender/phong_pow.h"
 #include "softrender/shade.h"
 #include "softrender/texture_sample.h"
@@ -19,19 +21,30 @@ using namespace twr;
 
 constexpr int kSamples = 4096;  // fragments or values per iteration
 
-// Fragments on the sphere: its vertices' varyings blended with fixed random weights.
+// Fragments on the sphere: three random vertices' varyings laid on a 64-pixel right triangle
+// (their own 1/w), read at a random pixel inside it.
 std::vector<Fragment> sphereFragments() {
+  constexpr float kSide = 64.0f;  // pixels
   const benchstage::Frame& frame = benchstage::defaultFrame();
   const std::vector<ClipVertex>& v = frame.vertices[1];
   std::mt19937 rng(5);
   std::uniform_int_distribution<std::size_t> pick(0, v.size() - 1);
-  std::uniform_real_distribution<float> weight(0.0f, 1.0f);
+  std::uniform_int_distribution<int> pixel(0, static_cast<int>(kSide) / 2 - 1);
   std::vector<Fragment> fragments;
-  for (int i = 0; i < kSamples; ++i) {
-    const float a = weight(rng), b = weight(rng) * (1.0f - a);
-    PixelWeights w;
-    w.perspective = {a, b, 1.0f - a - b};
-    fragments.push_back(interpolateFragment(v[pick(rng)], v[pick(rng)], v[pick(rng)], w, false, 0));
+  while (fragments.size() < static_cast<std::size_t>(kSamples)) {
+    const ClipVertex &a = v[pick(rng)], &b = v[pick(rng)], &c = v[pick(rng)];
+    const auto corner = [](float x, float y, const ClipVertex& cv) {
+      WindowVertex w;
+      w.x = x;
+      w.y = y;
+      w.invW = 1.0f / cv.posClip.w;
+      return w;
+    };
+    const std::array<WindowVertex, 3> window{corner(0.5f, 0.5f, a), corner(kSide + 0.5f, 0.5f, b),
+                                             corner(0.5f, kSide + 0.5f, c)};
+    TriangleSetup setup;
+    if (setupTriangle(window, CullMode::None, FrontFace::Ccw, Viewport{128, 128}, setup) != SetupResult::Ready) continue;
+    fragments.push_back(interpolateFragment(makeVaryingPlanes(window, a, b, c, false, 0, setup), pixel(rng), pixel(rng), 0.5f));
   }
   return fragments;
 }

@@ -279,6 +279,7 @@ void rasterizeFanTriangle(const std::array<WindowVertex, 3>& window, const ClipV
   require(setup.x0 >= 0 && setup.x1 < viewport.width && setup.y0 >= 0 && setup.y1 < viewport.height,
           "bounding box outside the viewport");
   const InterpolationSetup interpolation = makeInterpolationSetup(window, {v0.uv, v1.uv, v2.uv}, setup);
+  const VaryingPlanes varyings = makeVaryingPlanes(window, v0, v1, v2, false, 0, setup);
   rasterizeTriangle(setup, 0, viewport.height, [&](int py, Span span) {
     const std::string where = "row " + std::to_string(py);
     require(py >= setup.y0 && py <= setup.y1, where + ": outside the bounding box");
@@ -290,7 +291,7 @@ void rasterizeFanTriangle(const std::array<WindowVertex, 3>& window, const ClipV
     for (int px : {span.xBegin, span.xEnd - 1}) {
       const PixelWeights weights = pixelWeights(interpolation, px, py);
       checkWeights(weights, where + ", pixel " + std::to_string(px));
-      const Fragment fragment = interpolateFragment(v0, v1, v2, weights, false, 0);
+      const Fragment fragment = interpolateFragment(varyings, px, py, weights.depth);
       require(isFinite(fragment.uv) && isFinite(fragment.nWorld), where + ": non-finite varying");
     }
   });

@@ -66,22 +66,24 @@ void drawClippedTriangle(const LoopItemT<T>& s, const ClipVertexT<T>& v0, const 
   }
   if (band.countsTriangles) ++stats.trianglesProduced;
   if (setup.y1 < band.rowBegin || setup.y0 >= band.rowEnd) return;
-  const InterpolationSetupT<T> interpolation = makeInterpolationSetup(window, {v0.uv, v1.uv, v2.uv}, setup);
-  const int tangentLights = s.tangentLighting ? s.shade.lightCount : 0;
+  const AttributePlaneT<T> depthPlane = makeDepthPlane(window, setup);
+  const VaryingPlanesT<T> varyings =
+      makeVaryingPlanes(window, v0, v1, v2, s.tangentLighting, s.shade.lightCount, setup);
+  const UvPlanesT<T> uv{varyings.overW[kVaryingUv], varyings.overW[kVaryingUv + 1], varyings.oneOverW};
   rasterizeTriangle(setup, band.rowBegin, band.rowEnd, [&](int py, Span span) {
     for (int px = span.xBegin; px < span.xEnd; ++px) {
-      const PixelWeightsT<T> weights = pixelWeights(interpolation, px, py);
-      if (!(weights.depth < target.storedDepth(px, py))) continue;  // GL_LESS, before shading
-      FragmentT<T> fragment = interpolateFragment(v0, v1, v2, weights, s.tangentLighting, tangentLights);
+      const T depth = storedDepthLanes<T>(planeAtLanes<T>(depthPlane, static_cast<T>(px), static_cast<T>(py)));
+      if (!(depth < target.storedDepth(px, py))) continue;  // GL_LESS, before shading
+      FragmentT<T> fragment = interpolateFragment(varyings, px, py, depth);
       if (s.shade.needsQuadDifferences()) {
         // The pixel's 2x2 quad (even column and row): its uv differences give the LOD.
-        setQuadUvDifferencesLanes<T>(interpolation, static_cast<T>(px & ~1), static_cast<T>(py & ~1), fragment);
+        setQuadUvDifferencesLanes<T>(uv, static_cast<T>(px & ~1), static_cast<T>(py & ~1), fragment);
         if (s.shade.heightMap) {
-          setFineUvDifferencesLanes<T>(interpolation, static_cast<T>(px & ~1), static_cast<T>(py & ~1),
+          setFineUvDifferencesLanes<T>(uv, static_cast<T>(px & ~1), static_cast<T>(py & ~1),
                                        static_cast<T>(px), static_cast<T>(py), fragment);
         }
       }
-      target.write(px, py, shadeFragment<Features>(fragment, s.shade, nullptr), weights.depth, triangleId);
+      target.write(px, py, shadeFragment<Features>(fragment, s.shade, nullptr), depth, triangleId);
       ++stats.pixelsShaded;
     }
   });

@@ -99,33 +99,17 @@ HWY_INLINE LaneMask lanesOf(std::uint64_t bits) {
   for (std::size_t l = 0; l < laneCount(); ++l) flags[l] = static_cast<std::int32_t>((bits >> l) & 1u);
   return {hn::RebindMask(DF(), hn::Ne(hn::Load(DI(), flags), hn::Zero(DI())))};
 }
-// x, x + 1, ... as float lanes (pixel indices are exact in float), and as double lanes.
+// x, x + 1, ... as float lanes (pixel indices are exact in float).
 HWY_INLINE LaneF pixelColumnsF(int x) { return LaneF(hn::Iota(DF(), static_cast<float>(x))); }
-HWY_INLINE LaneW pixelColumns(int x) { return toWide(pixelColumnsF(x)); }
 
 HWY_INLINE AttributePlaneL<LaneF> broadcastPlane(const AttributePlaneT<float>& p) {
   return {LaneF(p.atOrigin), LaneF(p.dx), LaneF(p.dy)};
 }
 
-template <typename Setup>
-HWY_INLINE InterpolationL<LaneF> broadcastInterpolation(const Setup& t) {
-  InterpolationL<LaneF> s;
-  for (std::size_t i = 0; i < 3; ++i) {
-    s.atOrigin[i] = LaneW(t.atOrigin[i]);
-    s.dx[i] = LaneW(t.dx[i]);
-    s.dy[i] = LaneW(t.dy[i]);
-    s.zWindow[i] = LaneF(t.zWindow[i]);
-    s.invW[i] = LaneF(t.invW[i]);
-  }
-  s.uv = {broadcastPlane(t.uv.uOverW), broadcastPlane(t.uv.vOverW), broadcastPlane(t.uv.oneOverW)};
-  s.depth = broadcastPlane(t.depth);
-  return s;
-}
-
 // ---- pass 1: visibility ----
-std::uint64_t Visibility(const TriangleSetup& setup, const std::array<WindowVertex, 3>& window,
-                         const std::array<vec2, 3>& uv, std::uint32_t slot, int rowBegin, int rowEnd, Framebuffer& fb, std::uint32_t* slots,
-                         InterpolationSetup& interpolation, bool& covered) {
+std::uint64_t Visibility(const TriangleSetup& setup, const std::array<WindowVertex, 3>& window, std::uint32_t slot,
+                         int rowBegin, int rowEnd, Framebuffer& fb, std::uint32_t* slots, AttributePlaneT<float>& depthPlane,
+                         bool& covered) {
   const int yFirst = std::max(setup.y0, rowBegin);
   const int yLast = std::min(setup.y1, rowEnd - 1);
   if (yFirst > yLast || setup.x0 > setup.x1) return 0;
@@ -133,23 +117,23 @@ std::uint64_t Visibility(const TriangleSetup& setup, const std::array<WindowVert
   const DU du;
   const std::size_t lanes = laneCount();
   const std::size_t width = static_cast<std::size_t>(fb.width);
-  InterpolationL<LaneF> planes{};  // set on the first covered row (zeroed: GCC 12 for aarch64 cannot see that)
+  AttributePlaneL<LaneF> plane{};  // set on the first covered row (zeroed: GCC 12 for aarch64 cannot see that)
   const auto slotLanes = hn::Set(du, slot);
   std::uint64_t passed = 0;
   for (int py = yFirst; py <= yLast; ++py) {
     const Span span = coveredSpan(setup, py);
     if (span.xBegin >= span.xEnd) continue;
     if (!covered) {
-      interpolation = makeInterpolationSetup<float>(window, uv, setup);
+      depthPlane = makeDepthPlane<float>(window, setup);
       covered = true;
-      planes = broadcastInterpolation(interpolation);
+      plane = broadcastPlane(depthPlane);
     }
-    const LaneW pyW(static_cast<double>(py));
+    const LaneF pyF(static_cast<float>(py));
     float* depthRow = &fb.depth[fb.index(0, py)];
     std::uint32_t* slotRow = slots + static_cast<std::size_t>(py - rowBegin) * width;
     for (int x = span.xBegin; x < span.xEnd; x += static_cast<int>(lanes)) {
       const std::size_t count = std::min(lanes, static_cast<std::size_t>(span.xEnd - x));
-      const LaneF depth = windowDepthLanes<LaneF>(planes, pixelColumns(x), pyW);
+      const LaneF depth = storedDepthLanes<LaneF>(planeAtLanes<LaneF>(plane, pixelColumnsF(x), pyF));
       // GL_LESS against the stored depth; a vector past the row's end goes through a buffer.
       HWY_ALIGN float depthBuffer[kMaxLanes];
       HWY_ALIGN std::uint32_t slotBuffer[kMaxLanes];
@@ -183,38 +167,14 @@ struct Segment {
   int x, py;
 };
 
-// A vertex's varyings as lanes: `at(k)` gives varying float k of each lane's vertex.
-template <typename At>
-HWY_INLINE VertexL<LaneF> vertexLanes(const At& at, bool tangentLighting, int lightCount) {
-  const auto vec3At = [&](int k) HWY_ATTR { return Vec3L<LaneF>(at(k), at(k + 1), at(k + 2)); };
-  VertexL<LaneF> v;
-  v.posWorld = vec3At(kVaryingPosWorld);
-  v.nWorld = vec3At(kVaryingNormal);
-  v.tWorld = vec3At(kVaryingTangent);
-  v.bWorld = vec3At(kVaryingBitangent);
-  v.uv = Vec2L<LaneF>(at(kVaryingUv), at(kVaryingUv + 1));
-  if (tangentLighting) {
-    v.eyeDirTangent = vec3At(kVaryingEyeDirTangent);
-    for (int i = 0; i < lightCount; ++i) {
-      v.lightDirTangent[static_cast<std::size_t>(i)] = vec3At(kVaryingLightDirTangent + 3 * i);
-    }
-  }
-  return v;
+// Every lane on one triangle: its planes broadcast.
+HWY_INLINE VaryingPlanesL<LaneF> broadcastVaryingPlanes(const VaryingPlanesT<float>& t) {
+  VaryingPlanesL<LaneF> p;
+  p.count = t.count;
+  p.oneOverW = broadcastPlane(t.oneOverW);
+  for (int k = 0; k < t.count; ++k) p.overW[static_cast<std::size_t>(k)] = broadcastPlane(t.overW[static_cast<std::size_t>(k)]);
+  return p;
 }
-
-// Every lane on one triangle: its data broadcast.
-struct BroadcastVarying {
-  const float* varyings;
-  HWY_INLINE LaneF operator()(int k) const { return LaneF(varyings[k]); }
-};
-// Lanes on several triangles: varyings transposed into columns, column k holding lane l's
-// value at k * kMaxLanes + l.
-struct ColumnVarying {
-  const float* columns;
-  HWY_INLINE LaneF operator()(int k) const {
-    return LaneF(hn::Load(DF(), columns + static_cast<std::size_t>(k) * kMaxLanes));
-  }
-};
 
 template <typename Features>
 void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps, std::uint32_t* rgbaOut) {
@@ -235,80 +195,49 @@ void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps,
     if (((s.bits >> l) & 1u) != 0 && s.slots[l] != firstSlot) oneTriangle = false;
   }
 
-  InterpolationL<LaneF> planes;
-  std::array<VertexL<LaneF>, 3> vertices;
+  VaryingPlanesL<LaneF> planes;
+  AttributePlaneL<LaneF> depthPlane;
+  const int count = varyingCount(tangent, lightCount);
   if (oneTriangle) {
     const BinTriangle& t = triangles[firstSlot];
-    planes = broadcastInterpolation(t);
-    for (std::size_t c = 0; c < 3; ++c) vertices[c] = vertexLanes(BroadcastVarying{t.varyings[c]}, tangent, lightCount);
+    planes = broadcastVaryingPlanes(t.varyings);
+    depthPlane = broadcastPlane(t.depth);
   } else {
-    HWY_ALIGN double planeColumns[5][3][kMaxLanes];
-    // Zeroed: GCC 12 cannot see that the lane loop fills every column it loads.
-    HWY_ALIGN float uvColumns[4][3][kMaxLanes] = {};  // [u/w, v/w, 1/w, depth][atOrigin, dx, dy][lane]
-    HWY_ALIGN float vertexColumns[3][kMaxVaryings * kMaxLanes];
-    const int floats = varyingCount(tangent, lightCount);
+    // Lanes on several triangles: each plane transposed into columns, [plane][atOrigin, dx,
+    // dy][lane]; plane 0 is the depth, 1 is 1/w, 2 + k varying k.
+    constexpr int kDepthColumn = 0, kOneOverWColumn = 1, kFirstVaryingColumn = 2;
+    HWY_ALIGN float columns[kFirstVaryingColumn + kMaxVaryings][3][kMaxLanes];
     for (std::size_t l = 0; l < lanes; ++l) {
       const BinTriangle& t = triangles[((s.bits >> l) & 1u) != 0 ? s.slots[l] : firstSlot];
-      for (std::size_t i = 0; i < 3; ++i) {
-        planeColumns[0][i][l] = t.atOrigin[i];
-        planeColumns[1][i][l] = t.dx[i];
-        planeColumns[2][i][l] = t.dy[i];
-        planeColumns[3][i][l] = t.zWindow[i];
-        planeColumns[4][i][l] = t.invW[i];
-        const AttributePlaneT<float>& uvPlane = i == 0 ? t.uv.uOverW : i == 1 ? t.uv.vOverW : t.uv.oneOverW;
-        uvColumns[i][0][l] = uvPlane.atOrigin;
-        uvColumns[i][1][l] = uvPlane.dx;
-        uvColumns[i][2][l] = uvPlane.dy;
-        if (i == 0) {
-          uvColumns[3][0][l] = t.depth.atOrigin;
-          uvColumns[3][1][l] = t.depth.dx;
-          uvColumns[3][2][l] = t.depth.dy;
-        }
-        for (int k = 0; k < floats; ++k) {
-          vertexColumns[i][static_cast<std::size_t>(k) * kMaxLanes + l] = t.varyings[i][k];
-        }
-      }
-    }
-    const DW dw;
-    const std::size_t wide = hn::Lanes(dw);
-    for (std::size_t i = 0; i < 3; ++i) {
-      const auto wideColumn = [&](int which) HWY_ATTR {
-#if HWY_TARGET == HWY_SCALAR
-        return LaneW(hn::Load(dw, planeColumns[which][i]));
-#else
-        return LaneW(hn::Load(dw, planeColumns[which][i]), hn::Load(dw, planeColumns[which][i] + wide));
-#endif
+      const auto put = [&](int column, const AttributePlaneT<float>& p) {
+        columns[column][0][l] = p.atOrigin;
+        columns[column][1][l] = p.dx;
+        columns[column][2][l] = p.dy;
       };
-      planes.atOrigin[i] = wideColumn(0);
-      planes.dx[i] = wideColumn(1);
-      planes.dy[i] = wideColumn(2);
-      // zWindow and invW are floats: through double and back, exactly.
-      planes.zWindow[i] = toNarrowLanes(wideColumn(3));
-      planes.invW[i] = toNarrowLanes(wideColumn(4));
-      vertices[i] = vertexLanes(ColumnVarying{vertexColumns[i]}, tangent, lightCount);
+      put(kDepthColumn, t.depth);
+      put(kOneOverWColumn, t.varyings.oneOverW);
+      for (int k = 0; k < count; ++k) put(kFirstVaryingColumn + k, t.varyings.overW[static_cast<std::size_t>(k)]);
     }
-    const auto uvPlane = [&](std::size_t which) HWY_ATTR {
-      return AttributePlaneL<LaneF>{LaneF(hn::Load(df, uvColumns[which][0])), LaneF(hn::Load(df, uvColumns[which][1])),
-                                    LaneF(hn::Load(df, uvColumns[which][2]))};
+    const auto planeOfColumn = [&](int column) HWY_ATTR {
+      return AttributePlaneL<LaneF>{LaneF(hn::Load(df, columns[column][0])), LaneF(hn::Load(df, columns[column][1])),
+                                    LaneF(hn::Load(df, columns[column][2]))};
     };
-    planes.uv = {uvPlane(0), uvPlane(1), uvPlane(2)};
-    planes.depth = uvPlane(3);
-    (void)wide;
+    depthPlane = planeOfColumn(kDepthColumn);
+    planes.oneOverW = planeOfColumn(kOneOverWColumn);
+    planes.count = count;
+    for (int k = 0; k < count; ++k) planes.overW[static_cast<std::size_t>(k)] = planeOfColumn(kFirstVaryingColumn + k);
   }
 
-  const PixelWeightsL<LaneF> weights =
-      pixelWeightsLanes<LaneF>(planes, pixelColumns(s.x), LaneW(static_cast<double>(s.py)));
-  FragmentL<LaneF> fragment =
-      interpolateFragmentLanes<LaneF>(vertices[0], vertices[1], vertices[2], weights, tangent, tangent ? lightCount : 0);
+  const LaneF px = pixelColumnsF(s.x), py(static_cast<float>(s.py));
+  const LaneF depth = storedDepthLanes<LaneF>(planeAtLanes<LaneF>(depthPlane, px, py));
+  FragmentL<LaneF> fragment = interpolateFragmentLanes<LaneF>(planes, px, py, depth);
   if (item.shade.needsQuadDifferences()) {
     // Each lane's 2x2 quad: the even column and row at or below it (exact in float).
-    const LaneF quadColumns = floorOf(pixelColumnsF(s.x) * LaneF(0.5f)) * LaneF(2.0f);
+    const UvPlanesL<LaneF> uv{planes.overW[kVaryingUv], planes.overW[kVaryingUv + 1], planes.oneOverW};
+    const LaneF quadColumns = floorOf(px * LaneF(0.5f)) * LaneF(2.0f);
     const LaneF quadRow(static_cast<float>(s.py - (s.py & 1)));
-    setQuadUvDifferencesLanes<LaneF>(planes, quadColumns, quadRow, fragment);
-    if (item.shade.heightMap) {
-      setFineUvDifferencesLanes<LaneF>(planes, quadColumns, quadRow, pixelColumnsF(s.x),
-                                       LaneF(static_cast<float>(s.py)), fragment);
-    }
+    setQuadUvDifferencesLanes<LaneF>(uv, quadColumns, quadRow, fragment);
+    if (item.shade.heightMap) setFineUvDifferencesLanes<LaneF>(uv, quadColumns, quadRow, px, py, fragment);
   }
   const Vec4L<LaneF> colour =
       shadeFragmentLanes<Features, LaneF>(fragment, item.shade, maps, static_cast<std::nullptr_t*>(nullptr));

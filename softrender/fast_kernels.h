@@ -29,32 +29,17 @@
 
 namespace twr {
 
-// A vertex's varyings as the fast path stores them: floats in this order (offsets in floats).
-inline constexpr int kVaryingPosWorld = 0;
-inline constexpr int kVaryingNormal = 3;
-inline constexpr int kVaryingTangent = 6;
-inline constexpr int kVaryingBitangent = 9;
-inline constexpr int kVaryingUv = 12;
-inline constexpr int kVaryingEyeDirTangent = 14;    // tangent lighting space only
-inline constexpr int kVaryingLightDirTangent = 17;  // light i at 17 + 3 i, tangent lighting only
-inline constexpr int kMaxVaryings = kVaryingLightDirTangent + 3 * kMaxLights;  // 41
-// Floats per vertex: 14 in world lighting space, 17 + 3 lightCount in tangent space.
-inline int varyingCount(bool tangentLighting, int lightCount) {
-  return tangentLighting ? kVaryingLightDirTangent + 3 * lightCount : kVaryingEyeDirTangent;
-}
+// A vertex's varyings are stored as floats in interpolate.h's layout (kVaryingPosWorld ...).
 
 // No triangle in a bin's slot buffer.
 inline constexpr std::uint32_t kNoSlot = 0xFFFFFFFFu;
 
-// One triangle of a bin as the shading pass reads it.
+// One triangle of a bin as the shading pass reads it: its planes, as llvmpipe interpolates.
 struct BinTriangle {
-  std::array<double, 3> atOrigin{}, dx{}, dy{};  // InterpolationSetup's barycentric planes
-  std::array<float, 3> zWindow{}, invW{};
-  UvPlanesT<float> uv;                           // ... its uv planes
-  AttributePlaneT<float> depth;                  // ... and its window depth plane
+  VaryingPlanesT<float> varyings;  // every varying's a/w plane and the 1/w plane
+  AttributePlaneT<float> depth;    // the window depth plane
   std::uint32_t triangleId = 0;
-  std::uint32_t item = 0;                     // index into the frame's ItemState list
-  std::array<const float*, 3> varyings{};     // each vertex's varyings, submission order
+  std::uint32_t item = 0;  // index into the frame's ItemState list
 };
 
 // A texture as the kernels read it: the RGBA8 texels of each 4 x 4 block of texels stored
@@ -93,11 +78,11 @@ struct FastKernels {
 
   // Visibility pass for one triangle over rows [rowBegin, rowEnd) (exclusive end). `slots`
   // holds the bin's rows: pixel (px, py) at (py - rowBegin) * fb.width + px. On the first
-  // covered pixel it computes `interpolation` = makeInterpolationSetup(window, uv, setup) and
-  // sets `covered`; returns how many pixels passed the depth test.
+  // covered pixel it computes `depth` = makeDepthPlane(window, setup) and sets `covered`;
+  // returns how many pixels passed the depth test.
   std::uint64_t (*visibility)(const TriangleSetup& setup, const std::array<WindowVertex, 3>& window,
-                              const std::array<vec2, 3>& uv, std::uint32_t slot, int rowBegin, int rowEnd, Framebuffer& fb, std::uint32_t* slots,
-                              InterpolationSetup& interpolation, bool& covered) = nullptr;
+                              std::uint32_t slot, int rowBegin, int rowEnd, Framebuffer& fb, std::uint32_t* slots,
+                              AttributePlaneT<float>& depth, bool& covered) = nullptr;
 
   // Shading pass over rows [rowBegin, rowEnd), writing colour and triangle id of every pixel:
   // for a pixel with a slot, triangles[slot] shaded with items[triangles[slot].item] and that

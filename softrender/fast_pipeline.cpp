@@ -21,25 +21,7 @@ bool finitePosition(const vec4& p) {
   return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
 }
 
-// The fragment stage's varyings of `v` in fast_kernels.h's layout.
-void storeVaryings(const ClipVertex& v, bool tangentLighting, int lightCount, float* out) {
-  const auto put = [&](int at, vec3 value) {
-    out[at] = value.x;
-    out[at + 1] = value.y;
-    out[at + 2] = value.z;
-  };
-  put(kVaryingPosWorld, v.posWorld);
-  put(kVaryingNormal, v.nWorld);
-  put(kVaryingTangent, v.tWorld);
-  put(kVaryingBitangent, v.bWorld);
-  out[kVaryingUv] = v.uv.x;
-  out[kVaryingUv + 1] = v.uv.y;
-  if (!tangentLighting) return;
-  put(kVaryingEyeDirTangent, v.eyeDirTangent);
-  for (int i = 0; i < lightCount; ++i) put(kVaryingLightDirTangent + 3 * i, v.lightDirTangent[static_cast<std::size_t>(i)]);
-}
-
-// The inverse of storeVaryings: the ClipVertex's varyings (everything else left as the vertex
+// The inverse of storeVaryings (interpolate.h): the ClipVertex's varyings (everything else left as the vertex
 // stage leaves unused fields, zero).
 void loadVaryings(const float* in, bool tangentLighting, int lightCount, ClipVertex& v) {
   const auto get = [&](int at) { return vec3(in[at], in[at + 1], in[at + 2]); };
@@ -281,25 +263,16 @@ std::uint64_t FastPipeline::drawBin(const std::vector<ItemState>& items, int bin
       setupSnappedTriangle({r.v[0]->xFixed, r.v[1]->xFixed, r.v[2]->xFixed}, {r.v[0]->yFixed, r.v[1]->yFixed, r.v[2]->yFixed},
                            s.cull, s.frontFace, s.viewport, setup);
       const std::uint32_t slot = static_cast<std::uint32_t>(scratch.triangles.size());
-      InterpolationSetup interpolation;
+      AttributePlaneT<float> depth;
       bool covered = false;
-      const auto uvOf = [&](std::size_t c) {
-        return vec2(r.varyings[c][kVaryingUv], r.varyings[c][kVaryingUv + 1]);
-      };
-      passed += kernels_.visibility(setup, {r.v[0]->window, r.v[1]->window, r.v[2]->window}, {uvOf(0), uvOf(1), uvOf(2)},
-                                    slot, rowBegin, rowEnd, fb, scratch.slots.data(), interpolation, covered);
+      const std::array<WindowVertex, 3> window{r.v[0]->window, r.v[1]->window, r.v[2]->window};
+      passed += kernels_.visibility(setup, window, slot, rowBegin, rowEnd, fb, scratch.slots.data(), depth, covered);
       if (!covered) continue;  // no pixel holds this slot
       BinTriangle& t = scratch.triangles.emplace_back();
-      t.atOrigin = interpolation.atOrigin;
-      t.dx = interpolation.dx;
-      t.dy = interpolation.dy;
-      t.zWindow = interpolation.zWindow;
-      t.invW = interpolation.invW;
-      t.uv = interpolation.uv;
-      t.depth = interpolation.depth;
+      t.varyings = makeVaryingPlanes<float>(window, r.varyings, varyingCount(s.tangentLighting, s.shade.lightCount), setup);
+      t.depth = depth;
       t.triangleId = r.triangleId;
       t.item = r.item;
-      t.varyings = r.varyings;
     }
   }
   kernels_.shadeBin(scratch.triangles, items, maps_, scratch.slots.data(), rowBegin, rowEnd, background, fb);

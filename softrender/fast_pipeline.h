@@ -3,7 +3,7 @@
 // (tests/softrender/test_fast_path.cpp renders every suite scene both ways).
 //
 //   1. vertex stage, in parallel chunks: runVertexStage once per mesh vertex, kept compactly
-//      (the varyings the fragment stage reads, fast_kernels.h's layout) beside what every
+//      (the varyings the fragment stage reads, interpolate.h's layout) beside what every
 //      triangle would recompute: the window position (setup's fused multiply-add), its 24.8
 //      snap, and the clipper's outcode (or the non-finite bit);
 //   2. front end, one contiguous range of triangles per thread: a triangle with no outcode bit

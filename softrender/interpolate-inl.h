@@ -1,7 +1,7 @@
-// Stage 5, interpolation, over any lane type (interpolate.h has the formulas): barycentrics
-// in double, window depth and uv from float planes as llvmpipe, perspective weights rounded once to the lane type, then every
-// varying as a0 p0 + a1 p1 + a2 p2 summed from the left. Shared source, included plainly and
-// per Highway target (softrender/lanes.h).
+// Stage 5, interpolation, over any lane type (interpolate.h has the formulas): the window
+// depth and every varying from float planes as llvmpipe evaluates them; barycentrics and
+// perspective weights in double for the pixel trace. Shared source, included plainly and per
+// Highway target (softrender/lanes.h).
 
 #if defined(TWR_LANES_HIGHWAY)
 #if defined(TWR_INTERPOLATE_INL_TARGET) == defined(HWY_TARGET_TOGGLE)
@@ -46,11 +46,10 @@ struct InterpolationL {
   AttributePlaneL<L> depth;
 };
 template <typename L>
-struct VertexL {
-  Vec3L<L> posWorld, nWorld, tWorld, bWorld;
-  Vec2L<L> uv;
-  std::array<Vec3L<L>, kMaxLights> lightDirTangent;  // tangent lighting space only
-  Vec3L<L> eyeDirTangent;                            // tangent lighting space only
+struct VaryingPlanesL {
+  AttributePlaneL<L> oneOverW;
+  std::array<AttributePlaneL<L>, kMaxVaryings> overW;  // the first `count` set
+  int count;
 };
 template <typename L>
 struct PixelWeightsL {
@@ -77,7 +76,7 @@ using UvPlanesL = UvPlanesT<L>;
 template <typename L>
 using InterpolationL = InterpolationSetupT<L>;
 template <typename L>
-using VertexL = ClipVertexT<L>;
+using VaryingPlanesL = VaryingPlanesT<L>;
 template <typename L>
 using PixelWeightsL = PixelWeightsT<L>;
 template <typename L>
@@ -155,32 +154,48 @@ TWR_LANE_INLINE PixelWeightsL<L> pixelWeightsLanes(const InterpolationL<L>& s, c
   return w;
 }
 
-// Perspective-correct varyings. Tangent-space light and eye directions only in tangent
-// lighting space, for the first `tangentLightCount` lights (zero otherwise).
+// Varying k at a pixel: its a/w plane times the reciprocal of the pixel's 1/w.
 template <typename L>
-TWR_LANE_INLINE FragmentL<L> interpolateFragmentLanes(const VertexL<L>& v0, const VertexL<L>& v1, const VertexL<L>& v2,
-                                             const PixelWeightsL<L>& weights, bool tangentLighting,
-                                             int tangentLightCount) {
+TWR_LANE_INLINE L varyingAtLanes(const VaryingPlanesL<L>& p, int k, const L& px, const L& py, const L& w) {
+  return planeAtLanes<L>(p.overW[static_cast<std::size_t>(k)], px, py) * w;
+}
+template <typename L>
+TWR_LANE_INLINE Vec3L<L> varying3AtLanes(const VaryingPlanesL<L>& p, int k, const L& px, const L& py, const L& w) {
+  return Vec3L<L>(varyingAtLanes<L>(p, k, px, py, w), varyingAtLanes<L>(p, k + 1, px, py, w),
+                  varyingAtLanes<L>(p, k + 2, px, py, w));
+}
+
+// Every varying at pixel (px, py) from its plane, as llvmpipe's fragment shader reads it; the
+// uv as uvAtPixelLanes (a non-finite coordinate read as 0). Tangent-space light and eye
+// directions where the planes hold them (tangent lighting space), zero otherwise.
+template <typename L>
+TWR_LANE_INLINE FragmentL<L> interpolateFragmentLanes(const VaryingPlanesL<L>& p, const L& px, const L& py,
+                                                      const L& depth) {
   using S = ScalarOf<L>;
-  const L p0 = weights.perspective[0], p1 = weights.perspective[1], p2 = weights.perspective[2];
+  const L zero(S(0));
+  // A non-finite w (1/w rounding to 0 at a pixel a hair inside an edge of a triangle with
+  // extreme depths) would make every varying NaN; it reads as 0, as the uv does.
+  const L reciprocal = L(S(1)) / planeAtLanes<L>(p.oneOverW, px, py);
+  const L w = select(isFinite(reciprocal), reciprocal, zero);
   FragmentL<L> f;
-  f.posWorld = v0.posWorld * p0 + v1.posWorld * p1 + v2.posWorld * p2;
-  f.nWorld = v0.nWorld * p0 + v1.nWorld * p1 + v2.nWorld * p2;
-  f.tWorld = v0.tWorld * p0 + v1.tWorld * p1 + v2.tWorld * p2;
-  f.bWorld = v0.bWorld * p0 + v1.bWorld * p1 + v2.bWorld * p2;
-  f.uv = weights.uv;  // from the uv planes, as llvmpipe interpolates it
-  const Vec3L<L> zero3(L(S(0)));
-  for (std::size_t k = 0; k < static_cast<std::size_t>(kMaxLights); ++k) {
-    f.lightDirTangent[k] = tangentLighting && static_cast<int>(k) < tangentLightCount
-                               ? v0.lightDirTangent[k] * p0 + v1.lightDirTangent[k] * p1 + v2.lightDirTangent[k] * p2
-                               : zero3;
+  f.posWorld = varying3AtLanes<L>(p, kVaryingPosWorld, px, py, w);
+  f.nWorld = varying3AtLanes<L>(p, kVaryingNormal, px, py, w);
+  f.tWorld = varying3AtLanes<L>(p, kVaryingTangent, px, py, w);
+  f.bWorld = varying3AtLanes<L>(p, kVaryingBitangent, px, py, w);
+  const L u = varyingAtLanes<L>(p, kVaryingUv, px, py, w), v = varyingAtLanes<L>(p, kVaryingUv + 1, px, py, w);
+  f.uv = Vec2L<L>(select(isFinite(u), u, zero), select(isFinite(v), v, zero));
+  const Vec3L<L> zero3(zero);
+  const bool tangentLighting = p.count > kVaryingEyeDirTangent;
+  f.eyeDirTangent = tangentLighting ? varying3AtLanes<L>(p, kVaryingEyeDirTangent, px, py, w) : zero3;
+  for (int k = 0; k < kMaxLights; ++k) {
+    const int at = kVaryingLightDirTangent + 3 * k;
+    f.lightDirTangent[static_cast<std::size_t>(k)] = at < p.count ? varying3AtLanes<L>(p, at, px, py, w) : zero3;
   }
-  f.eyeDirTangent = tangentLighting ? v0.eyeDirTangent * p0 + v1.eyeDirTangent * p1 + v2.eyeDirTangent * p2 : zero3;
-  f.depth = weights.depth;
-  f.uvDx = Vec2L<L>(L(S(0)));
-  f.uvDy = Vec2L<L>(L(S(0)));
-  f.uvDxFine = Vec2L<L>(L(S(0)));
-  f.uvDyFine = Vec2L<L>(L(S(0)));
+  f.depth = depth;
+  f.uvDx = Vec2L<L>(zero);
+  f.uvDy = Vec2L<L>(zero);
+  f.uvDxFine = Vec2L<L>(zero);
+  f.uvDyFine = Vec2L<L>(zero);
   return f;
 }
 
@@ -189,11 +204,11 @@ TWR_LANE_INLINE FragmentL<L> interpolateFragmentLanes(const VertexL<L>& v0, cons
 // du/dy = uv(x0, y0 + 1) - uv(x0, y0), the same for all four pixels (llvmpipe's per-quad LOD).
 // qx, qy: the quad's first column and row.
 template <typename L>
-TWR_LANE_INLINE void setQuadUvDifferencesLanes(const InterpolationL<L>& s, const L& qx, const L& qy, FragmentL<L>& f) {
+TWR_LANE_INLINE void setQuadUvDifferencesLanes(const UvPlanesL<L>& s, const L& qx, const L& qy, FragmentL<L>& f) {
   using S = ScalarOf<L>;
-  const Vec2L<L> topLeft = uvAtPixelLanes<L>(s.uv, qx, qy);
-  const Vec2L<L> right = uvAtPixelLanes<L>(s.uv, qx + L(S(1)), qy);
-  const Vec2L<L> above = uvAtPixelLanes<L>(s.uv, qx, qy + L(S(1)));
+  const Vec2L<L> topLeft = uvAtPixelLanes<L>(s, qx, qy);
+  const Vec2L<L> right = uvAtPixelLanes<L>(s, qx + L(S(1)), qy);
+  const Vec2L<L> above = uvAtPixelLanes<L>(s, qx, qy + L(S(1)));
   f.uvDx = right - topLeft;
   f.uvDy = above - topLeft;
 }
@@ -203,13 +218,13 @@ TWR_LANE_INLINE void setQuadUvDifferencesLanes(const InterpolationL<L>& s, const
 // height-field methods read with them (textureGrad), so they differ from the per-quad ones
 // above in the quad's second row and column. qx, qy: the quad's first column and row.
 template <typename L>
-TWR_LANE_INLINE void setFineUvDifferencesLanes(const InterpolationL<L>& s, const L& qx, const L& qy, const L& px,
+TWR_LANE_INLINE void setFineUvDifferencesLanes(const UvPlanesL<L>& s, const L& qx, const L& qy, const L& px,
                                                const L& py, FragmentL<L>& f) {
   using S = ScalarOf<L>;
-  const Vec2L<L> left = uvAtPixelLanes<L>(s.uv, qx, py);
-  const Vec2L<L> right = uvAtPixelLanes<L>(s.uv, qx + L(S(1)), py);
-  const Vec2L<L> lower = uvAtPixelLanes<L>(s.uv, px, qy);
-  const Vec2L<L> upper = uvAtPixelLanes<L>(s.uv, px, qy + L(S(1)));
+  const Vec2L<L> left = uvAtPixelLanes<L>(s, qx, py);
+  const Vec2L<L> right = uvAtPixelLanes<L>(s, qx + L(S(1)), py);
+  const Vec2L<L> lower = uvAtPixelLanes<L>(s, px, qy);
+  const Vec2L<L> upper = uvAtPixelLanes<L>(s, px, qy + L(S(1)));
   f.uvDxFine = right - left;
   f.uvDyFine = upper - lower;
 }

@@ -62,31 +62,45 @@ struct PlaneSetup {
 }  // namespace
 
 template <typename T>
-UvPlanesT<T> makeUvPlanes(const std::array<WindowVertexT<T>, 3>& window, const std::array<Vec2T<T>, 3>& uv,
-                          const TriangleSetup& setup) {
+VaryingPlanesT<T> makeVaryingPlanes(const std::array<WindowVertexT<T>, 3>& window,
+                                    const std::array<const T*, 3>& varyings, int count, const TriangleSetup& setup) {
   const PlaneSetup<T> planes(window, setup);
-  const auto corner = [&](std::size_t c) { return PlaneSetup<T>::corner(setup, c); };
-  const auto planeOf = [&](T a0, T a1, T a2) { return planes.planeOf(a0, a1, a2); };
-  const WindowVertexT<T>& w0 = window[corner(0)];
-  const WindowVertexT<T>& w1 = window[corner(1)];
-  const WindowVertexT<T>& w2 = window[corner(2)];
-  // Perspective-correct: the planes of u/w, v/w and 1/w, divided per pixel.
-  const auto overW = [&](std::size_t c, int component) { return uv[corner(c)][component] * window[corner(c)].invW; };
-  UvPlanesT<T> out;
-  out.uOverW = planeOf(overW(0, 0), overW(1, 0), overW(2, 0));
-  out.vOverW = planeOf(overW(0, 1), overW(1, 1), overW(2, 1));
-  out.oneOverW = planeOf(w0.invW, w1.invW, w2.invW);
+  const std::size_t c0 = PlaneSetup<T>::corner(setup, 0), c1 = PlaneSetup<T>::corner(setup, 1),
+                    c2 = PlaneSetup<T>::corner(setup, 2);
+  VaryingPlanesT<T> out;
+  out.count = count;
+  // Perspective-correct: the planes of a/w and of 1/w, divided per pixel.
+  out.oneOverW = planes.planeOf(window[c0].invW, window[c1].invW, window[c2].invW);
   bool finite = true;
-  for (const AttributePlaneT<T>* p : {&out.uOverW, &out.vOverW, &out.oneOverW}) {
-    finite = finite && std::isfinite(p->atOrigin) && std::isfinite(p->dx) && std::isfinite(p->dy);
+  const auto isFinitePlane = [](const AttributePlaneT<T>& p) {
+    return std::isfinite(p.atOrigin) && std::isfinite(p.dx) && std::isfinite(p.dy);
+  };
+  finite = isFinitePlane(out.oneOverW);
+  for (int k = 0; k < count; ++k) {
+    const auto overW = [&](std::size_t c) { return varyings[c][k] * window[c].invW; };
+    AttributePlaneT<T>& plane = out.overW[static_cast<std::size_t>(k)];
+    plane = planes.planeOf(overW(c0), overW(c1), overW(c2));
+    finite = finite && isFinitePlane(plane);
   }
   if (!finite) {
-    const auto constant = [](T a) { return AttributePlaneT<T>{a, T(0), T(0)}; };
-    out.uOverW = constant(uv[0].x);
-    out.vOverW = constant(uv[0].y);
-    out.oneOverW = constant(T(1));
+    out.oneOverW = AttributePlaneT<T>{T(1), T(0), T(0)};
+    for (int k = 0; k < count; ++k) out.overW[static_cast<std::size_t>(k)] = AttributePlaneT<T>{varyings[0][k], T(0), T(0)};
   }
   return out;
+}
+
+template <typename T>
+UvPlanesT<T> makeUvPlanes(const std::array<WindowVertexT<T>, 3>& window, const std::array<Vec2T<T>, 3>& uv,
+                          const TriangleSetup& setup) {
+  const std::array<std::array<T, 2>, 3> floats{{{uv[0].x, uv[0].y}, {uv[1].x, uv[1].y}, {uv[2].x, uv[2].y}}};
+  const VaryingPlanesT<T> planes = makeVaryingPlanes<T>(window, {floats[0].data(), floats[1].data(), floats[2].data()}, 2, setup);
+  return UvPlanesT<T>{planes.overW[0], planes.overW[1], planes.oneOverW};
+}
+
+template <typename T>
+AttributePlaneT<T> makeDepthPlane(const std::array<WindowVertexT<T>, 3>& window, const TriangleSetup& setup) {
+  const auto cornerZ = [&](std::size_t c) { return window[PlaneSetup<T>::corner(setup, c)].z; };
+  return PlaneSetup<T>(window, setup).planeOf(cornerZ(0), cornerZ(1), cornerZ(2));
 }
 
 template <typename T>
@@ -94,8 +108,7 @@ InterpolationSetupT<T> makeInterpolationSetup(const std::array<WindowVertexT<T>,
                                               const std::array<Vec2T<T>, 3>& uv, const TriangleSetup& setup) {
   InterpolationSetupT<T> out;
   out.uv = makeUvPlanes(window, uv, setup);
-  const auto cornerZ = [&](std::size_t c) { return window[PlaneSetup<T>::corner(setup, c)].z; };
-  out.depth = PlaneSetup<T>(window, setup).planeOf(cornerZ(0), cornerZ(1), cornerZ(2));
+  out.depth = makeDepthPlane(window, setup);
   std::array<double, 3> x{}, y{};
   for (std::size_t i = 0; i < 3; ++i) {
     x[i] = window[i].x;
@@ -131,4 +144,12 @@ template UvPlanesT<float> makeUvPlanes<float>(const std::array<WindowVertexT<flo
                                               const std::array<Vec2T<float>, 3>&, const TriangleSetup&);
 template UvPlanesT<double> makeUvPlanes<double>(const std::array<WindowVertexT<double>, 3>&,
                                                 const std::array<Vec2T<double>, 3>&, const TriangleSetup&);
+template VaryingPlanesT<float> makeVaryingPlanes<float>(const std::array<WindowVertexT<float>, 3>&,
+                                                        const std::array<const float*, 3>&, int, const TriangleSetup&);
+template VaryingPlanesT<double> makeVaryingPlanes<double>(const std::array<WindowVertexT<double>, 3>&,
+                                                          const std::array<const double*, 3>&, int,
+                                                          const TriangleSetup&);
+template AttributePlaneT<float> makeDepthPlane<float>(const std::array<WindowVertexT<float>, 3>&, const TriangleSetup&);
+template AttributePlaneT<double> makeDepthPlane<double>(const std::array<WindowVertexT<double>, 3>&,
+                                                        const TriangleSetup&);
 }  // namespace twr

@@ -1,24 +1,26 @@
-// Stage 5, interpolation: per pixel, the screen-space barycentrics of the pixel centre, the
-// window depth interpolated linearly in screen space, and every varying interpolated
-// perspective-correctly with 1/w:
-//   lambda_i  = screen-space barycentric of the pixel centre (px + 0.5, py + 0.5)
-//   z_win     = the window z plane, set up and evaluated like uv's below (llvmpipe interpolates
-//               position.z so), then stored as llvmpipe's 24-bit depth buffer holds it
-//   p_i       = (lambda_i / w_i) / sum_k (lambda_k / w_k)          (perspective weights)
-//   attribute = sum p_i a_i
-// Barycentrics come from the unsnapped window positions (as llvmpipe's attribute setup),
-// in double precision; the snapped positions stand in when those have no area.
-//
-// The texture coordinate is the one varying interpolated exactly as llvmpipe does it,
-// because a nearest-filtered texel flips on one ULP of uv (docs/textures.md, "Which texel"):
-// u/w, v/w and 1/w are each a plane set up in float from the float window positions, in the
-// corner order setup uses (a counter-clockwise triangle has its first two corners swapped):
+// Stage 5, interpolation: per pixel, the window depth, and every varying interpolated
+// perspective-correctly, each exactly as llvmpipe interpolates it, because a texel, a layer of
+// a parallax march or a shading boundary can flip on one ULP of a varying (docs/textures.md,
+// "Which texel"). Each varying a, and 1/w, is a plane set up in float from the float window
+// positions, in the corner order setup uses (a counter-clockwise triangle has its first two
+// corners swapped), from a_i / w_i at the corners (a_i alone for the window depth):
 //   da01 = a0 - a1, da20 = a2 - a0, 1/area = 1 / (dx01 dy20 - dy01 dx20)
 //   dadx = da01 (dy20 / area) - da20 (dy01 / area),  dady = da20 (dx01 / area) - da01 (dx20 / area)
 //   a(px, py) = fma(dady, py, fma(dadx, px, A0)),     A0 = a0 - (dadx (x0 - 0.5) + dady (y0 - 0.5))
-//   uv = (u/w, v/w) * (1 / (1/w))                      (a product with the reciprocal, not a quotient)
+//   varying   = (a/w)(px, py) * (1 / (1/w)(px, py))    (a product with the reciprocal, not a quotient)
+//   z_win     = the window z plane (no 1/w), stored as llvmpipe's 24-bit depth buffer holds it
 // with one rounding per operation and the two fused multiply-adds llvmpipe's JIT code emits on
 // a CPU with FMA (every x86-64 CPU since 2013, every AArch64 one).
+//
+// The screen-space barycentrics of the pixel centre and the perspective weights
+//   lambda_i  = screen-space barycentric of the pixel centre (px + 0.5, py + 0.5)
+//   p_i       = (lambda_i / w_i) / sum_k (lambda_k / w_k)
+// are what the textbook interpolates with (sum p_i a_i); they are kept, in double, for the
+// pixel trace and the GUI's inspector, which show them, but no varying is computed from them:
+// a sum of three products rounds differently from the planes above, and steep parallax sent
+// pixels down another layer on that difference. Barycentrics come from the unsnapped window
+// positions (as llvmpipe's attribute setup); the snapped positions stand in when those have
+// no area.
 //
 // The per-pixel part (weights and varyings) is written once over the lane type in
 // interpolate-inl.h; the functions below are its scalar entry points, templated on T (float:
@@ -44,6 +46,51 @@ struct UvPlanesT {
   AttributePlaneT<T> uOverW, vOverW, oneOverW;
 };
 
+// The varyings the fragment stage reads, as floats in this order (offsets in floats): the
+// layout of VaryingPlanesT and of the fast path's stored vertices.
+inline constexpr int kVaryingPosWorld = 0;
+inline constexpr int kVaryingNormal = 3;
+inline constexpr int kVaryingTangent = 6;
+inline constexpr int kVaryingBitangent = 9;
+inline constexpr int kVaryingUv = 12;
+inline constexpr int kVaryingEyeDirTangent = 14;    // tangent lighting space only
+inline constexpr int kVaryingLightDirTangent = 17;  // light i at 17 + 3 i, tangent lighting only
+inline constexpr int kMaxVaryings = kVaryingLightDirTangent + 3 * kMaxLights;  // 41
+// Floats per vertex: 14 in world lighting space, 17 + 3 lightCount in tangent space.
+inline int varyingCount(bool tangentLighting, int lightCount) {
+  return tangentLighting ? kVaryingLightDirTangent + 3 * lightCount : kVaryingEyeDirTangent;
+}
+
+// The varyings of `v` in that layout (the first varyingCount floats of `out`).
+template <typename T>
+void storeVaryings(const ClipVertexT<T>& v, bool tangentLighting, int lightCount, T* out) {
+  const auto put = [&](int at, const Vec3T<T>& value) {
+    out[at] = value.x;
+    out[at + 1] = value.y;
+    out[at + 2] = value.z;
+  };
+  put(kVaryingPosWorld, v.posWorld);
+  put(kVaryingNormal, v.nWorld);
+  put(kVaryingTangent, v.tWorld);
+  put(kVaryingBitangent, v.bWorld);
+  out[kVaryingUv] = v.uv.x;
+  out[kVaryingUv + 1] = v.uv.y;
+  if (!tangentLighting) return;
+  put(kVaryingEyeDirTangent, v.eyeDirTangent);
+  for (int i = 0; i < lightCount; ++i) put(kVaryingLightDirTangent + 3 * i, v.lightDirTangent[static_cast<std::size_t>(i)]);
+}
+
+// Every varying's plane of a / w, and the plane of 1 / w they are divided by (see above).
+// Where the float corners are collinear (setup accepted their snapped positions) the planes
+// would divide by zero; they then hold the first vertex's values everywhere, and 1/w is 1.
+template <typename T>
+struct VaryingPlanesT {
+  AttributePlaneT<T> oneOverW;
+  std::array<AttributePlaneT<T>, kMaxVaryings> overW{};  // varying k at overW[k], the layout above
+  int count = 0;                                          // planes set (varyingCount)
+};
+using VaryingPlanes = VaryingPlanesT<float>;
+
 // lambda_i(px, py) = atOrigin[i] + dx[i] * px + dy[i] * py (pixel indices; the centre offset
 // is folded into atOrigin).
 template <typename T>
@@ -64,12 +111,32 @@ template <typename T = float>
 InterpolationSetupT<T> makeInterpolationSetup(const std::array<WindowVertexT<T>, 3>& window,
                                               const std::array<Vec2T<T>, 3>& uv, const TriangleSetup& setup);
 
-// The uv planes alone (part of makeInterpolationSetup). Where the float corners are collinear
-// (setup accepted their snapped positions) the planes would divide by zero; they then hold the
-// first corner's uv everywhere.
+// The uv planes alone (part of makeInterpolationSetup), made as makeVaryingPlanes makes them.
 template <typename T>
 UvPlanesT<T> makeUvPlanes(const std::array<WindowVertexT<T>, 3>& window, const std::array<Vec2T<T>, 3>& uv,
                           const TriangleSetup& setup);
+
+// The planes of the first `count` varyings (the layout above) of vertices 0, 1, 2, whose floats
+// start at varyings[0], [1], [2] (corner i of `window` is vertex i, before setup's reordering).
+template <typename T>
+VaryingPlanesT<T> makeVaryingPlanes(const std::array<WindowVertexT<T>, 3>& window,
+                                    const std::array<const T*, 3>& varyings, int count, const TriangleSetup& setup);
+// The same from the clip vertices (storeVaryings of each).
+template <typename T>
+VaryingPlanesT<T> makeVaryingPlanes(const std::array<WindowVertexT<T>, 3>& window, const ClipVertexT<T>& v0,
+                                    const ClipVertexT<T>& v1, const ClipVertexT<T>& v2, bool tangentLighting,
+                                    int lightCount, const TriangleSetup& setup) {
+  std::array<std::array<T, kMaxVaryings>, 3> floats{};
+  const int count = varyingCount(tangentLighting, lightCount);
+  storeVaryings(v0, tangentLighting, lightCount, floats[0].data());
+  storeVaryings(v1, tangentLighting, lightCount, floats[1].data());
+  storeVaryings(v2, tangentLighting, lightCount, floats[2].data());
+  return makeVaryingPlanes<T>(window, {floats[0].data(), floats[1].data(), floats[2].data()}, count, setup);
+}
+
+// The window depth plane alone (part of makeInterpolationSetup): all the visibility pass needs.
+template <typename T>
+AttributePlaneT<T> makeDepthPlane(const std::array<WindowVertexT<T>, 3>& window, const TriangleSetup& setup);
 
 template <typename T>
 struct PixelWeightsT {
@@ -110,13 +177,12 @@ PixelWeightsT<T> pixelWeights(const InterpolationSetupT<T>& setup, int px, int p
   return pixelWeightsLanes<T>(setup, static_cast<double>(px), static_cast<double>(py));
 }
 
-// Perspective-correct varyings at one pixel. Tangent-space light and eye directions are
-// interpolated only for the first `tangentLightCount` lights (0 in world lighting space, and
-// then eyeDirTangent is left zero too).
+// The varyings at pixel (px, py), from their planes; `depth` is the pixel's window depth
+// (PixelWeightsT::depth). Tangent-space light and eye directions are interpolated only when
+// the planes hold them (tangent lighting space), else left zero.
 template <typename T>
-FragmentT<T> interpolateFragment(const ClipVertexT<T>& v0, const ClipVertexT<T>& v1, const ClipVertexT<T>& v2,
-                                 const PixelWeightsT<T>& weights, bool tangentLighting, int tangentLightCount) {
-  return interpolateFragmentLanes<T>(v0, v1, v2, weights, tangentLighting, tangentLightCount);
+FragmentT<T> interpolateFragment(const VaryingPlanesT<T>& planes, int px, int py, T depth) {
+  return interpolateFragmentLanes<T>(planes, static_cast<T>(px), static_cast<T>(py), depth);
 }
 
 }  // namespace twr

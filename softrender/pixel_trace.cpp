@@ -75,14 +75,14 @@ void traceTriangle(const DrawItem& item, std::size_t t, const VertexUniforms& ve
     visit.frontFacing = setup.frontFacing;
     const InterpolationSetup interpolation = makeInterpolationSetup(window, {a.uv, b.uv, c.uv}, setup);
     visit.weights = pixelWeights(interpolation, x, yGl);
-    visit.fragment =
-        interpolateFragment(a, b, c, visit.weights, tangentLighting, tangentLighting ? shadeUniforms.lightCount : 0);
+    const VaryingPlanes varyings = makeVaryingPlanes(window, a, b, c, tangentLighting, shadeUniforms.lightCount, setup);
+    visit.fragment = interpolateFragment(varyings, x, yGl, visit.weights.depth);
     if (shadeUniforms.needsQuadDifferences()) {
       // The LOD (or the anisotropic ellipse) from the pixel's 2x2 quad, as the renderers take it.
-      setQuadUvDifferencesLanes<float>(interpolation, static_cast<float>(x & ~1), static_cast<float>(yGl & ~1),
+      setQuadUvDifferencesLanes<float>(interpolation.uv, static_cast<float>(x & ~1), static_cast<float>(yGl & ~1),
                                        visit.fragment);
       if (shadeUniforms.heightMap) {
-        setFineUvDifferencesLanes<float>(interpolation, static_cast<float>(x & ~1), static_cast<float>(yGl & ~1),
+        setFineUvDifferencesLanes<float>(interpolation.uv, static_cast<float>(x & ~1), static_cast<float>(yGl & ~1),
                                          static_cast<float>(x), static_cast<float>(yGl), visit.fragment);
       }
     }

@@ -43,21 +43,16 @@ inline constexpr SceneTolerance kSceneTolerances[] = {
     {"stability_poles.json"},
     {"stability_scales.json"},
     {"stability_w_zero.json"},
-    // Height fields (issue 16, open). Non-marching methods agree to 1 level with every filter.
+    // Height fields (issue 16): every method, at the scene's filter, agrees to 1 level at
+    // 640x480 and 1280x720 since every varying is interpolated on llvmpipe's planes.
     {"height_bump_blinn.json"},
     {"height_bump_emboss.json"},
-    {"height_parallax.json", 40, 0.01, 0.0, true},  // 35 levels on 1 pixel with nearest_mipmap_linear
+    {"height_parallax.json"},
     {"height_parallax_offset_limited.json"},
-    // KNOWN EXCEPTION, looser than the targets: the marching methods decide per layer, and a few
-    // pixels (at most 8 of 150,000, measured 2026-11-24 with all six filters and at 1280x720)
-    // take another layer on the two renderers, up to 69 levels apart. The uv and its
-    // differences are bit-exact; the likely cause is that the CPU interpolates the other
-    // varyings (position, normal, tangent) with barycentric weights, not llvmpipe's planes,
-    // so the view vector differs by ULPs. Issue 16 stays open until these meet the targets.
-    {"height_steep_parallax.json", 24, 0.01, 0.0, true},
-    {"height_relief.json", 80, 0.01, 0.0, true},
-    {"height_parallax_occlusion.json", 80, 0.01, 0.0, true},
-    {"height_grazing_mirrored.json", 24, 0.01, 0.0, true},
+    {"height_steep_parallax.json"},
+    {"height_relief.json"},
+    {"height_parallax_occlusion.json"},
+    {"height_grazing_mirrored.json"},
 };
 
 }  // namespace twr::suite

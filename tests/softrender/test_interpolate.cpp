@@ -19,10 +19,22 @@ WindowVertex win(float x, float y, float z, float invW) {
   return v;
 }
 
-InterpolationSetup setupFor(const std::array<WindowVertex, 3>& w, const std::array<vec2, 3>& uv = {}) {
+TriangleSetup triangleSetupFor(const std::array<WindowVertex, 3>& w) {
   TriangleSetup s;
   EXPECT_EQ(setupTriangle(w, CullMode::None, FrontFace::Ccw, Viewport{64, 64}, s), SetupResult::Ready);
-  return makeInterpolationSetup(w, uv, s);
+  return s;
+}
+
+InterpolationSetup setupFor(const std::array<WindowVertex, 3>& w, const std::array<vec2, 3>& uv = {}) {
+  return makeInterpolationSetup(w, uv, triangleSetupFor(w));
+}
+
+// The fragment at (px, py) of the triangle w with vertices v0, v1, v2.
+Fragment fragmentAt(const std::array<WindowVertex, 3>& w, const ClipVertex& v0, const ClipVertex& v1,
+                    const ClipVertex& v2, bool tangentLighting, int lightCount, int px, int py) {
+  const TriangleSetup s = triangleSetupFor(w);
+  const VaryingPlanes planes = makeVaryingPlanes(w, v0, v1, v2, tangentLighting, lightCount, s);
+  return interpolateFragment(planes, px, py, pixelWeights(makeInterpolationSetup(w, {v0.uv, v1.uv, v2.uv}, s), px, py).depth);
 }
 
 TEST(Interpolate, BarycentricsAtTheCornersArePure) {
@@ -44,8 +56,9 @@ TEST(Interpolate, BarycentricsAtTheCornersArePure) {
 TEST(Interpolate, VaryingsArePerspectiveCorrect) {
   // w = 1 at corner 0, w = 2 at corner 1: halfway in screen space the weights are
   // (0.5 / 1, 0.5 / 2) / (0.5 + 0.25) = (2/3, 1/3), not (1/2, 1/2).
-  const InterpolationSetup s = setupFor({win(0.5f, 0.5f, 0.0f, 1.0f), win(10.5f, 0.5f, 1.0f, 0.5f), win(0.5f, 10.5f, 0.0f, 1.0f)},
-                                       {vec2(0, 0), vec2(3, 0), vec2(0, 3)});
+  const std::array<WindowVertex, 3> window{win(0.5f, 0.5f, 0.0f, 1.0f), win(10.5f, 0.5f, 1.0f, 0.5f),
+                                           win(0.5f, 10.5f, 0.0f, 1.0f)};
+  const InterpolationSetup s = setupFor(window, {vec2(0, 0), vec2(3, 0), vec2(0, 3)});
   const PixelWeights w = pixelWeights(s, 5, 0);
   EXPECT_NEAR(w.perspective[0], 2.0f / 3.0f, 1e-6f);
   EXPECT_NEAR(w.perspective[1], 1.0f / 3.0f, 1e-6f);
@@ -56,8 +69,10 @@ TEST(Interpolate, VaryingsArePerspectiveCorrect) {
   v0.nWorld = vec3(0, 0, 1);
   v1.nWorld = vec3(0, 0, 1);
   v2.nWorld = vec3(0, 0, 1);
-  const Fragment f = interpolateFragment(v0, v1, v2, w, false, 0);
+  v1.posWorld = vec3(3, 0, 0);
+  const Fragment f = fragmentAt(window, v0, v1, v2, false, 0, 5, 0);
   EXPECT_NEAR(f.uv.x, 1.0f, 1e-5f);  // 3 * 1/3
+  EXPECT_NEAR(f.posWorld.x, 1.0f, 1e-5f);
   EXPECT_NEAR(f.depth, 0.5f, 1e-6f);
 }
 
@@ -71,13 +86,13 @@ TEST(Interpolate, DepthIsClampedToTheDepthRange) {
 
 TEST(Interpolate, DegenerateUvsStayConstantAndFinite) {
   const vec2 uv(0.25f, 0.75f);
-  const InterpolationSetup s =
-      setupFor({win(0.5f, 0.5f, 0.5f, 1), win(30.5f, 2.5f, 0.5f, 0.25f), win(3.5f, 40.5f, 0.5f, 2)}, {uv, uv, uv});
+  const std::array<WindowVertex, 3> window{win(0.5f, 0.5f, 0.5f, 1), win(30.5f, 2.5f, 0.5f, 0.25f),
+                                           win(3.5f, 40.5f, 0.5f, 2)};
   ClipVertex v0, v1, v2;
   v0.uv = v1.uv = v2.uv = uv;
   for (int py = 0; py < 40; py += 7) {
     for (int px = 0; px < 30; px += 5) {
-      const Fragment f = interpolateFragment(v0, v1, v2, pixelWeights(s, px, py), false, 0);
+      const Fragment f = fragmentAt(window, v0, v1, v2, false, 0, px, py);
       EXPECT_NEAR(f.uv.x, 0.25f, 1e-5f);
       EXPECT_NEAR(f.uv.y, 0.75f, 1e-5f);
     }
@@ -85,16 +100,50 @@ TEST(Interpolate, DegenerateUvsStayConstantAndFinite) {
 }
 
 TEST(Interpolate, TangentSpaceVaryingsOnlyWhenAsked) {
-  const InterpolationSetup s = setupFor({win(0.5f, 0.5f, 0, 1), win(10.5f, 0.5f, 0, 1), win(0.5f, 10.5f, 0, 1)});
+  const std::array<WindowVertex, 3> window{win(0.5f, 0.5f, 0, 1), win(10.5f, 0.5f, 0, 1), win(0.5f, 10.5f, 0, 1)};
   ClipVertex v0, v1, v2;
   v0.lightDirTangent[0] = v1.lightDirTangent[0] = v2.lightDirTangent[0] = vec3(1, 2, 3);
+  v0.lightDirTangent[1] = v1.lightDirTangent[1] = v2.lightDirTangent[1] = vec3(7, 8, 9);
   v0.eyeDirTangent = v1.eyeDirTangent = v2.eyeDirTangent = vec3(4, 5, 6);
-  const PixelWeights w = pixelWeights(s, 2, 2);
-  const Fragment tangent = interpolateFragment(v0, v1, v2, w, true, 1);
+  const Fragment tangent = fragmentAt(window, v0, v1, v2, true, 1, 2, 2);
   EXPECT_NEAR(tangent.lightDirTangent[0].z, 3.0f, 1e-5f);
+  EXPECT_EQ(tangent.lightDirTangent[1], vec3(0.0f));  // only the first lightCount lights
   EXPECT_NEAR(tangent.eyeDirTangent.y, 5.0f, 1e-5f);
-  const Fragment world = interpolateFragment(v0, v1, v2, w, false, 0);
+  const Fragment world = fragmentAt(window, v0, v1, v2, false, 0, 2, 2);
   EXPECT_EQ(world.eyeDirTangent, vec3(0.0f));
+  EXPECT_EQ(world.lightDirTangent[0], vec3(0.0f));
+}
+
+// Every varying is interpolated as the uv is (llvmpipe's planes): a varying holding the same
+// corner values as u has the same bits as u at every pixel, however the triangle is oriented.
+TEST(Interpolate, EveryVaryingHasTheUvsBits) {
+  const std::array<std::array<WindowVertex, 3>, 2> triangles{{
+      {win(0.5f, 0.5f, 0.1f, 1.0f), win(37.3f, 5.1f, 0.2f, 0.31f), win(7.7f, 41.9f, 0.3f, 1.7f)},  // ccw
+      {win(0.5f, 0.5f, 0.1f, 1.0f), win(7.7f, 41.9f, 0.3f, 1.7f), win(37.3f, 5.1f, 0.2f, 0.31f)},  // cw
+  }};
+  const std::array<float, 3> values{0.1f, 2.7f, -1.3f};
+  std::array<ClipVertex, 3> v;
+  for (std::size_t i = 0; i < 3; ++i) {
+    v[i].uv = vec2(values[i], 0.0f);
+    v[i].posWorld = vec3(values[i]);
+    v[i].tWorld = vec3(values[i]);
+    v[i].eyeDirTangent = vec3(values[i]);
+    v[i].lightDirTangent[2] = vec3(values[i]);
+  }
+  int compared = 0;
+  for (const std::array<WindowVertex, 3>& window : triangles) {
+    for (int py = 0; py < 42; py += 3) {
+      for (int px = 0; px < 38; px += 3) {
+        const Fragment f = fragmentAt(window, v[0], v[1], v[2], true, 3, px, py);
+        EXPECT_EQ(f.posWorld.y, f.uv.x);
+        EXPECT_EQ(f.tWorld.z, f.uv.x);
+        EXPECT_EQ(f.eyeDirTangent.x, f.uv.x);
+        EXPECT_EQ(f.lightDirTangent[2].y, f.uv.x);
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GT(compared, 300);
 }
 
 TEST(Interpolate, CollinearFloatPositionsFallBackToTheSnappedOnes) {
@@ -110,6 +159,13 @@ TEST(Interpolate, CollinearFloatPositionsFallBackToTheSnappedOnes) {
   EXPECT_TRUE(std::isfinite(p.depth));
   // The uv planes would divide by the zero float area: they hold the first corner's uv.
   EXPECT_EQ(p.uv, vec2(0.25f, 0.5f));
+  // So do the other varyings' planes: the first vertex's values, finite.
+  ClipVertex v0, v1, v2;
+  v0.posWorld = vec3(1, 2, 3);
+  v1.posWorld = vec3(4, 5, 6);
+  v2.posWorld = vec3(7, 8, 9);
+  const Fragment f = interpolateFragment(makeVaryingPlanes(w, v0, v1, v2, false, 0, snapped), 4, 4, p.depth);
+  EXPECT_EQ(f.posWorld, vec3(1, 2, 3));
 }
 
 }  // namespace
