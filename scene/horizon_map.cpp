@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <thread>
+#include <vector>
 
 namespace twr {
 
@@ -39,28 +41,36 @@ HorizonMap makeHorizonMap(const Texture& heightMap, float heightScale, int direc
     t.options.srgb = false;
     t.formatName = "horizon map (RGBA8, sine of the horizon elevation)";
   }
-  for (int k = 0; k < directions; ++k) {
-    const vec2 diamond = horizonDirectionUv(k, directions);
-    const double length = std::hypot(static_cast<double>(diamond.x), static_cast<double>(diamond.y));
-    const double dx = diamond.x / length, dy = diamond.y / length;
-    Texture& target = textures[static_cast<std::size_t>(k / 4)];
-    const int channel = k % 4;
-    for (int y = 0; y < h; ++y) {
-      for (int x = 0; x < w; ++x) {
-        const double u = (x + 0.5) / w, v = (y + 0.5) / h;
-        const double h0 = heightAt(heightMap, glm::dvec2(u, v));  // the texel centre
-        double slope = 0.0;  // the steepest rise seen, texture-space units per uv unit
-        for (int s = 1; s <= kHorizonReachTexels; ++s) {
-          const double distance = s * step;
-          const double rise = (heightAt(heightMap, glm::dvec2(u + dx * distance, v + dy * distance)) - h0) * heightScale;
-          slope = std::max(slope, rise / distance);
+  // Rows are independent: split across the cores (1.7 s on one core at 512 x 512 x 8).
+  const auto buildRows = [&](int rowBegin, int rowEnd) {
+    for (int k = 0; k < directions; ++k) {
+      const vec2 diamond = horizonDirectionUv(k, directions);
+      const double length = std::hypot(static_cast<double>(diamond.x), static_cast<double>(diamond.y));
+      const double dx = diamond.x / length, dy = diamond.y / length;
+      Texture& target = textures[static_cast<std::size_t>(k / 4)];
+      const int channel = k % 4;
+      for (int y = rowBegin; y < rowEnd; ++y) {
+        for (int x = 0; x < w; ++x) {
+          const double u = (x + 0.5) / w, v = (y + 0.5) / h;
+          const double h0 = heightAt(heightMap, glm::dvec2(u, v));  // the texel centre
+          double slope = 0.0;  // the steepest rise seen, texture-space units per uv unit
+          for (int s = 1; s <= kHorizonReachTexels; ++s) {
+            const double distance = s * step;
+            const double rise = (heightAt(heightMap, glm::dvec2(u + dx * distance, v + dy * distance)) - h0) * heightScale;
+            slope = std::max(slope, rise / distance);
+          }
+          const double sine = slope / std::sqrt(1.0 + slope * slope);
+          target.rgba[(static_cast<std::size_t>(y) * w + x) * 4 + channel] =
+              static_cast<std::uint8_t>(std::lround(std::clamp(sine, 0.0, 1.0) * 255.0));
         }
-        const double sine = slope / std::sqrt(1.0 + slope * slope);
-        target.rgba[(static_cast<std::size_t>(y) * w + x) * 4 + channel] =
-            static_cast<std::uint8_t>(std::lround(std::clamp(sine, 0.0, 1.0) * 255.0));
       }
     }
-  }
+  };
+  const int threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, std::max(1, h));
+  std::vector<std::thread> workers;
+  for (int i = 1; i < threads; ++i) workers.emplace_back(buildRows, h * i / threads, h * (i + 1) / threads);
+  buildRows(0, h / threads);
+  for (std::thread& worker : workers) worker.join();
   for (Texture& t : textures) {
     buildMipChain(t);
     horizon.textures.push_back(std::make_shared<const Texture>(std::move(t)));

@@ -32,8 +32,9 @@ HorizonMap makeHorizonMap(const Texture& heightMap, float heightScale, int direc
 // width * height * directions * this.
 inline constexpr int kHorizonReachTexels = 32;
 // Most texels times azimuths a horizon map is built for (inclusive): 1024 x 1024 at 16
-// azimuths, 5.4e8 height reads. Measured at 512 x 512: 1.7 s at 8 azimuths, 3.5 s at 16, so
-// the largest map takes about 14 s at load. Larger maps are refused.
+// azimuths, 5.4e8 height reads. Rows are built on every core: measured at 512 x 512 on two
+// cores, 1.3 s at 8 azimuths and 2.7 s at 16 (2.5 s and 5.0 s of CPU), so the largest map takes
+// about 11 s at load there. Larger maps are refused.
 inline constexpr long long kMaxHorizonTexelDirections = 1024LL * 1024LL * 16LL;
 
 }  // namespace twr
