@@ -47,26 +47,34 @@ HWY_INLINE int texLevelHeight(const TiledTexture& t, int level) { return t.level
 HWY_INLINE TextureWrap texWrap(const TiledTexture& t) { return t.wrap; }
 HWY_INLINE bool texSrgb(const TiledTexture& t) { return t.srgb; }
 
-// fetchTexelBytes per lane from the tiled index
+// The texel words of each lane from the tiled index
 // ((y / 4) blocksPerRow + x / 4) 16 + (y % 4) 4 + x % 4.
-template <typename L>
-HWY_INLINE Vec4L<LaneF> fetchTexelBytes(const TiledTexture& t, int levelIndex, LaneI x, LaneI y) {
-  static_assert(std::is_same_v<L, LaneF>);
+HWY_INLINE auto tiledTexelWords(const TiledTexture& t, int levelIndex, LaneI x, LaneI y) {
   const TiledLevel& level = t.levels[static_cast<std::size_t>(levelIndex)];
   const DI di;
-  const DU du;
   const auto three = hn::Set(di, kTexelBlockSide - 1);
   const auto row = hn::Add(hn::Mul(hn::ShiftRight<2>(y.v), hn::Set(di, level.blocksPerRow * kTexelBlockSide * kTexelBlockSide)),
                            hn::ShiftLeft<2>(hn::And(y.v, three)));
   const auto column = hn::Add(hn::ShiftLeft<4>(hn::ShiftRight<2>(x.v)), hn::And(x.v, three));
-  const auto words = hn::BitCast(du, hn::GatherIndex(di, reinterpret_cast<const std::int32_t*>(level.blocks.data()),
-                                                     hn::Add(row, column)));
-  const auto channel = [&](auto shift) HWY_ATTR {
-    const auto bytes = hn::And(hn::ShiftRight<decltype(shift)::value>(words), hn::Set(du, 0xFFu));
-    return LaneF(hn::ConvertTo(DF(), hn::BitCast(di, bytes)));
-  };
-  return Vec4L<LaneF>(channel(std::integral_constant<int, 0>()), channel(std::integral_constant<int, 8>()),
-                      channel(std::integral_constant<int, 16>()), channel(std::integral_constant<int, 24>()));
+  return hn::BitCast(DU(), hn::GatherIndex(di, reinterpret_cast<const std::int32_t*>(level.blocks.data()),
+                                           hn::Add(row, column)));
+}
+// Byte `Shift / 8` of each word, as float lanes.
+template <int Shift, typename Words>
+HWY_INLINE LaneF wordByte(Words words) {
+  const auto bytes = hn::And(hn::ShiftRight<Shift>(words), hn::Set(DU(), 0xFFu));
+  return LaneF(hn::ConvertTo(DF(), hn::BitCast(DI(), bytes)));
+}
+template <typename L>
+HWY_INLINE Vec4L<LaneF> fetchTexelBytes(const TiledTexture& t, int levelIndex, LaneI x, LaneI y) {
+  static_assert(std::is_same_v<L, LaneF>);
+  const auto words = tiledTexelWords(t, levelIndex, x, y);
+  return Vec4L<LaneF>(wordByte<0>(words), wordByte<8>(words), wordByte<16>(words), wordByte<24>(words));
+}
+template <typename L>
+HWY_INLINE LaneF fetchTexelRedByte(const TiledTexture& t, int levelIndex, LaneI x, LaneI y) {
+  static_assert(std::is_same_v<L, LaneF>);
+  return wordByte<0>(tiledTexelWords(t, levelIndex, x, y));
 }
 
 // The sRGB decode of byte values, from texture_sample.h's table (doubles rounded to float).

@@ -38,25 +38,34 @@
 #include "softrender/texture_sample-inl.h"
 
 #include <cstddef>
+#include <type_traits>
 
 TWR_LANES_BEGIN
 
 // A map read at `uv` with explicit uv differences (GLSL's textureGrad): the LOD of the
 // differences when the filter uses mipmaps, or the elliptical filter with anisotropy.
-template <typename L, typename View>
-TWR_LANE_INLINE Vec4L<L> sampleGradLanes(const View& map, const ShadeUniformsT<ScalarOf<L>>& u, const Vec2L<L>& uv,
-                                         const Vec2L<L>& dx, const Vec2L<L>& dy) {
+template <typename L, typename View, typename Texel = Vec4L<L>>
+TWR_LANE_INLINE Texel sampleGradLanes(const View& map, const ShadeUniformsT<ScalarOf<L>>& u, const Vec2L<L>& uv,
+                                      const Vec2L<L>& dx, const Vec2L<L>& dy) {
   using S = ScalarOf<L>;
-  if (u.anisotropic) return sampleTextureAnisotropicLanes<L>(map, uv, u.filter, dx, dy);
+  if (u.anisotropic) {
+    const Vec4L<L> filtered = sampleTextureAnisotropicLanes<L>(map, uv, u.filter, dx, dy);
+    if constexpr (std::is_same_v<Texel, L>) {
+      return filtered.x;
+    } else {
+      return filtered;
+    }
+  }
   const L lod = usesMipmaps(u.filter) ? quadLodLanes<L>(dx, dy, texLevelWidth(map, 0), texLevelHeight(map, 0)) : L(S(0));
-  return sampleTextureLanes<L>(map, uv, u.filter, lod);
+  return sampleTextureLanes<L, View, Texel>(map, uv, u.filter, lod);
 }
 
-// heightAt: the height in [0, 1] at uv (red channel), with the fragment's uv differences.
+// heightAt: the height in [0, 1] at uv (the red channel alone), with the fragment's uv
+// differences.
 template <typename L, typename View>
 TWR_LANE_INLINE L heightAtLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u, const Vec2L<L>& uv,
                                 const FragmentL<L>& f) {
-  return sampleGradLanes<L>(heightMap, u, uv, f.uvDxFine, f.uvDyFine).x;
+  return sampleGradLanes<L, View, L>(heightMap, u, uv, f.uvDxFine, f.uvDyFine);
 }
 
 // A lighting-space direction in the fragment's tangent frame, normalised: tangent space hands

@@ -9,6 +9,7 @@
 //   wrapTexelIndex(size, integral L) -> IntOf<L>     floor value reduced mod size, exactly
 //   nextTexelIndex(IntOf<L> i, size)                 i + 1, wrapped
 //   fetchTexelBytes<L>(view, level, IntOf<L> x, IntOf<L> y)   texel RGBA as bytes 0..255 in L
+//   fetchTexelRedByte<L>(view, level, IntOf<L> x, IntOf<L> y) its red byte alone
 //   linearFromSrgbByte(L byte)                        the sRGB decode of one byte value
 // plainly a Texture (texture_sample.h), in the fast path a tiled copy (fast_kernels.cpp).
 
@@ -32,6 +33,8 @@
 #include "scene/settings.h"
 #include "scene/texture.h"
 #include "softrender/lanes.h"
+
+#include <type_traits>
 
 TWR_LANES_BEGIN
 
@@ -132,25 +135,40 @@ TWR_LANE_INLINE Vec4L<L> texelValue(const View& texture, const Vec4L<L>& bytes) 
                   bytes.w * L(S(1) / S(255)));
 }
 
-// One level, the same for every lane: RGBA in [0, 1]. Bilinear is a lerp along u on both rows,
-// then along v: a + w (b - a) (llvmpipe fuses each into one FMA; the CPU rounds twice, about
-// one float ULP apart).
-template <typename L, typename View>
-TWR_LANE_OUTLINE Vec4L<L> sampleLevelLanes(const View& texture, int level, const Vec2L<L>& uv, bool linear) {
+// What a sample returns: every channel (Vec4L<L>), or the red one alone (L) for a height map,
+// which GLSL reads as texture(...).r. Each channel is fetched, decoded and filtered alone, so
+// the red one has the same bits either way; reading one channel saves three quarters of the
+// decoding and blending, and a march reads the height map dozens of times per pixel.
+template <typename L, typename Texel, typename View>
+TWR_LANE_INLINE Texel texelLanes(const View& texture, int level, const IntOf<L>& x, const IntOf<L>& y) {
+  using S = ScalarOf<L>;
+  if constexpr (std::is_same_v<Texel, L>) {
+    const L byte = fetchTexelRedByte<L>(texture, level, x, y);
+    return texSrgb(texture) ? L(linearFromSrgbByte(byte)) : byte * L(S(1) / S(255));
+  } else {
+    return texelValue<L>(texture, fetchTexelBytes<L>(texture, level, x, y));
+  }
+}
+
+// One level, the same for every lane: RGBA (or red) in [0, 1]. Bilinear is a lerp along u on
+// both rows, then along v: a + w (b - a) (llvmpipe fuses each into one FMA; the CPU rounds
+// twice, about one float ULP apart).
+template <typename L, typename View, typename Texel = Vec4L<L>>
+TWR_LANE_OUTLINE Texel sampleLevelLanes(const View& texture, int level, const Vec2L<L>& uv, bool linear) {
   const int width = texLevelWidth(texture, level), height = texLevelHeight(texture, level);
   const TextureWrap wrap = texWrap(texture);
   if (!linear) {
-    return texelValue<L>(texture, fetchTexelBytes<L>(texture, level, (nearestTexelLanes<L>)(uv.x, width, wrap),
-                                                     (nearestTexelLanes<L>)(uv.y, height, wrap)));
+    return (texelLanes<L, Texel>)(texture, level, (nearestTexelLanes<L>)(uv.x, width, wrap),
+                                  (nearestTexelLanes<L>)(uv.y, height, wrap));
   }
   const AxisFootprintL<L> ax = (linearAxisLanes<L>)(uv.x, width, wrap);
   const AxisFootprintL<L> ay = (linearAxisLanes<L>)(uv.y, height, wrap);
-  const Vec4L<L> t00 = texelValue<L>(texture, fetchTexelBytes<L>(texture, level, ax.i0, ay.i0));
-  const Vec4L<L> t10 = texelValue<L>(texture, fetchTexelBytes<L>(texture, level, ax.i1, ay.i0));
-  const Vec4L<L> t01 = texelValue<L>(texture, fetchTexelBytes<L>(texture, level, ax.i0, ay.i1));
-  const Vec4L<L> t11 = texelValue<L>(texture, fetchTexelBytes<L>(texture, level, ax.i1, ay.i1));
-  const Vec4L<L> bottomRow = t00 + (t10 - t00) * ax.weight;
-  const Vec4L<L> topRow = t01 + (t11 - t01) * ax.weight;
+  const Texel t00 = (texelLanes<L, Texel>)(texture, level, ax.i0, ay.i0);
+  const Texel t10 = (texelLanes<L, Texel>)(texture, level, ax.i1, ay.i0);
+  const Texel t01 = (texelLanes<L, Texel>)(texture, level, ax.i0, ay.i1);
+  const Texel t11 = (texelLanes<L, Texel>)(texture, level, ax.i1, ay.i1);
+  const Texel bottomRow = t00 + (t10 - t00) * ax.weight;
+  const Texel topRow = t01 + (t11 - t01) * ax.weight;
   return bottomRow + (topRow - bottomRow) * ay.weight;
 }
 
@@ -159,24 +177,28 @@ TWR_LANE_OUTLINE Vec4L<L> sampleLevelLanes(const View& texture, int level, const
 // first or its second level: a vector straddling a level boundary reads 3 levels for trilinear,
 // not 4. One level per lane is the pair (level, level).
 template <typename L>
-TWR_LANE_INLINE Vec4L<L> selectVec4(const MaskOf<L>& mask, const Vec4L<L>& a, const Vec4L<L>& b) {
+TWR_LANE_INLINE Vec4L<L> selectTexel(const MaskOf<L>& mask, const Vec4L<L>& a, const Vec4L<L>& b) {
   return Vec4L<L>(select(mask, a.x, b.x), select(mask, a.y, b.y), select(mask, a.z, b.z), select(mask, a.w, b.w));
 }
-template <typename L, typename View>
+template <typename L>
+TWR_LANE_INLINE L selectTexel(const MaskOf<L>& mask, const L& a, const L& b) {
+  return select(mask, a, b);
+}
+template <typename L, typename View, typename Texel>
 TWR_LANE_INLINE void sampleLevelPairLanes(const View& texture, const L& level0, const L& level1, const Vec2L<L>& uv,
-                                          bool linear, Vec4L<L>& s0, Vec4L<L>& s1) {
+                                          bool linear, Texel& s0, Texel& s1) {
   using S = ScalarOf<L>;
   const int lowest = static_cast<int>(lowestLane(level0));
   const int highest = static_cast<int>(highestLane(level1));
-  s0 = (sampleLevelLanes<L>)(texture, lowest, uv, linear);
+  s0 = (sampleLevelLanes<L, View, Texel>)(texture, lowest, uv, linear);
   s1 = s0;
   for (int l = lowest + 1; l <= highest; ++l) {
     const L here(static_cast<S>(l));
     const auto first = level0 == here, second = level1 == here;
     if (!anyOf(first | second)) continue;
-    const Vec4L<L> r = (sampleLevelLanes<L>)(texture, l, uv, linear);
-    s0 = (selectVec4<L>)(first, r, s0);
-    s1 = (selectVec4<L>)(second, r, s1);
+    const Texel r = (sampleLevelLanes<L, View, Texel>)(texture, l, uv, linear);
+    s0 = (selectTexel<L>)(first, r, s0);
+    s1 = (selectTexel<L>)(second, r, s1);
   }
 }
 
@@ -200,23 +222,22 @@ TWR_LANE_INLINE L quadLodLanes(const Vec2L<L>& dUvDx, const Vec2L<L>& dUvDy, int
 // lod <= 0, is level 0 with the same texel filter). *_mipmap_nearest: level rint(lod);
 // *_mipmap_linear: levels floor(lod) and the next, blended by frac(lod) (a + f (b - a)).
 // Levels clamp to the chain the texture has.
-template <typename L, typename View>
-TWR_LANE_OUTLINE Vec4L<L> sampleTextureLanes(const View& texture, const Vec2L<L>& uvIn, TextureFilter filter,
-                                            const L& lod) {
+template <typename L, typename View, typename Texel = Vec4L<L>>
+TWR_LANE_OUTLINE Texel sampleTextureLanes(const View& texture, const Vec2L<L>& uvIn, TextureFilter filter, const L& lod) {
   using S = ScalarOf<L>;
   const Vec2L<L> uv((sanitizedCoord<L>)(uvIn.x), (sanitizedCoord<L>)(uvIn.y));
   const bool linear = texelsLinear(filter);
   const int last = texLevelCount(texture) - 1;
-  Vec4L<L> result;
+  Texel result;
   if (!usesMipmaps(filter) || last == 0) {
-    result = (sampleLevelLanes<L>)(texture, 0, uv, linear);
+    result = (sampleLevelLanes<L, View, Texel>)(texture, 0, uv, linear);
   } else {
     const L zero(S(0)), lastL(static_cast<S>(last));
     const L clamped = minOf(lod, lastL);
-    Vec4L<L> s0, s1;
+    Texel s0, s1;
     if (!levelsLinear(filter)) {
       const L level = minOf(maxOf(roundEvenOf(clamped), zero), lastL);
-      (sampleLevelPairLanes<L>)(texture, level, level, uv, linear, s0, s1);
+      (sampleLevelPairLanes<L, View, Texel>)(texture, level, level, uv, linear, s0, s1);
       result = s0;
     } else {
       const L floorLod = floorOf(clamped);
@@ -225,7 +246,7 @@ TWR_LANE_OUTLINE Vec4L<L> sampleTextureLanes(const View& texture, const Vec2L<L>
       const L level0 = select(below, zero, select(atLast, lastL, floorLod));
       const L fraction = select(below | atLast, zero, clamped - floorLod);
       const L level1 = minOf(level0 + L(S(1)), lastL);
-      (sampleLevelPairLanes<L>)(texture, level0, level1, uv, linear, s0, s1);
+      (sampleLevelPairLanes<L, View, Texel>)(texture, level0, level1, uv, linear, s0, s1);
       result = s0 + (s1 - s0) * fraction;
     }
   }
@@ -330,7 +351,7 @@ TWR_LANE_OUTLINE Vec4L<L> sampleEwaLevelLanes(const View& texture, int level, co
   const auto empty = total == zero;
   if (!anyOf(empty)) return filtered;
   // No weight at all: llvmpipe falls back to bilinear on the level.
-  return (selectVec4<L>)(empty, (sampleLevelLanes<L>)(texture, level, uv, true), filtered);
+  return (selectTexel<L>)(empty, (sampleLevelLanes<L>)(texture, level, uv, true), filtered);
 }
 
 // The anisotropic sample: each lane's level (see above), each distinct level filtered once.
@@ -355,7 +376,7 @@ TWR_LANE_OUTLINE Vec4L<L> sampleTextureAnisotropicLanes(const View& texture, con
   for (int l = lowest + 1; l <= highest; ++l) {
     const auto here = level == L(static_cast<S>(l));
     if (!anyOf(here)) continue;
-    result = (selectVec4<L>)(here, (sampleEwaLevelLanes<L>)(texture, l, uv, dUvDx, dUvDy, here), result);
+    result = (selectTexel<L>)(here, (sampleEwaLevelLanes<L>)(texture, l, uv, dUvDx, dUvDy, here), result);
   }
   return result;
 }

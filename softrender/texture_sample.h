@@ -55,6 +55,11 @@ inline Vec4T<L> fetchTexelBytes(const Texture& texture, int level, std::int32_t 
                                    static_cast<std::size_t>(x)) * 4];
   return Vec4T<L>(t[0], t[1], t[2], t[3]);
 }
+template <typename L>
+inline L fetchTexelRedByte(const Texture& texture, int level, std::int32_t x, std::int32_t y) {
+  return L(texture.levelTexels(level)[(static_cast<std::size_t>(y) * static_cast<std::size_t>(texture.levelWidth(level)) +
+                                       static_cast<std::size_t>(x)) * 4]);
+}
 // sRGB byte value -> linear, GL's formula in double rounded to the lane type.
 const std::array<double, 256>& srgbDecodeTable();
 template <ScalarLane S>
