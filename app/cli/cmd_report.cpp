@@ -96,7 +96,7 @@ const bool registered = registerCommand(60, [](CLI::App& app) {
       "against the displaced heightfield mesh on interior pixels (silhouettes counted apart), and a "
       "parallax_occlusion frame at 1280x720 against the normal-mapped one. Writes DIR/report.html (charts, "
       "tables, readings), DIR/results.csv and the height-field pictures DIR/height_fields_*.png. Progress on "
-      "stderr. About three minutes by default, about half a minute with --quick.");
+      "stderr. Two to three minutes by default, about 20 seconds with --quick.");
   cmd->add_option("--out,-o", args->outDir, "Output folder (created)")->capture_default_str();
   cmd->add_flag("--quick", args->quick,
                  "Smaller images, fewer settings and frames (height fields: two layer counts, a one-sample reference)");
