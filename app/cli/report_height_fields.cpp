@@ -19,7 +19,7 @@ constexpr float kFovDeg = 45.0f;         // vertical
 constexpr float kNear = 0.05f, kFar = 10.0f;  // world units
 // The light in the plane's own frame (normal +Y), world units: 42 degrees from the normal.
 const glm::vec3 kLightInPlane{0.6f, 1.2f, 0.9f};
-constexpr float kAmbient = 0.12f;
+constexpr float kAmbient = 0.12f;  // ambient light, linear RGB (grey)
 // Transparent background: the supersampled reference then holds its coverage in alpha, which
 // compareInterior uses to leave its edge pixels out (compare/interior.h).
 const glm::vec4 kBackground{0.05f, 0.05f, 0.08f, 0.0f};
