@@ -1,4 +1,6 @@
-// twinraster-assets: generates the brick textures in assets/textures deterministically.
+// twinraster-assets: generates the textures in assets/textures deterministically: the bricks
+// (diffuse, height, normal, specular) and the blocks, a height field with vertical walls
+// (height, diffuse) that the report's height-field section measures steep parallax on.
 //
 // Everything is computed from integer hashes with a fixed seed and IEEE +, -, *, /, sqrt
 // (no std::rand, no libm transcendental functions), so the PNGs are identical on every run;
@@ -60,6 +62,25 @@ constexpr double kMortarColour[3] = {0.66, 0.63, 0.58};
 constexpr double kBrickTintVariation = 0.22;  // per brick brightness, +-
 constexpr double kBrickSpecular = 0.28;
 constexpr double kMortarSpecular = 0.05;
+
+// ---- blocks: raised rectangular blocks with vertical walls on a flat floor ----
+// One block per cell of a kBlockCells x kBlockCells grid (period 1 in u and v). Each block's
+// half-extent along u and v is drawn from [kBlockMinHalf, kBlockMaxHalf] of the cell and its
+// centre shifted within the slack, so every block lies inside its cell; its height from
+// [kBlockMinHeight, 1]. A texel belongs to a block when its centre lies inside it, so every
+// wall is a one-texel step from the floor (height 0) to the block's height: the steepest wall
+// a height map holds.
+constexpr int kBlockCells = 5;                 // cells per texture side
+constexpr double kBlockMinHalf = 0.24;         // of the cell side
+constexpr double kBlockMaxHalf = 0.40;         // of the cell side; < 0.5 keeps a floor margin
+constexpr double kBlockMinHeight = 0.45;       // unitless, the floor is 0
+constexpr double kFloorCheckerUv = 1.0 / 40.0; // floor checker square, texture units
+constexpr double kFloorGreys[2] = {0.42, 0.58};
+constexpr double kBlockRimUv = 0.006;          // darker band inside each block's edge, texture units
+constexpr double kBlockRimShade = 0.55;        // rim colour = top colour times this
+// Block top colours (linear RGB), picked per block.
+constexpr double kBlockPalette[5][3] = {
+    {0.70, 0.22, 0.16}, {0.20, 0.45, 0.70}, {0.85, 0.70, 0.20}, {0.25, 0.60, 0.30}, {0.60, 0.35, 0.65}};
 
 constexpr std::uint32_t kSeed = 0x7b1c5a3du;  // fixed: the assets are committed
 constexpr int kDefaultSize = 512;             // pixels
@@ -207,12 +228,70 @@ BrickTextures generate(int size) {
   return t;
 }
 
+struct BlockTextures {
+  Image height, diffuse;
+};
+
+// The block of cell (i, j) in texture units, and its height.
+struct Block {
+  double u0, u1, v0, v1;  // [u0, u1) x [v0, v1), inside the cell
+  double height;
+  int colour;             // index into kBlockPalette
+};
+
+Block blockOfCell(int i, int j) {
+  const double cell = 1.0 / kBlockCells;
+  const auto random = [&](std::uint32_t channel) {
+    return unit(hash3(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j), (kSeed + 0x9e37u) ^ channel));
+  };
+  const double halfU = cell * (kBlockMinHalf + (kBlockMaxHalf - kBlockMinHalf) * random(1u));
+  const double halfV = cell * (kBlockMinHalf + (kBlockMaxHalf - kBlockMinHalf) * random(2u));
+  const double centreU = cell * (i + 0.5) + (0.5 * cell - halfU) * (2.0 * random(3u) - 1.0);
+  const double centreV = cell * (j + 0.5) + (0.5 * cell - halfV) * (2.0 * random(4u) - 1.0);
+  Block b;
+  b.u0 = centreU - halfU;
+  b.u1 = centreU + halfU;
+  b.v0 = centreV - halfV;
+  b.v1 = centreV + halfV;
+  b.height = kBlockMinHeight + (1.0 - kBlockMinHeight) * random(5u);
+  b.colour = static_cast<int>(hash3(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j), kSeed ^ 0x51u) % 5u);
+  return b;
+}
+
+BlockTextures generateBlocks(int size) {
+  BlockTextures t{twr::makeImage(size, size), twr::makeImage(size, size)};
+  for (int y = 0; y < size; ++y) {
+    for (int x = 0; x < size; ++x) {
+      const double u = (x + 0.5) / size;
+      const double v = 1.0 - (y + 0.5) / size;
+      const int i = std::min(static_cast<int>(u * kBlockCells), kBlockCells - 1);
+      const int j = std::min(static_cast<int>(v * kBlockCells), kBlockCells - 1);
+      const Block b = blockOfCell(i, j);
+      const bool inside = u >= b.u0 && u < b.u1 && v >= b.v0 && v < b.v1;
+      const double h = inside ? b.height : 0.0;
+      setPixel(t.height, x, y, h, h, h);
+      if (inside) {
+        const double edge = std::min(std::min(u - b.u0, b.u1 - u), std::min(v - b.v0, b.v1 - v));
+        const double shade = edge < kBlockRimUv ? kBlockRimShade : 1.0;
+        const double* c = kBlockPalette[b.colour];
+        setPixel(t.diffuse, x, y, c[0] * shade, c[1] * shade, c[2] * shade);
+      } else {
+        const int checker = (static_cast<int>(std::floor(u / kFloorCheckerUv)) + static_cast<int>(std::floor(v / kFloorCheckerUv))) & 1;
+        const double g = kFloorGreys[checker];
+        setPixel(t.diffuse, x, y, g, g, g);
+      }
+    }
+  }
+  return t;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{
       "twinraster-assets: writes the brick textures (bricks_diffuse.png, bricks_height.png, "
-      "bricks_normal.png, bricks_specular.png) deterministically into DIR.\n"
+      "bricks_normal.png, bricks_specular.png) and the blocks, a height field with vertical walls "
+      "(blocks_height.png, blocks_diffuse.png), deterministically into DIR.\n"
       "The normal map is tangent space, +x = +u, +y = +v (up in the image), encoded (n + 1) / 2.\n"
       "Exit codes: 0 ok, 2 bad arguments or a file that cannot be written."};
   std::string outDir;
@@ -230,11 +309,14 @@ int main(int argc, char** argv) {
 
   try {
     const BrickTextures textures = generate(size);
+    const BlockTextures blocks = generateBlocks(size);
     const std::filesystem::path dir(outDir);
     const std::pair<const char*, const Image*> files[] = {{"bricks_diffuse.png", &textures.diffuse},
                                                           {"bricks_height.png", &textures.height},
                                                           {"bricks_normal.png", &textures.normal},
-                                                          {"bricks_specular.png", &textures.specular}};
+                                                          {"bricks_specular.png", &textures.specular},
+                                                          {"blocks_height.png", &blocks.height},
+                                                          {"blocks_diffuse.png", &blocks.diffuse}};
     for (const auto& [name, image] : files) {
       const std::string path = (dir / name).string();
       twr::savePng(path, *image);

@@ -1,7 +1,10 @@
 #include "scene/height_field.h"
 
+#include "scene/errors.h"
+
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace twr {
 
@@ -43,6 +46,18 @@ AxisTaps linearTaps(double c, int size, TextureWrap wrap) {
   return taps;
 }
 
+// Texel index i of an axis of `size` texels, one step past either end, through the wrap mode.
+int wrappedIndex(int i, int size, TextureWrap wrap) {
+  if (i >= 0 && i < size) return i;
+  if (wrap == TextureWrap::Repeat) return ((i % size) + size) % size;
+  if (wrap == TextureWrap::MirroredRepeat) return i < 0 ? std::min(-i - 1, size - 1) : std::max(2 * size - i - 1, 0);
+  return std::clamp(i, 0, size - 1);
+}
+
+std::uint8_t byteFromUnit(double c) {
+  return static_cast<std::uint8_t>(std::floor(std::clamp(c, 0.0, 1.0) * 255.0 + 0.5));
+}
+
 }  // namespace
 
 double heightAt(const Texture& heightMap, glm::dvec2 uv) {
@@ -60,6 +75,50 @@ double heightAt(const Texture& heightMap, glm::dvec2 uv) {
   const double rowV0 = lerp(value(u.i0, v.i0), value(u.i1, v.i0), u.weight);
   const double rowV1 = lerp(value(u.i0, v.i1), value(u.i1, v.i1), u.weight);
   return lerp(rowV0, rowV1, v.weight);
+}
+
+Texture normalMapFromHeight(const Texture& heightMap, double heightScale) {
+  const int width = heightMap.width, height = heightMap.height;
+  if (width <= 0 || height <= 0 ||
+      heightMap.rgba.size() < 4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height)) {
+    throw InputError("normal map from height: " + heightMap.path + " holds no texels");
+  }
+  if (!(heightScale >= 0.0) || !std::isfinite(heightScale)) {
+    throw InputError("normal map from height: height_scale must be a finite number >= 0, got " +
+                     std::to_string(heightScale));
+  }
+  const TextureOptions& options = heightMap.options;
+  const auto value = [&](int x, int y) {
+    const double red = heightMap.texel(wrappedIndex(x, width, options.wrap), wrappedIndex(y, height, options.wrap))[0] / 255.0;
+    return options.srgb ? linearFromSrgb(red) : red;
+  };
+  Texture normal;
+  normal.path = heightMap.path + " (normals at height_scale " + std::to_string(heightScale) + ")";
+  normal.width = width;
+  normal.height = height;
+  normal.rgba.resize(4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+  normal.options.wrap = options.wrap;
+  normal.options.uvScale = options.uvScale;
+  normal.options.uvOffset = options.uvOffset;
+  normal.formatName = "derived from a height map";
+  // Central differences over two texels: 2 / width in u, 2 / height in v (rows bottom first,
+  // so row y + 1 is higher v).
+  const double uvAcrossU = 2.0 / width, uvAcrossV = 2.0 / height;
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const double dhDu = (value(x + 1, y) - value(x - 1, y)) / uvAcrossU;
+      const double dhDv = (value(x, y + 1) - value(x, y - 1)) / uvAcrossV;
+      const double nx = -heightScale * dhDu, ny = -heightScale * dhDv;
+      const double length = std::sqrt(nx * nx + ny * ny + 1.0);  // >= 1: never zero
+      std::uint8_t* texel = &normal.rgba[4 * (static_cast<std::size_t>(y) * width + x)];
+      texel[0] = byteFromUnit(0.5 * (nx / length + 1.0));
+      texel[1] = byteFromUnit(0.5 * (ny / length + 1.0));
+      texel[2] = byteFromUnit(0.5 * (1.0 / length + 1.0));
+      texel[3] = 255;
+    }
+  }
+  buildMipChain(normal);
+  return normal;
 }
 
 }  // namespace twr

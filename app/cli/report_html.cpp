@@ -110,7 +110,26 @@ Axis logAxis(double lo, double hi) {
 
 const char* colourOf(const std::string& backend) { return backend == "gl" ? "#c0392b" : "#1f5fa8"; }
 
-std::string chartSvg(const KnobResult& knob) {
+// The short name a height-field view's chart writes beside a point ("POM 8-32").
+std::string shortHeightLabel(const ReportPoint& p) {
+  if (!p.heightField) return p.setting;
+  const HeightFieldPointInfo& h = *p.heightField;
+  std::string name = h.method;
+  if (h.method == kTrueGeometry) name = "mesh";
+  else if (h.method == "normal_map") name = "normal";
+  else if (h.method == "bump_blinn") name = "blinn";
+  else if (h.method == "bump_emboss") name = "emboss";
+  else if (h.method == "parallax_offset_limited") name = "offset-limited";
+  else if (h.method == "steep_parallax") name = "steep";
+  else if (h.method == "parallax_occlusion") name = "POM";
+  if (h.layersMin > 0) name += " " + std::to_string(h.layersMin) + "-" + std::to_string(h.layersMax);
+  return name;
+}
+
+// heightView: a height-field view, whose points are methods rather than steps of one knob:
+// no lines between them, short labels on the CPU points only (GL's sit beside them; every
+// point names itself in its tooltip), and a label with no free spot is left out.
+std::string chartSvg(const KnobResult& knob, bool heightView = false) {
   std::vector<const ReportPoint*> points;
   for (const ReportPoint& p : knob.points) points.push_back(&p);
   if (points.empty()) return "";
@@ -156,6 +175,7 @@ std::string chartSvg(const KnobResult& knob) {
 
   // One polyline per backend in sweep order, then the points with their labels.
   for (const std::string backend : {"cpu", "gl"}) {
+    if (heightView) break;
     std::string path;
     for (const ReportPoint* p : points) {
       if (p->backend != backend) continue;
@@ -184,9 +204,11 @@ std::string chartSvg(const KnobResult& knob) {
     }
     s << "<title>" << escape(p->backend + " " + p->setting) << ": " << msText(p->msMin) << " ms, RMSE "
       << num(p->vsReference.rmse, 2) << "</title>" << (gl ? "</rect>" : "</circle>") << "\n";
+    if (heightView && gl) continue;
+    const std::string label = heightView ? shortHeightLabel(*p) : p->setting;
     // The first free spot for the label (baseline positions): right of the point above it,
     // below it, then further out, then the same on the left; CPU tries above first, GL below.
-    const double w = kLabelCharWidth * static_cast<double>(p->setting.size());
+    const double w = kLabelCharWidth * static_cast<double>(label.size());
     const double above = Y - 8, below = Y + 16, farAbove = Y - 8 - kLabelHeight, farBelow = Y + 16 + kLabelHeight;
     const double first = gl ? below : above, second = gl ? above : below;
     const double third = gl ? farBelow : farAbove, fourth = gl ? farAbove : farBelow;
@@ -197,16 +219,19 @@ std::string chartSvg(const KnobResult& knob) {
       return LabelBox{left, baseline - kLabelHeight + 2, left + w, baseline + 2};
     };
     LabelBox chosen = boxAt(spots[0].first, spots[0].second);
+    bool free = false;
     for (const auto& [left, baseline] : spots) {
       const LabelBox box = boxAt(left, baseline);
       if (std::none_of(placed.begin(), placed.end(), [&](const LabelBox& b) { return b.overlaps(box); })) {
         chosen = box;
+        free = true;
         break;
       }
     }
+    if (heightView && !free) continue;
     placed.push_back(chosen);
     s << "<text x=\"" << num(chosen.x0, 1) << "\" y=\"" << num(chosen.y1 - 2, 1) << "\" class=\"label\" fill=\""
-      << colourOf(p->backend) << "\">" << escape(p->setting) << "</text>\n";
+      << colourOf(p->backend) << "\">" << escape(label) << "</text>\n";
   }
   // Legend.
   const double lx = kChartWidth - kMarginRight + 16, ly = kMarginTop + 10;
@@ -267,6 +292,114 @@ std::string basisTable(const ReportData& data) {
   return s.str();
 }
 
+// Paragraphs of a reading written with "\n" between them.
+std::string paragraphs(const std::string& text) {
+  std::string out;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    const std::string part = text.substr(start, end - start);
+    if (!part.empty()) out += "<p>" + escape(part) + "</p>";
+    start = end + 1;
+  }
+  return out;
+}
+
+// One view's points: interior error, silhouettes apart, CPU against GL.
+std::string heightPointsTable(const KnobResult& knob) {
+  std::ostringstream s;
+  s << "<table>\n<thead><tr><th>setting</th><th>backend</th><th>ms median</th><th>ms min</th><th>frames</th>"
+       "<th>interior RMSE</th><th>mean abs</th><th>max diff</th><th>&gt;1 level %</th><th>interior px</th>"
+       "<th>silhouette: this only</th><th>silhouette: reference only</th><th>partial px</th>"
+       "<th>CPU vs GL RMSE</th><th>CPU vs GL max</th></tr></thead>\n<tbody>\n";
+  for (const ReportPoint& p : knob.points) {
+    const CompareMetrics& m = p.vsReference;
+    s << "<tr><td>" << escape(p.setting) << "</td><td class=\"" << (p.backend == "gl" ? "gl" : "cpu") << "\">"
+      << escape(p.backend) << "</td><td>" << msText(p.msMedian) << "</td><td>" << msText(p.msMin) << "</td><td>"
+      << p.frames << "</td><td>" << num(m.rmse, 2) << "</td><td>" << num(m.meanAbsDiff, 2) << "</td><td>"
+      << m.maxAbsDiff << "</td><td>" << num(m.over1Pct(), 2) << "</td>";
+    if (p.heightField) {
+      s << "<td>" << p.heightField->interiorPixels << "</td><td>" << p.heightField->silhouetteApproxOnly << "</td><td>"
+        << p.heightField->silhouetteReferenceOnly << "</td><td>" << p.heightField->partialPixels << "</td>";
+    } else {
+      s << "<td></td><td></td><td></td><td></td>";
+    }
+    if (p.cpuVsGl) {
+      s << "<td>" << num(p.cpuVsGl->rmse, 2) << "</td><td>" << p.cpuVsGl->maxAbsDiff << "</td>";
+    } else {
+      s << "<td></td><td></td>";
+    }
+    s << "</tr>\n";
+  }
+  s << "</tbody></table>\n";
+  return s.str();
+}
+
+// One field at a glance: a row per setting, a column per angle, each cell the CPU's interior
+// RMSE and fastest frame; the best RMSE of each column in bold.
+std::string heightOverviewTable(const HeightFieldSection& section, const std::string& field) {
+  std::vector<const HeightFieldView*> views;
+  for (const HeightFieldView& v : section.views)
+    if (v.field == field) views.push_back(&v);
+  if (views.empty()) return "";
+  std::vector<std::string> settings;
+  for (const ReportPoint& p : views.front()->result.points)
+    if (p.backend == "cpu") settings.push_back(p.setting);
+  std::vector<double> best(views.size(), -1.0);
+  for (std::size_t c = 0; c < views.size(); ++c) {
+    for (const ReportPoint& p : views[c]->result.points) {
+      if (p.backend != "cpu" || !p.heightField || p.heightField->method == kTrueGeometry) continue;
+      if (best[c] < 0.0 || p.vsReference.rmse < best[c]) best[c] = p.vsReference.rmse;
+    }
+  }
+  std::ostringstream s;
+  s << "<table>\n<thead><tr><th>" << escape(field) << ": CPU interior RMSE (levels) / fastest frame (ms)</th>";
+  for (const HeightFieldView* v : views) s << "<th>" << v->angleDeg << "&deg;</th>";
+  s << "</tr></thead>\n<tbody>\n";
+  for (const std::string& setting : settings) {
+    s << "<tr><td>" << escape(setting) << "</td>";
+    for (std::size_t c = 0; c < views.size(); ++c) {
+      const ReportPoint* found = nullptr;
+      for (const ReportPoint& p : views[c]->result.points)
+        if (p.backend == "cpu" && p.setting == setting) found = &p;
+      if (!found) {
+        s << "<td></td>";
+        continue;
+      }
+      const bool isBest = found->heightField && found->heightField->method != kTrueGeometry &&
+                          found->vsReference.rmse == best[c];
+      s << "<td>" << (isBest ? "<b>" : "") << num(found->vsReference.rmse, 2) << (isBest ? "</b>" : "") << " / "
+        << msText(found->msMin) << "</td>";
+    }
+    s << "</tr>\n";
+  }
+  s << "</tbody></table>\n";
+  return s.str();
+}
+
+std::string heightFieldsHtml(const HeightFieldSection& section) {
+  std::ostringstream s;
+  s << "<h2 id=\"height_fields\">Height fields: each method against the displaced surface</h2>\n";
+  s << "<dl><dt>Trade</dt><dd>" << escape(section.question) << "</dd><dt>Reference</dt><dd>"
+    << escape(section.reference) << "</dd><dt>Scene</dt><dd>" << escape(section.scene) << "</dd></dl>\n";
+  s << "<div class=\"reading\"><b>" << escape(section.summary) << "</b>" << paragraphs(section.reading) << "</div>\n";
+  if (!section.measured) return s.str();
+  for (const std::string& image : section.images) {
+    s << "<figure><img src=\"" << escape(image) << "\" alt=\"" << escape(image)
+      << "\" style=\"max-width:100%\"><figcaption class=\"small\">" << escape(image) << ": "
+      << escape(section.imagesCaption) << "</figcaption></figure>\n";
+  }
+  std::vector<std::string> fields;
+  for (const HeightFieldView& v : section.views)
+    if (std::find(fields.begin(), fields.end(), v.field) == fields.end()) fields.push_back(v.field);
+  for (const std::string& field : fields) s << heightOverviewTable(section, field);
+  for (const HeightFieldView& v : section.views) {
+    s << "<h3 id=\"" << v.result.id << "\">" << escape(v.result.title) << "</h3>\n";
+    s << chartSvg(v.result, true) << heightPointsTable(v.result);
+  }
+  return s.str();
+}
+
 constexpr const char* kStyle = R"(body{font:15px/1.45 system-ui,-apple-system,"Segoe UI",sans-serif;color:#1d1d24;
 max-width:1080px;margin:24px auto;padding:0 18px}h1{font-size:26px;margin-bottom:4px}h2{font-size:20px;
 margin-top:38px;border-bottom:1px solid #ddd;padding-bottom:4px}.meta{color:#555;font-size:13px}
@@ -303,6 +436,7 @@ void writeReportHtml(const std::string& path, const ReportData& data) {
     s << "<li><a href=\"#" << knob.id << "\"><b>" << escape(knob.title) << "</b></a>: " << escape(knob.summary)
       << "</li>\n";
   }
+  s << "<li><a href=\"#height_fields\"><b>Height fields</b></a>: " << escape(data.heightFields.summary) << "</li>\n";
   s << "<li><a href=\"#orthonormal_basis\"><b>Orthonormal bases</b></a>: " << escape(data.basisSummary) << "</li>\n";
   s << "</ul>\n";
 
@@ -313,6 +447,8 @@ void writeReportHtml(const std::string& path, const ReportData& data) {
     s << "<div class=\"reading\"><b>" << escape(knob.summary) << "</b><br>" << escape(knob.reading) << "</div>\n";
     s << chartSvg(knob) << pointsTable(knob);
   }
+
+  s << heightFieldsHtml(data.heightFields);
 
   s << "<h2 id=\"orthonormal_basis\">Orthonormal bases from a normal</h2>\n";
   s << "<p>Four ways to build two unit vectors b1, b2 with b1 x b2 = n from a unit normal alone, in float as a shader "
@@ -339,37 +475,58 @@ void writeResultsCsv(const std::string& path, const ReportData& data) {
   s << "knob,setting,backend,ms_median,ms_min,frames,rmse_levels,psnr_db,max_abs_diff,mean_abs_diff,over1_pct,"
        "coverage_mismatch,covered_backend,covered_reference,cpu_vs_gl_rmse,cpu_vs_gl_max_abs_diff,"
        "cpu_vs_gl_coverage_mismatch,vs_exact_setting,vs_exact_rmse,vs_exact_max_abs_diff,basis_max_error,"
-       "basis_max_error_near_minus_z,basis_non_finite,ns_per_basis\n";
+       "basis_max_error_near_minus_z,basis_non_finite,ns_per_basis,height_method,height_layers_min,"
+       "height_layers_max,interior_pixels,silhouette_backend_only,silhouette_reference_only,partial_pixels\n";
+  constexpr int kHeightColumns = 7;  // height_method .. partial_pixels
   auto quoted = [](const std::string& text) {
     std::string out = "\"";
     for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
     return out + "\"";
   };
-  for (const KnobResult& knob : data.knobs) {
-    for (const ReportPoint& p : knob.points) {
-      const CompareMetrics& m = p.vsReference;
-      s << knob.id << "," << quoted(p.setting) << "," << quoted(p.backend) << "," << num(p.msMedian, 4) << ","
-        << num(p.msMin, 4) << "," << p.frames << "," << num(m.rmse, 4) << "," << num(m.psnr, 3) << ","
-        << m.maxAbsDiff << "," << num(m.meanAbsDiff, 4) << "," << num(m.over1Pct(), 4) << "," << m.coverageMismatch
-        << "," << m.coveredCpu << "," << m.coveredGl << ",";
-      if (p.cpuVsGl) {
-        s << num(p.cpuVsGl->rmse, 4) << "," << p.cpuVsGl->maxAbsDiff << "," << p.cpuVsGl->coverageMismatch;
-      } else {
-        s << ",,";
-      }
-      if (p.vsExactSetting) {
-        s << "," << quoted(p.exactSetting) << "," << num(p.vsExactSetting->rmse, 4) << ","
-          << p.vsExactSetting->maxAbsDiff;
-      } else {
-        s << ",,,";
-      }
-      s << ",,,,\n";
+  auto pointRow = [&](const std::string& knobId, const ReportPoint& p) {
+    const CompareMetrics& m = p.vsReference;
+    s << knobId << "," << quoted(p.setting) << "," << quoted(p.backend) << "," << num(p.msMedian, 4) << ","
+      << num(p.msMin, 4) << "," << p.frames << "," << num(m.rmse, 4) << "," << num(m.psnr, 3) << ","
+      << m.maxAbsDiff << "," << num(m.meanAbsDiff, 4) << "," << num(m.over1Pct(), 4) << "," << m.coverageMismatch
+      << "," << m.coveredCpu << "," << m.coveredGl << ",";
+    if (p.cpuVsGl) {
+      s << num(p.cpuVsGl->rmse, 4) << "," << p.cpuVsGl->maxAbsDiff << "," << p.cpuVsGl->coverageMismatch;
+    } else {
+      s << ",,";
     }
+    if (p.vsExactSetting) {
+      s << "," << quoted(p.exactSetting) << "," << num(p.vsExactSetting->rmse, 4) << ","
+        << p.vsExactSetting->maxAbsDiff;
+    } else {
+      s << ",,,";
+    }
+    s << ",,,,";
+    if (p.heightField) {
+      const HeightFieldPointInfo& h = *p.heightField;
+      s << "," << quoted(h.method) << "," << h.layersMin << "," << h.layersMax << "," << h.interiorPixels << ","
+        << h.silhouetteApproxOnly << "," << h.silhouetteReferenceOnly << "," << h.partialPixels;
+    } else {
+      s << std::string(kHeightColumns, ',');
+    }
+    s << "\n";
+  };
+  for (const KnobResult& knob : data.knobs)
+    for (const ReportPoint& p : knob.points) pointRow(knob.id, p);
+  for (const HeightFieldView& view : data.heightFields.views)
+    for (const ReportPoint& p : view.result.points) pointRow(view.result.id, p);
+  const HeightFieldCost& cost = data.heightFields.cost720p;
+  if (cost.measured) {
+    // Timing only (no reference at 720p): every metric cell empty.
+    s << "height_fields_cost_720p,\"normal_map\",\"cpu\"," << num(cost.normalMapMsMedian, 4) << ","
+      << num(cost.normalMapMs, 4) << "," << cost.frames << std::string(18 + kHeightColumns, ',') << "\n";
+    s << "height_fields_cost_720p," << quoted(cost.pomSetting) << ",\"cpu\"," << num(cost.pomMsMedian, 4) << ","
+      << num(cost.pomMs, 4) << "," << cost.frames << std::string(18 + kHeightColumns, ',') << "\n";
   }
   for (const BasisRow& r : data.bases) {
-    // 17 empty cells: ms_median .. vs_exact_max_abs_diff.
+    // 17 empty cells: ms_median .. vs_exact_max_abs_diff; kHeightColumns more at the end.
     s << "orthonormal_basis," << toString(r.method) << ",cpu" << std::string(17, ',') << "," << sci(r.stats.maxError) << ","
-      << sci(r.stats.maxErrorNearMinusZ) << "," << r.stats.nonFinite << "," << num(r.nsPerBasis, 3) << "\n";
+      << sci(r.stats.maxErrorNearMinusZ) << "," << r.stats.nonFinite << "," << num(r.nsPerBasis, 3)
+      << std::string(kHeightColumns, ',') << "\n";
   }
   std::ofstream file(path, std::ios::binary);
   file << s.str();

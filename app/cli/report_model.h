@@ -1,17 +1,31 @@
 // What `twinraster report` measures and writes: per knob, per setting, per backend, the time
-// per frame and the error against the knob's reference (and CPU against GL), plus the
-// orthonormal-basis table. Plain data; report_sweeps.cpp fills it, report_html.cpp and
-// report_csv write it.
+// per frame and the error against the knob's reference (and CPU against GL), the height-field
+// section and the orthonormal-basis table. Plain data; report_sweeps.cpp fills it,
+// report_html.cpp writes the page and the CSV.
 #pragma once
 
 #include "compare/metrics.h"
 #include "scene/orthonormal_basis.h"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace twr::cli {
+
+// A point of the height-field section: which method it draws and the pixels its error leaves
+// out (compare/interior.h): vsReference is over the interior pixels alone.
+struct HeightFieldPointInfo {
+  std::string method;              // a surface_detail name, or kTrueGeometry
+  int layersMin = 0, layersMax = 0;  // parallax_layers of the marching methods; 0 for the others
+  std::uint64_t interiorPixels = 0;
+  std::uint64_t silhouetteApproxOnly = 0;     // covered by this image, not by the reference
+  std::uint64_t silhouetteReferenceOnly = 0;  // covered by the reference, not by this image
+  std::uint64_t partialPixels = 0;            // the reference's edge pixels (part coverage), left out
+};
+// The method name of the displaced mesh itself, drawn with one sample per pixel.
+inline constexpr const char* kTrueGeometry = "heightfield_mesh";
 
 // One backend at one setting of one knob.
 struct ReportPoint {
@@ -26,6 +40,7 @@ struct ReportPoint {
   // exact setting, i.e. what the shortcut alone changes (on the shortcut's rows).
   std::optional<CompareMetrics> vsExactSetting;
   std::string exactSetting;  // the setting vsExactSetting is measured against
+  std::optional<HeightFieldPointInfo> heightField;  // the height-field section's points only
 };
 
 struct KnobResult {
@@ -38,6 +53,37 @@ struct KnobResult {
   std::string summary;    // the verdict in a sentence or two, written from the numbers
   std::string reading;    // the numbers behind the verdict, per backend
   std::string skipped;    // non-empty when the knob could not run (the reason)
+};
+
+// One view of the height-field section: one field at one angle, every method on both backends.
+struct HeightFieldView {
+  std::string field;  // "bricks", "blocks"
+  int angleDeg = 0;   // between the view direction at the plane's centre and its normal
+  KnobResult result;  // id "height_fields_<field>_<angle>"; every point carries heightField
+};
+
+// The speed target: a parallax_occlusion frame at 1280 x 720 against the normal-mapped
+// frame, on the CPU fast path.
+struct HeightFieldCost {
+  bool measured = false;
+  std::string scene;     // field and angle
+  std::string cpuPath;   // "fast (avx2), 1 thread"
+  std::string pomSetting;  // "parallax_occlusion 8-32"
+  double normalMapMs = 0.0, pomMs = 0.0;              // fastest frames
+  double normalMapMsMedian = 0.0, pomMsMedian = 0.0;  // medians
+  int frames = 0;
+};
+
+struct HeightFieldSection {
+  bool measured = false;
+  int referenceSamplesPerAxis = 4;  // N of the displaced mesh's N x N reference
+  std::string question, reference, scene;
+  std::vector<HeightFieldView> views;  // field by field, angles ascending
+  HeightFieldCost cost720p;
+  std::vector<std::string> images;     // PNG files written beside report.html, one per field
+  std::string imagesCaption;
+  std::string summary, reading;        // written from the numbers (report_reading.cpp)
+  std::string skipped;                 // non-empty when part of it could not run
 };
 
 struct BasisRow {
@@ -54,6 +100,7 @@ struct ReportData {
   int width = 0, height = 0;  // the size most knobs use
   double seconds = 0.0;       // how long the whole run took
   std::vector<KnobResult> knobs;
+  HeightFieldSection heightFields;
   std::vector<BasisRow> bases;
   std::size_t basisDirections = 0;
   std::string basisSummary;

@@ -363,6 +363,252 @@ std::string trimmed(std::string s) {
   return s;
 }
 
+// Drops a trailing "; " (or " ") left by a list built item by item.
+std::string trimmedSemicolon(std::string s) {
+  s = trimmed(s);
+  if (!s.empty() && s.back() == ';') s.pop_back();
+  return s;
+}
+
+// ---- the height-field section ----
+
+// A method is the pick at a view when it is the fastest whose interior error is within this
+// fraction (plus kNegligibleLevels) of the best method's.
+constexpr double kHeightPickFraction = 0.10;
+// The speed target: parallax_occlusion within this factor of normal_map's frame at 720p.
+constexpr double kPomCostTarget = 2.0;
+
+const ReportPoint* heightPoint(const HeightFieldView& view, const std::string& backend, const std::string& method,
+                               int layersMin = 0, int layersMax = 0) {
+  for (const ReportPoint& p : view.result.points) {
+    if (p.backend != backend || !p.heightField || p.heightField->method != method) continue;
+    if (layersMin == 0 || (p.heightField->layersMin == layersMin && p.heightField->layersMax == layersMax)) return &p;
+  }
+  return nullptr;
+}
+
+std::string angleText(int degrees) { return std::to_string(degrees) + "\xC2\xB0"; }
+
+// The layer sets the marching methods ran at in this view, in sweep order.
+std::vector<std::pair<int, int>> layerSetsOf(const HeightFieldView& view) {
+  std::vector<std::pair<int, int>> sets;
+  for (const ReportPoint& p : view.result.points) {
+    if (p.backend != "cpu" || !p.heightField || p.heightField->method != "parallax_occlusion") continue;
+    sets.push_back({p.heightField->layersMin, p.heightField->layersMax});
+  }
+  return sets;
+}
+
+std::string layersText(int lo, int hi) { return std::to_string(lo) + "-" + std::to_string(hi); }
+
+KnobReading readHeightFieldSection(const HeightFieldSection& section) {
+  KnobReading r;
+  std::vector<std::string> fields;
+  for (const HeightFieldView& v : section.views)
+    if (std::find(fields.begin(), fields.end(), v.field) == fields.end()) fields.push_back(v.field);
+
+  // 1. Which method is worth its cost at which angle (CPU, fastest frames).
+  std::string picks = "Worth its cost, per view (CPU, fastest frames; the fastest method within " +
+                      percent(kHeightPickFraction) + " + " + levels(kNegligibleLevels) +
+                      " of the best interior error): ";
+  std::string pickSummary;
+  for (const HeightFieldView& v : section.views) {
+    const ReportPoint* best = nullptr;
+    const ReportPoint* pick = nullptr;
+    for (const ReportPoint& p : v.result.points) {
+      if (p.backend != "cpu" || !p.heightField || p.heightField->method == kTrueGeometry) continue;
+      if (!best || p.vsReference.rmse < best->vsReference.rmse) best = &p;
+    }
+    if (!best) continue;
+    for (const ReportPoint& p : v.result.points) {
+      if (p.backend != "cpu" || !p.heightField || p.heightField->method == kTrueGeometry) continue;
+      if (p.vsReference.rmse <= best->vsReference.rmse * (1.0 + kHeightPickFraction) + kNegligibleLevels &&
+          (!pick || p.msMin < pick->msMin)) {
+        pick = &p;
+      }
+    }
+    const ReportPoint* base = heightPoint(v, "cpu", "normal_map");
+    picks += v.field + " " + angleText(v.angleDeg) + ": " + pick->setting + " (" + levels(pick->vsReference.rmse) +
+             ", " + ms(pick->msMin);
+    if (best != pick) picks += "; best " + best->setting + " " + levels(best->vsReference.rmse) + " at " + ms(best->msMin);
+    if (base && base != pick) picks += "; normal_map " + levels(base->vsReference.rmse) + " at " + ms(base->msMin);
+    picks += "). ";
+    if (v.angleDeg > 0) {
+      pickSummary += (pickSummary.empty() ? "" : ", ") + v.field + " " + angleText(v.angleDeg) + " " + pick->setting;
+    }
+  }
+
+  // 2. POM against plain parallax at 45 degrees and beyond, default layers (8-32).
+  std::string pomText = "parallax_occlusion 8-32 against plain parallax at 45\xC2\xB0 and beyond (interior RMSE, CPU): ";
+  int pomLower = 0, pomCompared = 0;
+  std::string pomMisses;
+  for (const HeightFieldView& v : section.views) {
+    if (v.angleDeg < 45) continue;
+    const ReportPoint* pom = heightPoint(v, "cpu", "parallax_occlusion", 8, 32);
+    const ReportPoint* plain = heightPoint(v, "cpu", "parallax");
+    if (!pom || !plain) continue;
+    ++pomCompared;
+    const bool lower = pom->vsReference.rmse < plain->vsReference.rmse;
+    if (lower) ++pomLower;
+    else pomMisses += (pomMisses.empty() ? "" : ", ") + v.field + " " + angleText(v.angleDeg);
+    pomText += v.field + " " + angleText(v.angleDeg) + " " + fmt("%.2f", pom->vsReference.rmse) + " vs " +
+               fmt("%.2f", plain->vsReference.rmse) + (lower ? "" : " (not lower)") + "; ";
+    const ReportPoint* glPom = heightPoint(v, "gl", "parallax_occlusion", 8, 32);
+    const ReportPoint* glPlain = heightPoint(v, "gl", "parallax");
+    if (glPom && glPlain && (glPom->vsReference.rmse < glPlain->vsReference.rmse) != lower) {
+      pomText += "(GL disagrees there: " + fmt("%.2f", glPom->vsReference.rmse) + " vs " +
+                 fmt("%.2f", glPlain->vsReference.rmse) + ") ";
+    }
+  }
+  if (pomCompared > 0) {
+    pomText = trimmedSemicolon(pomText) + ". POM is lower in " + std::to_string(pomLower) + " of " +
+              std::to_string(pomCompared) + " views" + (pomMisses.empty() ? "." : "; not at " + pomMisses + ".");
+  }
+
+  // 3. Steep parallax's stair-steps: what POM's interpolation between the last two layers
+  // removes, i.e. steep's error above POM's at the same layers.
+  std::string stairs = "Stair-steps: steep_parallax's interior error minus parallax_occlusion's at the same layers "
+                       "(positive: what steep's stair-steps cost; negative: POM's line between the last two layers "
+                       "misses by more than the step it replaces), CPU: ";
+  std::string stairsSummary;
+  for (const std::string& field : fields) {
+    std::string shown;
+    double largest = 0.0;
+    std::string largestAt;
+    for (const HeightFieldView& v : section.views) {
+      if (v.field != field) continue;
+      std::string perLayers;
+      for (const auto& [lo, hi] : layerSetsOf(v)) {
+        const ReportPoint* steep = heightPoint(v, "cpu", "steep_parallax", lo, hi);
+        const ReportPoint* pom = heightPoint(v, "cpu", "parallax_occlusion", lo, hi);
+        if (!steep || !pom) continue;
+        const double excess = steep->vsReference.rmse - pom->vsReference.rmse;
+        if (!perLayers.empty()) perLayers += "/";
+        perLayers += fmt("%+.2f", excess);
+        if (excess > largest) {
+          largest = excess;
+          largestAt = angleText(v.angleDeg) + " " + layersText(lo, hi);
+        }
+        if (excess >= kNegligibleLevels && shown.find(angleText(v.angleDeg)) == std::string::npos) {
+          shown += (shown.empty() ? "" : ", ") + angleText(v.angleDeg);
+        }
+      }
+      if (!perLayers.empty()) stairs += field + " " + angleText(v.angleDeg) + " " + perLayers + "; ";
+    }
+    stairsSummary += (stairsSummary.empty() ? "" : "; ") + field + ": " +
+                     (shown.empty() ? std::string("nowhere above ") + levels(kNegligibleLevels)
+                                    : "at " + shown + " (most: " + levels(largest) + " at " + largestAt + ")");
+  }
+  std::string layerList;
+  if (!section.views.empty()) {
+    for (const auto& [lo, hi] : layerSetsOf(section.views.front()))
+      layerList += (layerList.empty() ? "" : "/") + layersText(lo, hi);
+  }
+  stairs = trimmedSemicolon(stairs) + " (levels, layers " + layerList + "). Stair-steps cost more than " +
+           levels(kNegligibleLevels) + ": " + stairsSummary + ".";
+
+  // 4. How many layers POM needs to beat relief (relief at its default 8-32 layers).
+  std::string beat = "Layers parallax_occlusion needs to match and to beat relief 8-32 (relief's binary search adds "
+                     "5 steps to its layers), CPU: ";
+  for (const HeightFieldView& v : section.views) {
+    if (v.angleDeg == 0) continue;
+    const ReportPoint* relief = heightPoint(v, "cpu", "relief", 8, 32);
+    if (!relief) continue;
+    const ReportPoint* matches = nullptr;  // within kNegligibleLevels
+    const ReportPoint* beats = nullptr;    // at or below
+    for (const auto& [lo, hi] : layerSetsOf(v)) {
+      const ReportPoint* pom = heightPoint(v, "cpu", "parallax_occlusion", lo, hi);
+      if (!pom) continue;
+      if (!matches && pom->vsReference.rmse <= relief->vsReference.rmse + kNegligibleLevels) matches = pom;
+      if (!beats && pom->vsReference.rmse <= relief->vsReference.rmse) beats = pom;
+    }
+    const auto layersOf = [](const ReportPoint* p) { return p->setting.substr(p->setting.find(' ') + 1); };
+    beat += v.field + " " + angleText(v.angleDeg) + " (relief " + levels(relief->vsReference.rmse) + ", " +
+            ms(relief->msMin) + "): ";
+    if (matches && matches != beats) {
+      beat += "within " + levels(kNegligibleLevels) + " at " + layersOf(matches) + " (" +
+              levels(matches->vsReference.rmse) + ", " + ms(matches->msMin) + "), ";
+    }
+    if (beats) {
+      beat += "below it at " + layersOf(beats) + " (" + levels(beats->vsReference.rmse) + ", " + ms(beats->msMin) + "); ";
+    } else {
+      const std::vector<std::pair<int, int>> sets = layerSetsOf(v);
+      beat += "not below it up to " + (sets.empty() ? std::string("?") : layersText(sets.back().first, sets.back().second)) + "; ";
+    }
+  }
+  beat = trimmedSemicolon(beat) + ".";
+
+  // 5. The floor and the silhouettes.
+  std::string floor = "The displaced mesh itself, drawn with one sample per pixel, is ";
+  std::string silhouettes;
+  for (const HeightFieldView& v : section.views) {
+    const ReportPoint* mesh = heightPoint(v, "cpu", kTrueGeometry);
+    const ReportPoint* base = heightPoint(v, "cpu", "normal_map");
+    if (mesh) floor += v.field + " " + angleText(v.angleDeg) + " " + fmt("%.2f", mesh->vsReference.rmse) + " (" + ms(mesh->msMin) + "), ";
+    if (base && base->heightField) {
+      const HeightFieldPointInfo& h = *base->heightField;
+      silhouettes += v.field + " " + angleText(v.angleDeg) + " " + std::to_string(h.silhouetteApproxOnly) + "/" +
+                     std::to_string(h.silhouetteReferenceOnly) + " (interior " + std::to_string(h.interiorPixels) +
+                     "), ";
+    }
+  }
+  if (floor.back() == ' ') {
+    floor.resize(floor.size() - 2);
+    floor += section.referenceSamplesPerAxis > 1
+                 ? " levels from the reference (CPU, fastest frame): what one sample per pixel costs on the true "
+                   "surface, the floor under every method."
+                 : " levels from the reference (CPU, fastest frame); with one reference sample per pixel this is "
+                   "float against double only, not the one-sample floor.";
+  } else {
+    floor.clear();
+  }
+  if (!silhouettes.empty()) {
+    silhouettes.resize(silhouettes.size() - 2);
+    silhouettes = "Parallax does not move silhouettes: every method draws the flat plane's outline, where the mesh's "
+                  "border lies lower and its walls stand out, so the pixels only the plane covers / only the mesh "
+                  "covers are the same for every method at a view: " + silhouettes +
+                  ". They are counted apart, not put in the error.";
+  }
+
+  // 6. GL against CPU.
+  double worstCpuGl = 0.0;
+  std::string worstCpuGlAt;
+  for (const HeightFieldView& v : section.views) {
+    for (const ReportPoint& p : v.result.points) {
+      if (p.cpuVsGl && p.cpuVsGl->rmse > worstCpuGl) {
+        worstCpuGl = p.cpuVsGl->rmse;
+        worstCpuGlAt = p.setting + " on " + v.field + " at " + angleText(v.angleDeg);
+      }
+    }
+  }
+  const std::string gl = worstCpuGlAt.empty() ? std::string()
+                                              : "CPU and GL images are at most " + levels(worstCpuGl) +
+                                                    " RMSE apart (" + worstCpuGlAt + "), so GL reads the same.";
+
+  // 7. The 720p cost line.
+  std::string cost;
+  const HeightFieldCost& c = section.cost720p;
+  double ratio = 0.0;
+  if (c.measured && c.normalMapMs > 0.0) {
+    ratio = c.pomMs / c.normalMapMs;
+    cost = "Cost at 1280x720 on the CPU (" + c.cpuPath + "), " + c.scene + ": " + c.pomSetting + " takes " + ms(c.pomMs) +
+           " against normal_map's " + ms(c.normalMapMs) + " (fastest of " + std::to_string(c.frames) +
+           " frames; medians " + ms(c.pomMsMedian) + " and " + ms(c.normalMapMsMedian) + "): " + times(ratio) + ", " +
+           (ratio <= kPomCostTarget ? "within" : "beyond") + " the issue's " + times(kPomCostTarget) + ".";
+  }
+
+  r.detail = picks + "\n" + pomText + "\n" + stairs + "\n" + beat + "\n" + floor + "\n" + silhouettes + "\n" + gl +
+             "\n" + cost;
+  if (pomCompared > 0) {
+    r.summary = "POM 8-32's interior error is below plain parallax's in " + std::to_string(pomLower) + " of " +
+                std::to_string(pomCompared) + " views at 45\xC2\xB0 and beyond" +
+                (pomMisses.empty() ? "" : " (not at " + pomMisses + ")") + ". ";
+  }
+  if (!pickSummary.empty()) r.summary += "Worth its cost: " + pickSummary + ". ";
+  if (ratio > 0.0) r.summary += "POM at 720p costs " + times(ratio) + " a normal-mapped frame on the CPU.";
+  return r;
+}
+
 }  // namespace
 
 KnobReading readKnob(const KnobResult& knob) {
@@ -415,6 +661,14 @@ KnobReading readBases(const std::vector<BasisRow>& rows) {
               fmt("%.1f", duff->nsPerBasis) + " ns); Frisvad 2012 reaches " +
               fmt("%.1e", frisvad->stats.maxErrorNearMinusZ) + " near -Z; a fixed helper axis gives " +
               std::to_string(fixed->stats.nonFinite) + " NaN bases.";
+  return r;
+}
+
+KnobReading readHeightFields(const HeightFieldSection& section) {
+  if (!section.measured) return {"Not measured: " + section.skipped, section.skipped};
+  KnobReading r = readHeightFieldSection(section);
+  if (!section.skipped.empty()) r.detail += "\n(Part of this section was not measured: " + section.skipped + ")";
+  r.summary = trimmed(r.summary);
   return r;
 }
 

@@ -16,5 +16,9 @@ struct KnobReading {
 
 KnobReading readKnob(const KnobResult& knob);
 KnobReading readBases(const std::vector<BasisRow>& rows);
+// The height-field section across its views: which method is worth its cost at which angle,
+// POM against plain parallax, where steep parallax's stair-steps show, how many layers POM
+// needs to beat relief, and the 720p cost line.
+KnobReading readHeightFields(const HeightFieldSection& section);
 
 }  // namespace twr::cli

@@ -1,8 +1,13 @@
 #include "app/cli/report_sweeps.h"
 
 #include "app/cli/report_analytic_sphere.h"
+#include "app/cli/report_height_fields.h"
 #include "app/cli/report_reading.h"
+#include "compare/draw.h"
+#include "compare/interior.h"
 #include "compare/metrics.h"
+#include "compare/montage.h"
+#include "compare/side_by_side.h"
 #include "glrender/gl_renderer.h"
 #include "scene/errors.h"
 #include "scene/primitives.h"
@@ -46,6 +51,18 @@ constexpr const char* kFloatLoop = "float, same loop";
 constexpr const char* kDoubleLoop = "double, same loop";
 // Timing runs per basis construction; the fastest counts.
 constexpr int kBasisTimingRepetitions = 5;
+// Height-field section (docs/report.md, "Height fields"). The view angles the issue names,
+// degrees from the plane's normal; the layer counts ([min, max] parallax_layers) each marching
+// method runs at (quick: two of them); the angle the pictures show; the 720p cost line.
+constexpr int kHeightFieldAngles[] = {0, 45, 70, 85};
+constexpr int kHeightFieldPictureAngle = 70;
+constexpr int kCostWidth = 1280, kCostHeight = 720;  // pixels
+constexpr int kCostAngle = 45;                       // degrees, bricks
+// N of the N x N samples of the displaced-mesh reference in quick runs: one, the plain double
+// pipeline (16 passes over a 524,288-triangle mesh take about 8 s a view here).
+constexpr int kHeightReferenceSamplesQuick = 1;
+constexpr int kLegendMarginPx = 6;       // text inset in a legend tile
+constexpr int kLegendLineWidthPx = 160;  // a legend tile this wide or wider (twice) draws at scale 2
 // Magic at the start of a child's output file, and the file layout version.
 constexpr char kChildMagic[8] = {'T', 'W', 'R', 'G', 'L', 'C', 'H', '1'};
 
@@ -90,6 +107,25 @@ ReportPoint makePoint(const std::string& setting, const std::string& backend, co
 }
 
 std::string sizeText(int width, int height) { return std::to_string(width) + "x" + std::to_string(height); }
+
+std::string fmtFixed(double value, int decimals) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(decimals) << value;
+  return s.str();
+}
+
+// A tile of one colour with a few lines of text: the key under a montage's reference column.
+Image legendTile(int width, int height, const std::vector<std::string>& lines) {
+  Image tile = makeImage(width, height);
+  fillRect(tile, 0, 0, width, height, kColourPanel);
+  const int scale = width >= 2 * kLegendLineWidthPx ? 2 : 1;
+  int y = kLegendMarginPx;
+  for (const std::string& line : lines) {
+    drawText(tile, kLegendMarginPx, y, line, kColourWhite, scale);
+    y += kFontLineHeightUnits * scale;
+  }
+  return tile;
+}
 
 // Shared state of one report run.
 class Sweeper {
@@ -137,6 +173,11 @@ class Sweeper {
   KnobResult resolution();
   KnobResult threads();
   KnobResult precision();
+  void heightFields(HeightFieldSection& section, const std::string& outDir);
+  ReportPoint measureHeightPoint(const std::string& viewId, const HeightFieldPointInfo& info,
+                                 const std::string& setting, const std::string& backend, Renderer& renderer,
+                                 const Scene& scene, int width, int height, const RenderOutput& reference,
+                                 RenderOutput* outputCopy);
   void bases(ReportData& data);
 
   const ReportOptions& options_;
@@ -605,6 +646,187 @@ KnobResult Sweeper::precision() {
   return knob;
 }
 
+// One backend at one point of the height-field section: timed as every knob's points, its
+// error over the interior pixels only (compare/interior.h), the silhouettes counted apart.
+ReportPoint Sweeper::measureHeightPoint(const std::string& viewId, const HeightFieldPointInfo& info,
+                                        const std::string& setting, const std::string& backend, Renderer& renderer,
+                                        const Scene& scene, int width, int height, const RenderOutput& reference,
+                                        RenderOutput* outputCopy) {
+  RenderOutput out;
+  const Timing timing = timeRenderer(renderer, scene, scene.settings, width, height, frames_, out);
+  const InteriorComparison c = compareInterior(out, reference);
+  ReportPoint p;
+  p.setting = setting;
+  p.backend = backend;
+  p.msMedian = timing.msMedian;
+  p.msMin = timing.msMin;
+  p.frames = timing.frames;
+  p.vsReference = c.interior;
+  p.heightField = info;
+  p.heightField->interiorPixels = c.split.interiorPixels;
+  p.heightField->silhouetteApproxOnly = c.split.approxOnly;
+  p.heightField->silhouetteReferenceOnly = c.split.referenceOnly;
+  p.heightField->partialPixels = c.split.partial;
+  std::ostringstream line;
+  line << viewId << " " << setting << ", " << backend << ": " << std::fixed << std::setprecision(2) << p.msMedian
+       << " ms median, " << p.msMin << " fastest, interior rmse " << p.vsReference.rmse << " levels over "
+       << c.split.interiorPixels << " px, silhouette " << c.split.silhouette() << " px";
+  say(line.str());
+  if (outputCopy) *outputCopy = std::move(out);
+  return p;
+}
+
+void Sweeper::heightFields(HeightFieldSection& section, const std::string& outDir) {
+  const int referenceSamples = options_.quick ? kHeightReferenceSamplesQuick : kReferenceSamplesPerAxis;
+  section.referenceSamplesPerAxis = referenceSamples;
+  const std::vector<ivec2> layerSets = options_.quick ? std::vector<ivec2>{{8, 32}, {32, 128}}
+                                                      : std::vector<ivec2>{{4, 8}, {8, 32}, {16, 64}, {32, 128}};
+  std::vector<HeightFieldMethod> methods;
+  for (SurfaceDetail d : {SurfaceDetail::NormalMap, SurfaceDetail::BumpBlinn, SurfaceDetail::BumpEmboss,
+                          SurfaceDetail::Parallax, SurfaceDetail::ParallaxOffsetLimited}) {
+    methods.push_back({d, ivec2(8, 32)});
+  }
+  for (const ivec2 layers : layerSets) {
+    for (SurfaceDetail d : {SurfaceDetail::SteepParallax, SurfaceDetail::Relief, SurfaceDetail::ParallaxOcclusion}) {
+      methods.push_back({d, layers});
+    }
+  }
+  std::string layerText;
+  for (const ivec2 l : layerSets) {
+    layerText += (layerText.empty() ? "" : ", ") + std::string("[") + std::to_string(l.x) + ", " + std::to_string(l.y) + "]";
+  }
+  section.question =
+      "Each surface_detail method draws a plane whose material carries a height map; the displaced mesh is what "
+      "they fake. normal_map reads no height at all (the baseline), the bump methods only bend the normal, the "
+      "parallax family shifts the uv every map is read at, and the marching ones (steep_parallax, relief, "
+      "parallax_occlusion) pay per layer: parallax_layers " + layerText +
+      " here. What does each cost per frame, and how close does it come to the true surface, by view angle?";
+  section.reference =
+      "The same view with the plane replaced by the true displaced surface (mesh type heightfield: same size, "
+      "uv_scale, height map and height_scale " + fmtFixed(kHeightFieldScale, 2) +
+      ", one vertex per texel, the plane at the top of the relief as the methods assume), drawn by the CPU stages in "
+      "double with " + std::to_string(referenceSamples) + "x" + std::to_string(referenceSamples) +
+      " samples per pixel. Its material is the plane's without the height and normal maps (surface_detail "
+      "normal_map with no normal map), so the mesh's own normals light it and nothing shifts its uv a second "
+      "time; the plane's normal map is derived from the same height map at the same depth, so a method that "
+      "finds the right uv also lights like the mesh. Diffuse only (bump_emboss draws no specular) and no "
+      "self-shadowing (the rasterised mesh casts none), trilinear filtering on both. Error: RMSE over the "
+      "interior pixels, those both images cover wholly; parallax does not move silhouettes, so the pixels only "
+      "one image covers are counted apart, and the reference's part-covered edge pixels are left out.";
+  section.scene = heightFieldViewText() + " at 0, 45, 70 and 85 degrees from its normal; " + sizeText(width_, height_) +
+                  "; bricks: assets/textures/bricks_*.png, blocks (raised blocks with vertical walls): "
+                  "assets/textures/blocks_*.png";
+
+  std::unique_ptr<Renderer> cpu = makeCpuRenderer();
+  ReferenceOptions referenceOptions;
+  referenceOptions.samplesPerAxis = referenceSamples;
+  referenceOptions.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  std::unique_ptr<Renderer> referenceRenderer = makeReferenceRenderer(referenceOptions);
+  // The settings the pictures show, left to right after the reference.
+  const std::vector<std::string> pictured = {"normal_map", "parallax", "steep_parallax 8-32", "relief 8-32",
+                                             "parallax_occlusion 8-32"};
+  for (const std::string field : {"bricks", "blocks"}) {
+    const HeightFieldAsset asset = loadHeightFieldAsset(options_.assetsDir, field);
+    const Mesh mesh = heightFieldMesh(asset);
+    for (const int angle : kHeightFieldAngles) {
+      HeightFieldView view;
+      view.field = field;
+      view.angleDeg = angle;
+      KnobResult& knob = view.result;
+      knob.id = "height_fields_" + field + "_" + std::to_string(angle);
+      knob.title = "Height field " + field + " at " + std::to_string(angle) + " degrees";
+      knob.scene = field + ", " + std::to_string(angle) + " degrees from the normal, " + sizeText(width_, height_);
+      const Scene meshScene = heightFieldMeshScene(asset, mesh, angle);
+      say(knob.id + ": displaced-mesh reference (" + std::to_string(mesh.triangleCount()) + " triangles, double, " +
+          std::to_string(referenceSamples) + "x" + std::to_string(referenceSamples) + " samples) at " +
+          sizeText(width_, height_));
+      const RenderOutput reference = referenceRenderer->render(meshScene, meshScene.settings, width_, height_);
+      const bool picture = angle == kHeightFieldPictureAngle;
+      std::vector<MontageTile> tiles, heats;
+      if (picture) tiles.push_back({"displaced mesh (reference)", viewImage(reference, BackgroundMode::Checker)});
+
+      // The true geometry at one sample per pixel: the floor one-sample images stand on.
+      std::vector<std::pair<std::string, HeightFieldPointInfo>> points;
+      HeightFieldPointInfo meshInfo;
+      meshInfo.method = kTrueGeometry;
+      points.push_back({kTrueGeometry, meshInfo});
+      for (const HeightFieldMethod& m : methods) {
+        HeightFieldPointInfo info;
+        info.method = std::string(toString(m.method));
+        if (marchesLayers(m.method)) {
+          info.layersMin = m.layers.x;
+          info.layersMax = m.layers.y;
+        }
+        points.push_back({methodSetting(m), info});
+      }
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        const auto& [setting, info] = points[i];
+        const Scene scene = i == 0 ? meshScene : heightFieldPlaneScene(asset, angle, methods[i - 1]);
+        RenderOutput cpuOut, glOut;
+        knob.points.push_back(measureHeightPoint(knob.id, info, setting, "cpu", *cpu, scene, width_, height_,
+                                                 reference, &cpuOut));
+        ReportPoint g = measureHeightPoint(knob.id, info, setting, "gl", gl(), scene, width_, height_, reference, &glOut);
+        g.cpuVsGl = compare(cpuOut, glOut);
+        knob.points.push_back(std::move(g));
+        if (picture && std::find(pictured.begin(), pictured.end(), setting) != pictured.end()) {
+          tiles.push_back({setting, viewImage(cpuOut, BackgroundMode::Checker)});
+          heats.push_back({setting,
+                           makeInteriorHeatMap(cpuOut, reference, splitInterior(cpuOut, reference))});
+        }
+      }
+      if (picture && !heats.empty()) {
+        // Under the reference, the key to the difference row.
+        heats.insert(heats.begin(), {"difference, interior",
+                                     legendTile(width_, height_,
+                                                {"Below each method:", "its difference from", "the reference on",
+                                                 "interior pixels.", "black: 0 levels", "bright: up to 255 (log)",
+                                                 "magenta: method only", "cyan: reference only"})});
+        for (MontageTile& t : heats) tiles.push_back(std::move(t));
+        MontageOptions montage;
+        montage.columns = static_cast<int>(tiles.size() / 2);
+        const std::string name = "height_fields_" + field + "_" + std::to_string(angle) + ".png";
+        savePng((std::filesystem::path(outDir) / name).string(), makeMontage(tiles, montage));
+        section.images.push_back(name);
+        say("height fields: wrote " + name);
+      }
+      section.views.push_back(std::move(view));
+    }
+  }
+  section.imagesCaption =
+      "Top row: the displaced mesh (the reference) and the CPU images of normal_map, parallax, steep_parallax, relief "
+      "and parallax_occlusion (layers 8-32) at " + std::to_string(kHeightFieldPictureAngle) +
+      " degrees. Bottom row: each one's difference from the reference over the interior pixels (black 0, the "
+      "inferno ramp on a log scale up to 255 levels); magenta where only the method's image covers the pixel, cyan "
+      "where only the reference does.";
+
+  // The issue's speed target, on the CPU fast path: parallax_occlusion at its default layers
+  // against normal_map, 1280 x 720, bricks at kCostAngle.
+  HeightFieldCost& cost = section.cost720p;
+  const HeightFieldAsset bricks = loadHeightFieldAsset(options_.assetsDir, "bricks");
+  const HeightFieldMethod normal{SurfaceDetail::NormalMap, ivec2(8, 32)};
+  const HeightFieldMethod pom{SurfaceDetail::ParallaxOcclusion, ivec2(8, 32)};
+  const Scene normalScene = heightFieldPlaneScene(bricks, kCostAngle, normal);
+  const Scene pomScene = heightFieldPlaneScene(bricks, kCostAngle, pom);
+  RenderOutput out;
+  const Timing normalTiming = timeRenderer(*cpu, normalScene, normalScene.settings, kCostWidth, kCostHeight, frames_, out);
+  const Timing pomTiming = timeRenderer(*cpu, pomScene, pomScene.settings, kCostWidth, kCostHeight, frames_, out);
+  cost.measured = true;
+  cost.scene = "bricks at " + std::to_string(kCostAngle) + " degrees";
+  cost.cpuPath = cpuPathName(CpuOptions{}) + ", 1 thread";
+  cost.pomSetting = methodSetting(pom);
+  cost.normalMapMs = normalTiming.msMin;
+  cost.pomMs = pomTiming.msMin;
+  cost.normalMapMsMedian = normalTiming.msMedian;
+  cost.pomMsMedian = pomTiming.msMedian;
+  cost.frames = frames_;
+  std::ostringstream line;
+  line << "height fields 720p: normal_map " << std::fixed << std::setprecision(2) << cost.normalMapMs
+       << " ms, parallax_occlusion 8-32 " << cost.pomMs << " ms (fastest frames), ratio "
+       << (cost.normalMapMs > 0.0 ? cost.pomMs / cost.normalMapMs : 0.0);
+  say(line.str());
+  section.measured = true;
+}
+
 void Sweeper::bases(ReportData& data) {
   say("orthonormal bases: measuring four constructions");
   const std::size_t sphereCount = options_.quick ? 100000 : 1000000;
@@ -675,6 +897,10 @@ ReportData Sweeper::run() {
     knob.summary = reading.summary;
     knob.reading = reading.detail;
   }
+  heightFields(data.heightFields, options_.outDir);
+  const KnobReading heightReading = readHeightFields(data.heightFields);
+  data.heightFields.summary = heightReading.summary;
+  data.heightFields.reading = heightReading.detail;
   bases(data);
   data.machine =
       machineDescription() + "; GL: " + glRendererString() + ", " + glVersionString() + "; " + glContextString();

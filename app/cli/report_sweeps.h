@@ -14,6 +14,7 @@ namespace twr::cli {
 struct ReportOptions {
   bool quick = false;          // smaller images, fewer settings and frames (well under a minute)
   std::string assetsDir;       // folder holding scenes/ and textures/
+  std::string outDir;          // the output folder: pictures are written beside report.html
   std::string workDir;         // scratch folder for child-process outputs (inside the output folder)
   std::string selfExecutable;  // this program, for child processes ("/proc/self/exe")
   GlRequest gl;                // --gl-context / --gl-device, for this process and the GL children

@@ -17,7 +17,8 @@
 namespace {
 
 const std::filesystem::path kTextures = std::filesystem::path(TWINRASTER_SOURCE_DIR) / "assets" / "textures";
-const char* const kFiles[] = {"bricks_diffuse.png", "bricks_height.png", "bricks_normal.png", "bricks_specular.png"};
+const char* const kFiles[] = {"bricks_diffuse.png", "bricks_height.png", "bricks_normal.png", "bricks_specular.png",
+                              "blocks_height.png",  "blocks_diffuse.png"};
 // Relief depth in texture units, as app/assets_tool.cpp's kReliefDepthUv.
 constexpr double kReliefDepthUv = 0.012;
 // One 8-bit step of a decoded component: c / 255 * 2 - 1 moves by 2 / 255 per level.
@@ -120,6 +121,32 @@ TEST(AssetsTool, NormalMapIsUnitOutwardAndFollowsTheHeight) {
   EXPECT_GT(flatTexels, n);
   EXPECT_GT(risingRight, n);
   EXPECT_GT(risingUp, n);
+}
+
+// The blocks are steep walls: every texel is floor (0) or a block top (at least 0.45, as
+// app/assets_tool.cpp's kBlockMinHeight), so a height change between neighbours is a whole
+// wall within one texel; every block stands on floor on all four sides.
+TEST(AssetsTool, BlocksHaveVerticalWalls) {
+  const twr::Image height = twr::loadPng((kTextures / "blocks_height.png").string());
+  const int n = height.width;
+  ASSERT_EQ(height.height, n);
+  const std::uint8_t minBlock = static_cast<std::uint8_t>(0.45 * 255.0);
+  int floor = 0, top = 0, walls = 0;
+  for (int y = 0; y < n; ++y) {
+    for (int x = 0; x < n; ++x) {
+      const std::uint8_t h = height.pixel(x, y)[0];
+      ASSERT_TRUE(h == 0 || h >= minBlock) << "texel " << x << ", " << y << " is " << int(h);
+      (h == 0 ? floor : top)++;
+      const std::uint8_t right = height.pixel((x + 1) % n, y)[0];
+      if ((h == 0) != (right == 0)) ++walls;
+    }
+  }
+  // 25 blocks of 24% to 40% half-extent: between about 9% and 64% of the texels are tops.
+  EXPECT_GT(top, n * n / 12);
+  EXPECT_LT(top, n * n * 2 / 3);
+  EXPECT_GT(floor, n * n / 3);
+  // Each block row crossing has two walls; 25 blocks, each at least 0.48 * n / 5 texels tall.
+  EXPECT_GT(walls, 2 * 25 * (n / 11));
 }
 
 }  // namespace

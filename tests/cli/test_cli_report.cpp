@@ -1,6 +1,7 @@
-// `twinraster report --quick`: the files exist, the CSV has every knob with both backends and
-// the basis rows, the HTML is self-contained with an SVG chart per knob, progress goes to
-// stderr, and bad options exit 2.
+// `twinraster report --quick`: the files exist, the CSV has every knob with both backends,
+// the height-field views and their 720p cost rows, and the basis rows, the HTML is
+// self-contained but for the height-field pictures written beside it, with an SVG chart per
+// knob and per height-field view, progress goes to stderr, and bad options exit 2.
 #include "cli_run.h"
 
 #include <gtest/gtest.h>
@@ -62,7 +63,7 @@ TEST(CliReport, QuickWritesHtmlAndCsvWithEveryKnob) {
   EXPECT_EQ(columns[3], "ms_median");
   EXPECT_EQ(columns[6], "rmse_levels");
   std::set<std::pair<std::string, std::string>> knobBackends;
-  std::set<std::string> basisMethods;
+  std::set<std::string> basisMethods, heightMethods, costSettings;
   std::string line;
   while (std::getline(lines, line)) {
     const std::vector<std::string> cells = splitCsvLine(line);
@@ -70,6 +71,15 @@ TEST(CliReport, QuickWritesHtmlAndCsvWithEveryKnob) {
     if (cells[0] == "orthonormal_basis") {
       basisMethods.insert(cells[1]);
       continue;
+    }
+    if (cells[0] == "height_fields_cost_720p") {  // timing only
+      costSettings.insert(cells[1]);
+      EXPECT_GT(std::stod(cells[4]), 0.0) << line;
+      continue;
+    }
+    if (cells[0].rfind("height_fields_", 0) == 0) {
+      heightMethods.insert(cells[24]);
+      EXPECT_GT(std::stoll(cells[27]), 0) << "interior pixels: " << line;
     }
     knobBackends.insert({cells[0], cells[2]});
     EXPECT_GT(std::stod(cells[3]), 0.0) << "time per frame: " << line;
@@ -82,10 +92,29 @@ TEST(CliReport, QuickWritesHtmlAndCsvWithEveryKnob) {
   }
   EXPECT_TRUE(knobBackends.count({"gl_sampling", "gl"})) << "gl_sampling has no gl row";
   EXPECT_EQ(basisMethods, (std::set<std::string>{"naive_fixed_helper", "naive_best_helper", "frisvad_2012", "duff_2017"}));
+  EXPECT_EQ(columns[24], "height_method");
+  EXPECT_EQ(columns[27], "interior_pixels");
+  for (const char* field : {"bricks", "blocks"}) {
+    for (const char* angle : {"0", "45", "70", "85"}) {
+      const std::string view = std::string("height_fields_") + field + "_" + angle;
+      EXPECT_TRUE(knobBackends.count({view, "cpu"})) << view << " has no cpu row";
+      EXPECT_TRUE(knobBackends.count({view, "gl"})) << view << " has no gl row";
+    }
+    EXPECT_TRUE(std::filesystem::exists(out / (std::string("height_fields_") + field + "_70.png"))) << field;
+  }
+  EXPECT_EQ(heightMethods, (std::set<std::string>{"heightfield_mesh", "normal_map", "bump_blinn", "bump_emboss",
+                                                  "parallax", "parallax_offset_limited", "steep_parallax", "relief",
+                                                  "parallax_occlusion"}));
+  EXPECT_EQ(costSettings, (std::set<std::string>{"normal_map", "parallax_occlusion 8-32"}));
+  expectContains(r.err, "height_fields_bricks_45 parallax_occlusion 8-32, cpu:");
+  expectContains(r.err, "height fields 720p:");
 
   const std::string html = readFile(out / "report.html");
   expectContains(html, "<!DOCTYPE html>");
-  EXPECT_EQ(count(html, "<svg"), 9u) << "one chart per knob";
+  EXPECT_EQ(count(html, "<svg"), 9u + 8u) << "one chart per knob and per height-field view";
+  expectContains(html, "id=\"height_fields\"");
+  expectContains(html, "Parallax does not move silhouettes");
+  expectContains(html, "<img src=\"height_fields_bricks_70.png\"");
   expectContains(html, "time per frame, ms");
   expectContains(html, "RMSE vs reference, levels");
   expectContains(html, "duff_2017");
