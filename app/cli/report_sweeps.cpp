@@ -95,14 +95,14 @@ Timing timeRenderer(Renderer& renderer, const Scene& scene, const RenderSettings
 }
 
 ReportPoint makePoint(const std::string& setting, const std::string& backend, const Timing& timing,
-                      const RenderOutput& output, const RenderOutput& reference) {
+                      const CompareMetrics& vsReference) {
   ReportPoint p;
   p.setting = setting;
   p.backend = backend;
   p.msMedian = timing.msMedian;
   p.msMin = timing.msMin;
   p.frames = timing.frames;
-  p.vsReference = compare(output, reference);
+  p.vsReference = vsReference;
   return p;
 }
 
@@ -204,7 +204,7 @@ ReportPoint Sweeper::measureOne(const std::string& knobId, const std::string& se
                                 int height, const RenderOutput& reference, RenderOutput* outputCopy) {
   RenderOutput out;
   const Timing timing = timeRenderer(renderer, scene, settings, width, height, frames_, out);
-  ReportPoint p = makePoint(setting, backend, timing, out, reference);
+  ReportPoint p = makePoint(setting, backend, timing, compare(out, reference));
   std::ostringstream line;
   line << knobId << " " << setting << ", " << backend << ": " << std::fixed << std::setprecision(2) << p.msMedian
        << " ms median, " << p.msMin << " fastest, rmse " << p.vsReference.rmse << " levels vs reference";
@@ -327,7 +327,7 @@ bool Sweeper::measureGlChild(KnobResult& knob, const std::string& setting, const
     say(knob.id + " " + setting + ": " + knob.skipped);
     return false;
   }
-  ReportPoint p = makePoint(setting, "gl", timing, out, reference);
+  ReportPoint p = makePoint(setting, "gl", timing, compare(out, reference));
   if (cpuOutput) p.cpuVsGl = compare(*cpuOutput, out);
   std::ostringstream line;
   line << knob.id << " " << setting << ", gl (child process): " << std::fixed << std::setprecision(2) << p.msMedian
@@ -655,13 +655,7 @@ ReportPoint Sweeper::measureHeightPoint(const std::string& viewId, const HeightF
   RenderOutput out;
   const Timing timing = timeRenderer(renderer, scene, scene.settings, width, height, frames_, out);
   const InteriorComparison c = compareInterior(out, reference);
-  ReportPoint p;
-  p.setting = setting;
-  p.backend = backend;
-  p.msMedian = timing.msMedian;
-  p.msMin = timing.msMin;
-  p.frames = timing.frames;
-  p.vsReference = c.interior;
+  ReportPoint p = makePoint(setting, backend, timing, c.interior);
   p.heightField = info;
   p.heightField->interiorPixels = c.split.interiorPixels;
   p.heightField->silhouetteApproxOnly = c.split.approxOnly;
