@@ -29,11 +29,9 @@ namespace {
 
 // How long the loop sleeps while the window is minimised (zero-size framebuffer), seconds.
 constexpr double kMinimisedWaitSeconds = 0.1;
-// When nothing changes on screen the loop sleeps until input or this long, seconds, so an
-// idle window costs no CPU the worker could use; frame ages still tick on screen.
-constexpr double kIdleWaitSeconds = 0.1;
-// Otherwise at most one frame per this many seconds without input (60 Hz): without vsync
-// (Xvfb, some drivers) the loop would spin and take a core from the CPU renderer.
+// While frames are needed (redraw_policy.h decides when) at most one frame per this many
+// seconds without input (60 Hz): without vsync (Xvfb, some drivers) the loop would spin and
+// take a core from the CPU renderer. When none is needed the loop draws nothing.
 constexpr double kBusyFrameSeconds = 1.0 / 60.0;
 // While --frames waits for the CPU frame, how long each wait for the worker lasts.
 constexpr std::chrono::milliseconds kSettlePoll{10};
@@ -175,17 +173,32 @@ void GuiApp::createWindow() {
       std::this_thread::sleep_for(kWindowRetryDelay);
     }
   }
-  // Our key callback goes in first: ImGui's backend chains to it. A tap of F12 shorter than
-  // a frame still counts (ImGui 1.86 only sees keys held down at a frame's start).
-  glfwSetWindowUserPointer(window_->window(), this);
-  glfwSetKeyCallback(window_->window(), [](GLFWwindow* window, int key, int, int action, int) {
-    GuiApp& app = *static_cast<GuiApp*>(glfwGetWindowUserPointer(window));
+  // Our callbacks go in first: ImGui's backend chains to the ones it installs too. A tap of
+  // F12 shorter than a frame still counts (ImGui 1.86 only sees keys held down at a frame's start).
+  GLFWwindow* window = window_->window();
+  glfwSetWindowUserPointer(window, this);
+  glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int) {
+    GuiApp& app = *static_cast<GuiApp*>(glfwGetWindowUserPointer(w));
+    app.noteEvent();
     if (key == GLFW_KEY_F12 && action == GLFW_PRESS) app.windowShotRequested_ = true;
     // A press and its release between two frames: hold the key for the next frame (holdTappedKeys).
     if (action == GLFW_PRESS) app.keysPressedSinceFrame_.insert(key);
     if (action == GLFW_RELEASE && app.keysPressedSinceFrame_.count(key) != 0) app.keysToHold_.insert(key);
   });
-  ImGui_ImplGlfw_InitForOpenGL(window_->window(), true);
+  // Every other input and window event wakes an idle loop for a frame too (redraw_policy.h).
+  // The refresh callback is X's expose: the window lost its pixels and must be drawn again.
+  glfwSetCharCallback(window, [](GLFWwindow* w, unsigned int) { windowEvent(w); });
+  glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int, int, int) { windowEvent(w); });
+  glfwSetScrollCallback(window, [](GLFWwindow* w, double, double) { windowEvent(w); });
+  glfwSetCursorPosCallback(window, [](GLFWwindow* w, double, double) { windowEvent(w); });
+  glfwSetCursorEnterCallback(window, [](GLFWwindow* w, int) { windowEvent(w); });
+  glfwSetWindowFocusCallback(window, [](GLFWwindow* w, int) { windowEvent(w); });
+  glfwSetWindowRefreshCallback(window, [](GLFWwindow* w) { windowEvent(w); });
+  glfwSetWindowSizeCallback(window, [](GLFWwindow* w, int, int) { windowEvent(w); });
+  glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) { windowEvent(w); });
+  glfwSetWindowContentScaleCallback(window, [](GLFWwindow* w, float, float) { windowEvent(w); });
+  glfwSetWindowIconifyCallback(window, [](GLFWwindow* w, int) { windowEvent(w); });
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 330");
   // The textures live in the new context: upload them again.
   cpuTextureStale_ = glTextureStale_ = diff_.texturesStale = true;
@@ -308,6 +321,48 @@ bool GuiApp::settled() const {
   return true;
 }
 
+void GuiApp::noteEvent() { redraw_.event(glfwGetTime()); }
+
+void GuiApp::windowEvent(GLFWwindow* window) { static_cast<GuiApp*>(glfwGetWindowUserPointer(window))->noteEvent(); }
+
+bool GuiApp::workRunning() const {
+  return !worker_.idle() || (glWorker_ && !glWorker_->idle()) || !horizonWorker_.idle();
+}
+
+bool GuiApp::resultsWaiting() const {
+  return worker_.hasFinished() || (glWorker_ && glWorker_->hasFinished()) || horizonWorker_.hasFinished();
+}
+
+bool GuiApp::keepDrawing() const {
+  // The flicker view switches images by the clock; a drag over the image moves with the mouse.
+  if (prefs_.viewMode == ViewMode::Flicker || dragMode_ != DragMode::None) return true;
+  // A held button or key: ImGui repeats keys and buttons, scrolls while text is selected by
+  // dragging, and so on, by its clock and with no event.
+  const ImGuiIO& io = ImGui::GetIO();
+  if (std::any_of(std::begin(io.MouseDown), std::end(io.MouseDown), [](bool down) { return down; }) ||
+      std::any_of(std::begin(io.KeysDown), std::end(io.KeysDown), [](bool down) { return down; })) {
+    return true;
+  }
+  // An active widget, except a text field being typed into: that one only blinks its cursor,
+  // and scheduleImGuiTimers asks for each blink.
+  const ImGuiContext& context = *GImGui;
+  if (ImGui::IsAnyItemActive() && context.ActiveId != context.InputTextState.ID) return true;
+  if (redraw_.settling(glfwGetTime())) return true;
+  // Not caught up, yet no worker will deliver anything: what is missing waits for a frame (a
+  // probe held back while a widget was active, say). Nothing else would wake the loop for it.
+  return !settled() && !workRunning() && !resultsWaiting();
+}
+
+void GuiApp::scheduleImGuiTimers() {
+  const ImGuiContext& context = *GImGui;
+  const double now = glfwGetTime();
+  if (context.ActiveId != 0 && context.ActiveId == context.InputTextState.ID && context.IO.ConfigInputTextCursorBlink) {
+    redraw_.redrawAt(now + cursorBlinkSwitchesIn(context.InputTextState.CursorAnim));
+  }
+  // ImGui writes imgui.ini a while after a change (io.IniSavingRate), counting down in frames.
+  if (context.SettingsDirtyTimer > 0.0f) redraw_.redrawAt(now + context.SettingsDirtyTimer);
+}
+
 void GuiApp::holdTappedKeys() {
   // ImGui 1.86 reads keys as "down at the start of a frame": a key pressed and released
   // between two frames (a fast typist, xdotool, a loaded machine) would be lost. Such a key
@@ -329,7 +384,7 @@ void GuiApp::holdTappedKeys() {
   io.KeySuper = io.KeysDown[GLFW_KEY_LEFT_SUPER] || io.KeysDown[GLFW_KEY_RIGHT_SUPER];
 }
 
-void GuiApp::frame(bool& finalFrame) {
+void GuiApp::frame(bool& finalFrame, bool present) {
   // No exception may end the app: the renders report theirs per backend, the panels theirs
   // per panel (drawGuarded); anything else is shown over the whole window.
   try {
@@ -345,6 +400,7 @@ void GuiApp::frame(bool& finalFrame) {
   holdTappedKeys();
   ImGui::NewFrame();
   probe_.beginFrame();
+  redraw_.beginFrame();  // the timed elements drawn below ask for their next redraw
   try {
     drawLayout();
   } catch (const std::exception& e) {
@@ -370,6 +426,7 @@ void GuiApp::frame(bool& finalFrame) {
     state["projection_warnings"] = projectionWarnings_;
     state["camera"] = {{"near", doc_.scene.camera.near}, {"far", doc_.scene.camera.far}};
     state["frames"] = ImGui::GetFrameCount();
+    state["presented"] = presentedFrames_ + (present ? 1 : 0);
     state["settled"] = settled();
     // Every loaded map with its options, whether it is drawn, and its Texture object (a new
     // one after each option edit).
@@ -424,6 +481,8 @@ void GuiApp::frame(bool& finalFrame) {
   probe_.endFrame();
   interacting_ = dragMode_ != DragMode::None || ImGui::IsAnyItemActive();
   ImGui::Render();
+  scheduleImGuiTimers();
+  if (!present) return;
 
   int width = 0, height = 0;
   glfwGetFramebufferSize(window_->window(), &width, &height);
@@ -440,12 +499,15 @@ int GuiApp::run() {
   int exitCode = kExitOk;
   bool idle = false;
   Clock::time_point frameStart = Clock::now();
+  double lastFrameTime = glfwGetTime();  // the last frame, presented or not (glfwGetTime(), seconds)
   while (!glfwWindowShouldClose(window_->window())) {
     if (gQuitRequested) break;
     if (options_.frames > 0) {
       glfwPollEvents();  // scripted runs go as fast as they can
     } else if (idle) {
-      glfwWaitEventsTimeout(kIdleWaitSeconds);
+      const double wait = redraw_.sleepSeconds(glfwGetTime(), workRunning());
+      if (wait > 0.0) glfwWaitEventsTimeout(wait);
+      else glfwPollEvents();  // a timed change is due already
     } else {
       // Busy: wait only for what is left of this frame's 1/60 s, so the wait caps the rate
       // without adding to a frame that already took its time (a fixed wait on top of drawing
@@ -465,18 +527,30 @@ int GuiApp::run() {
       glfwWaitEventsTimeout(kMinimisedWaitSeconds);
       continue;
     }
+    // A worker's result changes what is shown (images, tags, stats, the horizon status) and
+    // the layout with it: drawn, and settled, as after an event (the frame that takes it
+    // notes one too, for a result that comes in between).
+    if (resultsWaiting()) noteEvent();
+    // Idle and nothing happened: no frame (redraw_policy.h). The test probe still gets one
+    // laid out now and then, not drawn, so a scripted test waiting for frames sees them come.
+    bool present = true;
+    if (options_.frames <= 0 && idle && !redraw_.due(glfwGetTime())) {
+      if (!probe_.enabled() || glfwGetTime() - lastFrameTime < kProbeFrameSeconds) continue;
+      present = false;
+    }
+    lastFrameTime = glfwGetTime();
     const bool limitReached = options_.frames > 0 && framesDrawn + 1 >= options_.frames;
     bool finalFrame = limitReached;
     if (limitReached && !settleStart) settleStart = Clock::now();
     const bool timedOut =
         settleStart && Clock::now() - *settleStart > std::chrono::milliseconds(kSettleTimeoutMs);
-    frame(finalFrame);
+    frame(finalFrame, present);
     if (limitReached && timedOut && !finalFrame) {
       std::cerr << "twinraster-gui: warning: the frames did not settle within " << kSettleTimeoutMs / 1000
                 << " s; the last frame shows what had finished\n";
       finalFrame = true;
     }
-    if (windowShotRequested_) {
+    if (present && windowShotRequested_) {
       windowShotRequested_ = false;
       const std::filesystem::path dir = prefs_.screenshotDir.empty() ? "." : prefs_.screenshotDir;
       const std::string path = (dir / ("twinraster-" + timestamp() + "-window.png")).string();
@@ -495,11 +569,14 @@ int GuiApp::run() {
         exitCode = kExitBadInput;
       }
     }
-    glfwSwapBuffers(window_->window());
-    ++framesDrawn;
+    if (present) {
+      glfwSwapBuffers(window_->window());
+      ++framesDrawn;
+      ++presentedFrames_;
+      redraw_.frameDrawn();
+    }
     if (finalFrame) break;
-    idle = prefs_.viewMode != ViewMode::Flicker && dragMode_ == DragMode::None &&
-           !ImGui::IsAnyItemActive() && settled();
+    idle = !keepDrawing();
     if (limitReached) {
       worker_.waitIdle(kSettlePoll);
       glWorker_->waitIdle(kSettlePoll);
@@ -511,6 +588,7 @@ int GuiApp::run() {
 void GuiApp::showScreenshotMessage(std::string message) {
   screenshotMessage_ = std::move(message);
   screenshotMessageTime_ = glfwGetTime();
+  noteEvent();  // set after a frame was drawn (F12): it needs a frame of its own
 }
 
 void GuiApp::saveWindowScreenshot(const std::string& path) {

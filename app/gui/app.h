@@ -17,6 +17,7 @@
 #include "app/gui/panel_sizing.h"
 #include "app/gui/pixel_probe.h"
 #include "app/gui/prefs.h"
+#include "app/gui/redraw_policy.h"
 #include "app/gui/scene_doc.h"
 #include "app/gui/test_probe.h"
 #include "compare/metrics.h"
@@ -89,9 +90,22 @@ class GuiApp {
   void destroyWindow();
   void setUpImGuiStyle(float uiScale, float fontRasterScale);
   void openScene(const std::string& path);
-  void frame(bool& finalFrame);
+  // One frame: the renders brought up to date, the panels laid out and (when `present`)
+  // drawn into the back buffer. Unpresented frames only keep the test probe's state current.
+  void frame(bool& finalFrame, bool present);
   void holdTappedKeys();
   bool settled() const;
+  // Loop pacing (redraw_policy.h): an input or window event arrived (GLFW callbacks).
+  void noteEvent();
+  static void windowEvent(GLFWwindow* window);
+  // A worker has a job queued or running / a finished one the UI has not taken.
+  bool workRunning() const;
+  bool resultsWaiting() const;
+  // After a frame: whether the loop must keep drawing at the busy rate, rather than sleep
+  // until something happens.
+  bool keepDrawing() const;
+  // Asks for the redraws ImGui's own timers need (text cursor blink, imgui.ini save).
+  void scheduleImGuiTimers();
   void saveWindowScreenshot(const std::string& path);
   void saveViewScreenshots();
   void showScreenshotMessage(std::string message);
@@ -215,6 +229,9 @@ class GuiApp {
 
   ImageTexture cpuTexture_, glTexture_, heatTexture_, classTexture_;
   bool cpuTextureStale_ = true, glTextureStale_ = true;
+
+  RedrawPolicy redraw_;
+  long presentedFrames_ = 0;  // frames drawn on screen (the test probe's "presented")
 
   DragMode dragMode_ = DragMode::None;
   bool interacting_ = false;  // last frame: a drag over the image or an active widget (the GL probe waits)

@@ -106,7 +106,9 @@ std::optional<HorizonRequest> nextHorizonToBuild(const SceneDoc& doc, const std:
 }  // namespace
 
 void GuiApp::syncHorizonMaps() {
-  for (HorizonBuilt& built : horizonWorker_.takeFinished()) {
+  std::vector<HorizonBuilt> finished = horizonWorker_.takeFinished();
+  if (!finished.empty()) noteEvent();  // as takeCpuFrames
+  for (HorizonBuilt& built : finished) {
     horizonBuilding_.reset();
     const std::size_t m = built.request.material;
     const std::string name = m < doc_.scene.materials.size() ? doc_.scene.materials[m].name : std::string("?");
@@ -197,7 +199,11 @@ void GuiApp::pinPixel(std::optional<PixelPos> pixel) {
 }
 
 void GuiApp::takeCpuFrames() {
-  for (CpuFrame& frame : worker_.takeFinished()) {
+  std::vector<CpuFrame> frames = worker_.takeFinished();
+  // Something new to show: drawn and settled, even when a frame only laid out for the test
+  // probe (app.cpp, run) took it.
+  if (!frames.empty()) noteEvent();
+  for (CpuFrame& frame : frames) {
     if (frame.rendered) {
       std::erase_if(cpuPending_, [&frame](std::uint64_t revision) { return revision <= frame.revision; });
       cpuFrame_.revision = frame.revision;
@@ -225,7 +231,9 @@ void GuiApp::takeCpuFrames() {
 
 void GuiApp::takeGlFrames() {
   if (!glWorker_) return;
-  for (GlFrameResult& frame : glWorker_->takeFinished()) {
+  std::vector<GlFrameResult> frames = glWorker_->takeFinished();
+  if (!frames.empty()) noteEvent();  // as takeCpuFrames
+  for (GlFrameResult& frame : frames) {
     if (frame.rendered) {
       glFrame_ = BackendFrame{};
       glFrame_.revision = frame.revision;

@@ -68,6 +68,8 @@ class CpuWorker {
   bool idle() const { return queue_.idle(); }
   // True when a job waits for the running one to finish.
   bool hasQueued() const { return queue_.hasQueued(); }
+  // True when a finished job waits to be taken (an idle UI draws a frame for it).
+  bool hasFinished() const { return queue_.hasFinished(); }
   // Finished jobs not yet taken, oldest first (at most a few: the UI takes them every frame).
   std::vector<CpuFrame> takeFinished() { return queue_.takeFinished(); }
   // Blocks until idle or `timeout` passes; true when idle.

@@ -61,6 +61,7 @@ class GlWorker {
   void submit(GlJob job) { queue_.submit(std::move(job)); }
   bool idle() const { return queue_.idle(); }
   bool hasQueued() const { return queue_.hasQueued(); }
+  bool hasFinished() const { return queue_.hasFinished(); }
   std::vector<GlFrameResult> takeFinished() { return queue_.takeFinished(); }
   bool waitIdle(std::chrono::milliseconds timeout) const { return queue_.waitIdle(timeout); }
 

@@ -30,6 +30,7 @@ class HorizonWorker {
 
   void submit(HorizonRequest request) { queue_.submit(std::move(request)); }
   bool idle() const { return queue_.idle(); }
+  bool hasFinished() const { return queue_.hasFinished(); }
   std::vector<HorizonBuilt> takeFinished() { return queue_.takeFinished(); }
 
  private:

@@ -33,6 +33,11 @@ class JobQueue {
     const std::lock_guard lock(mutex_);
     return queued_.has_value();
   }
+  // True when a finished job waits to be taken: the UI has something new to show.
+  bool hasFinished() const {
+    const std::lock_guard lock(mutex_);
+    return !finished_.empty();
+  }
   // Finished jobs not yet taken, oldest first.
   std::vector<Result> takeFinished() {
     const std::lock_guard lock(mutex_);

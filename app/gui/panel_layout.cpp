@@ -4,6 +4,8 @@
 #include "app/gui/app.h"
 #include "app/gui/ui_widgets.h"
 
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 #include <imgui_internal.h>
 
 #include <algorithm>
@@ -141,6 +143,7 @@ void GuiApp::drawPanelFault(const char* panel) {
     panelFaults_.erase(fault);
     return;
   }
+  redraw_.redrawAt(glfwGetTime() + (fault->second.time + kFaultSeconds - ImGui::GetTime()));  // to take it away
   errorText(std::string(panel) + " panel: " + fault->second.message +
             " (the rest of this panel was skipped; the app keeps running)");
   if (probe_.enabled()) probe_.state()["panel_faults"][panel] = fault->second.message;

@@ -117,15 +117,6 @@ std::optional<ImVec2> projectToRect(const Camera& camera, const vec3& posWorld, 
   return ImVec2(rect.min.x + (0.5f * xNdc + 0.5f) * rect.width(), rect.min.y + (0.5f - 0.5f * yNdc) * rect.height());
 }
 
-std::string ageText(const BackendFrame& frame) {
-  if (frame.revision == 0) return "";
-  const double seconds = std::chrono::duration<double>(Clock::now() - frame.finishedAt).count();
-  char buffer[48];
-  if (seconds < 1.0) std::snprintf(buffer, sizeof buffer, "%.0f ms old", seconds * 1000.0);
-  else std::snprintf(buffer, sizeof buffer, "%.1f s old", seconds);
-  return buffer;
-}
-
 }  // namespace
 
 void GuiApp::drawViewPanel() {
@@ -184,6 +175,7 @@ void GuiApp::drawViewMessages(ImVec2 regionMin, ImVec2 regionSize) {
   }
   if (!screenshotMessage_.empty() && glfwGetTime() - screenshotMessageTime_ < kMessageSeconds) {
     box(screenshotMessage_, kMessageBackground, IM_COL32(220, 220, 220, 255));
+    redraw_.redrawAt(screenshotMessageTime_ + kMessageSeconds);  // to take it away
   }
   // The lights hint stays as long as the lights are off screen: at the bottom, clear of
   // the image tags at the top.
@@ -384,9 +376,12 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
     return "";
   };
   // The frame's age and edit; an older edit says whether a newer one is on its way.
-  const auto details = [this](const BackendFrame& frame) {
-    std::string text = ageText(frame);
-    if (frame.revision == 0) return text;
+  std::optional<double> youngestAge;  // of the tags drawn, seconds
+  const auto details = [this, &youngestAge](const BackendFrame& frame) {
+    if (frame.revision == 0) return std::string();
+    const double age = std::chrono::duration<double>(Clock::now() - frame.finishedAt).count();
+    youngestAge = std::min(age, youngestAge.value_or(age));
+    std::string text = frameAgeText(age);
     text += concat(", edit ", frame.revision);
     if (frame.revision != doc_.revision) {
       text += !renderBlocker_.empty() ? " (nothing renders: invalid camera)" : ", rendering the new one...";
@@ -483,6 +478,11 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
       break;
     }
   }
+
+  // An idle loop redraws when the youngest age's text next changes (it gets coarser as the
+  // frame ages); an older tag's age changes at the same redraws, never more often. Its figure
+  // is rounded down, so showing it late still tells the truth (the frame is at least that old).
+  if (youngestAge) redraw_.redrawAt(glfwGetTime() + frameAgeTextLasts(*youngestAge));
 
   // Lights ticked but not on screen get a hint (drawViewMessages): a marker nobody sees
   // does not say where the light went.

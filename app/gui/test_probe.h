@@ -2,7 +2,9 @@
 // variable TWINRASTER_GUI_TEST_STATE=FILE set, every frame writes FILE as JSON: where named
 // widgets are on screen (window coordinates, so xdotool can click them wherever the fonts
 // put them), the render size, the panel sizes, the hover line, the edit counters and the
-// errors on screen. Off, and free, when the variable is unset.
+// errors on screen. Off, and free, when the variable is unset. An idle app draws no frames
+// (redraw_policy.h); for this file it still lays one out now and then, not drawn, so a test
+// waiting for frames sees them come ("presented" counts the frames drawn on screen).
 #pragma once
 
 #include <imgui.h>

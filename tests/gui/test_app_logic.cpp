@@ -1,12 +1,15 @@
 // The desktop app's pure logic, no window: frame-time medians that restart and skip cold
 // frames (issue 20, defect 2), panel sizes that recover after the window shrinks and grows
-// (defect 4), and the hover line's rule for comparing two images (defect 5).
+// (defect 4), the hover line's rule for comparing two images (defect 5), and when an idle
+// loop draws the window (redraw_policy.h).
 #include "app/gui/frame_pairing.h"
 #include "app/gui/frame_timing.h"
 #include "app/gui/panel_sizing.h"
+#include "app/gui/redraw_policy.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 
 namespace twr::gui {
@@ -110,6 +113,96 @@ TEST(FramePairing, OnlyImagesOfTheSameEditAreCompared) {
   EXPECT_NE(note.find("different edits"), std::string::npos) << note;
   EXPECT_NE(note.find("edit 5"), std::string::npos) << note;
   EXPECT_NE(note.find("edit 9"), std::string::npos) << note;
+}
+
+// An idle window is drawn only for an event, a worker's result or a timed change; after an
+// event it keeps drawing until ImGui has settled, by frames and by time.
+TEST(RedrawPolicy, DrawsOnlyWhenSomethingHappened) {
+  RedrawPolicy policy;
+  EXPECT_FALSE(policy.due(10.0));
+  EXPECT_FALSE(policy.settling(10.0));
+
+  policy.event(10.0);
+  EXPECT_TRUE(policy.due(10.0));
+  for (int frame = 0; frame < kSettleFrames; ++frame) {
+    EXPECT_TRUE(policy.settling(10.01)) << "frame " << frame;
+    policy.frameDrawn();
+    EXPECT_FALSE(policy.due(10.01)) << "the event is drawn";
+  }
+  EXPECT_TRUE(policy.settling(10.0 + 0.5 * kSettleSeconds)) << "frames drawn, but not for long enough";
+  EXPECT_FALSE(policy.settling(10.0 + kSettleSeconds));
+}
+
+TEST(RedrawPolicy, TheEarliestTimedChangeWinsAndEachFrameAsksAgain) {
+  RedrawPolicy policy;
+  policy.beginFrame();
+  policy.redrawAt(18.0);
+  policy.redrawAt(11.0);
+  policy.redrawAt(15.0);
+  EXPECT_EQ(policy.deadline(), 11.0);
+  EXPECT_FALSE(policy.due(10.9));
+  EXPECT_TRUE(policy.due(11.0));
+  // Sleeps until the change, never longer than a poll of the workers.
+  EXPECT_NEAR(policy.sleepSeconds(10.95, false), 0.05, 1e-9);
+  EXPECT_DOUBLE_EQ(policy.sleepSeconds(5.0, false), kIdlePollSeconds);
+  EXPECT_DOUBLE_EQ(policy.sleepSeconds(5.0, true), kWorkPollSeconds);
+  EXPECT_DOUBLE_EQ(policy.sleepSeconds(12.0, false), 0.0) << "already late";
+  policy.beginFrame();
+  EXPECT_FALSE(policy.deadline()) << "what is no longer drawn asks for nothing";
+  EXPECT_FALSE(policy.due(100.0));
+}
+
+TEST(FrameAge, CoarserAsTheFrameAgesAndRoundedDown) {
+  EXPECT_EQ(frameAgeText(0.0), "0 ms old");
+  EXPECT_EQ(frameAgeText(0.2379), "237 ms old");
+  EXPECT_EQ(frameAgeText(-0.01), "0 ms old") << "a clock step back is not a negative age";
+  EXPECT_EQ(frameAgeText(1.0), "1 s old");
+  EXPECT_EQ(frameAgeText(9.99), "9 s old");
+  EXPECT_EQ(frameAgeText(10.0), "10 s old");
+  EXPECT_EQ(frameAgeText(59.9), "50 s old");
+  EXPECT_EQ(frameAgeText(60.0), "1 min old");
+  EXPECT_EQ(frameAgeText(3599.0), "59 min old");
+  EXPECT_EQ(frameAgeText(7300.0), "2 h old");
+}
+
+TEST(FrameAge, LastsUntilItsTextChanges) {
+  // Below 1 s the milliseconds change every frame; the next text an idle loop shows is 1 s.
+  EXPECT_DOUBLE_EQ(frameAgeTextLasts(0.25), 0.75);
+  EXPECT_DOUBLE_EQ(frameAgeTextLasts(1.0), 1.0);
+  EXPECT_DOUBLE_EQ(frameAgeTextLasts(4.5), 0.5);
+  EXPECT_DOUBLE_EQ(frameAgeTextLasts(12.0), 8.0);
+  EXPECT_DOUBLE_EQ(frameAgeTextLasts(59.0), 1.0);
+  EXPECT_DOUBLE_EQ(frameAgeTextLasts(90.0), 30.0);
+  EXPECT_DOUBLE_EQ(frameAgeTextLasts(3600.0), 3600.0);
+  // At the time it gives, the text is another one; just before, it is the same.
+  for (const double age : {0.3, 1.0, 4.5, 9.5, 12.0, 59.0, 61.0, 3599.5, 5000.0}) {
+    const double lasts = frameAgeTextLasts(age);
+    EXPECT_GT(lasts, 0.0) << age;
+    EXPECT_NE(frameAgeText(age + lasts), frameAgeText(age)) << age;
+    if (age >= 1.0) {
+      EXPECT_EQ(frameAgeText(age + 0.999 * lasts), frameAgeText(age)) << age;
+    }
+  }
+  // An idle window redraws for the age at 1, 2, ..., 10 s, 20, ..., 50 s and 1 min: 15 times
+  // in the first minute, then once a minute.
+  int redraws = 0;
+  for (double age = 0.3; age < 60.0; age += frameAgeTextLasts(age)) ++redraws;
+  EXPECT_EQ(redraws, 15);
+}
+
+TEST(CursorBlink, SwitchesAsImGuiDrawsIt) {
+  const auto visible = [](double timer) {
+    return timer <= 0.0 || std::fmod(timer, kCursorBlinkPeriodSeconds) <= kCursorBlinkOnSeconds;
+  };
+  EXPECT_NEAR(cursorBlinkSwitchesIn(-0.3), 1.1 + kCursorBlinkSlackSeconds, 1e-12) << "just typed: on for 1.1 s";
+  EXPECT_NEAR(cursorBlinkSwitchesIn(0.5), 0.3 + kCursorBlinkSlackSeconds, 1e-12);
+  EXPECT_NEAR(cursorBlinkSwitchesIn(1.0), 0.2 + kCursorBlinkSlackSeconds, 1e-12);
+  for (double timer = -0.3; timer < 5.0; timer += 0.037) {
+    const double wait = cursorBlinkSwitchesIn(timer);
+    EXPECT_GT(wait, 0.0) << timer;
+    EXPECT_NE(visible(timer + wait), visible(timer)) << "no switch at " << timer;
+    EXPECT_EQ(visible(timer + wait - 2.0 * kCursorBlinkSlackSeconds), visible(timer)) << "a switch missed at " << timer;
+  }
 }
 
 }  // namespace

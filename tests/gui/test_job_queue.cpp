@@ -23,12 +23,15 @@ TEST(JobQueue, NewerJobReplacesTheWaitingOne) {
   EXPECT_FALSE(queue.superseded());
   queue.submit(3);
   EXPECT_TRUE(queue.superseded());
+  EXPECT_FALSE(queue.hasFinished());
   queue.finish(20);
+  EXPECT_TRUE(queue.hasFinished());  // an idle UI draws a frame for it
   EXPECT_FALSE(queue.idle());  // 3 still waits
   EXPECT_EQ(queue.next().value_or(0), 3);
   queue.finish(30);
   EXPECT_TRUE(queue.idle());
   EXPECT_EQ(queue.takeFinished(), (std::vector<int>{20, 30}));
+  EXPECT_FALSE(queue.hasFinished());
   EXPECT_TRUE(queue.takeFinished().empty());
 }
 
