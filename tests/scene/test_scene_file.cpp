@@ -507,9 +507,12 @@ TEST(SceneFile, MeshParametersReachTheDescsAndMeshes) {
 
 // A folder under the test output with two height maps written as PNGs (top row first in the
 // file, so the file's last row is v = 0): ramp.png, 4 x 2, red 0, 60, 120, 180 on both rows;
-// flat.png, 2 x 2, all 102 (0.4).
+// flat.png, 2 x 2, all 102 (0.4). One folder per test: ctest runs tests in parallel, and one
+// test rewriting the files another is reading made it read an empty PNG.
 std::string heightfieldDir() {
-  const std::filesystem::path dir = std::filesystem::path(TWINRASTER_TEST_OUT) / "scene_file_heightfield";
+  const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::filesystem::path dir = std::filesystem::path(TWINRASTER_TEST_OUT) / "scene_file_heightfield" /
+                                    (test ? std::string(test->name()) : std::string("outside_a_test"));
   std::filesystem::create_directories(dir);
   Image ramp = makeImage(4, 2);
   for (int y = 0; y < 2; ++y)
