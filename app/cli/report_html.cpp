@@ -244,6 +244,15 @@ std::string chartSvg(const KnobResult& knob, bool heightView = false) {
   return s.str();
 }
 
+// A point's first cells in every points table: setting, backend, ms median, ms min, frames.
+std::string timingCells(const ReportPoint& p) {
+  std::ostringstream s;
+  s << "<td>" << escape(p.setting) << "</td><td class=\"" << (p.backend == "gl" ? "gl" : "cpu") << "\">"
+    << escape(p.backend) << "</td><td>" << msText(p.msMedian) << "</td><td>" << msText(p.msMin) << "</td><td>"
+    << p.frames << "</td>";
+  return s.str();
+}
+
 std::string pointsTable(const KnobResult& knob) {
   std::ostringstream s;
   s << "<table>\n<thead><tr><th>setting</th><th>backend</th><th>ms median</th><th>ms min</th><th>frames</th>"
@@ -252,9 +261,7 @@ std::string pointsTable(const KnobResult& knob) {
        "<th>CPU vs GL RMSE</th><th>CPU vs GL max</th><th>CPU vs GL coverage</th></tr></thead>\n<tbody>\n";
   for (const ReportPoint& p : knob.points) {
     const CompareMetrics& m = p.vsReference;
-    s << "<tr><td>" << escape(p.setting) << "</td><td class=\"" << (p.backend == "gl" ? "gl" : "cpu") << "\">"
-      << escape(p.backend) << "</td><td>" << msText(p.msMedian) << "</td><td>" << msText(p.msMin) << "</td><td>"
-      << p.frames << "</td><td>" << num(m.rmse, 2) << "</td><td>" << num(m.psnr, 1) << "</td><td>" << m.maxAbsDiff
+    s << "<tr>" << timingCells(p) << "<td>" << num(m.rmse, 2) << "</td><td>" << num(m.psnr, 1) << "</td><td>" << m.maxAbsDiff
       << "</td><td>" << num(m.over1Pct(), 2) << "</td><td>" << m.coverageMismatch << "</td>";
     if (p.vsExactSetting) {
       s << "<td title=\"against " << escape(p.backend + " " + p.exactSetting) << "\">" << num(p.vsExactSetting->rmse, 2)
@@ -314,9 +321,7 @@ std::string heightPointsTable(const KnobResult& knob) {
        "<th>CPU vs GL RMSE</th><th>CPU vs GL max</th></tr></thead>\n<tbody>\n";
   for (const ReportPoint& p : knob.points) {
     const CompareMetrics& m = p.vsReference;
-    s << "<tr><td>" << escape(p.setting) << "</td><td class=\"" << (p.backend == "gl" ? "gl" : "cpu") << "\">"
-      << escape(p.backend) << "</td><td>" << msText(p.msMedian) << "</td><td>" << msText(p.msMin) << "</td><td>"
-      << p.frames << "</td><td>" << num(m.rmse, 2) << "</td><td>" << num(m.meanAbsDiff, 2) << "</td><td>"
+    s << "<tr>" << timingCells(p) << "<td>" << num(m.rmse, 2) << "</td><td>" << num(m.meanAbsDiff, 2) << "</td><td>"
       << m.maxAbsDiff << "</td><td>" << num(m.over1Pct(), 2) << "</td>";
     if (p.heightField) {
       s << "<td>" << p.heightField->interiorPixels << "</td><td>" << p.heightField->silhouetteApproxOnly << "</td><td>"
