@@ -77,6 +77,36 @@ HWY_INLINE LaneF fetchTexelRedByte(const TiledTexture& t, int levelIndex, LaneI 
   return wordByte<0>(tiledTexelWords(t, levelIndex, x, y));
 }
 
+// The four red bytes of a bilinear footprint: one gather from the footprint words where the
+// texture has them (a height map), four from the tiled texels otherwise. x1 is x0 or the next
+// texel (wrapped), y1 likewise (texture_sample-inl.h's linearAxisLanes).
+template <typename L>
+HWY_INLINE Vec4L<LaneF> fetchRedFootprintBytes(const TiledTexture& t, int levelIndex, LaneI x0, LaneI x1, LaneI y0,
+                                               LaneI y1) {
+  static_assert(std::is_same_v<L, LaneF>);
+  if (t.redFootprints.empty()) {
+    return Vec4L<LaneF>(fetchTexelRedByte<L>(t, levelIndex, x0, y0), fetchTexelRedByte<L>(t, levelIndex, x1, y0),
+                        fetchTexelRedByte<L>(t, levelIndex, x0, y1), fetchTexelRedByte<L>(t, levelIndex, x1, y1));
+  }
+  const RedFootprintLevel& level = t.redFootprints[static_cast<std::size_t>(levelIndex)];
+  const DI di;
+  const auto index = hn::Add(hn::Mul(y0.v, hn::Set(di, level.width)), x0.v);
+  const auto words =
+      hn::BitCast(DU(), hn::GatherIndex(di, reinterpret_cast<const std::int32_t*>(level.words.data()), index));
+  const LaneF b00 = wordByte<0>(words), b10 = wordByte<8>(words), b01 = wordByte<16>(words), b11 = wordByte<24>(words);
+  // Repeat reads exactly the word's footprint (on a side of one texel, x1 = x0 = 0, and so is
+  // the word's neighbour).
+  if (t.wrap == TextureWrap::Repeat) return Vec4L<LaneF>(b00, b10, b01, b11);
+  // Where a clamped or mirrored read stays on its texel (x1 == x0), it takes the word's own
+  // column again; likewise for rows.
+  const auto sameX = hn::RebindMask(DF(), hn::Eq(x1.v, x0.v));
+  const auto sameY = hn::RebindMask(DF(), hn::Eq(y1.v, y0.v));
+  const LaneF t10(hn::IfThenElse(sameX, b00.v, b10.v));
+  const LaneF t01(hn::IfThenElse(sameY, b00.v, b01.v));
+  const LaneF t11(hn::IfThenElse(sameX, t01.v, hn::IfThenElse(sameY, t10.v, b11.v)));
+  return Vec4L<LaneF>(b00, t10, t01, t11);
+}
+
 // The sRGB decode of byte values, from texture_sample.h's table (doubles rounded to float).
 HWY_INLINE LaneF linearFromSrgbByte(LaneF byte) {
   static const std::array<float, 256> table = [] {
@@ -388,6 +418,30 @@ FastKernels fastKernelsFor(CpuIsa isa) {
     default: break;
   }
   throw InputError("cpu renderer: --cpu-isa " + std::string(toString(isa)) + ": no kernels compiled for it");
+}
+
+std::vector<RedFootprintLevel> makeRedFootprints(const Texture& texture) {
+  std::vector<RedFootprintLevel> out;
+  for (int l = 0; l < texture.levelCount(); ++l) {
+    RedFootprintLevel level;
+    level.width = texture.levelWidth(l);
+    level.height = texture.levelHeight(l);
+    const std::vector<std::uint8_t>& texels = texture.levelTexels(l);
+    const auto red = [&](int x, int y) -> std::uint32_t {
+      return texels[(static_cast<std::size_t>(y) * static_cast<std::size_t>(level.width) + static_cast<std::size_t>(x)) * 4];
+    };
+    level.words.resize(static_cast<std::size_t>(level.width) * static_cast<std::size_t>(level.height));
+    for (int y = 0; y < level.height; ++y) {
+      const int y1 = y + 1 == level.height ? 0 : y + 1;
+      for (int x = 0; x < level.width; ++x) {
+        const int x1 = x + 1 == level.width ? 0 : x + 1;
+        level.words[static_cast<std::size_t>(y) * static_cast<std::size_t>(level.width) + static_cast<std::size_t>(x)] =
+            red(x, y) | red(x1, y) << 8 | red(x, y1) << 16 | red(x1, y1) << 24;
+      }
+    }
+    out.push_back(std::move(level));
+  }
+  return out;
 }
 
 TiledTexture makeTiledTexture(const Texture& texture) {

@@ -55,12 +55,23 @@ struct TiledLevel {
   int blocksPerRow = 0;
   std::vector<TexelBlock> blocks;
 };
+// A height map's red channel as a march reads it, dozens of times per pixel: one 32-bit word
+// per texel holding the red bytes of the bilinear footprint that starts there, (x, y),
+// (x + 1, y), (x, y + 1), (x + 1, y + 1) in bytes 0 to 3, the neighbours wrapped as repeat
+// wraps them. One gather then fetches what took four. A read that clamps or mirrors at an edge
+// takes (x, y) twice instead, which the word also holds.
+struct RedFootprintLevel {
+  int width = 0, height = 0;  // texels, as the source level
+  std::vector<std::uint32_t> words;  // row by row
+};
 struct TiledTexture {
   std::vector<TiledLevel> levels;  // every level of the source texture, level 0 first
+  std::vector<RedFootprintLevel> redFootprints;  // every level, or empty: only height maps have them
   TextureWrap wrap = TextureWrap::Repeat;
   bool srgb = false;
 };
 TiledTexture makeTiledTexture(const Texture& texture);
+std::vector<RedFootprintLevel> makeRedFootprints(const Texture& texture);
 
 // The tiled maps of one draw item (null where the shading uniforms have no such map).
 struct ItemMaps {

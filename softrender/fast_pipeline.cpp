@@ -70,27 +70,34 @@ void FastPipeline::prepareMaps(const std::vector<ItemState>& items) {
   ++frame_;
   maps_.assign(items.size(), ItemMaps{});
   std::vector<TiledEntry*> missing;
-  const auto use = [&](const Texture* raw, const std::shared_ptr<const Texture>& owner) -> const TiledTexture* {
+  const auto use = [&](const Texture* raw, const std::shared_ptr<const Texture>& owner,
+                       bool asHeight = false) -> const TiledTexture* {
     if (!raw) return nullptr;  // the uniforms dropped an unusable map
     auto [found, inserted] = tiled_.try_emplace(raw);
+    TiledEntry& entry = found->second;
     if (inserted) {
-      found->second.texture = owner;
-      missing.push_back(&found->second);
+      entry.texture = owner;
     } else {
       // Options are plain fields an owner may change between frames on the same object (as
       // GlUploadCache allows): the tiled texels do not depend on wrap or srgb, so only the
       // copies of those are refreshed. Texels are const; new texels come as a new Texture.
-      found->second.tiled.wrap = raw->options.wrap;
-      found->second.tiled.srgb = raw->options.srgb;
+      entry.tiled.wrap = raw->options.wrap;
+      entry.tiled.srgb = raw->options.srgb;
     }
-    found->second.lastFrame = frame_;
-    return &found->second.tiled;
+    entry.readAsHeight = entry.readAsHeight || asHeight;
+    const bool incomplete = inserted || (entry.readAsHeight && entry.tiled.redFootprints.empty());
+    if (incomplete && !entry.queued) {
+      entry.queued = true;
+      missing.push_back(&entry);
+    }
+    entry.lastFrame = frame_;
+    return &entry.tiled;
   };
   for (std::size_t k = 0; k < items.size(); ++k) {
     const ShadeUniforms& u = items[k].shade;
     const Material& material = *items[k].item->material;
     maps_[k] = ItemMaps{use(u.diffuseMap, material.diffuseMap), use(u.normalMap, material.normalMap),
-                        use(u.specularMap, material.specularMap), use(u.heightMap, material.heightMap)};
+                        use(u.specularMap, material.specularMap), use(u.heightMap, material.heightMap, true)};
     if (u.horizonDirections > 0 && material.horizonMap) {
       for (std::size_t i = 0; i < material.horizonMap->textures.size() && i < maps_[k].horizon.size(); ++i) {
         maps_[k].horizon[i] = use(u.horizonMaps[i], material.horizonMap->textures[i]);
@@ -99,7 +106,9 @@ void FastPipeline::prepareMaps(const std::vector<ItemState>& items) {
   }
   pool_.run(static_cast<int>(missing.size()), [&](int task, int) {
     TiledEntry& entry = *missing[static_cast<std::size_t>(task)];
-    entry.tiled = makeTiledTexture(*entry.texture);
+    if (entry.tiled.levels.empty()) entry.tiled = makeTiledTexture(*entry.texture);
+    if (entry.readAsHeight && entry.tiled.redFootprints.empty()) entry.tiled.redFootprints = makeRedFootprints(*entry.texture);
+    entry.queued = false;
   });
   std::erase_if(tiled_, [this](const auto& entry) { return entry.second.lastFrame != frame_; });
 }

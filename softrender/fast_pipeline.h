@@ -103,6 +103,8 @@ class FastPipeline {
     std::shared_ptr<const Texture> texture;
     TiledTexture tiled;
     std::uint64_t lastFrame = 0;
+    bool readAsHeight = false;  // some item reads it as a height map: it needs red footprints
+    bool queued = false;        // in this frame's list of copies to make
   };
 
   void prepareMaps(const std::vector<ItemState>& items);

@@ -10,6 +10,9 @@
 //   nextTexelIndex(IntOf<L> i, size)                 i + 1, wrapped
 //   fetchTexelBytes<L>(view, level, IntOf<L> x, IntOf<L> y)   texel RGBA as bytes 0..255 in L
 //   fetchTexelRedByte<L>(view, level, IntOf<L> x, IntOf<L> y) its red byte alone
+//   fetchRedFootprintBytes<L>(view, level, x0, x1, y0, y1) the red bytes of the bilinear
+//       footprint (x0, y0), (x1, y0), (x0, y1), (x1, y1) as Vec4L<L>, where x1 is x0 or the
+//       texel after it (wrapped to 0 at the edge), and y1 likewise
 //   linearFromSrgbByte(L byte)                        the sRGB decode of one byte value
 // plainly a Texture (texture_sample.h), in the fast path a tiled copy (fast_kernels.cpp).
 
@@ -139,12 +142,15 @@ TWR_LANE_INLINE Vec4L<L> texelValue(const View& texture, const Vec4L<L>& bytes) 
 // which GLSL reads as texture(...).r. Each channel is fetched, decoded and filtered alone, so
 // the red one has the same bits either way; reading one channel saves three quarters of the
 // decoding and blending, and a march reads the height map dozens of times per pixel.
+template <typename L, typename View>
+TWR_LANE_INLINE L redValue(const View& texture, const L& byte) {
+  using S = ScalarOf<L>;
+  return texSrgb(texture) ? L(linearFromSrgbByte(byte)) : byte * L(S(1) / S(255));
+}
 template <typename L, typename Texel, typename View>
 TWR_LANE_INLINE Texel texelLanes(const View& texture, int level, const IntOf<L>& x, const IntOf<L>& y) {
-  using S = ScalarOf<L>;
   if constexpr (std::is_same_v<Texel, L>) {
-    const L byte = fetchTexelRedByte<L>(texture, level, x, y);
-    return texSrgb(texture) ? L(linearFromSrgbByte(byte)) : byte * L(S(1) / S(255));
+    return (redValue<L>)(texture, fetchTexelRedByte<L>(texture, level, x, y));
   } else {
     return texelValue<L>(texture, fetchTexelBytes<L>(texture, level, x, y));
   }
@@ -154,7 +160,7 @@ TWR_LANE_INLINE Texel texelLanes(const View& texture, int level, const IntOf<L>&
 // both rows, then along v: a + w (b - a) (llvmpipe fuses each into one FMA; the CPU rounds
 // twice, about one float ULP apart).
 template <typename L, typename View, typename Texel = Vec4L<L>>
-TWR_LANE_OUTLINE Texel sampleLevelLanes(const View& texture, int level, const Vec2L<L>& uv, bool linear) {
+TWR_LANE_INLINE Texel sampleLevelInlineLanes(const View& texture, int level, const Vec2L<L>& uv, bool linear) {
   const int width = texLevelWidth(texture, level), height = texLevelHeight(texture, level);
   const TextureWrap wrap = texWrap(texture);
   if (!linear) {
@@ -163,19 +169,81 @@ TWR_LANE_OUTLINE Texel sampleLevelLanes(const View& texture, int level, const Ve
   }
   const AxisFootprintL<L> ax = (linearAxisLanes<L>)(uv.x, width, wrap);
   const AxisFootprintL<L> ay = (linearAxisLanes<L>)(uv.y, height, wrap);
-  const Texel t00 = (texelLanes<L, Texel>)(texture, level, ax.i0, ay.i0);
-  const Texel t10 = (texelLanes<L, Texel>)(texture, level, ax.i1, ay.i0);
-  const Texel t01 = (texelLanes<L, Texel>)(texture, level, ax.i0, ay.i1);
-  const Texel t11 = (texelLanes<L, Texel>)(texture, level, ax.i1, ay.i1);
+  Texel t00, t10, t01, t11;
+  if constexpr (std::is_same_v<Texel, L>) {
+    // The red channel alone: the view hands the four bytes over together (the fast path reads
+    // them with one gather from a height map's footprint words).
+    const Vec4L<L> bytes = fetchRedFootprintBytes<L>(texture, level, ax.i0, ax.i1, ay.i0, ay.i1);
+    t00 = (redValue<L>)(texture, bytes.x);
+    t10 = (redValue<L>)(texture, bytes.y);
+    t01 = (redValue<L>)(texture, bytes.z);
+    t11 = (redValue<L>)(texture, bytes.w);
+  } else {
+    t00 = (texelLanes<L, Texel>)(texture, level, ax.i0, ay.i0);
+    t10 = (texelLanes<L, Texel>)(texture, level, ax.i1, ay.i0);
+    t01 = (texelLanes<L, Texel>)(texture, level, ax.i0, ay.i1);
+    t11 = (texelLanes<L, Texel>)(texture, level, ax.i1, ay.i1);
+  }
   const Texel bottomRow = t00 + (t10 - t00) * ax.weight;
   const Texel topRow = t01 + (t11 - t01) * ax.weight;
   return bottomRow + (topRow - bottomRow) * ay.weight;
 }
+// The same, one out-of-line copy (a colour read, inlined in every kernel, would multiply their
+// compile time).
+template <typename L, typename View, typename Texel = Vec4L<L>>
+TWR_LANE_OUTLINE Texel sampleLevelLanes(const View& texture, int level, const Vec2L<L>& uv, bool linear) {
+  return (sampleLevelInlineLanes<L, View, Texel>)(texture, level, uv, linear);
+}
+// A height read (red alone) is inlined into its one caller, sampleMipLevelsLanes: a march
+// makes dozens per pixel, and the levels of a trilinear read then overlap.
+template <typename L, typename View, typename Texel>
+TWR_LANE_INLINE Texel sampleLevelForLanes(const View& texture, int level, const Vec2L<L>& uv, bool linear) {
+  if constexpr (std::is_same_v<Texel, L>) {
+    return (sampleLevelInlineLanes<L, View, Texel>)(texture, level, uv, linear);
+  } else {
+    return (sampleLevelLanes<L, View, Texel>)(texture, level, uv, linear);
+  }
+}
 
-// Lanes may read different levels. For a first and a second level per lane (integer values,
-// level1 >= level0), each distinct level is sampled once, for every lane that takes it as its
-// first or its second level: a vector straddling a level boundary reads 3 levels for trilinear,
-// not 4. One level per lane is the pair (level, level).
+// The mip levels a sample reads, from its LOD and the filter: each lane's first and second
+// level (integer values, level1 >= level0; equal for *_mipmap_nearest, 0 for filters without
+// mipmaps), the weight of the second, and the lowest and highest level any lane reads. Reads
+// that share a LOD share these: a march over a height map finds them once per fragment.
+// *_mipmap_nearest: level rint(lod); *_mipmap_linear: levels floor(lod) and the next, blended
+// by frac(lod). Levels clamp to the chain the texture has.
+template <typename L>
+struct MipLevelsL {
+  L level0, level1, fraction;
+  int lowest = 0, highest = 0;
+};
+template <typename L, typename View>
+TWR_LANE_INLINE MipLevelsL<L> mipLevelsLanes(const View& texture, TextureFilter filter, const L& lod) {
+  using S = ScalarOf<L>;
+  const int last = texLevelCount(texture) - 1;
+  const L zero(S(0));
+  MipLevelsL<L> m{zero, zero, zero, 0, 0};
+  if (!usesMipmaps(filter) || last == 0) return m;
+  const L lastL(static_cast<S>(last));
+  const L clamped = minOf(lod, lastL);
+  if (!levelsLinear(filter)) {
+    m.level0 = minOf(maxOf(roundEvenOf(clamped), zero), lastL);
+    m.level1 = m.level0;
+  } else {
+    const L floorLod = floorOf(clamped);
+    const auto below = floorLod < zero;
+    const auto atLast = floorLod >= lastL;
+    m.level0 = select(below, zero, select(atLast, lastL, floorLod));
+    m.fraction = select(below | atLast, zero, clamped - floorLod);
+    m.level1 = minOf(m.level0 + L(S(1)), lastL);
+  }
+  m.lowest = static_cast<int>(lowestLane(m.level0));
+  m.highest = static_cast<int>(highestLane(m.level1));
+  return m;
+}
+
+// Lanes may read different levels: each distinct level is sampled once, for every lane that
+// takes it as its first or its second level (a vector straddling a level boundary reads 3
+// levels for trilinear, not 4).
 template <typename L>
 TWR_LANE_INLINE Vec4L<L> selectTexel(const MaskOf<L>& mask, const Vec4L<L>& a, const Vec4L<L>& b) {
   return Vec4L<L>(select(mask, a.x, b.x), select(mask, a.y, b.y), select(mask, a.z, b.z), select(mask, a.w, b.w));
@@ -185,18 +253,16 @@ TWR_LANE_INLINE L selectTexel(const MaskOf<L>& mask, const L& a, const L& b) {
   return select(mask, a, b);
 }
 template <typename L, typename View, typename Texel>
-TWR_LANE_INLINE void sampleLevelPairLanes(const View& texture, const L& level0, const L& level1, const Vec2L<L>& uv,
+TWR_LANE_INLINE void sampleLevelPairLanes(const View& texture, const MipLevelsL<L>& mips, const Vec2L<L>& uv,
                                           bool linear, Texel& s0, Texel& s1) {
   using S = ScalarOf<L>;
-  const int lowest = static_cast<int>(lowestLane(level0));
-  const int highest = static_cast<int>(highestLane(level1));
-  s0 = (sampleLevelLanes<L, View, Texel>)(texture, lowest, uv, linear);
+  s0 = (sampleLevelForLanes<L, View, Texel>)(texture, mips.lowest, uv, linear);
   s1 = s0;
-  for (int l = lowest + 1; l <= highest; ++l) {
+  for (int l = mips.lowest + 1; l <= mips.highest; ++l) {
     const L here(static_cast<S>(l));
-    const auto first = level0 == here, second = level1 == here;
+    const auto first = mips.level0 == here, second = mips.level1 == here;
     if (!anyOf(first | second)) continue;
-    const Texel r = (sampleLevelLanes<L, View, Texel>)(texture, l, uv, linear);
+    const Texel r = (sampleLevelForLanes<L, View, Texel>)(texture, l, uv, linear);
     s0 = (selectTexel<L>)(first, r, s0);
     s1 = (selectTexel<L>)(second, r, s1);
   }
@@ -216,41 +282,25 @@ TWR_LANE_INLINE L quadLodLanes(const Vec2L<L>& dUvDx, const Vec2L<L>& dUvDy, int
   return (floatExponentOf(rho2) + (floatMantissaOf(rho2) - L(S(1)))) * L(S(0.5));
 }
 
-// The filtered RGBA in [0, 1]. `lod` is the quad's (quadLodLanes); filters without mipmaps
-// ignore it. Texels within a level are picked or blended as texelsLinear(filter) says (GL's
-// minification and magnification filters agree for every filter here, so magnification,
-// lod <= 0, is level 0 with the same texel filter). *_mipmap_nearest: level rint(lod);
-// *_mipmap_linear: levels floor(lod) and the next, blended by frac(lod) (a + f (b - a)).
-// Levels clamp to the chain the texture has.
+// The filtered RGBA (or red) in [0, 1] at uv, reading the levels `mips` chose. Texels within
+// a level are picked or blended as texelsLinear(filter) says (GL's minification and
+// magnification filters agree for every filter here, so magnification, lod <= 0, is level 0
+// with the same texel filter); *_mipmap_linear blends its two levels as a + f (b - a).
 template <typename L, typename View, typename Texel = Vec4L<L>>
-TWR_LANE_OUTLINE Texel sampleTextureLanes(const View& texture, const Vec2L<L>& uvIn, TextureFilter filter, const L& lod) {
-  using S = ScalarOf<L>;
+TWR_LANE_OUTLINE Texel sampleMipLevelsLanes(const View& texture, const Vec2L<L>& uvIn, TextureFilter filter,
+                                            const MipLevelsL<L>& mips) {
   const Vec2L<L> uv((sanitizedCoord<L>)(uvIn.x), (sanitizedCoord<L>)(uvIn.y));
-  const bool linear = texelsLinear(filter);
-  const int last = texLevelCount(texture) - 1;
-  Texel result;
-  if (!usesMipmaps(filter) || last == 0) {
-    result = (sampleLevelLanes<L, View, Texel>)(texture, 0, uv, linear);
-  } else {
-    const L zero(S(0)), lastL(static_cast<S>(last));
-    const L clamped = minOf(lod, lastL);
-    Texel s0, s1;
-    if (!levelsLinear(filter)) {
-      const L level = minOf(maxOf(roundEvenOf(clamped), zero), lastL);
-      (sampleLevelPairLanes<L, View, Texel>)(texture, level, level, uv, linear, s0, s1);
-      result = s0;
-    } else {
-      const L floorLod = floorOf(clamped);
-      const auto below = floorLod < zero;
-      const auto atLast = floorLod >= lastL;
-      const L level0 = select(below, zero, select(atLast, lastL, floorLod));
-      const L fraction = select(below | atLast, zero, clamped - floorLod);
-      const L level1 = minOf(level0 + L(S(1)), lastL);
-      (sampleLevelPairLanes<L, View, Texel>)(texture, level0, level1, uv, linear, s0, s1);
-      result = s0 + (s1 - s0) * fraction;
-    }
-  }
-  return result;
+  Texel s0, s1;
+  (sampleLevelPairLanes<L, View, Texel>)(texture, mips, uv, texelsLinear(filter), s0, s1);
+  if (!usesMipmaps(filter) || texLevelCount(texture) == 1 || !levelsLinear(filter)) return s0;
+  return s0 + (s1 - s0) * mips.fraction;
+}
+
+// The filtered RGBA (or red) in [0, 1]. `lod` is the quad's (quadLodLanes); filters without
+// mipmaps ignore it.
+template <typename L, typename View, typename Texel = Vec4L<L>>
+TWR_LANE_INLINE Texel sampleTextureLanes(const View& texture, const Vec2L<L>& uv, TextureFilter filter, const L& lod) {
+  return (sampleMipLevelsLanes<L, View, Texel>)(texture, uv, filter, (mipLevelsLanes<L>)(texture, filter, lod));
 }
 
 // ---- Anisotropic filtering (GL_TEXTURE_MAX_ANISOTROPY > 1), as llvmpipe does it ----

@@ -60,6 +60,12 @@ inline L fetchTexelRedByte(const Texture& texture, int level, std::int32_t x, st
   return L(texture.levelTexels(level)[(static_cast<std::size_t>(y) * static_cast<std::size_t>(texture.levelWidth(level)) +
                                        static_cast<std::size_t>(x)) * 4]);
 }
+template <typename L>
+inline Vec4T<L> fetchRedFootprintBytes(const Texture& texture, int level, std::int32_t x0, std::int32_t x1,
+                                       std::int32_t y0, std::int32_t y1) {
+  return Vec4T<L>(fetchTexelRedByte<L>(texture, level, x0, y0), fetchTexelRedByte<L>(texture, level, x1, y0),
+                  fetchTexelRedByte<L>(texture, level, x0, y1), fetchTexelRedByte<L>(texture, level, x1, y1));
+}
 // sRGB byte value -> linear, GL's formula in double rounded to the lane type.
 const std::array<double, 256>& srgbDecodeTable();
 template <ScalarLane S>

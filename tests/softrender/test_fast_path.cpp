@@ -316,6 +316,41 @@ TEST_P(FastPath, WrapModesSrgbAndNormalMapConventions) {
   }
 }
 
+// Height maps as the fast path reads them (one gather per level from the red footprint words,
+// the mip levels found once per fragment) against the teaching path's four texel reads per
+// level: every wrap mode (clamped and mirrored reads stay on an edge texel, which the words
+// must give back), sRGB, odd sizes down to one texel wide or high, each filter, each kind of
+// height read (bump, the marches, the march towards the light).
+TEST_P(FastPath, HeightMapsUnderEveryWrapModeSizeAndFilter) {
+  expectTargetInUse(GetParam());
+  for (TextureWrap wrap : {TextureWrap::Repeat, TextureWrap::MirroredRepeat, TextureWrap::ClampToEdge}) {
+    for (const ivec2 size : {ivec2(37, 20), ivec2(1, 9), ivec2(16, 1)}) {
+      Scene scene = syntheticScene(vec2(-2.3f, -1.2f), vec2(3.0f, 2.1f), 37, 20, 12.0f);
+      auto height = noiseTexture(size.x, size.y, 4);
+      height->options.wrap = wrap;
+      height->options.srgb = wrap == TextureWrap::MirroredRepeat;
+      Material& m = scene.materials[0];
+      m.heightMap = height;
+      m.heightScale = 0.08f;
+      m.parallaxLayers = ivec2(4, 12);
+      for (SurfaceDetail method : {SurfaceDetail::BumpBlinn, SurfaceDetail::SteepParallax, SurfaceDetail::Relief,
+                                   SurfaceDetail::ParallaxOcclusion}) {
+        m.surfaceDetail = method;
+        m.selfShadow = method == SurfaceDetail::SteepParallax ? SelfShadow::HeightMarch : SelfShadow::None;
+        for (TextureFilter filter : {TextureFilter::Nearest, TextureFilter::Bilinear, TextureFilter::Trilinear,
+                                     TextureFilter::NearestMipmapLinear}) {
+          RenderSettings settings = scene.settings;
+          settings.textureFilter = filter;
+          settings.cull = CullMode::None;
+          expectPathsAgree(scene, settings, 97, 61,
+                           std::string(toString(wrap)) + " " + std::to_string(size.x) + "x" + std::to_string(size.y) +
+                               " " + std::string(toString(method)) + " " + std::string(toString(filter)));
+        }
+      }
+    }
+  }
+}
+
 // A renderer keeps its tiled copies across frames, keyed by the Texture object. Options changed
 // in place on that object between frames (GlUploadCache allows it too) must be followed, as
 // a new renderer would draw them: the tiled texels do not depend on them, the sampler does.
@@ -332,6 +367,28 @@ TEST(FastPathCache, TextureOptionsChangedInPlaceAreFollowed) {
   const RenderOutput second = kept->render(scene, settings, 97, 61);
   EXPECT_NE(first.rgba, second.rgba) << "the options change the picture";
   expectIdentical(makeCpuRenderer(fastSimd(2))->render(scene, settings, 97, 61), second, "options changed in place");
+}
+
+// A texture the renderer already keeps as a diffuse map, then also read as a height map (its
+// red footprint words are made then), and a clamped height map turned to repeat in place: each
+// frame as a new renderer draws it.
+TEST(FastPathCache, ATextureLaterReadAsAHeightMapIsFollowed) {
+  Scene scene = syntheticScene(vec2(-2.3f, -1.2f), vec2(3.0f, 2.1f), 37, 20, 12.0f);
+  const std::shared_ptr<Texture> shared = noiseTexture(37, 20, 1);
+  shared->options.wrap = TextureWrap::ClampToEdge;
+  scene.materials[0].diffuseMap = shared;
+  RenderSettings settings = scene.settings;
+  settings.cull = CullMode::None;
+  const std::unique_ptr<Renderer> kept = makeCpuRenderer(fastSimd(2));
+  const RenderOutput first = kept->render(scene, settings, 97, 61);
+  scene.materials[0].heightMap = shared;
+  scene.materials[0].surfaceDetail = SurfaceDetail::ParallaxOcclusion;
+  const RenderOutput second = kept->render(scene, settings, 97, 61);
+  EXPECT_NE(first.rgba, second.rgba) << "the march changes the picture";
+  expectIdentical(makeCpuRenderer(fastSimd(2))->render(scene, settings, 97, 61), second, "then read as a height map");
+  shared->options.wrap = TextureWrap::Repeat;
+  const RenderOutput third = kept->render(scene, settings, 97, 61);
+  expectIdentical(makeCpuRenderer(fastSimd(2))->render(scene, settings, 97, 61), third, "then turned to repeat");
 }
 
 // Every view on the synthetic material with all its maps and without any, in both lighting
