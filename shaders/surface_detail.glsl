@@ -85,8 +85,12 @@ SurfaceDetail parallax(vec2 uv0, vec3 vT) {
   float depthC = 0.0;
   float surfaceDepth = 1.0 - h0;
   float steps = 0.0;
+  vec2 prevUv = uvC;
+  float prevSurfaceDepth = surfaceDepth;
   for (int i = 0; i < layerCap; ++i) {
     if (!(depthC < surfaceDepth)) break;
+    prevUv = uvC;
+    prevSurfaceDepth = surfaceDepth;
     uvC = vec2(uvC.x - deltaUv.x, uvC.y - deltaUv.y);
     depthC = depthC + layerDepth;
     surfaceDepth = 1.0 - heightAt(uvC);
@@ -105,9 +109,8 @@ SurfaceDetail parallax(vec2 uv0, vec3 vT) {
   }
   steps = steps + float(refinementSteps);
 #elif defined(SURFACE_PARALLAX_OCCLUSION)
-  vec2 prevUv = vec2(uvC.x + deltaUv.x, uvC.y + deltaUv.y);
   float after = surfaceDepth - depthC;
-  float before = (1.0 - heightAt(prevUv)) - depthC + layerDepth;
+  float before = prevSurfaceDepth - depthC + layerDepth;
   float denominator = after - before;
   float weight = abs(denominator) > 0.0 ? after / denominator : 0.0;
   uvC = vec2(prevUv.x * weight + uvC.x * (1.0 - weight), prevUv.y * weight + uvC.y * (1.0 - weight));

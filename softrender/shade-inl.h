@@ -111,7 +111,8 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
     if (shiftsUv(u.surfaceDetail)) {
       const Vec3L<L> eyeVec = kTangentSpace ? f.eyeDirTangent : Vec3L<L>(u.eyePosWorld) - f.posWorld;
       const Vec3L<L> vT = tangentFromLightingLanes<L>(eyeVec, t, b, n, kTangentSpace);
-      detail = parallaxLanes<L>(*maps.height, u, f, vT);
+      const bool wantHeight = kTrace || Features::kView == View::Height || u.selfShadow == SelfShadow::HeightMarch;
+      detail = parallaxLanes<L>(*maps.height, u, f, vT, wantHeight);
     } else {
       if (u.surfaceDetail == SurfaceDetail::BumpBlinn) detail.bumpTangent = bumpBlinnLanes<L>(*maps.height, u, f);
       detail.height = heightAtLanes<L>(*maps.height, u, f.uv, f);

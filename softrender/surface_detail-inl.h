@@ -60,12 +60,37 @@ TWR_LANE_INLINE Texel sampleGradLanes(const View& map, const ShadeUniformsT<Scal
   return sampleTextureLanes<L, View, Texel>(map, uv, u.filter, lod);
 }
 
+// Every height read of one fragment uses the fragment's uv differences, so all share one LOD
+// and one choice of mip levels: found once per fragment (a march reads dozens of heights), the
+// same levels textureGrad finds at each read in GLSL. Anisotropic reads keep the differences.
+template <typename L>
+struct HeightReadsL {
+  MipLevelsL<L> mips;
+};
+template <typename L, typename View>
+TWR_LANE_INLINE HeightReadsL<L> heightReadsLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
+                                                 const FragmentL<L>& f) {
+  using S = ScalarOf<L>;
+  const bool mipmapped = usesMipmaps(u.filter) && !u.anisotropic;
+  const L lod = mipmapped ? quadLodLanes<L>(f.uvDxFine, f.uvDyFine, texLevelWidth(heightMap, 0),
+                                            texLevelHeight(heightMap, 0))
+                          : L(S(0));
+  return HeightReadsL<L>{(mipLevelsLanes<L>)(heightMap, u.filter, lod)};
+}
+
 // heightAt: the height in [0, 1] at uv (the red channel alone), with the fragment's uv
 // differences.
 template <typename L, typename View>
+TWR_LANE_INLINE L heightAtLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
+                                const HeightReadsL<L>& reads, const Vec2L<L>& uv, const FragmentL<L>& f) {
+  if (u.anisotropic) return sampleGradLanes<L, View, L>(heightMap, u, uv, f.uvDxFine, f.uvDyFine);
+  return (sampleMipLevelsLanes<L, View, L>)(heightMap, uv, u.filter, reads.mips);
+}
+// One read alone.
+template <typename L, typename View>
 TWR_LANE_INLINE L heightAtLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u, const Vec2L<L>& uv,
                                 const FragmentL<L>& f) {
-  return sampleGradLanes<L, View, L>(heightMap, u, uv, f.uvDxFine, f.uvDyFine);
+  return heightAtLanes<L>(heightMap, u, heightReadsLanes<L>(heightMap, u, f), uv, f);
 }
 
 // A lighting-space direction in the fragment's tangent frame, normalised: tangent space hands
@@ -101,10 +126,11 @@ template <typename L, typename View>
 TWR_LANE_OUTLINE Vec3L<L> bumpBlinnLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u, const FragmentL<L>& f) {
   using S = ScalarOf<L>;
   const L du(u.heightTexel.x), dv(u.heightTexel.y), zero(S(0)), one(S(1)), two(S(2));
-  const L hL = heightAtLanes<L>(heightMap, u, Vec2L<L>(f.uv.x - du, f.uv.y), f);
-  const L hR = heightAtLanes<L>(heightMap, u, Vec2L<L>(f.uv.x + du, f.uv.y), f);
-  const L hD = heightAtLanes<L>(heightMap, u, Vec2L<L>(f.uv.x, f.uv.y - dv), f);
-  const L hU = heightAtLanes<L>(heightMap, u, Vec2L<L>(f.uv.x, f.uv.y + dv), f);
+  const HeightReadsL<L> reads = heightReadsLanes<L>(heightMap, u, f);
+  const L hL = heightAtLanes<L>(heightMap, u, reads, Vec2L<L>(f.uv.x - du, f.uv.y), f);
+  const L hR = heightAtLanes<L>(heightMap, u, reads, Vec2L<L>(f.uv.x + du, f.uv.y), f);
+  const L hD = heightAtLanes<L>(heightMap, u, reads, Vec2L<L>(f.uv.x, f.uv.y - dv), f);
+  const L hU = heightAtLanes<L>(heightMap, u, reads, Vec2L<L>(f.uv.x, f.uv.y + dv), f);
   const L dhDu = (hR - hL) / (two * du);
   const L dhDv = (hU - hD) / (two * dv);
   const L s(u.heightScale);
@@ -112,10 +138,12 @@ TWR_LANE_OUTLINE Vec3L<L> bumpBlinnLanes(const View& heightMap, const ShadeUnifo
 }
 
 // The parallax family: where the view ray through the fragment meets the height field, as uv.
-// vT: the eye direction in tangent space, normalised.
+// vT: the eye direction in tangent space, normalised. wantHeight: read the height at the
+// shifted uv for the marching methods (a height march, the height view, the pixel trace); left
+// at 1 otherwise, a read GLSL's compiler drops where nothing uses it.
 template <typename L, typename View>
 TWR_LANE_OUTLINE SurfaceDetailL<L> parallaxLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
-                                                const FragmentL<L>& f, const Vec3L<L>& vT) {
+                                                const FragmentL<L>& f, const Vec3L<L>& vT, bool wantHeight) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), half(S(0.5));
   const L scale(u.heightScale);
@@ -123,7 +151,8 @@ TWR_LANE_OUTLINE SurfaceDetailL<L> parallaxLanes(const View& heightMap, const Sh
   // A view at or below the tangent plane (interpolated normals at silhouettes) would divide by
   // zero: vz is kept at kMinParallaxViewZ or above, so the shift stays finite there.
   const L vz = maxOf(vT.z, L(static_cast<S>(kMinParallaxViewZ)));
-  const L h0 = heightAtLanes<L>(heightMap, u, f.uv, f);
+  const HeightReadsL<L> reads = heightReadsLanes<L>(heightMap, u, f);
+  const L h0 = heightAtLanes<L>(heightMap, u, reads, f.uv, f);
   if (u.surfaceDetail == SurfaceDetail::Parallax) {
     // Kaneko et al.: the height at uv, taken as constant along the ray; 1 / vz grows without
     // bound at grazing angles (docs/parallax.md shows it).
@@ -143,12 +172,17 @@ TWR_LANE_OUTLINE SurfaceDetailL<L> parallaxLanes(const View& heightMap, const Sh
     L depthC = zero;             // the ray's depth, in units of heightScale
     L surfaceDepth = one - h0;   // the height field's depth at uvC
     L steps = zero;
+    // The layer before: the last uv where the ray was still above, and the field's depth there.
+    Vec2L<L> prevUv = uvC;
+    L prevSurfaceDepth = surfaceDepth;
     for (int i = 0; i < u.layerCap; ++i) {
       const auto above = depthC < surfaceDepth;
       if (!anyOf(above)) break;
+      prevUv = Vec2L<L>(select(above, uvC.x, prevUv.x), select(above, uvC.y, prevUv.y));
+      prevSurfaceDepth = select(above, surfaceDepth, prevSurfaceDepth);
       uvC = Vec2L<L>(select(above, uvC.x - deltaUv.x, uvC.x), select(above, uvC.y - deltaUv.y, uvC.y));
       depthC = select(above, depthC + layerDepth, depthC);
-      surfaceDepth = select(above, one - heightAtLanes<L>(heightMap, u, uvC, f), surfaceDepth);
+      surfaceDepth = select(above, one - heightAtLanes<L>(heightMap, u, reads, uvC, f), surfaceDepth);
       steps = select(above, steps + one, steps);
     }
     if (u.surfaceDetail == SurfaceDetail::Relief) {
@@ -161,15 +195,16 @@ TWR_LANE_OUTLINE SurfaceDetailL<L> parallaxLanes(const View& heightMap, const Sh
         const auto below = depthC >= surfaceDepth;
         uvC = Vec2L<L>(select(below, uvC.x + du.x, uvC.x - du.x), select(below, uvC.y + du.y, uvC.y - du.y));
         depthC = select(below, depthC - dd, depthC + dd);
-        surfaceDepth = one - heightAtLanes<L>(heightMap, u, uvC, f);
+        surfaceDepth = one - heightAtLanes<L>(heightMap, u, reads, uvC, f);
       }
       steps = steps + L(static_cast<S>(u.refinementSteps));
     } else if (u.surfaceDetail == SurfaceDetail::ParallaxOcclusion) {
       // Tatarchuk: intersect the ray with the straight line between the heights of the last
-      // two layers. after <= 0 <= before; a zero denominator keeps the last layer.
-      const Vec2L<L> prevUv(uvC.x + deltaUv.x, uvC.y + deltaUv.y);
+      // two layers. after <= 0 <= before; a zero denominator keeps the last layer. The layer
+      // before is the one the march read (no second read; with no step taken, after = 0 and
+      // the weight is 0).
       const L after = surfaceDepth - depthC;
-      const L before = (one - heightAtLanes<L>(heightMap, u, prevUv, f)) - depthC + layerDepth;
+      const L before = prevSurfaceDepth - depthC + layerDepth;
       const L denominator = after - before;
       const L weight = select(absOf(denominator) > zero, after / denominator, zero);
       uvC = Vec2L<L>(prevUv.x * weight + uvC.x * (one - weight), prevUv.y * weight + uvC.y * (one - weight));
@@ -177,9 +212,11 @@ TWR_LANE_OUTLINE SurfaceDetailL<L> parallaxLanes(const View& heightMap, const Sh
     r.uv = uvC;
     r.steps = steps;
   }
-  r.height = u.surfaceDetail == SurfaceDetail::Parallax || u.surfaceDetail == SurfaceDetail::ParallaxOffsetLimited
-                 ? h0
-                 : heightAtLanes<L>(heightMap, u, r.uv, f);
+  if (u.surfaceDetail == SurfaceDetail::Parallax || u.surfaceDetail == SurfaceDetail::ParallaxOffsetLimited) {
+    r.height = h0;
+  } else if (wantHeight) {
+    r.height = heightAtLanes<L>(heightMap, u, reads, r.uv, f);
+  }
   return r;
 }
 
@@ -198,6 +235,7 @@ TWR_LANE_OUTLINE L heightMarchShadowLanes(const View& heightMap, const ShadeUnif
   const L layerDepth = startDepth / layers;
   const L shiftPerLayer = L(u.heightScale) * startDepth / layers;
   const Vec2L<L> deltaUv(lT.x / lz * shiftPerLayer, lT.y / lz * shiftPerLayer);
+  const HeightReadsL<L> reads = heightReadsLanes<L>(heightMap, u, f);
   L occlusion = zero;
   Vec2L<L> uvC = uvP;
   L depthC = startDepth;
@@ -209,7 +247,7 @@ TWR_LANE_OUTLINE L heightMarchShadowLanes(const View& heightMap, const ShadeUnif
     if (!anyOf(marching)) break;
     uvC = Vec2L<L>(uvC.x + deltaUv.x, uvC.y + deltaUv.y);
     depthC = depthC - layerDepth;
-    const L surfaceDepth = one - heightAtLanes<L>(heightMap, u, uvC, f);
+    const L surfaceDepth = one - heightAtLanes<L>(heightMap, u, reads, uvC, f);
     const L above = (depthC - surfaceDepth) * (one - index / layers);
     occlusion = select(marching, maxOf(occlusion, above), occlusion);
   }
