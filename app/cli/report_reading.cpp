@@ -593,7 +593,7 @@ KnobReading readHeightFieldSection(const HeightFieldSection& section) {
     ratio = c.pomMs / c.normalMapMs;
     cost = "Cost at 1280x720 on the CPU (" + c.cpuPath + "), " + c.scene + ": " + c.pomSetting + " takes " + ms(c.pomMs) +
            " against normal_map's " + ms(c.normalMapMs) + " (fastest of " + std::to_string(c.frames) +
-           " frames; medians " + ms(c.pomMsMedian) + " and " + ms(c.normalMapMsMedian) + "): " + times(ratio) + ", " +
+           " frames each, the two timed in turn; medians " + ms(c.pomMsMedian) + " and " + ms(c.normalMapMsMedian) + "): " + times(ratio) + ", " +
            (ratio <= kPomCostTarget ? "within" : "beyond") + " the issue's " + times(kPomCostTarget) + ".";
   }
 
