@@ -95,6 +95,8 @@ void traceTriangle(const DrawItem& item, std::size_t t, const VertexUniforms& ve
       visit.outcome = TraceOutcome::FailedDepthTest;
     } else {
       visit.outcome = TraceOutcome::Shaded;
+      visit.heightMap = shadeUniforms.heightMap != nullptr;
+      visit.surfaceDetail = shadeUniforms.surfaceDetail;
       shadeFragmentDynamic(key, visit.fragment, shadeUniforms, &visit.terms);
       depth = visit.weights.depth;
     }
@@ -255,6 +257,10 @@ std::string formatPixelTrace(const PixelTrace& tr) {
     o << "  N " << fmt(s.n) << " T " << fmt(s.t) << " B " << fmt(s.b) << "\n";
     o << "  albedo " << fmt(s.albedo) << " specScale " << fmt(s.specScale) << " normal texel " << fmt(s.normalTexel)
       << " mapped (tangent) " << fmt(s.mappedTangent) << "\n";
+    if (v.heightMap) {
+      o << "  surface detail " << toString(v.surfaceDetail) << ": maps read at uv " << fmt(s.uvShifted) << ", height "
+        << fmt(s.height) << ", layers marched " << fmt(s.parallaxSteps) << "\n";
+    }
     o << "  Nl (lighting normal) " << fmt(s.nl) << "\n";
     if (tr.view == View::Shaded) {
       o << "  ambient ka*albedo*Ia " << fmt(s.ambient) << "\n";
@@ -336,6 +342,12 @@ nlohmann::json pixelTraceToJson(const PixelTrace& tr) {
       js["normal_texel"] = toJson(s.normalTexel);
       js["mapped_tangent"] = toJson(s.mappedTangent);
       js["Nl"] = toJson(s.nl);
+      if (v.heightMap) {
+        js["surface_detail"] = {{"method", std::string(toString(v.surfaceDetail))},
+                                {"uv_shifted", toJson(s.uvShifted)},
+                                {"height", s.height},
+                                {"layers_marched", s.parallaxSteps}};
+      }
       js["ambient"] = toJson(s.ambient);
       json lights = json::array();
       for (int l = 0; l < s.lightCount; ++l) {

@@ -52,6 +52,11 @@ struct TriangleVisit {
   float depthBefore = 1.0f;  // depth buffer value when this triangle arrived
   TraceOutcome outcome = TraceOutcome::Shaded;
   ShadeTerms terms;          // filled when shaded
+  // The material reads a height map: its method, and terms' uvShifted, height and
+  // parallaxSteps are the surface detail's (where the maps were read, the height there, the
+  // layers marched).
+  bool heightMap = false;
+  SurfaceDetail surfaceDetail = SurfaceDetail::NormalMap;
 };
 
 struct PixelTrace {

@@ -354,6 +354,62 @@ TEST(PixelTrace, AgreesWithTheRenderedPixel) {
   EXPECT_GT(traced, 5);
 }
 
+// A marching method: the trace reads the height at the shifted uv, which the render skips
+// where nothing uses it. The colour must not change, and the trace must show the march.
+TEST(PixelTrace, ShowsTheSurfaceDetailOfAMarchAndAgreesWithTheRenderedPixel) {
+  auto height = std::make_shared<Texture>();
+  height->width = height->height = 16;
+  height->rgba.resize(16 * 16 * 4, 255);
+  for (int y = 0; y < 16; ++y) {
+    for (int x = 0; x < 16; ++x) {
+      const std::uint8_t h = ((x / 4 + y / 4) % 2 == 0) ? 255 : 40;  // raised squares in a checker
+      for (int c = 0; c < 3; ++c) height->rgba[static_cast<std::size_t>((y * 16 + x) * 4 + c)] = h;
+    }
+  }
+  buildMipChain(*height);
+  Material m = normalMapped();
+  m.heightMap = height;
+  m.heightScale = 0.1f;
+  Scene scene = sceneWith(makePlane(vec2(2.0f, 2.0f), 2.0f), m);
+  scene.camera.position = vec3(0.3f, 1.5f, 1.6f);
+  for (SurfaceDetail method : {SurfaceDetail::ParallaxOcclusion, SurfaceDetail::Relief}) {
+    scene.materials[0].surfaceDetail = method;
+    const RenderOutput out = render(scene, scene.settings);
+    int shifted = 0, marched = 0, traced = 0;
+    for (int y = 2; y < out.height; y += 5) {
+      for (int x = 1; x < out.width; x += 5) {
+        const std::size_t i = static_cast<std::size_t>(y * out.width + x);
+        if (out.triangleId[i] == kNoTriangle) continue;
+        const PixelTrace trace = tracePixel(scene, scene.settings, out.width, out.height, x, y);
+        const TriangleVisit* last = nullptr;
+        for (const TriangleVisit& v : trace.visits) {
+          if (v.outcome == TraceOutcome::Shaded) last = &v;
+        }
+        ASSERT_NE(last, nullptr) << x << "," << y;
+        ++traced;
+        EXPECT_TRUE(last->heightMap);
+        EXPECT_EQ(last->surfaceDetail, method);
+        for (int c = 0; c < 3; ++c) {
+          EXPECT_EQ(std::lround(last->terms.colour[c] * 255.0f), out.rgba[i * 4 + static_cast<std::size_t>(c)])
+              << toString(method) << " at " << x << "," << y;
+        }
+        shifted += last->terms.uvShifted != last->fragment.uv ? 1 : 0;
+        marched += last->terms.parallaxSteps > 0.0f ? 1 : 0;
+        if (traced == 1) {
+          EXPECT_NE(formatPixelTrace(trace).find("surface detail " + std::string(toString(method))), std::string::npos);
+          const nlohmann::json j = pixelTraceToJson(trace);
+          bool found = false;
+          for (const auto& t : j["triangles"]) found = found || (t.contains("shading") && t["shading"].contains("surface_detail"));
+          EXPECT_TRUE(found);
+        }
+      }
+    }
+    EXPECT_GT(traced, 20);
+    EXPECT_GT(shifted, 0) << toString(method);
+    EXPECT_GT(marched, 0) << toString(method);
+  }
+}
+
 TEST(PixelTrace, ReportsCullingDepthFailuresAndClipping) {
   Scene scene = sceneWith(makeSphere(1.0f, 12, 24));
   scene.settings.userClipPlanes = {vec4(0, -1, 0, 0.2f)};  // keep y <= 0.2
