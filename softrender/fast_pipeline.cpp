@@ -110,7 +110,7 @@ void FastPipeline::prepareMaps(const std::vector<ItemState>& items) {
     if (entry.readAsHeight && entry.tiled.redFootprints.empty()) entry.tiled.redFootprints = makeRedFootprints(*entry.texture);
     entry.queued = false;
   });
-  std::erase_if(tiled_, [this](const auto& entry) { return entry.second.lastFrame != frame_; });
+  std::erase_if(tiled_, [this](const auto& entry) { return frame_ - entry.second.lastFrame > kUnusedFramesKept; });
 }
 
 void FastPipeline::runVertexStage(const std::vector<ItemState>& items) {

@@ -97,8 +97,11 @@ class FastPipeline {
     std::vector<std::uint32_t> slots;  // kBinRows x width, kNoSlot where nothing passed
   };
 
-  // A texture's tiled copy, kept while frames use it. The entry holds the texture, so its
+  // A texture's tiled copy, kept while frames use it and for kUnusedFramesKept frames after
+  // (a texture that sits out a frame or two, as when two scenes are drawn in turn or a GUI
+  // toggles a method that reads it, is not tiled again). The entry holds the texture, so its
   // address cannot be reused by another one meanwhile, and texels are const.
+  static constexpr std::uint64_t kUnusedFramesKept = 4;  // frames
   struct TiledEntry {
     std::shared_ptr<const Texture> texture;
     TiledTexture tiled;

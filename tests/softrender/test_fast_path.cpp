@@ -391,6 +391,33 @@ TEST(FastPathCache, ATextureLaterReadAsAHeightMapIsFollowed) {
   expectIdentical(makeCpuRenderer(fastSimd(2))->render(scene, settings, 97, 61), third, "then turned to repeat");
 }
 
+// A texture that sits out a frame (two scenes drawn in turn, as the report times them) keeps
+// its tiled copy, and the frame after draws as a new renderer would; a texture no frame uses
+// any more is released after a few frames (FastPipeline::kUnusedFramesKept, 4), not kept for
+// the renderer's life.
+TEST(FastPathCache, ATextureThatSitsOutFramesIsKeptAWhileThenReleased) {
+  Scene with = syntheticScene(vec2(-2.3f, -1.2f), vec2(3.0f, 2.1f), 37, 20, 12.0f);
+  Scene without = with;
+  std::shared_ptr<Texture> height = noiseTexture(37, 20, 3);
+  const std::weak_ptr<Texture> watch = height;
+  with.materials[0].heightMap = height;
+  with.materials[0].surfaceDetail = SurfaceDetail::ParallaxOcclusion;
+  height.reset();
+  RenderSettings settings = with.settings;
+  settings.cull = CullMode::None;
+  const std::unique_ptr<Renderer> kept = makeCpuRenderer(fastSimd(2));
+  for (int turn = 0; turn < 3; ++turn) {
+    const RenderOutput a = kept->render(with, settings, 97, 61);
+    expectIdentical(makeCpuRenderer(fastSimd(2))->render(with, settings, 97, 61), a, "in turn, with the height map");
+    const RenderOutput b = kept->render(without, settings, 97, 61);
+    expectIdentical(makeCpuRenderer(fastSimd(2))->render(without, settings, 97, 61), b, "in turn, without");
+  }
+  with = Scene{};
+  EXPECT_FALSE(watch.expired()) << "the renderer keeps the copy of a texture that sat out one frame";
+  for (int frame = 0; frame < 8; ++frame) kept->render(without, settings, 97, 61);
+  EXPECT_TRUE(watch.expired()) << "eight frames without it release the texture";
+}
+
 // Every view on the synthetic material with all its maps and without any, in both lighting
 // spaces and filters, then with user clip planes cutting triangles, then with no light (the
 // light direction view shows grey): each view has its own SIMD kernel in the fast path.
