@@ -175,14 +175,23 @@ TWR_LANE_OUTLINE SurfaceDetailL<L> parallaxLanes(const View& heightMap, const Sh
     // The layer before: the last uv where the ray was still above, and the field's depth there.
     Vec2L<L> prevUv = uvC;
     L prevSurfaceDepth = surfaceDepth;
+    // The next layer is read where the ray would be had every lane kept marching: in a lane
+    // still marching that is uvC - deltaUv (the same subtractions, the same bits); a lane that
+    // stopped ignores it. So a read never waits for the one before: the CPU overlaps the reads
+    // of consecutive layers, and only the loop's exit depends on what they return.
+    Vec2L<L> uvNext = uvC;
+    L depthNext = depthC;
     for (int i = 0; i < u.layerCap; ++i) {
       const auto above = depthC < surfaceDepth;
       if (!anyOf(above)) break;
+      uvNext = Vec2L<L>(uvNext.x - deltaUv.x, uvNext.y - deltaUv.y);
+      depthNext = depthNext + layerDepth;
+      const L surfaceNext = one - heightAtLanes<L>(heightMap, u, reads, uvNext, f);
       prevUv = Vec2L<L>(select(above, uvC.x, prevUv.x), select(above, uvC.y, prevUv.y));
       prevSurfaceDepth = select(above, surfaceDepth, prevSurfaceDepth);
-      uvC = Vec2L<L>(select(above, uvC.x - deltaUv.x, uvC.x), select(above, uvC.y - deltaUv.y, uvC.y));
-      depthC = select(above, depthC + layerDepth, depthC);
-      surfaceDepth = select(above, one - heightAtLanes<L>(heightMap, u, reads, uvC, f), surfaceDepth);
+      uvC = Vec2L<L>(select(above, uvNext.x, uvC.x), select(above, uvNext.y, uvC.y));
+      depthC = select(above, depthNext, depthC);
+      surfaceDepth = select(above, surfaceNext, surfaceDepth);
       steps = select(above, steps + one, steps);
     }
     if (u.surfaceDetail == SurfaceDetail::Relief) {
