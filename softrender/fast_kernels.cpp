@@ -49,15 +49,17 @@ HWY_INLINE bool texSrgb(const TiledTexture& t) { return t.srgb; }
 
 // The texel words of each lane from the tiled index
 // ((y / 4) blocksPerRow + x / 4) 16 + (y % 4) 4 + x % 4.
-HWY_INLINE auto tiledTexelWords(const TiledTexture& t, int levelIndex, LaneI x, LaneI y) {
-  const TiledLevel& level = t.levels[static_cast<std::size_t>(levelIndex)];
+HWY_INLINE auto tiledWords(const std::vector<TexelBlock>& blocks, int blocksPerRow, LaneI x, LaneI y) {
   const DI di;
   const auto three = hn::Set(di, kTexelBlockSide - 1);
-  const auto row = hn::Add(hn::Mul(hn::ShiftRight<2>(y.v), hn::Set(di, level.blocksPerRow * kTexelBlockSide * kTexelBlockSide)),
+  const auto row = hn::Add(hn::Mul(hn::ShiftRight<2>(y.v), hn::Set(di, blocksPerRow * kTexelBlockSide * kTexelBlockSide)),
                            hn::ShiftLeft<2>(hn::And(y.v, three)));
   const auto column = hn::Add(hn::ShiftLeft<4>(hn::ShiftRight<2>(x.v)), hn::And(x.v, three));
-  return hn::BitCast(DU(), hn::GatherIndex(di, reinterpret_cast<const std::int32_t*>(level.blocks.data()),
-                                           hn::Add(row, column)));
+  return hn::BitCast(DU(), hn::GatherIndex(di, reinterpret_cast<const std::int32_t*>(blocks.data()), hn::Add(row, column)));
+}
+HWY_INLINE auto tiledTexelWords(const TiledTexture& t, int levelIndex, LaneI x, LaneI y) {
+  const TiledLevel& level = t.levels[static_cast<std::size_t>(levelIndex)];
+  return tiledWords(level.blocks, level.blocksPerRow, x, y);
 }
 // Byte `Shift / 8` of each word, as float lanes.
 template <int Shift, typename Words>
@@ -89,10 +91,7 @@ HWY_INLINE Vec4L<LaneF> fetchRedFootprintBytes(const TiledTexture& t, int levelI
                         fetchTexelRedByte<L>(t, levelIndex, x0, y1), fetchTexelRedByte<L>(t, levelIndex, x1, y1));
   }
   const RedFootprintLevel& level = t.redFootprints[static_cast<std::size_t>(levelIndex)];
-  const DI di;
-  const auto index = hn::Add(hn::Mul(y0.v, hn::Set(di, level.width)), x0.v);
-  const auto words =
-      hn::BitCast(DU(), hn::GatherIndex(di, reinterpret_cast<const std::int32_t*>(level.words.data()), index));
+  const auto words = tiledWords(level.blocks, level.blocksPerRow, x0, y0);
   const LaneF b00 = wordByte<0>(words), b10 = wordByte<8>(words), b01 = wordByte<16>(words), b11 = wordByte<24>(words);
   // Repeat reads exactly the word's footprint (on a side of one texel, x1 = x0 = 0, and so is
   // the word's neighbour).
@@ -205,14 +204,42 @@ struct Segment {
   int x, py;
 };
 
-// Every lane on one triangle: its planes broadcast.
-HWY_INLINE VaryingPlanesL<LaneF> broadcastVaryingPlanes(const VaryingPlanesT<float>& t) {
-  VaryingPlanesL<LaneF> p;
+// Every lane on one triangle: its planes broadcast, written in place (the planes are 4 KB, and
+// only `count` of them are in use).
+HWY_INLINE void broadcastVaryingPlanes(const VaryingPlanesT<float>& t, VaryingPlanesL<LaneF>& p) {
   p.count = t.count;
   p.oneOverW = broadcastPlane(t.oneOverW);
   for (int k = 0; k < t.count; ++k) p.overW[static_cast<std::size_t>(k)] = broadcastPlane(t.overW[static_cast<std::size_t>(k)]);
-  return p;
 }
+
+#if HWY_TARGET != HWY_SCALAR
+// The quad and fine uv differences (interpolate-inl.h) of a segment whose lanes all lie on one
+// triangle: its lanes are side by side from an even column, so a quad's left and right pixels
+// are neighbouring lanes. The segment's row and the quad's other row are evaluated once each
+// (two divisions instead of seven); the rest is lanes duplicated from them, the same bits as
+// evaluating each neighbour on that triangle's planes.
+HWY_INLINE void setUvDifferencesOfOneTriangle(const UvPlanesL<LaneF>& uv, LaneF px, int py, bool fine,
+                                              FragmentL<LaneF>& f) {
+  const bool evenRow = (py & 1) == 0;
+  const Vec2L<LaneF> own = uvAtPixelLanes<LaneF>(uv, px, LaneF(static_cast<float>(py)));
+  const Vec2L<LaneF> other = uvAtPixelLanes<LaneF>(uv, px, LaneF(static_cast<float>(evenRow ? py + 1 : py - 1)));
+  const Vec2L<LaneF>& lower = evenRow ? own : other;  // the quad's rows (GL rows: the even one is lower)
+  const Vec2L<LaneF>& upper = evenRow ? other : own;
+  const auto even = [](const Vec2L<LaneF>& v) HWY_ATTR {
+    return Vec2L<LaneF>(LaneF(hn::DupEven(v.x.v)), LaneF(hn::DupEven(v.y.v)));
+  };
+  const auto odd = [](const Vec2L<LaneF>& v) HWY_ATTR {
+    return Vec2L<LaneF>(LaneF(hn::DupOdd(v.x.v)), LaneF(hn::DupOdd(v.y.v)));
+  };
+  const Vec2L<LaneF> topLeft = even(lower);
+  f.uvDx = odd(lower) - topLeft;
+  f.uvDy = even(upper) - topLeft;
+  if (fine) {
+    f.uvDxFine = odd(own) - even(own);
+    f.uvDyFine = upper - lower;
+  }
+}
+#endif
 
 template <typename Features>
 void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps, std::uint32_t* rgbaOut) {
@@ -238,7 +265,7 @@ void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps,
   const int count = varyingCount(tangent, lightCount);
   if (oneTriangle) {
     const BinTriangle& t = triangles[firstSlot];
-    planes = broadcastVaryingPlanes(t.varyings);
+    broadcastVaryingPlanes(t.varyings, planes);
     depthPlane = broadcastPlane(t.depth);
   } else {
     // Lanes on several triangles: each plane transposed into columns, [plane][atOrigin, dx,
@@ -272,10 +299,17 @@ void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps,
   if (item.shade.needsQuadDifferences()) {
     // Each lane's 2x2 quad: the even column and row at or below it (exact in float).
     const UvPlanesL<LaneF> uv{planes.overW[kVaryingUv], planes.overW[kVaryingUv + 1], planes.oneOverW};
-    const LaneF quadColumns = floorOf(px * LaneF(0.5f)) * LaneF(2.0f);
-    const LaneF quadRow(static_cast<float>(s.py - (s.py & 1)));
-    setQuadUvDifferencesLanes<LaneF>(uv, quadColumns, quadRow, fragment);
-    if (item.shade.heightMap) setFineUvDifferencesLanes<LaneF>(uv, quadColumns, quadRow, px, py, fragment);
+#if HWY_TARGET != HWY_SCALAR
+    if (oneTriangle) {
+      setUvDifferencesOfOneTriangle(uv, px, s.py, item.shade.heightMap != nullptr, fragment);
+    } else
+#endif
+    {
+      const LaneF quadColumns = floorOf(px * LaneF(0.5f)) * LaneF(2.0f);
+      const LaneF quadRow(static_cast<float>(s.py - (s.py & 1)));
+      setQuadUvDifferencesLanes<LaneF>(uv, quadColumns, quadRow, fragment);
+      if (item.shade.heightMap) setFineUvDifferencesLanes<LaneF>(uv, quadColumns, quadRow, px, py, fragment);
+    }
   }
   const Vec4L<LaneF> colour =
       shadeFragmentLanes<Features, LaneF>(fragment, item.shade, maps, static_cast<std::nullptr_t*>(nullptr));
@@ -430,12 +464,16 @@ std::vector<RedFootprintLevel> makeRedFootprints(const Texture& texture) {
     const auto red = [&](int x, int y) -> std::uint32_t {
       return texels[(static_cast<std::size_t>(y) * static_cast<std::size_t>(level.width) + static_cast<std::size_t>(x)) * 4];
     };
-    level.words.resize(static_cast<std::size_t>(level.width) * static_cast<std::size_t>(level.height));
+    level.blocksPerRow = (level.width + kTexelBlockSide - 1) / kTexelBlockSide;
+    const int blockRows = (level.height + kTexelBlockSide - 1) / kTexelBlockSide;
+    level.blocks.resize(static_cast<std::size_t>(level.blocksPerRow) * static_cast<std::size_t>(blockRows));
     for (int y = 0; y < level.height; ++y) {
       const int y1 = y + 1 == level.height ? 0 : y + 1;
       for (int x = 0; x < level.width; ++x) {
         const int x1 = x + 1 == level.width ? 0 : x + 1;
-        level.words[static_cast<std::size_t>(y) * static_cast<std::size_t>(level.width) + static_cast<std::size_t>(x)] =
+        TexelBlock& block = level.blocks[static_cast<std::size_t>(y / kTexelBlockSide) * static_cast<std::size_t>(level.blocksPerRow) +
+                                         static_cast<std::size_t>(x / kTexelBlockSide)];
+        block.texels[static_cast<std::size_t>((y % kTexelBlockSide) * kTexelBlockSide + x % kTexelBlockSide)] =
             red(x, y) | red(x1, y) << 8 | red(x, y1) << 16 | red(x1, y1) << 24;
       }
     }

@@ -59,10 +59,13 @@ struct TiledLevel {
 // per texel holding the red bytes of the bilinear footprint that starts there, (x, y),
 // (x + 1, y), (x, y + 1), (x + 1, y + 1) in bytes 0 to 3, the neighbours wrapped as repeat
 // wraps them. One gather then fetches what took four. A read that clamps or mirrors at an edge
-// takes (x, y) twice instead, which the word also holds.
+// takes (x, y) twice instead, which the word also holds. The words are tiled as TiledLevel's
+// texels are (a 4 x 4 block per cache line): a vector of neighbouring pixels marching side by
+// side then gathers from a few lines instead of one per texel row.
 struct RedFootprintLevel {
   int width = 0, height = 0;  // texels, as the source level
-  std::vector<std::uint32_t> words;  // row by row
+  int blocksPerRow = 0;
+  std::vector<TexelBlock> blocks;  // words, laid out as TiledLevel::blocks
 };
 struct TiledTexture {
   std::vector<TiledLevel> levels;  // every level of the source texture, level 0 first
