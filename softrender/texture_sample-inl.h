@@ -210,7 +210,10 @@ TWR_LANE_INLINE Texel sampleLevelForLanes(const View& texture, int level, const 
 // mipmaps), the weight of the second, and the lowest and highest level any lane reads. Reads
 // that share a LOD share these: a march over a height map finds them once per fragment.
 // *_mipmap_nearest: level rint(lod); *_mipmap_linear: levels floor(lod) and the next, blended
-// by frac(lod). Levels clamp to the chain the texture has.
+// by frac(lod). Levels clamp to the chain the texture has. A lane whose weight is 0
+// (magnified, lod < 0, at the last level, or lod a whole number) takes its first level as its
+// second too: a + 0 (b - a) is a, whatever b is, so where no lane blends, the second level is
+// never read (the same bits).
 template <typename L>
 struct MipLevelsL {
   L level0, level1, fraction;
@@ -234,7 +237,7 @@ TWR_LANE_INLINE MipLevelsL<L> mipLevelsLanes(const View& texture, TextureFilter 
     const auto atLast = floorLod >= lastL;
     m.level0 = select(below, zero, select(atLast, lastL, floorLod));
     m.fraction = select(below | atLast, zero, clamped - floorLod);
-    m.level1 = minOf(m.level0 + L(S(1)), lastL);
+    m.level1 = select(m.fraction == zero, m.level0, minOf(m.level0 + L(S(1)), lastL));
   }
   m.lowest = static_cast<int>(lowestLane(m.level0));
   m.highest = static_cast<int>(highestLane(m.level1));

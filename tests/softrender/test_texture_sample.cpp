@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace twr {
@@ -90,6 +91,35 @@ TEST(TextureSample, NearestIndexFloorsTheProductInFloat) {
   EXPECT_EQ(nearestTexelIndex(0.999999f, 4), 3);
   EXPECT_EQ(nearestTexelIndex(-0.000001f, 4), 3);
   EXPECT_EQ(nearestTexelIndex(2.5f, 4), 2);
+}
+
+// A texture of pseudo-random bytes with its mip chain, for reads compared bit for bit.
+Texture noiseTexture(int width, int height) {
+  Texture t;
+  t.width = width;
+  t.height = height;
+  t.rgba.resize(static_cast<std::size_t>(width) * height * 4);
+  std::uint32_t state = 12345u;
+  for (std::uint8_t& byte : t.rgba) {
+    state = state * 1664525u + 1013904223u;  // a 32-bit LCG (Numerical Recipes' constants)
+    byte = static_cast<std::uint8_t>(state >> 24);
+  }
+  buildMipChain(t);
+  return t;
+}
+
+TEST(TextureSample, AMagnifiedOrWholeLodTrilinearReadTakesOneLevel) {
+  const Texture t = noiseTexture(16, 16);
+  for (float lod : {-3.0f, -0.25f, 0.0f, 1.0f, 2.0f}) {
+    const MipLevelsL<float> m = mipLevelsLanes<float>(t, TextureFilter::Trilinear, lod);
+    EXPECT_EQ(m.fraction, 0.0f) << lod;
+    EXPECT_EQ(m.level1, m.level0) << lod;
+    EXPECT_EQ(m.highest, m.lowest) << lod;  // the second level is never read
+  }
+  const MipLevelsL<float> blend = mipLevelsLanes<float>(t, TextureFilter::Trilinear, 1.5f);
+  EXPECT_EQ(blend.level0, 1.0f);
+  EXPECT_EQ(blend.level1, 2.0f);
+  EXPECT_EQ(blend.fraction, 0.5f);
 }
 
 }  // namespace
