@@ -79,12 +79,19 @@ TWR_LANE_INLINE HeightReadsL<L> heightReadsLanes(const View& heightMap, const Sh
 }
 
 // heightAt: the height in [0, 1] at uv (the red channel alone), with the fragment's uv
-// differences.
-template <typename L, typename View>
+// differences. kCase: what the caller knows of the map's sampler state (texture_sample-inl.h).
+template <typename L, typename View, SamplerCase kCase = SamplerCase::kAny>
 TWR_LANE_INLINE L heightAtLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
                                 const HeightReadsL<L>& reads, const Vec2L<L>& uv, const FragmentL<L>& f) {
-  if (u.anisotropic) return sampleGradLanes<L, View, L>(heightMap, u, uv, f.uvDxFine, f.uvDyFine);
-  return (sampleMipLevelsLanes<L, View, L>)(heightMap, uv, u.filter, reads.mips);
+  if (kCase == SamplerCase::kAny && u.anisotropic) {
+    return sampleGradLanes<L, View, L>(heightMap, u, uv, f.uvDxFine, f.uvDyFine);
+  }
+  return (sampleMipLevelsInlineLanes<L, View, L, kCase>)(heightMap, uv, u.filter, reads.mips);
+}
+// The case a march can compile its reads for (SamplerCase::kRepeatLinearUnorm), or kAny.
+template <typename View, typename Uniforms>
+TWR_LANE_INLINE bool readsAsRepeatLinearUnorm(const View& heightMap, const Uniforms& u) {
+  return texWrap(heightMap) == TextureWrap::Repeat && !texSrgb(heightMap) && texelsLinear(u.filter) && !u.anisotropic;
 }
 // One read alone.
 template <typename L, typename View>
@@ -141,9 +148,9 @@ TWR_LANE_OUTLINE Vec3L<L> bumpBlinnLanes(const View& heightMap, const ShadeUnifo
 // vT: the eye direction in tangent space, normalised. wantHeight: read the height at the
 // shifted uv for the marching methods (a height march, the height view, the pixel trace); left
 // at 1 otherwise, a read GLSL's compiler drops where nothing uses it.
-template <typename L, typename View>
-TWR_LANE_OUTLINE SurfaceDetailL<L> parallaxLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
-                                                const FragmentL<L>& f, const Vec3L<L>& vT, bool wantHeight) {
+template <typename L, typename View, SamplerCase kCase>
+TWR_LANE_INLINE SurfaceDetailL<L> parallaxCaseLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
+                                                   const FragmentL<L>& f, const Vec3L<L>& vT, bool wantHeight) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), half(S(0.5));
   const L scale(u.heightScale);
@@ -152,7 +159,7 @@ TWR_LANE_OUTLINE SurfaceDetailL<L> parallaxLanes(const View& heightMap, const Sh
   // zero: vz is kept at kMinParallaxViewZ or above, so the shift stays finite there.
   const L vz = maxOf(vT.z, L(static_cast<S>(kMinParallaxViewZ)));
   const HeightReadsL<L> reads = heightReadsLanes<L>(heightMap, u, f);
-  const L h0 = heightAtLanes<L>(heightMap, u, reads, f.uv, f);
+  const L h0 = heightAtLanes<L, View, kCase>(heightMap, u, reads, f.uv, f);
   if (u.surfaceDetail == SurfaceDetail::Parallax) {
     // Kaneko et al.: the height at uv, taken as constant along the ray; 1 / vz grows without
     // bound at grazing angles (docs/parallax.md shows it).
@@ -186,7 +193,7 @@ TWR_LANE_OUTLINE SurfaceDetailL<L> parallaxLanes(const View& heightMap, const Sh
       if (!anyOf(above)) break;
       uvNext = Vec2L<L>(uvNext.x - deltaUv.x, uvNext.y - deltaUv.y);
       depthNext = depthNext + layerDepth;
-      const L surfaceNext = one - heightAtLanes<L>(heightMap, u, reads, uvNext, f);
+      const L surfaceNext = one - heightAtLanes<L, View, kCase>(heightMap, u, reads, uvNext, f);
       prevUv = Vec2L<L>(select(above, uvC.x, prevUv.x), select(above, uvC.y, prevUv.y));
       prevSurfaceDepth = select(above, surfaceDepth, prevSurfaceDepth);
       uvC = Vec2L<L>(select(above, uvNext.x, uvC.x), select(above, uvNext.y, uvC.y));
@@ -204,7 +211,7 @@ TWR_LANE_OUTLINE SurfaceDetailL<L> parallaxLanes(const View& heightMap, const Sh
         const auto below = depthC >= surfaceDepth;
         uvC = Vec2L<L>(select(below, uvC.x + du.x, uvC.x - du.x), select(below, uvC.y + du.y, uvC.y - du.y));
         depthC = select(below, depthC - dd, depthC + dd);
-        surfaceDepth = one - heightAtLanes<L>(heightMap, u, reads, uvC, f);
+        surfaceDepth = one - heightAtLanes<L, View, kCase>(heightMap, u, reads, uvC, f);
       }
       steps = steps + L(static_cast<S>(u.refinementSteps));
     } else if (u.surfaceDetail == SurfaceDetail::ParallaxOcclusion) {
@@ -224,9 +231,19 @@ TWR_LANE_OUTLINE SurfaceDetailL<L> parallaxLanes(const View& heightMap, const Sh
   if (u.surfaceDetail == SurfaceDetail::Parallax || u.surfaceDetail == SurfaceDetail::ParallaxOffsetLimited) {
     r.height = h0;
   } else if (wantHeight) {
-    r.height = heightAtLanes<L>(heightMap, u, reads, r.uv, f);
+    r.height = heightAtLanes<L, View, kCase>(heightMap, u, reads, r.uv, f);
   }
   return r;
+}
+
+// The same, its reads compiled for the height map's sampler state where it is the usual one.
+template <typename L, typename View>
+TWR_LANE_OUTLINE SurfaceDetailL<L> parallaxLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
+                                                const FragmentL<L>& f, const Vec3L<L>& vT, bool wantHeight) {
+  if ((readsAsRepeatLinearUnorm)(heightMap, u)) {
+    return parallaxCaseLanes<L, View, SamplerCase::kRepeatLinearUnorm>(heightMap, u, f, vT, wantHeight);
+  }
+  return parallaxCaseLanes<L, View, SamplerCase::kAny>(heightMap, u, f, vT, wantHeight);
 }
 
 // Self-shadowing by a march from the shaded point (uvP, depth 1 - hP) up towards the light

@@ -156,14 +156,22 @@ TWR_LANE_INLINE Texel texelLanes(const View& texture, int level, const IntOf<L>&
   }
 }
 
+// What a caller knows of a texture's sampler state at compile time. A march reads its height
+// map dozens of times per pixel; for the usual map (GL_REPEAT, linear texels, bytes not sRGB)
+// the reads are compiled without the branches of every other case, which otherwise keep the
+// compiler from holding the march's values in registers. The arithmetic is the same either way.
+enum class SamplerCase { kAny, kRepeatLinearUnorm };
+
 // One level, the same for every lane: RGBA (or red) in [0, 1]. Bilinear is a lerp along u on
 // both rows, then along v: a + w (b - a) (llvmpipe fuses each into one FMA; the CPU rounds
 // twice, about one float ULP apart).
-template <typename L, typename View, typename Texel = Vec4L<L>>
+template <typename L, typename View, typename Texel = Vec4L<L>, SamplerCase kCase = SamplerCase::kAny>
 TWR_LANE_INLINE Texel sampleLevelInlineLanes(const View& texture, int level, const Vec2L<L>& uv, bool linear) {
+  using S = ScalarOf<L>;
+  constexpr bool kFixed = kCase == SamplerCase::kRepeatLinearUnorm;
   const int width = texLevelWidth(texture, level), height = texLevelHeight(texture, level);
-  const TextureWrap wrap = texWrap(texture);
-  if (!linear) {
+  const TextureWrap wrap = kFixed ? TextureWrap::Repeat : texWrap(texture);
+  if (!kFixed && !linear) {
     return (texelLanes<L, Texel>)(texture, level, (nearestTexelLanes<L>)(uv.x, width, wrap),
                                   (nearestTexelLanes<L>)(uv.y, height, wrap));
   }
@@ -174,10 +182,18 @@ TWR_LANE_INLINE Texel sampleLevelInlineLanes(const View& texture, int level, con
     // The red channel alone: the view hands the four bytes over together (the fast path reads
     // them with one gather from a height map's footprint words).
     const Vec4L<L> bytes = fetchRedFootprintBytes<L>(texture, level, ax.i0, ax.i1, ay.i0, ay.i1);
-    t00 = (redValue<L>)(texture, bytes.x);
-    t10 = (redValue<L>)(texture, bytes.y);
-    t01 = (redValue<L>)(texture, bytes.z);
-    t11 = (redValue<L>)(texture, bytes.w);
+    if constexpr (kFixed) {
+      const L perByte(S(1) / S(255));  // redValue's linear case
+      t00 = bytes.x * perByte;
+      t10 = bytes.y * perByte;
+      t01 = bytes.z * perByte;
+      t11 = bytes.w * perByte;
+    } else {
+      t00 = (redValue<L>)(texture, bytes.x);
+      t10 = (redValue<L>)(texture, bytes.y);
+      t01 = (redValue<L>)(texture, bytes.z);
+      t11 = (redValue<L>)(texture, bytes.w);
+    }
   } else {
     t00 = (texelLanes<L, Texel>)(texture, level, ax.i0, ay.i0);
     t10 = (texelLanes<L, Texel>)(texture, level, ax.i1, ay.i0);
@@ -196,10 +212,10 @@ TWR_LANE_OUTLINE Texel sampleLevelLanes(const View& texture, int level, const Ve
 }
 // A height read (red alone) is inlined into its one caller, sampleMipLevelsLanes: a march
 // makes dozens per pixel, and the levels of a trilinear read then overlap.
-template <typename L, typename View, typename Texel>
+template <typename L, typename View, typename Texel, SamplerCase kCase>
 TWR_LANE_INLINE Texel sampleLevelForLanes(const View& texture, int level, const Vec2L<L>& uv, bool linear) {
   if constexpr (std::is_same_v<Texel, L>) {
-    return (sampleLevelInlineLanes<L, View, Texel>)(texture, level, uv, linear);
+    return (sampleLevelInlineLanes<L, View, Texel, kCase>)(texture, level, uv, linear);
   } else {
     return (sampleLevelLanes<L, View, Texel>)(texture, level, uv, linear);
   }
@@ -255,17 +271,17 @@ template <typename L>
 TWR_LANE_INLINE L selectTexel(const MaskOf<L>& mask, const L& a, const L& b) {
   return select(mask, a, b);
 }
-template <typename L, typename View, typename Texel>
+template <typename L, typename View, typename Texel, SamplerCase kCase>
 TWR_LANE_INLINE void sampleLevelPairLanes(const View& texture, const MipLevelsL<L>& mips, const Vec2L<L>& uv,
                                           bool linear, Texel& s0, Texel& s1) {
   using S = ScalarOf<L>;
-  s0 = (sampleLevelForLanes<L, View, Texel>)(texture, mips.lowest, uv, linear);
+  s0 = (sampleLevelForLanes<L, View, Texel, kCase>)(texture, mips.lowest, uv, linear);
   s1 = s0;
   for (int l = mips.lowest + 1; l <= mips.highest; ++l) {
     const L here(static_cast<S>(l));
     const auto first = mips.level0 == here, second = mips.level1 == here;
     if (!anyOf(first | second)) continue;
-    const Texel r = (sampleLevelForLanes<L, View, Texel>)(texture, l, uv, linear);
+    const Texel r = (sampleLevelForLanes<L, View, Texel, kCase>)(texture, l, uv, linear);
     s0 = (selectTexel<L>)(first, r, s0);
     s1 = (selectTexel<L>)(second, r, s1);
   }
@@ -289,14 +305,19 @@ TWR_LANE_INLINE L quadLodLanes(const Vec2L<L>& dUvDx, const Vec2L<L>& dUvDy, int
 // a level are picked or blended as texelsLinear(filter) says (GL's minification and
 // magnification filters agree for every filter here, so magnification, lod <= 0, is level 0
 // with the same texel filter); *_mipmap_linear blends its two levels as a + f (b - a).
+template <typename L, typename View, typename Texel = Vec4L<L>, SamplerCase kCase = SamplerCase::kAny>
+TWR_LANE_INLINE Texel sampleMipLevelsInlineLanes(const View& texture, const Vec2L<L>& uvIn, TextureFilter filter,
+                                                 const MipLevelsL<L>& mips) {
+  const Vec2L<L> uv((sanitizedCoord<L>)(uvIn.x), (sanitizedCoord<L>)(uvIn.y));
+  Texel s0, s1;
+  (sampleLevelPairLanes<L, View, Texel, kCase>)(texture, mips, uv, texelsLinear(filter), s0, s1);
+  if (!usesMipmaps(filter) || texLevelCount(texture) == 1 || !levelsLinear(filter)) return s0;
+  return s0 + (s1 - s0) * mips.fraction;
+}
 template <typename L, typename View, typename Texel = Vec4L<L>>
 TWR_LANE_OUTLINE Texel sampleMipLevelsLanes(const View& texture, const Vec2L<L>& uvIn, TextureFilter filter,
                                             const MipLevelsL<L>& mips) {
-  const Vec2L<L> uv((sanitizedCoord<L>)(uvIn.x), (sanitizedCoord<L>)(uvIn.y));
-  Texel s0, s1;
-  (sampleLevelPairLanes<L, View, Texel>)(texture, mips, uv, texelsLinear(filter), s0, s1);
-  if (!usesMipmaps(filter) || texLevelCount(texture) == 1 || !levelsLinear(filter)) return s0;
-  return s0 + (s1 - s0) * mips.fraction;
+  return (sampleMipLevelsInlineLanes<L, View, Texel>)(texture, uvIn, filter, mips);
 }
 
 // The filtered RGBA (or red) in [0, 1]. `lod` is the quad's (quadLodLanes); filters without

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -120,6 +121,27 @@ TEST(TextureSample, AMagnifiedOrWholeLodTrilinearReadTakesOneLevel) {
   EXPECT_EQ(blend.level0, 1.0f);
   EXPECT_EQ(blend.level1, 2.0f);
   EXPECT_EQ(blend.fraction, 0.5f);
+}
+
+TEST(TextureSample, TheMarchsCompiledCaseReadsTheSameBitsAsTheGeneralOne) {
+  const Texture t = noiseTexture(32, 8);  // not square: each axis its own size
+  std::uint32_t state = 7u;
+  const auto next = [&state] {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<float>(state >> 8) / 16777216.0f;  // [0, 1)
+  };
+  for (TextureFilter filter : {TextureFilter::Bilinear, TextureFilter::Trilinear, TextureFilter::LinearMipmapNearest}) {
+    for (int i = 0; i < 2000; ++i) {
+      const vec2 uv(next() * 6.0f - 3.0f, next() * 6.0f - 3.0f);
+      const float lod = next() * 7.0f - 2.0f;
+      const MipLevelsL<float> m = mipLevelsLanes<float>(t, filter, lod);
+      const float any = sampleMipLevelsInlineLanes<float, Texture, float, SamplerCase::kAny>(t, uv, filter, m);
+      const float fixed =
+          sampleMipLevelsInlineLanes<float, Texture, float, SamplerCase::kRepeatLinearUnorm>(t, uv, filter, m);
+      ASSERT_EQ(std::bit_cast<std::uint32_t>(any), std::bit_cast<std::uint32_t>(fixed))
+          << "uv " << uv.x << ", " << uv.y << " lod " << lod;
+    }
+  }
 }
 
 }  // namespace
