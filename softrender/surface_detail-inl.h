@@ -80,13 +80,17 @@ TWR_LANE_INLINE HeightReadsL<L> heightReadsLanes(const View& heightMap, const Sh
 
 // heightAt: the height in [0, 1] at uv (the red channel alone), with the fragment's uv
 // differences. kCase: what the caller knows of the map's sampler state (texture_sample-inl.h).
+// The general case calls the one out-of-line copy of the read (heightAt is also called from
+// every shading kernel); the compiled case, which only the parallax march takes, is inlined.
 template <typename L, typename View, SamplerCase kCase = SamplerCase::kAny>
 TWR_LANE_INLINE L heightAtLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
                                 const HeightReadsL<L>& reads, const Vec2L<L>& uv, const FragmentL<L>& f) {
-  if (kCase == SamplerCase::kAny && u.anisotropic) {
-    return sampleGradLanes<L, View, L>(heightMap, u, uv, f.uvDxFine, f.uvDyFine);
+  if constexpr (kCase == SamplerCase::kAny) {
+    if (u.anisotropic) return sampleGradLanes<L, View, L>(heightMap, u, uv, f.uvDxFine, f.uvDyFine);
+    return (sampleMipLevelsLanes<L, View, L>)(heightMap, uv, u.filter, reads.mips);
+  } else {
+    return (sampleMipLevelsInlineLanes<L, View, L, kCase>)(heightMap, uv, u.filter, reads.mips);
   }
-  return (sampleMipLevelsInlineLanes<L, View, L, kCase>)(heightMap, uv, u.filter, reads.mips);
 }
 // The case a march can compile its reads for (SamplerCase::kRepeatLinearUnorm), or kAny.
 template <typename View, typename Uniforms>

@@ -138,14 +138,21 @@ TWR_LANE_INLINE Vec4L<L> texelValue(const View& texture, const Vec4L<L>& bytes) 
                   bytes.w * L(S(1) / S(255)));
 }
 
+// What a caller knows of a texture's sampler state at compile time. A march reads its height
+// map dozens of times per pixel; for the usual map (GL_REPEAT, linear texels, bytes not sRGB)
+// the reads are compiled without the branches of every other case, which otherwise keep the
+// compiler from holding the march's values in registers. The arithmetic is the same either way.
+enum class SamplerCase { kAny, kRepeatLinearUnorm };
+
 // What a sample returns: every channel (Vec4L<L>), or the red one alone (L) for a height map,
 // which GLSL reads as texture(...).r. Each channel is fetched, decoded and filtered alone, so
 // the red one has the same bits either way; reading one channel saves three quarters of the
 // decoding and blending, and a march reads the height map dozens of times per pixel.
-template <typename L, typename View>
+template <typename L, SamplerCase kCase = SamplerCase::kAny, typename View>
 TWR_LANE_INLINE L redValue(const View& texture, const L& byte) {
   using S = ScalarOf<L>;
-  return texSrgb(texture) ? L(linearFromSrgbByte(byte)) : byte * L(S(1) / S(255));
+  if (kCase == SamplerCase::kRepeatLinearUnorm || !texSrgb(texture)) return byte * L(S(1) / S(255));
+  return L(linearFromSrgbByte(byte));
 }
 template <typename L, typename Texel, typename View>
 TWR_LANE_INLINE Texel texelLanes(const View& texture, int level, const IntOf<L>& x, const IntOf<L>& y) {
@@ -156,18 +163,11 @@ TWR_LANE_INLINE Texel texelLanes(const View& texture, int level, const IntOf<L>&
   }
 }
 
-// What a caller knows of a texture's sampler state at compile time. A march reads its height
-// map dozens of times per pixel; for the usual map (GL_REPEAT, linear texels, bytes not sRGB)
-// the reads are compiled without the branches of every other case, which otherwise keep the
-// compiler from holding the march's values in registers. The arithmetic is the same either way.
-enum class SamplerCase { kAny, kRepeatLinearUnorm };
-
 // One level, the same for every lane: RGBA (or red) in [0, 1]. Bilinear is a lerp along u on
 // both rows, then along v: a + w (b - a) (llvmpipe fuses each into one FMA; the CPU rounds
 // twice, about one float ULP apart).
 template <typename L, typename View, typename Texel = Vec4L<L>, SamplerCase kCase = SamplerCase::kAny>
 TWR_LANE_INLINE Texel sampleLevelInlineLanes(const View& texture, int level, const Vec2L<L>& uv, bool linear) {
-  using S = ScalarOf<L>;
   constexpr bool kFixed = kCase == SamplerCase::kRepeatLinearUnorm;
   const int width = texLevelWidth(texture, level), height = texLevelHeight(texture, level);
   const TextureWrap wrap = kFixed ? TextureWrap::Repeat : texWrap(texture);
@@ -182,18 +182,10 @@ TWR_LANE_INLINE Texel sampleLevelInlineLanes(const View& texture, int level, con
     // The red channel alone: the view hands the four bytes over together (the fast path reads
     // them with one gather from a height map's footprint words).
     const Vec4L<L> bytes = fetchRedFootprintBytes<L>(texture, level, ax.i0, ax.i1, ay.i0, ay.i1);
-    if constexpr (kFixed) {
-      const L perByte(S(1) / S(255));  // redValue's linear case
-      t00 = bytes.x * perByte;
-      t10 = bytes.y * perByte;
-      t01 = bytes.z * perByte;
-      t11 = bytes.w * perByte;
-    } else {
-      t00 = (redValue<L>)(texture, bytes.x);
-      t10 = (redValue<L>)(texture, bytes.y);
-      t01 = (redValue<L>)(texture, bytes.z);
-      t11 = (redValue<L>)(texture, bytes.w);
-    }
+    t00 = (redValue<L, kCase>)(texture, bytes.x);
+    t10 = (redValue<L, kCase>)(texture, bytes.y);
+    t01 = (redValue<L, kCase>)(texture, bytes.z);
+    t11 = (redValue<L, kCase>)(texture, bytes.w);
   } else {
     t00 = (texelLanes<L, Texel>)(texture, level, ax.i0, ay.i0);
     t10 = (texelLanes<L, Texel>)(texture, level, ax.i1, ay.i0);
@@ -210,8 +202,8 @@ template <typename L, typename View, typename Texel = Vec4L<L>>
 TWR_LANE_OUTLINE Texel sampleLevelLanes(const View& texture, int level, const Vec2L<L>& uv, bool linear) {
   return (sampleLevelInlineLanes<L, View, Texel>)(texture, level, uv, linear);
 }
-// A height read (red alone) is inlined into its one caller, sampleMipLevelsLanes: a march
-// makes dozens per pixel, and the levels of a trilinear read then overlap.
+// A height read (red alone) is inlined into sampleMipLevelsInlineLanes: a march makes dozens
+// per pixel, and the levels of a trilinear read then overlap.
 template <typename L, typename View, typename Texel, SamplerCase kCase>
 TWR_LANE_INLINE Texel sampleLevelForLanes(const View& texture, int level, const Vec2L<L>& uv, bool linear) {
   if constexpr (std::is_same_v<Texel, L>) {
