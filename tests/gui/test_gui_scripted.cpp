@@ -25,6 +25,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -200,13 +201,40 @@ class GuiProcess {
     xdotool("mousemove --window " + window() + " " + std::to_string(static_cast<int>(x)) + " " +
             std::to_string(static_cast<int>(y)));
   }
-  // Moves over a widget (its centre), lets ImGui see the mouse there, then clicks it.
+  // Moves over a widget (its centre), lets ImGui see the mouse there, then clicks it. The
+  // panel's layout can move while the mouse travels (a worker's result adds or drops a line
+  // above the widget; on a loaded CI machine that happened, and the click landed on an entry
+  // of an open list instead): the widget's rectangle is read again once the mouse is there,
+  // and the mouse follows it until it stays put under the mouse.
   void click(const std::string& item, bool withCtrl = false) {
-    const json s = waitForItem(item);
+    json s = waitForItem(item);
     if (!s.contains("items") || !s["items"].contains(item)) return;
-    const json& r = s["items"][item];
-    moveTo(0.5f * (r[0].get<float>() + r[2].get<float>()), 0.5f * (r[1].get<float>() + r[3].get<float>()));
-    waitFrames(2);
+    const auto centre = [&](const json& r) {
+      return std::pair<int, int>(static_cast<int>(0.5f * (r[0].get<float>() + r[2].get<float>())),
+                                 static_cast<int>(0.5f * (r[1].get<float>() + r[3].get<float>())));
+    };
+    const auto inside = [](const json& r, std::pair<int, int> p) {
+      return p.first >= r[0].get<float>() && p.first <= r[2].get<float>() && p.second >= r[1].get<float>() &&
+             p.second <= r[3].get<float>();
+    };
+    std::pair<int, int> at = centre(s["items"][item]);
+    moveTo(static_cast<float>(at.first), static_cast<float>(at.second));
+    constexpr int kMaxFollows = 20;  // layout changes in a row a click follows, at most
+    for (int follow = 0;; ++follow) {
+      s = waitFrames(2);
+      if (!s.contains("items") || !s["items"].contains(item)) {
+        s = waitForItem(item);
+        if (!s.contains("items") || !s["items"].contains(item)) return;
+      }
+      const json& r = s["items"][item];
+      if (inside(r, at)) break;
+      if (follow == kMaxFollows) {
+        ADD_FAILURE() << item << " kept moving away from the mouse; last rectangle " << r.dump();
+        return;
+      }
+      at = centre(r);
+      moveTo(static_cast<float>(at.first), static_cast<float>(at.second));
+    }
     if (withCtrl) {
       xdotool("keydown ctrl");
       waitFrames(2);
