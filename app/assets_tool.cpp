@@ -20,12 +20,14 @@
 // dh/du and dh/dv are central differences over two texels with wrap-around, taken from the
 // 8-bit heights exactly as written to bricks_height.png, so the normal map can be re-derived
 // from that file alone.
+#include "scene/environment.h"
 #include "scene/errors.h"
 #include "scene/image.h"
 
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -285,13 +287,98 @@ BlockTextures generateBlocks(int size) {
   return t;
 }
 
+
+// ---- the sky: one direction function, written as six cube faces and an equirect ----
+// Sky above the horizon (a gradient and a sun), a checkered ground plane below it, and grid
+// lines every 30 degrees of azimuth and elevation, so a student sees where a mapping
+// stretches or tears. Faces follow GL's cube table (scene/environment.h; top row t = 0).
+constexpr int kSkyFaceSize = 256;                 // texels per cube face side
+constexpr int kSkyEquirectWidth = 1024;           // texels; height is half
+constexpr double kSkyGridStepDeg = 30.0;          // grid spacing, degrees
+constexpr double kSkyGridHalfWidthDeg = 0.35;     // half a grid line, degrees
+constexpr double kSunHalfAngleDeg = 4.0;          // the sun's disc radius, degrees
+constexpr double kSunDirection[3] = {0.45, 0.55, -0.70};  // towards the sun (normalised below)
+constexpr double kHorizonColour[3] = {0.86, 0.90, 0.95};
+constexpr double kZenithColour[3] = {0.16, 0.36, 0.78};
+constexpr double kSunColour[3] = {1.0, 0.92, 0.62};
+constexpr double kGroundColours[2][3] = {{0.30, 0.26, 0.20}, {0.52, 0.47, 0.36}};
+constexpr double kGroundDepth = 1.0;  // the ground plane lies this far below the eye (y = -1)
+constexpr double kPi = 3.14159265358979323846;
+
+std::array<double, 3> skyAt(double x, double y, double z) {
+  const double length = std::sqrt(x * x + y * y + z * z);
+  x /= length, y /= length, z /= length;
+  std::array<double, 3> c{};
+  if (y >= 0.0) {
+    const double up = std::sqrt(y);
+    for (int k = 0; k < 3; ++k) c[k] = kHorizonColour[k] + (kZenithColour[k] - kHorizonColour[k]) * up;
+    const double sunLength = std::sqrt(kSunDirection[0] * kSunDirection[0] + kSunDirection[1] * kSunDirection[1] +
+                                       kSunDirection[2] * kSunDirection[2]);
+    const double cosSun = (x * kSunDirection[0] + y * kSunDirection[1] + z * kSunDirection[2]) / sunLength;
+    const double edge = std::cos(kSunHalfAngleDeg * kPi / 180.0);
+    const double sun = std::clamp((cosSun - edge) / (1.0 - edge) * 4.0, 0.0, 1.0);
+    for (int k = 0; k < 3; ++k) c[k] += (kSunColour[k] - c[k]) * sun;
+  } else {
+    // The ground plane's 1 x 1 tiles, fading into the horizon's haze towards it.
+    const double gx = x / -y * kGroundDepth, gz = z / -y * kGroundDepth;
+    const int tile = (static_cast<int>(std::floor(gx)) + static_cast<int>(std::floor(gz))) & 1;
+    const double haze = std::clamp(1.0 + y * 6.0, 0.0, 1.0);
+    for (int k = 0; k < 3; ++k) c[k] = kGroundColours[tile][k] + (kHorizonColour[k] - kGroundColours[tile][k]) * haze * 0.8;
+  }
+  const double azimuthDeg = std::atan2(x, -z) * 180.0 / kPi, elevationDeg = std::asin(std::clamp(y, -1.0, 1.0)) * 180.0 / kPi;
+  const auto nearLine = [](double angle) {
+    const double offset = std::fmod(std::fabs(angle) + kSkyGridStepDeg * 0.5, kSkyGridStepDeg) - kSkyGridStepDeg * 0.5;
+    return std::fabs(offset) <= kSkyGridHalfWidthDeg;
+  };
+  // Azimuth lines thin out towards the poles, where they all meet.
+  if (nearLine(elevationDeg) || (std::fabs(elevationDeg) < 75.0 && nearLine(azimuthDeg))) {
+    for (double& v : c) v *= 0.35;
+  }
+  return c;
+}
+
+struct SkyImages {
+  std::array<Image, 6> faces;
+  Image equirect;
+};
+
+SkyImages generateSky() {
+  SkyImages sky;
+  for (int f = 0; f < 6; ++f) {
+    Image& face = sky.faces[static_cast<std::size_t>(f)];
+    face = twr::makeImage(kSkyFaceSize, kSkyFaceSize);
+    for (int y = 0; y < kSkyFaceSize; ++y) {
+      for (int x = 0; x < kSkyFaceSize; ++x) {
+        // GL's cube table inverted (scene/environment.h): the direction of the texel's centre.
+        const glm::dvec3 d = twr::directionFromCubeCoord(f, (x + 0.5) / kSkyFaceSize, (y + 0.5) / kSkyFaceSize);
+        const std::array<double, 3> c = skyAt(d.x, d.y, d.z);
+        setPixel(face, x, y, c[0], c[1], c[2]);  // row y (top first) is t = (y + 0.5) / size
+      }
+    }
+  }
+  const int height = kSkyEquirectWidth / 2;
+  sky.equirect = twr::makeImage(kSkyEquirectWidth, height);
+  for (int y = 0; y < height; ++y) {
+    const double latitude = (y + 0.5) / height * kPi;  // 0 at +Y (the top row)
+    for (int x = 0; x < kSkyEquirectWidth; ++x) {
+      const double longitude = ((x + 0.5) / kSkyEquirectWidth - 0.5) * 2.0 * kPi;  // 0 towards -Z
+      const double r = std::sin(latitude);
+      const std::array<double, 3> c = skyAt(r * std::sin(longitude), std::cos(latitude), -r * std::cos(longitude));
+      setPixel(sky.equirect, x, y, c[0], c[1], c[2]);
+    }
+  }
+  return sky;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{
       "twinraster-assets: writes the brick textures (bricks_diffuse.png, bricks_height.png, "
       "bricks_normal.png, bricks_specular.png) and the blocks, a height field with vertical walls "
-      "(blocks_height.png, blocks_diffuse.png), deterministically into DIR.\n"
+      "(blocks_height.png, blocks_diffuse.png), and a sky as six cube faces (sky_px.png, sky_nx.png, "
+      "sky_py.png, sky_ny.png, sky_pz.png, sky_nz.png, GL order and orientation, 256x256) and as an "
+      "equirectangular image (sky_equirect.png, 1024x512), deterministically into DIR.\n"
       "The normal map is tangent space, +x = +u, +y = +v (up in the image), encoded (n + 1) / 2.\n"
       "Exit codes: 0 ok, 2 bad arguments or a file that cannot be written."};
   std::string outDir;
@@ -310,6 +397,7 @@ int main(int argc, char** argv) {
   try {
     const BrickTextures textures = generate(size);
     const BlockTextures blocks = generateBlocks(size);
+    const SkyImages sky = generateSky();
     const std::filesystem::path dir(outDir);
     const std::pair<const char*, const Image*> files[] = {{"bricks_diffuse.png", &textures.diffuse},
                                                           {"bricks_height.png", &textures.height},
@@ -321,6 +409,16 @@ int main(int argc, char** argv) {
       const std::string path = (dir / name).string();
       twr::savePng(path, *image);
       std::cout << "wrote " << path << " (" << size << "x" << size << ")\n";
+    }
+    // The sky has sizes of its own (--size is the material textures').
+    const char* const faceNames[6] = {"sky_px.png", "sky_nx.png", "sky_py.png", "sky_ny.png", "sky_pz.png", "sky_nz.png"};
+    std::vector<std::pair<std::string, const Image*>> skyFiles;
+    for (std::size_t f = 0; f < 6; ++f) skyFiles.emplace_back(faceNames[f], &sky.faces[f]);
+    skyFiles.emplace_back("sky_equirect.png", &sky.equirect);
+    for (const auto& [name, image] : skyFiles) {
+      const std::string path = (dir / name).string();
+      twr::savePng(path, *image);
+      std::cout << "wrote " << path << " (" << image->width << "x" << image->height << ")\n";
     }
   } catch (const twr::InputError& e) {
     std::cerr << "twinraster-assets: error: " << e.what() << "\n";

@@ -4,6 +4,7 @@
 
 #include "scene/camera.h"
 #include "scene/conventions.h"
+#include "scene/environment.h"
 #include "scene/mesh.h"
 #include "scene/settings.h"
 #include "scene/texture.h"
@@ -29,6 +30,9 @@ inline constexpr int kMaxParallaxLayers = 256;
 inline constexpr int kMaxReliefRefinementSteps = 16;
 inline constexpr int kMinHorizonDirections = 4;
 inline constexpr int kMaxHorizonDirections = 16;
+
+// Largest refraction_index (n1 / n2, unitless, inclusive): diamond to air is 2.42.
+inline constexpr float kMaxRefractionIndex = 4.0f;
 
 struct HorizonMap;  // scene/horizon_map.h
 
@@ -61,6 +65,16 @@ struct Material {
   // Tangent-space normal strength: the mapped normal's x and y are scaled by this before
   // normalising (the MTL's -bm on a normal map; 1 leaves the map as it is).
   float normalStrength = 1.0f;
+  // The environment on this surface (docs/environment.md); drawn only when the scene has one.
+  // reflectivity: the reflected share with fresnel none, Schlick's F0 with fresnel schlick
+  // (unitless, [0, 1]). refractionIndex: n1 / n2 for Snell's law (1 / 1.33 enters water from
+  // air), 0 = no refraction. With refraction the refracted environment stands where the Phong
+  // colour stood (glass shows what is behind it).
+  float reflectivity = 0.0f;
+  float refractionIndex = 0.0f;
+  Fresnel fresnel = Fresnel::None;
+  EnvironmentSpecular environmentSpecular = EnvironmentSpecular::None;
+  EnvironmentDiffuse environmentDiffuse = EnvironmentDiffuse::None;
 };
 
 struct PointLight {
@@ -101,6 +115,9 @@ struct Scene {
   std::vector<Mesh> meshes;
   std::vector<Node> nodes;  // roots
   RenderSettings settings;
+  // What surrounds the scene (the scene file's "environment"); none when absent, and then no
+  // renderer reads or pays for anything of it.
+  std::optional<Environment> environment;
   // What was read and ignored, or read another way than asked: one line each, naming the
   // file (and line or key). The CLI prints each as "warning: ..." on stderr; the GUI lists them.
   std::vector<std::string> warnings;

@@ -245,13 +245,23 @@ class SceneReader {
 
   Scene read(const Json& root) {
     requireObject(root, "");
-    checkKeys(root, "", {"output", "camera", "ambient", "lights", "materials", "nodes", "settings"}, "the top level");
+    checkKeys(root, "", {"output", "camera", "ambient", "lights", "materials", "nodes", "settings", "environment"},
+              "the top level");
     if (const Json* j = find(root, "output")) readOutput(*j, "output");
     if (const Json* j = find(root, "camera")) readCamera(*j, "camera");
     if (const Json* j = find(root, "ambient")) scene_.ambient = readColour(*j, "ambient", NumberRule::Colour);
     if (const Json* j = find(root, "lights")) readLights(*j, "lights");
     if (const Json* j = find(root, "materials")) readMaterials(*j, "materials");
     if (const Json* j = find(root, "settings")) readSettings(*j, "settings");
+    if (const Json* j = find(root, "environment")) readEnvironment(*j, "environment");
+    if (!scene_.environment) {
+      for (const Material& m : scene_.materials) {
+        if (m.environmentSpecular != EnvironmentSpecular::None || m.refractionIndex > 0.0f) {
+          scene_.warnings.push_back(fileName_ + ": " + childPath("materials", m.name) +
+                                    ": its environment keys are ignored: the scene has no \"environment\"");
+        }
+      }
+    }
     const Json* nodes = find(root, "nodes");
     if (!nodes) fail("nodes", "missing; expected an array of nodes (it may be empty)");
     requireArray(*nodes, "nodes");
@@ -460,7 +470,8 @@ class SceneReader {
       requireObject(mj, materialPath);
       checkKeys(mj, materialPath,
                 {"ka", "kd", "ks", "shininess", "diffuse_map", "normal_map", "specular_map", "height_map", "height_scale",
-                 "surface_detail", "parallax_layers", "relief_refinement_steps", "self_shadow", "horizon_directions"},
+                 "surface_detail", "parallax_layers", "relief_refinement_steps", "self_shadow", "horizon_directions",
+                 "reflectivity", "refraction_index", "fresnel", "environment_specular", "environment_diffuse"},
                 "a material");
       Material material;
       material.name = it.key();
@@ -478,6 +489,7 @@ class SceneReader {
         material.specularMap = readTexture(*v, childPath(materialPath, "specular_map"), MapRole::Colour);
       }
       readSurfaceDetail(mj, materialPath, material);
+      readEnvironmentKeys(mj, materialPath, material);
       materialIndex_[material.name] = static_cast<int>(scene_.materials.size());
       scene_.materials.push_back(std::move(material));
     }
@@ -559,6 +571,121 @@ class SceneReader {
       material.horizonMap = std::make_shared<const HorizonMap>(
           makeHorizonMap(*material.heightMap, material.heightScale, material.horizonDirections));
     }
+  }
+
+  // The environment keys of a material (docs/environment.md). environment_specular defaults
+  // to mirror when the material reflects or refracts, none otherwise.
+  void readEnvironmentKeys(const Json& mj, const std::string& materialPath, Material& material) {
+    const auto at = [&](const char* key) { return childPath(materialPath, key); };
+    if (const Json* v = find(mj, "reflectivity")) material.reflectivity = readNumber(*v, at("reflectivity"), NumberRule::UnitInterval);
+    if (const Json* v = find(mj, "refraction_index")) {
+      material.refractionIndex = readNumber(*v, at("refraction_index"), NumberRule::Positive);
+      if (material.refractionIndex > kMaxRefractionIndex) {
+        fail(at("refraction_index"), "expected a ratio n1 / n2 in (0, 4], got " +
+                                         quote(*v));
+      }
+    }
+    if (const Json* v = find(mj, "fresnel")) material.fresnel = readEnum<Fresnel>(*v, at("fresnel"));
+    const bool usesEnvironment = material.reflectivity > 0.0f || material.refractionIndex > 0.0f ||
+                                 material.fresnel != Fresnel::None;
+    material.environmentSpecular = usesEnvironment ? EnvironmentSpecular::Mirror : EnvironmentSpecular::None;
+    if (const Json* v = find(mj, "environment_specular")) {
+      material.environmentSpecular = readEnum<EnvironmentSpecular>(*v, at("environment_specular"));
+    }
+    if (const Json* v = find(mj, "environment_diffuse")) {
+      material.environmentDiffuse = readEnum<EnvironmentDiffuse>(*v, at("environment_diffuse"));
+    }
+    if (material.environmentSpecular == EnvironmentSpecular::Prefiltered) {
+      fail(at("environment_specular"), "\"prefiltered\" is not drawn yet by this version; use \"mirror\" or \"none\"");
+    }
+    if (material.environmentDiffuse != EnvironmentDiffuse::None) {
+      fail(at("environment_diffuse"), "\"" + std::string(toString(material.environmentDiffuse)) +
+                                          "\" is not drawn yet by this version; use \"none\"");
+    }
+  }
+
+  // The scene's environment (docs/environment.md): six faces or one equirectangular image,
+  // made into the cube map both renderers sample.
+  void readEnvironment(const Json& j, const std::string& path) {
+    requireObject(j, path);
+    checkKeys(j, path, {"cube", "equirect", "intensity", "background", "parameterization", "size", "capture"},
+              "the environment");
+    const auto at = [&](const char* key) { return childPath(path, key); };
+    Environment env;
+    if (const Json* v = find(j, "intensity")) env.intensity = readNumber(*v, at("intensity"), NumberRule::Colour);
+    if (const Json* v = find(j, "background")) env.background = readBool(*v, at("background"));
+    if (const Json* v = find(j, "parameterization")) {
+      env.parameterization = readEnum<EnvironmentParameterization>(*v, at("parameterization"));
+      if (env.parameterization != EnvironmentParameterization::Cube) {
+        fail(at("parameterization"), "\"" + std::string(toString(env.parameterization)) +
+                                         "\" is not drawn yet by this version; use \"cube\"");
+      }
+    }
+    if (const Json* v = find(j, "size")) {
+      env.size = readInt(*v, at("size"), kMinCubeFaceSize, kMaxCubeFaceSize);
+      env.sizeGiven = true;
+      if ((env.size & (env.size - 1)) != 0) {
+        fail(at("size"), "expected a power of two in [1, " + std::to_string(kMaxCubeFaceSize) + "], got " + quote(*v));
+      }
+    }
+    if (find(j, "capture")) fail(at("capture"), "capturing the cube map from the scene is not drawn yet by this version");
+    const Json* cube = find(j, "cube");
+    const Json* equirect = find(j, "equirect");
+    if ((cube != nullptr) == (equirect != nullptr)) {
+      fail(path, cube ? "give either \"cube\" or \"equirect\", not both"
+                      : "missing its source: \"cube\": [6 image paths, +X, -X, +Y, -Y, +Z, -Z] or \"equirect\": "
+                        "\"file.hdr|png|jpg\"");
+    }
+    std::uintmax_t bytes = 0;
+    if (cube) {
+      requireArray(*cube, at("cube"));
+      if (cube->size() != kCubeFaces) {
+        fail(at("cube"), "expected 6 image paths in GL order (+X, -X, +Y, -Y, +Z, -Z), got " +
+                             std::to_string(cube->size()));
+      }
+      std::array<FaceImage, kCubeFaces> faces;
+      for (std::size_t f = 0; f < kCubeFaces; ++f) {
+        const std::string facePath = indexPath(at("cube"), f);
+        env.facePaths[f] = resolvePath(readString((*cube)[f], facePath, "an image path relative to the scene file"));
+        try {
+          faces[f] = loadEnvironmentImage(env.facePaths[f]);
+        } catch (const InputError& e) {
+          fail(facePath, e.what());
+        }
+      }
+      if (env.sizeGiven) {
+        scene_.warnings.push_back(fileName_ + ": " + at("size") + ": ignored: a \"cube\" environment keeps its faces' size");
+      }
+      std::vector<std::string> warnings;
+      try {
+        env.cube = std::make_shared<const CubeMap>(cubeMapFromFaces(faces, env.facePaths, warnings));
+      } catch (const InputError& e) {
+        fail(at("cube"), e.what());
+      }
+      for (const std::string& w : warnings) scene_.warnings.push_back(fileName_ + ": " + at("cube") + ": " + w);
+    } else {
+      env.equirectPath = resolvePath(readString(*equirect, at("equirect"), "an image path relative to the scene file"));
+      FaceImage image;
+      try {
+        image = loadEnvironmentImage(env.equirectPath);
+      } catch (const InputError& e) {
+        fail(at("equirect"), e.what());
+      }
+      if (image.width != 2 * image.height) {
+        scene_.warnings.push_back(fileName_ + ": " + at("equirect") + ": " + env.equirectPath + " is " +
+                                  std::to_string(image.width) + "x" + std::to_string(image.height) +
+                                  ", not 2:1; read as 360 x 180 degrees all the same (stretched)");
+      }
+      if (!env.sizeGiven) env.size = defaultCubeSizeForEquirect(image.width);
+      env.cube = std::make_shared<const CubeMap>(cubeMapFromEquirect(image, env.size, env.equirectPath));
+    }
+    for (const CubeMapLevel& level : env.cube->levels) bytes += level.r.size() * 3 * sizeof(float);
+    if (bytes > textureBudget_) {
+      fail(path, "the cube map's " + describeBytes(bytes) + " of texels are more than the " + describeBytes(textureBudget_) +
+                     " left of the scene's texture memory limit of " + describeBytes(kMaxSceneTextureBytes));
+    }
+    textureBudget_ -= bytes;
+    scene_.environment = std::move(env);
   }
 
   enum class MapRole { Colour, Normal, Height };

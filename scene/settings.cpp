@@ -51,6 +51,13 @@ constexpr NameTable<SurfaceDetail, 8> kSurfaceDetail{{{SurfaceDetail::NormalMap,
                                                      {SurfaceDetail::ParallaxOcclusion, "parallax_occlusion"}}};
 constexpr NameTable<SelfShadow, 3> kSelfShadow{
     {{SelfShadow::None, "none"}, {SelfShadow::HeightMarch, "height_march"}, {SelfShadow::HorizonMap, "horizon_map"}}};
+constexpr NameTable<Fresnel, 2> kFresnel{{{Fresnel::None, "none"}, {Fresnel::Schlick, "schlick"}}};
+constexpr NameTable<EnvironmentSpecular, 3> kEnvironmentSpecular{{{EnvironmentSpecular::None, "none"},
+                                                                  {EnvironmentSpecular::Mirror, "mirror"},
+                                                                  {EnvironmentSpecular::Prefiltered, "prefiltered"}}};
+constexpr NameTable<EnvironmentDiffuse, 3> kEnvironmentDiffuse{{{EnvironmentDiffuse::None, "none"},
+                                                                {EnvironmentDiffuse::IrradianceMap, "irradiance_map"},
+                                                                {EnvironmentDiffuse::Sh9, "sh9"}}};
 
 template <typename E, std::size_t N>
 std::string_view nameOf(const NameTable<E, N>& table, E value) {
@@ -81,6 +88,9 @@ std::string_view toString(TextureFilter v) { return nameOf(kFilter, v); }
 std::string_view toString(LineMode v) { return nameOf(kLine, v); }
 std::string_view toString(SurfaceDetail v) { return nameOf(kSurfaceDetail, v); }
 std::string_view toString(SelfShadow v) { return nameOf(kSelfShadow, v); }
+std::string_view toString(Fresnel v) { return nameOf(kFresnel, v); }
+std::string_view toString(EnvironmentSpecular v) { return nameOf(kEnvironmentSpecular, v); }
+std::string_view toString(EnvironmentDiffuse v) { return nameOf(kEnvironmentDiffuse, v); }
 
 bool parse(std::string_view s, CullMode& out) { return valueOf(kCull, s, out); }
 bool parse(std::string_view s, FrontFace& out) { return valueOf(kFront, s, out); }
@@ -91,6 +101,9 @@ bool parse(std::string_view s, TextureFilter& out) { return valueOf(kFilter, s, 
 bool parse(std::string_view s, LineMode& out) { return valueOf(kLine, s, out); }
 bool parse(std::string_view s, SurfaceDetail& out) { return valueOf(kSurfaceDetail, s, out); }
 bool parse(std::string_view s, SelfShadow& out) { return valueOf(kSelfShadow, s, out); }
+bool parse(std::string_view s, Fresnel& out) { return valueOf(kFresnel, s, out); }
+bool parse(std::string_view s, EnvironmentSpecular& out) { return valueOf(kEnvironmentSpecular, s, out); }
+bool parse(std::string_view s, EnvironmentDiffuse& out) { return valueOf(kEnvironmentDiffuse, s, out); }
 
 std::string clipSlotProblem(const RenderSettings& settings) {
   const bool oneDepthPlane = settings.clip.near != settings.clip.far;

@@ -41,6 +41,14 @@ constexpr bool marchesLayers(SurfaceDetail d) {
 // Self-shadowing of the height field: none, a march towards the light through the height field,
 // or a precomputed horizon map (scene/horizon_map.h).
 enum class SelfShadow { None, HeightMarch, HorizonMap };
+// How a material mixes in the environment (docs/environment.md). Fresnel: the reflected share
+// is the material's reflectivity (none) or Schlick's approximation (schlick). Specular: no
+// reflection of the environment, the mirror direction read exactly (mirror), or a prefiltered
+// glossy map (prefiltered). Diffuse: environment light on the diffuse term, from an irradiance
+// map or nine spherical-harmonic coefficients.
+enum class Fresnel { None, Schlick };
+enum class EnvironmentSpecular { None, Mirror, Prefiltered };
+enum class EnvironmentDiffuse { None, IrradianceMap, Sh9 };
 enum class LightingSpace { World, Tangent };
 enum class TangentTransform { Model, InverseTranspose };
 // GL's minification filters (docs/textures.md): nearest = GL_NEAREST, bilinear = GL_LINEAR
@@ -98,6 +106,9 @@ std::string_view toString(TextureFilter v);
 std::string_view toString(LineMode v);
 std::string_view toString(SurfaceDetail v);
 std::string_view toString(SelfShadow v);
+std::string_view toString(Fresnel v);
+std::string_view toString(EnvironmentSpecular v);
+std::string_view toString(EnvironmentDiffuse v);
 
 // Parsers return false for an unknown name.
 bool parse(std::string_view s, CullMode& out);
@@ -109,6 +120,9 @@ bool parse(std::string_view s, TextureFilter& out);
 bool parse(std::string_view s, LineMode& out);
 bool parse(std::string_view s, SurfaceDetail& out);
 bool parse(std::string_view s, SelfShadow& out);
+bool parse(std::string_view s, Fresnel& out);
+bool parse(std::string_view s, EnvironmentSpecular& out);
+bool parse(std::string_view s, EnvironmentDiffuse& out);
 
 // GL has kMaxUserClipPlanes clip distances. Near or far switched on alone needs one of them
 // (depth clamp turns both off, the one still on comes back as a clip distance,

@@ -19,6 +19,9 @@ namespace {
 const std::filesystem::path kTextures = std::filesystem::path(TWINRASTER_SOURCE_DIR) / "assets" / "textures";
 const char* const kFiles[] = {"bricks_diffuse.png", "bricks_height.png", "bricks_normal.png", "bricks_specular.png",
                               "blocks_height.png",  "blocks_diffuse.png"};
+// The sky's files, at sizes of their own (--size does not change them).
+const char* const kSkyFiles[] = {"sky_px.png", "sky_nx.png", "sky_py.png",     "sky_ny.png",
+                                 "sky_pz.png", "sky_nz.png", "sky_equirect.png"};
 // Relief depth in texture units, as app/assets_tool.cpp's kReliefDepthUv.
 constexpr double kReliefDepthUv = 0.012;
 // One 8-bit step of a decoded component: c / 255 * 2 - 1 moves by 2 / 255 per level.
@@ -47,6 +50,11 @@ TEST(AssetsTool, ReproducesTheCommittedTexturesByteForByte) {
   const std::filesystem::path dir = freshDir("assets_tool_default");
   ASSERT_EQ(runTool("--out \"" + dir.string() + "\""), 0);
   for (const char* file : kFiles) {
+    const std::string committed = readBytes(kTextures / file);
+    ASSERT_FALSE(committed.empty()) << file;
+    EXPECT_TRUE(readBytes(dir / file) == committed) << file << " differs from assets/textures/" << file;
+  }
+  for (const char* file : kSkyFiles) {
     const std::string committed = readBytes(kTextures / file);
     ASSERT_FALSE(committed.empty()) << file;
     EXPECT_TRUE(readBytes(dir / file) == committed) << file << " differs from assets/textures/" << file;

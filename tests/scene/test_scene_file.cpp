@@ -776,3 +776,70 @@ TEST(SceneFileErrors, HeightFieldMaterialKeys) {
 
 }  // namespace
 }  // namespace twr
+
+namespace twr {
+namespace {
+
+// A scene with `environment` (JSON text) and one material `m` with `material` (JSON text).
+std::string withEnvironment(const std::string& environment, const std::string& material = "{}") {
+  return R"({"nodes": [], "environment": )" + environment + R"(, "materials": {"m": )" + material + "}}";
+}
+const std::string kSixFaces = R"(["../../../assets/textures/sky_px.png", "../../../assets/textures/sky_nx.png",
+  "../../../assets/textures/sky_py.png", "../../../assets/textures/sky_ny.png", "../../../assets/textures/sky_pz.png",
+  "../../../assets/textures/sky_nz.png"])";
+
+// Issue 17's keys: each bad value names its key and what was expected; what is not drawn yet
+// is refused by name, never drawn some other way.
+TEST(SceneFileErrors, EnvironmentKeys) {
+  expectContains(parseError(withEnvironment("{}")), {"inline.json: environment: missing its source", "\"cube\"", "\"equirect\""});
+  expectContains(parseError(withEnvironment(R"({"cube": ["a.png", "b.png"]})")),
+                 {"environment.cube: expected 6 image paths in GL order (+X, -X, +Y, -Y, +Z, -Z), got 2"});
+  expectContains(parseError(withEnvironment(R"({"cube": ["a.png", "b.png", "c.png", "d.png", "e.png", "f.png"]})")),
+                 {"environment.cube[0]: ", "a.png: image file not found"});
+  expectContains(parseError(withEnvironment(R"({"equirect": "nothing.hdr"})")), {"environment.equirect: ", "nothing.hdr"});
+  expectContains(parseError(withEnvironment(R"({"equirect": "x.png", "cube": []})")), {"environment: give either"});
+  expectContains(parseError(withEnvironment(R"({"equirect": "x.png", "size": 300})")),
+                 {"environment.size: expected a power of two in [1, 1024], got 300"});
+  expectContains(parseError(withEnvironment(R"({"equirect": "x.png", "parameterization": "sphere"})")),
+                 {"environment.parameterization: \"sphere\" is not drawn yet"});
+  expectContains(parseError(withEnvironment(R"({"equirect": "x.png", "parameterization": "octahedral"})")),
+                 {"environment.parameterization: expected one of cube|sphere|dual_paraboloid"});
+  expectContains(parseError(withEnvironment(R"({"equirect": "x.png", "capture": {"node": "n"}})")),
+                 {"environment.capture: capturing the cube map from the scene is not drawn yet"});
+  expectContains(parseError(withEnvironment(R"({"equirect": "x.png", "halo": 1})")), {"environment.halo: unknown key in the environment"});
+  expectContains(parseError(withEnvironment(kSixFaces, R"({"reflectivity": 1.5})")),
+                 {"materials.m.reflectivity: expected a number in [0, 1]"});
+  expectContains(parseError(withEnvironment(kSixFaces, R"({"refraction_index": 0})")),
+                 {"materials.m.refraction_index: expected a number > 0"});
+  expectContains(parseError(withEnvironment(kSixFaces, R"({"refraction_index": 5})")),
+                 {"materials.m.refraction_index: expected a ratio n1 / n2 in (0, 4]"});
+  expectContains(parseError(withEnvironment(kSixFaces, R"({"fresnel": "cook_torrance"})")),
+                 {"materials.m.fresnel: expected one of none|schlick"});
+  expectContains(parseError(withEnvironment(kSixFaces, R"({"environment_specular": "prefiltered"})")),
+                 {"materials.m.environment_specular: \"prefiltered\" is not drawn yet"});
+  expectContains(parseError(withEnvironment(kSixFaces, R"({"environment_diffuse": "sh9"})")),
+                 {"materials.m.environment_diffuse: \"sh9\" is not drawn yet"});
+}
+
+TEST(SceneFile, EnvironmentFromSixFacesAndTheMaterialDefaults) {
+  const Scene scene = parseScene(withEnvironment(R"({"cube": )" + kSixFaces + R"(, "intensity": 2, "background": false})",
+                                                 R"({"reflectivity": 0.5})"),
+                                 kInline, kDataDir);
+  ASSERT_TRUE(scene.environment.has_value());
+  EXPECT_EQ(scene.environment->intensity, 2.0f);
+  EXPECT_FALSE(scene.environment->background);
+  ASSERT_TRUE(scene.environment->cube);
+  EXPECT_EQ(scene.environment->cube->size(), 256);
+  // Reflecting turns environment_specular to mirror by default; fresnel stays none.
+  EXPECT_EQ(scene.materials[0].environmentSpecular, EnvironmentSpecular::Mirror);
+  EXPECT_EQ(scene.materials[0].fresnel, Fresnel::None);
+  EXPECT_TRUE(scene.warnings.empty());
+  // A material's environment keys without an environment: read, warned, drawn without.
+  const Scene plain = parseScene(R"({"nodes": [], "materials": {"m": {"refraction_index": 0.75}}})", kInline, kDataDir);
+  ASSERT_EQ(plain.warnings.size(), 1u);
+  expectContains(plain.warnings[0], {"materials.m", "the scene has no \"environment\""});
+  EXPECT_FALSE(plain.environment.has_value());
+}
+
+}  // namespace
+}  // namespace twr

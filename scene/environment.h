@@ -1,0 +1,143 @@
+// Environment maps (docs/environment.md): what surrounds the scene, as a cube map both
+// renderers sample the same texels of. A scene's `environment` is six face images in GL order
+// or one equirectangular image, turned at load into a CubeMap: linear RGB floats (an 8-bit
+// file's bytes read as c / 255, a Radiance HDR file's floats as they are), the same array GL
+// receives as GL_RGB32F, so no driver conversion stands between the two renderers.
+//
+// Cube-map faces and their (s, t) follow the GL spec's table (section 8.13): the major axis of
+// the direction r picks the face, and
+//   face  major   sc    tc         face  major   sc    tc
+//   +X    +rx    -rz   -ry         -X    -rx    +rz   -ry
+//   +Y    +ry    +rx   +rz         -Y    -ry    +rx   -rz
+//   +Z    +rz    +rx   -ry         -Z    -rz    -rx   -ry
+//   s = (sc / |ma| + 1) / 2,  t = (tc / |ma| + 1) / 2.
+// Row 0 of a face is t = 0: the top row of a face image, as sky boxes are made (they are
+// uploaded top row first, unflipped, by every GL tutorial).
+#pragma once
+
+#include "scene/conventions.h"
+#include "scene/image.h"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace twr {
+
+// How directions become a 2D texture (the slides' three mappings). Cube is sampled directly;
+// sphere and dual_paraboloid are built from the source at `size` (not yet drawn: refused).
+enum class EnvironmentParameterization { Cube, Sphere, DualParaboloid };
+std::string_view toString(EnvironmentParameterization v);
+bool parse(std::string_view s, EnvironmentParameterization& out);
+
+// Face order, GL's: GL_TEXTURE_CUBE_MAP_POSITIVE_X + face.
+inline constexpr int kCubeFaces = 6;
+inline constexpr const char* kCubeFaceNames[kCubeFaces] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+
+// Largest face side, texels (inclusive): six 1024^2 RGB float faces with their chains are
+// 100 MB on each side of the comparison. A larger face is read at the first level of its own
+// chain that fits (with a warning).
+inline constexpr int kMaxCubeFaceSize = 1024;
+// Side of a cube built from an equirectangular image when `size` is not given, texels: the
+// power of two nearest a quarter of the image's width (a face spans a quarter of the
+// equirect's 360 degrees), within [kMinCubeFaceSize, kMaxCubeFaceSize].
+inline constexpr int kMinCubeFaceSize = 1;
+inline constexpr int kDefaultEnvironmentSize = 256;
+
+// One mip level of the six faces, planar: channel c of texel (x, y) of `face` at
+// c[(face * size + y) * size + x]. Planar floats are what the lane code gathers (one index per
+// channel, exact in float for every index below 2^24: 6 * 1024^2 is 6.3 million).
+struct CubeMapLevel {
+  int size = 0;  // texels per side
+  std::vector<float> r, g, b;
+  std::size_t index(int face, int x, int y) const {
+    return (static_cast<std::size_t>(face) * static_cast<std::size_t>(size) + static_cast<std::size_t>(y)) *
+               static_cast<std::size_t>(size) +
+           static_cast<std::size_t>(x);
+  }
+  vec3 texel(int face, int x, int y) const {
+    const std::size_t i = index(face, x, y);
+    return vec3(r[i], g[i], b[i]);
+  }
+};
+
+struct CubeMap {
+  std::string source;                // where the texels came from, for messages and the UI
+  std::vector<CubeMapLevel> levels;  // level 0 first; each side half the one before, down to 1
+  int size() const { return levels.empty() ? 0 : levels.front().size; }
+  int levelCount() const { return static_cast<int>(levels.size()); }
+};
+
+// A face as read: the texels of one face image, top row first (as the file stores it), RGB.
+struct FaceImage {
+  int width = 0, height = 0;
+  std::vector<float> rgb;  // width * height * 3
+};
+
+// Reads an image file (PNG, JPEG, BMP, TGA, DDS level 0 as c / 255; Radiance HDR as floats).
+// Throws InputError naming the file.
+FaceImage loadEnvironmentImage(const std::string& path);
+
+// The cube of six square faces of one size (GL order), with its mip chain. Throws InputError
+// naming the face (`paths`, for messages) when a face is not square or the sizes differ.
+// `warnings` receives a line when a face larger than kMaxCubeFaceSize is reduced.
+CubeMap cubeMapFromFaces(const std::array<FaceImage, kCubeFaces>& faces, const std::array<std::string, kCubeFaces>& paths,
+                         std::vector<std::string>& warnings);
+// The cube of side `size` resampled from an equirectangular image (longitude along x, the
+// -Z direction at the centre, +X a quarter to the right; latitude along y, +Y at the top row),
+// each face texel the bilinear value at its centre's direction, in double; with its mip chain.
+CubeMap cubeMapFromEquirect(const FaceImage& equirect, int size, const std::string& path);
+// The equirect's default cube size (kDefaultEnvironmentSize's rule above).
+int defaultCubeSizeForEquirect(int equirectWidth);
+
+// Level i + 1 from level i for every face: each texel the mean of its 2x2 block (sides are
+// powers of two after cubeMapFromFaces), in double rounded to float, as a box-filtered
+// glGenerateMipmap would; built once here and given to GL level by level.
+void buildCubeMipChain(CubeMap& cube);
+
+// The GL table above, in double: the face of direction r (the largest |component|; on a tie z
+// wins, then y, as llvmpipe selects; a zero vector reads +Z, -0 in z -Z) and its s, t in [0, 1].
+struct CubeCoord {
+  int face = 0;
+  double s = 0.5, t = 0.5;
+};
+CubeCoord cubeCoordFromDirection(const glm::dvec3& r);
+// The direction through (s, t) of `face` (not normalised; the inverse of the table).
+glm::dvec3 directionFromCubeCoord(int face, double s, double t);
+
+// Seamless filtering's neighbours (GL_TEXTURE_CUBE_MAP_SEAMLESS): the texel one step past an
+// edge of a face is an edge texel of the face that shares the edge. For face f and edge e
+// (0: x = -1, 1: x = size, 2: y = -1, 3: y = size), entry 4 f + e says which face and where:
+// with `along` the coordinate that stays in range (y for edges 0 and 1, x for 2 and 3),
+//   x' = xAtLast * (size - 1) + xPerAlong * along,  y' = yAtLast * (size - 1) + yPerAlong * along
+// (each factor 0, 1 or -1). Derived once from the table above, in double. Floats, as the lane
+// code gathers them.
+struct CubeEdgeTable {
+  std::array<float, 4 * kCubeFaces> face{}, xAtLast{}, xPerAlong{}, yAtLast{}, yPerAlong{};
+};
+const CubeEdgeTable& cubeEdgeTable();
+
+// The equirect convention above: the image coordinate (u right, v down, both in [0, 1]) a
+// direction looks at, and back.
+glm::dvec2 equirectUvFromDirection(const glm::dvec3& r);
+
+// The scene's environment (the scene file's top-level "environment").
+struct EnvironmentCapture {
+  std::string node;  // rendered from this node's centre, the node hidden
+  int size = kDefaultEnvironmentSize;
+};
+struct Environment {
+  std::array<std::string, kCubeFaces> facePaths;  // set when read from six images
+  std::string equirectPath;                       // set when read from one
+  float intensity = 1.0f;                         // scales every environment read (unitless)
+  bool background = true;                         // drawn as the sky box where no triangle is
+  EnvironmentParameterization parameterization = EnvironmentParameterization::Cube;
+  int size = kDefaultEnvironmentSize;  // texels: the built map's side
+  bool sizeGiven = false;
+  std::shared_ptr<const CubeMap> cube;
+};
+
+}  // namespace twr
