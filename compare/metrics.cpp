@@ -60,7 +60,8 @@ bool lineAt(const RenderOutput& output, std::size_t i) { return !output.lineMask
 }  // namespace
 
 double CompareMetrics::over1Pct() const {
-  return bothCovered == 0 ? 0.0 : kPercent * static_cast<double>(over1) / static_cast<double>(bothCovered);
+  const std::uint64_t colourPixels = bothCovered + backgroundCompared;
+  return colourPixels == 0 ? 0.0 : kPercent * static_cast<double>(over1) / static_cast<double>(colourPixels);
 }
 
 double CompareMetrics::coverageMismatchPer10k() const {
@@ -101,14 +102,15 @@ CompareResult compareDetailed(const RenderOutput& cpu, const RenderOutput& gl, c
     const bool glCovered = coveredAt(gl, i);
     m.coveredCpu += cpuCovered;
     m.coveredGl += glCovered;
-    if (!cpuCovered && !glCovered) continue;  // PixelClass::Empty
+    const bool background = !cpuCovered && !glCovered;
+    if (background && !options.compareBackground) continue;  // PixelClass::Empty
     if (cpuCovered != glCovered) {
       pixels.pixelClass[i] = cpuCovered ? PixelClass::CoverageCpu : PixelClass::CoverageGl;
       ++(cpuCovered ? m.coverageCpuOnly : m.coverageGlOnly);
       continue;
     }
 
-    ++m.bothCovered;
+    ++(background ? m.backgroundCompared : m.bothCovered);
     int diff = 0;
     for (int c = 0; c < kColourChannels; ++c) {
       const int channelDiff = std::abs(int(cpuPixel[c]) - int(glPixel[c]));
@@ -148,8 +150,8 @@ CompareResult compareDetailed(const RenderOutput& cpu, const RenderOutput& gl, c
 
   m.coverageMismatch = m.coverageCpuOnly + m.coverageGlOnly;
   m.classCoverage = m.coverageMismatch;
-  if (m.bothCovered > 0) {
-    const double samples = static_cast<double>(m.bothCovered) * kColourChannels;
+  if (m.bothCovered + m.backgroundCompared > 0) {
+    const double samples = static_cast<double>(m.bothCovered + m.backgroundCompared) * kColourChannels;
     m.meanAbsDiff = static_cast<double>(sumAbs) / samples;
     m.rmse = std::sqrt(static_cast<double>(sumSquares) / samples);
   }

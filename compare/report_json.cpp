@@ -22,6 +22,7 @@ nlohmann::json metricsToJson(const CompareMetrics& m) {
   json["covered_cpu"] = m.coveredCpu;
   json["covered_gl"] = m.coveredGl;
   json["both_covered"] = m.bothCovered;
+  json["background_compared"] = m.backgroundCompared;
   json["coverage_cpu_only"] = m.coverageCpuOnly;
   json["coverage_gl_only"] = m.coverageGlOnly;
   json["coverage_mismatch"] = m.coverageMismatch;

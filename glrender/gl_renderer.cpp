@@ -249,7 +249,7 @@ class GlRenderer final : public Renderer {
     device.targets.drawSurfaces();
     const GlClipState clipState = makeGlClipState(drawSettings, scene.camera);
     const SceneDrawStats drawStats = drawScene(device.programs, device.uploads, scene, drawSettings, clipState, items,
-                                               clipFromWorld, options_.frame);
+                                               clipFromWorld, width, height, options_.frame);
     checkGlErrors("drawing the scene");
 
     if (settings.tbnLines.enabled) {

@@ -4,8 +4,10 @@
 #include "scene/errors.h"
 #include "scene/horizon_map.h"
 #include "scene/surface_detail.h"
+#include "scene/sky_view.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 
@@ -18,6 +20,13 @@ constexpr GLint kNormalUnit = 1;
 constexpr GLint kSpecularUnit = 2;
 constexpr GLint kHeightUnit = 3;
 constexpr GLint kFirstHorizonUnit = 4;  // 4 to 7: one per 4 horizon azimuths
+constexpr GLint kEnvironmentUnit = 8;   // the environment's cube map
+
+// Whether the material mixes in the scene's environment (softrender/shade.cpp decides the same).
+bool usesEnvironment(const Material& material, const Scene& scene) {
+  return scene.environment && scene.environment->cube &&
+         (material.environmentSpecular == EnvironmentSpecular::Mirror || material.refractionIndex > 0.0f);
+}
 
 // A map without texels is treated as absent, as the CPU does (softrender/shade.cpp).
 bool usableMap(const std::shared_ptr<const Texture>& map) {
@@ -61,6 +70,9 @@ void applyPipelineState(const RenderSettings& settings) {
   glDisable(GL_STENCIL_TEST);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  // Cube maps filter across face edges, as the CPU does (softrender/cube_sample-inl.h); off by
+  // default in a core context.
+  glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
   glFrontFace(settings.frontFace == FrontFace::Ccw ? GL_CCW : GL_CW);
   if (settings.cull == CullMode::None) {
     glDisable(GL_CULL_FACE);
@@ -136,11 +148,48 @@ void setUniforms(GLuint program, const Scene& scene, const RenderSettings& setti
       glUniform1i(uniformLocation(program, ("horizonMap" + std::to_string(k)).c_str()), kFirstHorizonUnit + k);
     }
   }
+  if (usesEnvironment(material, scene)) {
+    glUniform1i(uniformLocation(program, "environmentMap"), kEnvironmentUnit);
+    glUniform1f(uniformLocation(program, "environmentIntensity"), scene.environment->intensity);
+    glUniform1f(uniformLocation(program, "reflectivity"), material.reflectivity);
+    glUniform1f(uniformLocation(program, "refractionEta"), material.refractionIndex > 0.0f ? material.refractionIndex : 1.0f);
+  }
+}
+
+// The sky box (shaders/sky.*): a full-screen triangle at depth 1 with GL_LEQUAL after the
+// scene, into the colour attachment alone (a sky pixel keeps "no triangle"), not counted as
+// a shaded sample. The CPU twin is softrender/sky.cpp; the same uniforms (makeSkyUniforms).
+void drawSky(ProgramCache& programs, GlUploadCache& uploads, const Scene& scene, const SkyUniformsT<float>& sky) {
+  GLint drawBuffer1 = GL_NONE;
+  glGetIntegerv(GL_DRAW_BUFFER1, &drawBuffer1);
+  const std::array<GLenum, 2> colourOnly = {GL_COLOR_ATTACHMENT0, GL_NONE};
+  glDrawBuffers(2, colourOnly.data());
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  glDisable(GL_CULL_FACE);
+  const GLuint program = programs.get(ProgramDesc{"sky", {"common.glsl", "sky.vert"}, {"common.glsl", "sky.frag"}, {}});
+  glUseProgram(program);
+  glUniform1i(uniformLocation(program, "environmentMap"), kEnvironmentUnit);
+  glUniform1f(uniformLocation(program, "environmentIntensity"), sky.intensity);
+  glUniform3fv(uniformLocation(program, "skyForward"), 1, &sky.forward.x);
+  glUniform3fv(uniformLocation(program, "skyRight"), 1, &sky.right.x);
+  glUniform3fv(uniformLocation(program, "skyUp"), 1, &sky.up.x);
+  glUniform2fv(uniformLocation(program, "ndcPerPixel"), 1, &sky.ndcPerPixel.x);
+  glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + kEnvironmentUnit));
+  uploads.cubeMap(scene.environment->cube);
+  GlVertexArray empty = makeGlVertexArray();  // core profile: a draw needs a vertex array
+  glBindVertexArray(empty.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  const std::array<GLenum, 2> restored = {GL_COLOR_ATTACHMENT0, static_cast<GLenum>(drawBuffer1)};
+  glDrawBuffers(drawBuffer1 == GL_NONE ? 1 : 2, restored.data());
 }
 
 }  // namespace
 
-std::vector<std::string> phongDefines(const Material& material, const RenderSettings& settings) {
+std::vector<std::string> phongDefines(const Material& material, const RenderSettings& settings, bool environment) {
   std::vector<std::string> defines;
   if (usableMap(material.diffuseMap)) defines.push_back("HAS_DIFFUSE_MAP");
   const SurfaceDetailUse use = surfaceDetailUse(material, settings);
@@ -174,13 +223,20 @@ std::vector<std::string> phongDefines(const Material& material, const RenderSett
       }
     }
   }
+  if (environment) {
+    defines.push_back("HAS_ENVIRONMENT");
+    if (material.environmentSpecular == EnvironmentSpecular::Mirror) defines.push_back("ENVIRONMENT_MIRROR");
+    if (material.refractionIndex > 0.0f) defines.push_back("ENVIRONMENT_REFRACTION");
+    if (material.fresnel == Fresnel::Schlick) defines.push_back("FRESNEL_SCHLICK");
+  }
   defines.push_back(viewDefine(settings.view));
   return defines;
 }
 
 SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const Scene& scene,
                          const RenderSettings& settings, const GlClipState& clipState,
-                         const std::vector<DrawItem>& items, const mat4& clipFromWorld, GlFrame frame) {
+                         const std::vector<DrawItem>& items, const mat4& clipFromWorld, int width, int height,
+                         GlFrame frame) {
   SceneDrawStats stats;
   const bool countSamples = frame == GlFrame::Full;
   applyPipelineState(settings);
@@ -204,8 +260,10 @@ SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const S
     checkIndices(*item.mesh, item.nodeName);
     stats.trianglesIn += item.mesh->triangleCount();
     const Material& material = *item.material;
-    ProgramDesc desc{"phong", {"common.glsl", "phong.vert"}, {"common.glsl", "surface_detail.glsl", "phong.frag"},
-                     phongDefines(material, settings)};
+    ProgramDesc desc{"phong",
+                     {"common.glsl", "phong.vert"},
+                     {"common.glsl", "surface_detail.glsl", "environment.glsl", "phong.frag"},
+                     phongDefines(material, settings, usesEnvironment(material, scene))};
     if (frame == GlFrame::Lean) desc.defines.push_back("NO_TRIANGLE_ID");
     const GLuint program = programs.get(desc);
     glUseProgram(program);
@@ -218,6 +276,10 @@ SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const S
     for (int k = 0; k < use.horizonDirections / 4; ++k) {
       bindMap(material.horizonMap->textures[static_cast<std::size_t>(k)], kFirstHorizonUnit + k);
     }
+    if (usesEnvironment(material, scene)) {
+      glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + kEnvironmentUnit));
+      uploads.cubeMap(scene.environment->cube);
+    }
     const GlMesh& mesh = uploads.mesh(*item.mesh);
     glBindVertexArray(mesh.vertexArray.id());
     glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
@@ -229,6 +291,8 @@ SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const S
     glGetQueryObjectui64v(samples.id(), GL_QUERY_RESULT, &passed);
     stats.samplesPassed = passed;
   }
+  const SkyUniformsT<float> sky = makeSkyUniforms(scene, width, height);
+  if (sky.cube && settings.view == View::Shaded) drawSky(programs, uploads, scene, sky);
   glActiveTexture(GL_TEXTURE0);
   uploads.endFrame();
   return stats;

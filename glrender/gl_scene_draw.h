@@ -20,7 +20,9 @@ struct SceneDrawStats {
 };
 
 // The permutation defines of the phong program for one material (exposed for tests).
-std::vector<std::string> phongDefines(const Material& material, const RenderSettings& settings);
+// `environment`: the material mixes in the scene's environment (shaders/environment.glsl).
+std::vector<std::string> phongDefines(const Material& material, const RenderSettings& settings,
+                                      bool environment = false);
 
 // Draws `items` into the bound framebuffer's current draw buffers, within the scissor the
 // caller set (GlRenderer: none for a frame, one pixel for renderGlPixel). Throws InputError for
@@ -30,7 +32,7 @@ std::vector<std::string> phongDefines(const Material& material, const RenderSett
 // as a user does: no query (samplesPassed 0), programs compiled with NO_TRIANGLE_ID.
 SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const Scene& scene,
                          const RenderSettings& settings, const GlClipState& clipState,
-                         const std::vector<DrawItem>& items, const mat4& clipFromWorld,
+                         const std::vector<DrawItem>& items, const mat4& clipFromWorld, int width, int height,
                          GlFrame frame = GlFrame::Full);
 
 }  // namespace twr

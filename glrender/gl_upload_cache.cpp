@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstring>
 #include <string>
+#include <vector>
 
 namespace twr {
 namespace {
@@ -239,9 +240,54 @@ GLuint GlUploadCache::texture(const std::shared_ptr<const Texture>& texture, Tex
   return entry.gl.id();
 }
 
+GLuint GlUploadCache::cubeMap(const std::shared_ptr<const CubeMap>& cube) {
+  auto found = cubes_.find(cube.get());
+  if (found != cubes_.end()) {
+    found->second.lastFrame = frame_;
+    glBindTexture(GL_TEXTURE_CUBE_MAP, found->second.gl.id());
+    return found->second.gl.id();
+  }
+  CubeEntry entry;
+  entry.cube = cube;
+  entry.gl = makeGlTexture();
+  entry.lastFrame = frame_;
+  glBindTexture(GL_TEXTURE_CUBE_MAP, entry.gl.id());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  std::vector<float> rgb;
+  for (int level = 0; level < cube->levelCount(); ++level) {
+    const CubeMapLevel& lv = cube->levels[static_cast<std::size_t>(level)];
+    const std::size_t texels = static_cast<std::size_t>(lv.size) * static_cast<std::size_t>(lv.size);
+    rgb.resize(texels * 3);
+    for (int face = 0; face < kCubeFaces; ++face) {
+      // Interleaved RGB from the planar channels; row 0 of the upload is the face's t = 0.
+      const std::size_t first = lv.index(face, 0, 0);
+      for (std::size_t i = 0; i < texels; ++i) {
+        rgb[i * 3] = lv.r[first + i];
+        rgb[i * 3 + 1] = lv.g[first + i];
+        rgb[i * 3 + 2] = lv.b[first + i];
+      }
+      glTexImage2D(static_cast<GLenum>(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face), level, GL_RGB32F, lv.size, lv.size, 0,
+                   GL_RGB, GL_FLOAT, rgb.data());
+    }
+  }
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_BASE_LEVEL, 0);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, cube->levelCount() - 1);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  // llvmpipe ignores the wrap of a seamless cube; set to what the CPU models all the same.
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+  const GLuint id = entry.gl.id();
+  cubes_.emplace(cube.get(), std::move(entry));
+  ++textureUploads_;
+  return id;
+}
+
 void GlUploadCache::endFrame() {
   std::erase_if(meshes_, [this](const auto& item) { return item.second.lastFrame != frame_; });
   std::erase_if(textures_, [this](const auto& item) { return item.second.lastFrame != frame_; });
+  std::erase_if(cubes_, [this](const auto& item) { return item.second.lastFrame != frame_; });
 }
 
 }  // namespace twr

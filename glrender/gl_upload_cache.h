@@ -17,6 +17,7 @@
 #pragma once
 
 #include "glrender/gl_objects.h"
+#include "scene/environment.h"
 #include "scene/mesh.h"
 #include "scene/settings.h"
 #include "scene/texture.h"
@@ -47,6 +48,11 @@ class GlUploadCache {
   // active unit and returns it; throws InputError when the texture cannot be uploaded (wrong
   // byte count, a side of 0, a level not half the previous one, a compressed level's size).
   GLuint texture(const std::shared_ptr<const Texture>& texture, TextureFilter filter, float anisotropy = 1.0f);
+  // Binds the GL_TEXTURE_CUBE_MAP for `cube` to the active unit and returns it: every level
+  // of the six faces as GL_RGB32F, the floats the CPU samples (scene/environment.h), filtered
+  // GL_LINEAR_MIPMAP_LINEAR / GL_LINEAR. Seamless filtering is the context's
+  // (GL_TEXTURE_CUBE_MAP_SEAMLESS, enabled by the caller). Held like a texture (see above).
+  GLuint cubeMap(const std::shared_ptr<const CubeMap>& cube);
   // Drops what the render since beginFrame() did not use.
   void endFrame();
 
@@ -71,7 +77,13 @@ class GlUploadCache {
   };
 
   std::map<const Mesh*, MeshEntry> meshes_;
+  struct CubeEntry {
+    std::shared_ptr<const CubeMap> cube;  // held: keeps the address unique
+    GlTexture gl;
+    std::uint64_t lastFrame = 0;
+  };
   std::map<const Texture*, TextureEntry> textures_;
+  std::map<const CubeMap*, CubeEntry> cubes_;
   std::uint64_t frame_ = 0;
   std::size_t meshUploads_ = 0;
   std::size_t textureUploads_ = 0;

@@ -13,6 +13,8 @@
 // method's SURFACE_<NAME>, PARALLAX_UV (every map is then read at the shifted uv with the
 // fragment's own uv differences, textureGrad), SELF_SHADOW_*; the views VIEW_HEIGHT,
 // VIEW_PARALLAX_OFFSET, VIEW_PARALLAX_STEPS, VIEW_SELF_SHADOW.
+// Environment (shaders/environment.glsl, included before this file): HAS_ENVIRONMENT,
+// ENVIRONMENT_MIRROR, ENVIRONMENT_REFRACTION, FRESNEL_SCHLICK.
 // NO_TRIANGLE_ID: no triangle-id output, as an OpenGL user's shader has none (the lean
 // frame, glrender/gl_renderer.h; llvmpipe pays for gl_PrimitiveID even when no draw buffer
 // takes the output).
@@ -213,6 +215,15 @@ void main() {
   }
   vec3 ambientTerm = ka * albedo * ambient;
   colour = vec4(ambientTerm + sum, 1.0);
+#ifdef HAS_ENVIRONMENT
+  // The environment, mixed into the Phong colour (environment.glsl).
+#ifdef LIGHTING_TANGENT
+  vec3 eyeVecEnvironment = eyeDirTangent;
+#else
+  vec3 eyeVecEnvironment = eyePosWorld - posWorld;
+#endif
+  colour = vec4(environmentMix(nl, eyeVecEnvironment, t, b, n, colour.rgb), 1.0);
+#endif
 #elif defined(VIEW_ALBEDO)
   colour = vec4(albedo * kd, 1.0);
 #elif defined(VIEW_NORMAL)

@@ -18,6 +18,7 @@
 #include "softrender/interpolate.h"
 #include "softrender/setup.h"
 #include "softrender/shade.h"
+#include "softrender/sky.h"
 #include "softrender/vertex.h"
 
 #include <algorithm>
@@ -102,6 +103,10 @@ class CpuRenderer final : public Renderer {
     } else {
       fast_->draw(items, scene.output.background, fb, stats);
     }
+
+    // The sky box where no triangle was drawn (the environment's background), in the shaded
+    // view, before the debug lines, as GL draws it after the scene's triangles.
+    if (settings.view == View::Shaded) drawSky(makeSkyUniforms(scene, width, height), fb, options_.threads);
 
     if (settings.tbnLines.enabled) {
       for (const ItemState& s : items) {

@@ -83,6 +83,7 @@ void drawClippedTriangle(const LoopItemT<T>& s, const ClipVertexT<T>& v0, const 
                                        static_cast<T>(px), static_cast<T>(py), fragment);
         }
       }
+      setEnvironmentDifferences<Features>(varyings, px, py, s.shade, fragment);  // only when the material reads it
       target.write(px, py, shadeFragment<Features>(fragment, s.shade, nullptr), depth, triangleId);
       ++stats.pixelsShaded;
     }

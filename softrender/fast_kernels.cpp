@@ -311,6 +311,14 @@ void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps,
       if (item.shade.heightMap) setFineUvDifferencesLanes<LaneF>(uv, quadColumns, quadRow, px, py, fragment);
     }
   }
+  if constexpr (Features::kView == View::Shaded) {
+    // A material that reads the environment: its directions' quad differences (shade-inl.h).
+    if (item.shade.environment.cube) {
+      const LaneF quadColumns = floorOf(px * LaneF(0.5f)) * LaneF(2.0f);
+      const LaneF quadRow(static_cast<float>(s.py - (s.py & 1)));
+      setEnvironmentDifferencesLanes<Features, LaneF>(planes, px, py, quadColumns, quadRow, item.shade, maps, fragment);
+    }
+  }
   const Vec4L<LaneF> colour =
       shadeFragmentLanes<Features, LaneF>(fragment, item.shade, maps, static_cast<std::nullptr_t*>(nullptr));
 

@@ -63,6 +63,7 @@ struct FragmentL {
   Vec2L<L> uv;
   Vec2L<L> uvDx, uvDy;
   Vec2L<L> uvDxFine, uvDyFine;
+  Vec3L<L> reflectDx, reflectDy, refractDx, refractDy;  // interpolate.h's FragmentT says
   std::array<Vec3L<L>, kMaxLights> lightDirTangent;
   Vec3L<L> eyeDirTangent;
   L depth;
@@ -196,6 +197,7 @@ TWR_LANE_INLINE FragmentL<L> interpolateFragmentLanes(const VaryingPlanesL<L>& p
   f.uvDy = Vec2L<L>(zero);
   f.uvDxFine = Vec2L<L>(zero);
   f.uvDyFine = Vec2L<L>(zero);
+  f.reflectDx = f.reflectDy = f.refractDx = f.refractDy = zero3;
   return f;
 }
 

@@ -160,6 +160,10 @@ struct FragmentT {
   // pixels included, as a GPU takes them): set for mipmapped filters only, else 0.
   Vec2T<T> uvDx{T(0)}, uvDy{T(0)};
   Vec2T<T> uvDxFine{T(0)}, uvDyFine{T(0)};  // GLSL's dFdx / dFdy (fine, per row and column)
+  // GLSL's dFdx / dFdy of the environment's reflected and refracted directions (world space),
+  // which texture(samplerCube, ...) takes its LOD from: set only for a material that reads the
+  // environment (setEnvironmentDifferencesLanes, shade-inl.h), else 0.
+  Vec3T<T> reflectDx{T(0)}, reflectDy{T(0)}, refractDx{T(0)}, refractDy{T(0)};
   std::array<Vec3T<T>, kMaxLights> lightDirTangent{};
   Vec3T<T> eyeDirTangent{T(0)};
   T depth = T(0);  // window depth

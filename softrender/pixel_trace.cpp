@@ -86,6 +86,7 @@ void traceTriangle(const DrawItem& item, std::size_t t, const VertexUniforms& ve
                                          static_cast<float>(x), static_cast<float>(yGl), visit.fragment);
       }
     }
+    setEnvironmentDifferencesDynamic(key, varyings, x, yGl, shadeUniforms, visit.fragment);
     visit.depthBefore = depth;
     if (settings.cull == CullMode::Back && !setup.frontFacing) {
       visit.outcome = TraceOutcome::CulledBack;
@@ -270,6 +271,12 @@ std::string formatPixelTrace(const PixelTrace& tr) {
           << "\n           N.L " << fmt(t.nDotL) << " R.V " << fmt(t.rDotV) << " If " << fmt(t.attenuation)
           << " diffuse " << fmt(t.diffuse) << " specular " << fmt(t.specular) << "\n";
       }
+      if (s.environmentOn) {
+        o << "  environment: Phong colour " << fmt(s.phongColour) << ", reflect (world) " << fmt(s.reflectWorld)
+          << " read " << fmt(s.environmentReflected) << "\n           refract (world) " << fmt(s.refractWorld)
+          << (s.totalInternalReflection ? " (total internal reflection)" : "") << ", transmitted "
+          << fmt(s.environmentTransmitted) << ", reflected share " << fmt(s.environmentShare) << "\n";
+      }
     }
     o << "  colour " << fmt(s.colour) << "\n";
   }
@@ -357,6 +364,15 @@ nlohmann::json pixelTraceToJson(const PixelTrace& tr) {
                           {"diffuse", toJson(t.diffuse)}, {"specular", toJson(t.specular)}});
       }
       js["lights"] = lights;
+      if (s.environmentOn) {
+        js["environment"] = {{"phong_colour", toJson(s.phongColour)},
+                             {"reflect_world", toJson(s.reflectWorld)},
+                             {"reflected", toJson(s.environmentReflected)},
+                             {"refract_world", toJson(s.refractWorld)},
+                             {"total_internal_reflection", s.totalInternalReflection},
+                             {"transmitted", toJson(s.environmentTransmitted)},
+                             {"reflected_share", s.environmentShare}};
+      }
       js["colour"] = toJson(s.colour);
       jv["shading"] = js;
     }

@@ -3,6 +3,7 @@
 #include "scene/errors.h"
 #include "scene/mip_level_view.h"
 #include "softrender/framebuffer.h"
+#include "softrender/sky.h"
 
 #include <algorithm>
 #include <cstring>
@@ -20,7 +21,15 @@ ViewPixel shadeTracedPixel(const Scene& scene, const RenderSettings& settings, c
   // the last shaded visit is the fragment the pixel keeps.
   const auto winner = std::find_if(trace.visits.rbegin(), trace.visits.rend(),
                                    [](const TriangleVisit& visit) { return visit.outcome == TraceOutcome::Shaded; });
-  if (winner == trace.visits.rend()) return pixel;
+  if (winner == trace.visits.rend()) {
+    // No triangle: the sky box where the scene has one (sky.h), else the clear colour.
+    const SkyUniformsT<float> sky = makeSkyUniforms(scene, trace.width, trace.height);
+    if (sky.cube && view == View::Shaded) {
+      const vec3 c = skyColour(sky, trace.x, trace.yGl);
+      pixel.rgba = {unitToByte(c.r), unitToByte(c.g), unitToByte(c.b), 255};
+    }
+    return pixel;
+  }
 
   RenderSettings viewSettings = settings;
   viewSettings.view = view;

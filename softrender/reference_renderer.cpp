@@ -18,6 +18,7 @@
 #include "softrender/raster.h"
 #include "softrender/setup.h"
 #include "softrender/shade.h"
+#include "softrender/sky-inl.h"
 #include "softrender/vertex.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -131,6 +132,9 @@ class ReferenceRenderer final : public Renderer {
     const glm::dvec3 background(vec3(scene.output.background));
     const double backgroundAlpha = scene.output.background.a;
     const std::uint32_t clearWord = backgroundWord(scene.output.background);
+    // The sky box in the shaded view (sky.h), sampled at each pass's sample position.
+    SkyUniformsT<double> sky = makeSkyUniforms<double>(scene, width, height);
+    if (requested.view != View::Shaded) sky.cube = nullptr;
 
     std::vector<glm::dvec3> colourSum(pixelCount, glm::dvec3(0.0));
     std::vector<int> coveredSamples(pixelCount, 0);
@@ -179,6 +183,16 @@ class ReferenceRenderer final : public Renderer {
           [&](const RowBand& band, RenderStats& bandStats) { drawBand(states, band, sampleTarget, bandStats); },
           stats);
 
+      // The sky where this pass's sample saw no triangle, at the sample's own position.
+      if (sky.cube) {
+        for (int y = 0; y < height; ++y) {
+          for (int x = 0; x < width; ++x) {
+            const std::size_t i = target.index(x, y);
+            if (target.triangleId[i] != kNoTriangle) continue;
+            target.colour[i] = skyColourLanes<double>(sky, x + offsets[pass].x, y + offsets[pass].y);
+          }
+        }
+      }
       for (std::size_t i = 0; i < pixelCount; ++i) {
         colourSum[i] += target.colour[i];
         if (target.triangleId[i] == kNoTriangle) continue;
@@ -203,13 +217,15 @@ class ReferenceRenderer final : public Renderer {
         const std::size_t to = static_cast<std::size_t>(height - 1 - y) * static_cast<std::size_t>(width) +
                                static_cast<std::size_t>(x);  // top row first
         const int covered = coveredSamples[from];
-        if (covered == 0) {
+        if (covered == 0 && !sky.cube) {
           // Only background: the clear colour, stored as a clear stores it (clearByte).
           std::memcpy(&out.rgba[to * 4], &clearWord, sizeof(clearWord));
         } else {
-          // The box filter of every sample's RGBA: surfaces are opaque, the background has its alpha.
+          // The box filter of every sample's RGBA: surfaces and the sky are opaque, the
+          // background has its alpha.
           const glm::dvec3 mean = colourSum[from] / sampleCount;
-          const double alpha = (covered + (sampleCount - covered) * backgroundAlpha) / sampleCount;
+          const double uncoveredAlpha = sky.cube ? 1.0 : backgroundAlpha;
+          const double alpha = (covered + (sampleCount - covered) * uncoveredAlpha) / sampleCount;
           out.rgba[to * 4 + 0] = unitToByte(static_cast<float>(mean.r));
           out.rgba[to * 4 + 1] = unitToByte(static_cast<float>(mean.g));
           out.rgba[to * 4 + 2] = unitToByte(static_cast<float>(mean.b));

@@ -21,6 +21,7 @@
 #ifdef TWR_SHADE_INL_EMIT
 #undef TWR_SHADE_INL_EMIT
 
+#include "softrender/environment-inl.h"
 #include "softrender/interpolate-inl.h"
 #include "softrender/lane_math-inl.h"
 #include "softrender/lanes.h"
@@ -89,6 +90,108 @@ TWR_LANE_INLINE L selfShadowLanes(const Maps& maps, const ShadeUniformsT<ScalarO
   return L(S(1));
 }
 
+// What lighting reads of a surface at one fragment: the fragment's normalised frame, the
+// surface detail (the parallax methods move the uv every map is read at; bump_blinn makes the
+// normal; the rest read the height), the normal map's texel and the normal lighting uses (nl,
+// in the lighting space). The shading and the environment's quad partners
+// (setEnvironmentDifferencesLanes) both take it from here. wantHeight: the height at the
+// shifted uv too (parallaxLanes).
+template <typename L>
+struct SurfaceFrameL {
+  Vec3L<L> n, t, b;
+  SurfaceDetailL<L> detail;
+  Vec4L<L> normalTexel;
+  Vec3L<L> mappedTangent;
+  Vec3L<L> nl;
+};
+template <typename Features, typename L, typename Maps>
+TWR_LANE_INLINE SurfaceFrameL<L> surfaceFrameLanes(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u,
+                                                   const Maps& maps, bool wantHeight) {
+  using S = ScalarOf<L>;
+  constexpr bool kTangentSpace = Features::kSpace == LightingSpace::Tangent;
+  const L zero(S(0)), one(S(1)), two(S(2));
+  SurfaceFrameL<L> s;
+  s.n = safeNormalize3<L>(f.nWorld);
+  s.t = safeNormalize3<L>(f.tWorld);
+  s.b = safeNormalize3<L>(f.bWorld);
+  const Vec3L<L>& n = s.n;
+  const Vec3L<L>& t = s.t;
+  const Vec3L<L>& b = s.b;
+
+  s.detail = SurfaceDetailL<L>{f.uv, one, zero, Vec3L<L>(zero, zero, one)};
+  if constexpr (Features::kHasHeightMap) {
+    if (shiftsUv(u.surfaceDetail)) {
+      const Vec3L<L> eyeVec = kTangentSpace ? f.eyeDirTangent : Vec3L<L>(u.eyePosWorld) - f.posWorld;
+      const Vec3L<L> vT = tangentFromLightingLanes<L>(eyeVec, t, b, n, kTangentSpace);
+      s.detail = parallaxLanes<L>(*maps.height, u, f, vT, wantHeight);
+    } else {
+      if (u.surfaceDetail == SurfaceDetail::BumpBlinn) s.detail.bumpTangent = bumpBlinnLanes<L>(*maps.height, u, f);
+      s.detail.height = heightAtLanes<L>(*maps.height, u, f.uv, f);
+    }
+  }
+  const bool uvShifted = Features::kHasHeightMap && shiftsUv(u.surfaceDetail);
+  const bool bumpNormal = Features::kHasHeightMap && u.surfaceDetail == SurfaceDetail::BumpBlinn;
+
+  s.mappedTangent = Vec3L<L>(zero, zero, one);
+  s.normalTexel = Vec4L<L>(zero);
+  if constexpr (Features::kHasNormalMap) {
+    s.normalTexel = sampleMapLanes<L>(*maps.normal, u, kNormalSlot, f, s.detail.uv, uvShifted);
+    Vec3L<L> encoded(s.normalTexel.x, s.normalTexel.y, s.normalTexel.z);
+    if (u.normalGreenDown) encoded.y = one - encoded.y;
+    Vec3L<L> tangentNormal = two * encoded - one;
+    if (u.normalXy) {
+      tangentNormal.z = sqrtOf(maxOf(one - (tangentNormal.x * tangentNormal.x + tangentNormal.y * tangentNormal.y), zero));
+    }
+    if (u.normalStrengthOn) {
+      const L strength(u.normalStrength);
+      tangentNormal.x = tangentNormal.x * strength;
+      tangentNormal.y = tangentNormal.y * strength;
+    }
+    s.mappedTangent = safeNormalize3<L>(tangentNormal);
+  }
+  if (bumpNormal) s.mappedTangent = s.detail.bumpTangent;
+
+  s.nl = n;
+  if constexpr (kTangentSpace) {
+    s.nl = s.mappedTangent;
+  } else if (Features::kHasNormalMap || bumpNormal) {
+    s.nl = safeNormalize3<L>(t * s.mappedTangent.x + b * s.mappedTangent.y + n * s.mappedTangent.z);
+  }
+  return s;
+}
+
+// The environment's direction differences at pixel (px, py) of the quad whose first column
+// and row are (qx, qy): GLSL's fine dFdx / dFdy of the reflected and refracted directions,
+// which texture(samplerCube, ...) takes its LOD from. A GPU shades the quad's four pixels
+// together (helper pixels included) and differences the values; here the pixel's row partner
+// and column partner are interpolated from the triangle's planes and their directions found
+// as the shading finds them (surfaceFrameLanes, environmentDirectionsLanes): four evaluations
+// of the surface per pixel, paid only by a material that reads the environment.
+template <typename Features, typename L, typename Maps>
+TWR_LANE_OUTLINE void setEnvironmentDifferencesLanes(const VaryingPlanesL<L>& planes, const L& px, const L& py,
+                                                     const L& qx, const L& qy, const ShadeUniformsT<ScalarOf<L>>& u,
+                                                     const Maps& maps, FragmentL<L>& f) {
+  using S = ScalarOf<L>;
+  constexpr bool kTangentSpace = Features::kSpace == LightingSpace::Tangent;
+  const UvPlanesL<L> uvPlanes{planes.overW[kVaryingUv], planes.overW[kVaryingUv + 1], planes.oneOverW};
+  const auto directionsAt = [&](const L& x, const L& y) {
+    FragmentL<L> g = interpolateFragmentLanes<L>(planes, x, y, f.depth);
+    g.uvDx = f.uvDx;  // the same quad
+    g.uvDy = f.uvDy;
+    if (Features::kHasHeightMap) setFineUvDifferencesLanes<L>(uvPlanes, qx, qy, x, y, g);
+    const SurfaceFrameL<L> frame = (surfaceFrameLanes<Features, L>)(g, u, maps, false);
+    const Vec3L<L> eyeVec = kTangentSpace ? g.eyeDirTangent : Vec3L<L>(u.eyePosWorld) - g.posWorld;
+    return (environmentDirectionsLanes<L>)(u.environment, frame.nl, eyeVec, frame.t, frame.b, frame.n, kTangentSpace);
+  };
+  const L one(S(1));
+  const EnvironmentDirectionsL<L> left = directionsAt(qx, py), right = directionsAt(qx + one, py);
+  const EnvironmentDirectionsL<L> lower = directionsAt(px, qy), upper = directionsAt(px, qy + one);
+  f.reflectDx = right.reflectWorld - left.reflectWorld;
+  f.reflectDy = upper.reflectWorld - lower.reflectWorld;
+  f.refractDx = right.refractWorld - left.refractWorld;
+  f.refractDy = upper.refractWorld - lower.refractWorld;
+}
+
 // Shades one fragment per lane with the permutation `Features` (shade.h's ShaderFeatures).
 // `maps` holds the material's textures as the lane type reads them (members diffuse, normal,
 // specular: pointers to views, see texture_sample-inl.h); `terms`, when not null, receives
@@ -100,27 +203,17 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
   constexpr bool kTrace = !std::is_same_v<Terms, std::nullptr_t>;
   constexpr bool kTangentSpace = Features::kSpace == LightingSpace::Tangent;
   const L zero(S(0)), one(S(1)), two(S(2));
-  const Vec3L<L> n = safeNormalize3<L>(f.nWorld);
-  const Vec3L<L> t = safeNormalize3<L>(f.tWorld);
-  const Vec3L<L> b = safeNormalize3<L>(f.bWorld);
-
-  // Surface detail from the height map (surface_detail-inl.h): the parallax methods move the
-  // uv every map is read at; bump_blinn makes the normal; the rest read the height at uv.
-  SurfaceDetailL<L> detail{f.uv, one, zero, Vec3L<L>(zero, zero, one)};
-  if constexpr (Features::kHasHeightMap) {
-    if (shiftsUv(u.surfaceDetail)) {
-      const Vec3L<L> eyeVec = kTangentSpace ? f.eyeDirTangent : Vec3L<L>(u.eyePosWorld) - f.posWorld;
-      const Vec3L<L> vT = tangentFromLightingLanes<L>(eyeVec, t, b, n, kTangentSpace);
-      const bool wantHeight = kTrace || Features::kView == View::Height || u.selfShadow == SelfShadow::HeightMarch;
-      detail = parallaxLanes<L>(*maps.height, u, f, vT, wantHeight);
-    } else {
-      if (u.surfaceDetail == SurfaceDetail::BumpBlinn) detail.bumpTangent = bumpBlinnLanes<L>(*maps.height, u, f);
-      detail.height = heightAtLanes<L>(*maps.height, u, f.uv, f);
-    }
-  }
+  const bool wantHeight = kTrace || Features::kView == View::Height || u.selfShadow == SelfShadow::HeightMarch;
+  const SurfaceFrameL<L> frame = (surfaceFrameLanes<Features, L>)(f, u, maps, wantHeight);
+  const Vec3L<L>& n = frame.n;
+  const Vec3L<L>& t = frame.t;
+  const Vec3L<L>& b = frame.b;
+  const SurfaceDetailL<L>& detail = frame.detail;
+  const Vec3L<L>& nl = frame.nl;
+  const Vec3L<L>& mappedTangent = frame.mappedTangent;
+  const Vec4L<L>& normalTexel = frame.normalTexel;
   // A shifted uv is read with GLSL's dFdx / dFdy (textureGrad), the fine differences.
   const bool uvShifted = Features::kHasHeightMap && shiftsUv(u.surfaceDetail);
-  const bool bumpNormal = Features::kHasHeightMap && u.surfaceDetail == SurfaceDetail::BumpBlinn;
   const bool emboss = Features::kHasHeightMap && u.surfaceDetail == SurfaceDetail::BumpEmboss;
   const bool selfShadowOn = Features::kHasHeightMap && u.selfShadow != SelfShadow::None;
 
@@ -134,32 +227,6 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
     const Vec4L<L> texel = sampleMapLanes<L>(*maps.specular, u, kSpecularSlot, f, detail.uv, uvShifted);
     specScale = Vec3L<L>(texel.x, texel.y, texel.z);
   }
-  Vec3L<L> mappedTangent(zero, zero, one);
-  Vec4L<L> normalTexel(zero);
-  if constexpr (Features::kHasNormalMap) {
-    normalTexel = sampleMapLanes<L>(*maps.normal, u, kNormalSlot, f, detail.uv, uvShifted);
-    Vec3L<L> encoded(normalTexel.x, normalTexel.y, normalTexel.z);
-    if (u.normalGreenDown) encoded.y = one - encoded.y;
-    Vec3L<L> tangentNormal = two * encoded - one;
-    if (u.normalXy) {
-      tangentNormal.z = sqrtOf(maxOf(one - (tangentNormal.x * tangentNormal.x + tangentNormal.y * tangentNormal.y), zero));
-    }
-    if (u.normalStrengthOn) {
-      const L strength(u.normalStrength);
-      tangentNormal.x = tangentNormal.x * strength;
-      tangentNormal.y = tangentNormal.y * strength;
-    }
-    mappedTangent = safeNormalize3<L>(tangentNormal);
-  }
-  if (bumpNormal) mappedTangent = detail.bumpTangent;
-
-  Vec3L<L> nl = n;
-  if constexpr (kTangentSpace) {
-    nl = mappedTangent;
-  } else if (Features::kHasNormalMap || bumpNormal) {
-    nl = safeNormalize3<L>(t * mappedTangent.x + b * mappedTangent.y + n * mappedTangent.z);
-  }
-
 
   if constexpr (kTrace) {
     if (terms) {
@@ -250,6 +317,28 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
       if (terms) {
         terms->ambient = ambient;
         terms->lightCount = u.lightCount;
+      }
+    }
+    // The environment, mixed into the Phong colour (environment-inl.h): one branch per draw
+    // item, never taken by a material without an environment.
+    if (u.environment.cube) {
+      const Vec3L<L> eyeVec = kTangentSpace ? f.eyeDirTangent : Vec3L<L>(u.eyePosWorld) - f.posWorld;
+      const Vec3L<L> phong(colour.x, colour.y, colour.z);
+      const EnvironmentDirectionsL<L> directions =
+          (environmentDirectionsLanes<L>)(u.environment, nl, eyeVec, t, b, n, kTangentSpace);
+      const EnvironmentTermsL<L> env = (environmentLanes<L>)(u.environment, directions, f, phong);
+      colour = Vec4L<L>(env.colour, one);
+      if constexpr (kTrace) {
+        if (terms) {
+          terms->environmentOn = true;
+          terms->reflectWorld = env.reflectWorld;
+          terms->refractWorld = env.refractWorld;
+          terms->environmentReflected = env.reflected;
+          terms->environmentTransmitted = env.transmitted;
+          terms->environmentShare = env.share;
+          terms->totalInternalReflection = env.totalInternal;
+          terms->phongColour = phong;
+        }
       }
     }
   } else if constexpr (Features::kView == View::Albedo) {

@@ -68,6 +68,18 @@ ShadeUniformsT<T> makeShadeUniforms(const Material& material, const Scene& scene
     lu.attenuation = Vec3T<T>(light.attenuation);
   }
   u.eyePosWorld = Vec3T<T>(scene.camera.position);
+  // The environment: read only when the scene has one and the material mixes it in.
+  const bool environmentUsed = material.environmentSpecular == EnvironmentSpecular::Mirror || material.refractionIndex > 0.0f;
+  if (scene.environment && scene.environment->cube && environmentUsed) {
+    EnvironmentUniformsT<T>& e = u.environment;
+    e.cube = scene.environment->cube.get();
+    e.intensity = static_cast<T>(scene.environment->intensity);
+    e.mirror = material.environmentSpecular == EnvironmentSpecular::Mirror;
+    e.refraction = material.refractionIndex > 0.0f;
+    e.schlick = material.fresnel == Fresnel::Schlick;
+    e.reflectivity = static_cast<T>(material.reflectivity);
+    e.eta = static_cast<T>(e.refraction ? material.refractionIndex : 1.0f);
+  }
   return u;
 }
 
@@ -79,6 +91,11 @@ vec4 shadeFragmentDynamic(const ShaderKey& key, const Fragment& f, const ShadeUn
   vec4 colour(0.0f);
   withShaderFeatures(key, [&]<typename Features>() { colour = shadeFragment<Features>(f, u, terms); });
   return colour;
+}
+
+void setEnvironmentDifferencesDynamic(const ShaderKey& key, const VaryingPlanes& planes, int px, int py,
+                                      const ShadeUniforms& u, Fragment& f) {
+  withShaderFeatures(key, [&]<typename Features>() { setEnvironmentDifferences<Features>(planes, px, py, u, f); });
 }
 
 }  // namespace twr

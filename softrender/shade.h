@@ -13,6 +13,7 @@
 #pragma once
 
 #include "scene/scene.h"
+#include "softrender/environment_uniforms.h"
 #include "softrender/interpolate.h"
 #include "softrender/lanes.h"
 #include "softrender/phong_pow.h"
@@ -72,6 +73,10 @@ struct ShadeUniformsT {
   SelfShadow selfShadow = SelfShadow::None;
   int horizonDirections = 0;
   std::array<const Texture*, kMaxHorizonDirections / 4> horizonMaps{};
+  // The environment (environment-inl.h): a runtime branch per draw item, not a permutation
+  // (it adds a few reads per fragment, not a loop, and doubling every kernel doubles the
+  // fast path's build); environment.cube is null when the material does not use one.
+  EnvironmentUniformsT<T> environment;
   Vec3T<T> ambient{T(0)};  // Ia
   std::array<LightUniformT<T>, kMaxLights> lights{};
   int lightCount = 0;  // in [0, kMaxLights]
@@ -106,6 +111,14 @@ struct ShadeTermsT {
   T parallaxSteps = T(0);              // layers marched
   Vec3T<T> ambient{T(0)};              // ka albedo Ia
   std::array<LightTermsT<T>, kMaxLights> lights{};
+  // The environment (when the material uses one): the directions read in world space (0 when
+  // not read), what each gave, the reflected share and the Phong colour it was mixed into.
+  bool environmentOn = false;
+  Vec3T<T> reflectWorld{T(0)}, refractWorld{T(0)};
+  Vec3T<T> environmentReflected{T(0)}, environmentTransmitted{T(0)};
+  T environmentShare = T(0);
+  bool totalInternalReflection = false;
+  Vec3T<T> phongColour{T(0)};
   int lightCount = 0;
   Vec4T<T> colour{T(0)};               // the fragment's output
 };
@@ -151,6 +164,20 @@ template <typename Features, typename T>
 Vec4T<T> shadeFragment(const FragmentT<T>& f, const ShadeUniformsT<T>& u, std::type_identity_t<ShadeTermsT<T>>* terms) {
   return shadeFragmentLanes<Features, T>(f, u, TextureMaps{u.diffuseMap, u.normalMap, u.specularMap, u.heightMap, u.horizonMaps},
                                          terms);
+}
+
+// The environment's direction differences of the fragment at pixel (px, py) on the triangle
+// whose varyings `planes` holds (setEnvironmentDifferencesLanes, shade-inl.h): for a material
+// that reads the environment, in the shaded view; otherwise nothing to do.
+template <typename Features, typename T>
+void setEnvironmentDifferences(const VaryingPlanesT<T>& planes, int px, int py, const ShadeUniformsT<T>& u,
+                               FragmentT<T>& f) {
+  if constexpr (Features::kView == View::Shaded) {
+    if (!u.environment.cube) return;
+    setEnvironmentDifferencesLanes<Features, T>(
+        planes, static_cast<T>(px), static_cast<T>(py), static_cast<T>(px & ~1), static_cast<T>(py & ~1), u,
+        TextureMaps{u.diffuseMap, u.normalMap, u.specularMap, u.heightMap, u.horizonMaps}, f);
+  }
 }
 
 // Which permutation a draw item needs (runtime values of the template parameters).
@@ -265,5 +292,8 @@ void withShaderFeatures(const ShaderKey& keyIn, Body&& body) {
 // Shades with the permutation `key` names (one runtime dispatch; for single fragments such
 // as the pixel trace and tests).
 vec4 shadeFragmentDynamic(const ShaderKey& key, const Fragment& f, const ShadeUniforms& u, ShadeTerms* terms);
+// setEnvironmentDifferences with the permutation `key` names (the pixel trace).
+void setEnvironmentDifferencesDynamic(const ShaderKey& key, const VaryingPlanes& planes, int px, int py,
+                                      const ShadeUniforms& u, Fragment& f);
 
 }  // namespace twr

@@ -210,6 +210,34 @@ Json settingsJson(const RenderSettings& s) {
   return j;
 }
 
+// The environment as loaded (null without one), and each material's use of it.
+Json environmentJson(const Scene& scene) {
+  if (!scene.environment) return nullptr;
+  const Environment& e = *scene.environment;
+  Json j{{"source", e.equirectPath.empty() ? "cube" : "equirect"},
+         {"parameterization", std::string(toString(e.parameterization))},
+         {"intensity", clean(e.intensity)},
+         {"background", e.background},
+         {"face_size", e.cube ? e.cube->size() : 0},
+         {"levels", e.cube ? e.cube->levelCount() : 0}};
+  if (e.equirectPath.empty()) {
+    j["cube"] = Json(e.facePaths);
+  } else {
+    j["equirect"] = e.equirectPath;
+  }
+  Json uses = Json::object();
+  for (const Material& m : scene.materials) {
+    if (m.environmentSpecular == EnvironmentSpecular::None && m.refractionIndex <= 0.0f) continue;
+    Json use{{"reflectivity", clean(m.reflectivity)},
+             {"fresnel", std::string(toString(m.fresnel))},
+             {"environment_specular", std::string(toString(m.environmentSpecular))}};
+    if (m.refractionIndex > 0.0f) use["refraction_index"] = clean(m.refractionIndex);
+    uses[m.name] = use;
+  }
+  j["materials"] = uses;
+  return j;
+}
+
 Json sceneJson(const Scene& scene) {
   Json j;
   j["scene"] = scene.sourcePath;
@@ -248,6 +276,7 @@ Json sceneJson(const Scene& scene) {
   j["output"] = Json{{"width", scene.output.width},
                      {"height", scene.output.height},
                      {"background", toJson(scene.output.background)}};
+  j["environment"] = environmentJson(scene);
   return j;
 }
 
@@ -293,6 +322,20 @@ void printScene(std::ostream& out, const Scene& scene) {
   for (const Material& m : scene.materials) {
     out << "  " << m.name << ": ka " << text(m.ka) << ", kd " << text(m.kd) << ", ks " << text(m.ks)
         << ", shininess " << num(m.shininess) << "; maps: " << mapsText(m) << "\n";
+  }
+
+  if (scene.environment) {
+    const Environment& e = *scene.environment;
+    out << "\nenvironment: " << (e.equirectPath.empty() ? "cube faces from " + e.facePaths[0] + " ..." : "equirect " + e.equirectPath)
+        << ", " << (e.cube ? e.cube->size() : 0) << "x" << (e.cube ? e.cube->size() : 0) << " per face, "
+        << (e.cube ? e.cube->levelCount() : 0) << " levels, intensity " << num(e.intensity)
+        << (e.background ? ", drawn as the sky box" : ", no sky box") << "\n";
+    for (const Material& m : scene.materials) {
+      if (m.environmentSpecular == EnvironmentSpecular::None && m.refractionIndex <= 0.0f) continue;
+      out << "  " << m.name << ": " << toString(m.environmentSpecular) << ", reflectivity " << num(m.reflectivity)
+          << ", fresnel " << toString(m.fresnel)
+          << (m.refractionIndex > 0.0f ? ", refraction_index " + num(m.refractionIndex) : std::string()) << "\n";
+    }
   }
 
   out << "\nlights (" << scene.lights.size() << "), ambient " << text(scene.ambient) << ":\n";

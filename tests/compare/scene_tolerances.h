@@ -53,6 +53,12 @@ inline constexpr SceneTolerance kSceneTolerances[] = {
     {"height_relief.json"},
     {"height_parallax_occlusion.json"},
     {"height_grazing_mirrored.json"},
+    // Environment mapping (issue 17): a sky box from six faces, a mirror sphere and a
+    // Fresnel-reflective normal-mapped slab; glass and water (refraction, total internal
+    // reflection, Schlick) under an equirect made into a cube.
+    {"env_sky_box.json"},  // a cube corner and two edges filling the frame: seamless filtering
+    {"env_mirror_sphere.json"},
+    {"env_glass_sphere.json"},
 };
 
 }  // namespace twr::suite

@@ -11,6 +11,7 @@
 #include "compare/thresholds.h"
 #include "glrender/gl_renderer.h"
 #include "scene/scene_file.h"
+#include "scene/sky_view.h"
 #include "softrender/cpu_renderer.h"
 
 #include <gtest/gtest.h>
@@ -147,7 +148,9 @@ TEST_P(SceneSuite, CpuMatchesLlvmpipeWithinTolerance) {
   const RenderOutput cpu = makeCpuRenderer()->render(scene, scene.settings, width, height);
   const RenderOutput gl = makeGlRenderer()->render(scene, scene.settings, width, height);
   ASSERT_EQ(glSamplingMode(), "precise") << "the suite compares against llvmpipe's precise sampling";
-  const CompareResult result = compareDetailed(cpu, gl);
+  CompareOptions options;
+  options.compareBackground = drawsSky(scene, scene.settings);  // the sky box is compared too
+  const CompareResult result = compareDetailed(cpu, gl, options);
   const CompareMetrics& m = result.metrics;
 
   const suite::SceneTolerance& row = toleranceFor(c.scene);

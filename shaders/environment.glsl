@@ -1,0 +1,61 @@
+// The environment on a surface: the GLSL twin of softrender/environment-inl.h, function by
+// function, the same operations in the same order (docs/environment.md). Included between
+// surface_detail.glsl and phong.frag; empty unless the material mixes in an environment.
+// Permutation defines: HAS_ENVIRONMENT, ENVIRONMENT_MIRROR (environment_specular mirror),
+// ENVIRONMENT_REFRACTION (refraction_index given), FRESNEL_SCHLICK. Each read is texture():
+// its LOD from the direction's quad differences, which the C++ twin computes from the quad's
+// other pixels (setEnvironmentDifferencesLanes).
+#ifdef HAS_ENVIRONMENT
+uniform samplerCube environmentMap;
+uniform float environmentIntensity;  // scales every read
+uniform float reflectivity;          // [0, 1]
+uniform float refractionEta;         // n1 / n2
+
+// A lighting-space direction in world space (the fragment's frame in tangent space).
+vec3 worldFromLighting(vec3 d, vec3 t, vec3 b, vec3 n) {
+#ifdef LIGHTING_TANGENT
+  return (t * d.x + b * d.y) + n * d.z;
+#else
+  return d;
+#endif
+}
+
+// Schlick: F0 + (1 - F0) m^5 with m = 1 - max(cos, 0), m^5 as (m^2)^2 m.
+float schlick(float f0, float cosTheta) {
+  float m = 1.0 - max(cosTheta, 0.0);
+  float m2 = m * m;
+  return f0 + (1.0 - f0) * ((m2 * m2) * m);
+}
+
+// The environment mixed into `base` (the Phong colour): nl the lighting normal, vVec the
+// unnormalised eye direction, both in the lighting space; t, b, n the fragment's frame.
+vec3 environmentMix(vec3 nl, vec3 vVec, vec3 t, vec3 b, vec3 n, vec3 base) {
+  vec3 v = safeNormalize(vVec);
+  float nDotV = dot(nl, v);
+  vec3 r = (2.0 * nDotV) * nl - v;  // reflect(-v, nl)
+  vec3 reflectWorld = worldFromLighting(r, t, b, n);
+  vec3 reflected = texture(environmentMap, reflectWorld).rgb * environmentIntensity;
+  vec3 transmitted = base;
+  float f0 = reflectivity;
+#ifdef ENVIRONMENT_REFRACTION
+  // refract(-v, nl, eta), written out; k < 0 is total internal reflection.
+  float eta = refractionEta;
+  float k = 1.0 - (eta * eta) * (1.0 - nDotV * nDotV);
+  float root = sqrt(max(k, 0.0));
+  vec3 refracted = (0.0 - eta) * v - (root - eta * nDotV) * nl;
+  vec3 through = texture(environmentMap, worldFromLighting(refracted, t, b, n)).rgb * environmentIntensity;
+  transmitted = k < 0.0 ? reflected : through;
+  float ratio = (1.0 - eta) / (1.0 + eta);
+  f0 = ratio * ratio;
+#endif
+  float share = 0.0;
+#ifdef ENVIRONMENT_MIRROR
+#ifdef FRESNEL_SCHLICK
+  share = schlick(f0, nDotV);
+#else
+  share = reflectivity;
+#endif
+#endif
+  return transmitted + (reflected - transmitted) * share;
+}
+#endif

@@ -1,0 +1,139 @@
+// The environment on a surface over any lane type: the C++ twin of shaders/environment.glsl,
+// function by function, the same operations in the same order (docs/environment.md):
+//   v = normalize(eye direction), n the normal lighting uses (both in the lighting space)
+//   R = 2 (n.v) n - v                       reflect(-v, n)
+//   k = 1 - eta^2 (1 - (n.v)^2)             refract(-v, n, eta): total internal reflection
+//   T = -eta v - (sqrt(k) - eta (n.v)) n    when k < 0 (GLSL's refract, written out)
+//   F = F0 + (1 - F0) (1 - max(n.v, 0))^5   Schlick, F0 = reflectivity, or ((1 - eta) / (1 + eta))^2
+//                                           when the material refracts
+//   colour = mix(transmitted, reflected, F or reflectivity)
+// Each direction is read with texture(): the LOD from its differences across the pixel's 2x2
+// quad, as GLSL's fine dFdx / dFdy take them (cube_sample-inl.h, cubeLodLanes).
+// where transmitted is the Phong colour, or the refracted environment when the material
+// refracts (the reflected one under total internal reflection), and a direction found in
+// tangent space is brought to world space by the fragment's frame before the cube is read.
+// Shared source, included plainly and per Highway target (softrender/lanes.h).
+
+#if defined(TWR_LANES_HIGHWAY)
+#if defined(TWR_ENVIRONMENT_INL_TARGET) == defined(HWY_TARGET_TOGGLE)
+#ifdef TWR_ENVIRONMENT_INL_TARGET
+#undef TWR_ENVIRONMENT_INL_TARGET
+#else
+#define TWR_ENVIRONMENT_INL_TARGET
+#endif
+#define TWR_ENVIRONMENT_INL_EMIT
+#endif
+#elif !defined(TWR_ENVIRONMENT_INL_PLAIN)
+#define TWR_ENVIRONMENT_INL_PLAIN
+#define TWR_ENVIRONMENT_INL_EMIT
+#endif
+
+#ifdef TWR_ENVIRONMENT_INL_EMIT
+#undef TWR_ENVIRONMENT_INL_EMIT
+
+#include "scene/environment.h"
+#include "softrender/environment_uniforms.h"
+#include "softrender/cube_sample-inl.h"
+#include "softrender/interpolate-inl.h"
+#include "softrender/lane_math-inl.h"
+#include "softrender/lanes.h"
+
+TWR_LANES_BEGIN
+
+// What the environment gave one fragment (the pixel trace shows it).
+template <typename L>
+struct EnvironmentTermsL {
+  Vec3L<L> reflectWorld, refractWorld;  // the directions read (world space)
+  Vec3L<L> reflected, transmitted;      // what was read, times the intensity
+  L share;                              // the reflected share: Schlick's F or the reflectivity
+  MaskOf<L> totalInternal;              // refraction found no transmitted ray
+  Vec3L<L> colour;                      // the mix
+};
+
+// A lighting-space direction in world space: the fragment's frame (t, b, n) in tangent
+// space, itself in world space.
+template <typename L>
+TWR_LANE_INLINE Vec3L<L> worldFromLightingLanes(const Vec3L<L>& d, const Vec3L<L>& t, const Vec3L<L>& b,
+                                                const Vec3L<L>& n, bool tangentSpace) {
+  if (!tangentSpace) return d;
+  return (t * d.x + b * d.y) + n * d.z;
+}
+
+// Schlick: F0 + (1 - F0) m^5 with m = 1 - max(cos, 0), m^5 as (m^2)^2 m.
+template <typename L>
+TWR_LANE_INLINE L schlickLanes(const L& f0, const L& cosTheta) {
+  using S = ScalarOf<L>;
+  const L one(S(1));
+  const L m = one - maxOf(cosTheta, L(S(0)));
+  const L m2 = m * m;
+  return f0 + (one - f0) * ((m2 * m2) * m);
+}
+
+// The directions the environment is read in, from nl (the lighting normal) and vVec (the
+// unnormalised eye direction), both in the lighting space; t, b, n the fragment's frame. The
+// refracted direction is computed whatever k (GLSL's texture() differentiates the argument it
+// is given, used or not); k < 0 says total internal reflection.
+template <typename L>
+struct EnvironmentDirectionsL {
+  Vec3L<L> v, nl;
+  L nDotV, k;
+  Vec3L<L> reflectWorld, refractWorld;
+};
+template <typename L>
+TWR_LANE_INLINE EnvironmentDirectionsL<L> environmentDirectionsLanes(const EnvironmentUniformsT<ScalarOf<L>>& e,
+                                                                     const Vec3L<L>& nl, const Vec3L<L>& vVec,
+                                                                     const Vec3L<L>& t, const Vec3L<L>& b,
+                                                                     const Vec3L<L>& n, bool tangentSpace) {
+  using S = ScalarOf<L>;
+  const L zero(S(0)), one(S(1)), two(S(2));
+  EnvironmentDirectionsL<L> d;
+  d.nl = nl;
+  d.v = safeNormalize3<L>(vVec);
+  d.nDotV = dot3<L>(nl, d.v);
+  const Vec3L<L> r = (two * d.nDotV) * nl - d.v;  // reflect(-v, nl)
+  d.reflectWorld = (worldFromLightingLanes<L>)(r, t, b, n, tangentSpace);
+  d.k = one;
+  d.refractWorld = Vec3L<L>(zero);
+  if (e.refraction) {
+    // refract(-v, nl, eta), written out.
+    const L eta(e.eta);
+    d.k = one - (eta * eta) * (one - d.nDotV * d.nDotV);
+    const L root = sqrtOf(maxOf(d.k, zero));
+    const Vec3L<L> refracted = (zero - eta) * d.v - (root - eta * d.nDotV) * nl;
+    d.refractWorld = (worldFromLightingLanes<L>)(refracted, t, b, n, tangentSpace);
+  }
+  return d;
+}
+
+// The environment mixed into `base` (the Phong colour), each direction read with texture():
+// its LOD from the direction's quad differences (FragmentL::reflectDx ...).
+template <typename L>
+TWR_LANE_INLINE EnvironmentTermsL<L> environmentLanes(const EnvironmentUniformsT<ScalarOf<L>>& e,
+                                                      const EnvironmentDirectionsL<L>& d, const FragmentL<L>& f,
+                                                      const Vec3L<L>& base) {
+  using S = ScalarOf<L>;
+  const L zero(S(0)), one(S(1)), intensity(e.intensity);
+  EnvironmentTermsL<L> out;
+  out.reflectWorld = d.reflectWorld;
+  out.refractWorld = d.refractWorld;
+  out.reflected = (sampleCubeGradLanes<L>)(*e.cube, d.reflectWorld, f.reflectDx, f.reflectDy) * intensity;
+  out.transmitted = base;
+  out.totalInternal = zero > one;  // all false
+  L f0(e.reflectivity);
+  if (e.refraction) {
+    const L eta(e.eta);
+    out.totalInternal = d.k < zero;
+    const Vec3L<L> through = (sampleCubeGradLanes<L>)(*e.cube, d.refractWorld, f.refractDx, f.refractDy) * intensity;
+    out.transmitted = select3<L>(out.totalInternal, out.reflected, through);
+    const L ratio = (one - eta) / (one + eta);
+    f0 = ratio * ratio;
+  }
+  out.share = zero;
+  if (e.mirror) out.share = e.schlick ? (schlickLanes<L>)(f0, d.nDotV) : L(e.reflectivity);
+  out.colour = out.transmitted + (out.reflected - out.transmitted) * out.share;
+  return out;
+}
+
+TWR_LANES_END
+
+#endif  // TWR_ENVIRONMENT_INL_EMIT

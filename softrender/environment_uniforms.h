@@ -1,0 +1,22 @@
+// The environment's uniforms (environment-inl.h reads them; shade.h's ShadeUniformsT holds
+// one): the cube, what every read is scaled by, and how the material mixes it in. Plain types,
+// outside the per-target namespaces, so every lane type's shading reads the same struct.
+#pragma once
+
+#include "scene/environment.h"
+
+namespace twr {
+
+template <typename S>
+struct EnvironmentUniformsT {
+  // Null: the scene has no environment or the material does not use it; nothing is read.
+  const CubeMap* cube = nullptr;
+  S intensity = S(1);
+  bool mirror = false;      // environment_specular mirror: the reflection is read and mixed in
+  bool refraction = false;  // refraction_index given: the refracted environment replaces the Phong colour
+  bool schlick = false;     // fresnel schlick
+  S reflectivity = S(0);    // [0, 1]
+  S eta = S(1);             // refraction_index, n1 / n2
+};
+
+}  // namespace twr

@@ -1,0 +1,56 @@
+// The sky's direction and colour over any lane type (sky.h has the formulas; the C++ twin
+// of shaders/sky.frag). Shared source, included plainly and per Highway target.
+
+#if defined(TWR_LANES_HIGHWAY)
+#if defined(TWR_SKY_INL_TARGET) == defined(HWY_TARGET_TOGGLE)
+#ifdef TWR_SKY_INL_TARGET
+#undef TWR_SKY_INL_TARGET
+#else
+#define TWR_SKY_INL_TARGET
+#endif
+#define TWR_SKY_INL_EMIT
+#endif
+#elif !defined(TWR_SKY_INL_PLAIN)
+#define TWR_SKY_INL_PLAIN
+#define TWR_SKY_INL_EMIT
+#endif
+
+#ifdef TWR_SKY_INL_EMIT
+#undef TWR_SKY_INL_EMIT
+
+#include "softrender/cube_sample-inl.h"
+#include "softrender/lane_math-inl.h"
+#include "softrender/lanes.h"
+#include "softrender/sky.h"
+
+TWR_LANES_BEGIN
+
+// The view direction through pixel centre (px + 0.5, py + 0.5), world space, unnormalised.
+template <typename L>
+TWR_LANE_INLINE Vec3L<L> skyDirectionLanes(const SkyUniformsT<ScalarOf<L>>& sky, const L& px, const L& py) {
+  using S = ScalarOf<L>;
+  const L half(S(0.5)), one(S(1));
+  const L ndcX = (px + half) * L(sky.ndcPerPixel.x) - one;
+  const L ndcY = (py + half) * L(sky.ndcPerPixel.y) - one;
+  return (Vec3L<L>(sky.forward) + Vec3L<L>(sky.right) * ndcX) + Vec3L<L>(sky.up) * ndcY;
+}
+
+// The sky's colour there: the environment read with texture() (the LOD from the direction's
+// fine differences across the pixel's 2x2 quad, cubeLodLanes) times the intensity, clamped
+// to [0, 1]. The quad's other pixels are evaluated where they would be, as a GPU's helper
+// pixels are, past the frame's edge included.
+template <typename L>
+TWR_LANE_INLINE Vec3L<L> skyColourLanes(const SkyUniformsT<ScalarOf<L>>& sky, const L& px, const L& py) {
+  using S = ScalarOf<L>;
+  const L zero(S(0)), one(S(1)), two(S(2)), half(S(0.5));
+  const L qx = floorOf(px * half) * two, qy = floorOf(py * half) * two;
+  const Vec3L<L> dir = (skyDirectionLanes<L>)(sky, px, py);
+  const Vec3L<L> dx = (skyDirectionLanes<L>)(sky, qx + one, py) - (skyDirectionLanes<L>)(sky, qx, py);
+  const Vec3L<L> dy = (skyDirectionLanes<L>)(sky, px, qy + one) - (skyDirectionLanes<L>)(sky, px, qy);
+  const Vec3L<L> c = (sampleCubeGradLanes<L>)(*sky.cube, dir, dx, dy) * L(sky.intensity);
+  return Vec3L<L>(minOf(maxOf(c.x, zero), one), minOf(maxOf(c.y, zero), one), minOf(maxOf(c.z, zero), one));
+}
+
+TWR_LANES_END
+
+#endif  // TWR_SKY_INL_EMIT
