@@ -468,7 +468,11 @@ void GuiApp::frame(bool& finalFrame, bool present) {
                            {"horizon_directions", material.horizonDirections},
                            {"horizon_map", horizon},
                            {"horizon_stale", horizonMapStale(doc_, m)},
-                           {"error", heightFieldErrors_.count(m) != 0 ? heightFieldErrors_.at(m) : std::string()}});
+                           {"error", heightFieldErrors_.count(m) != 0 ? heightFieldErrors_.at(m) : std::string()},
+                           {"reflectivity", material.reflectivity},
+                           {"refraction_index", material.refractionIndex},
+                           {"fresnel", std::string(toString(material.fresnel))},
+                           {"environment_specular", std::string(toString(material.environmentSpecular))}});
     }
     state["materials"] = std::move(materials);
     state["selected_material"] = selectedMaterial_;
@@ -476,6 +480,10 @@ void GuiApp::frame(bool& finalFrame, bool present) {
     state["horizon_status"] = horizonStatus();
     state["horizon_last_build"] = horizonLastBuild_;
     state["anisotropy"] = doc_.scene.settings.anisotropy;
+    state["environment"] = doc_.scene.environment
+                               ? nlohmann::json{{"intensity", doc_.scene.environment->intensity},
+                                                {"background", doc_.scene.environment->background}}
+                               : nlohmann::json(nullptr);
     state["view"] = std::string(toString(doc_.scene.settings.view));
   }
   probe_.endFrame();

@@ -146,6 +146,7 @@ class GuiApp {
   void drawMaterialsSection();
   void drawMapControls(std::size_t material, MapSlot slot);
   void drawHeightFieldControls(std::size_t material);
+  bool drawEnvironmentControls(std::size_t material);
   // The parallax_steps view's heat ramp as a bar, labelled with the selected material's counts.
   void drawParallaxStepsLegend();
   void drawLightsSection();

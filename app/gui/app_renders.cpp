@@ -10,6 +10,7 @@
 #include "scene/camera.h"
 #include "scene/errors.h"
 #include "scene/projection_checks.h"
+#include "scene/sky_view.h"
 
 #include <algorithm>
 #include <cmath>
@@ -349,7 +350,10 @@ void GuiApp::updateDiff() {
     return;
   }
   try {
-    diff_.result = compareDetailed(*cpuFrame_.output, *gl);
+    // Under a sky box the pixels no triangle covers are compared too.
+    CompareOptions options;
+    options.compareBackground = drawsSky(doc_.scene, doc_.scene.settings);
+    diff_.result = compareDetailed(*cpuFrame_.output, *gl, options);
   } catch (const std::exception& e) {
     diff_.error = e.what();
   }

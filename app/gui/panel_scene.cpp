@@ -50,6 +50,13 @@ constexpr SelfShadow kSelfShadows[] = {SelfShadow::None, SelfShadow::HeightMarch
 // The height_scale slider's range, texture-space units (Ctrl+click types up to kMaxHeightScale):
 // real reliefs are a few hundredths of a uv unit deep.
 constexpr float kHeightScaleSliderMax = 0.2f;
+// Environment controls (docs/environment.md): the intensity slider's top (the scene file allows
+// more), the ratio a material starts refracting with (glass from air), the slider's bottom.
+constexpr float kEnvironmentIntensitySliderMax = 4.0f;
+constexpr float kDefaultRefractionIndex = 0.66f;
+constexpr float kMinRefractionIndexSlider = 0.2f;
+constexpr EnvironmentSpecular kEnvironmentSpeculars[] = {EnvironmentSpecular::None, EnvironmentSpecular::Mirror};
+constexpr Fresnel kFresnels[] = {Fresnel::None, Fresnel::Schlick};
 
 // What each method does, for its tooltip (docs/parallax.md derives them).
 const char* surfaceDetailHelp(SurfaceDetail method) {
@@ -189,6 +196,21 @@ void GuiApp::drawSceneTab() {
               "PNGs, 0 transparent ones; coverage (Checker bg, the diff) comes from the triangle ids, not alpha.");
   changed |= ImGui::ColorEdit3("Ambient Ia", &doc_.scene.ambient.x, kColourFlags);
   itemTooltip("Ambient light intensity, linear RGB (may exceed 1): adds ka * albedo * Ia to every lit pixel.");
+  if (doc_.scene.environment) {
+    Environment& env = *doc_.scene.environment;
+    ImGui::TextDisabled("environment: %s, %dx%d per face, %d levels",
+                        env.equirectPath.empty() ? "six cube faces" : "an equirect made into a cube",
+                        env.cube ? env.cube->size() : 0, env.cube ? env.cube->size() : 0,
+                        env.cube ? env.cube->levelCount() : 0);
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+    changed |= ImGui::SliderFloat("environment intensity", &env.intensity, 0.0f, kEnvironmentIntensitySliderMax, "%.2f",
+                                  ImGuiSliderFlags_AlwaysClamp);
+    itemTooltip("Scales every environment read: the sky box, reflections and refractions (intensity).");
+    probe_.item("environment_intensity");
+    changed |= ImGui::Checkbox("sky box", &env.background);
+    itemTooltip("Draw the environment where no triangle is, in the shaded view (background).");
+    probe_.item("environment_background");
+  }
 
   sectionTitle("Nodes");
   if (doc_.scene.nodes.empty()) hintText("No nodes.");
@@ -358,6 +380,7 @@ void GuiApp::drawMaterialsSection() {
       itemTooltip("Phong exponent n in (R.V)^n, no unit: larger is a smaller, sharper highlight.");
       for (const MapSlot slot : kMapSlots) drawMapControls(m, slot);
       drawHeightFieldControls(m);
+      changed |= drawEnvironmentControls(m);
       ImGui::TreePop();
     }
     ImGui::PopID();
@@ -501,6 +524,74 @@ void GuiApp::drawHeightFieldControls(std::size_t index) {
   }
   ImGui::Unindent();
   ImGui::PopID();
+}
+
+// The environment keys of a material (issue 17): how much of the environment it reflects, whether
+// it refracts and with which ratio, and how the reflected share is found. Greyed without an
+// environment in the scene. Returns whether one changed.
+bool GuiApp::drawEnvironmentControls(std::size_t index) {
+  Material& material = doc_.scene.materials[index];
+  const std::string key = concat("material", index, '_');
+  const float fieldWidth = ImGui::GetContentRegionAvail().x * 0.6f;
+  bool edited = false;
+  // A combo whose entries the test probe sees as <key><name>_<entry>.
+  const auto probedCombo = [&](const char* label, const char* name, auto& value, const auto& values) {
+    bool changed = false;
+    if (ImGui::BeginCombo(label, std::string(toString(value)).c_str())) {
+      for (const auto entry : values) {
+        const bool chosen = entry == value;
+        if (ImGui::Selectable(std::string(toString(entry)).c_str(), chosen) && !chosen) {
+          value = entry;
+          changed = true;
+        }
+        probe_.item(concat(key, name, '_', toString(entry)).c_str());
+        if (chosen) ImGui::SetItemDefaultFocus();
+      }
+      ImGui::EndCombo();
+    }
+    return changed;
+  };
+  ImGui::PushID("environment");
+  ImGui::TextDisabled("environment");
+  ImGui::Indent();
+  if (!doc_.scene.environment) hintText("No environment: reflections and refractions need \"environment\" in the scene file.");
+  ImGui::BeginDisabled(!doc_.scene.environment);
+  ImGui::SetNextItemWidth(fieldWidth);
+  edited |= probedCombo("env specular", "environment_specular", material.environmentSpecular,
+                        kEnvironmentSpeculars);
+  itemTooltip("none: no reflection of the environment; mirror: the reflected direction read as texture() reads it "
+              "(environment_specular).");
+  probe_.item(concat(key, "environment_specular").c_str());
+  ImGui::SetNextItemWidth(fieldWidth);
+  edited |= ImGui::SliderFloat("reflectivity", &material.reflectivity, 0.0f, 1.0f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+  itemTooltip("The reflected share with fresnel none, Schlick's F0 with schlick (reflectivity, [0, 1]).");
+  probe_.item(concat(key, "reflectivity").c_str());
+  ImGui::SetNextItemWidth(fieldWidth);
+  edited |= probedCombo("fresnel", "fresnel", material.fresnel, kFresnels);
+  itemTooltip("none: the share is the reflectivity; schlick: F0 + (1 - F0)(1 - N.V)^5, more reflection at grazing "
+              "angles (fresnel).");
+  probe_.item(concat(key, "fresnel").c_str());
+  bool refracts = material.refractionIndex > 0.0f;
+  if (ImGui::Checkbox("refracts", &refracts)) {
+    material.refractionIndex = refracts ? kDefaultRefractionIndex : 0.0f;
+    edited = true;
+  }
+  itemTooltip("The refracted environment replaces the Phong colour, as glass shows what lies behind it.");
+  probe_.item(concat(key, "refracts").c_str());
+  if (refracts) {
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(fieldWidth * 0.6f);
+    edited |= ImGui::SliderFloat("n1 / n2", &material.refractionIndex, kMinRefractionIndexSlider, kMaxRefractionIndex,
+                                 "%.3f", ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
+    itemTooltip("refraction_index: the ratio for Snell's law. 0.66 enters glass from air, 0.75 water; above 1 leaves a "
+                "denser medium, where total internal reflection takes over past the critical angle.");
+    probe_.item(concat(key, "refraction_index").c_str());
+  }
+  ImGui::EndDisabled();
+  ImGui::Unindent();
+  ImGui::PopID();
+  if (edited) selectedMaterial_ = index;
+  return edited;
 }
 
 // One map of a material: on/off, then the options a scene file gives it. Applying an edit is
