@@ -60,8 +60,12 @@ bool lineAt(const RenderOutput& output, std::size_t i) { return !output.lineMask
 }  // namespace
 
 double CompareMetrics::over1Pct() const {
-  const std::uint64_t colourPixels = bothCovered + backgroundCompared;
-  return colourPixels == 0 ? 0.0 : kPercent * static_cast<double>(over1) / static_cast<double>(colourPixels);
+  return bothCovered == 0 ? 0.0 : kPercent * static_cast<double>(over1) / static_cast<double>(bothCovered);
+}
+
+double CompareMetrics::backgroundOver1Pct() const {
+  return backgroundCompared == 0 ? 0.0
+                                 : kPercent * static_cast<double>(backgroundOver1) / static_cast<double>(backgroundCompared);
 }
 
 double CompareMetrics::coverageMismatchPer10k() const {
@@ -110,15 +114,25 @@ CompareResult compareDetailed(const RenderOutput& cpu, const RenderOutput& gl, c
       continue;
     }
 
-    ++(background ? m.backgroundCompared : m.bothCovered);
     int diff = 0;
+    for (int c = 0; c < kColourChannels; ++c) diff = std::max(diff, std::abs(int(cpuPixel[c]) - int(glPixel[c])));
+    pixels.diffLevels[i] = static_cast<std::uint8_t>(diff);
+    if (background) {
+      // The sky box: metrics of its own, the class same or shading (the same "surface").
+      ++m.backgroundCompared;
+      m.backgroundMaxAbsDiff = std::max(m.backgroundMaxAbsDiff, diff);
+      m.backgroundOver1 += diff > kOver1Levels;
+      const bool differs = diff > options.differMinLevels;
+      pixels.pixelClass[i] = differs ? PixelClass::Shading : PixelClass::Same;
+      m.classShading += differs;
+      continue;
+    }
+    ++m.bothCovered;
     for (int c = 0; c < kColourChannels; ++c) {
       const int channelDiff = std::abs(int(cpuPixel[c]) - int(glPixel[c]));
-      diff = std::max(diff, channelDiff);
       sumAbs += static_cast<std::uint64_t>(channelDiff);
       sumSquares += static_cast<std::uint64_t>(channelDiff * channelDiff);
     }
-    pixels.diffLevels[i] = static_cast<std::uint8_t>(diff);
     if (diff > m.maxAbsDiff) {  // strict: the first pixel in row-major order keeps the spot
       m.maxAbsDiff = diff;
       m.maxAbsDiffX = static_cast<int>(i % static_cast<std::size_t>(cpu.width));
@@ -150,8 +164,8 @@ CompareResult compareDetailed(const RenderOutput& cpu, const RenderOutput& gl, c
 
   m.coverageMismatch = m.coverageCpuOnly + m.coverageGlOnly;
   m.classCoverage = m.coverageMismatch;
-  if (m.bothCovered + m.backgroundCompared > 0) {
-    const double samples = static_cast<double>(m.bothCovered + m.backgroundCompared) * kColourChannels;
+  if (m.bothCovered > 0) {
+    const double samples = static_cast<double>(m.bothCovered) * kColourChannels;
     m.meanAbsDiff = static_cast<double>(sumAbs) / samples;
     m.rmse = std::sqrt(static_cast<double>(sumSquares) / samples);
   }

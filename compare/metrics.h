@@ -8,9 +8,9 @@
 //   reference). Alpha is not coverage: the background has the scene's alpha, 1 by default.
 // - Colour differences are over RGB only; alpha is never diffed.
 //   A pixel's difference is the largest of its three channel differences, in 0..255 levels.
-// - Colour and depth metrics are over pixels both backends covered ("bothCovered"), and with
-//   CompareOptions::compareBackground colour metrics also over pixels neither covered (the
-//   sky box, "backgroundCompared").
+// - Colour and depth metrics are over pixels both backends covered ("bothCovered"). With
+//   CompareOptions::compareBackground the pixels neither covered (the sky box) are compared
+//   too, into metrics of their own (backgroundCompared, backgroundMaxAbsDiff, backgroundOver1).
 // Buffers are top row first, so (x, y) has a top-left origin.
 #pragma once
 
@@ -40,8 +40,8 @@ struct CompareOptions {
   // Window depth units, exclusive; used only where triangle ids are unavailable.
   double depthTolerance = kDefaultDepthTolerance;
   // Pixels neither backend covered are compared too: the scene draws a sky box there
-  // (scene/sky_view.h, drawsSky). They join the colour metrics' population (backgroundCompared)
-  // and a differing one is classed shading.
+  // (scene/sky_view.h, drawsSky). They get colour metrics of their own (background*), a
+  // diffLevels entry, and the class same or shading.
   bool compareBackground = false;
 };
 
@@ -76,10 +76,11 @@ struct CompareMetrics {
   std::uint64_t coveredGl = 0;            // compared pixels GL covered
   std::uint64_t bothCovered = 0;          // compared pixels covered by both
   std::uint64_t backgroundCompared = 0;   // compared pixels neither covered, with compareBackground
+  int backgroundMaxAbsDiff = 0;           // levels 0..255, over backgroundCompared
+  std::uint64_t backgroundOver1 = 0;      // backgroundCompared pixels with difference > 1 level
   std::uint64_t coverageCpuOnly = 0;
   std::uint64_t coverageGlOnly = 0;
   std::uint64_t coverageMismatch = 0;     // coverageCpuOnly + coverageGlOnly
-  // The colour metrics below are over bothCovered + backgroundCompared pixels.
   int maxAbsDiff = 0;                     // levels 0..255, over bothCovered
   int maxAbsDiffX = -1;                   // first pixel (row-major scan) reaching maxAbsDiff;
   int maxAbsDiffY = -1;                   //   -1, -1 when maxAbsDiff == 0
@@ -99,8 +100,10 @@ struct CompareMetrics {
   CompareOptions options;                 // what the classification used
 
   bool hasMaxAbsDiffAt() const { return maxAbsDiffX >= 0; }
-  // over1 as a percentage of bothCovered + backgroundCompared (0 when that is 0).
+  // over1 as a percentage of bothCovered (0 when nothing is covered by both).
   double over1Pct() const;
+  // backgroundOver1 as a percentage of backgroundCompared (0 when none was compared).
+  double backgroundOver1Pct() const;
   // coverageMismatch per 10,000 pixels covered by either backend (0 when none is covered).
   double coverageMismatchPer10k() const;
   std::uint64_t coveredEither() const { return bothCovered + coverageMismatch; }

@@ -23,6 +23,9 @@ nlohmann::json metricsToJson(const CompareMetrics& m) {
   json["covered_gl"] = m.coveredGl;
   json["both_covered"] = m.bothCovered;
   json["background_compared"] = m.backgroundCompared;
+  json["background_max_abs_diff"] = m.backgroundMaxAbsDiff;
+  json["background_over_1"] = m.backgroundOver1;
+  json["background_over_1_pct"] = m.backgroundOver1Pct();
   json["coverage_cpu_only"] = m.coverageCpuOnly;
   json["coverage_gl_only"] = m.coverageGlOnly;
   json["coverage_mismatch"] = m.coverageMismatch;

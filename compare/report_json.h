@@ -14,7 +14,8 @@
 namespace twr {
 
 // width, height, compared_pixels, excluded_line_pixels, covered_cpu, covered_gl, both_covered,
-// background_compared (sky pixels, CompareOptions::compareBackground), coverage_cpu_only, coverage_gl_only, coverage_mismatch, coverage_mismatch_per_10k,
+// background_compared, background_max_abs_diff, background_over_1, background_over_1_pct (the sky
+// box's pixels, CompareOptions::compareBackground), coverage_cpu_only, coverage_gl_only, coverage_mismatch, coverage_mismatch_per_10k,
 // max_abs_diff, max_abs_diff_at ([x, y] top-left origin, null when max_abs_diff is 0),
 // mean_abs_diff, rmse, psnr, over_1, over_3, over_12, over_1_pct, depth_available,
 // depth_max_diff, nan_pixels, triangle_ids_available, class_coverage, class_depth,

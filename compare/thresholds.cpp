@@ -123,6 +123,26 @@ std::vector<ThresholdViolation> checkThresholds(const CompareMetrics& metrics, c
                                 formatNumber(*limit) + spec.unit + " (" + spec.key + ")";
     violations.push_back({spec.key, value, *limit, message});
   }
+  // A sky box's pixels (CompareOptions::compareBackground) are held to the same limits on their
+  // largest difference and on the share over 1 level, as a population of their own.
+  if (metrics.backgroundCompared > 0) {
+    if (thresholds.maxAbsDiff && !(metrics.backgroundMaxAbsDiff <= *thresholds.maxAbsDiff)) {
+      const double value = metrics.backgroundMaxAbsDiff;
+      violations.push_back({"max_abs_diff", value, *thresholds.maxAbsDiff,
+                            "background_max_abs_diff is " + formatNumber(value) + " levels over the sky box's " +
+                                formatNumber(double(metrics.backgroundCompared)) + " pixels, above the limit " +
+                                formatNumber(*thresholds.maxAbsDiff) + " levels (max_abs_diff)"});
+    }
+    if (thresholds.maxOver1Pct && !(metrics.backgroundOver1Pct() <= *thresholds.maxOver1Pct)) {
+      const double value = metrics.backgroundOver1Pct();
+      violations.push_back({"max_over_1_pct", value, *thresholds.maxOver1Pct,
+                            "background_over_1_pct is " + formatNumber(value) + "% (" +
+                                formatNumber(double(metrics.backgroundOver1)) + " of the sky box's " +
+                                formatNumber(double(metrics.backgroundCompared)) +
+                                " pixels differ by more than 1 level), above the limit " +
+                                formatNumber(*thresholds.maxOver1Pct) + "% (max_over_1_pct)"});
+    }
+  }
   return violations;
 }
 

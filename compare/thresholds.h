@@ -1,6 +1,7 @@
 // Pass/fail limits on CompareMetrics: the CLI exits 1 when any is violated, tests assert none is.
 // Every limit is inclusive: a maximum fails when the metric is > the limit, the minimum
-// (min_psnr) when the metric is < the limit. Unset limits are not checked.
+// (min_psnr) when the metric is < the limit. Unset limits are not checked. max_abs_diff and
+// max_over_1_pct also hold the sky box's pixels, as their own population, when they were compared.
 #pragma once
 
 #include "compare/metrics.h"

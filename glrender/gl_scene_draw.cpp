@@ -160,8 +160,13 @@ void setUniforms(GLuint program, const Scene& scene, const RenderSettings& setti
 // scene, into the colour attachment alone (a sky pixel keeps "no triangle"), not counted as
 // a shaded sample. The CPU twin is softrender/sky.cpp; the same uniforms (makeSkyUniforms).
 void drawSky(ProgramCache& programs, GlUploadCache& uploads, const Scene& scene, const SkyUniformsT<float>& sky) {
-  GLint drawBuffer1 = GL_NONE;
+  // Saved and restored: what the scene's draws set, for the lines and pixel renders after.
+  GLint drawBuffer1 = GL_NONE, depthFunc = GL_LESS;
+  GLboolean depthMask = GL_TRUE;
   glGetIntegerv(GL_DRAW_BUFFER1, &drawBuffer1);
+  glGetIntegerv(GL_DEPTH_FUNC, &depthFunc);
+  glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask);
+  const GLboolean cull = glIsEnabled(GL_CULL_FACE);
   const std::array<GLenum, 2> colourOnly = {GL_COLOR_ATTACHMENT0, GL_NONE};
   glDrawBuffers(2, colourOnly.data());
   glDepthFunc(GL_LEQUAL);
@@ -181,8 +186,9 @@ void drawSky(ProgramCache& programs, GlUploadCache& uploads, const Scene& scene,
   glBindVertexArray(empty.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
+  glDepthFunc(static_cast<GLenum>(depthFunc));
+  glDepthMask(depthMask);
+  if (cull) glEnable(GL_CULL_FACE);
   const std::array<GLenum, 2> restored = {GL_COLOR_ATTACHMENT0, static_cast<GLenum>(drawBuffer1)};
   glDrawBuffers(drawBuffer1 == GL_NONE ? 1 : 2, restored.data());
 }

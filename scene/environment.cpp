@@ -124,8 +124,9 @@ FaceImage loadEnvironmentImage(const std::string& path) {
     for (std::size_t i = 0, n = static_cast<std::size_t>(hdr.width) * static_cast<std::size_t>(hdr.height); i < n; ++i) {
       for (std::size_t c = 0; c < 3; ++c) {
         const float value = hdr.rgba[i * 4 + c];
-        // A NaN, an Inf or a negative radiance would reach pixels: read as 0.
-        face.rgb[i * 3 + c] = std::isfinite(value) && value > 0.0f ? value : 0.0f;
+        // A NaN, an Inf or a negative radiance would reach pixels: read as 0. A huge one is
+        // clamped, so that times the largest intensity and mixed it stays finite (no Inf - Inf).
+        face.rgb[i * 3 + c] = std::isfinite(value) && value > 0.0f ? std::min(value, kMaxEnvironmentRadiance) : 0.0f;
       }
     }
     return face;
@@ -140,9 +141,20 @@ FaceImage loadEnvironmentImage(const std::string& path) {
   return face;
 }
 
-CubeMap cubeMapFromFaces(const std::array<FaceImage, kCubeFaces>& facesIn, const std::array<std::string, kCubeFaces>& paths,
+bool readEnvironmentImageSize(const std::string& path, int& width, int& height) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec) && !ec) throw InputError(path + ": image file not found");
+  const std::string bytes = readFileCapped(path, kMaxImageFileBytes, "image file");
+  return readImageHeader(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), width, height);
+}
+
+FaceImage faceWithinCubeLimit(FaceImage face) {
+  while (face.width > kMaxCubeFaceSize || face.height > kMaxCubeFaceSize) face = halvedFace(face);
+  return face;
+}
+
+CubeMap cubeMapFromFaces(std::array<FaceImage, kCubeFaces> faces, const std::array<std::string, kCubeFaces>& paths,
                          std::vector<std::string>& warnings) {
-  std::array<FaceImage, kCubeFaces> faces = facesIn;
   for (int f = 0; f < kCubeFaces; ++f) {
     const FaceImage& face = faces[static_cast<std::size_t>(f)];
     if (face.width != face.height) {

@@ -37,13 +37,17 @@ bool parse(std::string_view s, EnvironmentParameterization& out);
 inline constexpr int kCubeFaces = 6;
 inline constexpr const char* kCubeFaceNames[kCubeFaces] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
 
+// Largest radiance an HDR texel keeps (inclusive; linear RGB, 1 = an 8-bit file's white):
+// half-float's largest value. Times the largest intensity (kMaxColourValue, 1e4) it stays far
+// from float's range, so no read, product or mix can reach Inf or NaN.
+inline constexpr float kMaxEnvironmentRadiance = 65504.0f;
+
 // Largest face side, texels (inclusive): six 1024^2 RGB float faces with their chains are
 // 100 MB on each side of the comparison. A larger face is read at the first level of its own
 // chain that fits (with a warning).
 inline constexpr int kMaxCubeFaceSize = 1024;
-// Side of a cube built from an equirectangular image when `size` is not given, texels: the
-// power of two nearest a quarter of the image's width (a face spans a quarter of the
-// equirect's 360 degrees), within [kMinCubeFaceSize, kMaxCubeFaceSize].
+// Smallest cube side, texels (inclusive), and the side Environment::size starts at (a built
+// map's, when the scene gives none; an equirect's default is defaultCubeSizeForEquirect's).
 inline constexpr int kMinCubeFaceSize = 1;
 inline constexpr int kDefaultEnvironmentSize = 256;
 
@@ -84,13 +88,21 @@ FaceImage loadEnvironmentImage(const std::string& path);
 // The cube of six square faces of one size (GL order), with its mip chain. Throws InputError
 // naming the face (`paths`, for messages) when a face is not square or the sizes differ.
 // `warnings` receives a line when a face larger than kMaxCubeFaceSize is reduced.
-CubeMap cubeMapFromFaces(const std::array<FaceImage, kCubeFaces>& faces, const std::array<std::string, kCubeFaces>& paths,
+CubeMap cubeMapFromFaces(std::array<FaceImage, kCubeFaces> faces, const std::array<std::string, kCubeFaces>& paths,
                          std::vector<std::string>& warnings);
+// An image file's width and height from its header, nothing decoded (false when it has none):
+// six faces are checked against each other before any is decoded.
+bool readEnvironmentImageSize(const std::string& path, int& width, int& height);
+// `face` halved by 2x2 means until its side is at most kMaxCubeFaceSize (each face is reduced
+// as soon as it is read, so six large faces are never held at full size together).
+FaceImage faceWithinCubeLimit(FaceImage face);
 // The cube of side `size` resampled from an equirectangular image (longitude along x, the
 // -Z direction at the centre, +X a quarter to the right; latitude along y, +Y at the top row),
 // each face texel the bilinear value at its centre's direction, in double; with its mip chain.
 CubeMap cubeMapFromEquirect(const FaceImage& equirect, int size, const std::string& path);
-// The equirect's default cube size (kDefaultEnvironmentSize's rule above).
+// The cube side an equirect is made into when the scene gives no `size`: the power of two
+// nearest a quarter of the image's width (a face spans a quarter of its 360 degrees), within
+// [kMinCubeFaceSize, kMaxCubeFaceSize].
 int defaultCubeSizeForEquirect(int equirectWidth);
 
 // Level i + 1 from level i for every face: each texel the mean of its 2x2 block (sides are
@@ -125,10 +137,6 @@ const CubeEdgeTable& cubeEdgeTable();
 glm::dvec2 equirectUvFromDirection(const glm::dvec3& r);
 
 // The scene's environment (the scene file's top-level "environment").
-struct EnvironmentCapture {
-  std::string node;  // rendered from this node's centre, the node hidden
-  int size = kDefaultEnvironmentSize;
-};
 struct Environment {
   std::array<std::string, kCubeFaces> facePaths;  // set when read from six images
   std::string equirectPath;                       // set when read from one

@@ -643,24 +643,57 @@ class SceneReader {
         fail(at("cube"), "expected 6 image paths in GL order (+X, -X, +Y, -Y, +Z, -Z), got " +
                              std::to_string(cube->size()));
       }
-      std::array<FaceImage, kCubeFaces> faces;
       for (std::size_t f = 0; f < kCubeFaces; ++f) {
-        const std::string facePath = indexPath(at("cube"), f);
-        env.facePaths[f] = resolvePath(readString((*cube)[f], facePath, "an image path relative to the scene file"));
+        env.facePaths[f] = resolvePath(readString((*cube)[f], indexPath(at("cube"), f), "an image path relative to the scene file"));
+      }
+      // The six sizes from the headers first: a mismatched or oversized set is refused before
+      // anything is decoded (a face decodes to 12 bytes per texel).
+      std::array<std::pair<int, int>, kCubeFaces> sizes{};
+      for (std::size_t f = 0; f < kCubeFaces; ++f) {
         try {
-          faces[f] = loadEnvironmentImage(env.facePaths[f]);
+          if (!readEnvironmentImageSize(env.facePaths[f], sizes[f].first, sizes[f].second)) continue;
         } catch (const InputError& e) {
-          fail(facePath, e.what());
+          fail(indexPath(at("cube"), f), e.what());
+        }
+        const auto [w, h] = sizes[f];
+        if (w != h) {
+          fail(indexPath(at("cube"), f), env.facePaths[f] + ": cube face " + kCubeFaceNames[f] + " is " + std::to_string(w) +
+                                             "x" + std::to_string(h) + "; cube faces must be square");
+        }
+        if (f > 0 && sizes[0].first > 0 && w != sizes[0].first) {
+          fail(indexPath(at("cube"), f), env.facePaths[f] + ": cube face " + kCubeFaceNames[f] + " is " + std::to_string(w) +
+                                             "x" + std::to_string(h) + " but face +X is " + std::to_string(sizes[0].first) +
+                                             "x" + std::to_string(sizes[0].second) + "; all six faces must have one size");
         }
       }
       if (env.sizeGiven) {
         scene_.warnings.push_back(fileName_ + ": " + at("size") + ": ignored: a \"cube\" environment keeps its faces' size");
       }
+      std::array<FaceImage, kCubeFaces> faces;
+      int readSide = 0;
+      for (std::size_t f = 0; f < kCubeFaces; ++f) {
+        try {
+          FaceImage face = loadEnvironmentImage(env.facePaths[f]);
+          readSide = face.width;
+          // Reduced at once, so six large faces are never held at full size together; the
+          // power-of-two check below still sees the file's size (a reduced odd side would not).
+          faces[f] = face.width > kMaxCubeFaceSize && face.width == face.height && (face.width & (face.width - 1)) == 0
+                         ? faceWithinCubeLimit(std::move(face))
+                         : std::move(face);
+        } catch (const InputError& e) {
+          fail(indexPath(at("cube"), f), e.what());
+        }
+      }
       std::vector<std::string> warnings;
       try {
-        env.cube = std::make_shared<const CubeMap>(cubeMapFromFaces(faces, env.facePaths, warnings));
+        env.cube = std::make_shared<const CubeMap>(cubeMapFromFaces(std::move(faces), env.facePaths, warnings));
       } catch (const InputError& e) {
         fail(at("cube"), e.what());
+      }
+      if (readSide > kMaxCubeFaceSize) {
+        warnings.push_back(env.facePaths[0] + ": cube faces are " + std::to_string(readSide) + "x" + std::to_string(readSide) +
+                           ", more than " + std::to_string(kMaxCubeFaceSize) + "; read at their mip level of " +
+                           std::to_string(env.cube->size()) + "x" + std::to_string(env.cube->size()));
       }
       for (const std::string& w : warnings) scene_.warnings.push_back(fileName_ + ": " + at("cube") + ": " + w);
     } else {

@@ -135,7 +135,7 @@ TWR_LANE_INLINE Vec3L<L> sampleCubeLevelLanes(const CubeMap& cube, int level, co
   // A corner: the missing texel's weight goes in thirds to the other three.
   const L ax0 = one - alpha, ay0 = one - beta;
   L w00 = ax0 * ay0, w10 = alpha * ay0, w01 = ax0 * beta, w11 = alpha * beta;
-  const L third(static_cast<S>(1.0f / 3.0f));
+  const L third(static_cast<S>(1.0f / 3.0f));  // llvmpipe's float 1/3, in the reference too
   const L share = select(corner00, w00, select(corner10, w10, select(corner01, w01, w11))) * third;
   w00 = select(corner00, zero, select(corner, w00 + share, w00));
   w10 = select(corner10, zero, select(corner, w10 + share, w10));

@@ -113,25 +113,23 @@ TWR_LANE_INLINE EnvironmentTermsL<L> environmentLanes(const EnvironmentUniformsT
                                                       const Vec3L<L>& base) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), intensity(e.intensity);
-  EnvironmentTermsL<L> out;
-  out.reflectWorld = d.reflectWorld;
-  out.refractWorld = d.refractWorld;
-  out.reflected = (sampleCubeGradLanes<L>)(*e.cube, d.reflectWorld, f.reflectDx, f.reflectDy) * intensity;
-  out.transmitted = base;
-  out.totalInternal = zero > one;  // all false
+  // Built from values, never default-constructed: a Highway mask has no default constructor
+  // the per-target code may call (GCC refuses it on NEON).
+  const Vec3L<L> reflected = (sampleCubeGradLanes<L>)(*e.cube, d.reflectWorld, f.reflectDx, f.reflectDy) * intensity;
+  Vec3L<L> transmitted = base;
+  const auto totalInternal = e.refraction ? d.k < zero : zero > one;  // zero > one: no lane
   L f0(e.reflectivity);
   if (e.refraction) {
     const L eta(e.eta);
-    out.totalInternal = d.k < zero;
     const Vec3L<L> through = (sampleCubeGradLanes<L>)(*e.cube, d.refractWorld, f.refractDx, f.refractDy) * intensity;
-    out.transmitted = select3<L>(out.totalInternal, out.reflected, through);
+    transmitted = select3<L>(totalInternal, reflected, through);
     const L ratio = (one - eta) / (one + eta);
     f0 = ratio * ratio;
   }
-  out.share = zero;
-  if (e.mirror) out.share = e.schlick ? (schlickLanes<L>)(f0, d.nDotV) : L(e.reflectivity);
-  out.colour = out.transmitted + (out.reflected - out.transmitted) * out.share;
-  return out;
+  L share = zero;
+  if (e.mirror) share = e.schlick ? (schlickLanes<L>)(f0, d.nDotV) : L(e.reflectivity);
+  const Vec3L<L> colour = transmitted + (reflected - transmitted) * share;
+  return EnvironmentTermsL<L>{d.reflectWorld, d.refractWorld, reflected, transmitted, share, totalInternal, colour};
 }
 
 TWR_LANES_END

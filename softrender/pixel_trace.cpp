@@ -77,6 +77,7 @@ void traceTriangle(const DrawItem& item, std::size_t t, const VertexUniforms& ve
     visit.weights = pixelWeights(interpolation, x, yGl);
     const VaryingPlanes varyings = makeVaryingPlanes(window, a, b, c, tangentLighting, shadeUniforms.lightCount, setup);
     visit.fragment = interpolateFragment(varyings, x, yGl, visit.weights.depth);
+    visit.varyings = varyings;
     if (shadeUniforms.needsQuadDifferences()) {
       // The LOD (or the anisotropic ellipse) from the pixel's 2x2 quad, as the renderers take it.
       setQuadUvDifferencesLanes<float>(interpolation.uv, static_cast<float>(x & ~1), static_cast<float>(yGl & ~1),

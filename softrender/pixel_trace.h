@@ -49,6 +49,7 @@ struct TriangleVisit {
   bool frontFacing = true;
   PixelWeights weights;      // barycentrics, perspective weights, depth
   Fragment fragment;         // interpolated varyings
+  VaryingPlanes varyings;    // the triangle's planes (the quad's other pixels are found from them)
   float depthBefore = 1.0f;  // depth buffer value when this triangle arrived
   TraceOutcome outcome = TraceOutcome::Shaded;
   ShadeTerms terms;          // filled when shaded

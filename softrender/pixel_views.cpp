@@ -43,7 +43,12 @@ ViewPixel shadeTracedPixel(const Scene& scene, const RenderSettings& settings, c
   if (item == items.end()) throw InputError("pixel views: the trace does not belong to this scene");
 
   const ShadeUniforms uniforms = makeShadeUniforms(*item->material, scene, viewSettings);
-  const vec4 colour = shadeFragmentDynamic(shaderKeyFor(uniforms, viewSettings), winner->fragment, uniforms, nullptr);
+  const ShaderKey key = shaderKeyFor(uniforms, viewSettings);
+  // The environment's quad differences as this view's shading finds them (the trace was taken
+  // in its own view, whose surface may differ).
+  Fragment fragment = winner->fragment;
+  setEnvironmentDifferencesDynamic(key, winner->varyings, trace.x, trace.yGl, uniforms, fragment);
+  const vec4 colour = shadeFragmentDynamic(key, fragment, uniforms, nullptr);
   // As writeFragment (output_merge.h) stores a surface fragment: opaque, with its depth and id.
   pixel.rgba = {unitToByte(colour.r), unitToByte(colour.g), unitToByte(colour.b), 255};
   pixel.depth = winner->weights.depth;

@@ -59,6 +59,10 @@ void printSummary(const CompareMetrics& m, const nlohmann::json& json, const Art
   if (m.maxAbsDiff > 0) std::cout << " at (" << m.maxAbsDiffX << ", " << m.maxAbsDiffY << ")";
   std::cout << ", mean " << m.meanAbsDiff << ", rmse " << m.rmse << ", psnr " << m.psnr << " dB\n";
   std::cout << "  pixels over 1 / 3 / 12 levels: " << m.over1 << " / " << m.over3 << " / " << m.over12 << "\n";
+  if (m.backgroundCompared > 0) {
+    std::cout << "  sky box: " << m.backgroundCompared << " pixels compared, max abs diff " << m.backgroundMaxAbsDiff
+              << " levels, " << m.backgroundOver1 << " over 1 level\n";
+  }
   std::cout << "  differing pixels by cause: coverage " << m.classCoverage << ", depth " << m.classDepth
             << ", shading " << m.classShading << "; excluded line pixels " << m.excludedLinePixels << "\n";
   std::cout << "  depth max diff " << std::setprecision(6) << m.depthMaxDiff << ", NaN pixels " << m.nanPixels

@@ -566,6 +566,9 @@ bool GuiApp::drawEnvironmentControls(std::size_t index) {
   edited |= ImGui::SliderFloat("reflectivity", &material.reflectivity, 0.0f, 1.0f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
   itemTooltip("The reflected share with fresnel none, Schlick's F0 with schlick (reflectivity, [0, 1]).");
   probe_.item(concat(key, "reflectivity").c_str());
+  if (material.environmentSpecular == EnvironmentSpecular::None && material.reflectivity > 0.0f) {
+    hintText("Reflectivity is read with env specular \"mirror\" (the scene file turns it on for you).");
+  }
   ImGui::SetNextItemWidth(fieldWidth);
   edited |= probedCombo("fresnel", "fresnel", material.fresnel, kFresnels);
   itemTooltip("none: the share is the reflectivity; schlick: F0 + (1 - F0)(1 - N.V)^5, more reflection at grazing "

@@ -613,10 +613,14 @@ TEST(GuiScripted, EnvironmentControlsRedrawBothBackends) {
            st["diff"]["max_abs_diff"].get<int>() <= 3;
   };
   EXPECT_TRUE(settledWithin(s)) << s.dump(1);
-  const auto afterEdit = [&](const std::string& what, const std::function<bool(const json&)>& edited) {
+  // Does `action`, then waits for its edit (a later edit counter than before it, the state
+  // `edited` names) drawn by both backends, and checks the diff.
+  const auto afterEdit = [&](const std::string& what, const std::function<void()>& action,
+                             const std::function<bool(const json&)>& edited) {
     const long edit = app.state().value("edit", 0L);
+    action();
     json st = app.waitFor(what, [&](const json& now) {
-      return edited(now) && now.value("edit", 0L) > edit - 1 && now.value("settled", false) && now["diff_edit"] == now["edit"];
+      return edited(now) && now.value("edit", 0L) > edit && now.value("settled", false) && now["diff_edit"] == now["edit"];
     });
     EXPECT_TRUE(settledWithin(st)) << what << "\n" << st.dump(1);
     return st;
@@ -626,20 +630,24 @@ TEST(GuiScripted, EnvironmentControlsRedrawBothBackends) {
   app.scrollTo("material0");
   app.click("material0");  // open chrome's tree node
   app.scrollTo("material0_reflectivity");
-  app.typeInto("material0_reflectivity", "0.5");
-  afterEdit("reflectivity 0.5", [](const json& st) { return std::abs(st["materials"][0]["reflectivity"].get<double>() - 0.5) < 1e-6; });
+  afterEdit(
+      "reflectivity 0.5", [&] { app.typeInto("material0_reflectivity", "0.5"); },
+      [](const json& st) { return std::abs(st["materials"][0]["reflectivity"].get<double>() - 0.5) < 1e-6; });
   app.scrollTo("material0_fresnel");
-  app.pick("material0_fresnel", "material0_fresnel_schlick");
-  afterEdit("fresnel schlick", [](const json& st) { return st["materials"][0]["fresnel"] == "schlick"; });
+  afterEdit(
+      "fresnel schlick", [&] { app.pick("material0_fresnel", "material0_fresnel_schlick"); },
+      [](const json& st) { return st["materials"][0]["fresnel"] == "schlick"; });
   app.scrollTo("material0_refracts");
-  app.click("material0_refracts");
-  afterEdit("refraction on", [](const json& st) { return st["materials"][0]["refraction_index"].get<double>() > 0.0; });
+  afterEdit(
+      "refraction on", [&] { app.click("material0_refracts"); },
+      [](const json& st) { return st["materials"][0]["refraction_index"].get<double>() > 0.0; });
   app.xdotool("key F12");  // the window as the user sees it, for a person to look at
   app.waitFor("the window screenshot", [](const json& st) { return !st.value("screenshot_message", "").empty(); });
 
   app.scrollTo("environment_background");
-  app.click("environment_background");
-  s = afterEdit("the sky box off", [](const json& st) { return !st["environment"]["background"].get<bool>(); });
+  s = afterEdit(
+      "the sky box off", [&] { app.click("environment_background"); },
+      [](const json& st) { return !st["environment"]["background"].get<bool>(); });
   EXPECT_FALSE(s.contains("panel_faults")) << s.dump(1);
   EXPECT_EQ(app.quit(), 0) << app.err();
 }
