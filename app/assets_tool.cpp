@@ -32,6 +32,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -303,7 +304,12 @@ constexpr double kZenithColour[3] = {0.16, 0.36, 0.78};
 constexpr double kSunColour[3] = {1.0, 0.92, 0.62};
 constexpr double kGroundColours[2][3] = {{0.30, 0.26, 0.20}, {0.52, 0.47, 0.36}};
 constexpr double kGroundDepth = 1.0;  // the ground plane lies this far below the eye (y = -1)
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = std::numbers::pi;
+constexpr double kSunEdgeSharpness = 4.0;       // the disc's rim goes from 0 to 1 over a quarter of it
+constexpr double kHazeRisePerUnitY = 6.0;       // the ground fades into haze within y > -1/6
+constexpr double kHazeStrength = 0.8;           // how far towards the horizon colour the haze goes
+constexpr double kGridDarkening = 0.35;         // a grid line's colour, times the sky's
+constexpr double kAzimuthLinesEndDeg = 75.0;    // azimuth lines stop at this elevation, short of the poles (degrees)
 
 std::array<double, 3> skyAt(double x, double y, double z) {
   const double length = std::sqrt(x * x + y * y + z * z);
@@ -316,14 +322,16 @@ std::array<double, 3> skyAt(double x, double y, double z) {
                                        kSunDirection[2] * kSunDirection[2]);
     const double cosSun = (x * kSunDirection[0] + y * kSunDirection[1] + z * kSunDirection[2]) / sunLength;
     const double edge = std::cos(kSunHalfAngleDeg * kPi / 180.0);
-    const double sun = std::clamp((cosSun - edge) / (1.0 - edge) * 4.0, 0.0, 1.0);
+    const double sun = std::clamp((cosSun - edge) / (1.0 - edge) * kSunEdgeSharpness, 0.0, 1.0);
     for (int k = 0; k < 3; ++k) c[k] += (kSunColour[k] - c[k]) * sun;
   } else {
     // The ground plane's 1 x 1 tiles, fading into the horizon's haze towards it.
     const double gx = x / -y * kGroundDepth, gz = z / -y * kGroundDepth;
     const int tile = (static_cast<int>(std::floor(gx)) + static_cast<int>(std::floor(gz))) & 1;
-    const double haze = std::clamp(1.0 + y * 6.0, 0.0, 1.0);
-    for (int k = 0; k < 3; ++k) c[k] = kGroundColours[tile][k] + (kHorizonColour[k] - kGroundColours[tile][k]) * haze * 0.8;
+    const double haze = std::clamp(1.0 + y * kHazeRisePerUnitY, 0.0, 1.0);
+    for (int k = 0; k < 3; ++k) {
+      c[k] = kGroundColours[tile][k] + (kHorizonColour[k] - kGroundColours[tile][k]) * haze * kHazeStrength;
+    }
   }
   const double azimuthDeg = std::atan2(x, -z) * 180.0 / kPi, elevationDeg = std::asin(std::clamp(y, -1.0, 1.0)) * 180.0 / kPi;
   const auto nearLine = [](double angle) {
@@ -331,8 +339,8 @@ std::array<double, 3> skyAt(double x, double y, double z) {
     return std::fabs(offset) <= kSkyGridHalfWidthDeg;
   };
   // Azimuth lines thin out towards the poles, where they all meet.
-  if (nearLine(elevationDeg) || (std::fabs(elevationDeg) < 75.0 && nearLine(azimuthDeg))) {
-    for (double& v : c) v *= 0.35;
+  if (nearLine(elevationDeg) || (std::fabs(elevationDeg) < kAzimuthLinesEndDeg && nearLine(azimuthDeg))) {
+    for (double& v : c) v *= kGridDarkening;
   }
   return c;
 }
