@@ -660,6 +660,12 @@ class SceneReader {
           fail(indexPath(at("cube"), f), env.facePaths[f] + ": cube face " + kCubeFaceNames[f] + " is " + std::to_string(w) +
                                              "x" + std::to_string(h) + "; cube faces must be square");
         }
+        if ((w & (w - 1)) != 0) {
+          fail(indexPath(at("cube"), f), env.facePaths[f] + ": cube face " + kCubeFaceNames[f] + " is " + std::to_string(w) +
+                                             "x" + std::to_string(h) +
+                                             "; twinraster needs a power-of-two side for the faces' mip chain (resample "
+                                             "them, or give an \"equirect\" image and a \"size\")");
+        }
         if (f > 0 && sizes[0].first > 0 && w != sizes[0].first) {
           fail(indexPath(at("cube"), f), env.facePaths[f] + ": cube face " + kCubeFaceNames[f] + " is " + std::to_string(w) +
                                              "x" + std::to_string(h) + " but face +X is " + std::to_string(sizes[0].first) +
