@@ -2,11 +2,13 @@
 
 #include "scene/errors.h"
 #include "scene/mip_level_view.h"
+#include "scene/sky_view.h"
 #include "softrender/cpu_renderer.h"
 #include "softrender/draw_list.h"
 #include "softrender/framebuffer.h"
 #include "softrender/output_merge.h"
 #include "softrender/raster.h"
+#include "softrender/sky-inl.h"
 #include "softrender/vertex.h"
 
 #include <cstdio>
@@ -201,6 +203,16 @@ PixelTrace tracePixel(const Scene& scene, const RenderSettings& requested, int w
   for (std::size_t c = 0; c < 4; ++c) trace.rgba[c] = output.rgba[i * 4 + c];
   trace.depth = output.depth[i];
   trace.triangleId = output.triangleId[i];
+  if (trace.triangleId == kNoTriangle && drawsSky(scene, requested)) {
+    const SkyUniformsT<float> sky = makeSkyUniforms(scene, width, height);
+    const SkyReadL<float> read = skyReadLanes<float>(sky, static_cast<float>(x), static_cast<float>(trace.yGl));
+    const CubeCoordL<float> coord = cubeCoordLanes<float>(read.dir);
+    trace.sky = true;
+    trace.skyDirection = read.dir;
+    trace.skyFace = static_cast<int>(coord.face);
+    trace.skyFaceCoord = vec2(coord.s, coord.t);
+    trace.skyLod = cubeLodLanes<float>(read.dir, read.dx, read.dy, sky.cube->size());
+  }
   trace.debugLine = output.lineMask[i] != 0;
   return trace;
 }
@@ -216,6 +228,10 @@ std::string formatPixelTrace(const PixelTrace& tr) {
     << (tr.triangleId == kNoTriangle ? std::string("none (background)") : std::to_string(tr.triangleId))
     << (tr.debugLine ? ", a TBN debug line was drawn over it" : "") << "\n";
   if (tr.visits.empty()) o << "no triangle reaches this pixel\n";
+  if (tr.sky) {
+    o << "sky box: direction (world) " << fmt(tr.skyDirection) << ", face " << kCubeFaceNames[tr.skyFace] << " at s, t "
+      << fmt(tr.skyFaceCoord) << ", LOD " << fmt(tr.skyLod) << " (from the direction's quad differences)\n";
+  }
   for (std::size_t n = 0; n < tr.visits.size(); ++n) {
     const TriangleVisit& v = tr.visits[n];
     o << "\n#" << n + 1 << " triangle " << v.triangleId << " (node '" << v.nodeName << "', triangle "
@@ -380,6 +396,12 @@ nlohmann::json pixelTraceToJson(const PixelTrace& tr) {
     visits.push_back(jv);
   }
   j["triangles"] = visits;
+  if (tr.sky) {
+    j["sky"] = {{"direction_world", toJson(tr.skyDirection)},
+                {"face", kCubeFaceNames[tr.skyFace]},
+                {"face_coord", toJson(tr.skyFaceCoord)},
+                {"lod", tr.skyLod}};
+  }
   return j;
 }
 

@@ -72,6 +72,12 @@ struct PixelTrace {
   float depth = 1.0f;
   std::uint32_t triangleId = kNoTriangle;
   bool debugLine = false;
+  // No triangle, and the scene draws its sky box there: what the sky read (docs/environment.md).
+  bool sky = false;
+  vec3 skyDirection{0.0f};  // world space, unnormalised
+  int skyFace = 0;          // GL order: +X, -X, +Y, -Y, +Z, -Z
+  vec2 skyFaceCoord{0.0f};  // s, t on that face
+  float skyLod = 0.0f;      // texture()'s LOD, from the direction's quad differences
 };
 
 // Throws InputError when the pixel is outside the image or the size is invalid.

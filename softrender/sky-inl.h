@@ -35,19 +35,34 @@ TWR_LANE_INLINE Vec3L<L> skyDirectionLanes(const SkyUniformsT<ScalarOf<L>>& sky,
   return (Vec3L<L>(sky.forward) + Vec3L<L>(sky.right) * ndcX) + Vec3L<L>(sky.up) * ndcY;
 }
 
+// What the sky reads at pixel (px, py): the direction and its fine differences across the
+// pixel's 2x2 quad (GLSL's dFdx / dFdy, which texture() takes its LOD from). The quad's other
+// pixels are evaluated where they would be, as a GPU's helper pixels are, past the frame's
+// edge included.
+template <typename L>
+struct SkyReadL {
+  Vec3L<L> dir, dx, dy;
+};
+template <typename L>
+TWR_LANE_INLINE SkyReadL<L> skyReadLanes(const SkyUniformsT<ScalarOf<L>>& sky, const L& px, const L& py) {
+  using S = ScalarOf<L>;
+  const L one(S(1)), two(S(2)), half(S(0.5));
+  const L qx = floorOf(px * half) * two, qy = floorOf(py * half) * two;
+  SkyReadL<L> read;
+  read.dir = (skyDirectionLanes<L>)(sky, px, py);
+  read.dx = (skyDirectionLanes<L>)(sky, qx + one, py) - (skyDirectionLanes<L>)(sky, qx, py);
+  read.dy = (skyDirectionLanes<L>)(sky, px, qy + one) - (skyDirectionLanes<L>)(sky, px, qy);
+  return read;
+}
+
 // The sky's colour there: the environment read with texture() (the LOD from the direction's
-// fine differences across the pixel's 2x2 quad, cubeLodLanes) times the intensity, clamped
-// to [0, 1]. The quad's other pixels are evaluated where they would be, as a GPU's helper
-// pixels are, past the frame's edge included.
+// differences, cubeLodLanes) times the intensity, clamped to [0, 1].
 template <typename L>
 TWR_LANE_INLINE Vec3L<L> skyColourLanes(const SkyUniformsT<ScalarOf<L>>& sky, const L& px, const L& py) {
   using S = ScalarOf<L>;
-  const L zero(S(0)), one(S(1)), two(S(2)), half(S(0.5));
-  const L qx = floorOf(px * half) * two, qy = floorOf(py * half) * two;
-  const Vec3L<L> dir = (skyDirectionLanes<L>)(sky, px, py);
-  const Vec3L<L> dx = (skyDirectionLanes<L>)(sky, qx + one, py) - (skyDirectionLanes<L>)(sky, qx, py);
-  const Vec3L<L> dy = (skyDirectionLanes<L>)(sky, px, qy + one) - (skyDirectionLanes<L>)(sky, px, qy);
-  const Vec3L<L> c = (sampleCubeGradLanes<L>)(*sky.cube, dir, dx, dy) * L(sky.intensity);
+  const L zero(S(0)), one(S(1));
+  const SkyReadL<L> read = (skyReadLanes<L>)(sky, px, py);
+  const Vec3L<L> c = (sampleCubeGradLanes<L>)(*sky.cube, read.dir, read.dx, read.dy) * L(sky.intensity);
   return Vec3L<L>(minOf(maxOf(c.x, zero), one), minOf(maxOf(c.y, zero), one), minOf(maxOf(c.z, zero), one));
 }
 

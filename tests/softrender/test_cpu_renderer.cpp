@@ -410,6 +410,27 @@ TEST(PixelTrace, ShowsTheSurfaceDetailOfAMarchAndAgreesWithTheRenderedPixel) {
   }
 }
 
+// A pixel of the sky box: no triangle, and the trace says where the sky looked (the face and
+// s, t of GL's table for its direction) and at which LOD; its colour is the rendered one.
+TEST(PixelTrace, ASkyPixelSaysWhereTheSkyLooked) {
+  const Scene scene = loadSceneFile(std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes/env_sky_box.json");
+  const PixelTrace tr = tracePixel(scene, scene.settings, 160, 120, 80, 30);
+  EXPECT_EQ(tr.triangleId, kNoTriangle);
+  ASSERT_TRUE(tr.sky);
+  const CubeCoord expected = cubeCoordFromDirection(glm::dvec3(tr.skyDirection));
+  EXPECT_EQ(tr.skyFace, expected.face);
+  EXPECT_NEAR(tr.skyFaceCoord.x, expected.s, 1e-5);
+  EXPECT_NEAR(tr.skyFaceCoord.y, expected.t, 1e-5);
+  EXPECT_TRUE(std::isfinite(tr.skyLod));
+  // At 160x120 a 100-degree view spreads about 2.4 256-texel faces over 160 pixels: minified.
+  EXPECT_GT(tr.skyLod, 0.0f);
+  EXPECT_NE(formatPixelTrace(tr).find("sky box: direction (world)"), std::string::npos);
+  // A debug view draws no sky, and the trace says none.
+  RenderSettings normals = scene.settings;
+  normals.view = View::Normal;
+  EXPECT_FALSE(tracePixel(scene, normals, 160, 120, 80, 30).sky);
+}
+
 TEST(PixelTrace, ReportsCullingDepthFailuresAndClipping) {
   Scene scene = sceneWith(makeSphere(1.0f, 12, 24));
   scene.settings.userClipPlanes = {vec4(0, -1, 0, 0.2f)};  // keep y <= 0.2
