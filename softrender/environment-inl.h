@@ -2,16 +2,16 @@
 // function by function, the same operations in the same order (docs/environment.md):
 //   v = normalize(eye direction), n the normal lighting uses (both in the lighting space)
 //   R = 2 (n.v) n - v                       reflect(-v, n)
-//   k = 1 - eta^2 (1 - (n.v)^2)             refract(-v, n, eta): total internal reflection
-//   T = -eta v - (sqrt(k) - eta (n.v)) n    when k < 0 (GLSL's refract, written out)
+//   k = 1 - eta^2 (1 - (n.v)^2)             refract(-v, n, eta); k < 0: total internal reflection
+//   T = -eta v - (sqrt(k) - eta (n.v)) n    (GLSL's refract, written out)
 //   F = F0 + (1 - F0) (1 - max(n.v, 0))^5   Schlick, F0 = reflectivity, or ((1 - eta) / (1 + eta))^2
 //                                           when the material refracts
 //   colour = mix(transmitted, reflected, F or reflectivity)
-// Each direction is read with texture(): the LOD from its differences across the pixel's 2x2
-// quad, as GLSL's fine dFdx / dFdy take them (cube_sample-inl.h, cubeLodLanes).
 // where transmitted is the Phong colour, or the refracted environment when the material
 // refracts (the reflected one under total internal reflection), and a direction found in
 // tangent space is brought to world space by the fragment's frame before the cube is read.
+// Each direction is read with texture(): the LOD from its differences across the pixel's 2x2
+// quad, as GLSL's fine dFdx / dFdy take them (cube_sample-inl.h, cubeLodLanes).
 // Shared source, included plainly and per Highway target (softrender/lanes.h).
 
 #if defined(TWR_LANES_HIGHWAY)
@@ -75,7 +75,6 @@ TWR_LANE_INLINE L schlickLanes(const L& f0, const L& cosTheta) {
 // is given, used or not); k < 0 says total internal reflection.
 template <typename L>
 struct EnvironmentDirectionsL {
-  Vec3L<L> v, nl;
   L nDotV, k;
   Vec3L<L> reflectWorld, refractWorld;
 };
@@ -87,10 +86,9 @@ TWR_LANE_INLINE EnvironmentDirectionsL<L> environmentDirectionsLanes(const Envir
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), two(S(2));
   EnvironmentDirectionsL<L> d;
-  d.nl = nl;
-  d.v = safeNormalize3<L>(vVec);
-  d.nDotV = dot3<L>(nl, d.v);
-  const Vec3L<L> r = (two * d.nDotV) * nl - d.v;  // reflect(-v, nl)
+  const Vec3L<L> v = safeNormalize3<L>(vVec);
+  d.nDotV = dot3<L>(nl, v);
+  const Vec3L<L> r = (two * d.nDotV) * nl - v;  // reflect(-v, nl)
   d.reflectWorld = (worldFromLightingLanes<L>)(r, t, b, n, tangentSpace);
   d.k = one;
   d.refractWorld = Vec3L<L>(zero);
@@ -99,7 +97,7 @@ TWR_LANE_INLINE EnvironmentDirectionsL<L> environmentDirectionsLanes(const Envir
     const L eta(e.eta);
     d.k = one - (eta * eta) * (one - d.nDotV * d.nDotV);
     const L root = sqrtOf(maxOf(d.k, zero));
-    const Vec3L<L> refracted = (zero - eta) * d.v - (root - eta * d.nDotV) * nl;
+    const Vec3L<L> refracted = (zero - eta) * v - (root - eta * d.nDotV) * nl;
     d.refractWorld = (worldFromLightingLanes<L>)(refracted, t, b, n, tangentSpace);
   }
   return d;

@@ -165,8 +165,9 @@ TWR_LANE_INLINE SurfaceFrameL<L> surfaceFrameLanes(const FragmentL<L>& f, const 
 // which texture(samplerCube, ...) takes its LOD from. A GPU shades the quad's four pixels
 // together (helper pixels included) and differences the values; here the pixel's row partner
 // and column partner are interpolated from the triangle's planes and their directions found
-// as the shading finds them (surfaceFrameLanes, environmentDirectionsLanes): four evaluations
-// of the surface per pixel, paid only by a material that reads the environment.
+// as the shading finds them (surfaceFrameLanes, environmentDirectionsLanes). The pixel itself
+// is one end of both differences: three evaluations of the surface per pixel, paid only by a
+// material that reads the environment.
 template <typename Features, typename L, typename Maps>
 TWR_LANE_OUTLINE void setEnvironmentDifferencesLanes(const VaryingPlanesL<L>& planes, const L& px, const L& py,
                                                      const L& qx, const L& qy, const ShadeUniformsT<ScalarOf<L>>& u,
@@ -184,12 +185,19 @@ TWR_LANE_OUTLINE void setEnvironmentDifferencesLanes(const VaryingPlanesL<L>& pl
     return (environmentDirectionsLanes<L>)(u.environment, frame.nl, eyeVec, frame.t, frame.b, frame.n, kTangentSpace);
   };
   const L one(S(1));
-  const EnvironmentDirectionsL<L> left = directionsAt(qx, py), right = directionsAt(qx + one, py);
-  const EnvironmentDirectionsL<L> lower = directionsAt(px, qy), upper = directionsAt(px, qy + one);
-  f.reflectDx = right.reflectWorld - left.reflectWorld;
-  f.reflectDy = upper.reflectWorld - lower.reflectWorld;
-  f.refractDx = right.refractWorld - left.refractWorld;
-  f.refractDy = upper.refractWorld - lower.refractWorld;
+  // The partners: the other column of the pixel's row, the other row of its column.
+  const auto firstColumn = px == qx, firstRow = py == qy;
+  const EnvironmentDirectionsL<L> own = directionsAt(px, py);
+  const EnvironmentDirectionsL<L> rowPartner = directionsAt(select(firstColumn, qx + one, qx), py);
+  const EnvironmentDirectionsL<L> columnPartner = directionsAt(px, select(firstRow, qy + one, qy));
+  // right - left along the row, upper - lower along the column.
+  const auto difference = [&](const auto& mask, const Vec3L<L>& pixel, const Vec3L<L>& partner) {
+    return select3<L>(mask, partner - pixel, pixel - partner);
+  };
+  f.reflectDx = difference(firstColumn, own.reflectWorld, rowPartner.reflectWorld);
+  f.reflectDy = difference(firstRow, own.reflectWorld, columnPartner.reflectWorld);
+  f.refractDx = difference(firstColumn, own.refractWorld, rowPartner.refractWorld);
+  f.refractDy = difference(firstRow, own.refractWorld, columnPartner.refractWorld);
 }
 
 // Shades one fragment per lane with the permutation `Features` (shade.h's ShaderFeatures).
