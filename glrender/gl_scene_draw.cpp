@@ -22,6 +22,22 @@ constexpr GLint kHeightUnit = 3;
 constexpr GLint kFirstHorizonUnit = 4;  // 4 to 7: one per 4 horizon azimuths
 constexpr GLint kEnvironmentUnit = 8;   // the environment's cube map
 
+// The environment's texture on the active unit: the cube, or the sphere or paraboloid map.
+void bindEnvironment(GlUploadCache& uploads, const Environment& environment) {
+  if (environment.layers) {
+    uploads.environmentLayers(environment.layers);
+  } else {
+    uploads.cubeMap(environment.cube);
+  }
+}
+
+// The sky program's defines: the environment is always read.
+std::vector<std::string> skyDefines(const Environment& environment) {
+  std::vector<std::string> defines{"HAS_ENVIRONMENT"};
+  for (std::string& d : environmentMapDefines(environment)) defines.push_back(std::move(d));
+  return defines;
+}
+
 // Whether the material mixes in the scene's environment (softrender/shade.cpp decides the same).
 bool usesEnvironment(const Material& material, const Scene& scene) {
   return scene.environment && scene.environment->cube &&
@@ -149,7 +165,8 @@ void setUniforms(GLuint program, const Scene& scene, const RenderSettings& setti
     }
   }
   if (usesEnvironment(material, scene)) {
-    glUniform1i(uniformLocation(program, "environmentMap"), kEnvironmentUnit);
+    glUniform1i(uniformLocation(program, scene.environment->layers ? "environmentLayers" : "environmentMap"),
+                kEnvironmentUnit);
     glUniform1f(uniformLocation(program, "environmentIntensity"), scene.environment->intensity);
     glUniform1f(uniformLocation(program, "reflectivity"), material.reflectivity);
     glUniform1f(uniformLocation(program, "refractionEta"), material.refractionIndex > 0.0f ? material.refractionIndex : 1.0f);
@@ -172,16 +189,20 @@ void drawSky(ProgramCache& programs, GlUploadCache& uploads, const Scene& scene,
   glDepthFunc(GL_LEQUAL);
   glDepthMask(GL_FALSE);
   glDisable(GL_CULL_FACE);
-  const GLuint program = programs.get(ProgramDesc{"sky", {"common.glsl", "sky.vert"}, {"common.glsl", "sky.frag"}, {}});
+  const GLuint program = programs.get(ProgramDesc{"sky",
+                                                 {"common.glsl", "sky.vert"},
+                                                 {"common.glsl", "environment_map.glsl", "sky.frag"},
+                                                 skyDefines(*scene.environment)});
   glUseProgram(program);
-  glUniform1i(uniformLocation(program, "environmentMap"), kEnvironmentUnit);
+  glUniform1i(uniformLocation(program, scene.environment->layers ? "environmentLayers" : "environmentMap"),
+              kEnvironmentUnit);
   glUniform1f(uniformLocation(program, "environmentIntensity"), sky.intensity);
   glUniform3fv(uniformLocation(program, "skyForward"), 1, &sky.forward.x);
   glUniform3fv(uniformLocation(program, "skyRight"), 1, &sky.right.x);
   glUniform3fv(uniformLocation(program, "skyUp"), 1, &sky.up.x);
   glUniform2fv(uniformLocation(program, "ndcPerPixel"), 1, &sky.ndcPerPixel.x);
   glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + kEnvironmentUnit));
-  uploads.cubeMap(scene.environment->cube);
+  bindEnvironment(uploads, *scene.environment);
   GlVertexArray empty = makeGlVertexArray();  // core profile: a draw needs a vertex array
   glBindVertexArray(empty.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -194,6 +215,16 @@ void drawSky(ProgramCache& programs, GlUploadCache& uploads, const Scene& scene,
 }
 
 }  // namespace
+
+std::vector<std::string> environmentMapDefines(const Environment& environment) {
+  std::vector<std::string> defines;
+  if (environment.layers && environment.layers->kind == EnvironmentParameterization::Sphere) {
+    defines.push_back("ENVIRONMENT_SPHERE");
+  } else if (environment.layers) {
+    defines.push_back("ENVIRONMENT_DUAL_PARABOLOID");
+  }
+  return defines;
+}
 
 std::vector<std::string> phongDefines(const Material& material, const RenderSettings& settings, bool environment) {
   std::vector<std::string> defines;
@@ -268,8 +299,11 @@ SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const S
     const Material& material = *item.material;
     ProgramDesc desc{"phong",
                      {"common.glsl", "phong.vert"},
-                     {"common.glsl", "surface_detail.glsl", "environment.glsl", "phong.frag"},
+                     {"common.glsl", "surface_detail.glsl", "environment_map.glsl", "environment.glsl", "phong.frag"},
                      phongDefines(material, settings, usesEnvironment(material, scene))};
+    if (usesEnvironment(material, scene)) {
+      for (std::string& d : environmentMapDefines(*scene.environment)) desc.defines.push_back(std::move(d));
+    }
     if (frame == GlFrame::Lean) desc.defines.push_back("NO_TRIANGLE_ID");
     const GLuint program = programs.get(desc);
     glUseProgram(program);
@@ -284,7 +318,7 @@ SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const S
     }
     if (usesEnvironment(material, scene)) {
       glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + kEnvironmentUnit));
-      uploads.cubeMap(scene.environment->cube);
+      bindEnvironment(uploads, *scene.environment);
     }
     const GlMesh& mesh = uploads.mesh(*item.mesh);
     glBindVertexArray(mesh.vertexArray.id());

@@ -21,6 +21,9 @@ struct SceneDrawStats {
 
 // The permutation defines of the phong program for one material (exposed for tests).
 // `environment`: the material mixes in the scene's environment (shaders/environment.glsl).
+// The defines that choose how the environment is read (shaders/environment_map.glsl):
+// ENVIRONMENT_SPHERE or ENVIRONMENT_DUAL_PARABOLOID for a built map, none for the cube.
+std::vector<std::string> environmentMapDefines(const Environment& environment);
 std::vector<std::string> phongDefines(const Material& material, const RenderSettings& settings,
                                       bool environment = false);
 

@@ -284,10 +284,48 @@ GLuint GlUploadCache::cubeMap(const std::shared_ptr<const CubeMap>& cube) {
   return id;
 }
 
+GLuint GlUploadCache::environmentLayers(const std::shared_ptr<const ParameterizedMap>& map) {
+  auto found = layers_.find(map.get());
+  if (found != layers_.end()) {
+    found->second.lastFrame = frame_;
+    glBindTexture(GL_TEXTURE_2D_ARRAY, found->second.gl.id());
+    return found->second.gl.id();
+  }
+  LayersEntry entry;
+  entry.map = map;
+  entry.gl = makeGlTexture();
+  entry.lastFrame = frame_;
+  glBindTexture(GL_TEXTURE_2D_ARRAY, entry.gl.id());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  std::vector<float> rgb;
+  for (int level = 0; level < map->levelCount(); ++level) {
+    const CubeMapLevel& lv = map->levels[static_cast<std::size_t>(level)];
+    // Interleaved RGB from the planar channels, layer after layer; row 0 is v = 0.
+    rgb.resize(lv.r.size() * 3);
+    for (std::size_t i = 0; i < lv.r.size(); ++i) {
+      rgb[i * 3] = lv.r[i];
+      rgb[i * 3 + 1] = lv.g[i];
+      rgb[i * 3 + 2] = lv.b[i];
+    }
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, level, GL_RGB32F, lv.size, lv.size, map->layers, 0, GL_RGB, GL_FLOAT, rgb.data());
+  }
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BASE_LEVEL, 0);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, map->levelCount() - 1);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  const GLuint id = entry.gl.id();
+  layers_.emplace(map.get(), std::move(entry));
+  ++textureUploads_;
+  return id;
+}
+
 void GlUploadCache::endFrame() {
   std::erase_if(meshes_, [this](const auto& item) { return item.second.lastFrame != frame_; });
   std::erase_if(textures_, [this](const auto& item) { return item.second.lastFrame != frame_; });
   std::erase_if(cubes_, [this](const auto& item) { return item.second.lastFrame != frame_; });
+  std::erase_if(layers_, [this](const auto& item) { return item.second.lastFrame != frame_; });
 }
 
 }  // namespace twr

@@ -53,6 +53,10 @@ class GlUploadCache {
   // GL_LINEAR_MIPMAP_LINEAR / GL_LINEAR. Seamless filtering is the context's
   // (GL_TEXTURE_CUBE_MAP_SEAMLESS, enabled by the caller). Held like a texture (see above).
   GLuint cubeMap(const std::shared_ptr<const CubeMap>& cube);
+  // Binds the GL_TEXTURE_2D_ARRAY for a sphere or dual-paraboloid map (one layer or two) to
+  // the active unit and returns it: every level as GL_RGB32F, GL_LINEAR_MIPMAP_LINEAR /
+  // GL_LINEAR, GL_CLAMP_TO_EDGE (layer_sample-inl.h models the same). Held like a texture.
+  GLuint environmentLayers(const std::shared_ptr<const ParameterizedMap>& map);
   // Drops what the render since beginFrame() did not use.
   void endFrame();
 
@@ -84,6 +88,12 @@ class GlUploadCache {
   };
   std::map<const Texture*, TextureEntry> textures_;
   std::map<const CubeMap*, CubeEntry> cubes_;
+  struct LayersEntry {
+    std::shared_ptr<const ParameterizedMap> map;  // held: keeps the address unique
+    GlTexture gl;
+    std::uint64_t lastFrame = 0;
+  };
+  std::map<const ParameterizedMap*, LayersEntry> layers_;
   std::uint64_t frame_ = 0;
   std::size_t meshUploads_ = 0;
   std::size_t textureUploads_ = 0;

@@ -51,10 +51,10 @@ FaceImage halvedFace(const FaceImage& face) {
   return half;
 }
 
-CubeMapLevel allocateLevel(int size) {
+CubeMapLevel allocateLevel(int size, int faces = kCubeFaces) {
   CubeMapLevel level;
   level.size = size;
-  const std::size_t count = static_cast<std::size_t>(kCubeFaces) * static_cast<std::size_t>(size) * static_cast<std::size_t>(size);
+  const std::size_t count = static_cast<std::size_t>(faces) * static_cast<std::size_t>(size) * static_cast<std::size_t>(size);
   level.r.assign(count, 0.0f);
   level.g.assign(count, 0.0f);
   level.b.assign(count, 0.0f);
@@ -241,12 +241,15 @@ CubeMap cubeMapFromEquirect(const FaceImage& equirect, int size, const std::stri
   return cube;
 }
 
-void buildCubeMipChain(CubeMap& cube) {
-  cube.levels.resize(1);
-  while (cube.levels.back().size > 1) {
-    const CubeMapLevel& from = cube.levels.back();
-    CubeMapLevel to = allocateLevel(from.size / 2);
-    for (int f = 0; f < kCubeFaces; ++f) {
+namespace {
+
+// Levels 1.. from level 0 for `faces` squares: each texel the mean of its 2x2 block, in double.
+void buildMipChain(std::vector<CubeMapLevel>& levels, int faces) {
+  levels.resize(1);
+  while (levels.back().size > 1) {
+    const CubeMapLevel& from = levels.back();
+    CubeMapLevel to = allocateLevel(from.size / 2, faces);
+    for (int f = 0; f < faces; ++f) {
       for (int y = 0; y < to.size; ++y) {
         for (int x = 0; x < to.size; ++x) {
           const std::size_t i00 = from.index(f, 2 * x, 2 * y), i10 = from.index(f, 2 * x + 1, 2 * y);
@@ -261,9 +264,13 @@ void buildCubeMipChain(CubeMap& cube) {
         }
       }
     }
-    cube.levels.push_back(std::move(to));
+    levels.push_back(std::move(to));
   }
 }
+
+}  // namespace
+
+void buildCubeMipChain(CubeMap& cube) { buildMipChain(cube.levels, kCubeFaces); }
 
 CubeCoord cubeCoordFromDirection(const glm::dvec3& r) {
   const double ax = std::abs(r.x), ay = std::abs(r.y), az = std::abs(r.z);
@@ -347,6 +354,118 @@ glm::dvec2 equirectUvFromDirection(const glm::dvec3& r) {
   const double longitude = std::atan2(r.x, -r.z);  // 0 towards -Z, pi/2 towards +X
   const double latitude = std::acos(std::clamp(r.y / length, -1.0, 1.0));  // 0 at +Y
   return {0.5 + longitude / (2.0 * std::numbers::pi), latitude / std::numbers::pi};
+}
+
+int layerCount(EnvironmentParameterization kind) {
+  switch (kind) {
+    case EnvironmentParameterization::Sphere: return 1;
+    case EnvironmentParameterization::DualParaboloid: return 2;
+    case EnvironmentParameterization::Cube: break;
+  }
+  return kCubeFaces;
+}
+
+MapCoord mapCoordFromDirection(EnvironmentParameterization kind, const glm::dvec3& rIn) {
+  const double length = std::sqrt(rIn.x * rIn.x + rIn.y * rIn.y + rIn.z * rIn.z);
+  const glm::dvec3 r = length > 0.0 ? rIn / length : glm::dvec3(0.0, 0.0, 1.0);
+  MapCoord c;
+  if (kind == EnvironmentParameterization::Sphere) {
+    const double z1 = r.z + 1.0;
+    const double m = 2.0 * std::sqrt(r.x * r.x + r.y * r.y + z1 * z1);
+    if (m > 0.0) {
+      c.u = r.x / m + 0.5;
+      c.v = r.y / m + 0.5;
+    }
+    return c;
+  }
+  c.layer = r.z < 0.0 ? 1 : 0;
+  const double d = 1.0 + std::abs(r.z);
+  c.u = r.x / d * 0.5 + 0.5;
+  c.v = r.y / d * 0.5 + 0.5;
+  return c;
+}
+
+glm::dvec3 directionFromMapCoord(EnvironmentParameterization kind, int layer, double u, double v) {
+  const double a = 2.0 * u - 1.0, b = 2.0 * v - 1.0;
+  const double rho2 = a * a + b * b;
+  if (kind == EnvironmentParameterization::Sphere) {
+    // The ball's normal at (a, b) reflects the view direction -Z: r = (0, 0, -1) + 2 nz n.
+    if (rho2 >= 1.0) return {0.0, 0.0, -1.0};
+    const double nz = std::sqrt(1.0 - rho2);
+    return {2.0 * nz * a, 2.0 * nz * b, 2.0 * nz * nz - 1.0};
+  }
+  // The paraboloid z = (1 - rho^2) / 2 reflects +-Z into r = (2a, 2b, 1 - rho^2) / (1 + rho^2).
+  const double zSign = layer == 0 ? 1.0 : -1.0;
+  return glm::dvec3(2.0 * a, 2.0 * b, zSign * (1.0 - rho2)) / (1.0 + rho2);
+}
+
+glm::dvec3 cubeBilinear(const CubeMap& cube, const glm::dvec3& r) {
+  const CubeMapLevel& level = cube.levels.front();
+  const int size = level.size;
+  const CubeCoord c = cubeCoordFromDirection(r);
+  // A texel one step past an edge: the neighbour face's texel its centre's direction lands on.
+  const auto across = [&](int x, int y) {
+    const CubeCoord n = cubeCoordFromDirection(directionFromCubeCoord(c.face, (x + 0.5) / size, (y + 0.5) / size));
+    const int nx = std::clamp(static_cast<int>(std::floor(n.s * size)), 0, size - 1);
+    const int ny = std::clamp(static_cast<int>(std::floor(n.t * size)), 0, size - 1);
+    return glm::dvec3(level.texel(n.face, nx, ny));
+  };
+  const auto texel = [&](int x, int y) {
+    const bool outX = x < 0 || x >= size, outY = y < 0 || y >= size;
+    if (!outX && !outY) return glm::dvec3(level.texel(c.face, x, y));
+    if (!outX || !outY) return across(x, y);
+    // A corner: no such texel; the mean of the three that meet there.
+    const int cx = std::clamp(x, 0, size - 1), cy = std::clamp(y, 0, size - 1);
+    return (glm::dvec3(level.texel(c.face, cx, cy)) + across(x, cy) + across(cx, y)) / 3.0;
+  };
+  const double x = c.s * size - 0.5, y = c.t * size - 0.5;
+  const double x0 = std::floor(x), y0 = std::floor(y);
+  const double ax = x - x0, ay = y - y0;
+  const int ix = static_cast<int>(x0), iy = static_cast<int>(y0);
+  const glm::dvec3 lower = texel(ix, iy) * (1.0 - ax) + texel(ix + 1, iy) * ax;
+  const glm::dvec3 upper = texel(ix, iy + 1) * (1.0 - ax) + texel(ix + 1, iy + 1) * ax;
+  return lower * (1.0 - ay) + upper * ay;
+}
+
+glm::dvec3 mapBilinear(const ParameterizedMap& map, int level, const MapCoord& c) {
+  const CubeMapLevel& lv = map.levels[static_cast<std::size_t>(level)];
+  const int size = lv.size;
+  const double x = c.u * size - 0.5, y = c.v * size - 0.5;
+  const double x0 = std::floor(x), y0 = std::floor(y);
+  const double ax = x - x0, ay = y - y0;
+  const auto texel = [&](double tx, double ty) {
+    const int ix = static_cast<int>(std::clamp(tx, 0.0, size - 1.0)), iy = static_cast<int>(std::clamp(ty, 0.0, size - 1.0));
+    return glm::dvec3(lv.texel(c.layer, ix, iy));
+  };
+  const glm::dvec3 lower = texel(x0, y0) * (1.0 - ax) + texel(x0 + 1.0, y0) * ax;
+  const glm::dvec3 upper = texel(x0, y0 + 1.0) * (1.0 - ax) + texel(x0 + 1.0, y0 + 1.0) * ax;
+  return lower * (1.0 - ay) + upper * ay;
+}
+
+ParameterizedMap parameterizedMapFromCube(const CubeMap& cube, EnvironmentParameterization kind, int size) {
+  if (kind == EnvironmentParameterization::Cube || !isPowerOfTwo(size) || size > kMaxCubeFaceSize || cube.levels.empty()) {
+    throw InputError(cube.source + ": a " + std::string(toString(kind)) + " map of " + std::to_string(size) +
+                     " texels; expected a sphere or dual_paraboloid map with a power-of-two side in [1, " +
+                     std::to_string(kMaxCubeFaceSize) + "]");
+  }
+  ParameterizedMap map;
+  map.kind = kind;
+  map.layers = layerCount(kind);
+  CubeMapLevel level = allocateLevel(size, map.layers);
+  for (int layer = 0; layer < map.layers; ++layer) {
+    for (int y = 0; y < size; ++y) {
+      for (int x = 0; x < size; ++x) {
+        const glm::dvec3 c = cubeBilinear(cube, directionFromMapCoord(kind, layer, (x + 0.5) / size, (y + 0.5) / size));
+        const std::size_t i = level.index(layer, x, y);
+        level.r[i] = static_cast<float>(c.x);
+        level.g[i] = static_cast<float>(c.y);
+        level.b[i] = static_cast<float>(c.z);
+      }
+    }
+  }
+  map.levels.push_back(std::move(level));
+  buildMipChain(map.levels, map.layers);
+  return map;
 }
 
 }  // namespace twr

@@ -28,7 +28,7 @@
 namespace twr {
 
 // How directions become a 2D texture (the slides' three mappings). Cube is sampled directly;
-// sphere and dual_paraboloid are built from the source at `size` (not yet drawn: refused).
+// sphere and dual_paraboloid are built from the cube at `size` (ParameterizedMap below).
 enum class EnvironmentParameterization { Cube, Sphere, DualParaboloid };
 std::string_view toString(EnvironmentParameterization v);
 bool parse(std::string_view s, EnvironmentParameterization& out);
@@ -136,6 +136,47 @@ const CubeEdgeTable& cubeEdgeTable();
 // direction looks at, and back.
 glm::dvec2 equirectUvFromDirection(const glm::dvec3& r);
 
+// ---- Sphere and dual-paraboloid maps (docs/environment.md) ----
+// Square layers of side `size` built from the cube at load, which both renderers read as a 2D
+// array texture (one layer for a sphere map, two for a dual paraboloid), r a unit direction:
+//   sphere:           m = 2 sqrt(rx^2 + ry^2 + (rz + 1)^2),   (u, v) = (rx, ry) / m + 1/2
+//                     the picture of a mirror ball seen from far along +Z: its centre is +Z,
+//                     its rim -Z (where the map is most distorted)
+//   dual paraboloid:  (u, v) = (rx, ry) / (1 + |rz|) / 2 + 1/2,   layer 0 for rz >= 0, 1 below
+// Texel (x, y) of a layer is centred at ((x + 1/2) / size, (y + 1/2) / size); row 0 is v = 0,
+// uploaded first as the cube's faces are. The texels a layer holds beyond its disk: a
+// paraboloid's continue the formula into the other hemisphere, a sphere map's hold -Z.
+struct ParameterizedMap {
+  EnvironmentParameterization kind = EnvironmentParameterization::Sphere;
+  int layers = 1;
+  std::vector<CubeMapLevel> levels;  // each holds `layers` squares where a cube level holds six faces
+  int size() const { return levels.empty() ? 0 : levels.front().size; }
+  int levelCount() const { return static_cast<int>(levels.size()); }
+};
+int layerCount(EnvironmentParameterization kind);  // 1 sphere, 2 dual paraboloid (6 cube faces)
+
+// The formulas above in double: where direction r (any length) is read, and back (the
+// direction a layer's (u, v) holds, unit length).
+struct MapCoord {
+  int layer = 0;
+  double u = 0.5, v = 0.5;
+};
+MapCoord mapCoordFromDirection(EnvironmentParameterization kind, const glm::dvec3& r);
+glm::dvec3 directionFromMapCoord(EnvironmentParameterization kind, int layer, double u, double v);
+
+// The cube in direction r at level 0, bilinear and seamless across faces (GL's rule: a corner's
+// missing texel weighs as the mean of the other three), in double: the source a parameterized
+// map is built from and measured against.
+glm::dvec3 cubeBilinear(const CubeMap& cube, const glm::dvec3& r);
+// A layer of a parameterized map at level `level` and (u, v), bilinear with clamp to edge, in
+// double (the parameterization's error is measured with it).
+glm::dvec3 mapBilinear(const ParameterizedMap& map, int level, const MapCoord& c);
+
+// The map of `kind` (sphere or dual_paraboloid) at side `size` (a power of two, at most
+// kMaxCubeFaceSize): each texel the cube at its centre's direction (cubeBilinear), with the mip
+// chain built as the cube's (2x2 means in double).
+ParameterizedMap parameterizedMapFromCube(const CubeMap& cube, EnvironmentParameterization kind, int size);
+
 // The scene's environment (the scene file's top-level "environment").
 struct Environment {
   std::array<std::string, kCubeFaces> facePaths;  // set when read from six images
@@ -143,9 +184,12 @@ struct Environment {
   float intensity = 1.0f;                         // scales every environment read (unitless)
   bool background = true;                         // drawn as the sky box where no triangle is
   EnvironmentParameterization parameterization = EnvironmentParameterization::Cube;
-  int size = kDefaultEnvironmentSize;  // texels: the built map's side
+  int size = kDefaultEnvironmentSize;  // texels: the built map's side (an equirect's cube, or a sphere or paraboloid map)
   bool sizeGiven = false;
   std::shared_ptr<const CubeMap> cube;
+  // Built from the cube when the parameterization is not "cube" (null otherwise): both
+  // renderers then read it instead of the cube, on surfaces and in the sky box.
+  std::shared_ptr<const ParameterizedMap> layers;
 };
 
 }  // namespace twr

@@ -616,11 +616,8 @@ class SceneReader {
     if (const Json* v = find(j, "background")) env.background = readBool(*v, at("background"));
     if (const Json* v = find(j, "parameterization")) {
       env.parameterization = readEnum<EnvironmentParameterization>(*v, at("parameterization"));
-      if (env.parameterization != EnvironmentParameterization::Cube) {
-        fail(at("parameterization"), "\"" + std::string(toString(env.parameterization)) +
-                                         "\" is not drawn yet by this version; use \"cube\"");
-      }
     }
+    const bool builtMap = env.parameterization != EnvironmentParameterization::Cube;
     if (const Json* v = find(j, "size")) {
       env.size = readInt(*v, at("size"), kMinCubeFaceSize, kMaxCubeFaceSize);
       env.sizeGiven = true;
@@ -672,7 +669,7 @@ class SceneReader {
                                              "x" + std::to_string(sizes[0].second) + "; all six faces must have one size");
         }
       }
-      if (env.sizeGiven) {
+      if (env.sizeGiven && !builtMap) {
         scene_.warnings.push_back(fileName_ + ": " + at("size") + ": ignored: a \"cube\" environment keeps its faces' size");
       }
       std::array<FaceImage, kCubeFaces> faces;
@@ -715,8 +712,19 @@ class SceneReader {
                                   std::to_string(image.width) + "x" + std::to_string(image.height) +
                                   ", not 2:1; read as 360 x 180 degrees all the same (stretched)");
       }
-      if (!env.sizeGiven) env.size = defaultCubeSizeForEquirect(image.width);
-      env.cube = std::make_shared<const CubeMap>(cubeMapFromEquirect(image, env.size, env.equirectPath));
+      // A sphere or paraboloid map is built at `size` from a cube at the equirect's own
+      // resolution; a cube parameterization is the cube at `size`.
+      const int cubeSize = env.sizeGiven && !builtMap ? env.size : defaultCubeSizeForEquirect(image.width);
+      if (!env.sizeGiven) env.size = cubeSize;
+      env.cube = std::make_shared<const CubeMap>(cubeMapFromEquirect(image, cubeSize, env.equirectPath));
+    }
+    if (builtMap) {
+      // Unless given, twice the cube's side s: a sphere map's disk then holds the whole sphere
+      // in pi s^2 texels, about half the cube's 6 s^2.
+      if (!env.sizeGiven) env.size = std::clamp(2 * env.cube->size(), kDefaultEnvironmentSize, kMaxCubeFaceSize);
+      env.layers = std::make_shared<const ParameterizedMap>(
+          parameterizedMapFromCube(*env.cube, env.parameterization, env.size));
+      for (const CubeMapLevel& level : env.layers->levels) bytes += level.r.size() * 3 * sizeof(float);
     }
     for (const CubeMapLevel& level : env.cube->levels) bytes += level.r.size() * 3 * sizeof(float);
     if (bytes > textureBudget_) {

@@ -15,6 +15,7 @@ SkyUniformsT<T> makeSkyUniforms(const Scene& scene, int width, int height) {
   SkyUniformsT<T> sky;
   if (!scene.environment || !scene.environment->background || !scene.environment->cube) return sky;
   sky.cube = scene.environment->cube.get();
+  sky.layers = scene.environment->layers.get();
   // The view's axes in world space are the rows of viewFromWorld's rotation (lookAt).
   const glm::dmat4 view(viewFromWorld(scene.camera));
   const glm::dvec3 rightAxis(view[0][0], view[1][0], view[2][0]);

@@ -13,6 +13,7 @@ namespace twr {
 template <typename T>
 struct SkyUniformsT {
   const CubeMap* cube = nullptr;  // null: no sky (no environment, or background false)
+  const ParameterizedMap* layers = nullptr;  // not null: read instead of the cube
   T intensity = T(1);
   glm::vec<3, T> forward{T(0), T(0), T(-1)}, right{T(1), T(0), T(0)}, up{T(0), T(1), T(0)};
   glm::vec<2, T> ndcPerPixel{T(1)};  // 2 / width, 2 / height

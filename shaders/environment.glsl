@@ -1,12 +1,12 @@
 // The environment on a surface: the GLSL twin of softrender/environment-inl.h, function by
 // function, the same operations in the same order (docs/environment.md). Included between
 // surface_detail.glsl and phong.frag; empty unless the material mixes in an environment.
+// environmentRead (environment_map.glsl) reads the cube or the map built from it.
 // Permutation defines: HAS_ENVIRONMENT, ENVIRONMENT_MIRROR (environment_specular mirror),
 // ENVIRONMENT_REFRACTION (refraction_index given), FRESNEL_SCHLICK. Each read is texture():
 // its LOD from the direction's quad differences, which the C++ twin computes from the quad's
 // other pixels (setEnvironmentDifferencesLanes).
 #ifdef HAS_ENVIRONMENT
-uniform samplerCube environmentMap;
 uniform float environmentIntensity;  // scales every read
 uniform float reflectivity;          // [0, 1]
 uniform float refractionEta;         // n1 / n2
@@ -34,7 +34,7 @@ vec3 environmentMix(vec3 nl, vec3 vVec, vec3 t, vec3 b, vec3 n, vec3 base) {
   float nDotV = dot(nl, v);
   vec3 r = (2.0 * nDotV) * nl - v;  // reflect(-v, nl)
   vec3 reflectWorld = worldFromLighting(r, t, b, n);
-  vec3 reflected = texture(environmentMap, reflectWorld).rgb * environmentIntensity;
+  vec3 reflected = environmentRead(reflectWorld) * environmentIntensity;
   vec3 transmitted = base;
   float f0 = reflectivity;
 #ifdef ENVIRONMENT_REFRACTION
@@ -43,7 +43,7 @@ vec3 environmentMix(vec3 nl, vec3 vVec, vec3 t, vec3 b, vec3 n, vec3 base) {
   float k = 1.0 - (eta * eta) * (1.0 - nDotV * nDotV);
   float root = sqrt(max(k, 0.0));
   vec3 refracted = (0.0 - eta) * v - (root - eta * nDotV) * nl;
-  vec3 through = texture(environmentMap, worldFromLighting(refracted, t, b, n)).rgb * environmentIntensity;
+  vec3 through = environmentRead(worldFromLighting(refracted, t, b, n)) * environmentIntensity;
   transmitted = k < 0.0 ? reflected : through;
   float ratio = (1.0 - eta) / (1.0 + eta);
   f0 = ratio * ratio;

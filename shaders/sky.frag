@@ -1,7 +1,6 @@
 // The sky box: the environment in the pixel's view direction, its LOD from the direction's
-// quad differences (texture()). C++ twin:
+// quad differences (texture(), environment_map.glsl's environmentRead). C++ twin:
 // skyDirectionLanes and skyColourLanes in softrender/sky-inl.h, the same operations in order.
-uniform samplerCube environmentMap;
 uniform float environmentIntensity;
 uniform vec3 skyForward;   // the camera's -Z axis in world space
 uniform vec3 skyRight;     // its +X axis times tan(fov / 2) * aspect
@@ -13,6 +12,6 @@ layout(location = 0) out vec4 fragColour;
 void main() {
   vec2 ndc = gl_FragCoord.xy * ndcPerPixel - 1.0;  // gl_FragCoord.xy is the pixel centre
   vec3 dir = (skyForward + skyRight * ndc.x) + skyUp * ndc.y;
-  vec3 c = texture(environmentMap, dir).rgb * environmentIntensity;
+  vec3 c = environmentRead(dir) * environmentIntensity;
   fragColour = vec4(clamp(c, 0.0, 1.0), 1.0);
 }

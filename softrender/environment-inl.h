@@ -10,8 +10,9 @@
 // where transmitted is the Phong colour, or the refracted environment when the material
 // refracts (the reflected one under total internal reflection), and a direction found in
 // tangent space is brought to world space by the fragment's frame before the cube is read.
-// Each direction is read with texture(): the LOD from its differences across the pixel's 2x2
-// quad, as GLSL's fine dFdx / dFdy take them (cube_sample-inl.h, cubeLodLanes).
+// Each direction is read with texture(): a cube's LOD from its differences across the pixel's
+// 2x2 quad, as GLSL's fine dFdx / dFdy take them (cube_sample-inl.h, cubeLodLanes); a sphere
+// or paraboloid map's from its coordinate's quad differences (layer_sample-inl.h).
 // Shared source, included plainly and per Highway target (softrender/lanes.h).
 
 #if defined(TWR_LANES_HIGHWAY)
@@ -33,7 +34,7 @@
 
 #include "scene/environment.h"
 #include "softrender/environment_uniforms.h"
-#include "softrender/cube_sample-inl.h"
+#include "softrender/layer_sample-inl.h"
 #include "softrender/interpolate-inl.h"
 #include "softrender/lane_math-inl.h"
 #include "softrender/lanes.h"
@@ -113,13 +114,13 @@ TWR_LANE_INLINE EnvironmentTermsL<L> environmentLanes(const EnvironmentUniformsT
   const L zero(S(0)), one(S(1)), intensity(e.intensity);
   // Built from values, never default-constructed: a Highway mask has no default constructor
   // the per-target code may call (GCC refuses it on NEON).
-  const Vec3L<L> reflected = (sampleCubeGradLanes<L>)(*e.cube, d.reflectWorld, f.reflectDx, f.reflectDy) * intensity;
+  const Vec3L<L> reflected = (sampleEnvironmentLanes<L>)(*e.cube, e.layers, d.reflectWorld, f.reflectDx, f.reflectDy) * intensity;
   Vec3L<L> transmitted = base;
   const auto totalInternal = e.refraction ? d.k < zero : zero > one;  // zero > one: no lane
   L f0(e.reflectivity);
   if (e.refraction) {
     const L eta(e.eta);
-    const Vec3L<L> through = (sampleCubeGradLanes<L>)(*e.cube, d.refractWorld, f.refractDx, f.refractDy) * intensity;
+    const Vec3L<L> through = (sampleEnvironmentLanes<L>)(*e.cube, e.layers, d.refractWorld, f.refractDx, f.refractDy) * intensity;
     transmitted = select3<L>(totalInternal, reflected, through);
     const L ratio = (one - eta) / (one + eta);
     f0 = ratio * ratio;

@@ -11,6 +11,9 @@ template <typename S>
 struct EnvironmentUniformsT {
   // Null: the scene has no environment or the material does not use it; nothing is read.
   const CubeMap* cube = nullptr;
+  // Not null: the environment is read from this sphere or dual-paraboloid map instead of the
+  // cube (layer_sample-inl.h).
+  const ParameterizedMap* layers = nullptr;
   S intensity = S(1);
   bool mirror = false;      // environment_specular mirror: the reflection is read and mixed in
   bool refraction = false;  // refraction_index given: the refracted environment replaces the Phong colour

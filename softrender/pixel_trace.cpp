@@ -206,16 +206,40 @@ PixelTrace tracePixel(const Scene& scene, const RenderSettings& requested, int w
   if (trace.triangleId == kNoTriangle && drawsSky(scene, requested)) {
     const SkyUniformsT<float> sky = makeSkyUniforms(scene, width, height);
     const SkyReadL<float> read = skyReadLanes<float>(sky, static_cast<float>(x), static_cast<float>(trace.yGl));
-    const CubeCoordL<float> coord = cubeCoordLanes<float>(read.dir);
     trace.sky = true;
     trace.skyDirection = read.dir;
-    trace.skyFace = static_cast<int>(coord.face);
-    trace.skyFaceCoord = vec2(coord.s, coord.t);
-    trace.skyLod = cubeLodLanes<float>(read.dir, read.dx, read.dy, sky.cube->size());
+    if (sky.layers) {
+      const MapCoordL<float> coord = mapCoordLanes<float>(sky.layers->kind, read.dir);
+      trace.skyParameterization = sky.layers->kind;
+      trace.skyFace = static_cast<int>(coord.layer);
+      trace.skyFaceCoord = vec2(coord.u, coord.v);
+      trace.skyLod = mapLodLanes<float>(vec2(read.dx.x, read.dx.y), vec2(read.dy.x, read.dy.y), sky.layers->size());
+    } else {
+      const CubeCoordL<float> coord = cubeCoordLanes<float>(read.dir);
+      trace.skyFace = static_cast<int>(coord.face);
+      trace.skyFaceCoord = vec2(coord.s, coord.t);
+      trace.skyLod = cubeLodLanes<float>(read.dir, read.dx, read.dy, sky.cube->size());
+    }
   }
   trace.debugLine = output.lineMask[i] != 0;
   return trace;
 }
+
+namespace {
+
+// A parameterized map's layer as the trace names it.
+const char* layerName(const PixelTrace& tr) {
+  if (tr.skyParameterization == EnvironmentParameterization::Sphere) return "sphere";
+  return tr.skyFace == 0 ? "+Z half" : "-Z half";
+}
+// Where the sky was read, before its coordinate.
+std::string skyWhere(const PixelTrace& tr) {
+  if (tr.skyParameterization == EnvironmentParameterization::Cube) return std::string("face ") + kCubeFaceNames[tr.skyFace] + " at s, t";
+  if (tr.skyParameterization == EnvironmentParameterization::Sphere) return "sphere map at u, v";
+  return std::string("dual paraboloid, layer ") + std::to_string(tr.skyFace) + " (" + layerName(tr) + ") at u, v";
+}
+
+}  // namespace
 
 std::string formatPixelTrace(const PixelTrace& tr) {
   std::ostringstream o;
@@ -229,8 +253,10 @@ std::string formatPixelTrace(const PixelTrace& tr) {
     << (tr.debugLine ? ", a TBN debug line was drawn over it" : "") << "\n";
   if (tr.visits.empty()) o << "no triangle reaches this pixel\n";
   if (tr.sky) {
-    o << "sky box: direction (world) " << fmt(tr.skyDirection) << ", face " << kCubeFaceNames[tr.skyFace] << " at s, t "
-      << fmt(tr.skyFaceCoord) << ", LOD " << fmt(tr.skyLod) << " (from the direction's quad differences)\n";
+    o << "sky box: direction (world) " << fmt(tr.skyDirection) << ", " << skyWhere(tr) << " " << fmt(tr.skyFaceCoord)
+      << ", LOD " << fmt(tr.skyLod)
+      << (tr.skyParameterization == EnvironmentParameterization::Cube ? " (from the direction's quad differences)\n"
+                                                                       : " (from u, v's quad differences)\n");
   }
   for (std::size_t n = 0; n < tr.visits.size(); ++n) {
     const TriangleVisit& v = tr.visits[n];
@@ -398,7 +424,9 @@ nlohmann::json pixelTraceToJson(const PixelTrace& tr) {
   j["triangles"] = visits;
   if (tr.sky) {
     j["sky"] = {{"direction_world", toJson(tr.skyDirection)},
-                {"face", kCubeFaceNames[tr.skyFace]},
+                {"parameterization", std::string(toString(tr.skyParameterization))},
+                {"face", tr.skyParameterization == EnvironmentParameterization::Cube ? kCubeFaceNames[tr.skyFace]
+                                                                                       : layerName(tr)},
                 {"face_coord", toJson(tr.skyFaceCoord)},
                 {"lod", tr.skyLod}};
   }

@@ -75,8 +75,11 @@ struct PixelTrace {
   // No triangle, and the scene draws its sky box there: what the sky read (docs/environment.md).
   bool sky = false;
   vec3 skyDirection{0.0f};  // world space, unnormalised
-  int skyFace = 0;          // GL order: +X, -X, +Y, -Y, +Z, -Z
-  vec2 skyFaceCoord{0.0f};  // s, t on that face
+  // What was read: a cube's face (GL order: +X, -X, +Y, -Y, +Z, -Z) and s, t on it, or a
+  // sphere or paraboloid map's layer and u, v.
+  EnvironmentParameterization skyParameterization = EnvironmentParameterization::Cube;
+  int skyFace = 0;
+  vec2 skyFaceCoord{0.0f};
   float skyLod = 0.0f;      // texture()'s LOD, from the direction's quad differences
 };
 

@@ -162,7 +162,8 @@ TWR_LANE_INLINE SurfaceFrameL<L> surfaceFrameLanes(const FragmentL<L>& f, const 
 
 // The environment's direction differences at pixel (px, py) of the quad whose first column
 // and row are (qx, qy): GLSL's fine dFdx / dFdy of the reflected and refracted directions,
-// which texture(samplerCube, ...) takes its LOD from. A GPU shades the quad's four pixels
+// which texture(samplerCube, ...) takes its LOD from (for a sphere or paraboloid map, the
+// quad differences of the map's coordinate instead, layer_sample-inl.h). A GPU shades the quad's four pixels
 // together (helper pixels included) and differences the values; here the pixel's row partner
 // and column partner are interpolated from the triangle's planes and their directions found
 // as the shading finds them (surfaceFrameLanes, environmentDirectionsLanes). The pixel itself
@@ -185,6 +186,17 @@ TWR_LANE_OUTLINE void setEnvironmentDifferencesLanes(const VaryingPlanesL<L>& pl
     return (environmentDirectionsLanes<L>)(u.environment, frame.nl, eyeVec, frame.t, frame.b, frame.n, kTangentSpace);
   };
   const L one(S(1));
+  if (u.environment.layers) {
+    // A sphere or paraboloid map is a 2D texture: one LOD per quad, from the coordinate at
+    // the quad's first pixel, the one to its right and the one above.
+    const EnvironmentParameterization kind = u.environment.layers->kind;
+    const EnvironmentDirectionsL<L> first = directionsAt(qx, qy);
+    const EnvironmentDirectionsL<L> right = directionsAt(qx + one, qy);
+    const EnvironmentDirectionsL<L> above = directionsAt(qx, qy + one);
+    (mapDifferencesLanes<L>)(kind, first.reflectWorld, right.reflectWorld, above.reflectWorld, f.reflectDx, f.reflectDy);
+    (mapDifferencesLanes<L>)(kind, first.refractWorld, right.refractWorld, above.refractWorld, f.refractDx, f.refractDy);
+    return;
+  }
   // The partners: the other column of the pixel's row, the other row of its column.
   const auto firstColumn = px == qx, firstRow = py == qy;
   const EnvironmentDirectionsL<L> own = directionsAt(px, py);

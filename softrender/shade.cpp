@@ -73,6 +73,7 @@ ShadeUniformsT<T> makeShadeUniforms(const Material& material, const Scene& scene
   if (scene.environment && scene.environment->cube && environmentUsed) {
     EnvironmentUniformsT<T>& e = u.environment;
     e.cube = scene.environment->cube.get();
+    e.layers = scene.environment->layers.get();
     e.intensity = static_cast<T>(scene.environment->intensity);
     e.mirror = material.environmentSpecular == EnvironmentSpecular::Mirror;
     e.refraction = material.refractionIndex > 0.0f;

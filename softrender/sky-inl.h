@@ -18,7 +18,7 @@
 #ifdef TWR_SKY_INL_EMIT
 #undef TWR_SKY_INL_EMIT
 
-#include "softrender/cube_sample-inl.h"
+#include "softrender/layer_sample-inl.h"
 #include "softrender/lane_math-inl.h"
 #include "softrender/lanes.h"
 #include "softrender/sky.h"
@@ -50,6 +50,13 @@ TWR_LANE_INLINE SkyReadL<L> skyReadLanes(const SkyUniformsT<ScalarOf<L>>& sky, c
   const L qx = floorOf(px * half) * two, qy = floorOf(py * half) * two;
   SkyReadL<L> read;
   read.dir = (skyDirectionLanes<L>)(sky, px, py);
+  if (sky.layers) {
+    // A 2D map: its coordinate's differences at the quad's first pixel (layer_sample-inl.h).
+    (mapDifferencesLanes<L>)(sky.layers->kind, (skyDirectionLanes<L>)(sky, qx, qy),
+                             (skyDirectionLanes<L>)(sky, qx + one, qy), (skyDirectionLanes<L>)(sky, qx, qy + one),
+                             read.dx, read.dy);
+    return read;
+  }
   read.dx = (skyDirectionLanes<L>)(sky, qx + one, py) - (skyDirectionLanes<L>)(sky, qx, py);
   read.dy = (skyDirectionLanes<L>)(sky, px, qy + one) - (skyDirectionLanes<L>)(sky, px, qy);
   return read;
@@ -62,7 +69,7 @@ TWR_LANE_INLINE Vec3L<L> skyColourLanes(const SkyUniformsT<ScalarOf<L>>& sky, co
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1));
   const SkyReadL<L> read = (skyReadLanes<L>)(sky, px, py);
-  const Vec3L<L> c = (sampleCubeGradLanes<L>)(*sky.cube, read.dir, read.dx, read.dy) * L(sky.intensity);
+  const Vec3L<L> c = (sampleEnvironmentLanes<L>)(*sky.cube, sky.layers, read.dir, read.dx, read.dy) * L(sky.intensity);
   return Vec3L<L>(minOf(maxOf(c.x, zero), one), minOf(maxOf(c.y, zero), one), minOf(maxOf(c.z, zero), one));
 }
 

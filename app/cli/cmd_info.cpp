@@ -220,6 +220,11 @@ Json environmentJson(const Scene& scene) {
          {"background", e.background},
          {"face_size", e.cube ? e.cube->size() : 0},
          {"levels", e.cube ? e.cube->levelCount() : 0}};
+  if (e.layers) {
+    j["map_size"] = e.layers->size();
+    j["map_layers"] = e.layers->layers;
+    j["map_levels"] = e.layers->levelCount();
+  }
   if (e.equirectPath.empty()) {
     j["cube"] = Json(e.facePaths);
   } else {
@@ -330,6 +335,10 @@ void printScene(std::ostream& out, const Scene& scene) {
         << ", " << (e.cube ? e.cube->size() : 0) << "x" << (e.cube ? e.cube->size() : 0) << " per face, "
         << (e.cube ? e.cube->levelCount() : 0) << " levels, intensity " << num(e.intensity)
         << (e.background ? ", drawn as the sky box" : ", no sky box") << "\n";
+    if (e.layers) {
+      out << "  read as a " << toString(e.parameterization) << " map built from the cube: " << e.layers->layers << " x "
+          << e.layers->size() << "x" << e.layers->size() << ", " << e.layers->levelCount() << " levels\n";
+    }
     for (const Material& m : scene.materials) {
       if (m.environmentSpecular == EnvironmentSpecular::None && m.refractionIndex <= 0.0f) continue;
       out << "  " << m.name << ": " << toString(m.environmentSpecular) << ", reflectivity " << num(m.reflectivity)

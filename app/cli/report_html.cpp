@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -382,6 +383,87 @@ std::string heightOverviewTable(const HeightFieldSection& section, const std::st
   return s.str();
 }
 
+// RMSE and worst error against the map's side (log2 axis), one line per parameterization.
+std::string parameterizationChartSvg(const ParameterizationSection& section) {
+  constexpr int kWidth = 560, kHeight = 260, kLeft = 60, kRight = 20, kTop = 20, kBottom = 40;
+  double top = 0.0;
+  int minLog = 99, maxLog = 0;
+  for (const ParameterizationRow& r : section.rows) {
+    top = std::max(top, r.error.p99);
+    const int l = static_cast<int>(std::lround(std::log2(r.size)));
+    minLog = std::min(minLog, l);
+    maxLog = std::max(maxLog, l);
+  }
+  if (section.rows.empty() || top <= 0.0 || maxLog <= minLog) return "";
+  const auto x = [&](int size) {
+    return kLeft + (std::log2(size) - minLog) / (maxLog - minLog) * (kWidth - kLeft - kRight);
+  };
+  const auto y = [&](double v) { return kTop + (1.0 - v / top) * (kHeight - kTop - kBottom); };
+  std::ostringstream s;
+  s << "<svg width=\"" << kWidth << "\" height=\"" << kHeight << "\" font-size=\"11\" font-family=\"sans-serif\">\n";
+  s << "<line x1=\"" << kLeft << "\" y1=\"" << y(0) << "\" x2=\"" << kWidth - kRight << "\" y2=\"" << y(0)
+    << "\" stroke=\"#888\"/>\n<line x1=\"" << kLeft << "\" y1=\"" << kTop << "\" x2=\"" << kLeft << "\" y2=\"" << y(0)
+    << "\" stroke=\"#888\"/>\n";
+  for (int l = minLog; l <= maxLog; ++l) {
+    s << "<text x=\"" << x(1 << l) << "\" y=\"" << kHeight - 22 << "\" text-anchor=\"middle\">" << (1 << l) << "</text>\n";
+  }
+  s << "<text x=\"" << (kWidth + kLeft) / 2 << "\" y=\"" << kHeight - 6 << "\" text-anchor=\"middle\">map side (texels)</text>\n";
+  for (int k = 0; k <= 4; ++k) {
+    const double v = top * k / 4.0;
+    s << "<text x=\"" << kLeft - 6 << "\" y=\"" << y(v) + 4 << "\" text-anchor=\"end\">" << std::fixed
+      << std::setprecision(1) << v << "</text>\n";
+  }
+  s << "<text x=\"12\" y=\"" << kTop + 60 << "\" transform=\"rotate(-90 12 " << kTop + 60
+    << ")\" text-anchor=\"middle\">levels</text>\n";
+  const struct {
+    EnvironmentParameterization kind;
+    const char* colour;
+  } lines[] = {{EnvironmentParameterization::Sphere, "#c0392b"}, {EnvironmentParameterization::DualParaboloid, "#2471a3"}};
+  int legendY = kTop;
+  for (const auto& line : lines) {
+    for (const bool p99 : {false, true}) {
+      s << "<polyline fill=\"none\" stroke=\"" << line.colour << "\" stroke-width=\"2\""
+        << (p99 ? " stroke-dasharray=\"5 3\"" : "") << " points=\"";
+      for (const ParameterizationRow& r : section.rows) {
+        if (r.kind == line.kind) s << x(r.size) << "," << y(p99 ? r.error.p99 : r.error.rmse) << " ";
+      }
+      s << "\"/>\n";
+      s << "<text x=\"" << kWidth - kRight - 150 << "\" y=\"" << legendY + 10 << "\" fill=\"" << line.colour << "\">"
+        << toString(line.kind) << (p99 ? " 99th percentile" : " RMSE") << "</text>\n";
+      legendY += 14;
+    }
+  }
+  s << "</svg>\n";
+  return s.str();
+}
+
+std::string parameterizationsHtml(const ParameterizationSection& section) {
+  std::ostringstream s;
+  s << "<h2 id=\"environment_parameterizations\">Environment parameterizations</h2>\n";
+  s << "<p>A sphere map and a dual-paraboloid map built from " << escape(section.source)
+    << " at each size, read at level 0 with bilinear filtering, against the cube read exactly in the same direction, "
+       "over directions spread evenly on the sphere. The error of a direction is its largest channel's difference in "
+       "8-bit levels (both clamped to [0, 1]). Source: scene/environment_error.cpp; docs/environment.md.</p>\n";
+  s << "<div class=\"reading\"><b>" << escape(section.summary) << "</b><br>" << escape(section.reading) << "</div>\n";
+  if (!section.skipped.empty()) return s.str();
+  s << parameterizationChartSvg(section);
+  s << "<table><thead><tr><th>mapping</th><th>side</th><th>directions</th><th>RMSE</th><th>99th percentile</th>"
+       "<th>worst</th><th>worst direction</th><th>build ms</th></tr></thead>\n<tbody>\n";
+  for (const ParameterizationRow& r : section.rows) {
+    const glm::dvec3& w = r.error.worstDirection;
+    s << "<tr><td>" << toString(r.kind) << "</td><td>" << r.size << "</td><td>" << r.error.directions << "</td><td>"
+      << std::fixed << std::setprecision(2) << r.error.rmse << "</td><td>" << r.error.p99 << "</td><td>" << r.error.maxError
+      << "</td><td>(" << w.x << ", " << w.y << ", " << w.z << ")</td><td>" << std::setprecision(1) << r.buildMs
+      << "</td></tr>\n";
+  }
+  s << "</tbody></table>\n";
+  for (std::size_t i = 0; i < section.pictures.size(); ++i) {
+    s << "<figure><img src=\"" << escape(section.pictures[i]) << "\" alt=\"" << escape(section.captions[i])
+      << "\"><figcaption>" << escape(section.captions[i]) << "</figcaption></figure>\n";
+  }
+  return s.str();
+}
+
 std::string heightFieldsHtml(const HeightFieldSection& section) {
   std::ostringstream s;
   s << "<h2 id=\"height_fields\">Height fields: each method against the displaced surface</h2>\n";
@@ -442,6 +524,8 @@ void writeReportHtml(const std::string& path, const ReportData& data) {
       << "</li>\n";
   }
   s << "<li><a href=\"#height_fields\"><b>Height fields</b></a>: " << escape(data.heightFields.summary) << "</li>\n";
+  s << "<li><a href=\"#environment_parameterizations\"><b>Environment parameterizations</b></a>: "
+    << escape(data.parameterizations.summary) << "</li>\n";
   s << "<li><a href=\"#orthonormal_basis\"><b>Orthonormal bases</b></a>: " << escape(data.basisSummary) << "</li>\n";
   s << "</ul>\n";
 
@@ -454,6 +538,7 @@ void writeReportHtml(const std::string& path, const ReportData& data) {
   }
 
   s << heightFieldsHtml(data.heightFields);
+  s << parameterizationsHtml(data.parameterizations);
 
   s << "<h2 id=\"orthonormal_basis\">Orthonormal bases from a normal</h2>\n";
   s << "<p>Four ways to build two unit vectors b1, b2 with b1 x b2 = n from a unit normal alone, in float as a shader "

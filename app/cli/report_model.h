@@ -5,6 +5,7 @@
 #pragma once
 
 #include "compare/metrics.h"
+#include "scene/environment_error.h"
 #include "scene/orthonormal_basis.h"
 
 #include <cstdint>
@@ -92,6 +93,22 @@ struct BasisRow {
   double nsPerBasis = 0.0;  // nanoseconds per basis (float, one thread)
 };
 
+// The environment section (docs/environment.md): each built parameterization at each size
+// against the cube it was built from (scene/environment_error.h).
+struct ParameterizationRow {
+  EnvironmentParameterization kind = EnvironmentParameterization::Sphere;
+  int size = 0;                 // texels per side
+  ParameterizationError error;  // levels
+  double buildMs = 0.0;         // building the map and its chain, one thread
+};
+struct ParameterizationSection {
+  std::string source;                 // what the cube was read from
+  std::vector<ParameterizationRow> rows;
+  std::vector<std::string> pictures;  // file names beside report.html, with captions below
+  std::vector<std::string> captions;
+  std::string summary, reading, skipped;
+};
+
 struct ReportData {
   std::string generatedAt;  // local time
   std::string machine;      // CPU model, core count, GL renderer
@@ -101,6 +118,7 @@ struct ReportData {
   double seconds = 0.0;       // how long the whole run took
   std::vector<KnobResult> knobs;
   HeightFieldSection heightFields;
+  ParameterizationSection parameterizations;
   std::vector<BasisRow> bases;
   std::size_t basisDirections = 0;
   std::string basisSummary;

@@ -664,6 +664,48 @@ KnobReading readBases(const std::vector<BasisRow>& rows) {
   return r;
 }
 
+KnobReading readParameterizations(const ParameterizationSection& section) {
+  if (!section.skipped.empty()) return {"Not measured: " + section.skipped, section.skipped};
+  std::vector<const ParameterizationRow*> sphere, paraboloid;
+  for (const ParameterizationRow& r : section.rows) {
+    (r.kind == EnvironmentParameterization::Sphere ? sphere : paraboloid).push_back(&r);
+  }
+  if (sphere.empty() || paraboloid.empty() || sphere.size() != paraboloid.size()) return {};
+  const auto where = [](const glm::dvec3& r) {
+    return r.z < -0.9 ? std::string("within 26 degrees of -Z") : r.z > 0.9 ? std::string("near +Z")
+                                                                          : "at z = " + fmt("%.2f", r.z);
+  };
+  std::string s;
+  int paraboloidWins = 0;
+  for (std::size_t i = 0; i < sphere.size(); ++i) {
+    if (paraboloid[i]->error.rmse < sphere[i]->error.rmse) ++paraboloidWins;
+  }
+  const ParameterizationRow& s0 = *sphere.front();
+  const ParameterizationRow& s1 = *sphere.back();
+  const ParameterizationRow& p0 = *paraboloid.front();
+  const ParameterizationRow& p1 = *paraboloid.back();
+  s += "From " + std::to_string(s0.size) + " to " + std::to_string(s1.size) + " texels the sphere map's RMSE falls from " +
+       fmt("%.2f", s0.error.rmse) + " to " + fmt("%.2f", s1.error.rmse) + " levels and the dual paraboloid's from " +
+       fmt("%.2f", p0.error.rmse) + " to " + fmt("%.2f", p1.error.rmse) + ". ";
+  s += "The dual paraboloid has the lower RMSE at " + std::to_string(paraboloidWins) + " of " +
+       std::to_string(sphere.size()) + " sizes. ";
+  s += "The sphere map's worst direction at " + std::to_string(s1.size) + " is " + where(s1.error.worstDirection) +
+       " (" + fmt("%.1f", s1.error.maxError) + " levels)" +
+       (s1.error.worstDirection.z < -0.5 ? std::string(": towards its rim, where one texel spans the most directions "
+                                                       "(the error picture). ")
+                                         : std::string(". ")) +
+       "The paraboloid's worst is " + where(p1.error.worstDirection) + " (" +
+       fmt("%.1f", p1.error.maxError) + " levels), its two halves sampled within a factor of 4 in solid angle. ";
+  s += "Building costs " + fmt("%.0f", s1.buildMs) + " ms (sphere) and " + fmt("%.0f", p1.buildMs) + " ms (paraboloid) at " +
+       std::to_string(s1.size) + ", once at load.";
+  KnobReading r;
+  r.detail = s;
+  r.summary = "At " + std::to_string(s1.size) + " texels: sphere map RMSE " + fmt("%.2f", s1.error.rmse) + ", worst " +
+              fmt("%.1f", s1.error.maxError) + " levels " + where(s1.error.worstDirection) + "; dual paraboloid RMSE " +
+              fmt("%.2f", p1.error.rmse) + ", worst " + fmt("%.1f", p1.error.maxError) + ".";
+  return r;
+}
+
 KnobReading readHeightFields(const HeightFieldSection& section) {
   if (!section.measured) return {"Not measured: " + section.skipped, section.skipped};
   KnobReading r = readHeightFieldSection(section);

@@ -3,12 +3,14 @@
 #include "app/cli/report_analytic_sphere.h"
 #include "app/cli/report_height_fields.h"
 #include "app/cli/report_reading.h"
+#include "compare/colours.h"
 #include "compare/draw.h"
 #include "compare/interior.h"
 #include "compare/metrics.h"
 #include "compare/montage.h"
 #include "compare/side_by_side.h"
 #include "glrender/gl_renderer.h"
+#include "scene/environment_error.h"
 #include "scene/errors.h"
 #include "scene/primitives.h"
 #include "scene/scene_file.h"
@@ -22,6 +24,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
@@ -207,6 +210,7 @@ class Sweeper {
                                  const Scene& scene, int width, int height, const RenderOutput& reference,
                                  RenderOutput* outputCopy);
   void bases(ReportData& data);
+  void parameterizations(ParameterizationSection& section, const std::string& outDir);
 
   const ReportOptions& options_;
   std::ostream& progress_;
@@ -881,6 +885,93 @@ void Sweeper::bases(ReportData& data) {
   data.basisReading = reading.detail;
 }
 
+// An error picture (levels per direction, an equirect grid) as the heat map's colours, with
+// +Y along the top row and -Z at the centre.
+Image errorPicture(const std::vector<double>& levels, int width, int height) {
+  Image image = makeImage(width, height);
+  const HeatRamp ramp{64, HeatScale::Log};  // 64 levels and more get the top colour
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const double e = levels[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)];
+      const Rgb8 c = heatColour(static_cast<int>(std::lround(std::min(e, 255.0))), ramp);
+      std::uint8_t* p = image.pixel(x, y);
+      p[0] = c.r;
+      p[1] = c.g;
+      p[2] = c.b;
+      p[3] = 255;
+    }
+  }
+  return image;
+}
+
+// A built map's level 0 as an image, each layer side by side, v = 1 (+Y) along the top row.
+Image layersPicture(const ParameterizedMap& map) {
+  const CubeMapLevel& level = map.levels.front();
+  Image image = makeImage(level.size * map.layers, level.size);
+  for (int layer = 0; layer < map.layers; ++layer) {
+    for (int y = 0; y < level.size; ++y) {
+      for (int x = 0; x < level.size; ++x) {
+        const vec3 c = glm::clamp(level.texel(layer, x, level.size - 1 - y), vec3(0.0f), vec3(1.0f));
+        std::uint8_t* p = image.pixel(layer * level.size + x, y);
+        p[0] = static_cast<std::uint8_t>(std::lround(c.r * 255.0f));
+        p[1] = static_cast<std::uint8_t>(std::lround(c.g * 255.0f));
+        p[2] = static_cast<std::uint8_t>(std::lround(c.b * 255.0f));
+        p[3] = 255;
+      }
+    }
+  }
+  return image;
+}
+
+void Sweeper::parameterizations(ParameterizationSection& section, const std::string& outDir) {
+  // The asset tool's sky: six 256-texel faces with a sun, a horizon and a grid of fine lines.
+  const std::filesystem::path textures = std::filesystem::path(options_.assetsDir) / "textures";
+  std::array<FaceImage, kCubeFaces> faces;
+  std::array<std::string, kCubeFaces> paths;
+  const char* names[kCubeFaces] = {"px", "nx", "py", "ny", "pz", "nz"};
+  try {
+    for (int f = 0; f < kCubeFaces; ++f) {
+      paths[static_cast<std::size_t>(f)] = (textures / (std::string("sky_") + names[f] + ".png")).string();
+      faces[static_cast<std::size_t>(f)] = loadEnvironmentImage(paths[static_cast<std::size_t>(f)]);
+    }
+  } catch (const InputError& e) {
+    section.skipped = std::string("no sky to measure: ") + e.what();
+    return;
+  }
+  std::vector<std::string> warnings;
+  const CubeMap cube = cubeMapFromFaces(std::move(faces), paths, warnings);
+  section.source = "the asset tool's sky (textures/sky_*.png), " + std::to_string(cube.size()) + " texels per face";
+  const std::vector<int> sizes = options_.quick ? std::vector<int>{64, 256} : std::vector<int>{64, 128, 256, 512, 1024};
+  const std::size_t directions = options_.quick ? 20000 : 200000;
+  const int pictureWidth = options_.quick ? 256 : 512, pictureHeight = pictureWidth / 2;
+  for (EnvironmentParameterization kind : {EnvironmentParameterization::Sphere, EnvironmentParameterization::DualParaboloid}) {
+    for (int size : sizes) {
+      say("environment: " + std::string(toString(kind)) + " map at " + std::to_string(size));
+      ParameterizationRow row;
+      row.kind = kind;
+      row.size = size;
+      const auto start = std::chrono::steady_clock::now();
+      const ParameterizedMap map = parameterizedMapFromCube(cube, kind, size);
+      row.buildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      row.error = measureParameterizationError(cube, map, directions);
+      section.rows.push_back(row);
+      if (size != 256) continue;
+      const std::string mapName = "env_" + std::string(toString(kind)) + "_map.png";
+      savePng((std::filesystem::path(outDir) / mapName).string(), layersPicture(map));
+      section.pictures.push_back(mapName);
+      section.captions.push_back(std::string(toString(kind)) + " map at 256 texels, level 0" +
+                                 (kind == EnvironmentParameterization::Sphere ? " (centre +Z, rim -Z)"
+                                                                              : " (left: the +Z half, right: -Z)"));
+      const std::string errorName = "env_" + std::string(toString(kind)) + "_error.png";
+      savePng((std::filesystem::path(outDir) / errorName).string(),
+              errorPicture(parameterizationErrorImage(cube, map, pictureWidth, pictureHeight), pictureWidth, pictureHeight));
+      section.pictures.push_back(errorName);
+      section.captions.push_back("its error per direction against the cube, as an equirect (-Z at the centre, +Y at "
+                                 "the top; black 0, the ramp's top 64 levels and more)");
+    }
+  }
+}
+
 std::string machineDescription() {
   std::ifstream cpuinfo("/proc/cpuinfo");
   std::string line, model = "unknown CPU";
@@ -922,6 +1013,10 @@ ReportData Sweeper::run() {
   const KnobReading heightReading = readHeightFields(data.heightFields);
   data.heightFields.summary = heightReading.summary;
   data.heightFields.reading = heightReading.detail;
+  parameterizations(data.parameterizations, options_.outDir);
+  const KnobReading parameterizationReading = readParameterizations(data.parameterizations);
+  data.parameterizations.summary = parameterizationReading.summary;
+  data.parameterizations.reading = parameterizationReading.detail;
   bases(data);
   data.machine =
       machineDescription() + "; GL: " + glRendererString() + ", " + glVersionString() + "; " + glContextString();

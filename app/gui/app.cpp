@@ -482,7 +482,9 @@ void GuiApp::frame(bool& finalFrame, bool present) {
     state["anisotropy"] = doc_.scene.settings.anisotropy;
     state["environment"] = doc_.scene.environment
                                ? nlohmann::json{{"intensity", doc_.scene.environment->intensity},
-                                                {"background", doc_.scene.environment->background}}
+                                                {"background", doc_.scene.environment->background},
+                                                {"parameterization", std::string(toString(doc_.scene.environment->parameterization))},
+                                                {"map_size", doc_.scene.environment->layers ? doc_.scene.environment->layers->size() : 0}}
                                : nlohmann::json(nullptr);
     state["view"] = std::string(toString(doc_.scene.settings.view));
   }

@@ -210,6 +210,36 @@ void GuiApp::drawSceneTab() {
     changed |= ImGui::Checkbox("sky box", &env.background);
     itemTooltip("Draw the environment where no triangle is, in the shaded view (background).");
     probe_.item("environment_background");
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+    if (ImGui::BeginCombo("parameterization", std::string(toString(env.parameterization)).c_str())) {
+      for (const EnvironmentParameterization kind : {EnvironmentParameterization::Cube, EnvironmentParameterization::Sphere,
+                                                     EnvironmentParameterization::DualParaboloid}) {
+        const bool chosen = kind == env.parameterization;
+        if (ImGui::Selectable(std::string(toString(kind)).c_str(), chosen) && !chosen && env.cube) {
+          // Built here from the cube, as the scene file builds it (a 1024-texel map takes
+          // well under a second).
+          env.parameterization = kind;
+          if (kind == EnvironmentParameterization::Cube) {
+            env.layers = nullptr;
+          } else {
+            const int size = env.sizeGiven ? env.size : std::clamp(2 * env.cube->size(), kDefaultEnvironmentSize, kMaxCubeFaceSize);
+            env.layers = std::make_shared<const ParameterizedMap>(parameterizedMapFromCube(*env.cube, kind, size));
+          }
+          changed = true;
+        }
+        probe_.item(concat("environment_parameterization_", toString(kind)).c_str());
+        if (chosen) ImGui::SetItemDefaultFocus();
+      }
+      ImGui::EndCombo();
+    }
+    itemTooltip("How both renderers read the environment: the cube, or a sphere or dual-paraboloid map built from it "
+                "(parameterization). Turn the camera to watch where each one distorts: the sphere map's rim is -Z, "
+                "the paraboloid's seam the z = 0 circle.");
+    probe_.item("environment_parameterization");
+    if (env.layers) {
+      ImGui::TextDisabled("read from a %s map: %d x %dx%d, %d levels", std::string(toString(env.parameterization)).c_str(),
+                          env.layers->layers, env.layers->size(), env.layers->size(), env.layers->levelCount());
+    }
   }
 
   sectionTitle("Nodes");

@@ -111,7 +111,13 @@ TEST(CliReport, QuickWritesHtmlAndCsvWithEveryKnob) {
 
   const std::string html = readFile(out / "report.html");
   expectContains(html, "<!DOCTYPE html>");
-  EXPECT_EQ(count(html, "<svg"), 9u + 8u) << "one chart per knob and per height-field view";
+  EXPECT_EQ(count(html, "<svg"), 9u + 8u + 1u) << "one chart per knob, per height-field view and the environment's";
+  expectContains(html, "id=\"environment_parameterizations\"");
+  expectContains(html, "<img src=\"env_sphere_error.png\"");
+  for (const char* picture : {"env_sphere_map.png", "env_sphere_error.png", "env_dual_paraboloid_map.png",
+                              "env_dual_paraboloid_error.png"}) {
+    EXPECT_TRUE(std::filesystem::exists(out / picture)) << picture;
+  }
   expectContains(html, "id=\"height_fields\"");
   expectContains(html, "Parallax does not move silhouettes");
   expectContains(html, "<img src=\"height_fields_bricks_70.png\"");

@@ -59,6 +59,8 @@ inline constexpr SceneTolerance kSceneTolerances[] = {
     {"env_sky_box.json"},  // a cube corner and two edges filling the frame: seamless filtering
     {"env_mirror_sphere.json"},
     {"env_glass_sphere.json"},
+    {"env_sphere_map.json"},        // the mirror sphere and sky read from a sphere map (rim at -Z, ahead)
+    {"env_dual_paraboloid.json"},  // from a dual paraboloid, the seam between its halves in view
 };
 
 }  // namespace twr::suite

@@ -648,6 +648,16 @@ TEST(GuiScripted, EnvironmentControlsRedrawBothBackends) {
   s = afterEdit(
       "the sky box off", [&] { app.click("environment_background"); },
       [](const json& st) { return !st["environment"]["background"].get<bool>(); });
+  // The sky back on, read from a dual-paraboloid map built on the spot: both backends agree.
+  afterEdit(
+      "the sky box on", [&] { app.click("environment_background"); },
+      [](const json& st) { return st["environment"]["background"].get<bool>(); });
+  app.scrollTo("environment_parameterization");
+  s = afterEdit(
+      "dual paraboloid",
+      [&] { app.pick("environment_parameterization", "environment_parameterization_dual_paraboloid"); },
+      [](const json& st) { return st["environment"]["parameterization"] == "dual_paraboloid"; });
+  EXPECT_EQ(s["environment"]["map_size"].get<int>(), 512) << s.dump(1);  // twice the 256-texel faces
   EXPECT_FALSE(s.contains("panel_faults")) << s.dump(1);
   EXPECT_EQ(app.quit(), 0) << app.err();
 }

@@ -207,5 +207,90 @@ TEST(LoadEnvironmentImage, ReadsBytesAsUnitFloatsAndNamesAMissingFile) {
   }
 }
 
+// The sphere and paraboloid formulas both ways: every direction a map can hold comes back
+// from its own coordinate (the sphere map's -Z, its rim, is one point; a hair away it holds).
+TEST(MapCoord, DirectionsRoundTripThroughEachParameterization) {
+  std::mt19937 random(17);
+  std::normal_distribution<double> gaussian;
+  for (EnvironmentParameterization kind : {EnvironmentParameterization::Sphere, EnvironmentParameterization::DualParaboloid}) {
+    for (int i = 0; i < 2000; ++i) {
+      glm::dvec3 r(gaussian(random), gaussian(random), gaussian(random));
+      r = glm::normalize(r);
+      if (kind == EnvironmentParameterization::Sphere && r.z < -0.999) continue;
+      const MapCoord c = mapCoordFromDirection(kind, r * 3.0);  // any length
+      ASSERT_GE(c.u, 0.0);
+      ASSERT_LE(c.u, 1.0);
+      const glm::dvec3 back = directionFromMapCoord(kind, c.layer, c.u, c.v);
+      EXPECT_NEAR(glm::length(back - r), 0.0, 1e-9) << toString(kind) << " r " << r.x << ", " << r.y << ", " << r.z;
+    }
+  }
+  // The sphere map's centre is +Z and its rim -Z; a paraboloid's layer 0 holds +Z, layer 1 -Z.
+  const MapCoord centre = mapCoordFromDirection(EnvironmentParameterization::Sphere, {0, 0, 1});
+  EXPECT_DOUBLE_EQ(centre.u, 0.5);
+  EXPECT_DOUBLE_EQ(centre.v, 0.5);
+  EXPECT_NEAR(mapCoordFromDirection(EnvironmentParameterization::Sphere, {1, 0, -1e-9}).u, 0.5 + 0.5 / std::sqrt(2.0), 1e-6);
+  EXPECT_EQ(mapCoordFromDirection(EnvironmentParameterization::DualParaboloid, {0, 0, -1}).layer, 1);
+  EXPECT_EQ(mapCoordFromDirection(EnvironmentParameterization::DualParaboloid, {0, 1, 0}).layer, 0);
+  EXPECT_DOUBLE_EQ(mapCoordFromDirection(EnvironmentParameterization::DualParaboloid, {0, 1, 0}).v, 1.0);
+  EXPECT_EQ(layerCount(EnvironmentParameterization::Sphere), 1);
+  EXPECT_EQ(layerCount(EnvironmentParameterization::DualParaboloid), 2);
+}
+
+// A cube whose faces are six flat colours: a built map holds each face's colour where its
+// directions are, its chain halves to 1, and bilinear reads of map and cube agree away from
+// face edges.
+TEST(ParameterizedMap, BuiltFromTheCubeHoldsEachFaceWhereItsDirectionsAre) {
+  const std::array<vec3, kCubeFaces> colours = {vec3(1, 0, 0), vec3(0, 1, 0), vec3(0, 0, 1),
+                                                vec3(1, 1, 0), vec3(0, 1, 1), vec3(1, 0, 1)};
+  std::array<FaceImage, kCubeFaces> faces;
+  for (int f = 0; f < kCubeFaces; ++f) faces[static_cast<std::size_t>(f)] = constantFace(8, 8, colours[static_cast<std::size_t>(f)]);
+  std::vector<std::string> warnings;
+  const CubeMap cube = cubeMapFromFaces(faces, facePaths(), warnings);
+  const ParameterizedMap sphere = parameterizedMapFromCube(cube, EnvironmentParameterization::Sphere, 32);
+  EXPECT_EQ(sphere.levelCount(), 6);
+  EXPECT_EQ(sphere.levels.back().size, 1);
+  EXPECT_EQ(sphere.levels[0].r.size(), 32u * 32u);
+  // Centre: +Z (face 4); the corners, outside the disk: -Z (face 5).
+  EXPECT_EQ(sphere.levels[0].texel(0, 16, 16), colours[4]);
+  EXPECT_EQ(sphere.levels[0].texel(0, 0, 0), colours[5]);
+  const ParameterizedMap paraboloid = parameterizedMapFromCube(cube, EnvironmentParameterization::DualParaboloid, 32);
+  EXPECT_EQ(paraboloid.layers, 2);
+  EXPECT_EQ(paraboloid.levels[0].texel(0, 16, 16), colours[4]);
+  EXPECT_EQ(paraboloid.levels[0].texel(1, 16, 16), colours[5]);
+  // Layer 0's right edge looks along +X, its top row (v = 1) along +Y.
+  EXPECT_EQ(paraboloid.levels[0].texel(0, 31, 16), colours[0]);
+  EXPECT_EQ(paraboloid.levels[0].texel(0, 16, 31), colours[2]);
+  for (const glm::dvec3& r : {glm::dvec3(0.2, 0.1, 1), glm::dvec3(1, 0.3, -0.2), glm::dvec3(-0.1, -1, 0.3)}) {
+    for (const ParameterizedMap* map : {&sphere, &paraboloid}) {
+      const glm::dvec3 fromMap = mapBilinear(*map, 0, mapCoordFromDirection(map->kind, r));
+      const glm::dvec3 fromCube = cubeBilinear(cube, r);
+      EXPECT_NEAR(glm::length(fromMap - fromCube), 0.0, 1e-6) << toString(map->kind);
+    }
+  }
+  EXPECT_THROW(parameterizedMapFromCube(cube, EnvironmentParameterization::Sphere, 48), InputError);
+  EXPECT_THROW(parameterizedMapFromCube(cube, EnvironmentParameterization::Cube, 32), InputError);
+}
+
+// cubeBilinear is seamless: across an edge it blends the two faces, at a corner the three.
+TEST(CubeBilinear, BlendsAcrossEdgesAndCorners) {
+  const std::array<vec3, kCubeFaces> colours = {vec3(1, 0, 0), vec3(0, 1, 0), vec3(0, 0, 1),
+                                                vec3(1, 1, 0), vec3(0, 1, 1), vec3(1, 0, 1)};
+  std::array<FaceImage, kCubeFaces> faces;
+  for (int f = 0; f < kCubeFaces; ++f) faces[static_cast<std::size_t>(f)] = constantFace(4, 4, colours[static_cast<std::size_t>(f)]);
+  std::vector<std::string> warnings;
+  const CubeMap cube = cubeMapFromFaces(faces, facePaths(), warnings);
+  // On the +X / +Z edge, half of each.
+  const glm::dvec3 edge = cubeBilinear(cube, {1, 0, 1 + 1e-12});
+  EXPECT_NEAR(edge.x, 0.5, 1e-6);
+  EXPECT_NEAR(edge.y, 0.5, 1e-6);
+  EXPECT_NEAR(edge.z, 0.5, 1e-6);
+  // At the +X +Y +Z corner, a third of each.
+  const glm::dvec3 corner = cubeBilinear(cube, {1, 1, 1});
+  const glm::dvec3 third = (glm::dvec3(1, 0, 0) + glm::dvec3(0, 0, 1) + glm::dvec3(0, 1, 1)) / 3.0;
+  EXPECT_NEAR(glm::length(corner - third), 0.0, 1e-6);
+  // A face's centre is its own colour.
+  EXPECT_NEAR(glm::length(cubeBilinear(cube, {0, -1, 0}) - glm::dvec3(1, 1, 0)), 0.0, 1e-12);
+}
+
 }  // namespace
 }  // namespace twr

@@ -800,8 +800,6 @@ TEST(SceneFileErrors, EnvironmentKeys) {
   expectContains(parseError(withEnvironment(R"({"equirect": "x.png", "cube": []})")), {"environment: give either"});
   expectContains(parseError(withEnvironment(R"({"equirect": "x.png", "size": 300})")),
                  {"environment.size: expected a power of two in [1, 1024], got 300"});
-  expectContains(parseError(withEnvironment(R"({"equirect": "x.png", "parameterization": "sphere"})")),
-                 {"environment.parameterization: \"sphere\" is not drawn yet"});
   expectContains(parseError(withEnvironment(R"({"equirect": "x.png", "parameterization": "octahedral"})")),
                  {"environment.parameterization: expected one of cube|sphere|dual_paraboloid"});
   expectContains(parseError(withEnvironment(R"({"equirect": "x.png", "capture": {"node": "n"}})")),
@@ -839,6 +837,29 @@ TEST(SceneFile, EnvironmentFromSixFacesAndTheMaterialDefaults) {
   ASSERT_EQ(plain.warnings.size(), 1u);
   expectContains(plain.warnings[0], {"materials.m", "the scene has no \"environment\""});
   EXPECT_FALSE(plain.environment.has_value());
+}
+
+// A sphere or paraboloid parameterization builds its map from the cube: at twice the cube's
+// side unless "size" says, which then is the map's (no warning on six faces).
+TEST(SceneFile, EnvironmentParameterizationsBuildTheirMaps) {
+  const Scene sphere = parseScene(withEnvironment(R"({"cube": )" + kSixFaces + R"(, "parameterization": "sphere"})"),
+                                  kInline, kDataDir);
+  ASSERT_TRUE(sphere.environment && sphere.environment->layers);
+  EXPECT_EQ(sphere.environment->layers->kind, EnvironmentParameterization::Sphere);
+  EXPECT_EQ(sphere.environment->layers->layers, 1);
+  EXPECT_EQ(sphere.environment->layers->size(), 2 * sphere.environment->cube->size());
+  EXPECT_TRUE(sphere.warnings.empty());
+  const Scene paraboloid = parseScene(
+      withEnvironment(R"({"cube": )" + kSixFaces + R"(, "parameterization": "dual_paraboloid", "size": 64})"), kInline,
+      kDataDir);
+  ASSERT_TRUE(paraboloid.environment && paraboloid.environment->layers);
+  EXPECT_EQ(paraboloid.environment->layers->layers, 2);
+  EXPECT_EQ(paraboloid.environment->layers->size(), 64);
+  EXPECT_EQ(paraboloid.environment->layers->levelCount(), 7);
+  EXPECT_EQ(paraboloid.environment->cube->size(), 256);  // the faces' own
+  EXPECT_TRUE(paraboloid.warnings.empty());
+  const Scene cube = parseScene(withEnvironment(R"({"cube": )" + kSixFaces + R"(})"), kInline, kDataDir);
+  EXPECT_FALSE(cube.environment->layers);
 }
 
 }  // namespace

@@ -431,6 +431,23 @@ TEST(PixelTrace, ASkyPixelSaysWhereTheSkyLooked) {
   EXPECT_FALSE(tracePixel(scene, normals, 160, 120, 80, 30).sky);
 }
 
+// Under a sphere or paraboloid map the trace names the layer and its u, v (the formulas of
+// scene/environment.h) and the 2D LOD.
+TEST(PixelTrace, ASkyPixelUnderABuiltMapSaysWhichLayerAndWhere) {
+  for (const char* file : {"env_sphere_map.json", "env_dual_paraboloid.json"}) {
+    const Scene scene = loadSceneFile(std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes/" + file);
+    const PixelTrace tr = tracePixel(scene, scene.settings, 160, 120, 80, 4);
+    ASSERT_TRUE(tr.sky) << file;
+    EXPECT_EQ(tr.skyParameterization, scene.environment->parameterization) << file;
+    const MapCoord expected = mapCoordFromDirection(scene.environment->parameterization, glm::dvec3(tr.skyDirection));
+    EXPECT_EQ(tr.skyFace, expected.layer) << file;
+    EXPECT_NEAR(tr.skyFaceCoord.x, expected.u, 1e-5) << file;
+    EXPECT_NEAR(tr.skyFaceCoord.y, expected.v, 1e-5) << file;
+    EXPECT_TRUE(std::isfinite(tr.skyLod)) << file;
+    EXPECT_NE(formatPixelTrace(tr).find("at u, v"), std::string::npos) << file;
+  }
+}
+
 TEST(PixelTrace, ReportsCullingDepthFailuresAndClipping) {
   Scene scene = sceneWith(makeSphere(1.0f, 12, 24));
   scene.settings.userClipPlanes = {vec4(0, -1, 0, 0.2f)};  // keep y <= 0.2

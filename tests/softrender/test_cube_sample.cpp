@@ -213,5 +213,65 @@ TEST(EnvironmentTerms, ReflectRefractSchlickAndTotalInternalReflection) {
   EXPECT_EQ(tangent.reflected.x, 0.0f);  // face +X
 }
 
+// ---- Sphere and dual-paraboloid maps (layer_sample-inl.h) ----
+
+// The float formulas agree with the double ones; a texel centre reads that texel; the LOD is
+// the 2D rule on the coordinate's quad differences; levels blend.
+TEST(MapSample, CoordinatesTexelCentresAndLods) {
+  const CubeMap cube = labelledCube();
+  for (EnvironmentParameterization kind : {EnvironmentParameterization::Sphere, EnvironmentParameterization::DualParaboloid}) {
+    const ParameterizedMap map = parameterizedMapFromCube(cube, kind, 16);
+    for (const glm::dvec3& r : {glm::dvec3(0.3, -0.2, 0.9), glm::dvec3(-0.8, 0.5, -0.3), glm::dvec3(0.1, 0.99, 0.05)}) {
+      const MapCoord exact = mapCoordFromDirection(kind, r);
+      const MapCoordL<float> c = mapCoordLanes<float>(kind, Vec3L<float>(vec3(r * 2.0)));
+      EXPECT_EQ(static_cast<int>(c.layer), exact.layer) << toString(kind);
+      EXPECT_NEAR(c.u, exact.u, 1e-6) << toString(kind);
+      EXPECT_NEAR(c.v, exact.v, 1e-6) << toString(kind);
+    }
+    const CubeMapLevel& level0 = map.levels[0];
+    for (int layer = 0; layer < map.layers; ++layer) {
+      const MapCoordL<float> centre{static_cast<float>(layer), 5.5f / 16.0f, 9.5f / 16.0f};
+      const Vec3L<float> read = sampleMapLodLanes<float>(map, centre, 0.0f);
+      EXPECT_EQ(vec3(read.x, read.y, read.z), level0.texel(layer, 5, 9)) << toString(kind) << " layer " << layer;
+      // Off the edge: clamped to the edge texel.
+      const Vec3L<float> past = sampleMapLodLanes<float>(map, MapCoordL<float>{static_cast<float>(layer), -0.3f, 1.7f}, 0.0f);
+      EXPECT_EQ(vec3(past.x, past.y, past.z), level0.texel(layer, 0, 15));
+    }
+    // One texel per pixel along u is LOD 0, four texels along v LOD 2 (the larger axis).
+    EXPECT_EQ(mapLodLanes<float>(Vec2L<float>(1.0f / 16.0f, 0.0f), Vec2L<float>(0.0f, 4.0f / 16.0f), 16), 2.0f);
+    EXPECT_EQ(mapLodLanes<float>(Vec2L<float>(1.0f / 16.0f, 0.0f), Vec2L<float>(0.0f, 1.0f / 16.0f), 16), 0.0f);
+    // Half way between levels 1 and 2 at a layer's centre: the two levels' centre values blended.
+    const MapCoordL<float> middle{0.0f, 0.5f, 0.5f};
+    const Vec3L<float> a = sampleMapLodLanes<float>(map, middle, 1.0f), b = sampleMapLodLanes<float>(map, middle, 2.0f);
+    const Vec3L<float> blended = sampleMapLodLanes<float>(map, middle, 1.5f);
+    EXPECT_NEAR(blended.x, 0.5f * (a.x + b.x), 1e-5f);
+    EXPECT_NEAR(blended.y, 0.5f * (a.y + b.y), 1e-5f);
+  }
+}
+
+// sampleEnvironmentLanes reads the map when there is one, the cube otherwise; the map's
+// differences come from the coordinates at the quad's first pixel, its right and above.
+TEST(MapSample, TheEnvironmentReadsTheMapWhenThereIsOne) {
+  const CubeMap cube = labelledCube();
+  const ParameterizedMap map = parameterizedMapFromCube(cube, EnvironmentParameterization::Sphere, 16);
+  const Vec3L<float> r(vec3(0.2f, 0.1f, 0.95f));
+  const Vec3L<float> zero(vec3(0.0f));
+  const Vec3L<float> fromCube = sampleEnvironmentLanes<float>(cube, nullptr, r, zero, zero);
+  const Vec3L<float> cubeDirect = sampleCubeLodLanes<float>(cube, r, 0.0f);
+  EXPECT_EQ(vec3(fromCube.x, fromCube.y, fromCube.z), vec3(cubeDirect.x, cubeDirect.y, cubeDirect.z));
+  const Vec3L<float> fromMap = sampleEnvironmentLanes<float>(cube, &map, r, zero, zero);
+  const Vec3L<float> mapDirect = sampleMapLodLanes<float>(map, mapCoordLanes<float>(map.kind, r), 0.0f);
+  EXPECT_EQ(vec3(fromMap.x, fromMap.y, fromMap.z), vec3(mapDirect.x, mapDirect.y, mapDirect.z));
+  Vec3L<float> dx(zero), dy(zero);
+  const Vec3L<float> right(vec3(0.25f, 0.1f, 0.95f)), above(vec3(0.2f, 0.2f, 0.95f));
+  mapDifferencesLanes<float>(map.kind, r, right, above, dx, dy);
+  const MapCoordL<float> c0 = mapCoordLanes<float>(map.kind, r), cx = mapCoordLanes<float>(map.kind, right),
+                         cy = mapCoordLanes<float>(map.kind, above);
+  EXPECT_EQ(dx.x, cx.u - c0.u);
+  EXPECT_EQ(dx.y, cx.v - c0.v);
+  EXPECT_EQ(dy.y, cy.v - c0.v);
+  EXPECT_EQ(dx.z, 0.0f);
+}
+
 }  // namespace
 }  // namespace twr
