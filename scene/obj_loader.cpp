@@ -281,6 +281,28 @@ ObjPrescan prescanObj(const std::string& path, const std::string& text, std::siz
   return result;
 }
 
+// tinyobjloader's own extension "vw <vertex> <joint> <weight> ..." (skin weights) converts
+// each joint to int without a range check (undefined for 5e9, found by fuzzing), and this
+// tool draws no skinning. Each such line is blanked, keeping the line numbers, before
+// tinyobjloader sees the text; the returned warning names the first (empty if none).
+// The test is tinyobjloader's: after spaces and tabs, "vw" and a space or tab.
+std::string blankSkinWeightLines(const std::string& path, std::string& text) {
+  long long lineNumber = 0, firstLine = 0, count = 0;
+  for (std::size_t lineStart = 0; lineStart < text.size();) {
+    const std::size_t lineEnd = std::min(text.find('\n', lineStart), text.size());
+    ++lineNumber;
+    const std::size_t at = std::min(text.find_first_not_of(" \t", lineStart), lineEnd);
+    if (at + 2 < lineEnd && text[at] == 'v' && text[at + 1] == 'w' && (text[at + 2] == ' ' || text[at + 2] == '\t')) {
+      std::fill(text.begin() + static_cast<std::ptrdiff_t>(lineStart), text.begin() + static_cast<std::ptrdiff_t>(lineEnd), ' ');
+      if (count++ == 0) firstLine = lineNumber;
+    }
+    lineStart = lineEnd + 1;
+  }
+  if (count == 0) return {};
+  return path + ":" + std::to_string(firstLine) + ": 'vw' (skin weights, " + std::to_string(count) +
+         (count == 1 ? " line" : " lines") + ") is not drawn; the lines are ignored";
+}
+
 // An OBJ index (1-based, or negative = relative to the lines so far) is in range.
 bool objIndexInRange(long long index, long long countSoFar, long long countTotal) {
   if (index > 0) return index <= countTotal;
@@ -681,6 +703,7 @@ ObjModel loadObj(const std::string& path, const ObjLimits& limits, const ObjRead
   const std::size_t maxTriangles = limits.maxTriangles;
   std::string text = decodeText(readFileCapped(path, kMaxObjFileBytes, "OBJ file"), path);
   const ObjPrescan prescan = prescanObj(path, text, maxTriangles);
+  const std::string skinWeightWarning = blankSkinWeightLines(path, text);
   const std::vector<NamedLine> usedMaterials = encodeNamesAfter(text, "usemtl");
 
   tinyobj::attrib_t attrib;
@@ -700,6 +723,7 @@ ObjModel loadObj(const std::string& path, const ObjLimits& limits, const ObjRead
   // tinyobjloader; the model would silently render white, so both are errors here. (A
   // usemtl in a file without any mtllib is common in exports and just means no material.)
   std::vector<std::string> warnings = std::move(mtlReader.warnings());
+  if (!skinWeightWarning.empty()) warnings.push_back(skinWeightWarning);
   if (!mtlReader.firstFailure().empty()) {
     if (read.loadMaps) throw InputError(path + ": mtllib: " + mtlReader.firstFailure());
     warnings.push_back(path + ": mtllib: " + mtlReader.firstFailure() + " (the scene gives the node its own material)");

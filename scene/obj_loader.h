@@ -16,7 +16,7 @@ struct ObjModel {
   std::vector<Material> materials;  // parallel to meshes; name "" where the OBJ has none
   std::vector<bool> hasMaterial;    // false where the OBJ gave no material for that part
   // MTL keywords and texture options read and not used, a height map kept but not drawn, an
-  // MTL not read: one line each, "file:line: ...".
+  // MTL not read, skin-weight (vw) lines skipped: one line each, "file:line: ...".
   std::vector<std::string> warnings;
 };
 

@@ -235,6 +235,26 @@ TEST(ObjErrors, NonFiniteOrMalformedNumbers) {
   expectLoadError(writeCase("short", {{"short.obj", "v 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"}}), {":1", "at least 3"});
 }
 
+// tinyobjloader's skin-weight extension casts each joint to int unchecked (a joint of 5e9
+// was undefined behaviour, found by fuzzing). The lines are skipped with one warning that
+// names the first; the rest of the file loads as if they were not there.
+TEST(ObjLoad, SkinWeightLinesAreIgnoredWithAWarning) {
+  const std::string path = writeCase(
+      "skin_weights", {{"skin_weights.obj", std::string(kThreeVertices) + "vw 0 4294967296 1\n \tvw\t1 0 0.5 7e30 0.5\n" +
+                                                "vwx 2 0 1\nf 1 2 3\n"}});
+  const ObjModel model = loadObj(path);
+  ASSERT_EQ(model.meshes.size(), 1u);
+  EXPECT_EQ(model.meshes[0].indices.size(), 3u);
+  std::size_t mentions = 0;
+  for (const std::string& warning : model.warnings) {
+    if (warning.find("'vw'") == std::string::npos) continue;
+    ++mentions;
+    EXPECT_NE(warning.find(path + ":4:"), std::string::npos) << warning;
+    EXPECT_NE(warning.find("2 lines"), std::string::npos) << warning;
+  }
+  EXPECT_EQ(mentions, 1u);
+}
+
 TEST(ObjErrors, NoTriangles) {
   expectLoadError(writeCase("empty", {{"empty.obj", "# nothing here\n"}}), {"no triangles"});
   expectLoadError(writeCase("points_only", {{"points_only.obj", std::string(kThreeVertices) + "l 1 2\n"}}),
