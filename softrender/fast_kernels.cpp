@@ -6,6 +6,12 @@
 // instantiated with that target's LaneF. What is here is the fast path's own design: the
 // visibility pass, the slot buffer, gathering a vector's triangles, tiled textures.
 
+// The kernels compile in four objects, side by side on a two-core machine: each
+// fast_kernels_<group>.cpp defines TWR_FAST_KERNEL_TARGETS (a mask of Highway targets) and
+// includes this file, and only its targets' kernels are defined there. Compiled by itself,
+// this file defines no kernel: it holds the dispatch, which names every target's GetKernels.
+// (One object of all four targets took over ten minutes of one core.)
+//
 // clang-format off
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "softrender/fast_kernels.cpp"
@@ -123,6 +129,7 @@ HWY_AFTER_NAMESPACE();
 #include "softrender/output_merge-inl.h"
 #include "softrender/shade-inl.h"
 
+#if defined(TWR_FAST_KERNEL_TARGETS) && (HWY_TARGET & (TWR_FAST_KERNEL_TARGETS))
 HWY_BEFORE_NAMESPACE();
 namespace twr {
 namespace HWY_NAMESPACE {
@@ -426,10 +433,20 @@ FastKernels GetKernels() {
 }  // namespace HWY_NAMESPACE
 }  // namespace twr
 HWY_AFTER_NAMESPACE();
+#else
+// This target's kernels are in another object (its fast_kernels_<group>.cpp).
+HWY_BEFORE_NAMESPACE();
+namespace twr {
+namespace HWY_NAMESPACE {
+FastKernels GetKernels();
+}  // namespace HWY_NAMESPACE
+}  // namespace twr
+HWY_AFTER_NAMESPACE();
+#endif
 
 #include "softrender/lanes_target_end.h"
 
-#if HWY_ONCE
+#if HWY_ONCE && !defined(TWR_FAST_KERNEL_TARGETS)
 namespace twr {
 
 HWY_EXPORT(GetKernels);
@@ -517,4 +534,4 @@ TiledTexture makeTiledTexture(const Texture& texture) {
 }
 
 }  // namespace twr
-#endif  // HWY_ONCE
+#endif  // HWY_ONCE && !defined(TWR_FAST_KERNEL_TARGETS)

@@ -15,8 +15,9 @@ namespace twr {
 namespace HWY_NAMESPACE {
 
 // wrappedFloorIndex lane by lane, for coordinates too large for 32-bit lanes (a repeat count
-// that large is a test case, not a scene).
-HWY_NOINLINE LaneI wrapTexelIndexEachLane(int size, LaneF integral) {
+// that large is a test case, not a scene). Out of line, as the rare path; `inline` because
+// every kernel object (fast_kernels_<group>.cpp) includes this file for every target.
+inline HWY_NOINLINE LaneI wrapTexelIndexEachLane(int size, LaneF integral) {
   HWY_ALIGN float values[HWY_MAX_BYTES / sizeof(float)];
   HWY_ALIGN std::int32_t indices[HWY_MAX_BYTES / sizeof(float)];
   hn::Store(integral.v, DF(), values);

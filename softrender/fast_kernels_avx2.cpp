@@ -1,0 +1,4 @@
+// The fast path's kernels for AVX2 (x86-64): fast_kernels.cpp compiled for that target only
+// (the file explains the split); on another architecture this object is empty.
+#define TWR_FAST_KERNEL_TARGETS HWY_AVX2
+#include "softrender/fast_kernels.cpp"
