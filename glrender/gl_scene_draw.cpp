@@ -1,6 +1,7 @@
 #include "glrender/gl_scene_draw.h"
 
 #include "glrender/model_transforms.h"
+#include "scene/environment_light.h"
 #include "scene/errors.h"
 #include "scene/horizon_map.h"
 #include "scene/surface_detail.h"
@@ -21,6 +22,7 @@ constexpr GLint kSpecularUnit = 2;
 constexpr GLint kHeightUnit = 3;
 constexpr GLint kFirstHorizonUnit = 4;  // 4 to 7: one per 4 horizon azimuths
 constexpr GLint kEnvironmentUnit = 8;   // the environment's cube map
+constexpr GLint kIrradianceUnit = 9;    // its irradiance map (environment_diffuse irradiance_map)
 
 // The environment's texture on the active unit: the cube, or the sphere or paraboloid map.
 void bindEnvironment(GlUploadCache& uploads, const Environment& environment) {
@@ -39,10 +41,7 @@ std::vector<std::string> skyDefines(const Environment& environment) {
 }
 
 // Whether the material mixes in the scene's environment (softrender/shade.cpp decides the same).
-bool usesEnvironment(const Material& material, const Scene& scene) {
-  return scene.environment && scene.environment->cube &&
-         (material.environmentSpecular == EnvironmentSpecular::Mirror || material.refractionIndex > 0.0f);
-}
+bool usesEnvironment(const Material& material, const Scene& scene) { return materialReadsEnvironment(material, scene); }
 
 // A map without texels is treated as absent, as the CPU does (softrender/shade.cpp).
 bool usableMap(const std::shared_ptr<const Texture>& map) {
@@ -170,6 +169,22 @@ void setUniforms(GLuint program, const Scene& scene, const RenderSettings& setti
     glUniform1f(uniformLocation(program, "environmentIntensity"), scene.environment->intensity);
     glUniform1f(uniformLocation(program, "reflectivity"), material.reflectivity);
     glUniform1f(uniformLocation(program, "refractionEta"), material.refractionIndex > 0.0f ? material.refractionIndex : 1.0f);
+    const Environment& environment = *scene.environment;
+    const EnvironmentDiffuse diffuse = environmentDiffuseOf(material, environment);
+    if (diffuse == EnvironmentDiffuse::IrradianceMap) {
+      glUniform1i(uniformLocation(program, environment.irradianceLayers ? "environmentIrradianceLayers"
+                                                                         : "environmentIrradiance"),
+                  kIrradianceUnit);
+    } else if (diffuse == EnvironmentDiffuse::Sh9) {
+      std::array<float, 27> sh{};
+      for (std::size_t i = 0; i < 9; ++i) {
+        const vec3 c(environment.sh9->c[i]);  // rounded to float as the CPU's uniforms are
+        sh[3 * i] = c.x;
+        sh[3 * i + 1] = c.y;
+        sh[3 * i + 2] = c.z;
+      }
+      glUniform3fv(uniformLocation(program, "environmentSh9"), 9, sh.data());
+    }
   }
 }
 
@@ -226,7 +241,8 @@ std::vector<std::string> environmentMapDefines(const Environment& environment) {
   return defines;
 }
 
-std::vector<std::string> phongDefines(const Material& material, const RenderSettings& settings, bool environment) {
+std::vector<std::string> phongDefines(const Material& material, const RenderSettings& settings,
+                                      const Environment* environment) {
   std::vector<std::string> defines;
   if (usableMap(material.diffuseMap)) defines.push_back("HAS_DIFFUSE_MAP");
   const SurfaceDetailUse use = surfaceDetailUse(material, settings);
@@ -265,6 +281,11 @@ std::vector<std::string> phongDefines(const Material& material, const RenderSett
     if (material.environmentSpecular == EnvironmentSpecular::Mirror) defines.push_back("ENVIRONMENT_MIRROR");
     if (material.refractionIndex > 0.0f) defines.push_back("ENVIRONMENT_REFRACTION");
     if (material.fresnel == Fresnel::Schlick) defines.push_back("FRESNEL_SCHLICK");
+    const EnvironmentDiffuse diffuse = environmentDiffuseOf(material, *environment);
+    if (diffuse != EnvironmentDiffuse::None) {
+      defines.push_back("ENVIRONMENT_DIFFUSE");
+      defines.push_back(diffuse == EnvironmentDiffuse::IrradianceMap ? "ENVIRONMENT_IRRADIANCE" : "ENVIRONMENT_SH9");
+    }
   }
   defines.push_back(viewDefine(settings.view));
   return defines;
@@ -300,7 +321,7 @@ SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const S
     ProgramDesc desc{"phong",
                      {"common.glsl", "phong.vert"},
                      {"common.glsl", "surface_detail.glsl", "environment_map.glsl", "environment.glsl", "phong.frag"},
-                     phongDefines(material, settings, usesEnvironment(material, scene))};
+                     phongDefines(material, settings, usesEnvironment(material, scene) ? &*scene.environment : nullptr)};
     if (usesEnvironment(material, scene)) {
       for (std::string& d : environmentMapDefines(*scene.environment)) desc.defines.push_back(std::move(d));
     }
@@ -317,8 +338,17 @@ SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const S
       bindMap(material.horizonMap->textures[static_cast<std::size_t>(k)], kFirstHorizonUnit + k);
     }
     if (usesEnvironment(material, scene)) {
+      const Environment& environment = *scene.environment;
       glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + kEnvironmentUnit));
-      bindEnvironment(uploads, *scene.environment);
+      bindEnvironment(uploads, environment);
+      if (environmentDiffuseOf(material, environment) == EnvironmentDiffuse::IrradianceMap) {
+        glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + kIrradianceUnit));
+        if (environment.irradianceLayers) {
+          uploads.environmentLayers(environment.irradianceLayers);
+        } else {
+          uploads.cubeMap(environment.irradiance);
+        }
+      }
     }
     const GlMesh& mesh = uploads.mesh(*item.mesh);
     glBindVertexArray(mesh.vertexArray.id());

@@ -20,12 +20,13 @@ struct SceneDrawStats {
 };
 
 // The permutation defines of the phong program for one material (exposed for tests).
-// `environment`: the material mixes in the scene's environment (shaders/environment.glsl).
+// `environment`: the scene's environment when the material mixes it in (shaders/environment.glsl),
+// else null.
 // The defines that choose how the environment is read (shaders/environment_map.glsl):
 // ENVIRONMENT_SPHERE or ENVIRONMENT_DUAL_PARABOLOID for a built map, none for the cube.
 std::vector<std::string> environmentMapDefines(const Environment& environment);
 std::vector<std::string> phongDefines(const Material& material, const RenderSettings& settings,
-                                      bool environment = false);
+                                      const Environment* environment = nullptr);
 
 // Draws `items` into the bound framebuffer's current draw buffers, within the scissor the
 // caller set (GlRenderer: none for a frame, one pixel for renderGlPixel). Throws InputError for

@@ -177,6 +177,8 @@ glm::dvec3 mapBilinear(const ParameterizedMap& map, int level, const MapCoord& c
 // chain built as the cube's (2x2 means in double).
 ParameterizedMap parameterizedMapFromCube(const CubeMap& cube, EnvironmentParameterization kind, int size);
 
+struct Sh9Irradiance;  // scene/environment_light.h
+
 // The scene's environment (the scene file's top-level "environment").
 struct Environment {
   std::array<std::string, kCubeFaces> facePaths;  // set when read from six images
@@ -190,6 +192,12 @@ struct Environment {
   // Built from the cube when the parameterization is not "cube" (null otherwise): both
   // renderers then read it instead of the cube, on surfaces and in the sky box.
   std::shared_ptr<const ParameterizedMap> layers;
+  // The diffuse light (scene/environment_light.h), built from the cube at load when a material
+  // asks for it, null otherwise: the irradiance cube (one level), its sphere or paraboloid map
+  // when the parameterization is not "cube", and the nine SH coefficients.
+  std::shared_ptr<const CubeMap> irradiance;
+  std::shared_ptr<const ParameterizedMap> irradianceLayers;
+  std::shared_ptr<const Sh9Irradiance> sh9;
 };
 
 }  // namespace twr

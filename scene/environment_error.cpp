@@ -19,6 +19,45 @@ glm::dvec3 directionFromEquirect(double u, double v) {
   return {std::sin(latitude) * std::sin(longitude), std::cos(latitude), -std::sin(latitude) * std::cos(longitude)};
 }
 
+// A width x height equirect grid of f(direction), row 0 first.
+template <typename T, typename F>
+std::vector<T> equirectOf(int width, int height, F f) {
+  std::vector<T> image(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      image[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] =
+          f(directionFromEquirect((x + 0.5) / width, (y + 0.5) / height));
+    }
+  }
+  return image;
+}
+
+// Largest channel's |a - b|, levels.
+double levelsApart(const glm::dvec3& a, const glm::dvec3& b) {
+  const glm::dvec3 d = glm::abs(a - b);
+  return std::max({d.x, d.y, d.z}) * kLevelsPerUnit;
+}
+
+// RMSE, 99th percentile and worst of per-normal errors.
+DiffuseLightComparison summarise(std::vector<double> errors, const std::vector<glm::dvec3>& normals) {
+  DiffuseLightComparison c;
+  if (errors.empty()) return c;
+  double sumSquares = 0.0;
+  for (std::size_t i = 0; i < errors.size(); ++i) {
+    sumSquares += errors[i] * errors[i];
+    if (errors[i] > c.maxError) {
+      c.maxError = errors[i];
+      c.worstNormal = normals[i];
+    }
+  }
+  c.rmse = std::sqrt(sumSquares / static_cast<double>(errors.size()));
+  const std::size_t rank =
+      std::min(errors.size() - 1, static_cast<std::size_t>(std::ceil(0.99 * static_cast<double>(errors.size()))) - 1);
+  std::nth_element(errors.begin(), errors.begin() + static_cast<std::ptrdiff_t>(rank), errors.end());
+  c.p99 = errors[rank];
+  return c;
+}
+
 }  // namespace
 
 double parameterizationErrorAt(const CubeMap& cube, const ParameterizedMap& map, const glm::dvec3& r) {
@@ -33,13 +72,9 @@ ParameterizationError measureParameterizationError(const CubeMap& cube, const Pa
   e.directions = count;
   if (count == 0) return e;
   std::vector<double> errors(count);
-  const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));  // radians between neighbours
   double sumSquares = 0.0;
   for (std::size_t i = 0; i < count; ++i) {
-    const double z = 1.0 - (2.0 * static_cast<double>(i) + 1.0) / static_cast<double>(count);
-    const double radius = std::sqrt(std::max(0.0, 1.0 - z * z));
-    const double phi = golden * static_cast<double>(i);
-    const glm::dvec3 r(radius * std::cos(phi), radius * std::sin(phi), z);
+    const glm::dvec3 r = fibonacciSphereDirection(i, count);
     const double error = parameterizationErrorAt(cube, map, r);
     errors[i] = error;
     sumSquares += error * error;
@@ -56,15 +91,43 @@ ParameterizationError measureParameterizationError(const CubeMap& cube, const Pa
 }
 
 std::vector<double> parameterizationErrorImage(const CubeMap& cube, const ParameterizedMap& map, int width, int height) {
-  std::vector<double> image(static_cast<std::size_t>(std::max(width, 0)) * static_cast<std::size_t>(std::max(height, 0)));
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) {
-      const glm::dvec3 r = directionFromEquirect((x + 0.5) / width, (y + 0.5) / height);
-      image[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] =
-          parameterizationErrorAt(cube, map, r);
-    }
+  return equirectOf<double>(width, height, [&](const glm::dvec3& r) { return parameterizationErrorAt(cube, map, r); });
+}
+
+DiffuseLightError measureDiffuseLightError(const CubeMap& cube, const CubeMap& irradiance, const Sh9Irradiance& sh,
+                                           std::size_t normals, std::size_t samples, std::uint64_t seed) {
+  DiffuseLightError e;
+  e.normals = normals;
+  e.samples = samples;
+  std::vector<glm::dvec3> where(normals);
+  std::vector<double> mapError(normals), shError(normals), shMapError(normals);
+  double noiseSquares = 0.0;
+  for (std::size_t i = 0; i < normals; ++i) {
+    const glm::dvec3 n = fibonacciSphereDirection(i, normals);
+    where[i] = n;
+    const MonteCarloIrradiance reference = irradianceMonteCarloWithError(cube, n, samples, seed + i);
+    const glm::dvec3 fromMap = cubeBilinear(irradiance, n);
+    const glm::dvec3 fromSh = irradianceFromSh9(sh, n);
+    mapError[i] = levelsApart(fromMap, reference.mean);
+    shError[i] = levelsApart(fromSh, reference.mean);
+    shMapError[i] = levelsApart(fromSh, fromMap);
+    const double noise = std::max({reference.standardError.x, reference.standardError.y, reference.standardError.z}) *
+                         kLevelsPerUnit;
+    noiseSquares += noise * noise;
   }
-  return image;
+  if (normals > 0) e.referenceNoise = std::sqrt(noiseSquares / static_cast<double>(normals));
+  e.mapVsReference = summarise(std::move(mapError), where);
+  e.sh9VsReference = summarise(std::move(shError), where);
+  e.sh9VsMap = summarise(std::move(shMapError), where);
+  return e;
+}
+
+std::vector<glm::dvec3> irradianceCubeImage(const CubeMap& irradiance, int width, int height) {
+  return equirectOf<glm::dvec3>(width, height, [&](const glm::dvec3& r) { return cubeBilinear(irradiance, r); });
+}
+
+std::vector<glm::dvec3> sh9Image(const Sh9Irradiance& sh, int width, int height) {
+  return equirectOf<glm::dvec3>(width, height, [&](const glm::dvec3& r) { return irradianceFromSh9(sh, r); });
 }
 
 }  // namespace twr

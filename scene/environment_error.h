@@ -6,8 +6,10 @@
 #pragma once
 
 #include "scene/environment.h"
+#include "scene/environment_light.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace twr {
@@ -31,5 +33,30 @@ ParameterizationError measureParameterizationError(const CubeMap& cube, const Pa
 // convention: -Z at the centre, +X a quarter to the right, +Y along the top row), row 0 first,
 // in levels: a picture of where the mapping loses detail.
 std::vector<double> parameterizationErrorImage(const CubeMap& cube, const ParameterizedMap& map, int width, int height);
+
+// ---- The diffuse light (scene/environment_light.h, docs/environment.md "Diffuse light") ----
+// D(n) from the irradiance cube (read at level 0, bilinear) and from SH9, each against a
+// Monte Carlo estimate over the source itself (irradianceMonteCarlo), and SH9 against the
+// cube; a normal's error is the largest channel's difference in levels (1/255 of the source's
+// unit, unclamped: D may exceed 1 under an HDR sky).
+struct DiffuseLightComparison {
+  double rmse = 0.0, p99 = 0.0, maxError = 0.0;  // levels, over the normals
+  glm::dvec3 worstNormal{0.0, 0.0, 1.0};
+};
+struct DiffuseLightError {
+  std::size_t normals = 0, samples = 0;  // normals on a Fibonacci sphere, Monte Carlo samples each
+  // The reference's own noise: the root mean square over the normals of its standard error
+  // (the samples' standard deviation over sqrt(samples), largest channel), levels. A
+  // comparison against the reference cannot resolve errors well below it.
+  double referenceNoise = 0.0;
+  DiffuseLightComparison mapVsReference, sh9VsReference, sh9VsMap;
+};
+DiffuseLightError measureDiffuseLightError(const CubeMap& cube, const CubeMap& irradiance, const Sh9Irradiance& sh,
+                                           std::size_t normals, std::size_t samples, std::uint64_t seed);
+
+// D at the centre of each pixel of a width x height equirect grid (the convention above), row
+// 0 first: from the irradiance cube, and from SH9.
+std::vector<glm::dvec3> irradianceCubeImage(const CubeMap& irradiance, int width, int height);
+std::vector<glm::dvec3> sh9Image(const Sh9Irradiance& sh, int width, int height);
 
 }  // namespace twr

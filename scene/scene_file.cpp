@@ -6,6 +6,7 @@
 #include "scene/json_text.h"
 
 #include "scene/errors.h"
+#include "scene/environment_light.h"
 #include "scene/obj_loader.h"
 #include "scene/primitives.h"
 #include "scene/read_file.h"
@@ -256,7 +257,8 @@ class SceneReader {
     if (const Json* j = find(root, "environment")) readEnvironment(*j, "environment");
     if (!scene_.environment) {
       for (const Material& m : scene_.materials) {
-        if (m.environmentSpecular != EnvironmentSpecular::None || m.refractionIndex > 0.0f) {
+        if (m.environmentSpecular != EnvironmentSpecular::None || m.refractionIndex > 0.0f ||
+            m.environmentDiffuse != EnvironmentDiffuse::None) {
           scene_.warnings.push_back(fileName_ + ": " + childPath("materials", m.name) +
                                     ": its environment keys are ignored: the scene has no \"environment\"");
         }
@@ -273,6 +275,8 @@ class SceneReader {
     for (std::size_t i = 0; i < nodes->size(); ++i) {
       scene_.nodes.push_back(readNode((*nodes)[i], indexPath("nodes", i), 1));
     }
+    // The environment's diffuse light, for the materials that ask for it (once, at load).
+    prefilterEnvironmentLight(scene_);
     return std::move(scene_);
   }
 
@@ -597,10 +601,6 @@ class SceneReader {
     }
     if (material.environmentSpecular == EnvironmentSpecular::Prefiltered) {
       fail(at("environment_specular"), "\"prefiltered\" is not drawn yet by this version; use \"mirror\" or \"none\"");
-    }
-    if (material.environmentDiffuse != EnvironmentDiffuse::None) {
-      fail(at("environment_diffuse"), "\"" + std::string(toString(material.environmentDiffuse)) +
-                                          "\" is not drawn yet by this version; use \"none\"");
     }
   }
 

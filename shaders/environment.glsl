@@ -3,7 +3,8 @@
 // surface_detail.glsl and phong.frag; empty unless the material mixes in an environment.
 // environmentRead (environment_map.glsl) reads the cube or the map built from it.
 // Permutation defines: HAS_ENVIRONMENT, ENVIRONMENT_MIRROR (environment_specular mirror),
-// ENVIRONMENT_REFRACTION (refraction_index given), FRESNEL_SCHLICK. Each read is texture():
+// ENVIRONMENT_REFRACTION (refraction_index given), FRESNEL_SCHLICK, ENVIRONMENT_DIFFUSE with
+// ENVIRONMENT_IRRADIANCE or ENVIRONMENT_SH9 (environment_diffuse). Each read is texture():
 // its LOD from the direction's quad differences, which the C++ twin computes from the quad's
 // other pixels (setEnvironmentDifferencesLanes).
 #ifdef HAS_ENVIRONMENT
@@ -58,4 +59,30 @@ vec3 environmentMix(vec3 nl, vec3 vVec, vec3 t, vec3 b, vec3 n, vec3 base) {
 #endif
   return transmitted + (reflected - transmitted) * share;
 }
+
+#ifdef ENVIRONMENT_DIFFUSE
+#ifdef ENVIRONMENT_SH9
+uniform vec3 environmentSh9[9];  // scene/environment_light.h's coefficients, band factors folded in
+#endif
+
+// The diffuse light at the lighting normal nl (scene/environment_light.h): nl in world space,
+// normalised, then the irradiance map read there at level 0, or the nine SH coefficients
+// evaluated left to right and clamped at 0; times the intensity.
+vec3 environmentDiffuse(vec3 nl, vec3 t, vec3 b, vec3 n) {
+  vec3 w = safeNormalize(worldFromLighting(nl, t, b, n));
+#ifdef ENVIRONMENT_IRRADIANCE
+  return environmentIrradianceRead(w) * environmentIntensity;
+#else
+  vec3 d = environmentSh9[0] + environmentSh9[1] * w.y;
+  d = d + environmentSh9[2] * w.z;
+  d = d + environmentSh9[3] * w.x;
+  d = d + environmentSh9[4] * (w.x * w.y);
+  d = d + environmentSh9[5] * (w.y * w.z);
+  d = d + environmentSh9[6] * ((3.0 * (w.z * w.z)) - 1.0);
+  d = d + environmentSh9[7] * (w.x * w.z);
+  d = d + environmentSh9[8] * ((w.x * w.x) - (w.y * w.y));
+  return max(d, vec3(0.0)) * environmentIntensity;
+#endif
+}
+#endif
 #endif

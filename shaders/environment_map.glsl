@@ -27,11 +27,27 @@ vec3 environmentCoord(vec3 rIn) {
 vec3 environmentRead(vec3 r) {
   return texture(environmentLayers, environmentCoord(r)).rgb;
 }
+#ifdef ENVIRONMENT_IRRADIANCE
+uniform sampler2DArray environmentIrradianceLayers;
+
+// The irradiance map of the same kind, one level (environment_diffuse irradiance_map).
+vec3 environmentIrradianceRead(vec3 r) {
+  return textureLod(environmentIrradianceLayers, environmentCoord(r), 0.0).rgb;
+}
+#endif
 #else
 uniform samplerCube environmentMap;
 
 vec3 environmentRead(vec3 r) {
   return texture(environmentMap, r).rgb;
 }
+#ifdef ENVIRONMENT_IRRADIANCE
+uniform samplerCube environmentIrradiance;
+
+// The irradiance cube, one level (environment_diffuse irradiance_map).
+vec3 environmentIrradianceRead(vec3 r) {
+  return textureLod(environmentIrradiance, r, 0.0).rgb;
+}
+#endif
 #endif
 #endif

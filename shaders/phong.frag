@@ -14,7 +14,8 @@
 // fragment's own uv differences, textureGrad), SELF_SHADOW_*; the views VIEW_HEIGHT,
 // VIEW_PARALLAX_OFFSET, VIEW_PARALLAX_STEPS, VIEW_SELF_SHADOW.
 // Environment (shaders/environment.glsl, included before this file): HAS_ENVIRONMENT,
-// ENVIRONMENT_MIRROR, ENVIRONMENT_REFRACTION, FRESNEL_SCHLICK.
+// ENVIRONMENT_MIRROR, ENVIRONMENT_REFRACTION, FRESNEL_SCHLICK, ENVIRONMENT_DIFFUSE (with
+// ENVIRONMENT_IRRADIANCE or ENVIRONMENT_SH9).
 // NO_TRIANGLE_ID: no triangle-id output, as an OpenGL user's shader has none (the lean
 // frame, glrender/gl_renderer.h; llvmpipe pays for gl_PrimitiveID even when no draw buffer
 // takes the output).
@@ -215,7 +216,11 @@ void main() {
   }
   vec3 ambientTerm = ka * albedo * ambient;
   colour = vec4(ambientTerm + sum, 1.0);
-#ifdef HAS_ENVIRONMENT
+#ifdef ENVIRONMENT_DIFFUSE
+  // The environment's diffuse light, added as the lights' diffuse terms are (environment.glsl).
+  colour = vec4(colour.rgb + (kd * albedo) * environmentDiffuse(nl, t, b, n), 1.0);
+#endif
+#if defined(ENVIRONMENT_MIRROR) || defined(ENVIRONMENT_REFRACTION)
   // The environment, mixed into the Phong colour (environment.glsl).
 #ifdef LIGHTING_TANGENT
   vec3 eyeVecEnvironment = eyeDirTangent;

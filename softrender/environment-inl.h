@@ -34,6 +34,7 @@
 
 #include "scene/environment.h"
 #include "softrender/environment_uniforms.h"
+#include "softrender/cube_sample-inl.h"
 #include "softrender/layer_sample-inl.h"
 #include "softrender/interpolate-inl.h"
 #include "softrender/lane_math-inl.h"
@@ -129,6 +130,37 @@ TWR_LANE_INLINE EnvironmentTermsL<L> environmentLanes(const EnvironmentUniformsT
   if (e.mirror) share = e.schlick ? (schlickLanes<L>)(f0, d.nDotV) : L(e.reflectivity);
   const Vec3L<L> colour = transmitted + (reflected - transmitted) * share;
   return EnvironmentTermsL<L>{d.reflectWorld, d.refractWorld, reflected, transmitted, share, totalInternal, colour};
+}
+
+// The diffuse light at the lighting normal nl (environment_diffuse, scene/environment_light.h):
+// nl brought to world space and normalised, then the irradiance cube (or its sphere or
+// paraboloid map) read there at level 0 (textureLod), or the nine SH coefficients evaluated
+//   D = c0 + c1 y + c2 z + c3 x + c4 (x y) + c5 (y z) + c6 (3 z^2 - 1) + c7 (x z) + c8 (x^2 - y^2)
+// left to right and clamped at 0; times the intensity. GLSL: environmentDiffuse.
+template <typename L>
+TWR_LANE_INLINE Vec3L<L> environmentDiffuseLanes(const EnvironmentUniformsT<ScalarOf<L>>& e, const Vec3L<L>& nl,
+                                                 const Vec3L<L>& t, const Vec3L<L>& b, const Vec3L<L>& n,
+                                                 bool tangentSpace) {
+  using S = ScalarOf<L>;
+  const L zero(S(0)), intensity(e.intensity);
+  const Vec3L<L> w = safeNormalize3<L>((worldFromLightingLanes<L>)(nl, t, b, n, tangentSpace));
+  if (e.diffuse == EnvironmentDiffuse::IrradianceMap) {
+    const Vec3L<L> read = e.irradianceLayers
+                              ? (sampleMapLodLanes<L>)(*e.irradianceLayers, (mapCoordLanes<L>)(e.irradianceLayers->kind, w), zero)
+                              : (sampleCubeLodLanes<L>)(*e.irradiance, w, zero);
+    return read * intensity;
+  }
+  const auto& c = e.sh9;
+  const L three(S(3)), one(S(1));
+  Vec3L<L> d = Vec3L<L>(c[0]) + Vec3L<L>(c[1]) * w.y;
+  d = d + Vec3L<L>(c[2]) * w.z;
+  d = d + Vec3L<L>(c[3]) * w.x;
+  d = d + Vec3L<L>(c[4]) * (w.x * w.y);
+  d = d + Vec3L<L>(c[5]) * (w.y * w.z);
+  d = d + Vec3L<L>(c[6]) * ((three * (w.z * w.z)) - one);
+  d = d + Vec3L<L>(c[7]) * (w.x * w.z);
+  d = d + Vec3L<L>(c[8]) * ((w.x * w.x) - (w.y * w.y));
+  return Vec3L<L>(maxOf(d.x, zero), maxOf(d.y, zero), maxOf(d.z, zero)) * intensity;
 }
 
 TWR_LANES_END

@@ -4,6 +4,10 @@
 #pragma once
 
 #include "scene/environment.h"
+#include "scene/settings.h"
+#include "softrender/precision.h"
+
+#include <array>
 
 namespace twr {
 
@@ -20,6 +24,15 @@ struct EnvironmentUniformsT {
   bool schlick = false;     // fresnel schlick
   S reflectivity = S(0);    // [0, 1]
   S eta = S(1);             // refraction_index, n1 / n2
+  // environment_diffuse: the light a white Lambertian surface reflects (scene/environment_light.h),
+  // read at the normal from the irradiance cube (or its sphere or paraboloid map when not null),
+  // or evaluated from the nine SH coefficients (the band factors folded in).
+  EnvironmentDiffuse diffuse = EnvironmentDiffuse::None;
+  const CubeMap* irradiance = nullptr;
+  const ParameterizedMap* irradianceLayers = nullptr;
+  std::array<Vec3T<S>, 9> sh9{};
+  // A mirror reflection or a refraction: the directions and their quad differences are needed.
+  bool readsDirections() const { return mirror || refraction; }
 };
 
 }  // namespace twr

@@ -101,6 +101,7 @@ void traceTriangle(const DrawItem& item, std::size_t t, const VertexUniforms& ve
       visit.outcome = TraceOutcome::Shaded;
       visit.heightMap = shadeUniforms.heightMap != nullptr;
       visit.surfaceDetail = shadeUniforms.surfaceDetail;
+      visit.environmentDiffuse = shadeUniforms.environment.diffuse;
       shadeFragmentDynamic(key, visit.fragment, shadeUniforms, &visit.terms);
       depth = visit.weights.depth;
     }
@@ -314,6 +315,10 @@ std::string formatPixelTrace(const PixelTrace& tr) {
           << "\n           N.L " << fmt(t.nDotL) << " R.V " << fmt(t.rDotV) << " If " << fmt(t.attenuation)
           << " diffuse " << fmt(t.diffuse) << " specular " << fmt(t.specular) << "\n";
       }
+      if (s.environmentDiffuseOn) {
+        o << "  environment diffuse light (" << toString(v.environmentDiffuse) << ") at Nl " << fmt(s.environmentDiffuse)
+          << ", times kd*albedo added\n";
+      }
       if (s.environmentOn) {
         o << "  environment: Phong colour " << fmt(s.phongColour) << ", reflect (world) " << fmt(s.reflectWorld)
           << " read " << fmt(s.environmentReflected) << "\n           refract (world) " << fmt(s.refractWorld)
@@ -407,6 +412,10 @@ nlohmann::json pixelTraceToJson(const PixelTrace& tr) {
                           {"diffuse", toJson(t.diffuse)}, {"specular", toJson(t.specular)}});
       }
       js["lights"] = lights;
+      if (s.environmentDiffuseOn) {
+        js["environment_diffuse"] = {{"kind", std::string(toString(v.environmentDiffuse))},
+                                     {"light", toJson(s.environmentDiffuse)}};
+      }
       if (s.environmentOn) {
         js["environment"] = {{"phong_colour", toJson(s.phongColour)},
                              {"reflect_world", toJson(s.reflectWorld)},

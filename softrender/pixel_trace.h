@@ -58,6 +58,7 @@ struct TriangleVisit {
   // layers marched).
   bool heightMap = false;
   SurfaceDetail surfaceDetail = SurfaceDetail::NormalMap;
+  EnvironmentDiffuse environmentDiffuse = EnvironmentDiffuse::None;  // the diffuse light it read
 };
 
 struct PixelTrace {

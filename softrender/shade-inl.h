@@ -175,6 +175,7 @@ TWR_LANE_OUTLINE void setEnvironmentDifferencesLanes(const VaryingPlanesL<L>& pl
                                                      const Maps& maps, FragmentL<L>& f) {
   using S = ScalarOf<L>;
   constexpr bool kTangentSpace = Features::kSpace == LightingSpace::Tangent;
+  if (!u.environment.readsDirections()) return;  // the diffuse light alone reads at the normal
   const UvPlanesL<L> uvPlanes{planes.overW[kVaryingUv], planes.overW[kVaryingUv + 1], planes.oneOverW};
   const auto directionsAt = [&](const L& x, const L& y) {
     FragmentL<L> g = interpolateFragmentLanes<L>(planes, x, y, f.depth);
@@ -342,6 +343,22 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
     // The environment, mixed into the Phong colour (environment-inl.h): one branch per draw
     // item, never taken by a material without an environment.
     if (u.environment.cube) {
+      Vec3L<L> phong(colour.x, colour.y, colour.z);
+      // The diffuse light first, added as the lights' diffuse terms are (kd albedo times it).
+      Vec3L<L> diffuseLight(zero);
+      if (u.environment.diffuse != EnvironmentDiffuse::None) {
+        diffuseLight = (environmentDiffuseLanes<L>)(u.environment, nl, t, b, n, kTangentSpace);
+        phong = phong + kdAlbedo * diffuseLight;
+        colour = Vec4L<L>(phong, one);
+      }
+      if constexpr (kTrace) {
+        if (terms) {
+          terms->environmentDiffuseOn = u.environment.diffuse != EnvironmentDiffuse::None;
+          terms->environmentDiffuse = diffuseLight;
+        }
+      }
+    }
+    if (u.environment.cube && u.environment.readsDirections()) {
       const Vec3L<L> eyeVec = kTangentSpace ? f.eyeDirTangent : Vec3L<L>(u.eyePosWorld) - f.posWorld;
       const Vec3L<L> phong(colour.x, colour.y, colour.z);
       const EnvironmentDirectionsL<L> directions =

@@ -1,5 +1,6 @@
 #include "softrender/shade.h"
 
+#include "scene/environment_light.h"
 #include "scene/horizon_map.h"
 #include "scene/surface_detail.h"
 
@@ -69,8 +70,7 @@ ShadeUniformsT<T> makeShadeUniforms(const Material& material, const Scene& scene
   }
   u.eyePosWorld = Vec3T<T>(scene.camera.position);
   // The environment: read only when the scene has one and the material mixes it in.
-  const bool environmentUsed = material.environmentSpecular == EnvironmentSpecular::Mirror || material.refractionIndex > 0.0f;
-  if (scene.environment && scene.environment->cube && environmentUsed) {
+  if (materialReadsEnvironment(material, scene)) {
     EnvironmentUniformsT<T>& e = u.environment;
     e.cube = scene.environment->cube.get();
     e.layers = scene.environment->layers.get();
@@ -80,6 +80,15 @@ ShadeUniformsT<T> makeShadeUniforms(const Material& material, const Scene& scene
     e.schlick = material.fresnel == Fresnel::Schlick;
     e.reflectivity = static_cast<T>(material.reflectivity);
     e.eta = static_cast<T>(e.refraction ? material.refractionIndex : 1.0f);
+    // The diffuse light as prefiltered at load (prefilterEnvironmentLight).
+    const Environment& env = *scene.environment;
+    e.diffuse = environmentDiffuseOf(material, env);
+    if (e.diffuse == EnvironmentDiffuse::IrradianceMap) {
+      e.irradiance = env.irradiance.get();
+      e.irradianceLayers = env.irradianceLayers.get();
+    } else if (e.diffuse == EnvironmentDiffuse::Sh9) {
+      for (std::size_t i = 0; i < 9; ++i) e.sh9[i] = Vec3T<T>(env.sh9->c[i]);
+    }
   }
   return u;
 }

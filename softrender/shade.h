@@ -119,6 +119,9 @@ struct ShadeTermsT {
   T environmentShare = T(0);
   bool totalInternalReflection = false;
   Vec3T<T> phongColour{T(0)};
+  // The environment's diffuse light (environment_diffuse): D at the normal, times the intensity.
+  bool environmentDiffuseOn = false;
+  Vec3T<T> environmentDiffuse{T(0)};
   int lightCount = 0;
   Vec4T<T> colour{T(0)};               // the fragment's output
 };

@@ -4,6 +4,7 @@
 // every target this binary and this CPU can run; with --gl, every headless GL context this
 // machine offers (OSMesa, EGL's surfaceless platform, each EGL device) and what GL it gives.
 #include "app/cli/commands.h"
+#include "scene/environment_light.h"
 #include "scene/json_text.h"
 #include "app/cli/common.h"
 #include "glrender/gl_renderer.h"
@@ -230,12 +231,15 @@ Json environmentJson(const Scene& scene) {
   } else {
     j["equirect"] = e.equirectPath;
   }
+  if (e.irradiance) j["irradiance_size"] = e.irradiance->size();
+  j["sh9"] = e.sh9 != nullptr;
   Json uses = Json::object();
   for (const Material& m : scene.materials) {
-    if (m.environmentSpecular == EnvironmentSpecular::None && m.refractionIndex <= 0.0f) continue;
+    if (!materialReadsEnvironment(m, scene)) continue;
     Json use{{"reflectivity", clean(m.reflectivity)},
              {"fresnel", std::string(toString(m.fresnel))},
-             {"environment_specular", std::string(toString(m.environmentSpecular))}};
+             {"environment_specular", std::string(toString(m.environmentSpecular))},
+             {"environment_diffuse", std::string(toString(m.environmentDiffuse))}};
     if (m.refractionIndex > 0.0f) use["refraction_index"] = clean(m.refractionIndex);
     uses[m.name] = use;
   }
@@ -339,11 +343,20 @@ void printScene(std::ostream& out, const Scene& scene) {
       out << "  read as a " << toString(e.parameterization) << " map built from the cube: " << e.layers->layers << " x "
           << e.layers->size() << "x" << e.layers->size() << ", " << e.layers->levelCount() << " levels\n";
     }
+    if (e.irradiance) {
+      out << "  diffuse light: irradiance cube " << e.irradiance->size() << "x" << e.irradiance->size() << " per face"
+          << (e.irradianceLayers ? ", read from its " + std::string(toString(e.parameterization)) + " map" : std::string())
+          << "\n";
+    }
+    if (e.sh9) out << "  diffuse light: nine SH coefficients per channel\n";
     for (const Material& m : scene.materials) {
-      if (m.environmentSpecular == EnvironmentSpecular::None && m.refractionIndex <= 0.0f) continue;
+      if (!materialReadsEnvironment(m, scene)) continue;
       out << "  " << m.name << ": " << toString(m.environmentSpecular) << ", reflectivity " << num(m.reflectivity)
           << ", fresnel " << toString(m.fresnel)
-          << (m.refractionIndex > 0.0f ? ", refraction_index " + num(m.refractionIndex) : std::string()) << "\n";
+          << (m.refractionIndex > 0.0f ? ", refraction_index " + num(m.refractionIndex) : std::string())
+          << (m.environmentDiffuse != EnvironmentDiffuse::None ? ", diffuse " + std::string(toString(m.environmentDiffuse))
+                                                               : std::string())
+          << "\n";
     }
   }
 

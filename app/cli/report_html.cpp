@@ -437,6 +437,16 @@ std::string parameterizationChartSvg(const ParameterizationSection& section) {
   return s.str();
 }
 
+// Pictures beside report.html, each with its caption.
+std::string figuresHtml(const std::vector<std::string>& pictures, const std::vector<std::string>& captions) {
+  std::ostringstream s;
+  for (std::size_t i = 0; i < pictures.size() && i < captions.size(); ++i) {
+    s << "<figure><img src=\"" << escape(pictures[i]) << "\" alt=\"" << escape(captions[i]) << "\"><figcaption>"
+      << escape(captions[i]) << "</figcaption></figure>\n";
+  }
+  return s.str();
+}
+
 std::string parameterizationsHtml(const ParameterizationSection& section) {
   std::ostringstream s;
   s << "<h2 id=\"environment_parameterizations\">Environment parameterizations</h2>\n";
@@ -457,10 +467,41 @@ std::string parameterizationsHtml(const ParameterizationSection& section) {
       << "</td></tr>\n";
   }
   s << "</tbody></table>\n";
-  for (std::size_t i = 0; i < section.pictures.size(); ++i) {
-    s << "<figure><img src=\"" << escape(section.pictures[i]) << "\" alt=\"" << escape(section.captions[i])
-      << "\"><figcaption>" << escape(section.captions[i]) << "</figcaption></figure>\n";
+  s << figuresHtml(section.pictures, section.captions);
+  return s.str();
+}
+
+std::string diffuseLightHtml(const DiffuseLightSection& section) {
+  std::ostringstream s;
+  s << "<h2 id=\"environment_diffuse\">Environment diffuse light</h2>\n";
+  s << "<p>What a white Lambertian surface reflects of " << escape(section.source)
+    << ", D(n) = E(n) / &pi;, from the 32-texel irradiance cube (bilinear at the normal) and from nine spherical-harmonic "
+       "coefficients, each against a Monte Carlo estimate over the source itself (cosine-weighted samples, a fixed seed, "
+       "the source read exactly), at normals spread evenly on the sphere; and SH9 against the cube. A normal's error is "
+       "its largest channel's difference in 8-bit levels. Source: scene/environment_light.cpp, "
+       "scene/environment_error.cpp; docs/environment.md.</p>\n";
+  s << "<div class=\"reading\"><b>" << escape(section.summary) << "</b><br>" << escape(section.reading) << "</div>\n";
+  if (!section.skipped.empty()) return s.str();
+  const DiffuseLightError& e = section.error;
+  s << "<table><thead><tr><th>comparison</th><th>normals</th><th>RMSE</th><th>99th percentile</th><th>worst</th>"
+       "<th>worst normal</th></tr></thead>\n<tbody>\n";
+  const struct {
+    const char* name;
+    const DiffuseLightComparison& c;
+  } rows[] = {{"irradiance cube vs Monte Carlo", e.mapVsReference},
+              {"SH9 vs Monte Carlo", e.sh9VsReference},
+              {"SH9 vs irradiance cube", e.sh9VsMap}};
+  for (const auto& row : rows) {
+    const glm::dvec3& w = row.c.worstNormal;
+    s << "<tr><td>" << row.name << "</td><td>" << e.normals << "</td><td>" << std::fixed << std::setprecision(2)
+      << row.c.rmse << "</td><td>" << row.c.p99 << "</td><td>" << row.c.maxError << "</td><td>(" << w.x << ", " << w.y
+      << ", " << w.z << ")</td></tr>\n";
   }
+  s << "</tbody></table>\n";
+  s << "<p class=\"small\">Monte Carlo: " << e.samples << " samples per normal, its own noise " << std::fixed
+    << std::setprecision(2) << e.referenceNoise << " levels RMS. Building: irradiance cube " << std::setprecision(1)
+    << section.irradianceMs << " ms, SH9 " << section.sh9Ms << " ms.</p>\n";
+  s << figuresHtml(section.pictures, section.captions);
   return s.str();
 }
 
@@ -526,6 +567,8 @@ void writeReportHtml(const std::string& path, const ReportData& data) {
   s << "<li><a href=\"#height_fields\"><b>Height fields</b></a>: " << escape(data.heightFields.summary) << "</li>\n";
   s << "<li><a href=\"#environment_parameterizations\"><b>Environment parameterizations</b></a>: "
     << escape(data.parameterizations.summary) << "</li>\n";
+  s << "<li><a href=\"#environment_diffuse\"><b>Environment diffuse light</b></a>: "
+    << escape(data.diffuseLight.summary) << "</li>\n";
   s << "<li><a href=\"#orthonormal_basis\"><b>Orthonormal bases</b></a>: " << escape(data.basisSummary) << "</li>\n";
   s << "</ul>\n";
 
@@ -539,6 +582,7 @@ void writeReportHtml(const std::string& path, const ReportData& data) {
 
   s << heightFieldsHtml(data.heightFields);
   s << parameterizationsHtml(data.parameterizations);
+  s << diffuseLightHtml(data.diffuseLight);
 
   s << "<h2 id=\"orthonormal_basis\">Orthonormal bases from a normal</h2>\n";
   s << "<p>Four ways to build two unit vectors b1, b2 with b1 x b2 = n from a unit normal alone, in float as a shader "

@@ -109,6 +109,17 @@ struct ParameterizationSection {
   std::string summary, reading, skipped;
 };
 
+// The environment's diffuse light (docs/environment.md, "Diffuse light"): the irradiance cube
+// and SH9 against Monte Carlo over the source, and SH9 against the cube
+// (scene/environment_error.h's measureDiffuseLightError).
+struct DiffuseLightSection {
+  std::string source;
+  DiffuseLightError error;
+  double irradianceMs = 0.0, sh9Ms = 0.0;  // building each from the cube, one thread
+  std::vector<std::string> pictures, captions;  // beside report.html
+  std::string summary, reading, skipped;
+};
+
 struct ReportData {
   std::string generatedAt;  // local time
   std::string machine;      // CPU model, core count, GL renderer
@@ -119,6 +130,7 @@ struct ReportData {
   std::vector<KnobResult> knobs;
   HeightFieldSection heightFields;
   ParameterizationSection parameterizations;
+  DiffuseLightSection diffuseLight;
   std::vector<BasisRow> bases;
   std::size_t basisDirections = 0;
   std::string basisSummary;

@@ -706,6 +706,39 @@ KnobReading readParameterizations(const ParameterizationSection& section) {
   return r;
 }
 
+KnobReading readDiffuseLight(const DiffuseLightSection& section) {
+  if (!section.skipped.empty()) return {"Not measured: " + section.skipped, section.skipped};
+  const DiffuseLightError& e = section.error;
+  const auto normal = [](const glm::dvec3& n) {
+    return "(" + fmt("%.2f", n.x) + ", " + fmt("%.2f", n.y) + ", " + fmt("%.2f", n.z) + ")";
+  };
+  const auto resolved = [&](const DiffuseLightComparison& c) {
+    return c.rmse < 1.5 * e.referenceNoise ? std::string("within the reference's own noise")
+                                            : std::string("above the reference's noise");
+  };
+  std::string s;
+  s += "Against " + std::to_string(e.samples) + " cosine-weighted Monte Carlo samples per normal (" +
+       std::to_string(e.normals) + " normals; the estimate's own noise is " + fmt("%.2f", e.referenceNoise) +
+       " levels RMS), the irradiance cube is off by " + fmt("%.2f", e.mapVsReference.rmse) + " levels RMS, " +
+       resolved(e.mapVsReference) + ", worst " + fmt("%.2f", e.mapVsReference.maxError) + " at " +
+       normal(e.mapVsReference.worstNormal) + "; SH9 by " + fmt("%.2f", e.sh9VsReference.rmse) + " RMS, " +
+       resolved(e.sh9VsReference) + ", worst " + fmt("%.2f", e.sh9VsReference.maxError) + " at " +
+       normal(e.sh9VsReference.worstNormal) + ". ";
+  s += "SH9 against the irradiance cube, where neither has noise: " + fmt("%.2f", e.sh9VsMap.rmse) + " levels RMS, 99 % within " +
+       fmt("%.2f", e.sh9VsMap.p99) + ", worst " + fmt("%.2f", e.sh9VsMap.maxError) + " at " + normal(e.sh9VsMap.worstNormal) +
+       (e.sh9VsMap.maxError > 2.0 ? std::string(": the detail of bands above 2 (a sun, a sharp horizon) that nine "
+                                                 "coefficients cannot hold, or their ringing. ")
+                                  : std::string(": three bands hold this sky's diffuse light. "));
+  s += "Building takes " + fmt("%.0f", section.irradianceMs) + " ms (irradiance cube) and " + fmt("%.0f", section.sh9Ms) +
+       " ms (SH9), once at load; a pixel then reads one bilinear texel footprint or evaluates nine terms.";
+  KnobReading r;
+  r.detail = s;
+  r.summary = "Irradiance cube " + fmt("%.2f", e.mapVsReference.rmse) + " and SH9 " + fmt("%.2f", e.sh9VsReference.rmse) +
+              " levels RMS from Monte Carlo (noise " + fmt("%.2f", e.referenceNoise) + "); SH9 from the cube: worst " +
+              fmt("%.2f", e.sh9VsMap.maxError) + " levels.";
+  return r;
+}
+
 KnobReading readHeightFields(const HeightFieldSection& section) {
   if (!section.measured) return {"Not measured: " + section.skipped, section.skipped};
   KnobReading r = readHeightFieldSection(section);

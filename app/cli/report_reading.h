@@ -19,6 +19,7 @@ KnobReading readBases(const std::vector<BasisRow>& rows);
 // The environment section: which mapping loses less at which size, how fast each error falls
 // with the size, and where each one's worst direction sits.
 KnobReading readParameterizations(const ParameterizationSection& section);
+KnobReading readDiffuseLight(const DiffuseLightSection& section);
 // The height-field section across its views: which method is worth its cost at which angle,
 // POM against plain parallax, where steep parallax's stair-steps show, how many layers POM
 // needs to beat relief, and the 720p cost line.

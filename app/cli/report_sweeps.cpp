@@ -11,6 +11,7 @@
 #include "compare/side_by_side.h"
 #include "glrender/gl_renderer.h"
 #include "scene/environment_error.h"
+#include "scene/environment_light.h"
 #include "scene/errors.h"
 #include "scene/primitives.h"
 #include "scene/scene_file.h"
@@ -31,6 +32,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <optional>
 #include <memory>
 #include <sstream>
 #include <thread>
@@ -211,6 +213,9 @@ class Sweeper {
                                  RenderOutput* outputCopy);
   void bases(ReportData& data);
   void parameterizations(ParameterizationSection& section, const std::string& outDir);
+  void diffuseLight(DiffuseLightSection& section, const std::string& outDir);
+  // The asset tool's sky as a cube, or nothing with `skipped` saying why.
+  std::optional<CubeMap> loadSky(std::string& skipped) const;
 
   const ReportOptions& options_;
   std::ostream& progress_;
@@ -923,7 +928,7 @@ Image layersPicture(const ParameterizedMap& map) {
   return image;
 }
 
-void Sweeper::parameterizations(ParameterizationSection& section, const std::string& outDir) {
+std::optional<CubeMap> Sweeper::loadSky(std::string& skipped) const {
   // The asset tool's sky: six 256-texel faces with a sun, a horizon and a grid of fine lines.
   const std::filesystem::path textures = std::filesystem::path(options_.assetsDir) / "textures";
   std::array<FaceImage, kCubeFaces> faces;
@@ -935,11 +940,17 @@ void Sweeper::parameterizations(ParameterizationSection& section, const std::str
       faces[static_cast<std::size_t>(f)] = loadEnvironmentImage(paths[static_cast<std::size_t>(f)]);
     }
   } catch (const InputError& e) {
-    section.skipped = std::string("no sky to measure: ") + e.what();
-    return;
+    skipped = std::string("no sky to measure: ") + e.what();
+    return std::nullopt;
   }
   std::vector<std::string> warnings;
-  const CubeMap cube = cubeMapFromFaces(std::move(faces), paths, warnings);
+  return cubeMapFromFaces(std::move(faces), paths, warnings);
+}
+
+void Sweeper::parameterizations(ParameterizationSection& section, const std::string& outDir) {
+  const std::optional<CubeMap> sky = loadSky(section.skipped);
+  if (!sky) return;
+  const CubeMap& cube = *sky;
   section.source = "the asset tool's sky (textures/sky_*.png), " + std::to_string(cube.size()) + " texels per face";
   const std::vector<int> sizes = options_.quick ? std::vector<int>{64, 256} : std::vector<int>{64, 128, 256, 512, 1024};
   const std::size_t directions = options_.quick ? 20000 : 200000;
@@ -970,6 +981,58 @@ void Sweeper::parameterizations(ParameterizationSection& section, const std::str
                                  "the top; black 0, the ramp's top 64 levels and more)");
     }
   }
+}
+
+// Linear colours as an image, clamped to [0, 1] (as the parameterization pictures show a map).
+Image colourPicture(const std::vector<glm::dvec3>& colours, int width, int height) {
+  Image image = makeImage(width, height);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const glm::dvec3 c = glm::clamp(
+          colours[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)],
+          glm::dvec3(0.0), glm::dvec3(1.0));
+      std::uint8_t* p = image.pixel(x, y);
+      p[0] = static_cast<std::uint8_t>(std::lround(c.r * 255.0));
+      p[1] = static_cast<std::uint8_t>(std::lround(c.g * 255.0));
+      p[2] = static_cast<std::uint8_t>(std::lround(c.b * 255.0));
+      p[3] = 255;
+    }
+  }
+  return image;
+}
+
+void Sweeper::diffuseLight(DiffuseLightSection& section, const std::string& outDir) {
+  const std::optional<CubeMap> sky = loadSky(section.skipped);
+  if (!sky) return;
+  section.source = "the asset tool's sky (textures/sky_*.png)";
+  say("environment: irradiance cube and SH9 against Monte Carlo");
+  auto start = std::chrono::steady_clock::now();
+  const CubeMap irradiance = irradianceCubeFromCube(*sky);
+  section.irradianceMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  start = std::chrono::steady_clock::now();
+  const Sh9Irradiance sh = sh9IrradianceFromCube(*sky);
+  section.sh9Ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  // Normals and samples: the quick run's reference noise is about four times the full run's.
+  const std::size_t normals = options_.quick ? 200 : 2000;
+  const std::size_t samples = options_.quick ? 2048 : 32768;
+  constexpr std::uint64_t kSeed = 20261125;  // fixed: the same reference every run
+  section.error = measureDiffuseLightError(*sky, irradiance, sh, normals, samples, kSeed);
+  const int width = options_.quick ? 256 : 512, height = width / 2;
+  const std::vector<glm::dvec3> fromCube = irradianceCubeImage(irradiance, width, height);
+  const std::vector<glm::dvec3> fromSh = sh9Image(sh, width, height);
+  std::vector<double> apart(fromCube.size());
+  for (std::size_t i = 0; i < apart.size(); ++i) {
+    const glm::dvec3 d = glm::abs(fromSh[i] - fromCube[i]);
+    apart[i] = std::max({d.x, d.y, d.z}) * 255.0;
+  }
+  const std::filesystem::path dir(outDir);
+  savePng((dir / "env_irradiance.png").string(), colourPicture(fromCube, width, height));
+  savePng((dir / "env_sh9.png").string(), colourPicture(fromSh, width, height));
+  savePng((dir / "env_sh9_error.png").string(), errorPicture(apart, width, height));
+  section.pictures = {"env_irradiance.png", "env_sh9.png", "env_sh9_error.png"};
+  section.captions = {"D(n) from the irradiance cube, as an equirect of normals (-Z at the centre, +Y at the top)",
+                      "D(n) from SH9, the same normals",
+                      "|SH9 - irradiance cube| per normal (black 0, the ramp's top 64 levels and more)"};
 }
 
 std::string machineDescription() {
@@ -1017,6 +1080,10 @@ ReportData Sweeper::run() {
   const KnobReading parameterizationReading = readParameterizations(data.parameterizations);
   data.parameterizations.summary = parameterizationReading.summary;
   data.parameterizations.reading = parameterizationReading.detail;
+  diffuseLight(data.diffuseLight, options_.outDir);
+  const KnobReading diffuseReading = readDiffuseLight(data.diffuseLight);
+  data.diffuseLight.summary = diffuseReading.summary;
+  data.diffuseLight.reading = diffuseReading.detail;
   bases(data);
   data.machine =
       machineDescription() + "; GL: " + glRendererString() + ", " + glVersionString() + "; " + glContextString();

@@ -472,7 +472,8 @@ void GuiApp::frame(bool& finalFrame, bool present) {
                            {"reflectivity", material.reflectivity},
                            {"refraction_index", material.refractionIndex},
                            {"fresnel", std::string(toString(material.fresnel))},
-                           {"environment_specular", std::string(toString(material.environmentSpecular))}});
+                           {"environment_specular", std::string(toString(material.environmentSpecular))},
+                           {"environment_diffuse", std::string(toString(material.environmentDiffuse))}});
     }
     state["materials"] = std::move(materials);
     state["selected_material"] = selectedMaterial_;

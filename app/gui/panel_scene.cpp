@@ -6,6 +6,7 @@
 #include "app/gui/text_concat.h"
 #include "app/gui/ui_widgets.h"
 
+#include "scene/environment_light.h"
 #include "scene/errors.h"
 #include "scene/primitives.h"
 #include "scene/scene_file.h"
@@ -56,6 +57,8 @@ constexpr float kEnvironmentIntensitySliderMax = 4.0f;
 constexpr float kDefaultRefractionIndex = 0.66f;
 constexpr float kMinRefractionIndexSlider = 0.2f;
 constexpr EnvironmentSpecular kEnvironmentSpeculars[] = {EnvironmentSpecular::None, EnvironmentSpecular::Mirror};
+constexpr EnvironmentDiffuse kEnvironmentDiffuses[] = {EnvironmentDiffuse::None, EnvironmentDiffuse::IrradianceMap,
+                                                       EnvironmentDiffuse::Sh9};
 constexpr Fresnel kFresnels[] = {Fresnel::None, Fresnel::Schlick};
 
 // What each method does, for its tooltip (docs/parallax.md derives them).
@@ -225,6 +228,7 @@ void GuiApp::drawSceneTab() {
             const int size = env.sizeGiven ? env.size : std::clamp(2 * env.cube->size(), kDefaultEnvironmentSize, kMaxCubeFaceSize);
             env.layers = std::make_shared<const ParameterizedMap>(parameterizedMapFromCube(*env.cube, kind, size));
           }
+          prefilterEnvironmentLight(doc_.scene);  // the irradiance map follows the parameterization
           changed = true;
         }
         probe_.item(concat("environment_parameterization_", toString(kind)).c_str());
@@ -604,6 +608,15 @@ bool GuiApp::drawEnvironmentControls(std::size_t index) {
   itemTooltip("none: the share is the reflectivity; schlick: F0 + (1 - F0)(1 - N.V)^5, more reflection at grazing "
               "angles (fresnel).");
   probe_.item(concat(key, "fresnel").c_str());
+  ImGui::SetNextItemWidth(fieldWidth);
+  if (probedCombo("env diffuse", "environment_diffuse", material.environmentDiffuse, kEnvironmentDiffuses)) {
+    prefilterEnvironmentLight(doc_.scene);  // built once, the first time a material asks
+    edited = true;
+  }
+  itemTooltip("The environment's light on a white Lambertian surface, times kd and the albedo, added to the Phong "
+              "colour: none; irradiance_map: a 32-texel cube of the cosine-weighted sum, read at the normal; sh9: nine "
+              "spherical-harmonic coefficients per channel (environment_diffuse).");
+  probe_.item(concat(key, "environment_diffuse").c_str());
   bool refracts = material.refractionIndex > 0.0f;
   if (ImGui::Checkbox("refracts", &refracts)) {
     material.refractionIndex = refracts ? kDefaultRefractionIndex : 0.0f;

@@ -115,9 +115,12 @@ TEST(CliReport, QuickWritesHtmlAndCsvWithEveryKnob) {
   expectContains(html, "id=\"environment_parameterizations\"");
   expectContains(html, "<img src=\"env_sphere_error.png\"");
   for (const char* picture : {"env_sphere_map.png", "env_sphere_error.png", "env_dual_paraboloid_map.png",
-                              "env_dual_paraboloid_error.png"}) {
+                              "env_dual_paraboloid_error.png", "env_irradiance.png", "env_sh9.png", "env_sh9_error.png"}) {
     EXPECT_TRUE(std::filesystem::exists(out / picture)) << picture;
   }
+  expectContains(html, "id=\"environment_diffuse\"");
+  expectContains(html, "SH9 vs Monte Carlo");
+  expectContains(html, "Monte Carlo: 2048 samples per normal");
   expectContains(html, "id=\"height_fields\"");
   expectContains(html, "Parallax does not move silhouettes");
   expectContains(html, "<img src=\"height_fields_bricks_70.png\"");

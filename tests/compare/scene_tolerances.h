@@ -61,6 +61,9 @@ inline constexpr SceneTolerance kSceneTolerances[] = {
     {"env_glass_sphere.json"},
     {"env_sphere_map.json"},        // the mirror sphere and sky read from a sphere map (rim at -Z, ahead)
     {"env_dual_paraboloid.json"},  // from a dual paraboloid, the seam between its halves in view
+    {"env_diffuse_light.json"},                    // lit by the environment alone: irradiance cube and SH9
+    {"env_diffuse_light_sphere.json"},             // the same, the irradiance read from a sphere map
+    {"env_diffuse_light_dual_paraboloid.json"},    // and from a dual paraboloid
 };
 
 }  // namespace twr::suite

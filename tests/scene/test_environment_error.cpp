@@ -2,6 +2,7 @@
 // with every doubling of the map on a smooth one, and the sphere map's worst loss at its rim
 // (-Z), where a texel spans the most directions.
 #include "scene/environment_error.h"
+#include "tests/scene/support_cubes.h"
 
 #include <gtest/gtest.h>
 
@@ -9,24 +10,6 @@
 
 namespace twr {
 namespace {
-
-// A cube of side `size` whose texel at direction r holds colour(r).
-template <typename Colour>
-CubeMap cubeOf(int size, Colour colour) {
-  std::array<FaceImage, kCubeFaces> faces;
-  for (int f = 0; f < kCubeFaces; ++f) {
-    FaceImage& face = faces[static_cast<std::size_t>(f)];
-    face.width = face.height = size;
-    for (int y = 0; y < size; ++y) {
-      for (int x = 0; x < size; ++x) {
-        const glm::dvec3 c = colour(glm::normalize(directionFromCubeCoord(f, (x + 0.5) / size, (y + 0.5) / size)), x, y);
-        face.rgb.insert(face.rgb.end(), {static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z)});
-      }
-    }
-  }
-  std::vector<std::string> warnings;
-  return cubeMapFromFaces(faces, {"a", "b", "c", "d", "e", "f"}, warnings);
-}
 
 constexpr EnvironmentParameterization kBuilt[] = {EnvironmentParameterization::Sphere,
                                                   EnvironmentParameterization::DualParaboloid};
@@ -80,6 +63,51 @@ TEST(ParameterizationError, TheSphereMapLosesMostAtItsRim) {
     }
   }
   EXPECT_GT(centre, edge / 2.0);
+}
+
+}  // namespace
+}  // namespace twr
+
+namespace twr {
+namespace {
+
+// The diffuse light's measurement: nothing on a constant sky (the reference has no noise
+// there), and on a sky lit on its upper half, whose D = (1 + n.y) / 2 lies in bands 0 and 1,
+// SH9 and the cube agree within a level while both stay within the reference's noise.
+TEST(DiffuseLightError, ConstantAndHalfLitSkies) {
+  const CubeMap flat = cubeOf(16, [](const glm::dvec3&, int, int) { return glm::dvec3(0.5, 0.25, 1.0); });
+  const DiffuseLightError none =
+      measureDiffuseLightError(flat, irradianceCubeFromCube(flat, 8), sh9IrradianceFromCube(flat), 100, 64, 3);
+  EXPECT_EQ(none.normals, 100u);
+  EXPECT_EQ(none.samples, 64u);
+  EXPECT_LT(none.referenceNoise, 1e-6);
+  EXPECT_LT(none.mapVsReference.maxError, 1e-3);
+  EXPECT_LT(none.sh9VsReference.maxError, 1e-3);
+  EXPECT_LT(none.sh9VsMap.maxError, 1e-3);
+
+  const CubeMap half = cubeOf(32, [](const glm::dvec3& r, int, int) { return glm::dvec3(r.y > 0.0 ? 1.0 : 0.0); });
+  const DiffuseLightError e =
+      measureDiffuseLightError(half, irradianceCubeFromCube(half), sh9IrradianceFromCube(half), 400, 1024, 11);
+  // A 0/1 radiance: standard error at most 0.5 / 32 = 4 levels.
+  EXPECT_GT(e.referenceNoise, 1.0);
+  EXPECT_LT(e.referenceNoise, 4.0);
+  EXPECT_LT(e.sh9VsMap.maxError, 1.0);
+  EXPECT_LT(e.mapVsReference.rmse, 1.5 * e.referenceNoise);
+  EXPECT_LT(e.sh9VsReference.rmse, 1.5 * e.referenceNoise);
+  EXPECT_LE(e.mapVsReference.p99, e.mapVsReference.maxError);
+}
+
+TEST(DiffuseLightError, PicturesFollowTheEquirectConvention) {
+  const CubeMap half = cubeOf(16, [](const glm::dvec3& r, int, int) { return glm::dvec3(r.y > 0.0 ? 1.0 : 0.0); });
+  const std::vector<glm::dvec3> map = irradianceCubeImage(irradianceCubeFromCube(half, 16), 32, 16);
+  const std::vector<glm::dvec3> sh = sh9Image(sh9IrradianceFromCube(half), 32, 16);
+  ASSERT_EQ(map.size(), 32u * 16u);
+  ASSERT_EQ(sh.size(), map.size());
+  // The top row looks up (+Y, D near 1), the bottom row down (D near 0).
+  EXPECT_GT(map[16].r, 0.95);
+  EXPECT_LT(map[15 * 32 + 16].r, 0.05);
+  EXPECT_GT(sh[16].r, 0.95);
+  EXPECT_LT(sh[15 * 32 + 16].r, 0.05);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // shipped scenes.
 #include "scene/errors.h"
 #include "scene/image.h"
+#include "scene/environment_light.h"
 #include "scene/scene_file.h"
 
 #include <gtest/gtest.h>
@@ -815,8 +816,8 @@ TEST(SceneFileErrors, EnvironmentKeys) {
                  {"materials.m.fresnel: expected one of none|schlick"});
   expectContains(parseError(withEnvironment(kSixFaces, R"({"environment_specular": "prefiltered"})")),
                  {"materials.m.environment_specular: \"prefiltered\" is not drawn yet"});
-  expectContains(parseError(withEnvironment(kSixFaces, R"({"environment_diffuse": "sh9"})")),
-                 {"materials.m.environment_diffuse: \"sh9\" is not drawn yet"});
+  expectContains(parseError(withEnvironment(kSixFaces, R"({"environment_diffuse": "lambert"})")),
+                 {"materials.m.environment_diffuse: expected one of none|irradiance_map|sh9"});
 }
 
 TEST(SceneFile, EnvironmentFromSixFacesAndTheMaterialDefaults) {
@@ -860,6 +861,38 @@ TEST(SceneFile, EnvironmentParameterizationsBuildTheirMaps) {
   EXPECT_TRUE(paraboloid.warnings.empty());
   const Scene cube = parseScene(withEnvironment(R"({"cube": )" + kSixFaces + R"(})"), kInline, kDataDir);
   EXPECT_FALSE(cube.environment->layers);
+}
+
+// environment_diffuse builds what it reads at load, and only that: the irradiance cube (and
+// its map under a sphere or paraboloid parameterization) or the SH9 coefficients.
+TEST(SceneFile, EnvironmentDiffuseLightIsPrefilteredAtLoadOnlyWhenAsked) {
+  const Scene none = parseScene(withEnvironment(R"({"cube": )" + kSixFaces + R"(})", R"({"reflectivity": 1})"),
+                                kInline, kDataDir);
+  EXPECT_FALSE(none.environment->irradiance);
+  EXPECT_FALSE(none.environment->sh9);
+  const Scene map = parseScene(withEnvironment(R"({"cube": )" + kSixFaces + R"(})",
+                                               R"({"environment_diffuse": "irradiance_map"})"),
+                               kInline, kDataDir);
+  ASSERT_TRUE(map.environment->irradiance);
+  EXPECT_EQ(map.environment->irradiance->size(), kIrradianceCubeSize);
+  EXPECT_EQ(map.environment->irradiance->levelCount(), 1);
+  EXPECT_FALSE(map.environment->irradianceLayers);
+  EXPECT_FALSE(map.environment->sh9);
+  EXPECT_EQ(map.materials.front().environmentSpecular, EnvironmentSpecular::None);  // diffuse alone: no mirror
+  const Scene sphere = parseScene(withEnvironment(R"({"cube": )" + kSixFaces + R"(, "parameterization": "sphere"})",
+                                                  R"({"environment_diffuse": "irradiance_map"})"),
+                                  kInline, kDataDir);
+  ASSERT_TRUE(sphere.environment->irradianceLayers);
+  EXPECT_EQ(sphere.environment->irradianceLayers->kind, EnvironmentParameterization::Sphere);
+  EXPECT_EQ(sphere.environment->irradianceLayers->levelCount(), 1);
+  const Scene sh = parseScene(withEnvironment(R"({"cube": )" + kSixFaces + R"(})", R"({"environment_diffuse": "sh9"})"),
+                              kInline, kDataDir);
+  EXPECT_TRUE(sh.environment->sh9);
+  EXPECT_FALSE(sh.environment->irradiance);
+  // Without an environment the key is read and said to be ignored.
+  const Scene alone = parseScene(R"({"nodes": [], "materials": {"m": {"environment_diffuse": "sh9"}}})", kInline, kDataDir);
+  ASSERT_EQ(alone.warnings.size(), 1u);
+  EXPECT_NE(alone.warnings[0].find("materials.m: its environment keys are ignored"), std::string::npos) << alone.warnings[0];
 }
 
 }  // namespace
