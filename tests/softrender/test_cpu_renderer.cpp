@@ -448,6 +448,33 @@ TEST(PixelTrace, ASkyPixelUnderABuiltMapSaysWhichLayerAndWhere) {
   }
 }
 
+// A surface lit by the environment alone: the trace names the diffuse light it read, whose
+// kd * albedo times it is the pixel (no lamps, no ambient, no reflection), and the rendered
+// pixel is the trace's colour.
+TEST(PixelTrace, ShowsTheEnvironmentsDiffuseLight) {
+  const Scene scene = loadSceneFile(std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes/env_diffuse_light.json");
+  const int w = 160, h = 120;
+  const RenderOutput out = render(scene, scene.settings, w, h);
+  for (const int x : {40, 120}) {  // the irradiance-map sphere, then the SH9 one
+    const PixelTrace tr = tracePixel(scene, scene.settings, w, h, x, 60);
+    const TriangleVisit* shaded = nullptr;
+    for (const TriangleVisit& v : tr.visits) {
+      if (v.outcome == TraceOutcome::Shaded) shaded = &v;
+    }
+    ASSERT_NE(shaded, nullptr) << x;
+    EXPECT_EQ(shaded->environmentDiffuse, x < 80 ? EnvironmentDiffuse::IrradianceMap : EnvironmentDiffuse::Sh9);
+    EXPECT_TRUE(shaded->terms.environmentDiffuseOn);
+    EXPECT_FALSE(shaded->terms.environmentOn);  // no reflection read
+    const vec3 expected = vec3(0.9f) * shaded->terms.albedo * shaded->terms.environmentDiffuse;
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(shaded->terms.colour[c], expected[c], 1e-6f) << x;
+      EXPECT_GT(shaded->terms.environmentDiffuse[c], 0.05f) << x;
+      EXPECT_EQ(std::lround(shaded->terms.colour[c] * 255.0f), out.rgba[static_cast<std::size_t>(60 * w + x) * 4 + static_cast<std::size_t>(c)]);
+    }
+    EXPECT_NE(formatPixelTrace(tr).find("environment diffuse light"), std::string::npos);
+  }
+}
+
 TEST(PixelTrace, ReportsCullingDepthFailuresAndClipping) {
   Scene scene = sceneWith(makeSphere(1.0f, 12, 24));
   scene.settings.userClipPlanes = {vec4(0, -1, 0, 0.2f)};  // keep y <= 0.2
