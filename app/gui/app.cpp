@@ -485,7 +485,9 @@ void GuiApp::frame(bool& finalFrame, bool present) {
                                ? nlohmann::json{{"intensity", doc_.scene.environment->intensity},
                                                 {"background", doc_.scene.environment->background},
                                                 {"parameterization", std::string(toString(doc_.scene.environment->parameterization))},
-                                                {"map_size", doc_.scene.environment->layers ? doc_.scene.environment->layers->size() : 0}}
+                                                {"map_size", doc_.scene.environment->layers ? doc_.scene.environment->layers->size() : 0},
+                                                {"irradiance_layers", doc_.scene.environment->irradianceLayers != nullptr},
+                                                {"sh9", doc_.scene.environment->sh9 != nullptr}}
                                : nlohmann::json(nullptr);
     state["view"] = std::string(toString(doc_.scene.settings.view));
   }

@@ -658,6 +658,17 @@ TEST(GuiScripted, EnvironmentControlsRedrawBothBackends) {
       [&] { app.pick("environment_parameterization", "environment_parameterization_dual_paraboloid"); },
       [](const json& st) { return st["environment"]["parameterization"] == "dual_paraboloid"; });
   EXPECT_EQ(s["environment"]["map_size"].get<int>(), 512) << s.dump(1);  // twice the 256-texel faces
+  // The diffuse light, built on first use under the paraboloid, then SH9: both backends agree.
+  app.scrollTo("material0_environment_diffuse");
+  s = afterEdit(
+      "diffuse irradiance_map",
+      [&] { app.pick("material0_environment_diffuse", "material0_environment_diffuse_irradiance_map"); },
+      [](const json& st) { return st["materials"][0]["environment_diffuse"] == "irradiance_map"; });
+  EXPECT_TRUE(s["environment"]["irradiance_layers"].get<bool>()) << s.dump(1);
+  s = afterEdit(
+      "diffuse sh9", [&] { app.pick("material0_environment_diffuse", "material0_environment_diffuse_sh9"); },
+      [](const json& st) { return st["materials"][0]["environment_diffuse"] == "sh9"; });
+  EXPECT_TRUE(s["environment"]["sh9"].get<bool>()) << s.dump(1);
   EXPECT_FALSE(s.contains("panel_faults")) << s.dump(1);
   EXPECT_EQ(app.quit(), 0) << app.err();
 }
