@@ -44,7 +44,8 @@ namespace twr {
 namespace HWY_NAMESPACE {
 
 // Most lanes a vector has on any target (AVX-512: 16 floats), for stack buffers.
-constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(float);
+// (Unused in the objects that leave this target's kernels to another: clang says so.)
+[[maybe_unused]] constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(float);
 
 // ---- a TiledTexture as texture_sample-inl.h reads it ----
 HWY_INLINE int texLevelCount(const TiledTexture& t) { return static_cast<int>(t.levels.size()); }
