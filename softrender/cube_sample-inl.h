@@ -145,30 +145,40 @@ TWR_LANE_INLINE Vec3L<L> sampleCubeLevelLanes(const CubeMap& cube, int level, co
   return select3<L>(corner, summed, lerped);
 }
 
-// The environment in direction r at an explicit LOD (textureLod with GL_LINEAR_MIPMAP_LINEAR):
-// levels clamp to the chain; each distinct level is read once for the lanes that need it.
-template <typename L>
-TWR_LANE_OUTLINE Vec3L<L> sampleCubeLodLanes(const CubeMap& cube, const Vec3L<L>& r, const L& lod) {
+// textureLod's level choice with GL_LINEAR_MIPMAP_LINEAR over any chain of `levelCount`
+// levels: the LOD clamped to the chain (0 when not finite), its floor and the next level (the
+// same one past the last or when the fraction is 0), each distinct level read once for the
+// lanes that need it (readLevel(l) reads level l in every lane), blended fused. Cubes and the
+// sphere and paraboloid maps (layer_sample-inl.h) share it.
+template <typename L, typename ReadLevel>
+TWR_LANE_INLINE Vec3L<L> blendLevelsLanes(int levelCount, const L& lod, const ReadLevel& readLevel) {
   using S = ScalarOf<L>;
-  const CubeCoordL<L> c = (cubeCoordLanes<L>)(Vec3L<L>((sanitizedCoord<L>)(r.x), (sanitizedCoord<L>)(r.y),
-                                                       (sanitizedCoord<L>)(r.z)));
-  const int lastLevel = cube.levelCount() - 1;
+  const int lastLevel = levelCount - 1;
   const L zero(S(0)), lastL(static_cast<S>(lastLevel));
   const L clamped = minOf(maxOf(select(isFinite(lod), lod, zero), zero), lastL);
   const L level0 = floorOf(clamped);
   const L fraction = clamped - level0;
   const L level1 = select(fraction == zero, level0, minOf(level0 + L(S(1)), lastL));
   const int lowest = static_cast<int>(lowestLane(level0)), highest = static_cast<int>(highestLane(level1));
-  Vec3L<L> s0 = (sampleCubeLevelLanes<L>)(cube, lowest, c), s1 = s0;
+  Vec3L<L> s0 = readLevel(lowest), s1 = s0;
   for (int l = lowest + 1; l <= highest; ++l) {
     const L here(static_cast<S>(l));
     const auto first = level0 == here, second = level1 == here;
     if (!anyOf(first | second)) continue;
-    const Vec3L<L> read = (sampleCubeLevelLanes<L>)(cube, l, c);
+    const Vec3L<L> read = readLevel(l);
     s0 = select3<L>(first, read, s0);
     s1 = select3<L>(second, read, s1);
   }
   return (lerpFused3<L>)(s0, s1, fraction);
+}
+
+// The environment in direction r at an explicit LOD (textureLod with GL_LINEAR_MIPMAP_LINEAR).
+template <typename L>
+TWR_LANE_OUTLINE Vec3L<L> sampleCubeLodLanes(const CubeMap& cube, const Vec3L<L>& r, const L& lod) {
+  const CubeCoordL<L> c = (cubeCoordLanes<L>)(Vec3L<L>((sanitizedCoord<L>)(r.x), (sanitizedCoord<L>)(r.y),
+                                                       (sanitizedCoord<L>)(r.z)));
+  return (blendLevelsLanes<L>)(cube.levelCount(), lod,
+                               [&](int level) { return (sampleCubeLevelLanes<L>)(cube, level, c); });
 }
 
 // The LOD of texture(samplerCube, r) from r's differences across the quad (GLSL's fine dFdx and

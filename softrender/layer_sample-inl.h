@@ -78,29 +78,13 @@ TWR_LANE_INLINE Vec3L<L> sampleMapLevelLanes(const ParameterizedMap& map, int le
                          (lerpFused3<L>)(texel(xa, yb), texel(xb, yb), alpha), beta);
 }
 
-// The map at an explicit LOD (textureLod with GL_LINEAR_MIPMAP_LINEAR): levels clamp to the
-// chain, each distinct level read once for the lanes that need it, blended fused.
+// The map at an explicit LOD (textureLod with GL_LINEAR_MIPMAP_LINEAR): the cube's level
+// choice and blend (cube_sample-inl.h, blendLevelsLanes).
 template <typename L>
 TWR_LANE_OUTLINE Vec3L<L> sampleMapLodLanes(const ParameterizedMap& map, const MapCoordL<L>& cIn, const L& lod) {
-  using S = ScalarOf<L>;
   const MapCoordL<L> c{cIn.layer, (sanitizedCoord<L>)(cIn.u), (sanitizedCoord<L>)(cIn.v)};
-  const int lastLevel = map.levelCount() - 1;
-  const L zero(S(0)), lastL(static_cast<S>(lastLevel));
-  const L clamped = minOf(maxOf(select(isFinite(lod), lod, zero), zero), lastL);
-  const L level0 = floorOf(clamped);
-  const L fraction = clamped - level0;
-  const L level1 = select(fraction == zero, level0, minOf(level0 + L(S(1)), lastL));
-  const int lowest = static_cast<int>(lowestLane(level0)), highest = static_cast<int>(highestLane(level1));
-  Vec3L<L> s0 = (sampleMapLevelLanes<L>)(map, lowest, c), s1 = s0;
-  for (int l = lowest + 1; l <= highest; ++l) {
-    const L here(static_cast<S>(l));
-    const auto first = level0 == here, second = level1 == here;
-    if (!anyOf(first | second)) continue;
-    const Vec3L<L> read = (sampleMapLevelLanes<L>)(map, l, c);
-    s0 = select3<L>(first, read, s0);
-    s1 = select3<L>(second, read, s1);
-  }
-  return (lerpFused3<L>)(s0, s1, fraction);
+  return (blendLevelsLanes<L>)(map.levelCount(), lod,
+                               [&](int level) { return (sampleMapLevelLanes<L>)(map, level, c); });
 }
 
 // texture(sampler2DArray, vec3(uv, layer)) with the coordinate's quad differences (du/dx,
