@@ -40,9 +40,6 @@ std::vector<std::string> skyDefines(const Environment& environment) {
   return defines;
 }
 
-// Whether the material mixes in the scene's environment (softrender/shade.cpp decides the same).
-bool usesEnvironment(const Material& material, const Scene& scene) { return materialReadsEnvironment(material, scene); }
-
 // A map without texels is treated as absent, as the CPU does (softrender/shade.cpp).
 bool usableMap(const std::shared_ptr<const Texture>& map) {
   return map && map->width > 0 && map->height > 0 && !map->rgba.empty();
@@ -163,7 +160,7 @@ void setUniforms(GLuint program, const Scene& scene, const RenderSettings& setti
       glUniform1i(uniformLocation(program, ("horizonMap" + std::to_string(k)).c_str()), kFirstHorizonUnit + k);
     }
   }
-  if (usesEnvironment(material, scene)) {
+  if (materialReadsEnvironment(material, scene)) {
     glUniform1i(uniformLocation(program, scene.environment->layers ? "environmentLayers" : "environmentMap"),
                 kEnvironmentUnit);
     glUniform1f(uniformLocation(program, "environmentIntensity"), scene.environment->intensity);
@@ -321,8 +318,8 @@ SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const S
     ProgramDesc desc{"phong",
                      {"common.glsl", "phong.vert"},
                      {"common.glsl", "surface_detail.glsl", "environment_map.glsl", "environment.glsl", "phong.frag"},
-                     phongDefines(material, settings, usesEnvironment(material, scene) ? &*scene.environment : nullptr)};
-    if (usesEnvironment(material, scene)) {
+                     phongDefines(material, settings, materialReadsEnvironment(material, scene) ? &*scene.environment : nullptr)};
+    if (materialReadsEnvironment(material, scene)) {
       for (std::string& d : environmentMapDefines(*scene.environment)) desc.defines.push_back(std::move(d));
     }
     if (frame == GlFrame::Lean) desc.defines.push_back("NO_TRIANGLE_ID");
@@ -337,7 +334,7 @@ SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const S
     for (int k = 0; k < use.horizonDirections / 4; ++k) {
       bindMap(material.horizonMap->textures[static_cast<std::size_t>(k)], kFirstHorizonUnit + k);
     }
-    if (usesEnvironment(material, scene)) {
+    if (materialReadsEnvironment(material, scene)) {
       const Environment& environment = *scene.environment;
       glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + kEnvironmentUnit));
       bindEnvironment(uploads, environment);
