@@ -2,6 +2,7 @@
 
 #include "glrender/embedded_shaders.h"
 #include "scene/conventions.h"
+#include "scene/environment.h"
 #include "scene/errors.h"
 
 #include <cstdio>
@@ -15,7 +16,7 @@ namespace {
 
 // Constants the GLSL shares with the C++ side, so neither writes a second copy.
 std::string sharedConstants() {
-  char buffer[512];
+  char buffer[640];
   std::snprintf(buffer, sizeof buffer,
                 "#define MAX_LIGHTS %d\n"
                 "#define MAX_CLIP_PLANES %d\n"
@@ -24,11 +25,12 @@ std::string sharedConstants() {
                 "#define MIN_PARALLAX_VIEW_Z %.9e\n"
                 "#define SELF_SHADOW_SHARPNESS %.9e\n"
                 "#define HORIZON_SHARPNESS %.9e\n"
-                "#define PARALLAX_OFFSET_VIEW_GAIN %.9e\n",
+                "#define PARALLAX_OFFSET_VIEW_GAIN %.9e\n"
+                "#define ENVIRONMENT_LOD_VIEW_MAX %.9e\n",
                 kMaxLights, kMaxUserClipPlanes, static_cast<double>(kMinLengthSquared),
                 static_cast<double>(kMinAttenuationDenominator), static_cast<double>(kMinParallaxViewZ),
                 static_cast<double>(kSelfShadowSharpness), static_cast<double>(kHorizonSharpness),
-                static_cast<double>(kParallaxOffsetViewGain));
+                static_cast<double>(kParallaxOffsetViewGain), static_cast<double>(kEnvironmentLodViewMax));
   return buffer;
 }
 

@@ -2,12 +2,16 @@
 
 #include "glrender/model_transforms.h"
 #include "scene/environment_light.h"
+#include "scene/environment_specular.h"
 #include "scene/errors.h"
 #include "scene/horizon_map.h"
 #include "scene/surface_detail.h"
 #include "scene/sky_view.h"
 
 #include <algorithm>
+#include <map>
+#include <mutex>
+#include <tuple>
 #include <array>
 #include <cctype>
 #include <cmath>
@@ -23,6 +27,54 @@ constexpr GLint kHeightUnit = 3;
 constexpr GLint kFirstHorizonUnit = 4;  // 4 to 7: one per 4 horizon azimuths
 constexpr GLint kEnvironmentUnit = 8;   // the environment's cube map
 constexpr GLint kIrradianceUnit = 9;    // its irradiance map (environment_diffuse irradiance_map)
+constexpr GLint kGlossyUnit = 10;       // its prefiltered glossy map (environment_specular prefiltered)
+constexpr GLint kLodStandInUnit = 11;   // the env_lod view's stand-in for the environment's map
+
+// The env_lod view's stand-in for the map `environment` is read from (environment_map.glsl's
+// environmentReadLod): the same size, layers and levels, level l holding l in every texel, so
+// a read returns the LOD the sampler chose, clamped and blended. Built once per shape, kept
+// for the process (a 1024-texel cube's is 100 MB; the view is a teaching aid).
+void bindLodStandIn(GlUploadCache& uploads, const Environment& environment) {
+  static std::mutex mutex;
+  static std::map<std::tuple<int, int, int>, std::shared_ptr<const CubeMap>> cubes;
+  static std::map<std::tuple<int, int, int>, std::shared_ptr<const ParameterizedMap>> maps;
+  const std::lock_guard<std::mutex> lock(mutex);
+  const auto filled = [](int size, int faces, int levels) {
+    std::vector<CubeMapLevel> chain;
+    for (int l = 0; l < levels; ++l) {
+      CubeMapLevel level;
+      level.size = std::max(1, size >> l);
+      const std::size_t texels = static_cast<std::size_t>(faces) * static_cast<std::size_t>(level.size) *
+                                 static_cast<std::size_t>(level.size);
+      level.r.assign(texels, static_cast<float>(l));
+      level.g = level.b = level.r;
+      chain.push_back(std::move(level));
+    }
+    return chain;
+  };
+  if (environment.layers) {
+    const ParameterizedMap& m = *environment.layers;
+    auto& standIn = maps[{m.size(), m.layers, m.levelCount()}];
+    if (!standIn) {
+      auto made = std::make_shared<ParameterizedMap>();
+      made->kind = m.kind;
+      made->layers = m.layers;
+      made->levels = filled(m.size(), m.layers, m.levelCount());
+      standIn = std::move(made);
+    }
+    uploads.environmentLayers(standIn);
+    return;
+  }
+  const CubeMap& c = *environment.cube;
+  auto& standIn = cubes[{c.size(), kCubeFaces, c.levelCount()}];
+  if (!standIn) {
+    auto made = std::make_shared<CubeMap>();
+    made->source = "env_lod stand-in";
+    made->levels = filled(c.size(), kCubeFaces, c.levelCount());
+    standIn = std::move(made);
+  }
+  uploads.cubeMap(standIn);
+}
 
 // The environment's texture on the active unit: the cube, or the sphere or paraboloid map.
 void bindEnvironment(GlUploadCache& uploads, const Environment& environment) {
@@ -33,10 +85,21 @@ void bindEnvironment(GlUploadCache& uploads, const Environment& environment) {
   }
 }
 
+// An environment view's defines (environment_map.glsl), none for other views.
+std::vector<std::string> environmentViewDefines(View view) {
+  switch (view) {
+    case View::ReflectDir: return {"ENVIRONMENT_VIEW", "ENVIRONMENT_VIEW_REFLECT_DIR"};
+    case View::EnvFace: return {"ENVIRONMENT_VIEW", "ENVIRONMENT_VIEW_FACE"};
+    case View::EnvLod: return {"ENVIRONMENT_VIEW", "ENVIRONMENT_VIEW_LOD"};
+    default: return {};
+  }
+}
+
 // The sky program's defines: the environment is always read.
-std::vector<std::string> skyDefines(const Environment& environment) {
+std::vector<std::string> skyDefines(const Environment& environment, View view) {
   std::vector<std::string> defines{"HAS_ENVIRONMENT"};
   for (std::string& d : environmentMapDefines(environment)) defines.push_back(std::move(d));
+  for (std::string& d : environmentViewDefines(view)) defines.push_back(std::move(d));
   return defines;
 }
 
@@ -67,7 +130,8 @@ void checkIndices(const Mesh& mesh, const std::string& nodeName) {
 
 std::string viewDefine(View view) {
   // mip_level is drawn as albedo of stand-in textures (scene/mip_level_view.h).
-  std::string name(toString(view == View::MipLevel ? View::Albedo : view));
+  // The environment views are the shaded program with ENVIRONMENT_VIEW (environmentViewDefines).
+  std::string name(toString(view == View::MipLevel ? View::Albedo : isEnvironmentView(view) ? View::Shaded : view));
   std::transform(name.begin(), name.end(), name.begin(),
                  [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
   return "VIEW_" + name;
@@ -167,6 +231,14 @@ void setUniforms(GLuint program, const Scene& scene, const RenderSettings& setti
     glUniform1f(uniformLocation(program, "reflectivity"), material.reflectivity);
     glUniform1f(uniformLocation(program, "refractionEta"), material.refractionIndex > 0.0f ? material.refractionIndex : 1.0f);
     const Environment& environment = *scene.environment;
+    if (settings.view == View::EnvLod) glUniform1i(uniformLocation(program, "environmentLodStandIn"), kLodStandInUnit);
+    if (environmentSpecularOf(material, environment) == EnvironmentSpecular::Prefiltered) {
+      glUniform1i(uniformLocation(program, environment.specularLayers ? "environmentSpecularLayers" : "environmentSpecular"),
+                  kGlossyUnit);
+      // The CPU's uniform: the LOD in double, rounded to float once.
+      glUniform1f(uniformLocation(program, "environmentSpecularLod"),
+                  static_cast<float>(specularLodFromShininess(*environment.specular, material.shininess)));
+    }
     const EnvironmentDiffuse diffuse = environmentDiffuseOf(material, environment);
     if (diffuse == EnvironmentDiffuse::IrradianceMap) {
       glUniform1i(uniformLocation(program, environment.irradianceLayers ? "environmentIrradianceLayers"
@@ -204,7 +276,7 @@ void drawSky(ProgramCache& programs, GlUploadCache& uploads, const Scene& scene,
   const GLuint program = programs.get(ProgramDesc{"sky",
                                                  {"common.glsl", "sky.vert"},
                                                  {"common.glsl", "environment_map.glsl", "sky.frag"},
-                                                 skyDefines(*scene.environment)});
+                                                 skyDefines(*scene.environment, sky.view)});
   glUseProgram(program);
   glUniform1i(uniformLocation(program, scene.environment->layers ? "environmentLayers" : "environmentMap"),
               kEnvironmentUnit);
@@ -215,6 +287,11 @@ void drawSky(ProgramCache& programs, GlUploadCache& uploads, const Scene& scene,
   glUniform2fv(uniformLocation(program, "ndcPerPixel"), 1, &sky.ndcPerPixel.x);
   glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + kEnvironmentUnit));
   bindEnvironment(uploads, *scene.environment);
+  if (sky.view == View::EnvLod) {
+    glUniform1i(uniformLocation(program, "environmentLodStandIn"), kLodStandInUnit);
+    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + kLodStandInUnit));
+    bindLodStandIn(uploads, *scene.environment);
+  }
   GlVertexArray empty = makeGlVertexArray();  // core profile: a draw needs a vertex array
   glBindVertexArray(empty.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -275,7 +352,9 @@ std::vector<std::string> phongDefines(const Material& material, const RenderSett
   }
   if (environment) {
     defines.push_back("HAS_ENVIRONMENT");
-    if (material.environmentSpecular == EnvironmentSpecular::Mirror) defines.push_back("ENVIRONMENT_MIRROR");
+    const EnvironmentSpecular specular = environmentSpecularOf(material, *environment);
+    if (specular != EnvironmentSpecular::None) defines.push_back("ENVIRONMENT_REFLECT");
+    if (specular == EnvironmentSpecular::Prefiltered) defines.push_back("ENVIRONMENT_PREFILTERED");
     if (material.refractionIndex > 0.0f) defines.push_back("ENVIRONMENT_REFRACTION");
     if (material.fresnel == Fresnel::Schlick) defines.push_back("FRESNEL_SCHLICK");
     const EnvironmentDiffuse diffuse = environmentDiffuseOf(material, *environment);
@@ -285,6 +364,7 @@ std::vector<std::string> phongDefines(const Material& material, const RenderSett
     }
   }
   defines.push_back(viewDefine(settings.view));
+  for (std::string& d : environmentViewDefines(settings.view)) defines.push_back(std::move(d));
   return defines;
 }
 
@@ -338,6 +418,18 @@ SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const S
       const Environment& environment = *scene.environment;
       glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + kEnvironmentUnit));
       bindEnvironment(uploads, environment);
+      if (settings.view == View::EnvLod) {
+        glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + kLodStandInUnit));
+        bindLodStandIn(uploads, environment);
+      }
+      if (environmentSpecularOf(material, environment) == EnvironmentSpecular::Prefiltered) {
+        glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + kGlossyUnit));
+        if (environment.specularLayers) {
+          uploads.environmentLayers(environment.specularLayers);
+        } else {
+          uploads.cubeMap(environment.specular);
+        }
+      }
       if (environmentDiffuseOf(material, environment) == EnvironmentDiffuse::IrradianceMap) {
         glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + kIrradianceUnit));
         if (environment.irradianceLayers) {
@@ -358,8 +450,8 @@ SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const S
     glGetQueryObjectui64v(samples.id(), GL_QUERY_RESULT, &passed);
     stats.samplesPassed = passed;
   }
-  const SkyUniformsT<float> sky = makeSkyUniforms(scene, width, height);
-  if (sky.cube && settings.view == View::Shaded) drawSky(programs, uploads, scene, sky);
+  const SkyUniformsT<float> sky = makeSkyUniforms(scene, width, height, settings.view);
+  if (sky.cube) drawSky(programs, uploads, scene, sky);
   glActiveTexture(GL_TEXTURE0);
   uploads.endFrame();
   return stats;

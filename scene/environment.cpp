@@ -399,8 +399,8 @@ glm::dvec3 directionFromMapCoord(EnvironmentParameterization kind, int layer, do
   return glm::dvec3(2.0 * a, 2.0 * b, zSign * (1.0 - rho2)) / (1.0 + rho2);
 }
 
-glm::dvec3 cubeBilinear(const CubeMap& cube, const glm::dvec3& r) {
-  const CubeMapLevel& level = cube.levels.front();
+glm::dvec3 cubeBilinear(const CubeMap& cube, const glm::dvec3& r, int levelIndex) {
+  const CubeMapLevel& level = cube.levels[static_cast<std::size_t>(levelIndex)];
   const int size = level.size;
   const CubeCoord c = cubeCoordFromDirection(r);
   // A texel one step past an edge: the neighbour face's texel its centre's direction lands on.
@@ -465,6 +465,30 @@ ParameterizedMap parameterizedMapFromCube(const CubeMap& cube, EnvironmentParame
   }
   map.levels.push_back(std::move(level));
   buildMipChain(map.levels, map.layers);
+  return map;
+}
+
+ParameterizedMap parameterizedMapFromCubeLevels(const CubeMap& cube, EnvironmentParameterization kind, int size) {
+  ParameterizedMap map = parameterizedMapFromCube(cube, kind, size);
+  // Level l of side size / 2^l from the cube's level l, as level 0 was from its level 0; as
+  // many levels as the cube has (GL_TEXTURE_MAX_LEVEL says where the chain stops).
+  map.levels.resize(std::min(map.levels.size(), cube.levels.size()));
+  for (std::size_t l = 1; l < map.levels.size(); ++l) {
+    CubeMapLevel& level = map.levels[l];
+    const int side = level.size;
+    for (int layer = 0; layer < map.layers; ++layer) {
+      for (int y = 0; y < side; ++y) {
+        for (int x = 0; x < side; ++x) {
+          const glm::dvec3 c = cubeBilinear(cube, directionFromMapCoord(kind, layer, (x + 0.5) / side, (y + 0.5) / side),
+                                            static_cast<int>(l));
+          const std::size_t i = level.index(layer, x, y);
+          level.r[i] = static_cast<float>(c.x);
+          level.g[i] = static_cast<float>(c.y);
+          level.b[i] = static_cast<float>(c.z);
+        }
+      }
+    }
+  }
   return map;
 }
 

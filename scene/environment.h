@@ -37,6 +37,19 @@ bool parse(std::string_view s, EnvironmentParameterization& out);
 inline constexpr int kCubeFaces = 6;
 inline constexpr const char* kCubeFaceNames[kCubeFaces] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
 
+// The env_face view's colours, per face in GL order (RGB in [0, 1]): red for x, green for y,
+// blue for z, the positive face bright and the negative dark; a sphere or paraboloid map's
+// +Z and -Z hemispheres take +Z's and -Z's.
+// Written as k / 255 for whole levels: a colour halfway between two levels would round either
+// way on the two renderers.
+inline constexpr float kCubeFaceViewColours[kCubeFaces][3] = {
+    {1.0f, 80.0f / 255.0f, 80.0f / 255.0f}, {128.0f / 255.0f, 0.0f, 0.0f},
+    {80.0f / 255.0f, 1.0f, 80.0f / 255.0f}, {0.0f, 128.0f / 255.0f, 0.0f},
+    {80.0f / 255.0f, 80.0f / 255.0f, 1.0f}, {0.0f, 0.0f, 128.0f / 255.0f}};
+// The env_lod view's heat ramp spans LOD 0 to this (inclusive): an 11-level chain, a 1024-texel
+// face's, reaches 10 at its last level.
+inline constexpr float kEnvironmentLodViewMax = 10.0f;
+
 // Largest radiance an HDR texel keeps (inclusive; linear RGB, 1 = an 8-bit file's white):
 // half-float's largest value. Times the largest intensity (kMaxColourValue, 1e4) it stays far
 // from float's range, so no read, product or mix can reach Inf or NaN.
@@ -164,10 +177,10 @@ struct MapCoord {
 MapCoord mapCoordFromDirection(EnvironmentParameterization kind, const glm::dvec3& r);
 glm::dvec3 directionFromMapCoord(EnvironmentParameterization kind, int layer, double u, double v);
 
-// The cube in direction r at level 0, bilinear and seamless across faces (GL's rule: a corner's
-// missing texel weighs as the mean of the other three), in double: the source a parameterized
-// map is built from and measured against.
-glm::dvec3 cubeBilinear(const CubeMap& cube, const glm::dvec3& r);
+// The cube in direction r at level `level` (0 unless given), bilinear and seamless across faces
+// (GL's rule: a corner's missing texel weighs as the mean of the other three), in double: the
+// source a parameterized map is built from and measured against.
+glm::dvec3 cubeBilinear(const CubeMap& cube, const glm::dvec3& r, int level = 0);
 // A layer of a parameterized map at level `level` and (u, v), bilinear with clamp to edge, in
 // double (the parameterization's error is measured with it).
 glm::dvec3 mapBilinear(const ParameterizedMap& map, int level, const MapCoord& c);
@@ -176,6 +189,10 @@ glm::dvec3 mapBilinear(const ParameterizedMap& map, int level, const MapCoord& c
 // kMaxCubeFaceSize): each texel the cube at its centre's direction (cubeBilinear), with the mip
 // chain built as the cube's (2x2 means in double).
 ParameterizedMap parameterizedMapFromCube(const CubeMap& cube, EnvironmentParameterization kind, int size);
+// The same, but every level l (side size / 2^l) made from the cube's level l instead of 2x2
+// means of the level above: for a cube whose levels are not each other's means (the
+// prefiltered specular cube, scene/environment_specular.h). As many levels as the cube has.
+ParameterizedMap parameterizedMapFromCubeLevels(const CubeMap& cube, EnvironmentParameterization kind, int size);
 
 struct Sh9Irradiance;  // scene/environment_light.h
 
@@ -198,6 +215,12 @@ struct Environment {
   std::shared_ptr<const CubeMap> irradiance;
   std::shared_ptr<const ParameterizedMap> irradianceLayers;
   std::shared_ptr<const Sh9Irradiance> sh9;
+  // The glossy reflection (scene/environment_specular.h), built from the cube at load when a
+  // material's environment_specular is prefiltered, null otherwise: the cube with a Phong lobe
+  // per level, and its sphere or paraboloid map (each level from the cube's same level) when
+  // the parameterization is not "cube".
+  std::shared_ptr<const CubeMap> specular;
+  std::shared_ptr<const ParameterizedMap> specularLayers;
 };
 
 }  // namespace twr

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <thread>
 
 namespace twr {
 
@@ -128,6 +129,48 @@ std::vector<glm::dvec3> irradianceCubeImage(const CubeMap& irradiance, int width
 
 std::vector<glm::dvec3> sh9Image(const Sh9Irradiance& sh, int width, int height) {
   return equirectOf<glm::dvec3>(width, height, [&](const glm::dvec3& r) { return irradianceFromSh9(sh, r); });
+}
+
+GlossyError measureGlossyError(const CubeMap& cube, const CubeMap& specular, const std::vector<double>& shininesses,
+                               std::size_t directions, std::size_t samples, std::uint64_t seed) {
+  GlossyError e;
+  e.directions = directions;
+  e.samples = samples;
+  std::vector<glm::dvec3> where(directions);
+  for (std::size_t i = 0; i < directions; ++i) where[i] = fibonacciSphereDirection(i, directions);
+  for (double shininess : shininesses) {
+    GlossyRow row;
+    row.shininess = shininess;
+    row.lod = specularLodFromShininess(specular, shininess);
+    std::vector<double> prefilteredError(directions), mirrorError(directions), noise(directions);
+    // Each direction's seed is its own (seed + i), so the split over threads changes nothing.
+    const auto measure = [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        const MonteCarloEstimate reference = specularMonteCarlo(cube, where[i], shininess, samples, seed + i);
+        prefilteredError[i] = levelsApart(cubeTrilinear(specular, where[i], row.lod), reference.mean);
+        mirrorError[i] = levelsApart(cubeBilinear(cube, where[i]), reference.mean);
+        const glm::dvec3& se = reference.standardError;
+        noise[i] = std::max({se.x, se.y, se.z}) * kLevelsPerUnit;
+      }
+    };
+    const std::size_t threads =
+        std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, std::max<std::size_t>(directions, 1));
+    std::vector<std::thread> workers;
+    for (std::size_t t = 1; t < threads; ++t) workers.emplace_back(measure, directions * t / threads, directions * (t + 1) / threads);
+    measure(0, directions / threads);
+    for (std::thread& worker : workers) worker.join();
+    double noiseSquares = 0.0;
+    for (double n : noise) noiseSquares += n * n;
+    if (directions > 0) row.referenceNoise = std::sqrt(noiseSquares / static_cast<double>(directions));
+    row.prefiltered = summarise(std::move(prefilteredError), where);
+    row.mirror = summarise(std::move(mirrorError), where);
+    e.rows.push_back(row);
+  }
+  return e;
+}
+
+std::vector<glm::dvec3> glossyImage(const CubeMap& specular, double lod, int width, int height) {
+  return equirectOf<glm::dvec3>(width, height, [&](const glm::dvec3& r) { return cubeTrilinear(specular, r, lod); });
 }
 
 }  // namespace twr

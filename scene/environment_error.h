@@ -7,6 +7,7 @@
 
 #include "scene/environment.h"
 #include "scene/environment_light.h"
+#include "scene/environment_specular.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -58,5 +59,29 @@ DiffuseLightError measureDiffuseLightError(const CubeMap& cube, const CubeMap& i
 // 0 first: from the irradiance cube, and from SH9.
 std::vector<glm::dvec3> irradianceCubeImage(const CubeMap& irradiance, int width, int height);
 std::vector<glm::dvec3> sh9Image(const Sh9Irradiance& sh, int width, int height);
+
+// ---- The glossy reflection (scene/environment_specular.h, docs/environment.md "Glossy
+// reflection") ----
+// G_s(r) from the prefiltered cube read at the shininess's LOD as textureLod reads it
+// (cubeTrilinear), against a Monte Carlo estimate of the lobe of exponent s over the source
+// itself (specularMonteCarlo); and, to show what prefiltering buys, the source read in the
+// mirror direction alone (cubeBilinear at level 0) against the same estimate. Levels as above.
+struct GlossyRow {
+  double shininess = 0.0;
+  double lod = 0.0;            // specularLodFromShininess
+  double referenceNoise = 0.0;  // the estimate's own noise, RMS over the directions (levels)
+  DiffuseLightComparison prefiltered, mirror;
+};
+struct GlossyError {
+  std::size_t directions = 0, samples = 0;  // directions on a Fibonacci sphere, Monte Carlo samples each
+  std::vector<GlossyRow> rows;              // one per shininess, in the order given
+};
+// Directions are shared out over the machine's cores; the result does not depend on how many.
+GlossyError measureGlossyError(const CubeMap& cube, const CubeMap& specular, const std::vector<double>& shininesses,
+                               std::size_t directions, std::size_t samples, std::uint64_t seed);
+
+// G at the centre of each pixel of an equirect grid (the convention above), read from the
+// prefiltered cube at `lod`, row 0 first.
+std::vector<glm::dvec3> glossyImage(const CubeMap& specular, double lod, int width, int height);
 
 }  // namespace twr

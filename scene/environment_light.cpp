@@ -1,5 +1,7 @@
 #include "scene/environment_light.h"
 
+#include "scene/environment_specular.h"
+#include "scene/monte_carlo.h"
 #include "scene/scene.h"
 
 #include <algorithm>
@@ -68,15 +70,6 @@ std::array<double, 9> shConstants() {
 // A_l / pi per coefficient: the cosine lobe's band factors, divided by pi for D = E / pi.
 constexpr std::array<double, 9> kBandFactorOverPi = {1.0,        2.0 / 3.0, 2.0 / 3.0, 2.0 / 3.0, 0.25,
                                                      0.25,       0.25,      0.25,      0.25};
-
-// splitmix64: a fixed, portable sequence for the Monte Carlo reference.
-std::uint64_t nextRandom(std::uint64_t& state) {
-  std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
-double uniform01(std::uint64_t& state) { return static_cast<double>(nextRandom(state) >> 11) * 0x1.0p-53; }
 
 }  // namespace
 
@@ -149,34 +142,10 @@ glm::dvec3 irradianceFromSh9(const Sh9Irradiance& sh, const glm::dvec3& n) {
   return glm::max(d, glm::dvec3(0.0));
 }
 
-MonteCarloIrradiance irradianceMonteCarloWithError(const CubeMap& cube, const glm::dvec3& nIn, std::size_t samples,
+MonteCarloIrradiance irradianceMonteCarloWithError(const CubeMap& cube, const glm::dvec3& n, std::size_t samples,
                                                    std::uint64_t seed) {
-  MonteCarloIrradiance result;
-  if (samples == 0) return result;
-  const glm::dvec3 n = glm::normalize(nIn);
-  // Duff et al.'s basis (scene/orthonormal_basis.h), in double.
-  const double s = std::copysign(1.0, n.z);
-  const double a = -1.0 / (s + n.z);
-  const double b = n.x * n.y * a;
-  const glm::dvec3 b1(1.0 + s * n.x * n.x * a, s * b, -s * n.x);
-  const glm::dvec3 b2(b, s + n.y * n.y * a, -n.y);
-  std::uint64_t state = seed;
-  glm::dvec3 sum(0.0), sumSquares(0.0);
-  for (std::size_t k = 0; k < samples; ++k) {
-    // Cosine-weighted: a uniform point on the unit disk lifted to the hemisphere.
-    const double u1 = uniform01(state), u2 = uniform01(state);
-    const double radius = std::sqrt(u1), phi = 2.0 * kPi * u2;
-    const double z = std::sqrt(std::max(0.0, 1.0 - u1));
-    const glm::dvec3 w = b1 * (radius * std::cos(phi)) + b2 * (radius * std::sin(phi)) + n * z;
-    const glm::dvec3 c = cubeBilinear(cube, w);
-    sum += c;
-    sumSquares += c * c;
-  }
-  const double count = static_cast<double>(samples);
-  result.mean = sum / count;
-  const glm::dvec3 variance = glm::max(sumSquares / count - result.mean * result.mean, glm::dvec3(0.0));
-  result.standardError = glm::sqrt(variance / count);
-  return result;
+  // Cosine-weighted samples: the lobe of exponent 1 around n.
+  return lobeMonteCarlo(n, 1.0, samples, seed, [&](const glm::dvec3& w) { return cubeBilinear(cube, w); });
 }
 
 glm::dvec3 irradianceMonteCarlo(const CubeMap& cube, const glm::dvec3& n, std::size_t samples, std::uint64_t seed) {
@@ -192,7 +161,7 @@ glm::dvec3 fibonacciSphereDirection(std::size_t i, std::size_t count) {
 }
 
 bool materialReadsEnvironmentDirections(const Material& material) {
-  return material.environmentSpecular == EnvironmentSpecular::Mirror || material.refractionIndex > 0.0f;
+  return material.environmentSpecular != EnvironmentSpecular::None || material.refractionIndex > 0.0f;
 }
 
 bool materialReadsEnvironment(const Material& material, const Scene& scene) {
@@ -208,6 +177,13 @@ EnvironmentDiffuse environmentDiffuseOf(const Material& material, const Environm
     case EnvironmentDiffuse::None: break;
   }
   return EnvironmentDiffuse::None;
+}
+
+EnvironmentSpecular environmentSpecularOf(const Material& material, const Environment& environment) {
+  if (material.environmentSpecular == EnvironmentSpecular::Prefiltered && !environment.specular) {
+    return EnvironmentSpecular::None;
+  }
+  return material.environmentSpecular;
 }
 
 void prefilterEnvironmentLight(Scene& scene) {
@@ -230,6 +206,20 @@ void prefilterEnvironmentLight(Scene& scene) {
     }
   }
   if (wants(EnvironmentDiffuse::Sh9) && !e.sh9) e.sh9 = std::make_shared<Sh9Irradiance>(sh9IrradianceFromCube(*e.cube));
+  const bool wantsGloss = std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) {
+    return m.environmentSpecular == EnvironmentSpecular::Prefiltered;
+  });
+  if (wantsGloss) {
+    if (!e.specular) e.specular = std::make_shared<CubeMap>(specularCubeFromCube(*e.cube));
+    if (e.parameterization == EnvironmentParameterization::Cube) {
+      e.specularLayers.reset();
+    } else if (!e.specularLayers || e.specularLayers->kind != e.parameterization) {
+      // Twice the cube's side, as the environment's own map is by default: a layer spans 180
+      // to 360 degrees where a face spans 90.
+      e.specularLayers = std::make_shared<ParameterizedMap>(
+          parameterizedMapFromCubeLevels(*e.specular, e.parameterization, 2 * e.specular->size()));
+    }
+  }
 }
 
 }  // namespace twr

@@ -15,6 +15,7 @@
 #pragma once
 
 #include "scene/environment.h"
+#include "scene/monte_carlo.h"
 #include "scene/settings.h"
 
 #include <array>
@@ -60,9 +61,7 @@ glm::dvec3 irradianceFromSh9(const Sh9Irradiance& sh, const glm::dvec3& n);
 // D is their mean, as cos(w) / pi is the samples' density.
 glm::dvec3 irradianceMonteCarlo(const CubeMap& cube, const glm::dvec3& n, std::size_t samples, std::uint64_t seed);
 // The same estimate with its standard error (the samples' standard deviation over sqrt(samples)).
-struct MonteCarloIrradiance {
-  glm::dvec3 mean{0.0}, standardError{0.0};
-};
+using MonteCarloIrradiance = MonteCarloEstimate;
 MonteCarloIrradiance irradianceMonteCarloWithError(const CubeMap& cube, const glm::dvec3& n, std::size_t samples,
                                                    std::uint64_t seed);
 
@@ -73,15 +72,22 @@ glm::dvec3 fibonacciSphereDirection(std::size_t i, std::size_t count);
 // Whether a material reads the scene's environment at all (both renderers decide with this):
 // a mirror reflection, a refraction or a diffuse light, and the scene has a cube.
 bool materialReadsEnvironment(const Material& material, const Scene& scene);
-// Whether it reads the reflected or refracted direction (and so needs their differences).
+// Whether it reads the reflected or refracted direction (a mirror or prefiltered reflection, a
+// refraction).
 bool materialReadsEnvironmentDirections(const Material& material);
 
 // The diffuse light a material reads: its environment_diffuse when the environment holds it
 // (prefilterEnvironmentLight built it), else None. Both renderers decide with this.
 EnvironmentDiffuse environmentDiffuseOf(const Material& material, const Environment& environment);
 
+// The reflection a material mixes in: its environment_specular, but None for prefiltered when
+// the environment holds no prefiltered cube (prefilterEnvironmentLight builds it). Both
+// renderers decide with this.
+EnvironmentSpecular environmentSpecularOf(const Material& material, const Environment& environment);
+
 // Builds what the scene's materials ask for (the irradiance cube and its sphere or paraboloid
-// map, the SH9 coefficients) on scene.environment, once; nothing when no material asks.
+// map, the SH9 coefficients, the prefiltered specular cube and its map) on scene.environment,
+// once; nothing when no material asks.
 void prefilterEnvironmentLight(Scene& scene);
 
 }  // namespace twr

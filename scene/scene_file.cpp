@@ -255,13 +255,17 @@ class SceneReader {
     if (const Json* j = find(root, "materials")) readMaterials(*j, "materials");
     if (const Json* j = find(root, "settings")) readSettings(*j, "settings");
     if (const Json* j = find(root, "environment")) readEnvironment(*j, "environment");
-    if (!scene_.environment) {
-      for (const Material& m : scene_.materials) {
-        if (m.environmentSpecular != EnvironmentSpecular::None || m.refractionIndex > 0.0f ||
-            m.environmentDiffuse != EnvironmentDiffuse::None) {
-          scene_.warnings.push_back(fileName_ + ": " + childPath("materials", m.name) +
-                                    ": its environment keys are ignored: the scene has no \"environment\"");
-        }
+    for (const Material& m : scene_.materials) {
+      if (!scene_.environment && (m.environmentSpecular != EnvironmentSpecular::None || m.refractionIndex > 0.0f ||
+                                  m.environmentDiffuse != EnvironmentDiffuse::None)) {
+        scene_.warnings.push_back(fileName_ + ": " + childPath("materials", m.name) +
+                                  ": its environment keys are ignored: the scene has no \"environment\"");
+      } else if (scene_.environment && m.environmentSpecular != EnvironmentSpecular::None && m.reflectivity == 0.0f &&
+                 m.fresnel == Fresnel::None && m.refractionIndex <= 0.0f) {
+        // The reflection is read, then mixed in with a share of 0: say so rather than draw it unseen.
+        scene_.warnings.push_back(fileName_ + ": " + childPath("materials", m.name) + ": environment_specular " +
+                                  std::string(toString(m.environmentSpecular)) +
+                                  " mixes nothing in: reflectivity is 0 and fresnel is none");
       }
     }
     const Json* nodes = find(root, "nodes");
@@ -598,9 +602,6 @@ class SceneReader {
     }
     if (const Json* v = find(mj, "environment_diffuse")) {
       material.environmentDiffuse = readEnum<EnvironmentDiffuse>(*v, at("environment_diffuse"));
-    }
-    if (material.environmentSpecular == EnvironmentSpecular::Prefiltered) {
-      fail(at("environment_specular"), "\"prefiltered\" is not drawn yet by this version; use \"mirror\" or \"none\"");
     }
   }
 

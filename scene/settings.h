@@ -16,12 +16,21 @@ enum class FrontFace { Ccw, Cw };
 // Height, ParallaxOffset, ParallaxSteps, SelfShadow: the height-field views (docs/parallax.md).
 enum class View {
   Shaded, Albedo, Normal, Tangent, Bitangent, MappedNormal, Uv, Depth, LightTangent, EyeTangent, MipLevel,
-  Height, ParallaxOffset, ParallaxSteps, SelfShadow
+  Height, ParallaxOffset, ParallaxSteps, SelfShadow, ReflectDir, EnvFace, EnvLod
 };
 // Whether the view shows a height-field quantity (drawn only where a material has a height map).
 constexpr bool isHeightView(View v) {
   return v == View::Height || v == View::ParallaxOffset || v == View::ParallaxSteps || v == View::SelfShadow;
 }
+
+// Whether the view shows what the environment is read with (docs/environment.md, "Debug
+// views"): the reflected direction, the cube face (or hemisphere) it lands on, the LOD it is
+// read at. Drawn by the shaded permutation with the environment's value in place of the
+// colour, on the surfaces that read a reflection or refraction and on the sky box; other
+// surfaces are shown dimmed to grey.
+constexpr bool isEnvironmentView(View v) { return v == View::ReflectDir || v == View::EnvFace || v == View::EnvLod; }
+// Whether the view is drawn by the shaded permutation (the lights, the environment, the sky).
+constexpr bool isShadedView(View v) { return v == View::Shaded || isEnvironmentView(v); }
 
 // How a material's surface detail is drawn (docs/parallax.md). NormalMap: the normal map alone
 // (today's behaviour). The others read the height map: two bump methods that change the lighting
@@ -136,7 +145,8 @@ std::string allViewNames();
 inline constexpr View kAllViews[] = {View::Shaded, View::Albedo, View::Normal, View::Tangent, View::Bitangent,
                                      View::MappedNormal, View::Uv, View::Depth, View::LightTangent,
                                      View::EyeTangent, View::MipLevel, View::Height, View::ParallaxOffset,
-                                     View::ParallaxSteps, View::SelfShadow};
+                                     View::ParallaxSteps, View::SelfShadow, View::ReflectDir, View::EnvFace,
+                                     View::EnvLod};
 
 
 }  // namespace twr

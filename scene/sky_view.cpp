@@ -7,20 +7,21 @@
 namespace twr {
 
 bool drawsSky(const Scene& scene, const RenderSettings& settings) {
-  return scene.environment && scene.environment->background && scene.environment->cube && settings.view == View::Shaded;
+  return scene.environment && scene.environment->background && scene.environment->cube && isShadedView(settings.view);
 }
 
 template <typename T>
-SkyUniformsT<T> makeSkyUniforms(const Scene& scene, int width, int height) {
+SkyUniformsT<T> makeSkyUniforms(const Scene& scene, int width, int height, View view) {
   SkyUniformsT<T> sky;
-  if (!scene.environment || !scene.environment->background || !scene.environment->cube) return sky;
+  if (!scene.environment || !scene.environment->background || !scene.environment->cube || !isShadedView(view)) return sky;
+  sky.view = view;
   sky.cube = scene.environment->cube.get();
   sky.layers = scene.environment->layers.get();
   // The view's axes in world space are the rows of viewFromWorld's rotation (lookAt).
-  const glm::dmat4 view(viewFromWorld(scene.camera));
-  const glm::dvec3 rightAxis(view[0][0], view[1][0], view[2][0]);
-  const glm::dvec3 upAxis(view[0][1], view[1][1], view[2][1]);
-  const glm::dvec3 backAxis(view[0][2], view[1][2], view[2][2]);
+  const glm::dmat4 viewFromWorldD(viewFromWorld(scene.camera));
+  const glm::dvec3 rightAxis(viewFromWorldD[0][0], viewFromWorldD[1][0], viewFromWorldD[2][0]);
+  const glm::dvec3 upAxis(viewFromWorldD[0][1], viewFromWorldD[1][1], viewFromWorldD[2][1]);
+  const glm::dvec3 backAxis(viewFromWorldD[0][2], viewFromWorldD[1][2], viewFromWorldD[2][2]);
   const double tanHalfFov = std::tan(glm::radians(static_cast<double>(scene.camera.fovDeg)) * 0.5);
   const double aspect = static_cast<double>(width) / static_cast<double>(height);
   using V3 = glm::vec<3, T>;
@@ -32,7 +33,7 @@ SkyUniformsT<T> makeSkyUniforms(const Scene& scene, int width, int height) {
   return sky;
 }
 
-template SkyUniformsT<float> makeSkyUniforms<float>(const Scene&, int, int);
-template SkyUniformsT<double> makeSkyUniforms<double>(const Scene&, int, int);
+template SkyUniformsT<float> makeSkyUniforms<float>(const Scene&, int, int, View);
+template SkyUniformsT<double> makeSkyUniforms<double>(const Scene&, int, int, View);
 
 }  // namespace twr

@@ -17,15 +17,20 @@ struct SkyUniformsT {
   T intensity = T(1);
   glm::vec<3, T> forward{T(0), T(0), T(-1)}, right{T(1), T(0), T(0)}, up{T(0), T(1), T(0)};
   glm::vec<2, T> ndcPerPixel{T(1)};  // 2 / width, 2 / height
+  // Shaded: the environment's colour; an environment view (isEnvironmentView): what the sky's
+  // direction reads, as the surfaces show it (softrender/environment_view-inl.h).
+  View view = View::Shaded;
 };
 
 // Whether a frame of `scene` with `settings` draws the sky box: an environment with
-// "background" true, in the shaded view (debug views show the clear colour behind surfaces).
+// "background" true, in the shaded view or an environment view (the other debug views show
+// the clear colour behind surfaces).
 bool drawsSky(const Scene& scene, const RenderSettings& settings);
 
-// The sky of `scene` for a frame of width x height (cube null when it draws none): float for
-// both renderers, double for the reference renderer.
+// The sky of `scene` for a frame of width x height in `view` (cube null when it draws none:
+// no environment, background false, or a view that shows no sky): float for both renderers,
+// double for the reference renderer.
 template <typename T = float>
-SkyUniformsT<T> makeSkyUniforms(const Scene& scene, int width, int height);
+SkyUniformsT<T> makeSkyUniforms(const Scene& scene, int width, int height, View view);
 
 }  // namespace twr

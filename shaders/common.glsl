@@ -1,5 +1,6 @@
 // Helpers both phong stages use, each with a C++ twin of the same name and body:
-// safeNormalize in scene/conventions.h, phongPow and vectorAsColour in softrender/shade.*.
+// safeNormalize in scene/conventions.h, phongPow in softrender/shade.*, vectorAsColour and
+// heatColour in softrender/lane_math-inl.h.
 // The prelude before this file defines MAX_LIGHTS, MAX_CLIP_PLANES, MIN_LENGTH_SQUARED and
 // MIN_ATTENUATION_DENOMINATOR from the C++ constants (glrender/gl_program.cpp).
 
@@ -21,4 +22,13 @@ float phongPow(float x, float s) {
 // (v + 1) / 2 with alpha 1: how the debug views show a vector.
 vec4 vectorAsColour(vec3 v) {
   return vec4((v + 1.0) * 0.5, 1.0);
+}
+
+// The heat views' ramp (parallax_steps, env_lod) (blue, cyan, green, yellow, red over t in [0, 1]).
+float heatChannel(float t, float centre) {
+  return min(max(1.5 - abs(4.0 * t - centre), 0.0), 1.0);
+}
+vec4 heatColour(float tIn) {
+  float t = min(max(tIn, 0.0), 1.0);
+  return vec4(heatChannel(t, 3.0), heatChannel(t, 2.0), heatChannel(t, 1.0), 1.0);
 }

@@ -2,7 +2,8 @@
 // function, the same operations in the same order (docs/environment.md). Included between
 // surface_detail.glsl and phong.frag; empty unless the material mixes in an environment.
 // environmentRead (environment_map.glsl) reads the cube or the map built from it.
-// Permutation defines: HAS_ENVIRONMENT, ENVIRONMENT_MIRROR (environment_specular mirror),
+// Permutation defines: HAS_ENVIRONMENT, ENVIRONMENT_REFLECT (environment_specular mirror or
+// prefiltered) with ENVIRONMENT_PREFILTERED (prefiltered: textureLod of the glossy map),
 // ENVIRONMENT_REFRACTION (refraction_index given), FRESNEL_SCHLICK, ENVIRONMENT_DIFFUSE with
 // ENVIRONMENT_IRRADIANCE or ENVIRONMENT_SH9 (environment_diffuse). Each read is texture():
 // its LOD from the direction's quad differences, which the C++ twin computes from the quad's
@@ -30,12 +31,26 @@ float schlick(float f0, float cosTheta) {
 
 // The environment mixed into `base` (the Phong colour): nl the lighting normal, vVec the
 // unnormalised eye direction, both in the lighting space; t, b, n the fragment's frame.
-vec3 environmentMix(vec3 nl, vec3 vVec, vec3 t, vec3 b, vec3 n, vec3 base) {
+// reflectWorldOut and reflectLodOut: the reflection's direction and the LOD it was read at,
+// for the environment views.
+vec3 environmentMix(vec3 nl, vec3 vVec, vec3 t, vec3 b, vec3 n, vec3 base, out vec3 reflectWorldOut,
+                    out float reflectLodOut) {
   vec3 v = safeNormalize(vVec);
   float nDotV = dot(nl, v);
   vec3 r = (2.0 * nDotV) * nl - v;  // reflect(-v, nl)
   vec3 reflectWorld = worldFromLighting(r, t, b, n);
+  reflectWorldOut = reflectWorld;
+#ifdef ENVIRONMENT_PREFILTERED
+  vec3 reflected = environmentSpecularRead(reflectWorld) * environmentIntensity;
+  reflectLodOut = environmentSpecularLod;
+#else
   vec3 reflected = environmentRead(reflectWorld) * environmentIntensity;
+#ifdef ENVIRONMENT_VIEW
+  reflectLodOut = environmentReadLod(reflectWorld);
+#else
+  reflectLodOut = 0.0;
+#endif
+#endif
   vec3 transmitted = base;
   float f0 = reflectivity;
 #ifdef ENVIRONMENT_REFRACTION
@@ -50,7 +65,7 @@ vec3 environmentMix(vec3 nl, vec3 vVec, vec3 t, vec3 b, vec3 n, vec3 base) {
   f0 = ratio * ratio;
 #endif
   float share = 0.0;
-#ifdef ENVIRONMENT_MIRROR
+#ifdef ENVIRONMENT_REFLECT
 #ifdef FRESNEL_SCHLICK
   share = schlick(f0, nDotV);
 #else

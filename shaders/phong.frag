@@ -14,7 +14,7 @@
 // fragment's own uv differences, textureGrad), SELF_SHADOW_*; the views VIEW_HEIGHT,
 // VIEW_PARALLAX_OFFSET, VIEW_PARALLAX_STEPS, VIEW_SELF_SHADOW.
 // Environment (shaders/environment.glsl, included before this file): HAS_ENVIRONMENT,
-// ENVIRONMENT_MIRROR, ENVIRONMENT_REFRACTION, FRESNEL_SCHLICK, ENVIRONMENT_DIFFUSE (with
+// ENVIRONMENT_REFLECT (with ENVIRONMENT_PREFILTERED), ENVIRONMENT_REFRACTION, FRESNEL_SCHLICK, ENVIRONMENT_DIFFUSE (with
 // ENVIRONMENT_IRRADIANCE or ENVIRONMENT_SH9).
 // NO_TRIANGLE_ID: no triangle-id output, as an OpenGL user's shader has none (the lean
 // frame, glrender/gl_renderer.h; llvmpipe pays for gl_PrimitiveID even when no draw buffer
@@ -220,14 +220,22 @@ void main() {
   // The environment's diffuse light, added as the lights' diffuse terms are (environment.glsl).
   colour = vec4(colour.rgb + (kd * albedo) * environmentDiffuse(nl, t, b, n), 1.0);
 #endif
-#if defined(ENVIRONMENT_MIRROR) || defined(ENVIRONMENT_REFRACTION)
+#if defined(ENVIRONMENT_REFLECT) || defined(ENVIRONMENT_REFRACTION)
   // The environment, mixed into the Phong colour (environment.glsl).
 #ifdef LIGHTING_TANGENT
   vec3 eyeVecEnvironment = eyeDirTangent;
 #else
   vec3 eyeVecEnvironment = eyePosWorld - posWorld;
 #endif
-  colour = vec4(environmentMix(nl, eyeVecEnvironment, t, b, n, colour.rgb), 1.0);
+  vec3 reflectWorld;
+  float reflectLod;
+  colour = vec4(environmentMix(nl, eyeVecEnvironment, t, b, n, colour.rgb, reflectWorld, reflectLod), 1.0);
+#ifdef ENVIRONMENT_VIEW
+  colour = environmentViewColour(reflectWorld, reflectLod);
+#endif
+#elif defined(ENVIRONMENT_VIEW)
+  // An environment view on a surface that reads no reflection: dimmed to grey.
+  colour = dimmedColour(colour);
 #endif
 #elif defined(VIEW_ALBEDO)
   colour = vec4(albedo * kd, 1.0);

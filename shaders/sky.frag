@@ -12,6 +12,11 @@ layout(location = 0) out vec4 fragColour;
 void main() {
   vec2 ndc = gl_FragCoord.xy * ndcPerPixel - 1.0;  // gl_FragCoord.xy is the pixel centre
   vec3 dir = (skyForward + skyRight * ndc.x) + skyUp * ndc.y;
+#ifdef ENVIRONMENT_VIEW
+  // An environment view: what the sky's direction reads (environment_map.glsl).
+  fragColour = environmentViewColour(dir, environmentReadLod(dir));
+#else
   vec3 c = environmentRead(dir) * environmentIntensity;
   fragColour = vec4(clamp(c, 0.0, 1.0), 1.0);
+#endif
 }

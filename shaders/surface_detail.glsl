@@ -193,12 +193,3 @@ float selfShadow(SurfaceDetail detail, vec3 lT) {
 #endif
 
 #endif  // HAS_HEIGHT_MAP
-
-// The parallax_steps view's ramp (blue, cyan, green, yellow, red over t in [0, 1]).
-float heatChannel(float t, float centre) {
-  return min(max(1.5 - abs(4.0 * t - centre), 0.0), 1.0);
-}
-vec4 heatColour(float tIn) {
-  float t = min(max(tIn, 0.0), 1.0);
-  return vec4(heatChannel(t, 3.0), heatChannel(t, 2.0), heatChannel(t, 1.0), 1.0);
-}

@@ -106,7 +106,7 @@ class CpuRenderer final : public Renderer {
 
     // The sky box where no triangle was drawn (the environment's background), in the shaded
     // view, before the debug lines, as GL draws it after the scene's triangles.
-    if (settings.view == View::Shaded) drawSky(makeSkyUniforms(scene, width, height), fb, options_.threads);
+    drawSky(makeSkyUniforms(scene, width, height, settings.view), fb, options_.threads);
 
     if (settings.tbnLines.enabled) {
       for (const ItemState& s : items) {

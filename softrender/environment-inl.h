@@ -7,7 +7,8 @@
 //   F = F0 + (1 - F0) (1 - max(n.v, 0))^5   Schlick, F0 = reflectivity, or ((1 - eta) / (1 + eta))^2
 //                                           when the material refracts
 //   colour = mix(transmitted, reflected, F or reflectivity)
-// where transmitted is the Phong colour, or the refracted environment when the material
+// where reflected is the environment in direction R, or with environment_specular prefiltered
+// the glossy cube at the LOD of the material's shininess (scene/environment_specular.h), and transmitted is the Phong colour, or the refracted environment when the material
 // refracts (the reflected one under total internal reflection), and a direction found in
 // tangent space is brought to world space by the fragment's frame before the cube is read.
 // Each direction is read with texture(): a cube's LOD from its differences across the pixel's
@@ -47,6 +48,7 @@ template <typename L>
 struct EnvironmentTermsL {
   Vec3L<L> reflectWorld, refractWorld;  // the directions read (world space)
   Vec3L<L> reflected, transmitted;      // what was read, times the intensity
+  L reflectLod;                         // the LOD the reflection was read at (before clamping to the chain)
   L share;                              // the reflected share: Schlick's F or the reflectivity
   MaskOf<L> totalInternal;              // refraction found no transmitted ray
   Vec3L<L> colour;                      // the mix
@@ -106,7 +108,8 @@ TWR_LANE_INLINE EnvironmentDirectionsL<L> environmentDirectionsLanes(const Envir
 }
 
 // The environment mixed into `base` (the Phong colour), each direction read with texture():
-// its LOD from the direction's quad differences (FragmentL::reflectDx ...).
+// its LOD from the direction's quad differences (FragmentL::reflectDx ...); a prefiltered
+// reflection with textureLod at the shininess's LOD instead.
 template <typename L>
 TWR_LANE_INLINE EnvironmentTermsL<L> environmentLanes(const EnvironmentUniformsT<ScalarOf<L>>& e,
                                                       const EnvironmentDirectionsL<L>& d, const FragmentL<L>& f,
@@ -115,7 +118,14 @@ TWR_LANE_INLINE EnvironmentTermsL<L> environmentLanes(const EnvironmentUniformsT
   const L zero(S(0)), one(S(1)), intensity(e.intensity);
   // Built from values, never default-constructed: a Highway mask has no default constructor
   // the per-target code may call (GCC refuses it on NEON).
-  const Vec3L<L> reflected = (sampleEnvironmentLanes<L>)(*e.cube, e.layers, d.reflectWorld, f.reflectDx, f.reflectDy) * intensity;
+  // The reflection: the environment with texture() (its LOD from the direction's quad
+  // differences), or the prefiltered glossy map with textureLod at the shininess's LOD.
+  const L reflectLod = e.prefiltered ? L(e.specularLod)
+                                     : (environmentLodLanes<L>)(*e.cube, e.layers, d.reflectWorld, f.reflectDx, f.reflectDy);
+  const Vec3L<L> reflected =
+      (e.prefiltered ? (sampleEnvironmentAtLodLanes<L>)(*e.specularCube, e.specularLayers, d.reflectWorld, reflectLod)
+                     : (sampleEnvironmentAtLodLanes<L>)(*e.cube, e.layers, d.reflectWorld, reflectLod)) *
+      intensity;
   Vec3L<L> transmitted = base;
   const auto totalInternal = e.refraction ? d.k < zero : zero > one;  // zero > one: no lane
   L f0(e.reflectivity);
@@ -127,9 +137,9 @@ TWR_LANE_INLINE EnvironmentTermsL<L> environmentLanes(const EnvironmentUniformsT
     f0 = ratio * ratio;
   }
   L share = zero;
-  if (e.mirror) share = e.schlick ? (schlickLanes<L>)(f0, d.nDotV) : L(e.reflectivity);
+  if (e.reflects) share = e.schlick ? (schlickLanes<L>)(f0, d.nDotV) : L(e.reflectivity);
   const Vec3L<L> colour = transmitted + (reflected - transmitted) * share;
-  return EnvironmentTermsL<L>{d.reflectWorld, d.refractWorld, reflected, transmitted, share, totalInternal, colour};
+  return EnvironmentTermsL<L>{d.reflectWorld, d.refractWorld, reflected, transmitted, reflectLod, share, totalInternal, colour};
 }
 
 // The diffuse light at the lighting normal nl (environment_diffuse, scene/environment_light.h):

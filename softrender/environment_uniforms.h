@@ -19,7 +19,14 @@ struct EnvironmentUniformsT {
   // cube (layer_sample-inl.h).
   const ParameterizedMap* layers = nullptr;
   S intensity = S(1);
-  bool mirror = false;      // environment_specular mirror: the reflection is read and mixed in
+  bool reflects = false;    // environment_specular mirror or prefiltered: the reflection is mixed in
+  // environment_specular prefiltered: the reflection is read from the prefiltered cube (or its
+  // sphere or paraboloid map when not null) at the explicit LOD the shininess gives
+  // (scene/environment_specular.h), instead of the environment with texture().
+  bool prefiltered = false;
+  const CubeMap* specularCube = nullptr;
+  const ParameterizedMap* specularLayers = nullptr;
+  S specularLod = S(0);
   bool refraction = false;  // refraction_index given: the refracted environment replaces the Phong colour
   bool schlick = false;     // fresnel schlick
   S reflectivity = S(0);    // [0, 1]
@@ -31,8 +38,11 @@ struct EnvironmentUniformsT {
   const CubeMap* irradiance = nullptr;
   const ParameterizedMap* irradianceLayers = nullptr;
   std::array<Vec3T<S>, 9> sh9{};
-  // A mirror reflection or a refraction: the directions and their quad differences are needed.
-  bool readsDirections() const { return mirror || refraction; }
+  // A reflection or a refraction: the directions are needed.
+  bool readsDirections() const { return reflects || refraction; }
+  // A read with texture() (a mirror reflection, a refraction or its total internal
+  // reflection): the directions' quad differences are needed too.
+  bool readsDifferences() const { return (reflects && !prefiltered) || refraction; }
 };
 
 }  // namespace twr

@@ -111,13 +111,25 @@ TWR_LANE_INLINE void mapDifferencesLanes(EnvironmentParameterization kind, const
 
 // What the environment holds in direction r, read with texture(): the cube with r's fine
 // differences, or the sphere or paraboloid map (when `layers` is not null) with its
-// coordinate's quad differences (mapDifferencesLanes), both in dx and dy.
+// coordinate's quad differences (mapDifferencesLanes), both in dx and dy. First the LOD
+// texture() takes from them:
+template <typename L>
+TWR_LANE_INLINE L environmentLodLanes(const CubeMap& cube, const ParameterizedMap* layers, const Vec3L<L>& r,
+                                      const Vec3L<L>& dx, const Vec3L<L>& dy) {
+  if (!layers) return (cubeLodLanes<L>)(r, dx, dy, cube.size());
+  return (mapLodLanes<L>)(Vec2L<L>(dx.x, dx.y), Vec2L<L>(dy.x, dy.y), layers->size());
+}
+// The same read at a LOD already found (environmentLodLanes, or textureLod's explicit one).
+template <typename L>
+TWR_LANE_INLINE Vec3L<L> sampleEnvironmentAtLodLanes(const CubeMap& cube, const ParameterizedMap* layers,
+                                                     const Vec3L<L>& r, const L& lod) {
+  if (!layers) return (sampleCubeLodLanes<L>)(cube, r, lod);
+  return (sampleMapLodLanes<L>)(*layers, (mapCoordLanes<L>)(layers->kind, r), lod);
+}
 template <typename L>
 TWR_LANE_INLINE Vec3L<L> sampleEnvironmentLanes(const CubeMap& cube, const ParameterizedMap* layers, const Vec3L<L>& r,
                                                 const Vec3L<L>& dx, const Vec3L<L>& dy) {
-  if (!layers) return (sampleCubeGradLanes<L>)(cube, r, dx, dy);
-  const L lod = (mapLodLanes<L>)(Vec2L<L>(dx.x, dx.y), Vec2L<L>(dy.x, dy.y), layers->size());
-  return (sampleMapLodLanes<L>)(*layers, (mapCoordLanes<L>)(layers->kind, r), lod);
+  return (sampleEnvironmentAtLodLanes<L>)(cube, layers, r, (environmentLodLanes<L>)(cube, layers, r, dx, dy));
 }
 
 TWR_LANES_END

@@ -205,7 +205,7 @@ PixelTrace tracePixel(const Scene& scene, const RenderSettings& requested, int w
   trace.depth = output.depth[i];
   trace.triangleId = output.triangleId[i];
   if (trace.triangleId == kNoTriangle && drawsSky(scene, requested)) {
-    const SkyUniformsT<float> sky = makeSkyUniforms(scene, width, height);
+    const SkyUniformsT<float> sky = makeSkyUniforms(scene, width, height, requested.view);
     const SkyReadL<float> read = skyReadLanes<float>(sky, static_cast<float>(x), static_cast<float>(trace.yGl));
     trace.sky = true;
     trace.skyDirection = read.dir;
@@ -307,7 +307,7 @@ std::string formatPixelTrace(const PixelTrace& tr) {
         << fmt(s.height) << ", layers marched " << fmt(s.parallaxSteps) << "\n";
     }
     o << "  Nl (lighting normal) " << fmt(s.nl) << "\n";
-    if (tr.view == View::Shaded) {
+    if (isShadedView(tr.view)) {
       o << "  ambient ka*albedo*Ia " << fmt(s.ambient) << "\n";
       for (int l = 0; l < s.lightCount; ++l) {
         const LightTerms& t = s.lights[static_cast<std::size_t>(l)];
@@ -321,7 +321,10 @@ std::string formatPixelTrace(const PixelTrace& tr) {
       }
       if (s.environmentOn) {
         o << "  environment: Phong colour " << fmt(s.phongColour) << ", reflect (world) " << fmt(s.reflectWorld)
-          << " read " << fmt(s.environmentReflected) << "\n           refract (world) " << fmt(s.refractWorld)
+          << " read " << fmt(s.environmentReflected)
+          << (s.environmentPrefiltered ? " from the prefiltered map at the shininess's LOD "
+                                       : " with texture() at LOD ")
+          << fmt(s.environmentReflectLod) << "\n           refract (world) " << fmt(s.refractWorld)
           << (s.totalInternalReflection ? " (total internal reflection)" : "") << ", transmitted "
           << fmt(s.environmentTransmitted) << ", reflected share " << fmt(s.environmentShare) << "\n";
       }
@@ -420,6 +423,8 @@ nlohmann::json pixelTraceToJson(const PixelTrace& tr) {
         js["environment"] = {{"phong_colour", toJson(s.phongColour)},
                              {"reflect_world", toJson(s.reflectWorld)},
                              {"reflected", toJson(s.environmentReflected)},
+                             {"reflection_read", s.environmentPrefiltered ? "prefiltered" : "texture"},
+                             {"reflection_lod", s.environmentReflectLod},
                              {"refract_world", toJson(s.refractWorld)},
                              {"total_internal_reflection", s.totalInternalReflection},
                              {"transmitted", toJson(s.environmentTransmitted)},

@@ -23,8 +23,8 @@ ViewPixel shadeTracedPixel(const Scene& scene, const RenderSettings& settings, c
                                    [](const TriangleVisit& visit) { return visit.outcome == TraceOutcome::Shaded; });
   if (winner == trace.visits.rend()) {
     // No triangle: the sky box where the scene has one (sky.h), else the clear colour.
-    const SkyUniformsT<float> sky = makeSkyUniforms(scene, trace.width, trace.height);
-    if (sky.cube && view == View::Shaded) {
+    const SkyUniformsT<float> sky = makeSkyUniforms(scene, trace.width, trace.height, view);
+    if (sky.cube) {
       const vec3 c = skyColour(sky, trace.x, trace.yGl);
       pixel.rgba = {unitToByte(c.r), unitToByte(c.g), unitToByte(c.b), 255};
     }

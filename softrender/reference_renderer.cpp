@@ -133,8 +133,7 @@ class ReferenceRenderer final : public Renderer {
     const double backgroundAlpha = scene.output.background.a;
     const std::uint32_t clearWord = backgroundWord(scene.output.background);
     // The sky box in the shaded view (sky.h), sampled at each pass's sample position.
-    SkyUniformsT<double> sky = makeSkyUniforms<double>(scene, width, height);
-    if (requested.view != View::Shaded) sky.cube = nullptr;
+    const SkyUniformsT<double> sky = makeSkyUniforms<double>(scene, width, height, requested.view);
 
     std::vector<glm::dvec3> colourSum(pixelCount, glm::dvec3(0.0));
     std::vector<int> coveredSamples(pixelCount, 0);

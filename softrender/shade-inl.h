@@ -22,6 +22,7 @@
 #undef TWR_SHADE_INL_EMIT
 
 #include "softrender/environment-inl.h"
+#include "softrender/environment_view-inl.h"
 #include "softrender/interpolate-inl.h"
 #include "softrender/lane_math-inl.h"
 #include "softrender/lanes.h"
@@ -34,13 +35,6 @@
 
 TWR_LANES_BEGIN
 
-// (v + 1) / 2 with alpha 1: how the debug views show a vector.
-template <typename L>
-TWR_LANE_INLINE Vec4L<L> vectorAsColourLanes(const Vec3L<L>& v) {
-  using S = ScalarOf<L>;
-  const L one(S(1)), half(S(0.5));
-  return Vec4L<L>((v.x + one) * half, (v.y + one) * half, (v.z + one) * half, one);
-}
 
 // If = 1 / max(A_C + A_L d + A_Q d^2, kMinAttenuationDenominator), evaluated as
 // (A_C + A_L d) + (A_Q d) d: the order phong.frag writes it (tests/softrender/test_lanes.cpp
@@ -175,7 +169,8 @@ TWR_LANE_OUTLINE void setEnvironmentDifferencesLanes(const VaryingPlanesL<L>& pl
                                                      const Maps& maps, FragmentL<L>& f) {
   using S = ScalarOf<L>;
   constexpr bool kTangentSpace = Features::kSpace == LightingSpace::Tangent;
-  if (!u.environment.readsDirections()) return;  // the diffuse light alone reads at the normal
+  // The diffuse light and a prefiltered reflection are read at an explicit LOD.
+  if (!u.environment.readsDifferences()) return;
   const UvPlanesL<L> uvPlanes{planes.overW[kVaryingUv], planes.overW[kVaryingUv + 1], planes.oneOverW};
   const auto directionsAt = [&](const L& x, const L& y) {
     FragmentL<L> g = interpolateFragmentLanes<L>(planes, x, y, f.depth);
@@ -365,6 +360,15 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
           (environmentDirectionsLanes<L>)(u.environment, nl, eyeVec, t, b, n, kTangentSpace);
       const EnvironmentTermsL<L> env = (environmentLanes<L>)(u.environment, directions, f, phong);
       colour = Vec4L<L>(env.colour, one);
+      if (u.shadedView != View::Shaded) {
+        const EnvironmentParameterization kind =
+            u.environment.layers ? u.environment.layers->kind : EnvironmentParameterization::Cube;
+        const int levels = u.environment.prefiltered
+                               ? u.environment.specularCube->levelCount()
+                               : (u.environment.layers ? u.environment.layers->levelCount() : u.environment.cube->levelCount());
+        colour = (environmentViewColourLanes<L>)(u.shadedView, kind, env.reflectWorld,
+                                                 (clampedLodLanes<L>)(env.reflectLod, levels));
+      }
       if constexpr (kTrace) {
         if (terms) {
           terms->environmentOn = true;
@@ -373,10 +377,15 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
           terms->environmentReflected = env.reflected;
           terms->environmentTransmitted = env.transmitted;
           terms->environmentShare = env.share;
+          terms->environmentReflectLod = env.reflectLod;
+          terms->environmentPrefiltered = u.environment.prefiltered;
           terms->totalInternalReflection = env.totalInternal;
           terms->phongColour = phong;
         }
       }
+    }
+    if (u.shadedView != View::Shaded && !(u.environment.cube && u.environment.readsDirections())) {
+      colour = (dimmedColourLanes<L>)(colour);
     }
   } else if constexpr (Features::kView == View::Albedo) {
     colour = Vec4L<L>(albedo * Vec3L<L>(u.kd), one);

@@ -1,6 +1,7 @@
 #include "softrender/shade.h"
 
 #include "scene/environment_light.h"
+#include "scene/environment_specular.h"
 #include "scene/horizon_map.h"
 #include "scene/surface_detail.h"
 
@@ -69,19 +70,28 @@ ShadeUniformsT<T> makeShadeUniforms(const Material& material, const Scene& scene
     lu.attenuation = Vec3T<T>(light.attenuation);
   }
   u.eyePosWorld = Vec3T<T>(scene.camera.position);
+  u.shadedView = isEnvironmentView(settings.view) ? settings.view : View::Shaded;
   // The environment: read only when the scene has one and the material mixes it in.
   if (materialReadsEnvironment(material, scene)) {
     EnvironmentUniformsT<T>& e = u.environment;
     e.cube = scene.environment->cube.get();
     e.layers = scene.environment->layers.get();
     e.intensity = static_cast<T>(scene.environment->intensity);
-    e.mirror = material.environmentSpecular == EnvironmentSpecular::Mirror;
+    const Environment& env = *scene.environment;
+    const EnvironmentSpecular specular = environmentSpecularOf(material, env);
+    e.reflects = specular != EnvironmentSpecular::None;
+    if (specular == EnvironmentSpecular::Prefiltered) {
+      // The LOD from the shininess, in double, rounded once: GL receives the same float.
+      e.prefiltered = true;
+      e.specularCube = env.specular.get();
+      e.specularLayers = env.specularLayers.get();
+      e.specularLod = static_cast<T>(static_cast<float>(specularLodFromShininess(*env.specular, material.shininess)));
+    }
     e.refraction = material.refractionIndex > 0.0f;
     e.schlick = material.fresnel == Fresnel::Schlick;
     e.reflectivity = static_cast<T>(material.reflectivity);
     e.eta = static_cast<T>(e.refraction ? material.refractionIndex : 1.0f);
     // The diffuse light as prefiltered at load (prefilterEnvironmentLight).
-    const Environment& env = *scene.environment;
     e.diffuse = environmentDiffuseOf(material, env);
     if (e.diffuse == EnvironmentDiffuse::IrradianceMap) {
       e.irradiance = env.irradiance.get();

@@ -77,6 +77,9 @@ struct ShadeUniformsT {
   // (it adds a few reads per fragment, not a loop, and doubling every kernel doubles the
   // fast path's build); environment.cube is null when the material does not use one.
   EnvironmentUniformsT<T> environment;
+  // Shaded, or the environment view the shaded permutation draws instead of the colour
+  // (isEnvironmentView; environment_view-inl.h): a runtime branch, not more kernels.
+  View shadedView = View::Shaded;
   Vec3T<T> ambient{T(0)};  // Ia
   std::array<LightUniformT<T>, kMaxLights> lights{};
   int lightCount = 0;  // in [0, kMaxLights]
@@ -117,6 +120,10 @@ struct ShadeTermsT {
   Vec3T<T> reflectWorld{T(0)}, refractWorld{T(0)};
   Vec3T<T> environmentReflected{T(0)}, environmentTransmitted{T(0)};
   T environmentShare = T(0);
+  // The LOD the reflection was read at: texture()'s from the direction's differences, or the
+  // shininess's with a prefiltered reflection (environmentPrefiltered).
+  T environmentReflectLod = T(0);
+  bool environmentPrefiltered = false;
   bool totalInternalReflection = false;
   Vec3T<T> phongColour{T(0)};
   // The environment's diffuse light (environment_diffuse): D at the normal, times the intensity.
@@ -194,11 +201,16 @@ struct ShaderKey {
 // permutation: albedo reads the diffuse map; mapped_normal the normal map; shaded everything;
 // the height views and a parallax method (which moves every map's uv) the height map.
 constexpr bool viewReadsHeightMap(View v) {
-  return v == View::Shaded || v == View::Albedo || v == View::MappedNormal || isHeightView(v);
+  return isShadedView(v) || v == View::Albedo || v == View::MappedNormal || isHeightView(v);
 }
 inline ShaderKey canonicalShaderKey(ShaderKey key) {
   switch (key.view) {
-    case View::Shaded: break;
+    case View::Shaded:
+    case View::ReflectDir:
+    case View::EnvFace:
+    case View::EnvLod:
+      key.view = View::Shaded;  // the environment views share the shaded permutation
+      break;
     case View::Albedo:
     case View::MipLevel:
       key.normalMap = key.specularMap = false;
@@ -289,6 +301,11 @@ void withShaderFeatures(const ShaderKey& keyIn, Body&& body) {
     case View::ParallaxOffset: withAll.template operator()<View::ParallaxOffset>(); break;
     case View::ParallaxSteps: withAll.template operator()<View::ParallaxSteps>(); break;
     case View::SelfShadow: withAll.template operator()<View::SelfShadow>(); break;
+    case View::ReflectDir:
+    case View::EnvFace:
+    case View::EnvLod:  // drawn by the shaded permutation (ShadeUniformsT::shadedView)
+      withAll.template operator()<View::Shaded>();
+      break;
   }
 }
 

@@ -18,6 +18,7 @@
 #ifdef TWR_SKY_INL_EMIT
 #undef TWR_SKY_INL_EMIT
 
+#include "softrender/environment_view-inl.h"
 #include "softrender/layer_sample-inl.h"
 #include "softrender/lane_math-inl.h"
 #include "softrender/lanes.h"
@@ -63,13 +64,21 @@ TWR_LANE_INLINE SkyReadL<L> skyReadLanes(const SkyUniformsT<ScalarOf<L>>& sky, c
 }
 
 // The sky's colour there: the environment read with texture() (the LOD from the direction's
-// differences, cubeLodLanes) times the intensity, clamped to [0, 1].
+// differences, cubeLodLanes) times the intensity, clamped to [0, 1]; in an environment view,
+// the view's colour for the direction and that LOD.
 template <typename L>
 TWR_LANE_INLINE Vec3L<L> skyColourLanes(const SkyUniformsT<ScalarOf<L>>& sky, const L& px, const L& py) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1));
   const SkyReadL<L> read = (skyReadLanes<L>)(sky, px, py);
-  const Vec3L<L> c = (sampleEnvironmentLanes<L>)(*sky.cube, sky.layers, read.dir, read.dx, read.dy) * L(sky.intensity);
+  const L lod = (environmentLodLanes<L>)(*sky.cube, sky.layers, read.dir, read.dx, read.dy);
+  if (sky.view != View::Shaded) {
+    const EnvironmentParameterization kind = sky.layers ? sky.layers->kind : EnvironmentParameterization::Cube;
+    const int levels = sky.layers ? sky.layers->levelCount() : sky.cube->levelCount();
+    const Vec4L<L> v = (environmentViewColourLanes<L>)(sky.view, kind, read.dir, (clampedLodLanes<L>)(lod, levels));
+    return Vec3L<L>(v.x, v.y, v.z);
+  }
+  const Vec3L<L> c = (sampleEnvironmentAtLodLanes<L>)(*sky.cube, sky.layers, read.dir, lod) * L(sky.intensity);
   return Vec3L<L>(minOf(maxOf(c.x, zero), one), minOf(maxOf(c.y, zero), one), minOf(maxOf(c.z, zero), one));
 }
 

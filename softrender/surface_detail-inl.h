@@ -326,21 +326,6 @@ TWR_LANE_OUTLINE L horizonShadowLanes(const Maps& maps, const ShadeUniformsT<Sca
   return select(lT.z > zero, lit, zero);
 }
 
-// The parallax_steps view's colour: a blue-cyan-green-yellow-red ramp over t in [0, 1].
-// Each channel is a tent clamp(1.5 - |4 t - centre|, 0, 1): red centred at 3, green at 2,
-// blue at 1.
-template <typename L>
-TWR_LANE_INLINE L heatChannelLanes(const L& t, ScalarOf<L> centre) {
-  using S = ScalarOf<L>;
-  return minOf(maxOf(L(S(1.5)) - absOf(L(S(4)) * t - L(centre)), L(S(0))), L(S(1)));
-}
-template <typename L>
-TWR_LANE_INLINE Vec4L<L> heatColourLanes(const L& tIn) {
-  using S = ScalarOf<L>;
-  const L t = minOf(maxOf(tIn, L(S(0))), L(S(1)));
-  return Vec4L<L>(heatChannelLanes<L>(t, S(3)), heatChannelLanes<L>(t, S(2)), heatChannelLanes<L>(t, S(1)), L(S(1)));
-}
-
 TWR_LANES_END
 
 #endif  // TWR_SURFACE_DETAIL_INL_EMIT

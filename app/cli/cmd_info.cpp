@@ -5,6 +5,7 @@
 // machine offers (OSMesa, EGL's surfaceless platform, each EGL device) and what GL it gives.
 #include "app/cli/commands.h"
 #include "scene/environment_light.h"
+#include "scene/environment_specular.h"
 #include "scene/json_text.h"
 #include "app/cli/common.h"
 #include "glrender/gl_renderer.h"
@@ -233,6 +234,10 @@ Json environmentJson(const Scene& scene) {
   }
   if (e.irradiance) j["irradiance_size"] = e.irradiance->size();
   j["sh9"] = e.sh9 != nullptr;
+  if (e.specular) {
+    j["specular_size"] = e.specular->size();
+    j["specular_levels"] = e.specular->levelCount();
+  }
   Json uses = Json::object();
   for (const Material& m : scene.materials) {
     if (!materialReadsEnvironment(m, scene)) continue;
@@ -349,6 +354,13 @@ void printScene(std::ostream& out, const Scene& scene) {
           << "\n";
     }
     if (e.sh9) out << "  diffuse light: nine SH coefficients per channel\n";
+    if (e.specular) {
+      out << "  glossy reflection: prefiltered cube " << e.specular->size() << "x" << e.specular->size() << " per face, "
+          << e.specular->levelCount() << " levels, a Phong lobe each (level 0: exponent "
+          << num(static_cast<float>(specularExponentOfSide(e.specular->size()))) << ")"
+          << (e.specularLayers ? ", read from its " + std::string(toString(e.parameterization)) + " map" : std::string())
+          << "\n";
+    }
     for (const Material& m : scene.materials) {
       if (!materialReadsEnvironment(m, scene)) continue;
       out << "  " << m.name << ": " << toString(m.environmentSpecular) << ", reflectivity " << num(m.reflectivity)
@@ -356,6 +368,10 @@ void printScene(std::ostream& out, const Scene& scene) {
           << (m.refractionIndex > 0.0f ? ", refraction_index " + num(m.refractionIndex) : std::string())
           << (m.environmentDiffuse != EnvironmentDiffuse::None ? ", diffuse " + std::string(toString(m.environmentDiffuse))
                                                                : std::string())
+          << (m.environmentSpecular == EnvironmentSpecular::Prefiltered && e.specular
+                  ? ", shininess " + num(m.shininess) + " reads LOD " +
+                        num(static_cast<float>(specularLodFromShininess(*e.specular, m.shininess)))
+                  : std::string())
           << "\n";
     }
   }

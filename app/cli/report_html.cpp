@@ -505,6 +505,34 @@ std::string diffuseLightHtml(const DiffuseLightSection& section) {
   return s.str();
 }
 
+std::string glossyHtml(const GlossySection& section) {
+  std::ostringstream s;
+  s << "<h2 id=\"environment_glossy\">Environment glossy reflection</h2>\n";
+  s << "<p>What a Phong lobe of exponent s around the reflected direction gathers of " << escape(section.source)
+    << ", from the prefiltered cube (a lobe per level, e<sub>l</sub> = (N<sub>l</sub> / 2)&sup2;) read as textureLod "
+       "reads it at LOD = 0.5 log<sub>2</sub>(e<sub>0</sub> / s), against a Monte Carlo estimate of that lobe over "
+       "the source itself (samples drawn from the lobe, a fixed seed, the source read exactly), at directions spread "
+       "evenly on the sphere; and the unfiltered source in the mirror direction against the same estimate. Whole "
+       "LODs are a level's own lobe; the rows between fall halfway, where two lobes are blended. Source: "
+       "scene/environment_specular.cpp, scene/environment_error.cpp; docs/environment.md.</p>\n";
+  s << "<div class=\"reading\"><b>" << escape(section.summary) << "</b><br>" << escape(section.reading) << "</div>\n";
+  if (!section.skipped.empty()) return s.str();
+  const GlossyError& e = section.error;
+  s << "<table><thead><tr><th>shininess</th><th>LOD</th><th>prefiltered RMSE</th><th>99th percentile</th>"
+       "<th>worst</th><th>mirror read RMSE</th><th>reference noise</th></tr></thead>\n<tbody>\n";
+  for (const GlossyRow& row : e.rows) {
+    s << "<tr><td>" << std::fixed << std::setprecision(0) << row.shininess << "</td><td>" << std::setprecision(2)
+      << row.lod << "</td><td>" << row.prefiltered.rmse << "</td><td>" << row.prefiltered.p99 << "</td><td>"
+      << row.prefiltered.maxError << "</td><td>" << row.mirror.rmse << "</td><td>" << row.referenceNoise
+      << "</td></tr>\n";
+  }
+  s << "</tbody></table>\n";
+  s << "<p class=\"small\">" << e.directions << " directions, " << e.samples << " Monte Carlo samples each; levels "
+    << "of 1/255. Building the cube: " << std::fixed << std::setprecision(0) << section.buildMs << " ms.</p>\n";
+  s << figuresHtml(section.pictures, section.captions);
+  return s.str();
+}
+
 std::string heightFieldsHtml(const HeightFieldSection& section) {
   std::ostringstream s;
   s << "<h2 id=\"height_fields\">Height fields: each method against the displaced surface</h2>\n";
@@ -569,6 +597,8 @@ void writeReportHtml(const std::string& path, const ReportData& data) {
     << escape(data.parameterizations.summary) << "</li>\n";
   s << "<li><a href=\"#environment_diffuse\"><b>Environment diffuse light</b></a>: "
     << escape(data.diffuseLight.summary) << "</li>\n";
+  s << "<li><a href=\"#environment_glossy\"><b>Environment glossy reflection</b></a>: "
+    << escape(data.glossy.summary) << "</li>\n";
   s << "<li><a href=\"#orthonormal_basis\"><b>Orthonormal bases</b></a>: " << escape(data.basisSummary) << "</li>\n";
   s << "</ul>\n";
 
@@ -583,6 +613,7 @@ void writeReportHtml(const std::string& path, const ReportData& data) {
   s << heightFieldsHtml(data.heightFields);
   s << parameterizationsHtml(data.parameterizations);
   s << diffuseLightHtml(data.diffuseLight);
+  s << glossyHtml(data.glossy);
 
   s << "<h2 id=\"orthonormal_basis\">Orthonormal bases from a normal</h2>\n";
   s << "<p>Four ways to build two unit vectors b1, b2 with b1 x b2 = n from a unit normal alone, in float as a shader "

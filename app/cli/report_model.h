@@ -120,6 +120,19 @@ struct DiffuseLightSection {
   std::string summary, reading, skipped;
 };
 
+// The environment's glossy reflection (docs/environment.md, "Glossy reflection"): the
+// prefiltered cube read at each shininess's LOD, and the unfiltered source in the mirror
+// direction, against Monte Carlo over the lobe (scene/environment_error.h's measureGlossyError).
+struct GlossySection {
+  std::string source;
+  GlossyError error;
+  int cubeSize = 0, levels = 0;  // the prefiltered cube's side (texels) and level count
+  double levelZeroExponent = 0.0;  // e_0, the sharpest lobe it holds
+  double buildMs = 0.0;          // building it from the source, every core
+  std::vector<std::string> pictures, captions;  // beside report.html
+  std::string summary, reading, skipped;
+};
+
 struct ReportData {
   std::string generatedAt;  // local time
   std::string machine;      // CPU model, core count, GL renderer
@@ -131,6 +144,7 @@ struct ReportData {
   HeightFieldSection heightFields;
   ParameterizationSection parameterizations;
   DiffuseLightSection diffuseLight;
+  GlossySection glossy;
   std::vector<BasisRow> bases;
   std::size_t basisDirections = 0;
   std::string basisSummary;

@@ -12,6 +12,7 @@
 #include "glrender/gl_renderer.h"
 #include "scene/environment_error.h"
 #include "scene/environment_light.h"
+#include "scene/environment_specular.h"
 #include "scene/errors.h"
 #include "scene/primitives.h"
 #include "scene/scene_file.h"
@@ -214,6 +215,7 @@ class Sweeper {
   void bases(ReportData& data);
   void parameterizations(ParameterizationSection& section, const std::string& outDir);
   void diffuseLight(DiffuseLightSection& section, const std::string& outDir);
+  void glossy(GlossySection& section, const std::string& outDir);
   // The asset tool's sky as a cube, or nothing with `skipped` saying why.
   std::optional<CubeMap> loadSky(std::string& skipped) const;
 
@@ -1035,6 +1037,41 @@ void Sweeper::diffuseLight(DiffuseLightSection& section, const std::string& outD
                       "|SH9 - irradiance cube| per normal (black 0, the ramp's top 64 levels and more)"};
 }
 
+void Sweeper::glossy(GlossySection& section, const std::string& outDir) {
+  const std::optional<CubeMap> sky = loadSky(section.skipped);
+  if (!sky) return;
+  section.source = "the asset tool's sky (textures/sky_*.png)";
+  say("environment: prefiltered glossy reflection against Monte Carlo");
+  const auto start = std::chrono::steady_clock::now();
+  const CubeMap specular = specularCubeFromCube(*sky);
+  section.buildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  section.cubeSize = specular.size();
+  section.levels = specular.levelCount();
+  // Every level's own lobe (e_l = (N_l / 2)^2) and the geometric midpoints between them, where
+  // textureLod blends two lobes, from 1 up to e_0; and two sharper lobes than level 0's, which
+  // read level 0 (the chain's clamp): 4 e_0, 2 e_0, e_0, e_0 / 2, ... 1.
+  const double e0 = specularExponentOfSide(specular.size());
+  section.levelZeroExponent = e0;
+  std::vector<double> shininesses;
+  for (double e = 4.0 * e0; e >= 1.0; e *= 0.5) shininesses.push_back(e);
+  const std::size_t directions = options_.quick ? 200 : 1000;
+  const std::size_t samples = options_.quick ? 2048 : 16384;
+  constexpr std::uint64_t kSeed = 20261127;  // fixed: the same reference every run
+  section.error = measureGlossyError(*sky, specular, shininesses, directions, samples, kSeed);
+  // The sky as three shininesses see it: level 0's lobe, and two further down the chain.
+  const int width = options_.quick ? 256 : 512, height = width / 2;
+  const std::filesystem::path dir(outDir);
+  for (const double shininess : {e0, e0 / 16.0, e0 / 128.0}) {
+    const double lod = specularLodFromShininess(specular, shininess);
+    const std::string name = "env_glossy_" + std::to_string(static_cast<int>(shininess)) + ".png";
+    savePng((dir / name).string(), colourPicture(glossyImage(specular, lod, width, height), width, height));
+    section.pictures.push_back(name);
+    section.captions.push_back("The sky through a Phong lobe of exponent " + std::to_string(static_cast<int>(shininess)) +
+                               " (the prefiltered cube at LOD " + fmtFixed(lod, 2) +
+                               "), as an equirect of reflected directions");
+  }
+}
+
 std::string machineDescription() {
   std::ifstream cpuinfo("/proc/cpuinfo");
   std::string line, model = "unknown CPU";
@@ -1084,6 +1121,10 @@ ReportData Sweeper::run() {
   const KnobReading diffuseReading = readDiffuseLight(data.diffuseLight);
   data.diffuseLight.summary = diffuseReading.summary;
   data.diffuseLight.reading = diffuseReading.detail;
+  glossy(data.glossy, options_.outDir);
+  const KnobReading glossyReading = readGlossy(data.glossy);
+  data.glossy.summary = glossyReading.summary;
+  data.glossy.reading = glossyReading.detail;
   bases(data);
   data.machine =
       machineDescription() + "; GL: " + glRendererString() + ", " + glVersionString() + "; " + glContextString();

@@ -487,7 +487,9 @@ void GuiApp::frame(bool& finalFrame, bool present) {
                                                 {"parameterization", std::string(toString(doc_.scene.environment->parameterization))},
                                                 {"map_size", doc_.scene.environment->layers ? doc_.scene.environment->layers->size() : 0},
                                                 {"irradiance_layers", doc_.scene.environment->irradianceLayers != nullptr},
-                                                {"sh9", doc_.scene.environment->sh9 != nullptr}}
+                                                {"sh9", doc_.scene.environment->sh9 != nullptr},
+                                                {"specular_levels", doc_.scene.environment->specular ? doc_.scene.environment->specular->levelCount() : 0},
+                                                {"specular_layers", doc_.scene.environment->specularLayers != nullptr}}
                                : nlohmann::json(nullptr);
     state["view"] = std::string(toString(doc_.scene.settings.view));
   }

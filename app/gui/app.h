@@ -149,6 +149,7 @@ class GuiApp {
   bool drawEnvironmentControls(std::size_t material);
   // The parallax_steps view's heat ramp as a bar, labelled with the selected material's counts.
   void drawParallaxStepsLegend();
+  void drawEnvironmentViewLegend(View view);  // env_face's swatches, env_lod's heat bar
   void drawLightsSection();
   void drawCameraTab();
   void drawViewPanel();

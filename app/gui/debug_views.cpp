@@ -1,5 +1,6 @@
 #include "app/gui/debug_views.h"
 
+#include "scene/environment.h"
 #include "scene/mip_level_view.h"
 
 #include <algorithm>
@@ -60,6 +61,18 @@ const char* viewLegend(View view) {
     case View::SelfShadow:
       return "How much light 0 reaches the point through the height field: white lit, black in its shadow "
              "(height march or horizon map). White everywhere: self_shadow is none or there is no light.";
+    case View::ReflectDir:
+      return "The reflected direction the environment is read in, world space, as (R + 1) / 2: red = x, green = "
+             "y, blue = z; on the sky box, the view direction. Surfaces that read no reflection are dimmed to grey "
+             "(docs/environment.md).";
+    case View::EnvFace:
+      return "Which cube face the reflection reads: +X red, -X dark red, +Y green, -Y dark green, +Z blue, -Z dark "
+             "blue (the face is the direction's largest component, GL's table); under a sphere or dual-paraboloid "
+             "map, the hemisphere instead (+Z blue, -Z dark blue). The sky box shows its own faces.";
+    case View::EnvLod:
+      return "The LOD the reflection is read at, as a heat map from 0 (dark blue) to 10 (dark red): a mirror's "
+             "from its direction's differences across the 2x2 quad (curved or bumpy surfaces read blurrier "
+             "levels), a prefiltered reflection's from the shininess.";
   }
   return "";
 }
@@ -70,6 +83,38 @@ vec3 parallaxStepsColour(float tIn) {
   return {channel(3.0f), channel(2.0f), channel(1.0f)};
 }
 
+std::optional<float> heatRampFromColour(const std::array<std::uint8_t, 3>& rgb) {
+  // The ramp is continuous and one-to-one: the nearest of 1001 samples, if it is near at all.
+  float best = 0.0f, bestDistance = std::numeric_limits<float>::max();
+  for (int i = 0; i <= 1000; ++i) {
+    const float t = static_cast<float>(i) / 1000.0f;
+    const vec3 c = parallaxStepsColour(t) * 255.0f;
+    const float d = std::abs(c.r - rgb[0]) + std::abs(c.g - rgb[1]) + std::abs(c.b - rgb[2]);
+    if (d < bestDistance) {
+      bestDistance = d;
+      best = t;
+    }
+  }
+  constexpr float kMaxLevelsOff = 6.0f;  // the sum of three channels' rounding and a level of disagreement
+  if (bestDistance > kMaxLevelsOff) return std::nullopt;
+  return best;
+}
+
+const char* environmentFaceFromColour(const std::array<std::uint8_t, 3>& rgb) {
+  int best = 0;
+  float bestDistance = std::numeric_limits<float>::max();
+  for (int f = 0; f < kCubeFaces; ++f) {
+    float d = 0.0f;
+    for (int c = 0; c < 3; ++c) d += std::abs(kCubeFaceViewColours[f][c] * 255.0f - static_cast<float>(rgb[static_cast<std::size_t>(c)]));
+    if (d < bestDistance) {
+      bestDistance = d;
+      best = f;
+    }
+  }
+  constexpr float kMaxLevelsOff = 6.0f;
+  return bestDistance <= kMaxLevelsOff ? kCubeFaceNames[best] : "none (dimmed: no reflection read)";
+}
+
 int parallaxStepsMost(const Material& material) {
   return material.parallaxLayers.y +
          (material.surfaceDetail == SurfaceDetail::Relief ? material.reliefRefinementSteps : 0);
@@ -77,7 +122,7 @@ int parallaxStepsMost(const Material& material) {
 
 bool isVectorView(View view) {
   return view == View::Normal || view == View::Tangent || view == View::Bitangent || view == View::MappedNormal ||
-         view == View::LightTangent || view == View::EyeTangent;
+         view == View::LightTangent || view == View::EyeTangent || view == View::ReflectDir;
 }
 
 PixelSample sampleAt(const RenderOutput& output, PixelPos pixel) {
@@ -103,6 +148,15 @@ std::string describeViewSample(View view, const PixelSample& sample) {
       std::snprintf(text, sizeof text, "mip level %.2f", static_cast<double>(*level));
     } else {
       std::snprintf(text, sizeof text, "no level colour (no map)");
+    }
+  } else if (view == View::EnvFace) {
+    std::snprintf(text, sizeof text, "face %s", environmentFaceFromColour({sample.rgba[0], sample.rgba[1], sample.rgba[2]}));
+  } else if (view == View::EnvLod) {
+    const std::optional<float> t = heatRampFromColour({sample.rgba[0], sample.rgba[1], sample.rgba[2]});
+    if (t) {
+      std::snprintf(text, sizeof text, "LOD %.2f", static_cast<double>(*t * kEnvironmentLodViewMax));
+    } else {
+      std::snprintf(text, sizeof text, "no LOD colour (dimmed: no reflection read)");
     }
   } else if (view == View::Uv) {
     std::snprintf(text, sizeof text, "uv %.3f %.3f (fractional part)", unit(0), unit(1));

@@ -10,7 +10,10 @@
 #include "scene/scene.h"
 #include "scene/settings.h"
 
+#include <array>
+#include <cstdint>
 #include <initializer_list>
+#include <optional>
 #include <string>
 
 namespace twr::gui {
@@ -26,6 +29,13 @@ vec3 parallaxStepsColour(float t);
 // The step count the parallax_steps view draws red for `material`: parallax_layers' max, plus
 // relief_refinement_steps when the method is relief (the shaders' layerCap + refinementSteps).
 int parallaxStepsMost(const Material& material);
+
+// The heat ramp's t in [0, 1] a colour shows (parallaxStepsColour inverted), or none when the
+// colour is not on the ramp (the env_lod view's dimmed surfaces).
+std::optional<float> heatRampFromColour(const std::array<std::uint8_t, 3>& rgb);
+// The cube face (kCubeFaceNames) the env_face view's colour stands for, or a note when it is
+// none of them.
+const char* environmentFaceFromColour(const std::array<std::uint8_t, 3>& rgb);
 
 // True for the views that show a unit vector as (v + 1) / 2.
 bool isVectorView(View view);

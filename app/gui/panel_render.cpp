@@ -4,6 +4,7 @@
 #include "app/gui/debug_views.h"
 #include "app/gui/ui_widgets.h"
 #include "app/gui/text_concat.h"
+#include "scene/environment.h"
 #include "softrender/cpu_renderer.h"
 
 #include <algorithm>
@@ -117,6 +118,7 @@ void GuiApp::drawRenderingTab() {
               "(vectors as (v + 1) / 2, see docs/shading.md).");
   hintText(viewLegend(settings.view));
   if (settings.view == View::ParallaxSteps) drawParallaxStepsLegend();
+  if (settings.view == View::EnvFace || settings.view == View::EnvLod) drawEnvironmentViewLegend(settings.view);
   if (settings.view == View::Depth) {
     if (ImGui::Checkbox("linearised (eye distance)", &prefs_.linearDepth)) {
       cpuTextureStale_ = glTextureStale_ = true;
@@ -238,6 +240,52 @@ void GuiApp::drawRenderingTab() {
 }  // namespace twr::gui
 
 namespace twr::gui {
+
+void GuiApp::drawEnvironmentViewLegend(View view) {
+  const float width = ImGui::GetContentRegionAvail().x;
+  const float barHeight = ImGui::GetTextLineHeight();
+  const ImVec2 corner = ImGui::GetCursorScreenPos();
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const ImU32 labelColour = ImGui::GetColorU32(ImGuiCol_Text);
+  if (view == View::EnvFace) {
+    // Six swatches, each named: the colours both renderers draw (kCubeFaceViewColours).
+    for (int f = 0; f < kCubeFaces; ++f) {
+      const float x0 = corner.x + width * static_cast<float>(f) / kCubeFaces;
+      const float x1 = corner.x + width * static_cast<float>(f + 1) / kCubeFaces;
+      const float* c = kCubeFaceViewColours[f];
+      draw->AddRectFilled(ImVec2(x0, corner.y), ImVec2(x1, corner.y + barHeight),
+                          ImGui::ColorConvertFloat4ToU32(ImVec4(c[0], c[1], c[2], 1.0f)));
+      const float luminance = 0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2];
+      draw->AddText(ImVec2(x0 + 3.0f, corner.y), luminance > 0.5f ? IM_COL32(0, 0, 0, 255) : IM_COL32(255, 255, 255, 255),
+                    kCubeFaceNames[f]);
+    }
+    ImGui::Dummy(ImVec2(width, barHeight));
+    probe_.item("env_face_legend");
+    return;
+  }
+  // env_lod: the heat ramp from LOD 0 to kEnvironmentLodViewMax, with a tick label per 2 levels.
+  for (int i = 0; i < kStepsBarSlices; ++i) {
+    const float t = (static_cast<float>(i) + 0.5f) / kStepsBarSlices;
+    const vec3 c = parallaxStepsColour(t);
+    const float x0 = corner.x + width * static_cast<float>(i) / kStepsBarSlices;
+    const float x1 = corner.x + width * static_cast<float>(i + 1) / kStepsBarSlices;
+    draw->AddRectFilled(ImVec2(x0, corner.y), ImVec2(x1, corner.y + barHeight),
+                        ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, 1.0f)));
+  }
+  draw->AddRect(corner, ImVec2(corner.x + width, corner.y + barHeight), IM_COL32(140, 140, 140, 255));
+  ImGui::Dummy(ImVec2(width, barHeight));
+  const float labelTop = ImGui::GetCursorScreenPos().y;
+  constexpr int kLodTicks = 6;  // LOD 0, 2, ..., 10
+  for (int k = 0; k < kLodTicks; ++k) {
+    const float fraction = static_cast<float>(k) / (kLodTicks - 1);
+    const std::string label = std::to_string(static_cast<int>(fraction * kEnvironmentLodViewMax));
+    const float labelWidth = ImGui::CalcTextSize(label.c_str()).x;
+    const float x = std::clamp(corner.x + fraction * width - 0.5f * labelWidth, corner.x, corner.x + width - labelWidth);
+    draw->AddText(ImVec2(x, labelTop), labelColour, label.c_str());
+  }
+  ImGui::Dummy(ImVec2(width, ImGui::GetTextLineHeight()));
+  probe_.item("env_lod_legend");
+}
 
 void GuiApp::drawParallaxStepsLegend() {
   const std::vector<Material>& materials = doc_.scene.materials;

@@ -7,6 +7,7 @@
 #include "app/gui/ui_widgets.h"
 
 #include "scene/environment_light.h"
+#include "scene/environment_specular.h"
 #include "scene/errors.h"
 #include "scene/primitives.h"
 #include "scene/scene_file.h"
@@ -14,6 +15,7 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 
@@ -56,7 +58,8 @@ constexpr float kHeightScaleSliderMax = 0.2f;
 constexpr float kEnvironmentIntensitySliderMax = 4.0f;
 constexpr float kDefaultRefractionIndex = 0.66f;
 constexpr float kMinRefractionIndexSlider = 0.2f;
-constexpr EnvironmentSpecular kEnvironmentSpeculars[] = {EnvironmentSpecular::None, EnvironmentSpecular::Mirror};
+constexpr EnvironmentSpecular kEnvironmentSpeculars[] = {EnvironmentSpecular::None, EnvironmentSpecular::Mirror,
+                                                         EnvironmentSpecular::Prefiltered};
 constexpr EnvironmentDiffuse kEnvironmentDiffuses[] = {EnvironmentDiffuse::None, EnvironmentDiffuse::IrradianceMap,
                                                        EnvironmentDiffuse::Sh9};
 constexpr Fresnel kFresnels[] = {Fresnel::None, Fresnel::Schlick};
@@ -591,10 +594,23 @@ bool GuiApp::drawEnvironmentControls(std::size_t index) {
   if (!doc_.scene.environment) hintText("No environment: reflections and refractions need \"environment\" in the scene file.");
   ImGui::BeginDisabled(!doc_.scene.environment);
   ImGui::SetNextItemWidth(fieldWidth);
-  edited |= probedCombo("env specular", "environment_specular", material.environmentSpecular,
-                        kEnvironmentSpeculars);
-  itemTooltip("none: no reflection of the environment; mirror: the reflected direction read as texture() reads it "
-              "(environment_specular).");
+  if (probedCombo("env specular", "environment_specular", material.environmentSpecular, kEnvironmentSpeculars)) {
+    prefilterEnvironmentLight(doc_.scene);  // the glossy cube, built once, the first time a material asks
+    edited = true;
+  }
+  itemTooltip("none: no reflection of the environment; mirror: the reflected direction read as texture() reads it; "
+              "prefiltered: a cube with a Phong lobe per mip level, read with textureLod at the level the shininess "
+              "names, so a rougher material reflects a blurrier sky (environment_specular).");
+  if (material.environmentSpecular == EnvironmentSpecular::Prefiltered && doc_.scene.environment &&
+      doc_.scene.environment->specular) {
+    const CubeMap& glossy = *doc_.scene.environment->specular;
+    char lod[32];
+    std::snprintf(lod, sizeof lod, "%.2f", specularLodFromShininess(glossy, material.shininess));
+    hintText(concat("Shininess ", static_cast<int>(material.shininess), " reads the glossy cube at LOD ",
+                    std::string_view(lod), " of ", glossy.levelCount() - 1, " (level 0: exponent ",
+                    static_cast<int>(specularExponentOfSide(glossy.size())), ").")
+                 .c_str());
+  }
   probe_.item(concat(key, "environment_specular").c_str());
   ImGui::SetNextItemWidth(fieldWidth);
   edited |= ImGui::SliderFloat("reflectivity", &material.reflectivity, 0.0f, 1.0f, "%.3f", ImGuiSliderFlags_AlwaysClamp);

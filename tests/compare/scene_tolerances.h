@@ -64,6 +64,11 @@ inline constexpr SceneTolerance kSceneTolerances[] = {
     {"env_diffuse_light.json"},                    // lit by the environment alone: irradiance cube and SH9
     {"env_diffuse_light_sphere.json"},             // the same, the irradiance read from a sphere map
     {"env_diffuse_light_dual_paraboloid.json"},    // and from a dual paraboloid
+    {"env_glass_sphere_map.json"},                 // glass and water through a sphere map (its rim ahead)
+    {"env_glass_dual_paraboloid.json"},            // and through a dual paraboloid
+    {"env_glossy.json"},                           // prefiltered glossy reflection: shininess 8, 60, 700
+    {"env_glossy_sphere.json"},                    // the same read from a sphere map
+    {"env_glossy_dual_paraboloid.json"},           // and from a dual paraboloid, across its seam
 };
 
 }  // namespace twr::suite

@@ -208,7 +208,7 @@ TEST(SceneFileErrors, TriangleBudgetRefusedBeforeBuilding) {
 TEST(SceneFileErrors, BadEnumValue) {
   expectContains(parseError(R"({"nodes": [], "settings": {"view": "shiny"}})"),
                  {"inline.json: settings.view: expected one of shaded|albedo|normal|tangent|bitangent|mapped_normal|"
-                  "uv|depth|light_tangent|eye_tangent|mip_level|height|parallax_offset|parallax_steps|self_shadow, got "
+                  "uv|depth|light_tangent|eye_tangent|mip_level|height|parallax_offset|parallax_steps|self_shadow|reflect_dir|env_face|env_lod, got "
                   "\"shiny\""});
   expectContains(parseError(R"({"nodes": [], "settings": {"cull": "sideways"}})"),
                  {"inline.json: settings.cull: expected one of none|back|front, got \"sideways\""});
@@ -814,8 +814,8 @@ TEST(SceneFileErrors, EnvironmentKeys) {
                  {"materials.m.refraction_index: expected a ratio n1 / n2 in (0, 4]"});
   expectContains(parseError(withEnvironment(kSixFaces, R"({"fresnel": "cook_torrance"})")),
                  {"materials.m.fresnel: expected one of none|schlick"});
-  expectContains(parseError(withEnvironment(kSixFaces, R"({"environment_specular": "prefiltered"})")),
-                 {"materials.m.environment_specular: \"prefiltered\" is not drawn yet"});
+  expectContains(parseError(withEnvironment(kSixFaces, R"({"environment_specular": "glossy"})")),
+                 {"materials.m.environment_specular: expected one of none|mirror|prefiltered"});
   expectContains(parseError(withEnvironment(kSixFaces, R"({"environment_diffuse": "lambert"})")),
                  {"materials.m.environment_diffuse: expected one of none|irradiance_map|sh9"});
 }
@@ -889,6 +889,24 @@ TEST(SceneFile, EnvironmentDiffuseLightIsPrefilteredAtLoadOnlyWhenAsked) {
                               kInline, kDataDir);
   EXPECT_TRUE(sh.environment->sh9);
   EXPECT_FALSE(sh.environment->irradiance);
+  // The prefiltered glossy cube: built only when a material asks, with its map under a sphere
+  // or paraboloid parameterization (one level per level of the cube, twice its side).
+  EXPECT_FALSE(map.environment->specular);
+  const Scene glossy = parseScene(withEnvironment(R"({"cube": )" + kSixFaces + R"(, "parameterization": "dual_paraboloid"})",
+                                                  R"({"environment_specular": "prefiltered", "reflectivity": 0.5})"),
+                                  kInline, kDataDir);
+  ASSERT_TRUE(glossy.environment->specular);
+  ASSERT_TRUE(glossy.environment->specularLayers);
+  EXPECT_EQ(glossy.environment->specularLayers->kind, EnvironmentParameterization::DualParaboloid);
+  EXPECT_EQ(glossy.environment->specularLayers->levelCount(), glossy.environment->specular->levelCount());
+  EXPECT_EQ(glossy.environment->specularLayers->size(), 2 * glossy.environment->specular->size());
+  EXPECT_TRUE(glossy.warnings.empty());
+  // A reflection mixed in with a share of 0 is said to draw nothing.
+  const Scene unseen = parseScene(withEnvironment(R"({"cube": )" + kSixFaces + R"(})", R"({"environment_specular": "prefiltered"})"),
+                                  kInline, kDataDir);
+  ASSERT_EQ(unseen.warnings.size(), 1u);
+  EXPECT_NE(unseen.warnings[0].find("materials.m: environment_specular prefiltered mixes nothing in"), std::string::npos)
+      << unseen.warnings[0];
   // Without an environment the key is read and said to be ignored.
   const Scene alone = parseScene(R"({"nodes": [], "materials": {"m": {"environment_diffuse": "sh9"}}})", kInline, kDataDir);
   ASSERT_EQ(alone.warnings.size(), 1u);

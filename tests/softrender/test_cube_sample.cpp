@@ -179,7 +179,7 @@ TEST(EnvironmentTerms, ReflectRefractSchlickAndTotalInternalReflection) {
   const CubeMap cube = cubeMapFromFaces(faces, {"a", "b", "c", "d", "e", "f"}, warnings);
   EnvironmentUniformsT<float> e;
   e.cube = &cube;
-  e.mirror = true;
+  e.reflects = true;
   e.reflectivity = 0.25f;
   const Vec3L<float> n(0.0f, 0.0f, 1.0f), t(1.0f, 0.0f, 0.0f), b(0.0f, 1.0f, 0.0f), base(10.0f);
   // Head-on: R = +Z (face 4), mixed 1/4 into the base.
