@@ -41,10 +41,19 @@ test: build
 # AVX-512 (Highway's AVX3: F, VL, DQ and BW) /AVX2 as well.
 SANITIZE_SKIP := $(if $(shell grep -m1 -w avx512bw /proc/cpuinfo 2>/dev/null | grep -w avx512vl | grep -w avx512dq),/(SSE4|SCALAR|AVX2),/(SSE4|SCALAR))
 
+# SANITIZE_MODULES narrows the build and the run to some test modules (CI: the CPU side and the
+# hostile-input replay, whose code parses files and indexes memory), e.g.
+#   make sanitize SANITIZE_MODULES="scene softrender hostile"
+# (hostile = fuzz/'s corpus replay and real-world models; the fuzz_* executables are built too,
+# for scripts/run-fuzzers.sh to reuse: FUZZ_BUILD_DIR=build-sanitize).
+SANITIZE_MODULES ?=
+SANITIZE_TARGETS := $(if $(SANITIZE_MODULES),fuzzers $(patsubst hostile,test_corpus_replay test_real_world_models,$(patsubst %,tests_%,$(filter-out hostile,$(SANITIZE_MODULES))) $(filter hostile,$(SANITIZE_MODULES))),all)
+SANITIZE_LABELS := $(if $(SANITIZE_MODULES),-L '^($(subst $(eval) ,|,$(strip $(SANITIZE_MODULES))))$$')
+
 sanitize: deps
 	@cmake --preset sanitize -DTWINRASTER_WERROR=$(WERROR) >/dev/null
-	@cmake --build --preset sanitize -j $(JOBS)
-	@ctest --preset sanitize -E '$(SANITIZE_SKIP)'
+	@cmake --build --preset sanitize -j $(JOBS) $(addprefix --target ,$(SANITIZE_TARGETS))
+	@ctest --preset sanitize -E '$(SANITIZE_SKIP)' $(SANITIZE_LABELS)
 
 # The CPU libraries and their GL-free tests for aarch64 (cross compiler + qemu-user).
 cross-aarch64:

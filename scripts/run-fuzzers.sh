@@ -34,10 +34,16 @@ for tool in clang clang++; do
   command -v "$tool" >/dev/null || { echo "run-fuzzers: $tool not found (scripts/install-deps.sh installs it)" >&2; exit 2; }
 done
 
-echo "run-fuzzers: building ${targets[*]} in $build (clang, ASan + UBSan)"
-CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTWINRASTER_FUZZ=ON \
-  -DTWINRASTER_SANITIZE=ON -DTWINRASTER_BUILD_GUI=OFF -DTWINRASTER_BUILD_BENCH=OFF \
-  -DTWINRASTER_WERROR="$werror" >/dev/null
+# A build folder already configured with the fuzz targets (make sanitize's build-sanitize, as
+# CI passes) is reused as it is: one clang ASan + UBSan build serves the tests and the fuzzers.
+if grep -q '^TWINRASTER_FUZZ:BOOL=ON' "$build/CMakeCache.txt" 2>/dev/null; then
+  echo "run-fuzzers: building ${targets[*]} in $build (configured already)"
+else
+  echo "run-fuzzers: building ${targets[*]} in $build (clang, ASan + UBSan)"
+  CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTWINRASTER_FUZZ=ON \
+    -DTWINRASTER_SANITIZE=ON -DTWINRASTER_BUILD_GUI=OFF -DTWINRASTER_BUILD_BENCH=OFF \
+    -DTWINRASTER_WERROR="$werror" >/dev/null
+fi
 build_targets=()
 for t in "${targets[@]}"; do build_targets+=(--target "fuzz_$t"); done
 cmake --build "$build" -j "$jobs" "${build_targets[@]}"
