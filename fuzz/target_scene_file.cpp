@@ -6,6 +6,8 @@
 #include "softrender/cpu_renderer.h"
 #include "softrender/framebuffer.h"
 
+#include <algorithm>
+
 namespace twr::fuzz {
 
 namespace {
@@ -19,6 +21,8 @@ constexpr int kRenderHeight = 9;
 // Accepted scenes with more triangles than this (inclusive bound on what is rendered) are
 // only parsed: a 16M-triangle sphere is legal but would turn one execution into seconds.
 constexpr std::size_t kMaxRenderedTriangles = 200'000;
+// Largest captured-environment face drawn, texels per side.
+constexpr int kMaxCaptureSize = 8;
 
 }  // namespace
 
@@ -40,6 +44,11 @@ void fuzzSceneFile(const Workspace& workspace, const std::uint8_t* data, std::si
   }
   const std::size_t triangles = countTriangles(scene);
   if (triangles > kMaxRenderedTriangles) return;
+  // A captured environment renders six faces of up to 1024^2 first: drawn small here, so one
+  // execution stays short (the capture's code is the same at any size).
+  if (scene.environment && scene.environment->capture) {
+    scene.environment->capture->size = std::min(scene.environment->capture->size, kMaxCaptureSize);
+  }
   RenderOutput output;
   try {
     output = makeCpuRenderer()->render(scene, scene.settings, kRenderWidth, kRenderHeight);

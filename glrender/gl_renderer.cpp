@@ -4,6 +4,7 @@
 // (GlOptions::frame) runs the same steps on colour + depth only and reads back the colour.
 #include "glrender/gl_renderer.h"
 
+#include "scene/environment_capture.h"
 #include "scene/mip_level_view.h"
 #include "scene/projection_checks.h"
 
@@ -213,6 +214,12 @@ class GlRenderer final : public Renderer {
   // one-pixel scissor and that pixel read back as a 1 x 1 output.
   RenderOutput draw(const Scene& scene, const RenderSettings& settings, int width, int height,
                     const std::optional<std::array<int, 2>>& onlyPixel) {
+    if (needsEnvironmentCapture(scene)) {  // drawn by this renderer itself (full frames), then the frame with it
+      const CapturedEnvironment captured = captureEnvironment(scene, settings, *this);
+      RenderOutput out = draw(captured.scene, settings, width, height, onlyPixel);
+      attachCapture(out, captured);
+      return out;
+    }
     validateRequest(scene, settings, width, height);
     const bool immediateLines = settings.tbnLines.enabled && settings.tbnLines.mode == LineMode::Immediate;
     GlDevice& device = deviceFor(immediateLines);

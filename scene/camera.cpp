@@ -7,7 +7,6 @@
 namespace twr {
 
 namespace {
-const vec3 kWorldUp{0.0f, 1.0f, 0.0f};
 // |cross(Up, D)| below this (sine of the angle) means P - T is parallel to up.
 constexpr float kMinSineToUp = 1e-6f;
 }  // namespace
@@ -20,8 +19,13 @@ std::string validateCamera(const Camera& camera) {
   const glm::dvec3 toEye = glm::dvec3(camera.position) - glm::dvec3(camera.target);
   const double length = glm::length(toEye);
   if (!(length > 0.0) || !std::isfinite(length)) return "position and target must differ";
-  if (glm::length(glm::cross(glm::dvec3(kWorldUp), toEye / length)) < kMinSineToUp) {
-    return "position - target must not be parallel to the world up (0,1,0)";
+  const glm::dvec3 up(camera.up);
+  const double upLength = glm::length(up);
+  if (!(upLength > 0.0) || !std::isfinite(upLength)) return "up must be a vector of finite, non-zero length";
+  if (glm::length(glm::cross(up / upLength, toEye / length)) < kMinSineToUp) {
+    const bool worldUp = camera.up == vec3(0.0f, 1.0f, 0.0f);
+    return worldUp ? "position - target must not be parallel to the world up (0,1,0) (give the camera an \"up\")"
+                   : "position - target must not be parallel to up";
   }
   return {};
 }
@@ -32,7 +36,7 @@ mat4 viewFromWorld(const Camera& camera) {
   // than about 1.8e19 from its target.
   const glm::dvec3 dWide = glm::normalize(glm::dvec3(camera.position) - glm::dvec3(camera.target));
   const vec3 d(dWide);
-  const vec3 r(glm::normalize(glm::cross(glm::dvec3(kWorldUp), glm::dvec3(d))));
+  const vec3 r(glm::normalize(glm::cross(glm::dvec3(camera.up), glm::dvec3(d))));
   const vec3 u = glm::cross(d, r);
   // Rows R, U, D (GLM is column-major: m[column][row]).
   mat4 rotation(1.0f);

@@ -1,4 +1,5 @@
-// The course's camera: position P, target T, world up (0,1,0).
+// The course's camera: position P, target T, up vector Up (the world's (0,1,0) unless a scene
+// gives another: a captured cube map's faces look along +-Y, scene/environment_capture.h).
 //   D = normalize(P - T), R = normalize(cross(Up, D)), U = cross(D, R)
 //   viewFromWorld = [R; U; D] * translate(-P)
 //   clipFromView  = perspective(fov, aspect, near, far), z mapped to [-1, 1]
@@ -13,6 +14,7 @@ namespace twr {
 struct Camera {
   vec3 position{0.0f, 1.0f, 4.0f};  // P, world units
   vec3 target{0.0f, 0.0f, 0.0f};    // T, world units
+  vec3 up{0.0f, 1.0f, 0.0f};        // Up, any length > 0, not parallel to P - T
   float fovDeg = 60.0f;             // vertical field of view, degrees, in (0, 180) exclusive
   float near = 0.1f;                // world units, > 0
   float far = 100.0f;               // world units, > near

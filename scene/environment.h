@@ -21,6 +21,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -196,6 +197,15 @@ ParameterizedMap parameterizedMapFromCubeLevels(const CubeMap& cube, Environment
 
 struct Sh9Irradiance;  // scene/environment_light.h
 
+// Side of a captured cube's faces when the scene gives no capture.size, texels.
+inline constexpr int kDefaultCaptureSize = 128;
+
+// An environment captured from the scene instead of loaded (scene/environment_capture.h).
+struct EnvironmentCapture {
+  std::string node;                // the node it is captured from (hidden in the capture)
+  int size = kDefaultCaptureSize;  // texels per face side, a power of two
+};
+
 // The scene's environment (the scene file's top-level "environment").
 struct Environment {
   std::array<std::string, kCubeFaces> facePaths;  // set when read from six images
@@ -205,6 +215,9 @@ struct Environment {
   EnvironmentParameterization parameterization = EnvironmentParameterization::Cube;
   int size = kDefaultEnvironmentSize;  // texels: the built map's side (an equirect's cube, or a sphere or paraboloid map)
   bool sizeGiven = false;
+  // Set when captured from the scene: `cube` is then null as loaded, and each renderer draws
+  // its own (captureEnvironment) before it draws the frame.
+  std::optional<EnvironmentCapture> capture;
   std::shared_ptr<const CubeMap> cube;
   // Built from the cube when the parameterization is not "cube" (null otherwise): both
   // renderers then read it instead of the cube, on surfaces and in the sky box.

@@ -3,9 +3,11 @@
 
 #include "scene/scene.h"
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -24,7 +26,12 @@ struct RenderStats {
   // Of `milliseconds`, the part spent copying finished buffers into the RenderOutput (GL:
   // glReadPixels of the four attachments after glFinish; CPU: 0, it draws into them).
   double readbackMilliseconds = 0.0;
+  // Of `milliseconds`, the part spent capturing the environment from the scene (six face
+  // renders and building what the materials read from them; 0 when nothing is captured).
+  double captureMilliseconds = 0.0;
 };
+
+struct CapturedFaces;  // below
 
 // All buffers are top row first (row 0 is the top of the image), width * height entries.
 struct RenderOutput {
@@ -37,6 +44,17 @@ struct RenderOutput {
   std::vector<std::uint32_t> triangleId;   // global triangle id (DrawItem::firstTriangleId + i), kNoTriangle where none
   std::vector<std::uint8_t> lineMask;      // 1 where a TBN debug line was drawn (compare skips)
   RenderStats stats;
+  // The six faces this renderer captured the environment from (scene/environment_capture.h),
+  // null when the scene's environment is not captured.
+  std::shared_ptr<const CapturedFaces> capturedFaces;
+};
+
+// A captured environment's faces as the renderer drew them, in GL order (+X, -X, +Y, -Y, +Z,
+// -Z), each laid out as a cube face's texels (row 0 is t = 0: a sky box file's top row).
+struct CapturedFaces {
+  std::array<RenderOutput, 6> faces;
+  vec3 centreWorld{0.0f};     // where the six cameras stood
+  double milliseconds = 0.0;  // the six renders and building the maps from them
 };
 
 // Whether a triangle covers pixel i (top row first): its triangle id. An output without

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <initializer_list>
 #include <map>
 #include <set>
@@ -279,7 +280,9 @@ class SceneReader {
     for (std::size_t i = 0; i < nodes->size(); ++i) {
       scene_.nodes.push_back(readNode((*nodes)[i], indexPath("nodes", i), 1));
     }
-    // The environment's diffuse light, for the materials that ask for it (once, at load).
+    if (scene_.environment && scene_.environment->capture) checkCaptureNode(scene_.environment->capture->node);
+    // The environment's diffuse light, for the materials that ask for it (once, at load; a
+    // captured environment's once it is captured).
     prefilterEnvironmentLight(scene_);
     return std::move(scene_);
   }
@@ -431,10 +434,11 @@ class SceneReader {
 
   void readCamera(const Json& j, const std::string& path) {
     requireObject(j, path);
-    checkKeys(j, path, {"position", "target", "fov_deg", "near", "far"}, "camera");
+    checkKeys(j, path, {"position", "target", "up", "fov_deg", "near", "far"}, "camera");
     Camera& camera = scene_.camera;
     if (const Json* v = find(j, "position")) camera.position = readVector<3>(*v, childPath(path, "position"), NumberRule::Finite);
     if (const Json* v = find(j, "target")) camera.target = readVector<3>(*v, childPath(path, "target"), NumberRule::Finite);
+    if (const Json* v = find(j, "up")) camera.up = readVector<3>(*v, childPath(path, "up"), NumberRule::Finite);
     if (const Json* v = find(j, "fov_deg")) camera.fovDeg = readNumber(*v, childPath(path, "fov_deg"), NumberRule::Finite);
     if (const Json* v = find(j, "near")) camera.near = readNumber(*v, childPath(path, "near"), NumberRule::Finite);
     if (const Json* v = find(j, "far")) camera.far = readNumber(*v, childPath(path, "far"), NumberRule::Finite);
@@ -626,16 +630,45 @@ class SceneReader {
         fail(at("size"), "expected a power of two in [1, " + std::to_string(kMaxCubeFaceSize) + "], got " + quote(*v));
       }
     }
-    if (find(j, "capture")) fail(at("capture"), "capturing the cube map from the scene is not drawn yet by this version");
     const Json* cube = find(j, "cube");
     const Json* equirect = find(j, "equirect");
-    if ((cube != nullptr) == (equirect != nullptr)) {
-      fail(path, cube ? "give either \"cube\" or \"equirect\", not both"
-                      : "missing its source: \"cube\": [6 image paths, +X, -X, +Y, -Y, +Z, -Z] or \"equirect\": "
-                        "\"file.hdr|png|jpg\"");
+    const Json* capture = find(j, "capture");
+    if ((cube != nullptr) + (equirect != nullptr) + (capture != nullptr) != 1) {
+      fail(path, cube || equirect || capture
+                     ? "give one source: \"cube\", \"equirect\" or \"capture\", not two"
+                     : "missing its source: \"cube\": [6 image paths, +X, -X, +Y, -Y, +Z, -Z], \"equirect\": "
+                       "\"file.hdr|png|jpg\" or \"capture\": {\"node\": NAME, \"size\": N}");
     }
     std::uintmax_t bytes = 0;
-    if (cube) {
+    if (capture) {
+      // Drawn later, by each renderer (scene/environment_capture.h); the node is looked up
+      // once the nodes are read. The cube stays null until a renderer captures it.
+      const std::string capturePath = at("capture");
+      requireObject(*capture, capturePath);
+      checkKeys(*capture, capturePath, {"node", "size"}, "the capture");
+      const Json* node = find(*capture, "node");
+      if (!node) fail(capturePath, "missing \"node\": the name of the node the cube map is captured from");
+      EnvironmentCapture c;
+      c.node = readString(*node, childPath(capturePath, "node"), "a node name");
+      if (const Json* v = find(*capture, "size")) {
+        c.size = readInt(*v, childPath(capturePath, "size"), kMinCubeFaceSize, kMaxCubeFaceSize);
+        if ((c.size & (c.size - 1)) != 0) {
+          fail(childPath(capturePath, "size"),
+               "expected a power of two in [1, " + std::to_string(kMaxCubeFaceSize) + "], got " + quote(*v));
+        }
+      }
+      if (env.sizeGiven && !builtMap) {
+        scene_.warnings.push_back(fileName_ + ": " + at("size") +
+                                  ": ignored: a captured \"cube\" environment has the capture's size (capture.size)");
+      }
+      if (builtMap && !env.sizeGiven) env.size = std::clamp(2 * c.size, kDefaultEnvironmentSize, kMaxCubeFaceSize);
+      // The capture's cube and chain (and a built map's layers), counted now as a loaded one's.
+      const std::uintmax_t faceTexels = 6u * static_cast<std::uintmax_t>(c.size) * static_cast<std::uintmax_t>(c.size);
+      bytes += faceTexels * 4 / 3 * 3 * sizeof(float);
+      if (builtMap) bytes += static_cast<std::uintmax_t>(layerCount(env.parameterization)) * env.size * env.size * 4 / 3 * 3 * sizeof(float);
+      env.capture = c;
+      capturePath_ = capturePath;
+    } else if (cube) {
       requireArray(*cube, at("cube"));
       if (cube->size() != kCubeFaces) {
         fail(at("cube"), "expected 6 image paths in GL order (+X, -X, +Y, -Y, +Z, -Z), got " +
@@ -719,7 +752,7 @@ class SceneReader {
       if (!env.sizeGiven) env.size = cubeSize;
       env.cube = std::make_shared<const CubeMap>(cubeMapFromEquirect(image, cubeSize, env.equirectPath));
     }
-    if (builtMap) {
+    if (builtMap && env.cube) {
       // Unless given, twice the cube's side s: a sphere map's disk then holds the whole sphere
       // in pi s^2 texels, about half the cube's 6 s^2.
       if (!env.sizeGiven) env.size = std::clamp(2 * env.cube->size(), kDefaultEnvironmentSize, kMaxCubeFaceSize);
@@ -727,13 +760,38 @@ class SceneReader {
           parameterizedMapFromCube(*env.cube, env.parameterization, env.size));
       for (const CubeMapLevel& level : env.layers->levels) bytes += level.r.size() * 3 * sizeof(float);
     }
-    for (const CubeMapLevel& level : env.cube->levels) bytes += level.r.size() * 3 * sizeof(float);
+    if (env.cube) {
+      for (const CubeMapLevel& level : env.cube->levels) bytes += level.r.size() * 3 * sizeof(float);
+    }
     if (bytes > textureBudget_) {
       fail(path, "the cube map's " + describeBytes(bytes) + " of texels are more than the " + describeBytes(textureBudget_) +
                      " left of the scene's texture memory limit of " + describeBytes(kMaxSceneTextureBytes));
     }
     textureBudget_ -= bytes;
     scene_.environment = std::move(env);
+  }
+
+  // The capture's node must name a node (the first of that name, depth first, is used).
+  void checkCaptureNode(const std::string& name) {
+    std::vector<const Node*> matches;
+    std::vector<std::string> names;
+    const std::function<void(const Node&)> visit = [&](const Node& node) {
+      if (node.name == name) matches.push_back(&node);
+      names.push_back(node.name);
+      for (const Node& child : node.children) visit(child);
+    };
+    for (const Node& node : scene_.nodes) visit(node);
+    if (matches.empty()) {
+      std::string list;
+      for (std::size_t i = 0; i < names.size() && i < 8; ++i) list += (i ? ", " : "") + quote(Json(names[i]));
+      if (names.size() > 8) list += ", ...";
+      fail(childPath(capturePath_, "node"), "no node is named " + quote(Json(name)) +
+                                                (names.empty() ? " (the scene has no nodes)" : " (the nodes: " + list + ")"));
+    }
+    if (matches.size() > 1) {
+      scene_.warnings.push_back(fileName_ + ": " + childPath(capturePath_, "node") + ": " + std::to_string(matches.size()) +
+                                " nodes are named " + quote(Json(name)) + "; the capture is taken from the first");
+    }
   }
 
   enum class MapRole { Colour, Normal, Height };
@@ -1187,6 +1245,7 @@ class SceneReader {
   std::size_t trianglesSoFar_ = 0;
   std::size_t nodesSoFar_ = 0;
   std::uintmax_t textureBudget_ = kMaxSceneTextureBytes;  // texel bytes still allowed
+  std::string capturePath_;  // "environment.capture" when the environment is captured
 };
 
 // nlohmann says "[json.exception.parse_error.101] parse error at line 3, column 5: syntax

@@ -4,6 +4,7 @@
 // traversal of the same stages is fast_pipeline.cpp.
 #include "softrender/cpu_renderer.h"
 
+#include "scene/environment_capture.h"
 #include "scene/errors.h"
 #include "scene/image.h"
 #include "scene/mip_level_view.h"
@@ -74,6 +75,12 @@ class CpuRenderer final : public Renderer {
   std::string name() const override { return "cpu"; }
 
   RenderOutput render(const Scene& scene, const RenderSettings& settings, int width, int height) override {
+    if (needsEnvironmentCapture(scene)) {  // drawn by this renderer itself, then the frame with it
+      const CapturedEnvironment captured = captureEnvironment(scene, settings, *this);
+      RenderOutput out = render(captured.scene, settings, width, height);
+      attachCapture(out, captured);
+      return out;
+    }
     validateImageSize(width, height);
     // What GL cannot draw is refused here too, so the two never draw different scenes.
     if (const std::string problem = clipSlotProblem(settings); !problem.empty()) throw InputError("CPU: " + problem);

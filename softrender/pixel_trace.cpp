@@ -1,5 +1,7 @@
 #include "softrender/pixel_trace.h"
 
+
+#include "scene/environment_capture.h"
 #include "scene/errors.h"
 #include "scene/mip_level_view.h"
 #include "scene/sky_view.h"
@@ -159,6 +161,10 @@ nlohmann::json toJson(const glm::vec<N, float>& v) {
 
 PixelTrace tracePixelVisits(const Scene& scene, const RenderSettings& requested, int width, int height, int x,
                             int yTop) {
+  if (needsEnvironmentCapture(scene)) {  // the cube the CPU's frame is drawn with, captured as it does
+    return tracePixelVisits(captureEnvironment(scene, requested, *makeCpuRenderer()).scene, requested, width, height, x,
+                            yTop);
+  }
   // What the renderer would refuse, refused here too: the replay indexes the meshes.
   validateImageSize(width, height, "trace");
   if (const std::string problem = clipSlotProblem(requested); !problem.empty()) throw InputError("trace: " + problem);
@@ -197,6 +203,9 @@ PixelTrace tracePixelVisits(const Scene& scene, const RenderSettings& requested,
 }
 
 PixelTrace tracePixel(const Scene& scene, const RenderSettings& requested, int width, int height, int x, int yTop) {
+  if (needsEnvironmentCapture(scene)) {  // captured once, for the frame and the replay alike
+    return tracePixel(captureEnvironment(scene, requested, *makeCpuRenderer()).scene, requested, width, height, x, yTop);
+  }
   // The full render gives the final pixel (and validates the size and the meshes).
   const RenderOutput output = makeCpuRenderer()->render(scene, requested, width, height);
   PixelTrace trace = tracePixelVisits(scene, requested, width, height, x, yTop);

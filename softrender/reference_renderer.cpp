@@ -5,6 +5,7 @@
 // (ReferenceOptions::doublePrecision).
 #include "softrender/reference_renderer.h"
 
+#include "scene/environment_capture.h"
 #include "scene/mip_level_view.h"
 
 #include "scene/camera.h"
@@ -36,7 +37,6 @@ namespace twr {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-const glm::dvec3 kWorldUp{0.0, 1.0, 0.0};
 
 glm::dmat4 localFromNodeTrsDouble(const Node& node) {
   const glm::dmat4 identity(1.0);
@@ -111,6 +111,12 @@ class ReferenceRenderer final : public Renderer {
   std::string name() const override { return "reference"; }
 
   RenderOutput render(const Scene& scene, const RenderSettings& settings, int width, int height) override {
+    if (needsEnvironmentCapture(scene)) {  // drawn by this renderer itself, then the frame with it
+      const CapturedEnvironment captured = captureEnvironment(scene, settings, *this);
+      RenderOutput out = render(captured.scene, settings, width, height);
+      attachCapture(out, captured);
+      return out;
+    }
     return options_.doublePrecision ? renderWith<double>(scene, settings, width, height)
                                     : renderWith<float>(scene, settings, width, height);
   }
@@ -255,7 +261,7 @@ glm::dmat4 referenceClipFromWorld(const Camera& camera, int width, int height) {
   if (std::string error = validateCamera(camera); !error.empty()) throw InputError("camera: " + error);
   const glm::dvec3 position(camera.position), target(camera.target);
   const glm::dvec3 d = glm::normalize(position - target);
-  const glm::dvec3 r = glm::normalize(glm::cross(kWorldUp, d));
+  const glm::dvec3 r = glm::normalize(glm::cross(glm::dvec3(camera.up), d));
   const glm::dvec3 u = glm::cross(d, r);
   glm::dmat4 viewFromWorld(1.0);
   for (int i = 0; i < 3; ++i) {

@@ -5,6 +5,7 @@
 #include "scene/json_text.h"
 #include "app/cli/common.h"
 #include "compare/artifacts.h"
+#include "compare/capture_faces.h"
 #include "compare/metrics.h"
 #include "compare/report_json.h"
 #include "compare/thresholds.h"
@@ -18,6 +19,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace twr::cli {
 namespace {
@@ -77,6 +79,19 @@ void printSummary(const CompareMetrics& m, const nlohmann::json& json, const Art
             << paths.cpu << "\n      " << paths.gl << "\n      " << paths.metrics << "\n";
 }
 
+void printCaptureSummary(const CapturedFacesComparison& faces, const RenderOutput& cpu, const RenderOutput& gl,
+                         const CaptureArtifactPaths& paths) {
+  std::cout << std::setprecision(2) << "captured environment, " << cpu.capturedFaces->faces[0].width << "x"
+            << cpu.capturedFaces->faces[0].width << " per face: cpu " << cpu.stats.captureMilliseconds << " ms, gl "
+            << gl.stats.captureMilliseconds << " ms of the frame times above\n";
+  for (std::size_t f = 0; f < faces.faces.size(); ++f) {
+    const CompareMetrics& m = faces.faces[f].metrics;
+    std::cout << "  face " << kCubeFaceNames[f] << ": max abs diff " << m.maxAbsDiff << " levels, over 1 level "
+              << m.over1 << " pixels, coverage mismatch " << m.coverageMismatch << "\n";
+  }
+  std::cout << "wrote " << paths.cpu << "\n      " << paths.gl << "\n      " << paths.diff << "\n";
+}
+
 void runCompare(CompareArgs& args) {
   validateThresholds(args.limits);
   if (args.repeat < 1) throw InputError("--repeat: expected an integer >= 1");
@@ -128,7 +143,13 @@ void runCompare(CompareArgs& args) {
     fill(limits.maxCoverageMismatch, targets.maxCoverageMismatch);
     fill(limits.maxCoverageMismatchPer10k, targets.maxCoverageMismatchPer10k);
   }
-  const std::vector<ThresholdViolation> violations = checkThresholds(result.metrics, limits);
+  std::vector<ThresholdViolation> violations = checkThresholds(result.metrics, limits);
+  // A captured environment: each renderer drew its own faces; they meet the same limits.
+  std::optional<CapturedFacesComparison> faces;
+  if (cpuOut.capturedFaces && glOut.capturedFaces) {
+    faces = compareCapturedFaces(*cpuOut.capturedFaces, *glOut.capturedFaces);
+    for (ThresholdViolation& v : checkCapturedFaces(*faces, limits)) violations.push_back(std::move(v));
+  }
 
   nlohmann::json json = metricsToJson(result.metrics);
   mergeExtraKeys(json, runInfoToJson(info));
@@ -145,12 +166,18 @@ void runCompare(CompareArgs& args) {
                                      {"applied", args.issueTargets && targetsSkipped.empty()},
                                      {"note", targetsSkipped.empty() ? nlohmann::json(nullptr)
                                                                       : nlohmann::json(targetsSkipped)}}}});
+  mergeExtraKeys(json, {{"capture_faces", faces ? capturedFacesToJson(*faces) : nlohmann::json(nullptr)},
+                        {"cpu_capture_ms", faces ? nlohmann::json(cpuOut.stats.captureMilliseconds) : nlohmann::json(nullptr)},
+                        {"gl_capture_ms", faces ? nlohmann::json(glOut.stats.captureMilliseconds) : nlohmann::json(nullptr)}});
   const ArtifactPaths paths = writeCompareArtifacts(args.outDir, cpuOut, glOut, result, json);
+  std::optional<CaptureArtifactPaths> facePaths;
+  if (faces) facePaths = writeCaptureArtifacts(args.outDir, *cpuOut.capturedFaces, *glOut.capturedFaces, *faces);
 
   if (args.json) {
     std::cout << jsonText(json, 2) << "\n";
   } else {
     printSummary(result.metrics, json, paths);
+    if (faces) printCaptureSummary(*faces, cpuOut, glOut, *facePaths);
   }
   if (!targetsSkipped.empty()) std::cerr << "twinraster: note: " << targetsSkipped << "\n";
   for (const ThresholdViolation& v : violations) std::cerr << "twinraster: threshold exceeded: " << v.message << "\n";

@@ -212,22 +212,43 @@ Json settingsJson(const RenderSettings& s) {
   return j;
 }
 
+// 1 + log2(side): the levels of a full mip chain down to 1 texel (0 for no side).
+int levelCountOfSide(int side) {
+  int levels = 0;
+  for (; side > 0; side /= 2) ++levels;
+  return levels;
+}
+
+// Whether a material reads the environment: as the renderers decide, or, for a captured
+// environment before any renderer has drawn it, as they will once they have.
+bool readsEnvironment(const Material& m, const Scene& scene) {
+  if (scene.environment && scene.environment->capture && !scene.environment->cube) {
+    return materialReadsEnvironmentDirections(m) || m.environmentDiffuse != EnvironmentDiffuse::None;
+  }
+  return materialReadsEnvironment(m, scene);
+}
+
 // The environment as loaded (null without one), and each material's use of it.
 Json environmentJson(const Scene& scene) {
   if (!scene.environment) return nullptr;
   const Environment& e = *scene.environment;
-  Json j{{"source", e.equirectPath.empty() ? "cube" : "equirect"},
+  // A captured cube is drawn by each renderer per frame: its size and chain are the capture's.
+  const int faceSize = e.cube ? e.cube->size() : e.capture ? e.capture->size : 0;
+  Json j{{"source", e.capture ? "capture" : e.equirectPath.empty() ? "cube" : "equirect"},
          {"parameterization", std::string(toString(e.parameterization))},
          {"intensity", clean(e.intensity)},
          {"background", e.background},
-         {"face_size", e.cube ? e.cube->size() : 0},
-         {"levels", e.cube ? e.cube->levelCount() : 0}};
+         {"face_size", faceSize},
+         {"levels", e.cube ? e.cube->levelCount() : levelCountOfSide(faceSize)}};
   if (e.layers) {
     j["map_size"] = e.layers->size();
     j["map_layers"] = e.layers->layers;
     j["map_levels"] = e.layers->levelCount();
   }
-  if (e.equirectPath.empty()) {
+  if (e.capture) {
+    j["capture"] = Json{{"node", e.capture->node}, {"size", e.capture->size}};
+    if (e.parameterization != EnvironmentParameterization::Cube) j["map_size"] = e.size;
+  } else if (e.equirectPath.empty()) {
     j["cube"] = Json(e.facePaths);
   } else {
     j["equirect"] = e.equirectPath;
@@ -240,7 +261,7 @@ Json environmentJson(const Scene& scene) {
   }
   Json uses = Json::object();
   for (const Material& m : scene.materials) {
-    if (!materialReadsEnvironment(m, scene)) continue;
+    if (!readsEnvironment(m, scene)) continue;
     Json use{{"reflectivity", clean(m.reflectivity)},
              {"fresnel", std::string(toString(m.fresnel))},
              {"environment_specular", std::string(toString(m.environmentSpecular))},
@@ -283,6 +304,7 @@ Json sceneJson(const Scene& scene) {
   j["ambient"] = toJson(scene.ambient);
   j["camera"] = Json{{"position", toJson(scene.camera.position)},
                      {"target", toJson(scene.camera.target)},
+                     {"up", toJson(scene.camera.up)},
                      {"fov_deg", clean(scene.camera.fovDeg)},
                      {"near", clean(scene.camera.near)},
                      {"far", clean(scene.camera.far)}};
@@ -321,7 +343,7 @@ void printScene(std::ostream& out, const Scene& scene) {
   out << "output: " << scene.output.width << "x" << scene.output.height << ", background "
       << text(vec3(scene.output.background)) << " alpha " << num(scene.output.background.a) << "\n";
   out << "camera: position " << text(scene.camera.position) << ", target " << text(scene.camera.target)
-      << ", fov_deg " << num(scene.camera.fovDeg) << ", near " << num(scene.camera.near) << ", far "
+      << (scene.camera.up != vec3(0.0f, 1.0f, 0.0f) ? ", up " + text(scene.camera.up) : std::string()) << ", fov_deg " << num(scene.camera.fovDeg) << ", near " << num(scene.camera.near) << ", far "
       << num(scene.camera.far) << "\n";
 
   out << "\nnodes:\n";
@@ -340,10 +362,21 @@ void printScene(std::ostream& out, const Scene& scene) {
 
   if (scene.environment) {
     const Environment& e = *scene.environment;
-    out << "\nenvironment: " << (e.equirectPath.empty() ? "cube faces from " + e.facePaths[0] + " ..." : "equirect " + e.equirectPath)
-        << ", " << (e.cube ? e.cube->size() : 0) << "x" << (e.cube ? e.cube->size() : 0) << " per face, "
-        << (e.cube ? e.cube->levelCount() : 0) << " levels, intensity " << num(e.intensity)
-        << (e.background ? ", drawn as the sky box" : ", no sky box") << "\n";
+    if (e.capture) {
+      out << "\nenvironment: captured from node \"" << e.capture->node << "\" by each renderer before each frame, "
+          << e.capture->size << "x" << e.capture->size << " per face, " << levelCountOfSide(e.capture->size)
+          << " levels, intensity " << num(e.intensity) << (e.background ? ", drawn as the sky box" : ", no sky box")
+          << "\n";
+      if (e.parameterization != EnvironmentParameterization::Cube) {
+        out << "  read as a " << toString(e.parameterization) << " map built from each capture at " << e.size << "x"
+            << e.size << "\n";
+      }
+    } else {
+      out << "\nenvironment: " << (e.equirectPath.empty() ? "cube faces from " + e.facePaths[0] + " ..." : "equirect " + e.equirectPath)
+          << ", " << (e.cube ? e.cube->size() : 0) << "x" << (e.cube ? e.cube->size() : 0) << " per face, "
+          << (e.cube ? e.cube->levelCount() : 0) << " levels, intensity " << num(e.intensity)
+          << (e.background ? ", drawn as the sky box" : ", no sky box") << "\n";
+    }
     if (e.layers) {
       out << "  read as a " << toString(e.parameterization) << " map built from the cube: " << e.layers->layers << " x "
           << e.layers->size() << "x" << e.layers->size() << ", " << e.layers->levelCount() << " levels\n";
@@ -362,7 +395,7 @@ void printScene(std::ostream& out, const Scene& scene) {
           << "\n";
     }
     for (const Material& m : scene.materials) {
-      if (!materialReadsEnvironment(m, scene)) continue;
+      if (!readsEnvironment(m, scene)) continue;
       out << "  " << m.name << ": " << toString(m.environmentSpecular) << ", reflectivity " << num(m.reflectivity)
           << ", fresnel " << toString(m.fresnel)
           << (m.refractionIndex > 0.0f ? ", refraction_index " + num(m.refractionIndex) : std::string())

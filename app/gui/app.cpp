@@ -489,7 +489,11 @@ void GuiApp::frame(bool& finalFrame, bool present) {
                                                 {"irradiance_layers", doc_.scene.environment->irradianceLayers != nullptr},
                                                 {"sh9", doc_.scene.environment->sh9 != nullptr},
                                                 {"specular_levels", doc_.scene.environment->specular ? doc_.scene.environment->specular->levelCount() : 0},
-                                                {"specular_layers", doc_.scene.environment->specularLayers != nullptr}}
+                                                {"specular_layers", doc_.scene.environment->specularLayers != nullptr},
+                                                {"capture", doc_.scene.environment->capture
+                                                                ? nlohmann::json{{"node", doc_.scene.environment->capture->node},
+                                                                                 {"size", doc_.scene.environment->capture->size}}
+                                                                : nlohmann::json(nullptr)}}
                                : nlohmann::json(nullptr);
     state["view"] = std::string(toString(doc_.scene.settings.view));
   }

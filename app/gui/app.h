@@ -149,7 +149,9 @@ class GuiApp {
   bool drawEnvironmentControls(std::size_t material);
   // The parallax_steps view's heat ramp as a bar, labelled with the selected material's counts.
   void drawParallaxStepsLegend();
-  void drawEnvironmentViewLegend(View view);  // env_face's swatches, env_lod's heat bar
+  void drawEnvironmentViewLegend(View view);
+  bool drawEnvironmentCaptureControls(Environment& env);
+  void drawEnvironmentSourceImages(const Environment& env);  // env_face's swatches, env_lod's heat bar
   void drawLightsSection();
   void drawCameraTab();
   void drawViewPanel();
@@ -230,6 +232,10 @@ class GuiApp {
   PinState pin_;
 
   ImageTexture cpuTexture_, glTexture_, heatTexture_, classTexture_;
+  // The environment's cube cross (Scene tab): a loaded cube's, or each renderer's captured faces,
+  // with what each texture was last made from (re-uploaded when that changes).
+  ImageTexture sourceCrossTexture_, captureCpuTexture_, captureGlTexture_;
+  std::map<const ImageTexture*, std::pair<const void*, std::uint64_t>> crossSources_;
   bool cpuTextureStale_ = true, glTextureStale_ = true;
 
   RedrawPolicy redraw_;

@@ -8,7 +8,6 @@
 namespace twr::gui {
 namespace {
 
-const vec3 kWorldUp{0.0f, 1.0f, 0.0f};
 
 float clampDistance(float distance) {
   if (!std::isfinite(distance)) return kMinOrbitDistance;
@@ -35,7 +34,7 @@ void panCamera(Camera& camera, float dxPoints, float dyPoints, float viewHeightP
   const vec3 offsetWorld = camera.position - camera.target;
   const float distance = clampDistance(glm::length(offsetWorld));
   const vec3 dWorld = safeNormalize(offsetWorld);
-  const vec3 rWorld = safeNormalize(glm::cross(kWorldUp, dWorld), vec3(1.0f, 0.0f, 0.0f));
+  const vec3 rWorld = safeNormalize(glm::cross(camera.up, dWorld), vec3(1.0f, 0.0f, 0.0f));
   const vec3 uWorld = glm::cross(dWorld, rWorld);
   // The view spans 2 * distance * tan(fov / 2) world units vertically at the target.
   const float worldPerPoint =
@@ -56,7 +55,7 @@ bool dragPointInViewPlane(const Camera& camera, vec3& pointWorld, float dxPoints
                           float viewHeightPoints) {
   if (!(viewHeightPoints > 0.0f)) return false;
   const vec3 dWorld = safeNormalize(camera.position - camera.target);
-  const vec3 rWorld = safeNormalize(glm::cross(kWorldUp, dWorld), vec3(1.0f, 0.0f, 0.0f));
+  const vec3 rWorld = safeNormalize(glm::cross(camera.up, dWorld), vec3(1.0f, 0.0f, 0.0f));
   const vec3 uWorld = glm::cross(dWorld, rWorld);
   // The camera looks along -D: the depth of the point in front of it.
   const float depth = glm::dot(pointWorld - camera.position, -dWorld);

@@ -21,10 +21,14 @@ void GuiApp::drawCameraTab() {
   const float fieldWidth = ImGui::GetContentRegionAvail().x * 0.6f;
   ImGui::SetNextItemWidth(fieldWidth);
   changed |= ImGui::DragFloat3("Position P", &camera.position.x, kPositionDragSpeed, 0.0f, 0.0f, "%.3f");
-  itemTooltip("The eye, world units. P - T must not be parallel to the world up (0, 1, 0).");
+  itemTooltip("The eye, world units. P - T must not be parallel to Up.");
   ImGui::SetNextItemWidth(fieldWidth);
   changed |= ImGui::DragFloat3("Target T", &camera.target.x, kPositionDragSpeed, 0.0f, 0.0f, "%.3f");
   itemTooltip("The point looked at, world units; must differ from P.");
+  ImGui::SetNextItemWidth(fieldWidth);
+  changed |= ImGui::DragFloat3("Up", &camera.up.x, kPositionDragSpeed, 0.0f, 0.0f, "%.3f");
+  itemTooltip("The camera's up vector (up; the world's (0, 1, 0) by default), any length > 0, not parallel to P - T. "
+              "Panning moves along the image's axes; orbiting turns about the world's Y axis.");
   ImGui::SetNextItemWidth(fieldWidth);
   changed |= ImGui::SliderFloat("fov (deg)", &camera.fovDeg, kMinFovDeg, kMaxFovDeg, "%.1f");
   itemTooltip("Vertical field of view, degrees, in (0, 180) exclusive.");

@@ -6,6 +6,8 @@
 #include "app/gui/text_concat.h"
 #include "app/gui/ui_widgets.h"
 
+#include "compare/capture_faces.h"
+#include "compare/cube_cross.h"
 #include "scene/environment_light.h"
 #include "scene/environment_specular.h"
 #include "scene/errors.h"
@@ -17,6 +19,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <string>
 
 namespace twr::gui {
@@ -56,6 +59,9 @@ constexpr float kHeightScaleSliderMax = 0.2f;
 // Environment controls (docs/environment.md): the intensity slider's top (the scene file allows
 // more), the ratio a material starts refracting with (glass from air), the slider's bottom.
 constexpr float kEnvironmentIntensitySliderMax = 4.0f;
+// The capture size combo's range, texels per face (the scene file allows 1..1024).
+constexpr int kMinCaptureSizeInGui = 16;
+constexpr int kMaxCaptureSizeInGui = 512;
 constexpr float kDefaultRefractionIndex = 0.66f;
 constexpr float kMinRefractionIndexSlider = 0.2f;
 constexpr EnvironmentSpecular kEnvironmentSpeculars[] = {EnvironmentSpecular::None, EnvironmentSpecular::Mirror,
@@ -204,10 +210,14 @@ void GuiApp::drawSceneTab() {
   itemTooltip("Ambient light intensity, linear RGB (may exceed 1): adds ka * albedo * Ia to every lit pixel.");
   if (doc_.scene.environment) {
     Environment& env = *doc_.scene.environment;
-    ImGui::TextDisabled("environment: %s, %dx%d per face, %d levels",
-                        env.equirectPath.empty() ? "six cube faces" : "an equirect made into a cube",
-                        env.cube ? env.cube->size() : 0, env.cube ? env.cube->size() : 0,
-                        env.cube ? env.cube->levelCount() : 0);
+    if (env.capture) {
+      changed |= drawEnvironmentCaptureControls(env);
+    } else {
+      ImGui::TextDisabled("environment: %s, %dx%d per face, %d levels",
+                          env.equirectPath.empty() ? "six cube faces" : "an equirect made into a cube",
+                          env.cube ? env.cube->size() : 0, env.cube ? env.cube->size() : 0,
+                          env.cube ? env.cube->levelCount() : 0);
+    }
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
     changed |= ImGui::SliderFloat("environment intensity", &env.intensity, 0.0f, kEnvironmentIntensitySliderMax, "%.2f",
                                   ImGuiSliderFlags_AlwaysClamp);
@@ -221,7 +231,15 @@ void GuiApp::drawSceneTab() {
       for (const EnvironmentParameterization kind : {EnvironmentParameterization::Cube, EnvironmentParameterization::Sphere,
                                                      EnvironmentParameterization::DualParaboloid}) {
         const bool chosen = kind == env.parameterization;
-        if (ImGui::Selectable(std::string(toString(kind)).c_str(), chosen) && !chosen && env.cube) {
+        const bool picked = ImGui::Selectable(std::string(toString(kind)).c_str(), chosen) && !chosen;
+        if (picked && env.capture) {
+          // A captured cube is built by each renderer per frame, its map with it.
+          env.parameterization = kind;
+          if (kind != EnvironmentParameterization::Cube && !env.sizeGiven) {
+            env.size = std::clamp(2 * env.capture->size, kDefaultEnvironmentSize, kMaxCubeFaceSize);
+          }
+          changed = true;
+        } else if (picked && env.cube) {
           // Built here from the cube, as the scene file builds it (a 1024-texel map takes
           // well under a second).
           env.parameterization = kind;
@@ -247,6 +265,7 @@ void GuiApp::drawSceneTab() {
       ImGui::TextDisabled("read from a %s map: %d x %dx%d, %d levels", std::string(toString(env.parameterization)).c_str(),
                           env.layers->layers, env.layers->size(), env.layers->size(), env.layers->levelCount());
     }
+    drawEnvironmentSourceImages(env);
   }
 
   sectionTitle("Nodes");
@@ -561,6 +580,87 @@ void GuiApp::drawHeightFieldControls(std::size_t index) {
   }
   ImGui::Unindent();
   ImGui::PopID();
+}
+
+// A captured environment (scene/environment_capture.h): the node it is captured from and the
+// faces' size. Returns whether one changed.
+bool GuiApp::drawEnvironmentCaptureControls(Environment& env) {
+  bool changed = false;
+  EnvironmentCapture& capture = *env.capture;
+  ImGui::TextDisabled("environment: captured from \"%s\", %dx%d per face, by each renderer every frame",
+                      capture.node.c_str(), capture.size, capture.size);
+  std::vector<std::string> names;
+  const std::function<void(const Node&)> collect = [&](const Node& node) {
+    names.push_back(node.name);
+    for (const Node& child : node.children) collect(child);
+  };
+  for (const Node& node : doc_.scene.nodes) collect(node);
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+  if (ImGui::BeginCombo("capture node", capture.node.c_str())) {
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      ImGui::PushID(static_cast<int>(i));
+      const bool chosen = names[i] == capture.node;
+      if (ImGui::Selectable(names[i].c_str(), chosen) && !chosen) {
+        capture.node = names[i];
+        changed = true;
+      }
+      ImGui::PopID();
+    }
+    ImGui::EndCombo();
+  }
+  itemTooltip("The node the cube map is rendered from: six 90-degree views from the middle of its mesh, the node "
+              "itself hidden (capture.node).");
+  probe_.item("environment_capture_node");
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+  const std::string sizeLabel = std::to_string(capture.size);
+  if (ImGui::BeginCombo("capture size", sizeLabel.c_str())) {
+    for (int size = kMinCaptureSizeInGui; size <= kMaxCaptureSizeInGui; size *= 2) {
+      const bool chosen = size == capture.size;
+      if (ImGui::Selectable(std::to_string(size).c_str(), chosen) && !chosen) {
+        capture.size = size;
+        changed = true;
+      }
+      probe_.item(concat("environment_capture_size_", size).c_str());
+    }
+    ImGui::EndCombo();
+  }
+  itemTooltip("Texels per face side (capture.size): six renders of this size every frame, before the frame.");
+  probe_.item("environment_capture_size");
+  return changed;
+}
+
+// The environment's source as a cube cross: the loaded cube's level 0, or the faces each
+// renderer captured for the frames shown.
+void GuiApp::drawEnvironmentSourceImages(const Environment& env) {
+  const float width = ImGui::GetContentRegionAvail().x;
+  // `revision` tells apart two frames' faces that happen to reuse one address.
+  const auto show = [&](ImageTexture& texture, const void* source, std::uint64_t revision,
+                        const std::function<Image()>& make, const char* label) {
+    if (source == nullptr) return;
+    if (texture.empty() || crossSources_[&texture] != std::make_pair(source, revision)) {
+      texture.upload(make());
+      crossSources_[&texture] = {source, revision};
+    }
+    ImGui::TextDisabled("%s", label);
+    ImGui::Image(texture.id(), ImVec2(width, width * 0.75f));
+  };
+  if (!env.capture) {
+    if (!env.cube || !ImGui::TreeNode("source images")) return;
+    show(sourceCrossTexture_, env.cube.get(), 0, [&] { return cubeCrossFromCube(*env.cube); },
+         "level 0 (linear values above 1 show white)");
+    ImGui::TreePop();
+    return;
+  }
+  if (!ImGui::TreeNode("captured faces")) return;
+  const auto facesOf = [](const BackendFrame& frame) -> const CapturedFaces* {
+    return frame.output && frame.output->capturedFaces ? frame.output->capturedFaces.get() : nullptr;
+  };
+  const CapturedFaces* cpu = facesOf(cpuFrame_);
+  const CapturedFaces* gl = facesOf(glFrame_);
+  if (!cpu && !gl) hintText("No frame drawn with a capture yet.");
+  show(captureCpuTexture_, cpu, cpuFrame_.revision, [&] { return capturedFacesCross(*cpu); }, "CPU's faces");
+  show(captureGlTexture_, gl, glFrame_.revision, [&] { return capturedFacesCross(*gl); }, "GL's faces");
+  ImGui::TreePop();
 }
 
 // The environment keys of a material (issue 17): how much of the environment it reflects, whether

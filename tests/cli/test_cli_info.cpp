@@ -72,6 +72,30 @@ TEST(CliInfo, JsonIsOneObjectWithTheDocumentedKeys) {
   EXPECT_EQ(j["output"]["height"], 480);
 }
 
+// A captured environment has no cube until a renderer draws one: info says where it comes
+// from and what each renderer will build, in text and JSON.
+TEST(CliInfo, CapturedEnvironment) {
+  const std::string scene = kSource + "/assets/scenes/env_capture_glossy.json";
+  const RunResult text = runCli("info \"" + scene + "\"");
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  expectContains(text.out, "environment: captured from node \"probe\" by each renderer before each frame, 64x64 per face, "
+                           "7 levels, intensity 1, no sky box");
+  expectContains(text.out, "  read as a dual_paraboloid map built from each capture at 256x256");
+  expectContains(text.out, "  satin: prefiltered, reflectivity 0.7, fresnel schlick, diffuse irradiance_map");
+  const RunResult json = runCli("info --json \"" + scene + "\"");
+  ASSERT_EQ(json.exitCode, 0) << json.err;
+  const nlohmann::json j = nlohmann::json::parse(json.out);
+  const nlohmann::json& env = j["environment"];
+  EXPECT_EQ(env["source"], "capture");
+  EXPECT_EQ(env["capture"]["node"], "probe");
+  EXPECT_EQ(env["capture"]["size"], 64);
+  EXPECT_EQ(env["face_size"], 64);
+  EXPECT_EQ(env["levels"], 7);
+  EXPECT_EQ(env["map_size"], 256);
+  EXPECT_TRUE(env["materials"].contains("satin"));
+  EXPECT_EQ(j["camera"]["up"], nlohmann::json::parse("[0.0, 1.0, 0.0]"));
+}
+
 TEST(CliInfo, NamesTheCpuTargetActuallyUsedAndEverySupportedOne) {
   const RunResult r = runCli("info --json \"" + kDefaultScene + "\"");
   ASSERT_EQ(r.exitCode, 0) << r.err;

@@ -95,6 +95,45 @@ TEST(CliCompare, WritesEveryArtefactAndTheDocumentedKeys) {
   EXPECT_GT(loadPng((dir / "side_by_side.png").string()).width, 2 * 200 - 1);
 }
 
+// A captured environment: the faces each renderer drew are compared, reported and drawn too;
+// without one the keys are null and no capture file is written.
+TEST(CliCompare, ComparesTheFacesOfACapturedEnvironment) {
+  const auto dir = testDir("cli_compare_capture");
+  const RunResult r = runCli("compare \"" + kSource + "/assets/scenes/env_capture.json\" --out-dir \"" + dir.string() +
+                                 "\" --width 160 --height 120 --repeat 1 --targets --json",
+                             dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json json = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(json["capture_faces"].is_array());
+  ASSERT_EQ(json["capture_faces"].size(), 6u);
+  EXPECT_EQ(json["capture_faces"][0]["face"], "+X");
+  EXPECT_EQ(json["capture_faces"][5]["face"], "-Z");
+  for (const nlohmann::json& face : json["capture_faces"]) {
+    EXPECT_EQ(face["width"], 128);
+    EXPECT_EQ(face["coverage_mismatch"], 0);
+    EXPECT_LE(face["max_abs_diff"].get<int>(), 1);
+  }
+  EXPECT_EQ(json["capture_faces"][2]["covered_cpu"], 0);  // +Y: the probe looks up at the sky
+  EXPECT_GT(json["capture_faces"][3]["covered_cpu"].get<int>(), 128 * 128 / 2);  // -Y: down at the floor
+  EXPECT_GT(json["cpu_capture_ms"].get<double>(), 0.0);
+  EXPECT_LE(json["cpu_capture_ms"].get<double>(), json["cpu_ms"].get<double>());
+  EXPECT_GT(json["gl_capture_ms"].get<double>(), 0.0);
+  for (const char* file : {"capture_cpu.png", "capture_gl.png", "capture_diff.png"}) {
+    ASSERT_TRUE(std::filesystem::exists(dir / file)) << file;
+    EXPECT_EQ(loadPng((dir / file).string()).width, 4 * 128) << file;
+  }
+  const auto plain = testDir("cli_compare_no_capture");
+  std::filesystem::remove(plain / "capture_cpu.png");  // left by nothing, unless an earlier run went wrong
+  const RunResult p = runCli("compare \"" + kDefaultScene + "\" --out-dir \"" + plain.string() +
+                                 "\" --width 80 --height 60 --repeat 1 --json",
+                             plain);
+  ASSERT_EQ(p.exitCode, 0) << p.err;
+  const nlohmann::json none = nlohmann::json::parse(p.out);
+  EXPECT_TRUE(none["capture_faces"].is_null());
+  EXPECT_TRUE(none["cpu_capture_ms"].is_null());
+  EXPECT_FALSE(std::filesystem::exists(plain / "capture_cpu.png"));
+}
+
 TEST(CliCompare, ExitsOneOverAThreshold) {
   const auto dir = testDir("cli_compare");
   // The two renderers differ by at most 1 level on this scene, so a 0-level limit on a

@@ -69,6 +69,8 @@ inline constexpr SceneTolerance kSceneTolerances[] = {
     {"env_glossy.json"},                           // prefiltered glossy reflection: shininess 8, 60, 700
     {"env_glossy_sphere.json"},                    // the same read from a sphere map
     {"env_glossy_dual_paraboloid.json"},           // and from a dual paraboloid, across its seam
+    {"env_capture.json"},          // a mirror sphere's cube captured from the scene by each renderer
+    {"env_capture_glossy.json"},   // the same, prefiltered and irradiance light, through a dual paraboloid
 };
 
 }  // namespace twr::suite

@@ -6,6 +6,7 @@
 #include "compare/scene_tolerances.h"
 
 #include "compare/artifacts.h"
+#include "compare/capture_faces.h"
 #include "compare/metrics.h"
 #include "compare/report_json.h"
 #include "compare/thresholds.h"
@@ -18,6 +19,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -92,10 +94,10 @@ std::vector<SuiteCase> suiteCases() {
       cases.push_back(c);
     }
   }
-  // Every height-field scene at 1280x720 as well (issue 16).
+  // Every height-field and environment scene at 1280x720 as well (issues 16 and 17).
   for (const suite::SceneTolerance& row : suite::kSceneTolerances) {
     const std::string scene(row.scene);
-    if (scene.rfind("height_", 0) != 0) continue;
+    if (scene.rfind("height_", 0) != 0 && scene.rfind("env_", 0) != 0) continue;
     SuiteCase c;
     c.scene = scene;
     c.width = 1280;
@@ -165,7 +167,15 @@ TEST_P(SceneSuite, CpuMatchesLlvmpipeWithinTolerance) {
   } else {
     limits.maxCoverageMismatch = 0.0;
   }
-  const std::vector<ThresholdViolation> violations = checkThresholds(m, limits);
+  std::vector<ThresholdViolation> violations = checkThresholds(m, limits);
+  // A captured environment: each renderer drew its own six faces, held to the same limits.
+  EXPECT_EQ(cpu.capturedFaces != nullptr, scene.environment && scene.environment->capture);
+  EXPECT_EQ(gl.capturedFaces != nullptr, scene.environment && scene.environment->capture);
+  std::optional<CapturedFacesComparison> faces;
+  if (cpu.capturedFaces && gl.capturedFaces) {
+    faces = compareCapturedFaces(*cpu.capturedFaces, *gl.capturedFaces);
+    for (ThresholdViolation& v : checkCapturedFaces(*faces, limits)) violations.push_back(std::move(v));
+  }
 
   EXPECT_GT(m.coveredCpu, 0u) << "the scene draws nothing: the test would prove nothing";
   EXPECT_EQ(m.nanPixels, 0u);
@@ -178,6 +188,10 @@ TEST_P(SceneSuite, CpuMatchesLlvmpipeWithinTolerance) {
     for (const ThresholdViolation& v : violations) message += "  " + v.message + "\n";
     message += "images and metrics kept:\n";
     for (const std::string& path : paths.all()) message += "  " + path + "\n";
+    if (faces) {
+      const CaptureArtifactPaths facePaths = writeCaptureArtifacts(dir, *cpu.capturedFaces, *gl.capturedFaces, *faces);
+      message += "  " + facePaths.cpu + "\n  " + facePaths.gl + "\n  " + facePaths.diff + "\n";
+    }
     ADD_FAILURE() << message;
   }
 }

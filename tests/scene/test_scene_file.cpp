@@ -163,7 +163,7 @@ TEST(SceneFileErrors, UnknownKeyInMesh) {
 
 TEST(SceneFileErrors, UnknownKeyInOtherSections) {
   expectContains(parseError(R"({"nodes": [], "output": {"depth": 8}})"), {"inline.json: output.depth: unknown key"});
-  expectContains(parseError(R"({"nodes": [], "camera": {"up": [0, 1, 0]}})"), {"inline.json: camera.up: unknown key"});
+  expectContains(parseError(R"({"nodes": [], "camera": {"roll_deg": 30}})"), {"inline.json: camera.roll_deg: unknown key"});
   expectContains(parseError(R"({"nodes": [], "lights": [{"colour": [1, 1, 1]}]})"),
                  {"inline.json: lights[0].colour: unknown key"});
   expectContains(parseError(R"({"nodes": [], "materials": {"m": {"bump_map": "x.png"}}})"),
@@ -789,8 +789,7 @@ const std::string kSixFaces = R"(["../../../assets/textures/sky_px.png", "../../
   "../../../assets/textures/sky_py.png", "../../../assets/textures/sky_ny.png", "../../../assets/textures/sky_pz.png",
   "../../../assets/textures/sky_nz.png"])";
 
-// Issue 17's keys: each bad value names its key and what was expected; what is not drawn yet
-// is refused by name, never drawn some other way.
+// Issue 17's keys: each bad value names its key and what was expected.
 TEST(SceneFileErrors, EnvironmentKeys) {
   expectContains(parseError(withEnvironment("{}")), {"inline.json: environment: missing its source", "\"cube\"", "\"equirect\""});
   expectContains(parseError(withEnvironment(R"({"cube": ["a.png", "b.png"]})")),
@@ -798,13 +797,13 @@ TEST(SceneFileErrors, EnvironmentKeys) {
   expectContains(parseError(withEnvironment(R"({"cube": ["a.png", "b.png", "c.png", "d.png", "e.png", "f.png"]})")),
                  {"environment.cube[0]: ", "a.png: image file not found"});
   expectContains(parseError(withEnvironment(R"({"equirect": "nothing.hdr"})")), {"environment.equirect: ", "nothing.hdr"});
-  expectContains(parseError(withEnvironment(R"({"equirect": "x.png", "cube": []})")), {"environment: give either"});
+  expectContains(parseError(withEnvironment(R"({"equirect": "x.png", "cube": []})")), {"environment: give one source"});
   expectContains(parseError(withEnvironment(R"({"equirect": "x.png", "size": 300})")),
                  {"environment.size: expected a power of two in [1, 1024], got 300"});
   expectContains(parseError(withEnvironment(R"({"equirect": "x.png", "parameterization": "octahedral"})")),
                  {"environment.parameterization: expected one of cube|sphere|dual_paraboloid"});
   expectContains(parseError(withEnvironment(R"({"equirect": "x.png", "capture": {"node": "n"}})")),
-                 {"environment.capture: capturing the cube map from the scene is not drawn yet"});
+                 {"environment: give one source: \"cube\", \"equirect\" or \"capture\", not two"});
   expectContains(parseError(withEnvironment(R"({"equirect": "x.png", "halo": 1})")), {"environment.halo: unknown key in the environment"});
   expectContains(parseError(withEnvironment(kSixFaces, R"({"reflectivity": 1.5})")),
                  {"materials.m.reflectivity: expected a number in [0, 1]"});
@@ -911,6 +910,53 @@ TEST(SceneFile, EnvironmentDiffuseLightIsPrefilteredAtLoadOnlyWhenAsked) {
   const Scene alone = parseScene(R"({"nodes": [], "materials": {"m": {"environment_diffuse": "sh9"}}})", kInline, kDataDir);
   ASSERT_EQ(alone.warnings.size(), 1u);
   EXPECT_NE(alone.warnings[0].find("materials.m: its environment keys are ignored"), std::string::npos) << alone.warnings[0];
+}
+
+}  // namespace
+}  // namespace twr
+
+namespace twr {
+namespace {
+
+TEST(SceneFileErrors, EnvironmentCaptureKeys) {
+  const std::string node = R"("nodes": [{"name": "ball", "mesh": {"type": "sphere"}}])";
+  expectContains(parseError(R"({"environment": {"capture": {"node": "nobody"}}, )" + node + "}"),
+                 {"inline.json: environment.capture.node: no node is named \"nobody\" (the nodes: \"ball\")"});
+  expectContains(parseError(R"({"environment": {"capture": {"size": 64}}, )" + node + "}"),
+                 {"inline.json: environment.capture: missing \"node\""});
+  expectContains(parseError(R"({"environment": {"capture": {"node": "ball", "size": 48}}, )" + node + "}"),
+                 {"inline.json: environment.capture.size: expected a power of two in [1, 1024], got 48"});
+  expectContains(parseError(R"({"environment": {"capture": {"node": "ball", "size": 2048}}, )" + node + "}"),
+                 {"inline.json: environment.capture.size:"});
+  expectContains(parseError(R"({"environment": {"capture": {"node": "ball", "sise": 8}}, )" + node + "}"),
+                 {"inline.json: environment.capture.sise: unknown key in the capture"});
+  expectContains(parseError(R"({"environment": {"capture": {"node": "ball"}, "equirect": "sky.hdr"}, )" + node + "}"),
+                 {"inline.json: environment: give one source: \"cube\", \"equirect\" or \"capture\", not two"});
+  expectContains(parseError(R"({"environment": {"capture": "ball"}, )" + node + "}"),
+                 {"inline.json: environment.capture: expected an object"});
+}
+
+TEST(SceneFile, EnvironmentCaptureWarnsOfIgnoredSizeAndSharedNames) {
+  const Scene scene = parseScene(R"({"environment": {"capture": {"node": "ball"}, "size": 64},
+      "nodes": [{"name": "ball", "mesh": {"type": "sphere"}}, {"name": "ball", "mesh": {"type": "cube"}}]})",
+                                 "inline.json", ".");
+  ASSERT_TRUE(scene.environment && scene.environment->capture);
+  EXPECT_EQ(scene.environment->capture->size, kDefaultCaptureSize);
+  ASSERT_EQ(scene.warnings.size(), 2u);
+  EXPECT_NE(scene.warnings[0].find("environment.size: ignored"), std::string::npos) << scene.warnings[0];
+  EXPECT_NE(scene.warnings[1].find("2 nodes are named \"ball\"; the capture is taken from the first"), std::string::npos)
+      << scene.warnings[1];
+}
+
+TEST(SceneFile, CameraUp) {
+  const Scene scene = parseScene(R"({"camera": {"position": [0, 5, 0], "target": [0, 0, 0], "up": [0, 0, -1]},
+      "nodes": []})",
+                                 "inline.json", ".");
+  EXPECT_EQ(scene.camera.up, vec3(0.0f, 0.0f, -1.0f));
+  expectContains(parseError(R"({"nodes": [], "camera": {"up": [0, 0, 0]}})"),
+                 {"inline.json: camera: up must be a vector of finite, non-zero length"});
+  expectContains(parseError(R"({"nodes": [], "camera": {"position": [0, 0, 4], "up": [0, 0, 2]}})"),
+                 {"inline.json: camera: position - target must not be parallel to up"});
 }
 
 }  // namespace
