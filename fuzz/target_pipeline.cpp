@@ -150,12 +150,19 @@ Scene randomScene(ByteReader& r) {
   scene.settings = randomSettings(r);
   const int lights = r.intIn(0, kMaxLights);
   for (int i = 0; i < lights; ++i) {
-    PointLight light;
+    Light light;
     light.posWorld = r.flag() ? r.hostileVec3() : r.tameVec3();
     light.diffuse = loaderColour(r);
     light.specular = loaderColour(r);
     light.attenuation = vec3{r.nonNegativeFloat(), r.nonNegativeFloat(), r.nonNegativeFloat()};
     if (light.attenuation == vec3(0.0f)) light.attenuation.x = 1.0f;  // the loader refuses all zero
+    if (r.flag()) {  // directional, unit length as the loader leaves it
+      const glm::dvec3 d(r.tameVec3());
+      if (glm::length(d) > 0.0) {
+        light.type = LightType::Directional;
+        light.directionWorld = vec3(d / glm::length(d));
+      }
+    }
     scene.lights.push_back(light);
   }
   Material material;

@@ -169,20 +169,22 @@ void setUniforms(GLuint program, const Scene& scene, const RenderSettings& setti
   glUniform1f(uniformLocation(program, "mirrorSign"), transforms.mirrorSign);
   glUniform3fv(uniformLocation(program, "eyePosWorld"), 1, &scene.camera.position.x);
 
-  // The vertex stage reads lightPosWorld[], the fragment stage lights[] (as the C++
-  // VertexUniforms and ShadeUniforms do).
-  std::vector<vec3> lightPos;
-  for (const PointLight& light : scene.lights) lightPos.push_back(light.posWorld);
+  // The vertex stage reads lightVectorWorld[], the fragment stage lights[] (as the C++
+  // VertexUniforms and ShadeUniforms do): each light as lightVectorWorld gives it, a point
+  // light's position with w 1, a directional light's direction towards it with w 0.
+  std::vector<vec4> lightVectors;
+  for (const Light& light : scene.lights) lightVectors.push_back(lightVectorWorld(light));
   const GLsizei lightCount = static_cast<GLsizei>(scene.lights.size());
   glUniform1i(uniformLocation(program, "lightCount"), lightCount);
-  if (lightCount > 0) glUniform3fv(uniformLocation(program, "lightPosWorld"), lightCount, &lightPos[0].x);
+  if (lightCount > 0) glUniform4fv(uniformLocation(program, "lightVectorWorld"), lightCount, &lightVectors[0].x);
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-    const PointLight& light = scene.lights[i];
+    const Light& light = scene.lights[i];
     const std::string prefix = "lights[" + std::to_string(i) + "].";
-    glUniform3fv(uniformLocation(program, (prefix + "posWorld").c_str()), 1, &light.posWorld.x);
+    const vec3 attenuation = attenuationUsed(light);
+    glUniform4fv(uniformLocation(program, (prefix + "vectorWorld").c_str()), 1, &lightVectors[i].x);
     glUniform3fv(uniformLocation(program, (prefix + "diffuse").c_str()), 1, &light.diffuse.x);
     glUniform3fv(uniformLocation(program, (prefix + "specular").c_str()), 1, &light.specular.x);
-    glUniform3fv(uniformLocation(program, (prefix + "attenuation").c_str()), 1, &light.attenuation.x);
+    glUniform3fv(uniformLocation(program, (prefix + "attenuation").c_str()), 1, &attenuation.x);
   }
   setGlClipUniforms(program, clipState, settings.userClipPlanes);
 

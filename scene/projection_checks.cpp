@@ -209,7 +209,8 @@ std::vector<std::string> projectionWarnings(const Scene& scene, int width, int h
       const glm::dvec3 p((corner & 1) ? e.worldHi.x : e.worldLo.x, (corner & 2) ? e.worldHi.y : e.worldLo.y,
                          (corner & 4) ? e.worldHi.z : e.worldLo.z);
       farthestFromViewer = std::max(farthestFromViewer, length(p - glm::dvec3(camera.position)));
-      for (const PointLight& light : scene.lights) {
+      for (const Light& light : scene.lights) {
+        if (light.type == LightType::Directional) continue;  // no position: its vectors are unit length
         farthestFromLight = std::max(farthestFromLight, length(p - glm::dvec3(light.posWorld)));
       }
     }

@@ -53,6 +53,14 @@ void flattenNode(const Scene& scene, const Node& node, const mat4& worldFromPare
 
 }  // namespace
 
+vec4 lightVectorWorld(const Light& light) {
+  return light.type == LightType::Directional ? vec4(-light.directionWorld, 0.0f) : vec4(light.posWorld, 1.0f);
+}
+
+vec3 attenuationUsed(const Light& light) {
+  return light.type == LightType::Directional ? vec3(1.0f, 0.0f, 0.0f) : light.attenuation;
+}
+
 std::vector<DrawItem> flattenScene(const Scene& scene) {
   std::vector<DrawItem> items;
   std::uint32_t nextTriangleId = 0;

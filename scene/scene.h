@@ -77,13 +77,29 @@ struct Material {
   EnvironmentDiffuse environmentDiffuse = EnvironmentDiffuse::None;
 };
 
-struct PointLight {
-  vec3 posWorld{2.0f, 3.0f, 4.0f};
-  vec3 diffuse{1.0f};   // Id
-  vec3 specular{1.0f};  // Is
-  // If = 1 / (A_C + A_L d + A_Q d^2), d in world units.
+// A point light shines from posWorld and fades with distance; a directional light (the sun,
+// the GAMES202 write-up's light) shines along directionWorld from infinitely far, unattenuated.
+enum class LightType { Point, Directional };
+
+struct Light {
+  vec3 posWorld{2.0f, 3.0f, 4.0f};  // point: where it is, world units
+  vec3 diffuse{1.0f};               // Id
+  vec3 specular{1.0f};              // Is
+  // If = 1 / (A_C + A_L d + A_Q d^2), d in world units (point lights; a directional one's is 1).
   vec3 attenuation{1.0f, 0.09f, 0.032f};
+  LightType type = LightType::Point;       // last, so {position, Id, Is, attenuation} still makes a point light
+  vec3 directionWorld{0.0f, -1.0f, 0.0f};  // directional: the way its light travels, unit length
 };
+
+// The light as both renderers' shaders take it, one vec4 for either type:
+//   point:        (posWorld, 1)
+//   directional:  (-directionWorld, 0)
+// so that the vector from a point P to the light is xyz - w P for both (1 P and 0 P are exact:
+// a point light's vector has the bits it had before directional lights existed).
+vec4 lightVectorWorld(const Light& light);
+// The attenuation both renderers use: the light's, or (1, 0, 0) for a directional light, which
+// makes 1 / (1 + 0 d + 0 d^2) exactly 1 (its d, the length of a unit vector, is finite).
+vec3 attenuationUsed(const Light& light);
 
 struct OutputDesc {
   int width = 640;   // pixels
@@ -109,7 +125,7 @@ struct Scene {
   OutputDesc output;
   Camera camera;
   vec3 ambient{0.1f};  // Ia
-  std::vector<PointLight> lights;
+  std::vector<Light> lights;
   std::vector<Material> materials;
   std::vector<MeshDesc> meshDescs;  // parallel to meshes
   std::vector<Mesh> meshes;

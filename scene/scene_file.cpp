@@ -454,12 +454,39 @@ class SceneReader {
       const std::string lightPath = indexPath(path, i);
       const Json& lj = j[i];
       requireObject(lj, lightPath);
-      checkKeys(lj, lightPath, {"position", "diffuse", "specular", "attenuation"}, "a light");
-      PointLight light;
-      if (const Json* v = find(lj, "position")) light.posWorld = readVector<3>(*v, childPath(lightPath, "position"), NumberRule::Finite);
+      checkKeys(lj, lightPath, {"type", "position", "direction", "diffuse", "specular", "attenuation"}, "a light");
+      Light light;
+      if (const Json* v = find(lj, "type")) {
+        const std::string type = readString(*v, childPath(lightPath, "type"), "point or directional");
+        if (type == "directional") {
+          light.type = LightType::Directional;
+        } else if (type != "point") {
+          fail(childPath(lightPath, "type"), "expected one of point|directional, got " + quote(*v));
+        }
+      }
+      const bool directional = light.type == LightType::Directional;
+      // What the other type reads is read and reported as ignored.
+      for (const char* key : {directional ? "position" : "direction", directional ? "attenuation" : ""}) {
+        if (*key != '\0' && find(lj, key)) {
+          scene_.warnings.push_back(fileName_ + ": " + childPath(lightPath, key) + ": ignored: a " +
+                                    (directional ? "directional" : "point") + " light has no " + key);
+        }
+      }
+      if (const Json* v = find(lj, "direction"); v && directional) {
+        const std::string directionPath = childPath(lightPath, "direction");
+        const glm::dvec3 direction(readVector<3>(*v, directionPath, NumberRule::Finite));
+        const double length = glm::length(direction);
+        if (!(length > 0.0) || !std::isfinite(length)) {
+          fail(directionPath, "expected a non-zero direction (the way the light travels), got " + quote(*v));
+        }
+        light.directionWorld = vec3(direction / length);  // normalised in double, rounded once
+      }
+      if (const Json* v = find(lj, "position"); v && !directional) {
+        light.posWorld = readVector<3>(*v, childPath(lightPath, "position"), NumberRule::Finite);
+      }
       if (const Json* v = find(lj, "diffuse")) light.diffuse = readColour(*v, childPath(lightPath, "diffuse"), NumberRule::Colour);
       if (const Json* v = find(lj, "specular")) light.specular = readColour(*v, childPath(lightPath, "specular"), NumberRule::Colour);
-      if (const Json* v = find(lj, "attenuation")) {
+      if (const Json* v = find(lj, "attenuation"); v && !directional) {
         const std::string attenuationPath = childPath(lightPath, "attenuation");
         light.attenuation = readVector<3>(*v, attenuationPath, NumberRule::NonNegative);
         if (light.attenuation == vec3(0.0f)) {

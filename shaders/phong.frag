@@ -31,7 +31,7 @@ in vec3 eyeDirTangent;
 #endif
 
 struct LightUniform {
-  vec3 posWorld;
+  vec4 vectorWorld;  // (position, 1) for a point light, (towards the light, 0) for a directional one
   vec3 diffuse;      // Id
   vec3 specular;     // Is
   vec3 attenuation;  // A_C, A_L, A_Q
@@ -44,6 +44,11 @@ uniform float shininess;  // Phong exponent, >= 0
 uniform vec3 ambient;     // Ia
 uniform LightUniform lights[MAX_LIGHTS];
 uniform int lightCount;   // in [0, MAX_LIGHTS]
+
+// The vector from p to a light: xyz - w p (w 1 for a point light, 0 for a directional one).
+vec3 toLightWorld(LightUniform light, vec3 p) {
+  return light.vectorWorld.xyz - light.vectorWorld.w * p;
+}
 uniform vec3 eyePosWorld;
 uniform uint firstTriangleId;
 uniform sampler2D diffuseMap;
@@ -179,10 +184,10 @@ void main() {
     vec3 lVec = lightDirTangent[i];
     vec3 vVec = eyeDirTangent;
 #else
-    vec3 lVec = lights[i].posWorld - posWorld;
+    vec3 lVec = toLightWorld(lights[i], posWorld);
     vec3 vVec = eyePosWorld - posWorld;
 #endif
-    float d = length(lights[i].posWorld - posWorld);  // always from posWorld, both spaces
+    float d = length(toLightWorld(lights[i], posWorld));  // always from posWorld, both spaces
     vec3 l = safeNormalize(lVec);
     vec3 v = safeNormalize(vVec);
     float nDotL = dot(nl, l);
@@ -263,7 +268,7 @@ void main() {
 #ifdef LIGHTING_TANGENT
     dirTangent = safeNormalize(kLight ? lightDirTangent[0] : eyeDirTangent);
 #else
-    vec3 w = (kLight ? lights[0].posWorld : eyePosWorld) - posWorld;
+    vec3 w = kLight ? toLightWorld(lights[0], posWorld) : eyePosWorld - posWorld;
     dirTangent = safeNormalize(vec3(dot(t, w), dot(b, w), dot(n, w)));
 #endif
   }
@@ -286,7 +291,7 @@ void main() {
 #ifdef LIGHTING_TANGENT
     vec3 lVec0 = lightDirTangent[0];
 #else
-    vec3 lVec0 = lights[0].posWorld - posWorld;
+    vec3 lVec0 = toLightWorld(lights[0], posWorld);
 #endif
     shadow = selfShadow(detail, tangentFromLighting(lVec0, t, b, n));
   }

@@ -12,7 +12,8 @@ uniform mat3 normalFromModel;   // inverse transpose of the upper 3x3 of worldFr
 uniform mat3 tangentFromModel;  // upper 3x3 of worldFromModel, or normalFromModel
 uniform float mirrorSign;       // -1 when det(upper 3x3 of worldFromModel) < 0, else +1
 uniform vec3 eyePosWorld;
-uniform vec3 lightPosWorld[MAX_LIGHTS];
+// Each light as (position, 1) or, directional, (towards the light, 0): to it is xyz - w P.
+uniform vec4 lightVectorWorld[MAX_LIGHTS];
 uniform int lightCount;                       // in [0, MAX_LIGHTS]
 uniform vec4 userClipPlanes[MAX_CLIP_PLANES];  // world space, keeps dot(plane, (p, 1)) >= 0
 uniform int userClipPlaneCount;                // in [0, MAX_CLIP_PLANES]
@@ -50,7 +51,7 @@ void main() {
   vec3 B = safeNormalize(bWorld);
   vec3 N = safeNormalize(nWorld);
   for (int i = 0; i < MAX_LIGHTS; ++i) {
-    vec3 Lw = lightPosWorld[i] - posWorld;
+    vec3 Lw = lightVectorWorld[i].xyz - lightVectorWorld[i].w * posWorld;
     lightDirTangent[i] = i < lightCount ? vec3(dot(T, Lw), dot(B, Lw), dot(N, Lw)) : vec3(0.0);
   }
   vec3 Ew = eyePosWorld - posWorld;

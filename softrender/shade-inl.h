@@ -46,6 +46,14 @@ TWR_LANE_INLINE L attenuationLanes(const Vec3T<ScalarOf<L>>& a, L d) {
   return L(S(1)) / maxOf(denominator, L(static_cast<S>(kMinAttenuationDenominator)));
 }
 
+// The vector from p to a light: xyz - w p, with the light as lightVectorWorld gives it (w 1 for
+// a point light, 0 for a directional one). phong.frag's toLightWorld.
+template <typename L>
+TWR_LANE_INLINE Vec3L<L> toLightLanes(const LightUniformT<ScalarOf<L>>& light, const Vec3L<L>& p) {
+  const L w(light.vectorWorld.w);
+  return Vec3L<L>(Vec3T<ScalarOf<L>>(light.vectorWorld)) - w * p;
+}
+
 // Which map a uv transform belongs to (ShadeUniformsT::uvTransform).
 inline constexpr std::size_t kDiffuseSlot = 0, kNormalSlot = 1, kSpecularSlot = 2;
 
@@ -267,7 +275,7 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
     Vec3L<L> sum(zero);
     for (int i = 0; i < u.lightCount; ++i) {
       const LightUniformT<S>& light = u.lights[static_cast<std::size_t>(i)];
-      const Vec3L<L> toLight = Vec3L<L>(light.posWorld) - f.posWorld;
+      const Vec3L<L> toLight = toLightLanes<L>(light, f.posWorld);
       Vec3L<L> lVec, vVec;
       if constexpr (kTangentSpace) {
         lVec = f.lightDirTangent[static_cast<std::size_t>(i)];
@@ -408,7 +416,7 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
       if constexpr (kTangentSpace) {
         dirTangent = safeNormalize3<L>(kLight ? f.lightDirTangent[0] : f.eyeDirTangent);
       } else {
-        const Vec3L<L> w = Vec3L<L>(kLight ? u.lights[0].posWorld : u.eyePosWorld) - f.posWorld;
+        const Vec3L<L> w = kLight ? toLightLanes<L>(u.lights[0], f.posWorld) : Vec3L<L>(u.eyePosWorld) - f.posWorld;
         dirTangent = safeNormalize3<L>(Vec3L<L>(dot3<L>(t, w), dot3<L>(b, w), dot3<L>(n, w)));
       }
     }
@@ -424,7 +432,7 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
   } else if constexpr (Features::kView == View::SelfShadow) {
     L shadow = one;
     if (selfShadowOn && u.lightCount > 0) {
-      const Vec3L<L> lVec = kTangentSpace ? f.lightDirTangent[0] : Vec3L<L>(u.lights[0].posWorld) - f.posWorld;
+      const Vec3L<L> lVec = kTangentSpace ? f.lightDirTangent[0] : toLightLanes<L>(u.lights[0], f.posWorld);
       shadow = selfShadowLanes<L>(maps, u, f, detail, tangentFromLightingLanes<L>(lVec, t, b, n, kTangentSpace));
     }
     colour = Vec4L<L>(shadow, shadow, shadow, one);

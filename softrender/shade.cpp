@@ -62,12 +62,12 @@ ShadeUniformsT<T> makeShadeUniforms(const Material& material, const Scene& scene
   u.ambient = Vec3T<T>(scene.ambient);
   u.lightCount = std::min(static_cast<int>(scene.lights.size()), kMaxLights);
   for (int i = 0; i < u.lightCount; ++i) {
-    const PointLight& light = scene.lights[static_cast<std::size_t>(i)];
+    const Light& light = scene.lights[static_cast<std::size_t>(i)];
     LightUniformT<T>& lu = u.lights[static_cast<std::size_t>(i)];
-    lu.posWorld = Vec3T<T>(light.posWorld);
+    lu.vectorWorld = Vec4T<T>(lightVectorWorld(light));
     lu.diffuse = Vec3T<T>(light.diffuse);
     lu.specular = Vec3T<T>(light.specular);
-    lu.attenuation = Vec3T<T>(light.attenuation);
+    lu.attenuation = Vec3T<T>(attenuationUsed(light));
   }
   u.eyePosWorld = Vec3T<T>(scene.camera.position);
   u.shadedView = isEnvironmentView(settings.view) ? settings.view : View::Shaded;

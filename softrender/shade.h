@@ -27,7 +27,9 @@ namespace twr {
 
 template <typename T>
 struct LightUniformT {
-  Vec3T<T> posWorld{T(0)};
+  // lightVectorWorld: (position, 1) for a point light, (towards the light, 0) for a directional
+  // one; the vector to the light from P is xyz - w P (toLightLanes).
+  Vec4T<T> vectorWorld{T(0)};
   Vec3T<T> diffuse{T(0)};                         // Id
   Vec3T<T> specular{T(0)};                        // Is
   Vec3T<T> attenuation{T(1), T(0), T(0)};         // A_C, A_L, A_Q

@@ -43,7 +43,7 @@ VertexUniformsT<T> makeVertexUniforms(const Mat4T<T>& worldFromModel, const Mat4
   u.eyePosWorld = Vec3T<T>(scene.camera.position);
   u.lightCount = std::min(static_cast<int>(scene.lights.size()), kMaxLights);
   for (int i = 0; i < u.lightCount; ++i)
-    u.lightPosWorld[static_cast<std::size_t>(i)] = Vec3T<T>(scene.lights[static_cast<std::size_t>(i)].posWorld);
+    u.lightVectorWorld[static_cast<std::size_t>(i)] = Vec4T<T>(lightVectorWorld(scene.lights[static_cast<std::size_t>(i)]));
   u.tangentLighting = settings.lightingSpace == LightingSpace::Tangent;
   u.userClipPlaneCount = std::min(static_cast<int>(settings.userClipPlanes.size()), kMaxUserClipPlanes);
   for (int j = 0; j < u.userClipPlaneCount; ++j)
@@ -71,7 +71,8 @@ ClipVertexT<T> runVertexStage(const Vertex& vertex, const VertexUniformsT<T>& u)
     const Vec3T<T> b = safeNormalize(out.bWorld);
     const Vec3T<T> n = safeNormalize(out.nWorld);
     for (int i = 0; i < u.lightCount; ++i) {
-      const Vec3T<T> lw = u.lightPosWorld[static_cast<std::size_t>(i)] - out.posWorld;
+      const Vec4T<T>& light = u.lightVectorWorld[static_cast<std::size_t>(i)];
+      const Vec3T<T> lw = Vec3T<T>(light) - light.w * out.posWorld;  // xyz - w P: point or directional
       out.lightDirTangent[static_cast<std::size_t>(i)] = Vec3T<T>(glm::dot(t, lw), glm::dot(b, lw), glm::dot(n, lw));
     }
     const Vec3T<T> ew = u.eyePosWorld - out.posWorld;

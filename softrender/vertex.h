@@ -25,7 +25,8 @@ struct VertexUniformsT {
   Mat3T<T> tangentFromModel{T(1)};  // upper 3x3 (tangent_transform = model) or normalFromModel
   T mirrorSign = T(1);              // -1 when det(upper 3x3 of worldFromModel) < 0, else +1
   Vec3T<T> eyePosWorld{T(0)};
-  std::array<Vec3T<T>, kMaxLights> lightPosWorld{};
+  // Each light as lightVectorWorld gives it: (position, 1) or (towards the light, 0).
+  std::array<Vec4T<T>, kMaxLights> lightVectorWorld{};
   int lightCount = 0;            // in [0, kMaxLights]
   bool tangentLighting = false;  // compute lightDirTangent / eyeDirTangent
   std::array<Vec4T<T>, kMaxUserClipPlanes> userClipPlanes{};  // world space, keeps dot(p, (x,y,z,1)) >= 0

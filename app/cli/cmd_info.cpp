@@ -294,11 +294,14 @@ Json sceneJson(const Scene& scene) {
   }
   j["materials"] = std::move(materials);
   Json lights = Json::array();
-  for (const PointLight& l : scene.lights) {
-    lights.push_back(Json{{"position", toJson(l.posWorld)},
+  for (const Light& l : scene.lights) {
+    const bool directional = l.type == LightType::Directional;
+    lights.push_back(Json{{"type", directional ? "directional" : "point"},
+                          {"position", directional ? Json(nullptr) : toJson(l.posWorld)},
+                          {"direction", directional ? toJson(l.directionWorld) : Json(nullptr)},
                           {"diffuse", toJson(l.diffuse)},
                           {"specular", toJson(l.specular)},
-                          {"attenuation", toJson(l.attenuation)}});
+                          {"attenuation", toJson(attenuationUsed(l))}});
   }
   j["lights"] = std::move(lights);
   j["ambient"] = toJson(scene.ambient);
@@ -412,9 +415,14 @@ void printScene(std::ostream& out, const Scene& scene) {
   out << "\nlights (" << scene.lights.size() << "), ambient " << text(scene.ambient) << ":\n";
   if (scene.lights.empty()) out << "  (none: only ambient light)\n";
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-    const PointLight& l = scene.lights[i];
-    out << "  [" << i << "] position " << text(l.posWorld) << ", diffuse " << text(l.diffuse) << ", specular "
-        << text(l.specular) << ", attenuation " << text(l.attenuation) << "\n";
+    const Light& l = scene.lights[i];
+    if (l.type == LightType::Directional) {
+      out << "  [" << i << "] directional, direction " << text(l.directionWorld) << ", diffuse " << text(l.diffuse)
+          << ", specular " << text(l.specular) << ", unattenuated\n";
+    } else {
+      out << "  [" << i << "] position " << text(l.posWorld) << ", diffuse " << text(l.diffuse) << ", specular "
+          << text(l.specular) << ", attenuation " << text(l.attenuation) << "\n";
+    }
   }
 
   std::string clipOff;

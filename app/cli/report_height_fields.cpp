@@ -51,7 +51,7 @@ Scene viewScene(int angleDeg) {
   scene.nodes.push_back(tilt);
   const mat4 worldFromPlane = localFromNodeTrs(vec3(0.0f), tilt.rotateDeg, vec3(1.0f)) *
                               localFromNodeTrs(vec3(0.0f), surface.rotateDeg, vec3(1.0f));
-  PointLight light;
+  Light light;
   light.posWorld = vec3(worldFromPlane * glm::vec4(kLightInPlane, 1.0f));
   light.attenuation = vec3(1.0f, 0.0f, 0.0f);  // no fall-off: the same light at every angle
   scene.lights.push_back(light);

@@ -388,7 +388,7 @@ Scene sphereScene(const std::shared_ptr<const Texture>& albedo, int stacks, int 
   scene.camera.near = 0.1f;
   scene.camera.far = 20.0f;
   scene.ambient = vec3(0.1f);
-  PointLight light;
+  Light light;
   light.posWorld = vec3(2.5f, 2.0f, 3.0f);
   light.attenuation = vec3(1.0f, 0.0f, 0.0f);
   scene.lights.push_back(light);

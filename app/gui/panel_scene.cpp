@@ -31,6 +31,8 @@ constexpr float kRotateDragSpeed = 0.5f;      // degrees
 constexpr float kScaleDragSpeed = 0.005f;
 constexpr float kSizeDragSpeed = 0.005f;      // world units
 constexpr float kAttenuationDragSpeed = 0.001f;
+// A directional light's direction components per dragged point (unitless; renormalised after).
+constexpr float kDirectionDragSpeed = 0.005f;
 // Largest magnitude the transform and size fields accept (inclusive), world units or degrees.
 constexpr float kMaxCoordinate = 1000.0f;
 constexpr float kMaxShininess = 512.0f;
@@ -830,29 +832,48 @@ void GuiApp::drawMapControls(std::size_t material, MapSlot slot) {
 
 void GuiApp::drawLightsSection() {
   sectionTitle("Lights");
-  std::vector<PointLight>& lights = doc_.scene.lights;
+  std::vector<Light>& lights = doc_.scene.lights;
   bool changed = false;
   int removeIndex = -1;
   for (std::size_t i = 0; i < lights.size(); ++i) {
-    PointLight& light = lights[i];
+    Light& light = lights[i];
     ImGui::PushID(static_cast<int>(i));
     const bool open = ImGui::TreeNodeEx("##light", ImGuiTreeNodeFlags_DefaultOpen, "light %zu", i);
     ImGui::SameLine(ImGui::GetContentRegionAvail().x + ImGui::GetCursorPosX() - ImGui::CalcTextSize("Remove").x -
                     2.0f * ImGui::GetStyle().FramePadding.x);
     if (ImGui::SmallButton("Remove")) removeIndex = static_cast<int>(i);
     if (open) {
+      bool directional = light.type == LightType::Directional;
+      if (ImGui::Checkbox("directional", &directional)) {
+        light.type = directional ? LightType::Directional : LightType::Point;
+        changed = true;
+      }
+      itemTooltip("A directional light (type directional) shines along one direction from infinitely far, "
+                  "unattenuated, as the sun; a point light from its position, fading with distance.");
       ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
-      changed |= ImGui::DragFloat3("Position", &light.posWorld.x, kTranslateDragSpeed, -kMaxCoordinate,
-                                   kMaxCoordinate, "%.2f");
-      itemTooltip("World space. Drag the numbers to move the light.");
+      if (directional) {
+        vec3 direction = light.directionWorld;
+        if (ImGui::DragFloat3("Direction", &direction.x, kDirectionDragSpeed, -1.0f, 1.0f, "%.3f")) {
+          // Kept unit length, as the scene file leaves it; a zero vector keeps the last one.
+          if (glm::length(direction) > 0.0f) light.directionWorld = glm::normalize(direction);
+          changed = true;
+        }
+        itemTooltip("The way the light travels, world space (direction; kept unit length).");
+      } else {
+        changed |= ImGui::DragFloat3("Position", &light.posWorld.x, kTranslateDragSpeed, -kMaxCoordinate,
+                                     kMaxCoordinate, "%.2f");
+        itemTooltip("World space. Drag the numbers to move the light.");
+      }
       changed |= ImGui::ColorEdit3("Diffuse Id", &light.diffuse.x, kColourFlags);
       itemTooltip("Diffuse intensity of the light, linear RGB (may exceed 1).");
       changed |= ImGui::ColorEdit3("Specular Is", &light.specular.x, kColourFlags);
       itemTooltip("Specular intensity of the light, linear RGB (may exceed 1).");
       ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+      ImGui::BeginDisabled(directional);
       changed |= ImGui::DragFloat3("A_C A_L A_Q", &light.attenuation.x, kAttenuationDragSpeed, 0.0f, 10.0f,
                                    "%.4f", ImGuiSliderFlags_AlwaysClamp);
-      itemTooltip("Attenuation If = 1 / (A_C + A_L d + A_Q d^2), d in world units.");
+      ImGui::EndDisabled();
+      itemTooltip("Attenuation If = 1 / (A_C + A_L d + A_Q d^2), d in world units (point lights only).");
       ImGui::TreePop();
     }
     ImGui::PopID();
@@ -863,7 +884,7 @@ void GuiApp::drawLightsSection() {
   }
   ImGui::BeginDisabled(lights.size() >= static_cast<std::size_t>(kMaxLights));
   if (ImGui::Button("Add light")) {
-    lights.push_back(PointLight{});
+    lights.push_back(Light{});
     changed = true;
   }
   ImGui::EndDisabled();

@@ -490,6 +490,7 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
   if (prefs_.showLights && renderBlocker_.empty() && renderWidth_ > 0 && renderHeight_ > 0) {
     std::string behind, outside;
     for (std::size_t i = 0; i < doc_.scene.lights.size(); ++i) {
+      if (doc_.scene.lights[i].type == LightType::Directional) continue;  // no position to mark
       const std::optional<ImVec2> at =
           projectToRect(doc_.scene.camera, doc_.scene.lights[i].posWorld, image, renderWidth_, renderHeight_);
       std::string& list = !at ? behind : outside;
@@ -508,7 +509,8 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
       const Rect rect = fitRect(slot, renderWidth_, renderHeight_);
       draw->PushClipRect(rect.min, rect.max, true);
       for (std::size_t i = 0; i < doc_.scene.lights.size(); ++i) {
-        const PointLight& light = doc_.scene.lights[i];
+        const Light& light = doc_.scene.lights[i];
+        if (light.type == LightType::Directional) continue;  // no position to mark
         const std::optional<ImVec2> at = projectToRect(doc_.scene.camera, light.posWorld, rect, renderWidth_, renderHeight_);
         if (!at) continue;
         const vec3 colour = glm::clamp(light.diffuse, 0.0f, 1.0f) * 255.0f;
@@ -564,6 +566,7 @@ void GuiApp::handleImageMouse(ImVec2 regionMin, ImVec2 regionSize) {
     for (const Rect& slot : slots) {
       const Rect rect = fitRect(slot, renderWidth_, renderHeight_);
       for (std::size_t i = 0; i < doc_.scene.lights.size(); ++i) {
+        if (doc_.scene.lights[i].type == LightType::Directional) continue;
         const std::optional<ImVec2> at =
             projectToRect(doc_.scene.camera, doc_.scene.lights[i].posWorld, rect, renderWidth_, renderHeight_);
         if (!at || !rect.contains(*at)) continue;

@@ -71,6 +71,8 @@ inline constexpr SceneTolerance kSceneTolerances[] = {
     {"env_glossy_dual_paraboloid.json"},           // and from a dual paraboloid, across its seam
     {"env_capture.json"},          // a mirror sphere's cube captured from the scene by each renderer
     {"env_capture_glossy.json"},   // the same, prefiltered and irradiance light, through a dual paraboloid
+    {"light_directional.json"},    // a cube on a floor under two directional lights (the GAMES202 write-up's light)
+    {"light_directional_tangent.json"},  // the same lit in tangent space (the vertex stage's light vectors)
 };
 
 }  // namespace twr::suite

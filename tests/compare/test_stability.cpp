@@ -562,7 +562,7 @@ Scene litScene() {
   scene.camera.target = vec3(0.0f);
   scene.camera.fovDeg = 50.0f;
   scene.output.background = vec4(0.05f, 0.05f, 0.05f, 1.0f);
-  PointLight light;
+  Light light;
   light.posWorld = vec3(1.5f, 2.0f, 2.5f);
   scene.lights.push_back(light);
   return scene;
@@ -731,7 +731,7 @@ TEST(Stability, ShininessZeroAddsKsEverywhereLitAndHugeShininessAddsNothing) {
     Scene s = frontScene();
     s.settings.view = View::Shaded;
     s.ambient = vec3(0.0f);
-    PointLight light;
+    Light light;
     light.posWorld = vec3(0.0f);
     light.attenuation = vec3(1.0f, 0.0f, 0.0f);
     s.lights.push_back(light);

@@ -111,7 +111,7 @@ TEST(GlErrors, RequestsBeyondTheLimits) {
   settings.userClipPlanes.assign(kMaxUserClipPlanes + 1, vec4(0.0f, 0.0f, 0.0f, 1.0f));
   EXPECT_NE(inputErrorOf([&] { renderer->render(scene, settings, 8, 8); }).find("user clip planes"),
             std::string::npos);
-  scene.lights.assign(kMaxLights + 1, PointLight{});
+  scene.lights.assign(kMaxLights + 1, Light{});
   EXPECT_NE(inputErrorOf([&] { renderer->render(scene, scene.settings, 8, 8); }).find("lights"),
             std::string::npos);
 }

@@ -29,7 +29,7 @@ Scene cubeScene(float scale = 1.0f, vec3 centre = vec3(0.0f), float distance = 4
   scene.camera.fovDeg = 50.0f;
   scene.camera.near = 0.1f * scale;
   scene.camera.far = 100.0f * scale;
-  PointLight light;
+  Light light;
   light.posWorld = centre + vec3(2.0f, 3.0f, 4.0f) * scale;
   scene.lights.push_back(light);
   return scene;

@@ -961,3 +961,40 @@ TEST(SceneFile, CameraUp) {
 
 }  // namespace
 }  // namespace twr
+
+namespace twr {
+namespace {
+
+TEST(SceneFile, DirectionalLight) {
+  const Scene scene = parseScene(R"({"lights": [{"type": "directional", "direction": [0, -2, 0], "diffuse": [1, 0.9, 0.8]},
+                                                {"type": "point", "position": [1, 2, 3]}],
+                                     "nodes": []})",
+                                 "inline.json", ".");
+  ASSERT_EQ(scene.lights.size(), 2u);
+  EXPECT_EQ(scene.lights[0].type, LightType::Directional);
+  EXPECT_EQ(scene.lights[0].directionWorld, vec3(0.0f, -1.0f, 0.0f));  // unit length
+  EXPECT_EQ(lightVectorWorld(scene.lights[0]), vec4(0.0f, 1.0f, 0.0f, 0.0f));
+  EXPECT_EQ(attenuationUsed(scene.lights[0]), vec3(1.0f, 0.0f, 0.0f));
+  EXPECT_EQ(scene.lights[1].type, LightType::Point);
+  EXPECT_EQ(lightVectorWorld(scene.lights[1]), vec4(1.0f, 2.0f, 3.0f, 1.0f));
+  EXPECT_TRUE(scene.warnings.empty());
+}
+
+TEST(SceneFileErrors, LightTypeAndDirection) {
+  expectContains(parseError(R"({"nodes": [], "lights": [{"type": "spot"}]})"),
+                 {"inline.json: lights[0].type: expected one of point|directional, got \"spot\""});
+  expectContains(parseError(R"({"nodes": [], "lights": [{"type": "directional", "direction": [0, 0, 0]}]})"),
+                 {"inline.json: lights[0].direction: expected a non-zero direction"});
+  const Scene scene = parseScene(R"({"nodes": [], "lights": [{"type": "directional", "position": [1, 1, 1],
+                                        "attenuation": [1, 1, 1]}, {"direction": [0, -1, 0]}]})",
+                                 "inline.json", ".");
+  ASSERT_EQ(scene.warnings.size(), 3u);
+  EXPECT_NE(scene.warnings[0].find("lights[0].position: ignored: a directional light has no position"), std::string::npos)
+      << scene.warnings[0];
+  EXPECT_NE(scene.warnings[1].find("lights[0].attenuation: ignored"), std::string::npos) << scene.warnings[1];
+  EXPECT_NE(scene.warnings[2].find("lights[1].direction: ignored: a point light has no direction"), std::string::npos)
+      << scene.warnings[2];
+}
+
+}  // namespace
+}  // namespace twr

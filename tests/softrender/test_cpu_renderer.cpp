@@ -21,7 +21,7 @@ Scene sceneWith(Mesh mesh, Material material = Material{}) {
   Scene scene;
   scene.camera.position = vec3(0, 0, 3);
   scene.camera.target = vec3(0, 0, 0);
-  PointLight light;
+  Light light;
   light.posWorld = vec3(1, 2, 3);
   scene.lights.push_back(light);
   scene.meshes.push_back(std::move(mesh));

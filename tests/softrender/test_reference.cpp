@@ -139,7 +139,7 @@ TEST(Reference, ImageDoesNotDependOnThreadCount) {
   Material material;
   material.ks = vec3(0.5f);
   scene.materials.push_back(material);
-  scene.lights.push_back(PointLight{});
+  scene.lights.push_back(Light{});
   Node node;
   node.meshIndex = 0;
   node.materialIndex = 0;

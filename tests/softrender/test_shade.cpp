@@ -34,7 +34,7 @@ ShadeUniforms uniformsWithLight(vec3 lightPos, vec3 attenuation) {
   u.ambient = vec3(0.5f);
   u.eyePosWorld = vec3(0, 0, 5);
   u.lightCount = 1;
-  u.lights[0].posWorld = lightPos;
+  u.lights[0].vectorWorld = vec4(lightPos, 1.0f);  // a point light
   u.lights[0].diffuse = vec3(1.0f);
   u.lights[0].specular = vec3(1.0f);
   u.lights[0].attenuation = attenuation;
@@ -65,6 +65,31 @@ TEST(Shade, PhongAtFortyFiveDegreesByHand) {
   EXPECT_NEAR(terms.lights[0].r.x, -s, kEps);
   EXPECT_NEAR(terms.lights[0].r.z, s, kEps);
   EXPECT_NEAR(c.g, 0.1f + 0.5f * s + 0.25f / 16.0f, kEps);
+}
+
+TEST(Shade, DirectionalLightIsUnattenuatedAndTheSameEverywhere) {
+  // Shining straight down the normal's opposite, (0, 0, -1): L = (0, 0, 1) at any point, d = 1,
+  // If = 1 / (1 + 0 + 0) = 1 exactly: C = 0.2 * 0.5 + 0.5 * 1 + 0.25 * 1^8 = 0.85.
+  Light sun;
+  sun.type = LightType::Directional;
+  sun.directionWorld = vec3(0.0f, 0.0f, -1.0f);
+  sun.attenuation = vec3(1.0f, 0.5f, 0.25f);  // a point light's, ignored
+  ShadeUniforms u = uniformsWithLight({0, 0, 0}, attenuationUsed(sun));
+  u.lights[0].vectorWorld = lightVectorWorld(sun);
+  EXPECT_EQ(u.lights[0].vectorWorld, vec4(0.0f, 0.0f, 1.0f, 0.0f));
+  EXPECT_EQ(u.lights[0].attenuation, vec3(1.0f, 0.0f, 0.0f));
+  ShadeTerms terms;
+  const vec4 c = shadeFragment<PlainShaded>(surfaceFragment(), u, &terms);
+  EXPECT_EQ(terms.lights[0].attenuation, 1.0f);
+  EXPECT_EQ(terms.lights[0].distance, 1.0f);
+  EXPECT_NEAR(c.r, 0.85f, kEps);
+  Fragment moved = surfaceFragment();
+  moved.posWorld = vec3(40.0f, -7.0f, 0.0f);  // the sun is as far from every point (the eye is not)
+  ShadeTerms there;
+  shadeFragment<PlainShaded>(moved, u, &there);
+  EXPECT_EQ(there.lights[0].nDotL, terms.lights[0].nDotL);
+  EXPECT_EQ(there.lights[0].attenuation, 1.0f);
+  EXPECT_EQ(there.lights[0].lVec, terms.lights[0].lVec);
 }
 
 TEST(Shade, LightBehindTheSurfaceGivesOnlyAmbient) {

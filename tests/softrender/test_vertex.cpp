@@ -99,7 +99,7 @@ TEST(Vertex, TangentTransformSettingChoosesTheMatrix) {
 TEST(Vertex, TangentLightingMovesLightAndEyeIntoTheVertexFrame) {
   Scene scene;
   scene.camera.position = vec3(0, 0, 5);
-  PointLight light;
+  Light light;
   light.posWorld = vec3(3, 4, 1);
   scene.lights.push_back(light);
   RenderSettings settings;
