@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <vector>
 
 namespace twr::testcli {
 namespace {
@@ -94,6 +95,26 @@ TEST(CliInfo, CapturedEnvironment) {
   EXPECT_EQ(env["map_size"], 256);
   EXPECT_TRUE(env["materials"].contains("satin"));
   EXPECT_EQ(j["camera"]["up"], nlohmann::json::parse("[0.0, 1.0, 0.0]"));
+}
+
+TEST(CliInfo, DirectionalLights) {
+  const std::string scene = kSource + "/assets/scenes/light_directional.json";
+  const RunResult text = runCli("info \"" + scene + "\"");
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  expectContains(text.out, "  [0] directional, direction (");
+  expectContains(text.out, "unattenuated");
+  const RunResult json = runCli("info --json \"" + scene + "\"");
+  ASSERT_EQ(json.exitCode, 0) << json.err;
+  const nlohmann::json j = nlohmann::json::parse(json.out);
+  ASSERT_EQ(j["lights"].size(), 2u);
+  EXPECT_EQ(j["lights"][0]["type"], "directional");
+  EXPECT_TRUE(j["lights"][0]["position"].is_null());
+  EXPECT_EQ(j["lights"][0]["attenuation"], nlohmann::json::parse("[1.0, 0.0, 0.0]"));
+  const std::vector<double> d = j["lights"][0]["direction"].get<std::vector<double>>();
+  ASSERT_EQ(d.size(), 3u);
+  EXPECT_NEAR(d[0] * d[0] + d[1] * d[1] + d[2] * d[2], 1.0, 1e-6);  // made unit length at load
+  const RunResult plain = runCli("info --json \"" + kDefaultScene + "\"");
+  EXPECT_EQ(nlohmann::json::parse(plain.out)["lights"][0]["type"], "point");
 }
 
 TEST(CliInfo, NamesTheCpuTargetActuallyUsedAndEverySupportedOne) {
