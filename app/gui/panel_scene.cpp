@@ -620,6 +620,10 @@ bool GuiApp::drawEnvironmentCaptureControls(Environment& env) {
       const bool chosen = size == capture.size;
       if (ImGui::Selectable(std::to_string(size).c_str(), chosen) && !chosen) {
         capture.size = size;
+        // A built map's default side follows the cube's, as the scene file sets it at load.
+        if (env.parameterization != EnvironmentParameterization::Cube && !env.sizeGiven) {
+          env.size = std::clamp(2 * size, kDefaultEnvironmentSize, kMaxCubeFaceSize);
+        }
         changed = true;
       }
       probe_.item(concat("environment_capture_size_", size).c_str());
