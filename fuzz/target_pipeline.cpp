@@ -163,6 +163,15 @@ Scene randomScene(ByteReader& r) {
         light.directionWorld = vec3(d / glm::length(d));
       }
     }
+    if (r.flag() && std::count_if(scene.lights.begin(), scene.lights.end(),
+                                  [](const Light& l) { return l.shadow.has_value(); }) < kMaxShadowedLights) {
+      ShadowDesc shadow;  // small maps: the pass's code is the same at any size
+      shadow.size = r.intIn(kMinShadowMapSize, 2 * kMinShadowMapSize);
+      shadow.bias = vec2(r.nonNegativeFloat(), r.nonNegativeFloat());
+      shadow.pcf = 1 + 2 * r.intIn(0, 2);
+      shadow.extent = r.flag() ? r.nonNegativeFloat() : 0.0f;
+      light.shadow = shadow;
+    }
     scene.lights.push_back(light);
   }
   Material material;

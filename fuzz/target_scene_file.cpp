@@ -21,6 +21,8 @@ constexpr int kRenderHeight = 9;
 // Accepted scenes with more triangles than this (inclusive bound on what is rendered) are
 // only parsed: a 16M-triangle sphere is legal but would turn one execution into seconds.
 constexpr std::size_t kMaxRenderedTriangles = 200'000;
+// Largest shadow map drawn, texels per side.
+constexpr int kMaxShadowMapSizeDrawn = 32;
 // Largest captured-environment face drawn, texels per side.
 constexpr int kMaxCaptureSize = 8;
 
@@ -48,6 +50,10 @@ void fuzzSceneFile(const Workspace& workspace, const std::uint8_t* data, std::si
   // execution stays short (the capture's code is the same at any size).
   if (scene.environment && scene.environment->capture) {
     scene.environment->capture->size = std::min(scene.environment->capture->size, kMaxCaptureSize);
+  }
+  // Shadow maps likewise: up to 4096^2 (six 1024^2 for a point light) drawn small.
+  for (Light& light : scene.lights) {
+    if (light.shadow) light.shadow->size = std::min(light.shadow->size, kMaxShadowMapSizeDrawn);
   }
   RenderOutput output;
   try {

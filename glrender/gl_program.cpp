@@ -4,6 +4,7 @@
 #include "scene/conventions.h"
 #include "scene/environment.h"
 #include "scene/errors.h"
+#include "scene/shadow_map.h"
 
 #include <cstdio>
 #include <fstream>
@@ -31,7 +32,23 @@ std::string sharedConstants() {
                 static_cast<double>(kMinAttenuationDenominator), static_cast<double>(kMinParallaxViewZ),
                 static_cast<double>(kSelfShadowSharpness), static_cast<double>(kHorizonSharpness),
                 static_cast<double>(kParallaxOffsetViewGain), static_cast<double>(kEnvironmentLodViewMax));
-  return buffer;
+  const auto colour = [](const char* name, const float (&c)[3]) {
+    char line[160];
+    std::snprintf(line, sizeof line, "#define %s vec3(%.9e, %.9e, %.9e)\n", name, static_cast<double>(c[0]),
+                  static_cast<double>(c[1]), static_cast<double>(c[2]));
+    return std::string(line);
+  };
+  char shadow[320];
+  std::snprintf(shadow, sizeof shadow,
+                "#define MAX_SHADOWED_LIGHTS %d\n"
+                "#define MAX_SHADOW_SLOPE_TANGENT %.9e\n"
+                "#define MIN_SHADOW_COSINE %.9e\n"
+                "#define SHADOW_ACNE_WINDOW %.9e\n",
+                kMaxShadowedLights, static_cast<double>(kMaxShadowSlopeTangent), static_cast<double>(kMinShadowCosine),
+                static_cast<double>(kShadowAcneWindow));
+  return std::string(buffer) + shadow + colour("SHADOW_VIEW_LIT", kShadowViewLit) +
+         colour("SHADOW_VIEW_SHADOWED", kShadowViewShadowed) + colour("SHADOW_VIEW_ACNE", kShadowViewAcne) +
+         colour("SHADOW_VIEW_AWAY", kShadowViewAway) + colour("LIGHT_DEPTH_OUTSIDE", kLightDepthOutside);
 }
 
 std::string describeDefines(const std::vector<std::string>& defines) {

@@ -14,6 +14,7 @@
 #include "glrender/gl_context.h"
 #include "glrender/gl_program.h"
 #include "glrender/gl_scene_draw.h"
+#include "glrender/gl_shadow_pass.h"
 #include "glrender/gl_targets.h"
 #include "glrender/llvmpipe_sampling.h"
 #include "glrender/tbn_lines.h"
@@ -44,6 +45,7 @@ struct GlDevice {
   ProgramCache programs;
   GlUploadCache uploads;  // meshes and textures kept across renders
   RenderTargets targets;
+  GlShadowMaps shadows;  // the shadow pass's depth textures, kept across frames
   std::unique_ptr<ImmediateTbnLines> immediateLines;  // loaded on first use
 
   GlDevice(std::unique_ptr<HeadlessGlContext> context, GlProcFunction proc, const std::string& shaderDir,
@@ -242,6 +244,16 @@ class GlRenderer final : public Renderer {
     RenderSettings drawSettings = settings;
     const MipLevelView mipLevelView = applyMipLevelView(items, drawSettings);  // owns stand-ins while drawn
 
+    // The shadow pass first (gl_shadow_pass.h): the maps are read back for compare only in a
+    // full frame.
+    const auto shadowStart = std::chrono::steady_clock::now();
+    ShadowMaps shadowMaps = device.shadows.draw(device.programs, device.uploads, scene, drawSettings, items,
+                                                options_.frame == GlFrame::Full && !onlyPixel);
+    checkGlErrors("drawing the shadow maps");
+    const double shadowMilliseconds =
+        shadowMaps.empty() ? 0.0
+                           : std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - shadowStart).count();
+
     device.targets.prepare(width, height);
     device.targets.bind();
     // Set before the clear, which the scissor limits too. Fragments are still shaded in 2x2
@@ -256,7 +268,7 @@ class GlRenderer final : public Renderer {
     device.targets.drawSurfaces();
     const GlClipState clipState = makeGlClipState(drawSettings, scene.camera);
     const SceneDrawStats drawStats = drawScene(device.programs, device.uploads, scene, drawSettings, clipState, items,
-                                               clipFromWorld, width, height, options_.frame);
+                                               clipFromWorld, width, height, options_.frame, &device.shadows);
     checkGlErrors("drawing the scene");
 
     if (settings.tbnLines.enabled) {
@@ -277,6 +289,8 @@ class GlRenderer final : public Renderer {
     out.stats.readbackMilliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - drawn).count();
 
+    out.stats.shadowMilliseconds = shadowMilliseconds;
+    out.shadowMaps = std::move(shadowMaps);
     out.stats.trianglesIn = drawStats.trianglesIn;
     out.stats.pixelsShaded = drawStats.samplesPassed;
     out.stats.milliseconds =

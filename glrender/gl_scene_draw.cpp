@@ -91,6 +91,8 @@ std::vector<std::string> environmentViewDefines(View view) {
     case View::ReflectDir: return {"ENVIRONMENT_VIEW", "ENVIRONMENT_VIEW_REFLECT_DIR"};
     case View::EnvFace: return {"ENVIRONMENT_VIEW", "ENVIRONMENT_VIEW_FACE"};
     case View::EnvLod: return {"ENVIRONMENT_VIEW", "ENVIRONMENT_VIEW_LOD"};
+    case View::Shadow: return {"SHADOW_VIEW_SHADOW"};
+    case View::LightDepth: return {"SHADOW_VIEW_LIGHT_DEPTH"};
     default: return {};
   }
 }
@@ -131,7 +133,9 @@ void checkIndices(const Mesh& mesh, const std::string& nodeName) {
 std::string viewDefine(View view) {
   // mip_level is drawn as albedo of stand-in textures (scene/mip_level_view.h).
   // The environment views are the shaded program with ENVIRONMENT_VIEW (environmentViewDefines).
-  std::string name(toString(view == View::MipLevel ? View::Albedo : isEnvironmentView(view) ? View::Shaded : view));
+  std::string name(toString(view == View::MipLevel                                ? View::Albedo
+                            : isEnvironmentView(view) || isShadowView(view) ? View::Shaded
+                                                                            : view));
   std::transform(name.begin(), name.end(), name.begin(),
                  [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
   return "VIEW_" + name;
@@ -373,7 +377,7 @@ std::vector<std::string> phongDefines(const Material& material, const RenderSett
 SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const Scene& scene,
                          const RenderSettings& settings, const GlClipState& clipState,
                          const std::vector<DrawItem>& items, const mat4& clipFromWorld, int width, int height,
-                         GlFrame frame) {
+                         GlFrame frame, const GlShadowMaps* shadows) {
   SceneDrawStats stats;
   const bool countSamples = frame == GlFrame::Full;
   applyPipelineState(settings);
@@ -399,15 +403,18 @@ SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const S
     const Material& material = *item.material;
     ProgramDesc desc{"phong",
                      {"common.glsl", "phong.vert"},
-                     {"common.glsl", "surface_detail.glsl", "environment_map.glsl", "environment.glsl", "phong.frag"},
+                     {"common.glsl", "surface_detail.glsl", "environment_map.glsl", "environment.glsl", "shadow.glsl",
+                      "phong.frag"},
                      phongDefines(material, settings, materialReadsEnvironment(material, scene) ? &*scene.environment : nullptr)};
     if (materialReadsEnvironment(material, scene)) {
       for (std::string& d : environmentMapDefines(*scene.environment)) desc.defines.push_back(std::move(d));
     }
     if (frame == GlFrame::Lean) desc.defines.push_back("NO_TRIANGLE_ID");
+    if (sceneHasShadows(scene)) desc.defines.push_back("HAS_SHADOWS");
     const GLuint program = programs.get(desc);
     glUseProgram(program);
     setUniforms(program, scene, settings, clipState, item, clipFromWorld);
+    if (shadows) shadows->bind(program);
     bindMap(material.diffuseMap, kDiffuseUnit);
     bindMap(material.normalMap, kNormalUnit);
     bindMap(material.specularMap, kSpecularUnit);

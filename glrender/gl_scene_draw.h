@@ -5,6 +5,7 @@
 
 #include "glrender/gl_clip_state.h"
 #include "glrender/gl_program.h"
+#include "glrender/gl_shadow_pass.h"
 #include "glrender/gl_renderer.h"
 #include "glrender/gl_upload_cache.h"
 #include "scene/renderer.h"
@@ -34,9 +35,11 @@ std::vector<std::string> phongDefines(const Material& material, const RenderSett
 // GlFrame::Full wraps the draws in a GL_SAMPLES_PASSED query and waits for its result
 // (samplesPassed), and the programs write the triangle id (location 1). GlFrame::Lean draws
 // as a user does: no query (samplesPassed 0), programs compiled with NO_TRIANGLE_ID.
+// `shadows`: the maps the shadow pass drew this frame (null or none drawn: a scene without
+// shadows), read by programs compiled with HAS_SHADOWS.
 SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const Scene& scene,
                          const RenderSettings& settings, const GlClipState& clipState,
                          const std::vector<DrawItem>& items, const mat4& clipFromWorld, int width, int height,
-                         GlFrame frame = GlFrame::Full);
+                         GlFrame frame = GlFrame::Full, const GlShadowMaps* shadows = nullptr);
 
 }  // namespace twr

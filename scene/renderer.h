@@ -29,6 +29,8 @@ struct RenderStats {
   // Of `milliseconds`, the part spent capturing the environment from the scene (six face
   // renders and building what the materials read from them; 0 when nothing is captured).
   double captureMilliseconds = 0.0;
+  // Of `milliseconds`, the part spent drawing the lights' shadow maps (0 without shadows).
+  double shadowMilliseconds = 0.0;
 };
 
 struct CapturedFaces;  // below
@@ -47,6 +49,9 @@ struct RenderOutput {
   // The six faces this renderer captured the environment from (scene/environment_capture.h),
   // null when the scene's environment is not captured.
   std::shared_ptr<const CapturedFaces> capturedFaces;
+  // Per light, the shadow map this renderer drew and shaded with (scene/shadow_map.h); empty
+  // when no light casts a shadow, null for a light without one. GL's lean frame reads none back.
+  ShadowMaps shadowMaps;
 };
 
 // A captured environment's faces as the renderer drew them, in GL order (+X, -X, +Y, -Y, +Z,

@@ -7,6 +7,7 @@
 #include "scene/environment.h"
 #include "scene/mesh.h"
 #include "scene/settings.h"
+#include "scene/shadow_map.h"
 #include "scene/texture.h"
 
 #include <map>
@@ -89,6 +90,8 @@ struct Light {
   vec3 attenuation{1.0f, 0.09f, 0.032f};
   LightType type = LightType::Point;       // last, so {position, Id, Is, attenuation} still makes a point light
   vec3 directionWorld{0.0f, -1.0f, 0.0f};  // directional: the way its light travels, unit length
+  // Its shadow map (scene/shadow_map.h): none unless the scene file gives "shadow".
+  std::optional<ShadowDesc> shadow;
 };
 
 // The light as both renderers' shaders take it, one vec4 for either type:

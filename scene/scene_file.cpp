@@ -454,7 +454,8 @@ class SceneReader {
       const std::string lightPath = indexPath(path, i);
       const Json& lj = j[i];
       requireObject(lj, lightPath);
-      checkKeys(lj, lightPath, {"type", "position", "direction", "diffuse", "specular", "attenuation"}, "a light");
+      checkKeys(lj, lightPath, {"type", "position", "direction", "diffuse", "specular", "attenuation", "shadow"},
+                "a light");
       Light light;
       if (const Json* v = find(lj, "type")) {
         const std::string type = readString(*v, childPath(lightPath, "type"), "point or directional");
@@ -493,8 +494,35 @@ class SceneReader {
           fail(attenuationPath, "expected [A_C, A_L, A_Q] not all zero (the light would be infinitely bright), got " + quote(*v));
         }
       }
+      if (const Json* v = find(lj, "shadow")) light.shadow = readShadow(*v, childPath(lightPath, "shadow"), light.type);
       scene_.lights.push_back(light);
     }
+    const auto shadowed = std::count_if(scene_.lights.begin(), scene_.lights.end(),
+                                        [](const Light& l) { return l.shadow.has_value(); });
+    if (shadowed > kMaxShadowedLights) {
+      fail(path, "expected at most " + std::to_string(kMaxShadowedLights) + " lights with a \"shadow\", got " +
+                     std::to_string(shadowed));
+    }
+  }
+
+  // A light's "shadow" (scene/shadow_map.h): true for the defaults, false for none, or an
+  // object with size, bias [constant, slope], pcf and extent.
+  std::optional<ShadowDesc> readShadow(const Json& j, const std::string& path, LightType type) {
+    const bool cube = type == LightType::Point;
+    ShadowDesc shadow;
+    if (cube) shadow.size = kDefaultCubeShadowMapSize;
+    if (j.is_boolean()) return j.get<bool>() ? std::optional<ShadowDesc>(shadow) : std::nullopt;
+    if (!j.is_object()) fail(path, "expected true, false or an object {size, bias, pcf, extent}, got " + quote(j));
+    checkKeys(j, path, {"size", "bias", "pcf", "extent"}, "a shadow");
+    const int maxSize = cube ? kMaxCubeShadowMapSize : kMaxShadowMapSize;
+    if (const Json* v = find(j, "size")) shadow.size = readInt(*v, childPath(path, "size"), kMinShadowMapSize, maxSize);
+    if (const Json* v = find(j, "bias")) shadow.bias = readVector<2>(*v, childPath(path, "bias"), NumberRule::NonNegative);
+    if (const Json* v = find(j, "pcf")) {
+      shadow.pcf = readInt(*v, childPath(path, "pcf"), 1, kMaxShadowPcf);
+      if (shadow.pcf % 2 == 0) fail(childPath(path, "pcf"), "expected 1, 3 or 5 (an odd kernel side), got " + quote(*v));
+    }
+    if (const Json* v = find(j, "extent")) shadow.extent = readNumber(*v, childPath(path, "extent"), NumberRule::NonNegative);
+    return shadow;
   }
 
   void readMaterials(const Json& j, const std::string& path) {

@@ -12,7 +12,7 @@ using NameTable = std::array<std::pair<E, std::string_view>, N>;
 
 constexpr NameTable<CullMode, 3> kCull{{{CullMode::None, "none"}, {CullMode::Back, "back"}, {CullMode::Front, "front"}}};
 constexpr NameTable<FrontFace, 2> kFront{{{FrontFace::Ccw, "ccw"}, {FrontFace::Cw, "cw"}}};
-constexpr NameTable<View, 18> kView{{{View::Shaded, "shaded"},
+constexpr NameTable<View, 20> kView{{{View::Shaded, "shaded"},
                                      {View::Albedo, "albedo"},
                                      {View::Normal, "normal"},
                                      {View::Tangent, "tangent"},
@@ -29,7 +29,9 @@ constexpr NameTable<View, 18> kView{{{View::Shaded, "shaded"},
                                      {View::SelfShadow, "self_shadow"},
                                      {View::ReflectDir, "reflect_dir"},
                                      {View::EnvFace, "env_face"},
-                                     {View::EnvLod, "env_lod"}}};
+                                     {View::EnvLod, "env_lod"},
+                                     {View::Shadow, "shadow"},
+                                     {View::LightDepth, "light_depth"}}};
 constexpr NameTable<LightingSpace, 2> kSpace{{{LightingSpace::World, "world"}, {LightingSpace::Tangent, "tangent"}}};
 constexpr NameTable<TangentTransform, 2> kTangent{
     {{TangentTransform::Model, "model"}, {TangentTransform::InverseTranspose, "inverse_transpose"}}};

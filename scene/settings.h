@@ -16,7 +16,7 @@ enum class FrontFace { Ccw, Cw };
 // Height, ParallaxOffset, ParallaxSteps, SelfShadow: the height-field views (docs/parallax.md).
 enum class View {
   Shaded, Albedo, Normal, Tangent, Bitangent, MappedNormal, Uv, Depth, LightTangent, EyeTangent, MipLevel,
-  Height, ParallaxOffset, ParallaxSteps, SelfShadow, ReflectDir, EnvFace, EnvLod
+  Height, ParallaxOffset, ParallaxSteps, SelfShadow, ReflectDir, EnvFace, EnvLod, Shadow, LightDepth
 };
 // Whether the view shows a height-field quantity (drawn only where a material has a height map).
 constexpr bool isHeightView(View v) {
@@ -29,8 +29,13 @@ constexpr bool isHeightView(View v) {
 // colour, on the surfaces that read a reflection or refraction and on the sky box; other
 // surfaces are shown dimmed to grey.
 constexpr bool isEnvironmentView(View v) { return v == View::ReflectDir || v == View::EnvFace || v == View::EnvLod; }
+// Whether the view shows the first shadowed light's shadow-map test (docs/shadows.md): shadow
+// (lit, in shadow, acne, turned away) and light_depth (the map's depth where the fragment
+// falls). Drawn by the shaded permutation like the environment views; without a shadowed
+// light every surface is shown dimmed to grey.
+constexpr bool isShadowView(View v) { return v == View::Shadow || v == View::LightDepth; }
 // Whether the view is drawn by the shaded permutation (the lights, the environment, the sky).
-constexpr bool isShadedView(View v) { return v == View::Shaded || isEnvironmentView(v); }
+constexpr bool isShadedView(View v) { return v == View::Shaded || isEnvironmentView(v) || isShadowView(v); }
 
 // How a material's surface detail is drawn (docs/parallax.md). NormalMap: the normal map alone
 // (today's behaviour). The others read the height map: two bump methods that change the lighting
@@ -146,7 +151,7 @@ inline constexpr View kAllViews[] = {View::Shaded, View::Albedo, View::Normal, V
                                      View::MappedNormal, View::Uv, View::Depth, View::LightTangent,
                                      View::EyeTangent, View::MipLevel, View::Height, View::ParallaxOffset,
                                      View::ParallaxSteps, View::SelfShadow, View::ReflectDir, View::EnvFace,
-                                     View::EnvLod};
+                                     View::EnvLod, View::Shadow, View::LightDepth};
 
 
 }  // namespace twr

@@ -1,6 +1,6 @@
 // Helpers both phong stages use, each with a C++ twin of the same name and body:
 // safeNormalize in scene/conventions.h, phongPow in softrender/shade.*, vectorAsColour and
-// heatColour in softrender/lane_math-inl.h.
+// heatColour in softrender/lane_math-inl.h, dimmedColour in softrender/environment_view-inl.h.
 // The prelude before this file defines MAX_LIGHTS, MAX_CLIP_PLANES, MIN_LENGTH_SQUARED and
 // MIN_ATTENUATION_DENOMINATOR from the C++ constants (glrender/gl_program.cpp).
 
@@ -31,4 +31,13 @@ float heatChannel(float t, float centre) {
 vec4 heatColour(float tIn) {
   float t = min(max(tIn, 0.0), 1.0);
   return vec4(heatChannel(t, 3.0), heatChannel(t, 2.0), heatChannel(t, 1.0), 1.0);
+}
+
+// A surface a debug view has nothing to show on (an environment view where no reflection is
+// read, a shadow view without a shadowed light): clamped, then a quarter of its luminance
+// (Rec. 709 weights) as grey.
+vec4 dimmedColour(vec4 colour) {
+  vec4 c = clamp(colour, 0.0, 1.0);
+  float grey = 0.25 * ((0.2126 * c.r + 0.7152 * c.g) + 0.0722 * c.b);
+  return vec4(grey, grey, grey, 1.0);
 }

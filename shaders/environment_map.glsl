@@ -132,11 +132,4 @@ vec4 environmentViewColour(vec3 r, float lod) {
 }
 #endif
 
-// A surface that reads no reflection in an environment view: clamped, then a quarter of its
-// luminance (Rec. 709 weights) as grey.
-vec4 dimmedColour(vec4 colour) {
-  vec4 c = clamp(colour, 0.0, 1.0);
-  float grey = 0.25 * ((0.2126 * c.r + 0.7152 * c.g) + 0.0722 * c.b);
-  return vec4(grey, grey, grey, 1.0);
-}
 #endif

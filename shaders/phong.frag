@@ -16,6 +16,8 @@
 // Environment (shaders/environment.glsl, included before this file): HAS_ENVIRONMENT,
 // ENVIRONMENT_REFLECT (with ENVIRONMENT_PREFILTERED), ENVIRONMENT_REFRACTION, FRESNEL_SCHLICK, ENVIRONMENT_DIFFUSE (with
 // ENVIRONMENT_IRRADIANCE or ENVIRONMENT_SH9).
+// Shadow maps (shaders/shadow.glsl, included before this file): HAS_SHADOWS; the views
+// SHADOW_VIEW_SHADOW and SHADOW_VIEW_LIGHT_DEPTH (with VIEW_SHADED).
 // NO_TRIANGLE_ID: no triangle-id output, as an OpenGL user's shader has none (the lean
 // frame, glrender/gl_renderer.h; llvmpipe pays for gl_PrimitiveID even when no draw buffer
 // takes the output).
@@ -179,6 +181,12 @@ void main() {
   vec4 colour = vec4(0.0);
 #if defined(VIEW_SHADED)
   vec3 sum = vec3(0.0);
+#ifdef HAS_SHADOWS
+  // The first shadowed light's test, for the shadow views.
+  ShadowTest firstShadowTest = ShadowTest(1.0, 0.0, 0.0, 1.0, 0.0);
+  float firstShadowCosine = 0.0;
+  bool haveShadowTest = false;
+#endif
   for (int i = 0; i < lightCount; ++i) {
 #ifdef LIGHTING_TANGENT
     vec3 lVec = lightDirTangent[i];
@@ -212,11 +220,33 @@ void main() {
 #else
     vec3 specular = nDotL > 0.0 ? ks * specScale * phongPow(rDotV, shininess) * lights[i].specular : vec3(0.0);
 #endif
+    float shadow = 1.0;
 #ifdef SELF_SHADOW
-    float shadow = selfShadow(detail, lT);
+    shadow = selfShadow(detail, lT);
+#endif
+    bool mapOn = false;
+#ifdef HAS_SHADOWS
+    // The light's shadow map (shadow.glsl), at the geometric normal's angle, in world space.
+    int slot = shadowSlotOfLight[i];
+    if (slot >= 0) {
+      ShadowTest mapTest = shadowTest(slot, posWorld, n, safeNormalize(toLightWorld(lights[i], posWorld)));
+      shadow = shadow * mapTest.visibility;
+      mapOn = true;
+      if (!haveShadowTest) {
+        firstShadowTest = mapTest;
+        firstShadowCosine = dot(n, safeNormalize(toLightWorld(lights[i], posWorld)));
+        haveShadowTest = true;
+      }
+    }
+#endif
+#ifdef SELF_SHADOW
     sum += ((diffuse + specular) * attenuation) * shadow;
 #else
-    sum += (diffuse + specular) * attenuation;
+    if (mapOn) {
+      sum += ((diffuse + specular) * attenuation) * shadow;
+    } else {
+      sum += (diffuse + specular) * attenuation;
+    }
 #endif
   }
   vec3 ambientTerm = ka * albedo * ambient;
@@ -241,6 +271,22 @@ void main() {
 #elif defined(ENVIRONMENT_VIEW)
   // An environment view on a surface that reads no reflection: dimmed to grey.
   colour = dimmedColour(colour);
+#endif
+#if defined(SHADOW_VIEW_SHADOW) || defined(SHADOW_VIEW_LIGHT_DEPTH)
+  // The shadow views (shadow.glsl): the first shadowed light's test, or dimmed without one.
+#ifdef HAS_SHADOWS
+  if (!haveShadowTest) {
+    colour = dimmedColour(colour);
+  } else {
+#ifdef SHADOW_VIEW_SHADOW
+    colour = shadowViewColour(firstShadowTest, firstShadowCosine);
+#else
+    colour = lightDepthColour(firstShadowTest);
+#endif
+  }
+#else
+  colour = dimmedColour(colour);
+#endif
 #endif
 #elif defined(VIEW_ALBEDO)
   colour = vec4(albedo * kd, 1.0);

@@ -18,6 +18,7 @@
 #include "softrender/output_merge.h"
 #include "softrender/interpolate.h"
 #include "softrender/setup.h"
+#include "softrender/shadow_pass.h"
 #include "softrender/shade.h"
 #include "softrender/sky.h"
 #include "softrender/vertex.h"
@@ -41,31 +42,6 @@ struct FramebufferTarget {
     writeFragment(fb, px, py, colour, depth, triangleId);
   }
 };
-
-// The teaching traversal: the vertex stage per item, then one band of rows per thread, each
-// walking every triangle (draw_loop.h).
-void drawTeaching(const std::vector<ItemState>& items, int threads, Framebuffer& fb, RenderStats& stats) {
-  std::vector<LoopItemT<float>> loopItems(items.size());
-  for (std::size_t k = 0; k < items.size(); ++k) {
-    const ItemState& s = items[k];
-    LoopItemT<float>& d = loopItems[k];
-    d.mesh = s.item->mesh;
-    d.firstTriangleId = s.item->firstTriangleId;
-    d.vertices.resize(d.mesh->vertices.size());
-    for (std::size_t i = 0; i < d.vertices.size(); ++i) d.vertices[i] = runVertexStage(d.mesh->vertices[i], s.vertexUniforms);
-    d.shade = s.shade;
-    d.shaderKey = s.shaderKey;
-    d.clip = s.clip;
-    d.cull = s.cull;
-    d.frontFace = s.frontFace;
-    d.viewport = s.viewport;
-    d.tangentLighting = s.tangentLighting;
-  }
-  FramebufferTarget target{fb};
-  drawInBands(
-      threads, fb.height, true,
-      [&](const RowBand& band, RenderStats& bandStats) { drawBand(loopItems, band, target, bandStats); }, stats);
-}
 
 class CpuRenderer final : public Renderer {
  public:
@@ -92,6 +68,25 @@ class CpuRenderer final : public Renderer {
     if (options_.path == CpuPath::Fast && !fast_) {
       fast_ = std::make_unique<FastPipeline>(options_.threads, resolveCpuIsa(options_.isa));
     }
+    // The shadow pass first (shadow_pass.h), with the traversal the frame uses; its statistics
+    // are its own, not the frame's.
+    double shadowMilliseconds = 0.0;
+    const ShadowMaps shadows = renderShadowMaps(
+        scene, settings,
+        [&](const std::vector<ItemState>& passItems, int size) -> const Framebuffer& {
+          RenderStats passStats;
+          if (fast_) {
+            if (shadowTarget_.width != size) shadowTarget_ = fast_->allocateFramebuffer(size, size);
+            fast_->draw(passItems, scene.output.background, shadowTarget_, passStats, true);
+          } else {
+            shadowTarget_ = makeFramebuffer(size, size, scene.output.background);
+            drawTeachingItems(passItems, options_.threads, shadowTarget_, passStats);
+          }
+          return shadowTarget_;
+        },
+        shadowMilliseconds);
+    stats.shadowMilliseconds = shadowMilliseconds;
+
     Framebuffer fb = fast_ ? fast_->allocateFramebuffer(width, height)  // draw() clears it bin by bin
                            : makeFramebuffer(width, height, scene.output.background);
     const mat4 clipFromWorld = clipFromWorldFor(scene.camera, width, height);
@@ -103,10 +98,11 @@ class CpuRenderer final : public Renderer {
     for (const DrawItem& item : drawItems) {
       validateIndices(item);
       items.push_back(makeItemState(item, clipFromWorld, scene, drawSettings, width, height));
+      setShadowUniforms(items.back().shade, shadows);
     }
 
     if (options_.path == CpuPath::Teaching) {
-      drawTeaching(items, options_.threads, fb, stats);
+      drawTeachingItems(items, options_.threads, fb, stats);
     } else {
       fast_->draw(items, scene.output.background, fb, stats);
     }
@@ -127,15 +123,40 @@ class CpuRenderer final : public Renderer {
     RenderOutput out = toRenderOutput(std::move(fb));
     stats.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     out.stats = stats;
+    out.shadowMaps = shadows;
     return out;
   }
 
  private:
   CpuOptions options_;
   std::unique_ptr<FastPipeline> fast_;  // made on the first fast render, kept for its threads and buffers
+  Framebuffer shadowTarget_;            // the shadow pass's layers are drawn here, kept across frames
 };
 
 }  // namespace
+
+void drawTeachingItems(const std::vector<ItemState>& items, int threads, Framebuffer& fb, RenderStats& stats) {
+  std::vector<LoopItemT<float>> loopItems(items.size());
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const ItemState& s = items[k];
+    LoopItemT<float>& d = loopItems[k];
+    d.mesh = s.item->mesh;
+    d.firstTriangleId = s.item->firstTriangleId;
+    d.vertices.resize(d.mesh->vertices.size());
+    for (std::size_t i = 0; i < d.vertices.size(); ++i) d.vertices[i] = runVertexStage(d.mesh->vertices[i], s.vertexUniforms);
+    d.shade = s.shade;
+    d.shaderKey = s.shaderKey;
+    d.clip = s.clip;
+    d.cull = s.cull;
+    d.frontFace = s.frontFace;
+    d.viewport = s.viewport;
+    d.tangentLighting = s.tangentLighting;
+  }
+  FramebufferTarget target{fb};
+  drawInBands(
+      threads, fb.height, true,
+      [&](const RowBand& band, RenderStats& bandStats) { drawBand(loopItems, band, target, bandStats); }, stats);
+}
 
 std::unique_ptr<Renderer> makeCpuRenderer(const CpuOptions& options) {
   if (options.path == CpuPath::Fast && !cpuIsaSupported(options.isa)) {

@@ -257,7 +257,7 @@ void FastPipeline::runFrontEnd(const std::vector<ItemState>& items, int binCount
 }
 
 std::uint64_t FastPipeline::drawBin(const std::vector<ItemState>& items, int bin, std::uint32_t background,
-                                        Framebuffer& fb, BackEnd& scratch) {
+                                        Framebuffer& fb, BackEnd& scratch, bool depthOnly) {
   const int rowBegin = bin * kBinRows;
   const int rowEnd = std::min(fb.height, rowBegin + kBinRows);
   clearDepthRows(rowBegin, rowEnd, fb);  // colour and ids: the shading pass writes every pixel
@@ -276,7 +276,7 @@ std::uint64_t FastPipeline::drawBin(const std::vector<ItemState>& items, int bin
       bool covered = false;
       const std::array<WindowVertex, 3> window{r.v[0]->window, r.v[1]->window, r.v[2]->window};
       passed += kernels_.visibility(setup, window, slot, rowBegin, rowEnd, fb, scratch.slots.data(), depth, covered);
-      if (!covered) continue;  // no pixel holds this slot
+      if (!covered || depthOnly) continue;  // no pixel holds this slot, or nothing is shaded
       BinTriangle& t = scratch.triangles.emplace_back();
       t.varyings = makeVaryingPlanes<float>(window, r.varyings, varyingCount(s.tangentLighting, s.shade.lightCount), setup);
       t.depth = depth;
@@ -284,11 +284,12 @@ std::uint64_t FastPipeline::drawBin(const std::vector<ItemState>& items, int bin
       t.item = r.item;
     }
   }
-  kernels_.shadeBin(scratch.triangles, items, maps_, scratch.slots.data(), rowBegin, rowEnd, background, fb);
+  if (!depthOnly) kernels_.shadeBin(scratch.triangles, items, maps_, scratch.slots.data(), rowBegin, rowEnd, background, fb);
   return passed;
 }
 
-void FastPipeline::draw(const std::vector<ItemState>& items, vec4 background, Framebuffer& fb, RenderStats& stats) {
+void FastPipeline::draw(const std::vector<ItemState>& items, vec4 background, Framebuffer& fb, RenderStats& stats,
+                        bool depthOnly) {
   const std::uint32_t backgroundRgba = backgroundWord(background);
   runVertexStage(items);
   const int binCount = (fb.height + kBinRows - 1) / kBinRows;
@@ -297,7 +298,7 @@ void FastPipeline::draw(const std::vector<ItemState>& items, vec4 background, Fr
   std::vector<std::uint64_t> shaded(static_cast<std::size_t>(binCount), 0);
   pool_.run(binCount, [&](int bin, int thread) {
     shaded[static_cast<std::size_t>(bin)] =
-        drawBin(items, bin, backgroundRgba, fb, backEnds_[static_cast<std::size_t>(thread)]);
+        drawBin(items, bin, backgroundRgba, fb, backEnds_[static_cast<std::size_t>(thread)], depthOnly);
   });
   for (const FrontEnd& frontEnd : frontEnds_) {
     stats.trianglesIn += frontEnd.stats.trianglesIn;

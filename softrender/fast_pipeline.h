@@ -60,8 +60,10 @@ class FastPipeline {
 
   // Clears `fb` to `background` (as makeFramebuffer) and draws every item's triangles into it,
   // adding the counts to `stats`. `items` are in submission order; validateIndices must have
-  // passed for each.
-  void draw(const std::vector<ItemState>& items, vec4 background, Framebuffer& fb, RenderStats& stats);
+  // passed for each. depthOnly: the visibility pass alone (a shadow pass): depth is written,
+  // colour and triangle ids are left as they were, nothing is shaded.
+  void draw(const std::vector<ItemState>& items, vec4 background, Framebuffer& fb, RenderStats& stats,
+            bool depthOnly = false);
 
  private:
   // One item's vertex stage output, one entry per mesh vertex (capacity kept across frames).
@@ -119,7 +121,7 @@ class FastPipeline {
   void emit(const ItemState& s, std::uint32_t item, std::uint32_t triangleId, std::array<const FastVertex*, 3> v,
             std::array<const float*, 3> varyings, FrontEnd& out);
   std::uint64_t drawBin(const std::vector<ItemState>& items, int bin, std::uint32_t background, Framebuffer& fb,
-                        BackEnd& scratch);
+                        BackEnd& scratch, bool depthOnly);
 
   WorkerPool pool_;
   FastKernels kernels_;  // the chosen Highway target's

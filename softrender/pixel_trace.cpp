@@ -10,6 +10,7 @@
 #include "softrender/framebuffer.h"
 #include "softrender/output_merge.h"
 #include "softrender/raster.h"
+#include "softrender/shadow_pass.h"
 #include "softrender/sky-inl.h"
 #include "softrender/vertex.h"
 
@@ -160,10 +161,10 @@ nlohmann::json toJson(const glm::vec<N, float>& v) {
 }  // namespace
 
 PixelTrace tracePixelVisits(const Scene& scene, const RenderSettings& requested, int width, int height, int x,
-                            int yTop) {
+                            int yTop, const ShadowMaps* shadows) {
   if (needsEnvironmentCapture(scene)) {  // the cube the CPU's frame is drawn with, captured as it does
     return tracePixelVisits(captureEnvironment(scene, requested, *makeCpuRenderer()).scene, requested, width, height, x,
-                            yTop);
+                            yTop, shadows);
   }
   // What the renderer would refuse, refused here too: the replay indexes the meshes.
   validateImageSize(width, height, "trace");
@@ -189,9 +190,25 @@ PixelTrace tracePixelVisits(const Scene& scene, const RenderSettings& requested,
   std::vector<DrawItem> items = flattenScene(scene);
   for (const DrawItem& item : items) validateIndices(item);
   const MipLevelView mipLevelView = applyMipLevelView(items, settings);  // owns stand-ins while traced
+  if (shadows) {
+    trace.shadowMaps = *shadows;
+  } else {
+    Framebuffer shadowTarget;
+    double shadowMilliseconds = 0.0;
+    trace.shadowMaps = renderShadowMaps(
+        scene, requested,
+        [&](const std::vector<ItemState>& passItems, int size) -> const Framebuffer& {
+          shadowTarget = makeFramebuffer(size, size, scene.output.background);
+          RenderStats passStats;
+          drawTeachingItems(passItems, 1, shadowTarget, passStats);
+          return shadowTarget;
+        },
+        shadowMilliseconds);
+  }
   for (const DrawItem& item : items) {
     const VertexUniforms vertexUniforms = makeVertexUniforms(item.worldFromModel, clipFromWorld, scene, settings);
-    const ShadeUniforms shadeUniforms = makeShadeUniforms(*item.material, scene, settings);
+    ShadeUniforms shadeUniforms = makeShadeUniforms(*item.material, scene, settings);
+    setShadowUniforms(shadeUniforms, trace.shadowMaps);
     const ShaderKey key = shaderKeyFor(shadeUniforms, settings);
     const ClipConfig clipConfig = makeClipConfig(settings.clip, vertexUniforms.userClipPlaneCount, width, height);
     for (std::size_t t = 0; t < item.mesh->triangleCount(); ++t) {
@@ -208,7 +225,7 @@ PixelTrace tracePixel(const Scene& scene, const RenderSettings& requested, int w
   }
   // The full render gives the final pixel (and validates the size and the meshes).
   const RenderOutput output = makeCpuRenderer()->render(scene, requested, width, height);
-  PixelTrace trace = tracePixelVisits(scene, requested, width, height, x, yTop);
+  PixelTrace trace = tracePixelVisits(scene, requested, width, height, x, yTop, &output.shadowMaps);
   const std::size_t i = static_cast<std::size_t>(yTop) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
   for (std::size_t c = 0; c < 4; ++c) trace.rgba[c] = output.rgba[i * 4 + c];
   trace.depth = output.depth[i];
@@ -323,6 +340,10 @@ std::string formatPixelTrace(const PixelTrace& tr) {
         o << "  light " << l << ": d " << fmt(t.distance) << " L " << fmt(t.l) << " V " << fmt(t.v) << " R " << fmt(t.r)
           << "\n           N.L " << fmt(t.nDotL) << " R.V " << fmt(t.rDotV) << " If " << fmt(t.attenuation)
           << " diffuse " << fmt(t.diffuse) << " specular " << fmt(t.specular) << "\n";
+        if (t.shadowOn) {
+          o << "           shadow map: depth from the light " << fmt(t.shadowDepth) << " - bias " << fmt(t.shadowBias)
+            << " vs map " << fmt(t.shadowStored) << ", visibility " << fmt(t.shadowVisibility) << "\n";
+        }
       }
       if (s.environmentDiffuseOn) {
         o << "  environment diffuse light (" << toString(v.environmentDiffuse) << ") at Nl " << fmt(s.environmentDiffuse)
@@ -422,6 +443,12 @@ nlohmann::json pixelTraceToJson(const PixelTrace& tr) {
         lights.push_back({{"distance", t.distance}, {"L", toJson(t.l)}, {"V", toJson(t.v)}, {"R", toJson(t.r)},
                           {"NdotL", t.nDotL}, {"RdotV", t.rDotV}, {"attenuation", t.attenuation},
                           {"diffuse", toJson(t.diffuse)}, {"specular", toJson(t.specular)}});
+        if (t.shadowOn) {
+          lights.back()["shadow"] = {{"depth", t.shadowDepth},
+                                     {"bias", t.shadowBias},
+                                     {"map_depth", t.shadowStored},
+                                     {"visibility", t.shadowVisibility}};
+        }
       }
       js["lights"] = lights;
       if (s.environmentDiffuseOn) {

@@ -82,6 +82,8 @@ struct PixelTrace {
   int skyFace = 0;
   vec2 skyFaceCoord{0.0f};
   float skyLod = 0.0f;      // texture()'s LOD, from the direction's quad differences
+  // The shadow maps the replay shaded with (per light; empty without shadows).
+  ShadowMaps shadowMaps;
 };
 
 // Throws InputError when the pixel is outside the image or the size is invalid.
@@ -91,9 +93,10 @@ PixelTrace tracePixel(const Scene& scene, const RenderSettings& settings, int wi
 // The replay alone, for a caller that already has the frame (the GUI's inspector): the
 // visits and the pixel's coordinates, with rgba, depth, triangleId and debugLine left at
 // their defaults. Throws InputError for what the renderer would refuse (size, pixel, clip
-// slots, mesh indices).
+// slots, mesh indices). `shadows`: the frame's shadow maps; null draws them anew with the
+// teaching traversal (shadow_pass.h).
 PixelTrace tracePixelVisits(const Scene& scene, const RenderSettings& settings, int width, int height, int x,
-                            int yTop);
+                            int yTop, const ShadowMaps* shadows = nullptr);
 
 // A readable multi-line report.
 std::string formatPixelTrace(const PixelTrace& trace);

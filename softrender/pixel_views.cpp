@@ -42,7 +42,8 @@ ViewPixel shadeTracedPixel(const Scene& scene, const RenderSettings& settings, c
   });
   if (item == items.end()) throw InputError("pixel views: the trace does not belong to this scene");
 
-  const ShadeUniforms uniforms = makeShadeUniforms(*item->material, scene, viewSettings);
+  ShadeUniforms uniforms = makeShadeUniforms(*item->material, scene, viewSettings);
+  setShadowUniforms(uniforms, trace.shadowMaps);
   const ShaderKey key = shaderKeyFor(uniforms, viewSettings);
   // The environment's quad differences as this view's shading finds them (the trace was taken
   // in its own view, whose surface may differ).

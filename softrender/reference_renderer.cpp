@@ -18,6 +18,7 @@
 #include "softrender/draw_loop.h"
 #include "softrender/raster.h"
 #include "softrender/setup.h"
+#include "softrender/shadow_pass.h"
 #include "softrender/shade.h"
 #include "softrender/sky-inl.h"
 #include "softrender/vertex.h"
@@ -150,6 +151,20 @@ class ReferenceRenderer final : public Renderer {
     target.height = height;
     RenderStats stats;
     std::vector<LoopItemT<T>> states(items.size());
+    // The lights' shadow maps, drawn once by the teaching traversal (shadow_pass.h): the
+    // reference shades in double against the maps the CPU frame reads, so its error measures
+    // the shading, not the map's resolution (the ray-traced visibility measures that).
+    Framebuffer shadowTarget;
+    double shadowMilliseconds = 0.0;
+    const ShadowMaps shadows = renderShadowMaps(
+        scene, requested,
+        [&](const std::vector<ItemState>& passItems, int size) -> const Framebuffer& {
+          shadowTarget = makeFramebuffer(size, size, scene.output.background);
+          RenderStats passStats;
+          drawTeachingItems(passItems, options_.threads, shadowTarget, passStats);
+          return shadowTarget;
+        },
+        shadowMilliseconds);
 
     for (std::size_t pass = 0; pass < offsets.size(); ++pass) {
       // Moving the scene by -offset puts the pixel centre on the sample: window x shifts by
@@ -169,6 +184,7 @@ class ReferenceRenderer final : public Renderer {
           s.vertices[i] = runVertexStage(s.mesh->vertices[i], vertexUniforms);
         }
         s.shade = makeShadeUniforms<T>(*items[k].material, scene, settings);
+        setShadowUniforms(s.shade, shadows);
         s.shaderKey = shaderKeyFor(s.shade, settings);
         s.clip = makeClipConfig(settings.clip, vertexUniforms.userClipPlaneCount, width, height);
         s.cull = settings.cull;
@@ -241,7 +257,9 @@ class ReferenceRenderer final : public Renderer {
       }
     }
     stats.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    stats.shadowMilliseconds = shadowMilliseconds;
     out.stats = stats;
+    out.shadowMaps = shadows;
     return out;
   }
 

@@ -27,6 +27,7 @@
 #include "softrender/lane_math-inl.h"
 #include "softrender/lanes.h"
 #include "softrender/phong_pow-inl.h"
+#include "softrender/shadow-inl.h"
 #include "softrender/surface_detail-inl.h"
 #include "softrender/texture_sample-inl.h"
 
@@ -273,6 +274,10 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
     const Vec3L<L> kdAlbedo = Vec3L<L>(u.kd) * albedo;   // u.kd * albedo, diffuse's first product
     const Vec3L<L> ksSpec = Vec3L<L>(u.ks) * specScale;  // u.ks * specScale, specular's first
     Vec3L<L> sum(zero);
+    // The first shadowed light's test, for the shadow views.
+    ShadowTestL<L> firstShadowTest{one, zero, zero, one, zero};
+    L firstShadowCosine = zero;
+    bool haveShadowTest = false;
     for (int i = 0; i < u.lightCount; ++i) {
       const LightUniformT<S>& light = u.lights[static_cast<std::size_t>(i)];
       const Vec3L<L> toLight = toLightLanes<L>(light, f.posWorld);
@@ -310,9 +315,23 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
       if (!emboss && anyOf(lit)) {
         specular = select3<L>(lit, (ksSpec * phongPow<L>(rDotV, u.shininess)) * Vec3L<L>(light.specular), specular);
       }
-      L shadow = one;
-      if (selfShadowOn) {
-        shadow = selfShadowLanes<L>(maps, u, f, detail, lT);
+      L selfShadowValue = one;
+      if (selfShadowOn) selfShadowValue = selfShadowLanes<L>(maps, u, f, detail, lT);
+      L shadow = selfShadowValue;
+      // The light's shadow map (shadow-inl.h): a runtime branch per light, never taken by a
+      // light without one. Its angle is the geometric normal's, in world space.
+      ShadowTestL<L> mapTest{one, zero, zero, one, zero};
+      const bool mapOn = light.shadow.depth != nullptr;
+      if (mapOn) {
+        mapTest = (shadowTestLanes<L>)(light.shadow, f.posWorld, n, safeNormalize3<L>(toLight));
+        shadow = shadow * mapTest.visibility;
+        if (!haveShadowTest) {
+          firstShadowTest = mapTest;
+          firstShadowCosine = dot3<L>(n, safeNormalize3<L>(toLight));
+          haveShadowTest = true;
+        }
+      }
+      if (selfShadowOn || mapOn) {
         sum += ((diffuse + specular) * attenuation) * shadow;
       } else {
         sum += (diffuse + specular) * attenuation;
@@ -329,7 +348,12 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
           lt.nDotL = nDotL;
           lt.rDotV = rDotV;
           lt.attenuation = attenuation;
-          lt.selfShadow = shadow;
+          lt.selfShadow = selfShadowValue;
+          lt.shadowOn = mapOn;
+          lt.shadowVisibility = mapTest.visibility;
+          lt.shadowDepth = mapTest.depth;
+          lt.shadowBias = mapTest.bias;
+          lt.shadowStored = mapTest.stored;
           lt.diffuse = diffuse;
           lt.specular = specular;
         }
@@ -368,7 +392,7 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
           (environmentDirectionsLanes<L>)(u.environment, nl, eyeVec, t, b, n, kTangentSpace);
       const EnvironmentTermsL<L> env = (environmentLanes<L>)(u.environment, directions, f, phong);
       colour = Vec4L<L>(env.colour, one);
-      if (u.shadedView != View::Shaded) {
+      if (isEnvironmentView(u.shadedView)) {
         const EnvironmentParameterization kind =
             u.environment.layers ? u.environment.layers->kind : EnvironmentParameterization::Cube;
         const int levels = u.environment.prefiltered
@@ -392,7 +416,16 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
         }
       }
     }
-    if (u.shadedView != View::Shaded && !(u.environment.cube && u.environment.readsDirections())) {
+    if (isShadowView(u.shadedView)) {
+      // The shadow views (shadow-inl.h): the first shadowed light's test, or dimmed without one.
+      if (!haveShadowTest) {
+        colour = (dimmedColourLanes<L>)(colour);
+      } else if (u.shadedView == View::Shadow) {
+        colour = (shadowViewColourLanes<L>)(firstShadowTest, firstShadowCosine);
+      } else {
+        colour = (lightDepthColourLanes<L>)(firstShadowTest);
+      }
+    } else if (u.shadedView != View::Shaded && !(u.environment.cube && u.environment.readsDirections())) {
       colour = (dimmedColourLanes<L>)(colour);
     }
   } else if constexpr (Features::kView == View::Albedo) {

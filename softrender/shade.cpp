@@ -70,7 +70,7 @@ ShadeUniformsT<T> makeShadeUniforms(const Material& material, const Scene& scene
     lu.attenuation = Vec3T<T>(attenuationUsed(light));
   }
   u.eyePosWorld = Vec3T<T>(scene.camera.position);
-  u.shadedView = isEnvironmentView(settings.view) ? settings.view : View::Shaded;
+  u.shadedView = isEnvironmentView(settings.view) || isShadowView(settings.view) ? settings.view : View::Shaded;
   // The environment: read only when the scene has one and the material mixes it in.
   if (materialReadsEnvironment(material, scene)) {
     EnvironmentUniformsT<T>& e = u.environment;

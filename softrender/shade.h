@@ -17,6 +17,7 @@
 #include "softrender/interpolate.h"
 #include "softrender/lanes.h"
 #include "softrender/phong_pow.h"
+#include "softrender/shadow_uniforms.h"
 #include "softrender/texture_sample.h"
 
 #include <array>
@@ -33,6 +34,7 @@ struct LightUniformT {
   Vec3T<T> diffuse{T(0)};                         // Id
   Vec3T<T> specular{T(0)};                        // Is
   Vec3T<T> attenuation{T(1), T(0), T(0)};         // A_C, A_L, A_Q
+  ShadowUniformT<T> shadow;                       // its shadow map (shadow.depth null: none)
 };
 using LightUniform = LightUniformT<float>;
 
@@ -91,6 +93,15 @@ using ShadeUniforms = ShadeUniformsT<float>;
 
 template <typename T = float>
 ShadeUniformsT<T> makeShadeUniforms(const Material& material, const Scene& scene, const RenderSettings& settings);
+// Points each light's uniform at its shadow map (`maps`, per light index; a missing or null
+// entry: none). The maps must outlive the uniforms.
+template <typename T>
+void setShadowUniforms(ShadeUniformsT<T>& u, const ShadowMaps& maps) {
+  for (int i = 0; i < u.lightCount; ++i) {
+    const std::size_t k = static_cast<std::size_t>(i);
+    u.lights[k].shadow = makeShadowUniform<T>(k < maps.size() ? maps[k].get() : nullptr);
+  }
+}
 
 // Every intermediate value of one shading, for the pixel trace.
 template <typename T>
@@ -101,6 +112,10 @@ struct LightTermsT {
   T nDotL = T(0), rDotV = T(0);
   T attenuation = T(0);  // If
   T selfShadow = T(1);   // 1 = lit, 0 = in the height field's shadow
+  // Its shadow map's test (shadowOn: the light has one): visibility 1 = lit; the fragment's
+  // depth from the light, the bias and the map's depth at its texel.
+  bool shadowOn = false;
+  T shadowVisibility = T(1), shadowDepth = T(0), shadowBias = T(0), shadowStored = T(1);
   Vec3T<T> diffuse{T(0)}, specular{T(0)};
 };
 using LightTerms = LightTermsT<float>;
@@ -211,7 +226,9 @@ inline ShaderKey canonicalShaderKey(ShaderKey key) {
     case View::ReflectDir:
     case View::EnvFace:
     case View::EnvLod:
-      key.view = View::Shaded;  // the environment views share the shaded permutation
+    case View::Shadow:
+    case View::LightDepth:
+      key.view = View::Shaded;  // the environment and shadow views share the shaded permutation
       break;
     case View::Albedo:
     case View::MipLevel:
@@ -306,6 +323,8 @@ void withShaderFeatures(const ShaderKey& keyIn, Body&& body) {
     case View::ReflectDir:
     case View::EnvFace:
     case View::EnvLod:  // drawn by the shaded permutation (ShadeUniformsT::shadedView)
+    case View::Shadow:
+    case View::LightDepth:
       withAll.template operator()<View::Shaded>();
       break;
   }

@@ -6,7 +6,10 @@
 #include "app/cli/common.h"
 #include "compare/artifacts.h"
 #include "compare/capture_faces.h"
+#include "compare/heatmap.h"
 #include "compare/metrics.h"
+#include "compare/pass_buffers.h"
+#include "compare/side_by_side.h"
 #include "compare/report_json.h"
 #include "compare/thresholds.h"
 #include "glrender/gl_renderer.h"
@@ -16,6 +19,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -34,6 +38,8 @@ struct CompareArgs {
   bool glFastSampling = false;
   bool issueTargets = false;
   Thresholds limits;
+  std::string buffer;       // --buffer NAME: that pass buffer's row and images
+  bool allBuffers = false;  // --all-buffers: every buffer's row
 };
 
 double medianOf(std::vector<double> values) {
@@ -92,8 +98,138 @@ void printCaptureSummary(const CapturedFacesComparison& faces, const RenderOutpu
   std::cout << "wrote " << paths.cpu << "\n      " << paths.gl << "\n      " << paths.diff << "\n";
 }
 
+// The window depth of a frame, rows bottom first, 1 wherever the two frames do not both have a
+// triangle (a coverage difference is the frame's own metric, not the depth buffer's).
+std::vector<float> bothCoveredDepth(const RenderOutput& out, const RenderOutput& other) {
+  std::vector<float> depth(out.depth.size(), 1.0f);
+  if (out.depth.size() != static_cast<std::size_t>(out.width) * static_cast<std::size_t>(out.height)) return depth;
+  for (int y = 0; y < out.height; ++y) {
+    for (int x = 0; x < out.width; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(out.width) + static_cast<std::size_t>(x);
+      if (!coveredAt(out, i) || !coveredAt(other, i)) continue;
+      depth[static_cast<std::size_t>(out.height - 1 - y) * static_cast<std::size_t>(out.width) +
+            static_cast<std::size_t>(x)] = out.depth[i];
+    }
+  }
+  return depth;
+}
+
+// Writes DIR/buffer_<stem>_cpu.png, _gl.png, _diff.png for a depth buffer.
+void writeDepthImages(const std::string& dir, const std::string& stem, const std::vector<float>& cpu,
+                      const std::vector<float>& gl, int width, int height, int layers) {
+  savePng(dir + "/buffer_" + stem + "_cpu.png", depthLayersImage(cpu, width, height, layers));
+  savePng(dir + "/buffer_" + stem + "_gl.png", depthLayersImage(gl, width, height, layers));
+  savePng(dir + "/buffer_" + stem + "_diff.png", depthDiffImage(cpu, gl, width, height, layers, kDefaultDepthTolerance));
+}
+
+// The rows of `buffers` (pass order), rendering the G-buffer views both ways where asked.
+std::vector<BufferRow> compareBuffers(const std::vector<PassBuffer>& buffers, const Scene& scene, int width, int height,
+                                      Renderer& cpu, Renderer& gl, const RenderOutput& cpuOut,
+                                      const RenderOutput& glOut, const CompareResult& frame, const Thresholds& targets,
+                                      const std::string& dir) {
+  std::vector<BufferRow> rows;
+  for (const PassBuffer buffer : buffers) {
+    const std::string name(toString(buffer));
+    if (buffer == PassBuffer::ShadowMap) {
+      bool any = false;
+      for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        const auto* a = i < cpuOut.shadowMaps.size() ? cpuOut.shadowMaps[i].get() : nullptr;
+        const auto* b = i < glOut.shadowMaps.size() ? glOut.shadowMaps[i].get() : nullptr;
+        if (!scene.lights[i].shadow) continue;
+        any = true;
+        BufferRow row;
+        row.buffer = buffer;
+        row.light = static_cast<int>(i);
+        row.depth = true;
+        if (!a || !b || a->depth.empty() || b->depth.empty()) {
+          row.note = "a renderer drew no map for this light";
+          rows.push_back(row);
+          continue;
+        }
+        const ShadowProjection& p = a->projection;
+        row.available = true;
+        row.depthMetrics = compareDepthBuffers(a->depth, b->depth, p.size, p.size, p.layers, kDefaultDepthTolerance);
+        row.passes = row.depthMetrics.overTolerance == 0 && row.depthMetrics.nonFinite == 0;
+        writeDepthImages(dir, name + "_light" + std::to_string(i), a->depth, b->depth, p.size, p.size, p.layers);
+        rows.push_back(row);
+      }
+      if (!any) {
+        BufferRow row;
+        row.buffer = buffer;
+        row.depth = true;
+        row.note = "no light of the scene has a \"shadow\"";
+        rows.push_back(row);
+      }
+      continue;
+    }
+    BufferRow row;
+    row.buffer = buffer;
+    row.available = true;
+    if (buffer == PassBuffer::GbufferDepth) {
+      row.depth = true;
+      const std::vector<float> a = bothCoveredDepth(cpuOut, glOut), b = bothCoveredDepth(glOut, cpuOut);
+      row.depthMetrics = compareDepthBuffers(a, b, width, height, 1, kDefaultDepthTolerance);
+      row.passes = row.depthMetrics.overTolerance == 0 && row.depthMetrics.nonFinite == 0;
+      writeDepthImages(dir, name, a, b, width, height, 1);
+      rows.push_back(row);
+      continue;
+    }
+    CompareOptions options;
+    options.compareBackground = buffer == PassBuffer::Final && drawsSky(scene, scene.settings);
+    RenderOutput a = cpuOut, b = glOut;
+    if (buffer == PassBuffer::GbufferNormal || buffer == PassBuffer::GbufferAlbedo) {
+      RenderSettings settings = scene.settings;
+      settings.view = viewOfBuffer(buffer, settings.view);
+      settings.tbnLines.enabled = false;
+      a = cpu.render(scene, settings, width, height);
+      b = gl.render(scene, settings, width, height);
+    }
+    const CompareResult result = buffer == PassBuffer::Final ? frame : compareDetailed(a, b, options);
+    row.colourMetrics = result.metrics;
+    row.passes = checkThresholds(result.metrics, targets).empty();
+    savePng(dir + "/buffer_" + name + "_cpu.png", rawImage(a));
+    savePng(dir + "/buffer_" + name + "_gl.png", rawImage(b));
+    savePng(dir + "/buffer_" + name + "_diff.png", makeHeatMap(result.pixels));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+void printBufferRows(const std::vector<BufferRow>& rows, const std::string& dir) {
+  std::cout << "buffers, in pass order (images: " << dir << "/buffer_<name>_cpu|gl|diff.png):\n";
+  for (const BufferRow& row : rows) {
+    std::cout << "  " << std::left << std::setw(15) << toString(row.buffer) << std::right;
+    if (row.light >= 0) std::cout << " light " << row.light;
+    if (!row.available) {
+      std::cout << ": not available (" << row.note << ")\n";
+      continue;
+    }
+    std::cout << std::setprecision(9);
+    if (row.depth) {
+      const DepthBufferMetrics& m = row.depthMetrics;
+      std::cout << ": " << m.width << "x" << m.height << (m.layers > 1 ? " x " + std::to_string(m.layers) : "")
+                << ", depth max diff " << m.maxAbsDiff << ", texels over " << m.tolerance << ": " << m.overTolerance;
+    } else {
+      const CompareMetrics& m = row.colourMetrics;
+      std::cout << std::setprecision(3) << ": max abs diff " << m.maxAbsDiff << " levels, over 1 level " << m.over1
+                << ", coverage mismatch " << m.coverageMismatch;
+    }
+    std::cout << (row.passes ? "  ok" : "  OVER THE TARGETS") << "\n";
+  }
+}
+
 void runCompare(CompareArgs& args) {
   validateThresholds(args.limits);
+  std::vector<PassBuffer> buffers;
+  if (args.allBuffers) {
+    buffers.assign(std::begin(kAllPassBuffers), std::end(kAllPassBuffers));
+  } else if (!args.buffer.empty()) {
+    PassBuffer one{};
+    if (!parse(args.buffer, one)) {
+      throw InputError("--buffer: expected one of " + allPassBufferNames() + ", got '" + args.buffer + "'");
+    }
+    buffers.push_back(one);
+  }
   if (args.repeat < 1) throw InputError("--repeat: expected an integer >= 1");
   const CpuOptions cpuOptions = requestedCpuOptions(args.cpu);
   GlOptions glOptions = requestedGlOptions(args.gl);
@@ -151,6 +287,29 @@ void runCompare(CompareArgs& args) {
     for (ThresholdViolation& v : checkCapturedFaces(*faces, limits)) violations.push_back(std::move(v));
   }
 
+  // The pass buffers (pass_buffers.h): each held to the targets' colour limits, or for depth to
+  // the classification's depth tolerance, texel by texel.
+  std::vector<BufferRow> bufferRows;
+  if (!buffers.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(args.outDir, ec);
+    if (!std::filesystem::is_directory(args.outDir)) throw InputError(args.outDir + ": cannot create the output folder");
+    Thresholds colourTargets = twr::issueTargets(cpuOut.stats.trianglesClipped > 0);
+    bufferRows = compareBuffers(buffers, scene, width, height, *cpu, *gl, cpuOut, glOut, result, colourTargets,
+                                args.outDir);
+    if (args.issueTargets && llvmpipe) {
+      for (const BufferRow& row : bufferRows) {
+        if (row.available && !row.passes) {
+          ThresholdViolation v;
+          v.key = "buffers";
+          v.message = "buffer " + std::string(toString(row.buffer)) +
+                      (row.light >= 0 ? " (light " + std::to_string(row.light) + ")" : "") + " is over the targets";
+          violations.push_back(std::move(v));
+        }
+      }
+    }
+  }
+
   nlohmann::json json = metricsToJson(result.metrics);
   mergeExtraKeys(json, runInfoToJson(info));
   mergeExtraKeys(json, {{"scene", args.request.scenePath},
@@ -169,6 +328,17 @@ void runCompare(CompareArgs& args) {
   mergeExtraKeys(json, {{"capture_faces", faces ? capturedFacesToJson(*faces) : nlohmann::json(nullptr)},
                         {"cpu_capture_ms", faces ? nlohmann::json(cpuOut.stats.captureMilliseconds) : nlohmann::json(nullptr)},
                         {"gl_capture_ms", faces ? nlohmann::json(glOut.stats.captureMilliseconds) : nlohmann::json(nullptr)}});
+  if (!buffers.empty()) {
+    nlohmann::json rows = nlohmann::json::array();
+    nlohmann::json firstDiffering = nullptr;
+    for (const BufferRow& row : bufferRows) {
+      rows.push_back(bufferRowToJson(row));
+      if (row.available && !row.passes && firstDiffering.is_null()) firstDiffering = std::string(toString(row.buffer));
+    }
+    mergeExtraKeys(json, {{"buffers", rows}, {"first_differing_buffer", firstDiffering}});
+  }
+  mergeExtraKeys(json, {{"cpu_shadow_ms", cpuOut.stats.shadowMilliseconds},
+                        {"gl_shadow_ms", glOut.stats.shadowMilliseconds}});
   const ArtifactPaths paths = writeCompareArtifacts(args.outDir, cpuOut, glOut, result, json);
   std::optional<CaptureArtifactPaths> facePaths;
   if (faces) facePaths = writeCaptureArtifacts(args.outDir, *cpuOut.capturedFaces, *glOut.capturedFaces, *faces);
@@ -178,6 +348,7 @@ void runCompare(CompareArgs& args) {
   } else {
     printSummary(result.metrics, json, paths);
     if (faces) printCaptureSummary(*faces, cpuOut, glOut, *facePaths);
+    if (!bufferRows.empty()) printBufferRows(bufferRows, args.outDir);
   }
   if (!targetsSkipped.empty()) std::cerr << "twinraster: note: " << targetsSkipped << "\n";
   for (const ThresholdViolation& v : violations) std::cerr << "twinraster: threshold exceeded: " << v.message << "\n";
@@ -203,6 +374,13 @@ const bool registered = registerCommand(30, [](CLI::App& app) {
   cmd->add_flag("--gl-fast-sampling", args->glFastSampling,
                 "Let llvmpipe use its fast texture path (8-bit bilinear weights, one LOD per 2x2 quad) to see "
                 "what the shortcut costs");
+  cmd->add_option("--buffer", args->buffer,
+                  "Also diff one pass buffer: " + allPassBufferNames() +
+                      " (docs/compare.md, \"Buffers\"); writes DIR/buffer_<name>_cpu.png, _gl.png, _diff.png and a "
+                      "row under metrics.json's \"buffers\"");
+  cmd->add_flag("--all-buffers", args->allBuffers,
+                "Diff every pass buffer, one row each in pass order under metrics.json's \"buffers\" (and "
+                "\"first_differing_buffer\"): where the renderers first part");
   cmd->add_flag("--targets", args->issueTargets,
                 "Apply the project's CPU-vs-llvmpipe targets: over_1 <= 0.1%, max_abs_diff <= 3, no NaN, "
                 "coverage mismatch 0 (at most 1 per 10,000 covered pixels when triangles are clipped). Only "

@@ -302,6 +302,17 @@ Json sceneJson(const Scene& scene) {
                           {"diffuse", toJson(l.diffuse)},
                           {"specular", toJson(l.specular)},
                           {"attenuation", toJson(attenuationUsed(l))}});
+    if (l.shadow) {
+      const ShadowDesc& d = *l.shadow;
+      lights.back()["shadow"] = Json{{"kind", directional ? "orthographic" : "cube"},
+                                     {"size", d.size},
+                                     {"layers", directional ? 1 : kCubeShadowLayers},
+                                     {"bias", {d.bias.x, d.bias.y}},
+                                     {"pcf", d.pcf},
+                                     {"extent", d.extent}};
+    } else {
+      lights.back()["shadow"] = nullptr;
+    }
   }
   j["lights"] = std::move(lights);
   j["ambient"] = toJson(scene.ambient);
@@ -422,6 +433,14 @@ void printScene(std::ostream& out, const Scene& scene) {
     } else {
       out << "  [" << i << "] position " << text(l.posWorld) << ", diffuse " << text(l.diffuse) << ", specular "
           << text(l.specular) << ", attenuation " << text(l.attenuation) << "\n";
+    }
+    if (l.shadow) {
+      const ShadowDesc& d = *l.shadow;
+      out << "      shadow map: " << (l.type == LightType::Directional ? "orthographic " : "cube ") << d.size << "^2"
+          << (l.type == LightType::Directional ? "" : " x 6") << ", bias " << d.bias.x << " + " << d.bias.y
+          << " tan, pcf " << d.pcf << "x" << d.pcf << ", extent "
+          << (d.extent > 0.0f ? std::to_string(d.extent) + " world units" : std::string("from the scene's bounds"))
+          << "\n";
     }
   }
 

@@ -94,8 +94,10 @@ const bool registered = registerCommand(60, [](CLI::App& app) {
       "against a double-precision supersampled reference. Height fields: every surface_detail method (marching "
       "ones at several parallax_layers) on a brick and a steep-walled height field at 0, 45, 70 and 85 degrees, "
       "against the displaced heightfield mesh on interior pixels (silhouettes counted apart), and a "
-      "parallax_occlusion frame at 1280x720 against the normal-mapped one. Writes DIR/report.html (charts, "
-      "tables, readings), DIR/results.csv and the height-field pictures DIR/height_fields_*.png. Progress on "
+      "parallax_occlusion frame at 1280x720 against the normal-mapped one. Environment maps against Monte Carlo. "
+      "Shadow maps: the map's side and PCF kernel against shadow rays traced in double against the scene's "
+      "triangles. Writes DIR/report.html (charts, tables, readings), DIR/results.csv and the pictures (height "
+      "fields, environment, DIR/shadow_vs_traced.png). Progress on "
       "stderr. Two to three minutes by default, about 20 seconds with --quick.");
   cmd->add_option("--out,-o", args->outDir, "Output folder (created)")->capture_default_str();
   cmd->add_flag("--quick", args->quick,

@@ -533,6 +533,34 @@ std::string glossyHtml(const GlossySection& section) {
   return s.str();
 }
 
+std::string shadowsHtml(const ShadowSection& section) {
+  std::ostringstream s;
+  s << "<h2 id=\"shadows\">Shadow maps against a ray tracer</h2>\n";
+  s << "<p>The map's side and PCF kernel on " << escape(section.scene)
+    << ": for every pixel showing a surface turned to the light, the visibility the map gives that point (the "
+       "shading's own test, in double) against a shadow ray traced in double against the scene's triangles from the "
+       "same point (the ray through the pixel centre met with the plane of the triangle the frame shows there). "
+       "Wrong: the map's visibility is more than half away from the traced 0 or 1. Times: the whole CPU frame (fast "
+       "path, one thread) and its shadow pass. Source: softrender/shadow_reference.cpp, scene/triangle_bvh.cpp; "
+       "docs/shadows.md.</p>\n";
+  s << "<div class=\"reading\"><b>" << escape(section.summary) << "</b><br>" << escape(section.reading) << "</div>\n";
+  if (!section.skipped.empty()) return s.str();
+  s << "<table><thead><tr><th>map side</th><th>PCF</th><th>frame ms</th><th>x unshadowed</th><th>shadow pass ms</th>"
+       "<th>wrong %</th><th>between %</th><th>mean |error|</th></tr></thead>\n<tbody>\n";
+  for (const ShadowRow& row : section.rows) {
+    s << "<tr><td>" << row.size << "</td><td>" << row.pcf << "</td><td>" << std::fixed << std::setprecision(1)
+      << row.msMedian << "</td><td>" << std::setprecision(2)
+      << (section.unshadowedMs > 0.0 ? row.msMedian / section.unshadowedMs : 0.0) << "</td><td>"
+      << std::setprecision(1) << row.shadowPassMs << "</td><td>" << std::setprecision(2) << row.wrongPercent
+      << "</td><td>" << row.partialPercent << "</td><td>" << std::setprecision(4) << row.meanAbsError << "</td></tr>\n";
+  }
+  s << "</tbody></table>\n";
+  s << "<p class=\"small\">Unshadowed frame: " << std::fixed << std::setprecision(1) << section.unshadowedMs
+    << " ms. " << section.measured << " pixels measured.</p>\n";
+  s << figuresHtml(section.pictures, section.captions);
+  return s.str();
+}
+
 std::string heightFieldsHtml(const HeightFieldSection& section) {
   std::ostringstream s;
   s << "<h2 id=\"height_fields\">Height fields: each method against the displaced surface</h2>\n";
@@ -599,6 +627,8 @@ void writeReportHtml(const std::string& path, const ReportData& data) {
     << escape(data.diffuseLight.summary) << "</li>\n";
   s << "<li><a href=\"#environment_glossy\"><b>Environment glossy reflection</b></a>: "
     << escape(data.glossy.summary) << "</li>\n";
+  s << "<li><a href=\"#shadows\"><b>Shadow maps against a ray tracer</b></a>: " << escape(data.shadows.summary)
+    << "</li>\n";
   s << "<li><a href=\"#orthonormal_basis\"><b>Orthonormal bases</b></a>: " << escape(data.basisSummary) << "</li>\n";
   s << "</ul>\n";
 
@@ -614,6 +644,7 @@ void writeReportHtml(const std::string& path, const ReportData& data) {
   s << parameterizationsHtml(data.parameterizations);
   s << diffuseLightHtml(data.diffuseLight);
   s << glossyHtml(data.glossy);
+  s << shadowsHtml(data.shadows);
 
   s << "<h2 id=\"orthonormal_basis\">Orthonormal bases from a normal</h2>\n";
   s << "<p>Four ways to build two unit vectors b1, b2 with b1 x b2 = n from a unit normal alone, in float as a shader "

@@ -133,6 +133,29 @@ struct GlossySection {
   std::string summary, reading, skipped;
 };
 
+// Shadow maps against a ray tracer (docs/shadows.md, "Against a ray tracer"): one scene, the
+// map's side and PCF kernel swept, each frame's per-pixel visibility against shadow rays traced
+// in double against the scene's triangles (softrender/shadow_reference.h).
+struct ShadowRow {
+  int size = 0;                  // texels per side
+  int pcf = 1;                   // kernel side
+  double msMedian = 0.0;         // the whole CPU frame (fast path, one thread), shadow pass included
+  double shadowPassMs = 0.0;     // of it, the shadow pass (median)
+  double wrongPercent = 0.0;     // pixels whose map visibility is the other answer, % of measured
+  double partialPercent = 0.0;   // pixels the map leaves between lit and shadowed (a PCF edge)
+  double meanAbsError = 0.0;     // mean |map - traced| visibility
+};
+struct ShadowSection {
+  std::string scene;             // file and size
+  double unshadowedMs = 0.0;     // the same frame with no shadow map (median)
+  std::uint64_t measured = 0;    // pixels on surfaces turned to the light
+  std::uint64_t tracedShadowed = 0;
+  double traceMs = 0.0;          // tracing every measured pixel's shadow ray, one thread
+  std::vector<ShadowRow> rows;
+  std::vector<std::string> pictures, captions;  // beside report.html
+  std::string summary, reading, skipped;
+};
+
 struct ReportData {
   std::string generatedAt;  // local time
   std::string machine;      // CPU model, core count, GL renderer
@@ -145,6 +168,7 @@ struct ReportData {
   ParameterizationSection parameterizations;
   DiffuseLightSection diffuseLight;
   GlossySection glossy;
+  ShadowSection shadows;
   std::vector<BasisRow> bases;
   std::size_t basisDirections = 0;
   std::string basisSummary;

@@ -20,6 +20,7 @@ KnobReading readBases(const std::vector<BasisRow>& rows);
 // with the size, and where each one's worst direction sits.
 KnobReading readParameterizations(const ParameterizationSection& section);
 KnobReading readDiffuseLight(const DiffuseLightSection& section);
+KnobReading readShadows(const ShadowSection& section);
 KnobReading readGlossy(const GlossySection& section);
 // The height-field section across its views: which method is worth its cost at which angle,
 // POM against plain parallax, where steep parallax's stair-steps show, how many layers POM

@@ -19,6 +19,7 @@
 #include "scene/texture.h"
 #include "softrender/cpu_renderer.h"
 #include "softrender/reference_renderer.h"
+#include "softrender/shadow_reference.h"
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -216,6 +217,7 @@ class Sweeper {
   void parameterizations(ParameterizationSection& section, const std::string& outDir);
   void diffuseLight(DiffuseLightSection& section, const std::string& outDir);
   void glossy(GlossySection& section, const std::string& outDir);
+  void shadows(ShadowSection& section, const std::string& outDir);
   // The asset tool's sky as a cube, or nothing with `skipped` saying why.
   std::optional<CubeMap> loadSky(std::string& skipped) const;
 
@@ -1072,6 +1074,92 @@ void Sweeper::glossy(GlossySection& section, const std::string& outDir) {
   }
 }
 
+void Sweeper::shadows(ShadowSection& section, const std::string& outDir) {
+  const std::string file = options_.assetsDir + "/scenes/shadow_directional.json";
+  Scene scene;
+  try {
+    scene = loadSceneFile(file);
+  } catch (const InputError& e) {
+    section.skipped = e.what();
+    return;
+  }
+  if (scene.lights.empty() || !scene.lights[0].shadow) {
+    section.skipped = file + " has no shadowed light 0";
+    return;
+  }
+  const int width = width_, height = height_;
+  section.scene = "shadow_directional.json at " + sizeText(width, height) + ", light 0 (directional)";
+  say("shadows: the map's side and PCF against shadow rays traced in double");
+  CpuOptions cpuOptions;
+  cpuOptions.path = CpuPath::Fast;
+  cpuOptions.threads = 1;
+  std::unique_ptr<Renderer> cpu = makeCpuRenderer(cpuOptions);
+  const int frames = options_.quick ? 3 : kCostFrames;
+  Scene unshadowed = scene;
+  unshadowed.lights[0].shadow.reset();
+  RenderOutput frame;
+  section.unshadowedMs = timeRenderer(*cpu, unshadowed, unshadowed.settings, width, height, frames, frame).msMedian;
+  const TriangleBvh bvh(scene);
+  const std::vector<int> sizes = options_.quick ? std::vector<int>{256, 1024, 4096}
+                                                : std::vector<int>{256, 512, 1024, 2048, 4096};
+  bool traced = false;
+  ShadowVisibility pictured;
+  for (const int size : sizes) {
+    for (const int pcf : {1, 3, 5}) {
+      Scene s = scene;
+      s.lights[0].shadow->size = size;
+      s.lights[0].shadow->pcf = pcf;
+      const Timing timing = timeRenderer(*cpu, s, s.settings, width, height, frames, frame);
+      // The pass's share, from the frames timed again (RenderStats is per frame).
+      std::vector<double> passMs;
+      for (int f = 0; f < frames; ++f) passMs.push_back(cpu->render(s, s.settings, width, height).stats.shadowMilliseconds);
+      const auto start = std::chrono::steady_clock::now();
+      const ShadowVisibility v = measureShadowVisibility(s, 0, frame, bvh);
+      if (!traced) {
+        section.traceMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        section.measured = v.measured;
+        section.tracedShadowed = v.tracedShadowed;
+        traced = true;
+      }
+      ShadowRow row;
+      row.size = size;
+      row.pcf = pcf;
+      row.msMedian = timing.msMedian;
+      row.shadowPassMs = medianOf(passMs);
+      row.wrongPercent = v.wrongPercent();
+      row.partialPercent = v.measured ? 100.0 * static_cast<double>(v.partial) / static_cast<double>(v.measured) : 0.0;
+      row.meanAbsError = v.meanAbsError;
+      section.rows.push_back(row);
+      if (size == 1024 && pcf == 1) pictured = v;
+    }
+  }
+  // Where the 1024^2 hard map and the traced shadow disagree: red the map shadows a lit point,
+  // blue it lights a shadowed one, grey both agree (lit light, shadowed dark), black not measured.
+  const std::filesystem::path dir(outDir);
+  Image image = makeImage(pictured.width, pictured.height, 0x000000FFu);
+  for (int y = 0; y < pictured.height; ++y) {
+    for (int x = 0; x < pictured.width; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(pictured.width) + static_cast<std::size_t>(x);
+      if (std::isnan(pictured.traced[i])) continue;
+      std::uint8_t* p = image.pixel(x, y);
+      const double d = pictured.map[i] - pictured.traced[i];
+      if (d < -0.5) {
+        p[0] = 255, p[1] = 40, p[2] = 40;
+      } else if (d > 0.5) {
+        p[0] = 40, p[1] = 120, p[2] = 255;
+      } else {
+        const std::uint8_t g = pictured.traced[i] > 0.5 ? 200 : 70;
+        p[0] = p[1] = p[2] = g;
+      }
+    }
+  }
+  savePng((dir / "shadow_vs_traced.png").string(), image);
+  section.pictures = {"shadow_vs_traced.png"};
+  section.captions = {"The 1024\u00b2 map with one texel (PCF 1) against the traced shadow: red where the map shadows a "
+                      "lit point (acne, or an edge one texel too wide), blue where it lights a shadowed one; grey "
+                      "where both agree (light: lit, dark: shadowed); black: no surface turned to the light"};
+}
+
 std::string machineDescription() {
   std::ifstream cpuinfo("/proc/cpuinfo");
   std::string line, model = "unknown CPU";
@@ -1125,6 +1213,10 @@ ReportData Sweeper::run() {
   const KnobReading glossyReading = readGlossy(data.glossy);
   data.glossy.summary = glossyReading.summary;
   data.glossy.reading = glossyReading.detail;
+  shadows(data.shadows, options_.outDir);
+  const KnobReading shadowReading = readShadows(data.shadows);
+  data.shadows.summary = shadowReading.summary;
+  data.shadows.reading = shadowReading.detail;
   bases(data);
   data.machine =
       machineDescription() + "; GL: " + glRendererString() + ", " + glVersionString() + "; " + glContextString();

@@ -151,7 +151,8 @@ class GuiApp {
   void drawParallaxStepsLegend();
   void drawEnvironmentViewLegend(View view);
   bool drawEnvironmentCaptureControls(Environment& env);
-  void drawEnvironmentSourceImages(const Environment& env);  // env_face's swatches, env_lod's heat bar
+  void drawEnvironmentSourceImages(const Environment& env);
+  void drawShadowMapImages(std::size_t light);  // the light's map as each renderer drew it, and their difference  // env_face's swatches, env_lod's heat bar
   void drawLightsSection();
   void drawCameraTab();
   void drawViewPanel();
@@ -235,6 +236,7 @@ class GuiApp {
   // The environment's cube cross (Scene tab): a loaded cube's, or each renderer's captured faces,
   // with what each texture was last made from (re-uploaded when that changes).
   ImageTexture sourceCrossTexture_, captureCpuTexture_, captureGlTexture_;
+  ImageTexture shadowCpuTexture_, shadowGlTexture_, shadowDiffTexture_;
   std::map<const ImageTexture*, std::pair<const void*, std::uint64_t>> crossSources_;
   bool cpuTextureStale_ = true, glTextureStale_ = true;
 

@@ -73,6 +73,13 @@ const char* viewLegend(View view) {
       return "The LOD the reflection is read at, as a heat map from 0 (dark blue) to 10 (dark red): a mirror's "
              "from its direction's differences across the 2x2 quad (curved or bumpy surfaces read blurrier "
              "levels), a prefiltered reflection's from the shininess.";
+    case View::Shadow:
+      return "The first shadowed light's shadow-map test: warm white lit, blue in its shadow (PCF blends the two), "
+             "magenta acne (the surface shadows itself: raise the bias), grey turned away from the light. Dimmed "
+             "to grey when no light has a shadow map (docs/shadows.md).";
+    case View::LightDepth:
+      return "The first shadowed light's map depth where each pixel falls, as grey (0 black, 1 white): what the "
+             "light sees there. Dark red outside the map; dimmed when no light has a shadow map.";
   }
   return "";
 }

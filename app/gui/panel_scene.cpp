@@ -8,6 +8,7 @@
 
 #include "compare/capture_faces.h"
 #include "compare/cube_cross.h"
+#include "compare/pass_buffers.h"
 #include "scene/environment_light.h"
 #include "scene/environment_specular.h"
 #include "scene/errors.h"
@@ -31,6 +32,8 @@ constexpr float kRotateDragSpeed = 0.5f;      // degrees
 constexpr float kScaleDragSpeed = 0.005f;
 constexpr float kSizeDragSpeed = 0.005f;      // world units
 constexpr float kAttenuationDragSpeed = 0.001f;
+// The shadow bias per dragged point (depth units).
+constexpr float kShadowBiasDragSpeed = 0.00005f;
 // A directional light's direction components per dragged point (unitless; renormalised after).
 constexpr float kDirectionDragSpeed = 0.005f;
 // Largest magnitude the transform and size fields accept (inclusive), world units or degrees.
@@ -46,6 +49,63 @@ constexpr int kMinStacks = 2;
 constexpr int kMinRoundSegments = 3;
 // Smallest primitive dimension the fields allow, world units (exclusive bound in buildMesh: > 0).
 constexpr float kMinDimension = 0.001f;
+
+// A light's shadow map (scene/shadow_map.h): on or off, the map's side, the bias and the PCF
+// kernel. A point light's cube map is at most kMaxCubeShadowMapSize; at most
+// kMaxShadowedLights lights cast shadows. True when something changed.
+bool editShadow(Light& light, const std::vector<Light>& lights) {
+  const bool cube = light.type == LightType::Point;
+  const int maxSize = cube ? kMaxCubeShadowMapSize : kMaxShadowMapSize;
+  if (light.shadow && light.shadow->size > maxSize) light.shadow->size = maxSize;  // switched to a point light
+  const auto others = std::count_if(lights.begin(), lights.end(),
+                                    [&](const Light& l) { return &l != &light && l.shadow.has_value(); });
+  bool changed = false;
+  bool on = light.shadow.has_value();
+  ImGui::BeginDisabled(!on && others >= kMaxShadowedLights);
+  if (ImGui::Checkbox("shadow map", &on)) {
+    if (on) {
+      light.shadow = ShadowDesc{};
+      if (cube) light.shadow->size = kDefaultCubeShadowMapSize;
+    } else {
+      light.shadow.reset();
+    }
+    changed = true;
+  }
+  ImGui::EndDisabled();
+  itemTooltip("A shadow map (shadow): a depth pass from the light before the frame, on both renderers; an "
+              "orthographic map for a directional light, a cube of six for a point light (docs/shadows.md). "
+              "At most 4 lights.");
+  if (!light.shadow) return changed;
+  ShadowDesc& shadow = *light.shadow;
+  const std::string label = std::to_string(shadow.size) + (cube ? " x 6" : "");
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.4f);
+  if (ImGui::BeginCombo("Map size", label.c_str())) {
+    for (int size = 256; size <= maxSize; size *= 2) {
+      if (ImGui::Selectable(std::to_string(size).c_str(), size == shadow.size)) {
+        shadow.size = size;
+        changed = true;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  itemTooltip("Texels per side of the map (each cube face). Smaller maps show blockier shadow edges.");
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+  changed |= ImGui::DragFloat2("Bias c, slope", &shadow.bias.x, kShadowBiasDragSpeed, 0.0f, 0.1f, "%.5f",
+                               ImGuiSliderFlags_AlwaysClamp);
+  itemTooltip("Depth bias in the map's depth units (0..1): constant + slope * tan(angle to the light). Too "
+              "little shows acne (the surface shadows itself: the shadow view paints it magenta), too much "
+              "peter-panning (shadows come loose from their casters).");
+  int pcf = shadow.pcf;
+  ImGui::TextUnformatted("PCF");
+  for (const int side : {1, 3, 5}) {
+    ImGui::SameLine();
+    if (ImGui::RadioButton((std::to_string(side) + "x" + std::to_string(side)).c_str(), pcf == side)) {
+      shadow.pcf = side;
+      changed = true;
+    }
+  }
+  return changed;
+}
 
 // Colours as the scene file writes them (floats; light colours may exceed 1).
 constexpr ImGuiColorEditFlags kColourFlags = ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR;
@@ -669,6 +729,57 @@ void GuiApp::drawEnvironmentSourceImages(const Environment& env) {
   ImGui::TreePop();
 }
 
+// Light `light`'s shadow map as each renderer drew it for the frames shown (compare's pictures:
+// the layers side by side, depth stretched over the range drawn) and their difference (the heat
+// ramp's top at the depth tolerance compare uses).
+void GuiApp::drawShadowMapImages(std::size_t light) {
+  if (!ImGui::TreeNode("shadow maps")) return;
+  const auto mapOf = [light](const BackendFrame& frame) -> const ShadowMap* {
+    if (!frame.output || light >= frame.output->shadowMaps.size()) return nullptr;
+    const ShadowMap* map = frame.output->shadowMaps[light].get();
+    return map && !map->depth.empty() ? map : nullptr;
+  };
+  const ShadowMap* cpu = mapOf(cpuFrame_);
+  const ShadowMap* gl = mapOf(glFrame_);
+  if (!cpu && !gl) hintText("No frame drawn with this light's shadow map yet.");
+  const float width = ImGui::GetContentRegionAvail().x;
+  const auto show = [&](ImageTexture& texture, const void* source, std::uint64_t revision,
+                        const std::function<Image()>& make, const char* label) {
+    if (source == nullptr) return;
+    if (texture.empty() || crossSources_[&texture] != std::make_pair(source, revision)) {
+      texture.upload(make());
+      crossSources_[&texture] = {source, revision};
+    }
+    const ShadowProjection& p = (cpu ? cpu : gl)->projection;
+    ImGui::TextDisabled("%s", label);
+    ImGui::Image(texture.id(), ImVec2(width, width / static_cast<float>(p.layers)));
+  };
+  const auto layers = [](const ShadowMap& m) {
+    return depthLayersImage(m.depth, m.projection.size, m.projection.size, m.projection.layers);
+  };
+  show(shadowCpuTexture_, cpu, cpuFrame_.revision, [&] { return layers(*cpu); }, "CPU's map");
+  show(shadowGlTexture_, gl, glFrame_.revision, [&] { return layers(*gl); }, "GL's map");
+  if (cpu && gl && cpu->depth.size() == gl->depth.size()) {
+    const DepthBufferMetrics d = compareDepthBuffers(cpu->depth, gl->depth, cpu->projection.size,
+                                                     cpu->projection.size, cpu->projection.layers,
+                                                     kDefaultDepthTolerance);
+    show(shadowDiffTexture_, cpu, cpuFrame_.revision + (glFrame_.revision << 32),
+         [&] {
+           return depthDiffImage(cpu->depth, gl->depth, cpu->projection.size, cpu->projection.size,
+                                 cpu->projection.layers, kDefaultDepthTolerance);
+         },
+         "|CPU - GL|");
+    ImGui::Text("depth max diff %.3g, texels over %.0e: %llu", d.maxAbsDiff, kDefaultDepthTolerance,
+                static_cast<unsigned long long>(d.overTolerance));
+  }
+  char pass[96];
+  std::snprintf(pass, sizeof pass, "shadow pass: CPU %.1f ms, GL %.1f ms",
+                cpuFrame_.output ? cpuFrame_.output->stats.shadowMilliseconds : 0.0,
+                glFrame_.output ? glFrame_.output->stats.shadowMilliseconds : 0.0);
+  hintText(pass);
+  ImGui::TreePop();
+}
+
 // The environment keys of a material (issue 17): how much of the environment it reflects, whether
 // it refracts and with which ratio, and how the reflected share is found. Greyed without an
 // environment in the scene. Returns whether one changed.
@@ -878,6 +989,8 @@ void GuiApp::drawLightsSection() {
                                    "%.4f", ImGuiSliderFlags_AlwaysClamp);
       ImGui::EndDisabled();
       itemTooltip("Attenuation If = 1 / (A_C + A_L d + A_Q d^2), d in world units (point lights only).");
+      changed |= editShadow(light, lights);
+      if (light.shadow) drawShadowMapImages(i);
       ImGui::TreePop();
     }
     ImGui::PopID();

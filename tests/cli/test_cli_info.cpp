@@ -117,6 +117,22 @@ TEST(CliInfo, DirectionalLights) {
   EXPECT_EQ(nlohmann::json::parse(plain.out)["lights"][0]["type"], "point");
 }
 
+TEST(CliInfo, ShadowMaps) {
+  const std::string scene = kSource + "/assets/scenes/shadow_point_cube.json";
+  const RunResult text = runCli("info \"" + scene + "\"");
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  expectContains(text.out, "shadow map: cube 512^2 x 6, bias 0.0002 + 0.0002 tan, pcf 3x3, extent from the scene's bounds");
+  const RunResult json = runCli("info --json \"" + scene + "\"");
+  ASSERT_EQ(json.exitCode, 0) << json.err;
+  const nlohmann::json shadow = nlohmann::json::parse(json.out)["lights"][0]["shadow"];
+  EXPECT_EQ(shadow["kind"], "cube");
+  EXPECT_EQ(shadow["size"], 512);
+  EXPECT_EQ(shadow["layers"], 6);
+  EXPECT_EQ(shadow["pcf"], 3);
+  const RunResult plain = runCli("info --json \"" + kDefaultScene + "\"");
+  EXPECT_TRUE(nlohmann::json::parse(plain.out)["lights"][0]["shadow"].is_null());
+}
+
 TEST(CliInfo, NamesTheCpuTargetActuallyUsedAndEverySupportedOne) {
   const RunResult r = runCli("info --json \"" + kDefaultScene + "\"");
   ASSERT_EQ(r.exitCode, 0) << r.err;

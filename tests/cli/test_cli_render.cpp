@@ -134,6 +134,54 @@ TEST(CliCompare, ComparesTheFacesOfACapturedEnvironment) {
   EXPECT_FALSE(std::filesystem::exists(plain / "capture_cpu.png"));
 }
 
+TEST(CliCompare, AllBuffersRowsInPassOrderWithTheirImages) {
+  const auto dir = testDir("cli_compare_buffers");
+  const RunResult r = runCli("compare \"" + kSource + "/assets/scenes/shadow_directional.json\" --out-dir \"" +
+                                 dir.string() + "\" --width 160 --height 120 --repeat 1 --targets --all-buffers --json",
+                             dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json json = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(json["buffers"].is_array());
+  const std::vector<std::string> order = {"shadow_map",     "gbuffer_depth", "gbuffer_normal",
+                                          "gbuffer_albedo", "lighting",      "final"};
+  ASSERT_EQ(json["buffers"].size(), order.size());
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const nlohmann::json& row = json["buffers"][i];
+    EXPECT_EQ(row["buffer"], order[i]);
+    EXPECT_TRUE(row["available"].get<bool>()) << order[i];
+    EXPECT_TRUE(row["passes"].get<bool>()) << order[i];
+    for (const char* suffix : {"_cpu.png", "_gl.png", "_diff.png"}) {
+      const std::string file = "buffer_" + order[i] + (i == 0 ? "_light0" : "") + suffix;
+      EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
+    }
+  }
+  const nlohmann::json& map = json["buffers"][0];
+  EXPECT_EQ(map["light"], 0);
+  EXPECT_EQ(map["kind"], "depth");
+  EXPECT_EQ(map["width"], 2048);
+  EXPECT_EQ(map["layers"], 1);
+  EXPECT_EQ(map["compared"], 2048 * 2048);
+  EXPECT_LE(map["depth_max_diff"].get<double>(), 1e-4);
+  EXPECT_TRUE(json["first_differing_buffer"].is_null());
+  EXPECT_GT(json["cpu_shadow_ms"].get<double>(), 0.0);
+  EXPECT_GT(json["gl_shadow_ms"].get<double>(), 0.0);
+
+  // One buffer; a scene without a shadow says the map is not there; a bad name is refused.
+  const RunResult one = runCli("compare \"" + kDefaultScene + "\" --out-dir \"" + dir.string() +
+                                   "\" --width 80 --height 60 --repeat 1 --buffer shadow_map --json",
+                               dir);
+  ASSERT_EQ(one.exitCode, 0) << one.err;
+  const nlohmann::json none = nlohmann::json::parse(one.out);
+  ASSERT_EQ(none["buffers"].size(), 1u);
+  EXPECT_FALSE(none["buffers"][0]["available"].get<bool>());
+  EXPECT_NE(none["buffers"][0]["note"].get<std::string>().find("shadow"), std::string::npos);
+  const RunResult bad = runCli("compare \"" + kDefaultScene + "\" --out-dir \"" + dir.string() +
+                                   "\" --width 80 --height 60 --repeat 1 --buffer gbuffer_colour",
+                               dir);
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("--buffer: expected one of shadow_map|gbuffer_depth|"), std::string::npos) << bad.err;
+}
+
 TEST(CliCompare, ExitsOneOverAThreshold) {
   const auto dir = testDir("cli_compare");
   // The two renderers differ by at most 1 level on this scene, so a 0-level limit on a

@@ -73,6 +73,9 @@ inline constexpr SceneTolerance kSceneTolerances[] = {
     {"env_capture_glossy.json"},   // the same, prefiltered and irradiance light, through a dual paraboloid
     {"light_directional.json"},    // a cube on a floor under two directional lights (the GAMES202 write-up's light)
     {"light_directional_tangent.json"},  // the same lit in tangent space (the vertex stage's light vectors)
+    {"shadow_directional.json"},   // a cube and a ball on a floor, a directional light's 2048^2 map, PCF 3
+    {"shadow_point_cube.json"},    // a point light's cube shadow map (6 x 512^2) over boxes, a ball and a wall
+    {"shadow_peter_panning.json"},  // a thin card under a too-large bias: its shadow lost (peter-panning)
 };
 
 }  // namespace twr::suite

@@ -8,6 +8,7 @@
 #include "compare/artifacts.h"
 #include "compare/capture_faces.h"
 #include "compare/metrics.h"
+#include "compare/pass_buffers.h"
 #include "compare/report_json.h"
 #include "compare/thresholds.h"
 #include "glrender/gl_renderer.h"
@@ -94,16 +95,27 @@ std::vector<SuiteCase> suiteCases() {
       cases.push_back(c);
     }
   }
-  // Every height-field and environment scene at 1280x720 as well (issues 16 and 17).
+  // Every height-field, environment and shadow scene at 1280x720 as well (issues 16 to 18).
   for (const suite::SceneTolerance& row : suite::kSceneTolerances) {
     const std::string scene(row.scene);
-    if (scene.rfind("height_", 0) != 0 && scene.rfind("env_", 0) != 0) continue;
+    if (scene.rfind("height_", 0) != 0 && scene.rfind("env_", 0) != 0 && scene.rfind("shadow_", 0) != 0) continue;
     SuiteCase c;
     c.scene = scene;
     c.width = 1280;
     c.height = 720;
     c.name = stem(scene) + "_1280x720";
     cases.push_back(c);
+  }
+  // The shadow views on the shadowed scenes (the default scene shows them dimmed: no shadow).
+  for (const char* scene : {"shadow_directional.json", "shadow_point_cube.json"}) {
+    for (View view : {View::Shadow, View::LightDepth}) {
+      SuiteCase c;
+      c.scene = scene;
+      c.view = view;
+      c.overrideView = true;
+      c.name = stem(scene) + "_view_" + std::string(toString(view));
+      cases.push_back(c);
+    }
   }
   for (const char* cull : {"none", "back", "front"}) {
     for (const char* front : {"ccw", "cw"}) {
@@ -175,6 +187,35 @@ TEST_P(SceneSuite, CpuMatchesLlvmpipeWithinTolerance) {
   if (cpu.capturedFaces && gl.capturedFaces) {
     faces = compareCapturedFaces(*cpu.capturedFaces, *gl.capturedFaces);
     for (ThresholdViolation& v : checkCapturedFaces(*faces, limits)) violations.push_back(std::move(v));
+  }
+
+  // Each light's shadow map, as each renderer drew it: window depth within the depth
+  // tolerance the frame's classification uses, texel for texel (the diff images are written
+  // when one is not).
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    if (!scene.lights[i].shadow) continue;
+    ASSERT_GT(cpu.shadowMaps.size(), i);
+    ASSERT_GT(gl.shadowMaps.size(), i);
+    ASSERT_TRUE(cpu.shadowMaps[i] && gl.shadowMaps[i]) << "light " << i << " has a shadow but no map";
+    const ShadowMap& a = *cpu.shadowMaps[i];
+    const ShadowMap& b = *gl.shadowMaps[i];
+    ASSERT_EQ(a.depth.size(), b.depth.size());
+    const DepthBufferMetrics d = compareDepthBuffers(a.depth, b.depth, a.projection.size, a.projection.size,
+                                                     a.projection.layers, kDefaultDepthTolerance);
+    EXPECT_GT(std::count_if(a.depth.begin(), a.depth.end(), [](float z) { return z < 1.0f; }), 0)
+        << "light " << i << "'s map holds no surface: the comparison would prove nothing";
+    if (d.overTolerance > 0 || d.nonFinite > 0) {
+      const std::string dir = std::string(TWINRASTER_TEST_OUT) + "/suite/" + c.name;
+      std::filesystem::create_directories(dir);
+      const std::string stem = dir + "/shadow_map_light" + std::to_string(i);
+      savePng(stem + "_cpu.png", depthLayersImage(a.depth, a.projection.size, a.projection.size, a.projection.layers));
+      savePng(stem + "_gl.png", depthLayersImage(b.depth, a.projection.size, a.projection.size, a.projection.layers));
+      savePng(stem + "_diff.png", depthDiffImage(a.depth, b.depth, a.projection.size, a.projection.size,
+                                                 a.projection.layers, kDefaultDepthTolerance));
+      ADD_FAILURE() << "light " << i << "'s shadow map: " << d.overTolerance << " texels differ by more than "
+                    << kDefaultDepthTolerance << " (max " << d.maxAbsDiff << "), " << d.nonFinite
+                    << " not finite; images in " << stem << "_*.png";
+    }
   }
 
   EXPECT_GT(m.coveredCpu, 0u) << "the scene draws nothing: the test would prove nothing";

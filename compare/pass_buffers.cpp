@@ -1,0 +1,192 @@
+#include "compare/pass_buffers.h"
+
+#include "compare/colours.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace twr {
+
+namespace {
+
+constexpr std::pair<PassBuffer, std::string_view> kNames[] = {
+    {PassBuffer::ShadowMap, "shadow_map"},       {PassBuffer::GbufferDepth, "gbuffer_depth"},
+    {PassBuffer::GbufferNormal, "gbuffer_normal"}, {PassBuffer::GbufferAlbedo, "gbuffer_albedo"},
+    {PassBuffer::Lighting, "lighting"},          {PassBuffer::Final, "final"}};
+
+// Gap between two layers in the side-by-side images, pixels.
+constexpr int kLayerGapPx = 4;
+constexpr std::uint32_t kGapRgba = 0x202020FFu;  // dark grey, opaque (0xRRGGBBAA)
+
+// The texel of layer l at (x, y), rows bottom first.
+std::size_t texelIndex(int x, int y, int layer, int width, int height) {
+  return (static_cast<std::size_t>(layer) * static_cast<std::size_t>(height) + static_cast<std::size_t>(y)) *
+             static_cast<std::size_t>(width) +
+         static_cast<std::size_t>(x);
+}
+
+template <typename Colour>
+Image layersImage(int width, int height, int layers, const Colour& colour) {
+  Image image = makeImage(layers * width + (layers - 1) * kLayerGapPx, height, kGapRgba);
+  for (int l = 0; l < layers; ++l) {
+    for (int y = 0; y < height; ++y) {
+      for (int x = 0; x < width; ++x) {
+        const Rgb8 c = colour(texelIndex(x, y, l, width, height));
+        std::uint8_t* p = image.pixel(l * (width + kLayerGapPx) + x, height - 1 - y);  // top row first
+        p[0] = c.r;
+        p[1] = c.g;
+        p[2] = c.b;
+        p[3] = 255;
+      }
+    }
+  }
+  return image;
+}
+
+}  // namespace
+
+std::string_view toString(PassBuffer buffer) {
+  for (const auto& [b, name] : kNames) {
+    if (b == buffer) return name;
+  }
+  return "?";
+}
+
+bool parse(std::string_view name, PassBuffer& out) {
+  for (const auto& [b, n] : kNames) {
+    if (n == name) {
+      out = b;
+      return true;
+    }
+  }
+  return false;
+}
+
+std::string allPassBufferNames() {
+  std::string names;
+  for (const auto& [b, n] : kNames) names += (names.empty() ? "" : "|") + std::string(n);
+  return names;
+}
+
+View viewOfBuffer(PassBuffer buffer, View sceneView) {
+  if (buffer == PassBuffer::GbufferNormal) return View::Normal;
+  if (buffer == PassBuffer::GbufferAlbedo) return View::Albedo;
+  return sceneView;
+}
+
+std::string_view passOfBuffer(PassBuffer buffer) {
+  switch (buffer) {
+    case PassBuffer::ShadowMap: return "shadow";
+    case PassBuffer::GbufferDepth:
+    case PassBuffer::GbufferNormal:
+    case PassBuffer::GbufferAlbedo: return "gbuffer";
+    case PassBuffer::Lighting: return "lighting";
+    case PassBuffer::Final: return "final";
+  }
+  return "?";
+}
+
+DepthBufferMetrics compareDepthBuffers(const std::vector<float>& a, const std::vector<float>& b, int width, int height,
+                                       int layers, double tolerance) {
+  DepthBufferMetrics m;
+  m.width = width;
+  m.height = height;
+  m.layers = layers;
+  m.tolerance = tolerance;
+  double sum = 0.0;
+  for (int l = 0; l < layers; ++l) {
+    for (int y = 0; y < height; ++y) {
+      for (int x = 0; x < width; ++x) {
+        const std::size_t i = texelIndex(x, y, l, width, height);
+        if (i >= a.size() || i >= b.size()) continue;
+        if (!std::isfinite(a[i]) || !std::isfinite(b[i])) {
+          ++m.nonFinite;
+          continue;
+        }
+        const double d = std::fabs(static_cast<double>(a[i]) - static_cast<double>(b[i]));
+        ++m.compared;
+        sum += d;
+        if (d > tolerance) ++m.overTolerance;
+        if (d > m.maxAbsDiff) {
+          m.maxAbsDiff = d;
+          m.maxX = x;
+          m.maxY = y;
+          m.maxLayer = l;
+        }
+      }
+    }
+  }
+  m.meanAbsDiff = m.compared > 0 ? sum / static_cast<double>(m.compared) : 0.0;
+  return m;
+}
+
+Image depthLayersImage(const std::vector<float>& depth, int width, int height, int layers) {
+  // Stretched over the depths drawn (below the clear value 1): a perspective map's depths
+  // crowd near 1 and would all look white.
+  float lo = 1.0f, hi = 0.0f;
+  for (const float d : depth) {
+    if (!std::isfinite(d) || d >= 1.0f) continue;
+    lo = std::min(lo, d);
+    hi = std::max(hi, d);
+  }
+  const float range = hi > lo ? hi - lo : 1.0f;
+  return layersImage(width, height, layers, [&](std::size_t i) {
+    const float d = i < depth.size() ? depth[i] : 1.0f;
+    if (!std::isfinite(d)) return kColourCpuOnly;
+    const float t = d >= 1.0f ? 1.0f : std::clamp((d - lo) / range, 0.0f, 1.0f);
+    const auto g = static_cast<std::uint8_t>(std::lround(t * 255.0f));
+    return Rgb8{g, g, g};
+  });
+}
+
+Image depthDiffImage(const std::vector<float>& a, const std::vector<float>& b, int width, int height, int layers,
+                     double tolerance) {
+  const HeatRamp ramp;
+  return layersImage(width, height, layers, [&](std::size_t i) {
+    if (i >= a.size() || i >= b.size() || !std::isfinite(a[i]) || !std::isfinite(b[i])) return kColourCpuOnly;
+    const double d = std::fabs(static_cast<double>(a[i]) - static_cast<double>(b[i]));
+    // A difference of `tolerance` reaches the top of the ramp; any difference shows.
+    const int levels = d == 0.0 ? 0 : std::clamp(static_cast<int>(std::ceil(255.0 * d / tolerance)), 1, 255);
+    return heatColour(levels, ramp);
+  });
+}
+
+nlohmann::json bufferRowToJson(const BufferRow& row) {
+  nlohmann::json j = {{"buffer", std::string(toString(row.buffer))},
+                      {"pass", std::string(passOfBuffer(row.buffer))},
+                      {"available", row.available},
+                      {"kind", row.depth ? "depth" : "colour"}};
+  if (row.light >= 0) j["light"] = row.light;
+  if (!row.available) {
+    j["note"] = row.note;
+    j["passes"] = nullptr;
+    return j;
+  }
+  if (row.depth) {
+    const DepthBufferMetrics& m = row.depthMetrics;
+    j["width"] = m.width;
+    j["height"] = m.height;
+    j["layers"] = m.layers;
+    j["compared"] = m.compared;
+    j["non_finite"] = m.nonFinite;
+    j["depth_max_diff"] = m.maxAbsDiff;
+    j["depth_mean_diff"] = m.meanAbsDiff;
+    j["depth_tolerance"] = m.tolerance;
+    j["over_tolerance"] = m.overTolerance;
+    j["max_at"] = {{"x", m.maxX}, {"y", m.maxY}, {"layer", m.maxLayer}};
+  } else {
+    const CompareMetrics& m = row.colourMetrics;
+    j["width"] = m.width;
+    j["height"] = m.height;
+    j["max_abs_diff"] = m.maxAbsDiff;
+    j["mean_abs_diff"] = m.meanAbsDiff;
+    j["over_1"] = m.over1;
+    j["over_3"] = m.over3;
+    j["coverage_mismatch"] = m.coverageMismatch;
+    j["depth_max_diff"] = m.depthMaxDiff;
+  }
+  j["passes"] = row.passes;
+  return j;
+}
+
+}  // namespace twr

@@ -1,0 +1,76 @@
+// Every pass's buffers, diffed between the renderers (docs/compare.md, "Buffers"): which
+// buffer of which pass the two first part in. `compare --buffer NAME` diffs one,
+// `--all-buffers` writes one row per buffer, in pass order, to metrics.json's "buffers".
+//   shadow_map      each shadowed light's map (every layer), window depth: the shadow pass;
+//   gbuffer_depth   the frame's window depth;
+//   gbuffer_normal  the world normal each pixel's surface writes, as the `normal` view shows it;
+//   gbuffer_albedo  its albedo times kd, as the `albedo` view shows it;
+//   lighting        the lit surfaces (the frame without its sky box);
+//   final           the frame as written.
+// The G-buffer rows are what a G-buffer pass writes per pixel, drawn by the forward pipeline's
+// own views (the deferred pipeline's G-buffer, settings.pipeline, is the next step).
+#pragma once
+
+#include "compare/metrics.h"
+#include "scene/image.h"
+#include "scene/renderer.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace twr {
+
+enum class PassBuffer { ShadowMap, GbufferDepth, GbufferNormal, GbufferAlbedo, Lighting, Final };
+inline constexpr PassBuffer kAllPassBuffers[] = {PassBuffer::ShadowMap,     PassBuffer::GbufferDepth,
+                                                 PassBuffer::GbufferNormal, PassBuffer::GbufferAlbedo,
+                                                 PassBuffer::Lighting,      PassBuffer::Final};
+std::string_view toString(PassBuffer buffer);
+bool parse(std::string_view name, PassBuffer& out);  // false for an unknown name
+std::string allPassBufferNames();                   // "shadow_map|gbuffer_depth|..."
+// Whether the buffer holds window depths (else 8-bit colours).
+constexpr bool isDepthBuffer(PassBuffer b) { return b == PassBuffer::ShadowMap || b == PassBuffer::GbufferDepth; }
+// The view a colour buffer is drawn in (final and lighting: the scene's own).
+View viewOfBuffer(PassBuffer buffer, View sceneView);
+
+// Two depth buffers of the same shape, texel by texel (layers * height * width floats).
+struct DepthBufferMetrics {
+  int width = 0, height = 0, layers = 0;
+  std::uint64_t compared = 0;       // texels finite on both sides
+  std::uint64_t nonFinite = 0;      // texels non-finite on either side
+  double maxAbsDiff = 0.0;          // window depth units
+  double meanAbsDiff = 0.0;
+  std::uint64_t overTolerance = 0;  // |a - b| > tolerance (exclusive)
+  double tolerance = 0.0;
+  int maxX = 0, maxY = 0, maxLayer = 0;  // where maxAbsDiff is (rows bottom first)
+};
+DepthBufferMetrics compareDepthBuffers(const std::vector<float>& a, const std::vector<float>& b, int width, int height,
+                                       int layers, double tolerance);
+
+// A depth buffer's layers side by side as grey (the nearest depth drawn black, the farthest
+// below 1 near white, the clear value 1 white), top row first; and the
+// difference's heat map on the same layout (black 0, the heat ramp up to `tolerance` and
+// beyond; magenta where either side is not finite).
+Image depthLayersImage(const std::vector<float>& depth, int width, int height, int layers);
+Image depthDiffImage(const std::vector<float>& a, const std::vector<float>& b, int width, int height, int layers,
+                     double tolerance);
+
+// One row of `--all-buffers`: the buffer, the pass that writes it, whether both renderers
+// produced it, its metrics and whether it meets the targets.
+struct BufferRow {
+  PassBuffer buffer = PassBuffer::Final;
+  int light = -1;             // shadow_map: the light's index
+  bool available = false;     // both renderers produced it
+  std::string note;           // why not, when not
+  bool depth = false;         // depth metrics (else colour metrics)
+  DepthBufferMetrics depthMetrics;
+  CompareMetrics colourMetrics;
+  bool passes = true;         // within the targets (depth: overTolerance 0)
+};
+nlohmann::json bufferRowToJson(const BufferRow& row);
+// The pass that writes the buffer: "shadow", "gbuffer", "lighting", "final".
+std::string_view passOfBuffer(PassBuffer buffer);
+
+}  // namespace twr

@@ -1,0 +1,58 @@
+#include "softrender/shadow_pass.h"
+
+#include <chrono>
+#include <cstring>
+
+namespace twr {
+
+RenderSettings shadowPassSettings(const RenderSettings& frame) {
+  RenderSettings s;
+  s.cull = frame.cull;
+  s.frontFace = frame.frontFace;
+  s.view = View::Depth;
+  return s;
+}
+
+ShadowMaps renderShadowMaps(const Scene& scene, const RenderSettings& settings, const DepthDraw& draw,
+                            double& milliseconds) {
+  milliseconds = 0.0;
+  if (!sceneHasShadows(scene)) return {};
+  const auto start = std::chrono::steady_clock::now();
+  const RenderSettings passSettings = shadowPassSettings(settings);
+  const std::vector<DrawItem> drawItems = flattenScene(scene);
+  for (const DrawItem& item : drawItems) validateIndices(item);
+  const WorldBounds bounds = worldBoundsOf(scene);
+  ShadowMaps maps(scene.lights.size());
+  std::vector<ItemState> items;
+  for (std::size_t i = 0; i < scene.lights.size() && i < static_cast<std::size_t>(kMaxLights); ++i) {
+    const Light& light = scene.lights[i];
+    if (!light.shadow) continue;
+    const auto lightStart = std::chrono::steady_clock::now();
+    auto map = std::make_shared<ShadowMap>();
+    map->projection = shadowProjectionFor(light, bounds);
+    const int size = map->projection.size;
+    const std::size_t layerTexels = static_cast<std::size_t>(size) * static_cast<std::size_t>(size);
+    map->depth.resize(layerTexels * static_cast<std::size_t>(map->projection.layers));
+    for (int layer = 0; layer < map->projection.layers; ++layer) {
+      items.clear();
+      for (const DrawItem& item : drawItems) {
+        items.push_back(makeItemState(item, map->projection.clipFromWorld[static_cast<std::size_t>(layer)], scene,
+                                      passSettings, size, size));
+      }
+      const Framebuffer& fb = draw(items, size);
+      // The framebuffer is stored top row first; the map holds rows bottom first.
+      float* out = map->depth.data() + static_cast<std::size_t>(layer) * layerTexels;
+      for (int y = 0; y < size; ++y) {
+        std::memcpy(out + static_cast<std::size_t>(y) * static_cast<std::size_t>(size), &fb.depth[fb.index(0, y)],
+                    static_cast<std::size_t>(size) * sizeof(float));
+      }
+    }
+    map->milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - lightStart).count();
+    maps[i] = std::move(map);
+  }
+  milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return maps;
+}
+
+}  // namespace twr

@@ -1,0 +1,124 @@
+// The shadow-map test over lanes (softrender/shadow-inl.h) on maps made here, where every
+// answer is known: which texel a point reads, the comparison with its bias, PCF's share at an
+// edge, the outside of the map, a cube map's face; float and double alike.
+#include "softrender/shade.h"
+
+#include "scene/shadow_map.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace twr {
+namespace {
+
+constexpr int kSize = 8;
+
+// An orthographic map whose clip space is world space (s = 0.5 x + 0.5, depth = 0.5 z + 0.5):
+// texels with x < kSize / 2 hold `near` (an occluder), the others 1 (nothing).
+ShadowMap halfOccludedMap(float near, int pcf, vec2 bias) {
+  ShadowMap map;
+  map.projection.kind = ShadowKind::Orthographic;
+  map.projection.size = kSize;
+  map.projection.layers = 1;
+  map.projection.clipFromWorld[0] = mat4(1.0f);
+  map.projection.pcf = pcf;
+  map.projection.bias = bias;
+  map.depth.assign(kSize * kSize, 1.0f);
+  for (int y = 0; y < kSize; ++y) {
+    for (int x = 0; x < kSize / 2; ++x) map.depth[static_cast<std::size_t>(y * kSize + x)] = near;
+  }
+  return map;
+}
+
+// World x of texel column x's centre.
+float worldXOf(int texel) { return (static_cast<float>(texel) + 0.5f) / kSize * 2.0f - 1.0f; }
+
+template <typename T>
+ShadowTestL<T> testAt(const ShadowMap& map, vec3 p, vec3 n = vec3(0, 0, 1), vec3 l = vec3(0, 0, 1)) {
+  return shadowTestLanes<T>(makeShadowUniform<T>(&map), Vec3T<T>(p), Vec3T<T>(n), Vec3T<T>(l));
+}
+
+TEST(ShadowTest, BehindTheOccluderIsShadowedInFrontIsLit) {
+  const ShadowMap map = halfOccludedMap(0.5f, 1, vec2(0.001f, 0.0f));
+  const float x = worldXOf(1);
+  const ShadowTestL<float> behind = testAt<float>(map, vec3(x, 0.0f, 0.2f));  // depth 0.6
+  EXPECT_EQ(behind.visibility, 0.0f);
+  EXPECT_FLOAT_EQ(behind.depth, 0.6f);
+  EXPECT_EQ(behind.stored, 0.5f);
+  EXPECT_EQ(behind.inside, 1.0f);
+  EXPECT_EQ(testAt<float>(map, vec3(x, 0.0f, -0.2f)).visibility, 1.0f);  // depth 0.4, nearer than the map
+  EXPECT_EQ(testAt<float>(map, vec3(worldXOf(6), 0.0f, 0.2f)).visibility, 1.0f);  // no occluder there
+}
+
+TEST(ShadowTest, TheBiasDecidesAtTheOccludersOwnDepth) {
+  // A surface exactly at the stored depth: shadowed by itself without bias (acne), lit with it.
+  const vec3 onSurface(worldXOf(1), 0.0f, 0.0f);  // depth 0.5, the occluder's
+  EXPECT_EQ(testAt<float>(halfOccludedMap(0.5f - 1e-4f, 1, vec2(0.0f)), onSurface).visibility, 0.0f);
+  EXPECT_EQ(testAt<float>(halfOccludedMap(0.5f - 1e-4f, 1, vec2(1e-3f, 0.0f)), onSurface).visibility, 1.0f);
+  // The slope term: constant + slope tan(theta), theta between the normal and the light.
+  const ShadowMap sloped = halfOccludedMap(0.5f, 1, vec2(0.001f, 0.01f));
+  const vec3 n(0.0f, 0.0f, 1.0f);
+  EXPECT_FLOAT_EQ(testAt<float>(sloped, onSurface, n, n).bias, 0.001f);
+  const vec3 at60(std::sin(glm::radians(60.0f)), 0.0f, 0.5f);  // cos 0.5: tan sqrt(3)
+  EXPECT_NEAR(testAt<float>(sloped, onSurface, n, at60).bias, 0.001f + 0.01f * std::sqrt(3.0f), 1e-6f);
+  // Edge-on: the tangent is clamped.
+  EXPECT_NEAR(testAt<float>(sloped, onSurface, n, vec3(1, 0, 0)).bias, 0.001f + 0.01f * kMaxShadowSlopeTangent, 1e-6f);
+}
+
+TEST(ShadowTest, PcfAveragesTheKernelAtAnEdge) {
+  // Column kSize / 2 is the first lit one: a 3 x 3 kernel there reads one shadowed column.
+  const vec3 p(worldXOf(kSize / 2), 0.0f, 0.2f);
+  EXPECT_EQ(testAt<float>(halfOccludedMap(0.5f, 1, vec2(0.0f)), p).visibility, 1.0f);
+  EXPECT_FLOAT_EQ(testAt<float>(halfOccludedMap(0.5f, 3, vec2(0.0f)), p).visibility, 6.0f / 9.0f);
+  EXPECT_FLOAT_EQ(testAt<float>(halfOccludedMap(0.5f, 5, vec2(0.0f)), p).visibility, 15.0f / 25.0f);
+  // At the map's border the kernel is clamped to the edge texels (no wrap to the other side).
+  const vec3 border(worldXOf(kSize - 1), worldXOf(0), 0.2f);
+  EXPECT_EQ(testAt<float>(halfOccludedMap(0.5f, 5, vec2(0.0f)), border).visibility, 1.0f);
+}
+
+TEST(ShadowTest, OutsideTheMapIsLit) {
+  const ShadowMap map = halfOccludedMap(0.0f, 3, vec2(0.0f));
+  for (const vec3 p : {vec3(1.5f, 0.0f, 0.2f), vec3(-1.01f, 0.0f, 0.2f), vec3(worldXOf(1), 1.2f, 0.2f),
+                       vec3(worldXOf(1), 0.0f, 1.5f)}) {
+    const ShadowTestL<float> t = testAt<float>(map, p);
+    EXPECT_EQ(t.visibility, 1.0f) << p.x << " " << p.y << " " << p.z;
+    EXPECT_EQ(t.inside, 0.0f);
+    EXPECT_EQ(t.stored, 1.0f);
+  }
+}
+
+TEST(ShadowTest, DoubleLanesAgreeWithFloat) {
+  const ShadowMap map = halfOccludedMap(0.5f, 3, vec2(0.0005f, 0.002f));
+  for (int i = 0; i < 64; ++i) {
+    const vec3 p(-1.0f + 2.0f * static_cast<float>(i) / 63.0f, 0.3f, 0.1f * static_cast<float>(i % 5) - 0.2f);
+    const vec3 l = glm::normalize(vec3(0.2f, 0.1f, 1.0f));
+    const ShadowTestL<float> f = testAt<float>(map, p, vec3(0, 0, 1), l);
+    const ShadowTestL<double> d = testAt<double>(map, p, vec3(0, 0, 1), l);
+    EXPECT_NEAR(d.visibility, f.visibility, 1e-6) << i;
+    EXPECT_NEAR(d.depth, f.depth, 1e-6) << i;
+  }
+}
+
+TEST(ShadowTest, CubeMapReadsTheFaceOfTheDirection) {
+  Light light;
+  light.posWorld = vec3(0.0f);
+  light.shadow = ShadowDesc{kSize, vec2(0.0f), 1, 10.0f};
+  WorldBounds bounds{vec3(-5.0f), vec3(5.0f)};
+  ShadowMap map;
+  map.projection = shadowProjectionFor(light, bounds);
+  ASSERT_EQ(map.projection.kind, ShadowKind::Cube);
+  // Layer f holds an occluder at distance 1 on face 4 (+Z) only; the others hold nothing.
+  map.depth.assign(static_cast<std::size_t>(kCubeShadowLayers * kSize * kSize), 1.0f);
+  const float occluder = cubeShadowDepth(map.projection, 1.0f);
+  std::fill(map.depth.begin() + 4 * kSize * kSize, map.depth.begin() + 5 * kSize * kSize, occluder);
+  const vec3 n(0.0f, 0.0f, -1.0f);
+  EXPECT_EQ(testAt<float>(map, vec3(0.3f, -0.2f, 2.0f), n, -n).visibility, 0.0f);  // +Z, behind the occluder
+  EXPECT_EQ(testAt<float>(map, vec3(0.3f, -0.2f, 0.5f), n, -n).visibility, 1.0f);  // +Z, in front of it
+  EXPECT_EQ(testAt<float>(map, vec3(0.3f, -0.2f, -2.0f), n, -n).visibility, 1.0f);  // -Z
+  EXPECT_EQ(testAt<float>(map, vec3(3.0f, -0.2f, 2.0f), n, -n).visibility, 1.0f);   // +X
+  EXPECT_FLOAT_EQ(testAt<float>(map, vec3(0.3f, -0.2f, 2.0f), n, -n).depth, cubeShadowDepth(map.projection, 2.0f));
+}
+
+}  // namespace
+}  // namespace twr
