@@ -43,9 +43,9 @@ std::string sharedConstants() {
                 "#define MAX_SHADOWED_LIGHTS %d\n"
                 "#define MAX_SHADOW_SLOPE_TANGENT %.9e\n"
                 "#define MIN_SHADOW_COSINE %.9e\n"
-                "#define SHADOW_ACNE_WINDOW %.9e\n",
+                "#define SHADOW_ACNE_TEXELS %.9e\n",
                 kMaxShadowedLights, static_cast<double>(kMaxShadowSlopeTangent), static_cast<double>(kMinShadowCosine),
-                static_cast<double>(kShadowAcneWindow));
+                static_cast<double>(kShadowAcneTexels));
   return std::string(buffer) + shadow + colour("SHADOW_VIEW_LIT", kShadowViewLit) +
          colour("SHADOW_VIEW_SHADOWED", kShadowViewShadowed) + colour("SHADOW_VIEW_ACNE", kShadowViewAcne) +
          colour("SHADOW_VIEW_AWAY", kShadowViewAway) + colour("LIGHT_DEPTH_OUTSIDE", kLightDepthOutside);

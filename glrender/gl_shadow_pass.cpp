@@ -118,6 +118,8 @@ void GlShadowMaps::bind(GLuint program) const {
     glUniform1f(uniformLocation(program, name("size").c_str()), static_cast<float>(p.size));
     glUniform1f(uniformLocation(program, name("biasConstant").c_str()), p.bias.x);
     glUniform1f(uniformLocation(program, name("biasSlope").c_str()), p.bias.y);
+    glUniform1f(uniformLocation(program, name("texelWorld").c_str()), p.texelWorld);
+    glUniform1f(uniformLocation(program, name("depthPerWorld").c_str()), p.depthPerWorld);
     glUniform1i(uniformLocation(program, name("pcf").c_str()), p.pcf);
     glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + kFirstShadowUnit + s));
     glBindTexture(GL_TEXTURE_2D_ARRAY, slot.texture.id());

@@ -1,7 +1,6 @@
 #include "scene/shadow_map.h"
 
-#include "scene/camera.h"
-#include "scene/environment_capture.h"
+#include "scene/environment.h"
 #include "scene/scene.h"
 
 #include <algorithm>
@@ -19,6 +18,8 @@ constexpr float kOrthoDepthMargin = 1.05f;
 constexpr float kCubeFarMargin = 1.01f;
 // The smallest extent used (world units): a scene of one point still gets a valid map.
 constexpr float kMinShadowExtent = 1e-3f;
+// The farthest a cube map reaches (world units): 2 far near stays finite in float.
+constexpr float kMaxShadowFar = 1e18f;
 // Above this |y| of the light direction the light camera's up is +Z instead of +Y (unitless).
 constexpr float kMaxUpAlignment = 0.99f;
 
@@ -30,6 +31,35 @@ mat4 orthographic(float halfWidth, float near, float far) {
   m[2][2] = -2.0f / (far - near);
   m[3][2] = -(far + near) / (far - near);
   return m;
+}
+
+// A 90-degree square perspective (a cube face), the depth terms in double rounded once (as
+// camera.cpp's clipFromView).
+mat4 cubeFacePerspective(double near, double far) {
+  mat4 m(0.0f);
+  m[0][0] = 1.0f;
+  m[1][1] = 1.0f;
+  m[2][2] = static_cast<float>((far + near) / (near - far));
+  m[2][3] = -1.0f;
+  m[3][2] = static_cast<float>(2.0 * far * near / (near - far));
+  return m;
+}
+
+// The course camera's view matrix (camera.h: rows R, U, D, then translate(-eye)) looking from
+// `eye` along `forward` with `up`, in double rounded once. Built here rather than through a
+// Camera so that a light far from the scene (eye + forward == eye in float) still gets a map.
+mat4 viewAlong(const glm::dvec3& eye, const glm::dvec3& forward, const glm::dvec3& up) {
+  const glm::dvec3 d = -glm::normalize(forward);
+  const glm::dvec3 r = glm::normalize(glm::cross(up, d));
+  const glm::dvec3 u = glm::cross(d, r);
+  glm::dmat4 view(1.0);
+  for (int i = 0; i < 3; ++i) {
+    view[i][0] = r[i];
+    view[i][1] = u[i];
+    view[i][2] = d[i];
+  }
+  view[3] = glm::dvec4(-glm::dot(r, eye), -glm::dot(u, eye), -glm::dot(d, eye), 1.0);
+  return mat4(view);
 }
 
 }  // namespace
@@ -69,11 +99,12 @@ ShadowProjection shadowProjectionFor(const Light& light, const WorldBounds& boun
     const float radius = std::max(0.5f * glm::length(bounds.hi - bounds.lo), kMinShadowExtent);
     const float halfWidth = desc.extent > 0.0f ? desc.extent : radius;
     const vec3 dir = safeNormalize(light.directionWorld, vec3(0.0f, -1.0f, 0.0f));
-    Camera camera;
-    camera.position = centre - dir * (radius * kOrthoDepthMargin);
-    camera.target = centre;
-    camera.up = std::fabs(dir.y) > kMaxUpAlignment ? vec3(0.0f, 0.0f, -1.0f) : vec3(0.0f, 1.0f, 0.0f);
-    p.clipFromWorld[0] = orthographic(halfWidth, 0.0f, 2.0f * radius * kOrthoDepthMargin) * viewFromWorld(camera);
+    const glm::dvec3 up = std::fabs(dir.y) > kMaxUpAlignment ? glm::dvec3(0.0, 0.0, -1.0) : glm::dvec3(0.0, 1.0, 0.0);
+    const glm::dvec3 eye = glm::dvec3(centre) - glm::dvec3(dir) * (static_cast<double>(radius) * kOrthoDepthMargin);
+    const float depthRange = 2.0f * radius * kOrthoDepthMargin;
+    p.clipFromWorld[0] = orthographic(halfWidth, 0.0f, depthRange) * viewAlong(eye, glm::dvec3(dir), up);
+    p.texelWorld = 2.0f * halfWidth / static_cast<float>(p.size);
+    p.depthPerWorld = 1.0f / depthRange;  // window depth 0.5 z_ndc + 0.5 spans the range once
     return p;
   }
   p.kind = ShadowKind::Cube;
@@ -87,19 +118,25 @@ ShadowProjection shadowProjectionFor(const Light& light, const WorldBounds& boun
       far = std::max(far, glm::length(c - light.posWorld) * kCubeFarMargin);
     }
   }
-  far = std::max(far, kMinShadowExtent);
-  Camera like;
-  like.far = far;
-  like.near = far * kCubeShadowNearRatio;
-  p.near = like.near;
-  p.far = like.far;
+  // Within float's range, and never below the smallest extent (a light far from a tiny scene
+  // still gets a valid, if useless, map).
+  far = std::clamp(far, kMinShadowExtent, kMaxShadowFar);
+  p.near = far * kCubeShadowNearRatio;
+  p.far = far;
+  const mat4 projection = cubeFacePerspective(p.near, p.far);
+  p.depthA = projection[2][2];
+  p.depthB = projection[3][2];
   for (int face = 0; face < kCubeShadowLayers; ++face) {
-    const Camera camera = captureCamera(face, light.posWorld, like);
-    const mat4 projection = clipFromView(camera, 1.0f);
-    p.depthA = projection[2][2];
-    p.depthB = projection[3][2];
-    p.clipFromWorld[static_cast<std::size_t>(face)] = projection * viewFromWorld(camera);
+    // The face's middle direction and its increasing-t direction (GL's table, exact unit axes),
+    // as scene/environment_capture.h's face cameras.
+    const glm::dvec3 forward = directionFromCubeCoord(face, 0.5, 0.5);
+    const glm::dvec3 towardsT = directionFromCubeCoord(face, 0.5, 1.0) - forward;
+    p.clipFromWorld[static_cast<std::size_t>(face)] = projection * viewAlong(glm::dvec3(light.posWorld), forward, towardsT);
   }
+  // d(window depth) / dm = 0.5 |depthB| / m^2 (cubeShadowDepth's derivative); a texel at m is
+  // 2 m / size wide (a 90-degree face).
+  p.texelWorld = 2.0f / static_cast<float>(p.size);
+  p.depthPerWorld = 0.5f * std::fabs(p.depthB);
   return p;
 }
 
@@ -116,7 +153,7 @@ int cubeFaceOf(const vec3& d) {
 
 std::string describeShadow(const ShadowProjection& p) {
   char text[160];
-  std::snprintf(text, sizeof text, "%s %d^2%s, bias %g + %g tan, pcf %d",
+  std::snprintf(text, sizeof text, "%s %d^2%s, bias %g + %g texel slope, pcf %d",
                 p.kind == ShadowKind::Orthographic ? "orthographic" : "cube", p.size,
                 p.kind == ShadowKind::Cube ? " x 6" : "", static_cast<double>(p.bias.x), static_cast<double>(p.bias.y),
                 p.pcf);

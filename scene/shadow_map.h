@@ -17,8 +17,13 @@
 // The test (written once over lanes in softrender/shadow-inl.h, and in shaders/shadow.glsl):
 //   (s, t, z) = the fragment's position in the map (layer: the cube face of P - light, by
 //               the largest axis, as a cube map picks its face);
-//   bias      = constant + slope * min(tan(theta), kMaxShadowSlopeTangent), theta the angle
-//               between the surface's normal and the light, in depth units;
+//   texel     = one texel's width in world units at the fragment (orthographic: 2 extent /
+//               size; cube: 2 m / size, m the distance along the face's axis);
+//   bias      = (constant + slope * min(tan(theta), kMaxShadowSlopeTangent) * texel *
+//               (1 + pcf / 2)) * the map's depth units per world unit at the fragment;
+//               theta the angle between the surface's normal and the light: the constant in
+//               world units along the light, the slope in texels of the surface's own rise
+//               over the kernel's reach, so one setting holds at every map side and kernel;
 //   visibility = mean over the pcf x pcf texels around floor((s, t) size), clamped to the
 //               map's edges, of [z - bias <= stored depth];
 // a fragment outside the map (s or t outside [0, 1), z > 1) is lit.
@@ -55,12 +60,13 @@ inline constexpr float kMinShadowCosine = 1e-4f;
 // A point light's cube map: near plane = far * this (unitless), the depth buffer's
 // precision spread over the three decades nearest the light.
 inline constexpr float kCubeShadowNearRatio = 1e-3f;
-// The `shadow` view calls a shadowed fragment acne when the map's surface lies within this
-// many depth units in front of it: the surface shadowing itself, not another one.
-inline constexpr float kShadowAcneWindow = 0.002f;
+// The `shadow` view calls a shadowed fragment acne when the map's surface lies less than this
+// many of the surface's own texel rises (tan(theta) texel, at least one texel) in front of its
+// biased depth: the surface shadowing itself, not another one (unitless).
+inline constexpr float kShadowAcneTexels = 2.0f;
 
 // The `shadow` view's colours (linear RGB): lit, in shadow, acne (a surface shadowing itself:
-// the map's surface within kShadowAcneWindow in front of the fragment's biased depth), turned
+// the map's surface within kShadowAcneTexels of the fragment's biased depth), turned
 // away from the light. A fractional PCF visibility blends the first two.
 inline constexpr float kShadowViewLit[3] = {1.0f, 0.92f, 0.6f};
 inline constexpr float kShadowViewShadowed[3] = {0.1f, 0.15f, 0.45f};
@@ -72,8 +78,8 @@ inline constexpr float kLightDepthOutside[3] = {0.3f, 0.0f, 0.0f};
 // The scene file's "shadow" on a light (all optional).
 struct ShadowDesc {
   int size = kDefaultShadowMapSize;  // texels per side, [kMinShadowMapSize, kMaxShadowMapSize]
-  // Depth units (the light camera's window depth, [0, 1]): constant, and slope times tan(theta).
-  vec2 bias{0.0005f, 0.0005f};
+  // [constant, slope]: world units along the light, and texels of the surface's rise (above).
+  vec2 bias{0.005f, 1.0f};
   int pcf = 1;          // 1, 3 or 5: the kernel's side in texels
   float extent = 0.0f;  // world units, >= 0; 0 picks it from the scene's bounds (above)
 };
@@ -95,6 +101,10 @@ struct ShadowProjection {
   vec3 lightPosWorld{0.0f};
   float near = 0.0f, far = 0.0f;
   float depthA = 0.0f, depthB = 0.0f;
+  // The bias's scales (see the test above). Orthographic: one texel's width in world units and
+  // the map's depth units per world unit, both constant. Cube: 2 / size (times m: the texel's
+  // width) and 0.5 |depthB| (over m^2: the depth units per world unit along the axis).
+  float texelWorld = 0.0f, depthPerWorld = 0.0f;
   vec2 bias{0.0f};
   int pcf = 1;
 };
@@ -136,7 +146,7 @@ float cubeShadowDepth(const ShadowProjection& projection, float m);
 // component by magnitude, ties to z, then y (llvmpipe's rule, softrender/cube_sample-inl.h).
 int cubeFaceOf(const vec3& d);
 
-// "orthographic 2048^2, bias 0.0005 + 0.0005 tan, pcf 3" for info and the GUI.
+// "orthographic 2048^2, bias 0.005 + 1 texel slope, pcf 3" for info and the GUI.
 std::string describeShadow(const ShadowProjection& projection);
 
 }  // namespace twr

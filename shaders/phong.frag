@@ -183,7 +183,7 @@ void main() {
   vec3 sum = vec3(0.0);
 #ifdef HAS_SHADOWS
   // The first shadowed light's test, for the shadow views.
-  ShadowTest firstShadowTest = ShadowTest(1.0, 0.0, 0.0, 1.0, 0.0);
+  ShadowTest firstShadowTest = ShadowTest(1.0, 0.0, 0.0, 1.0, 0.0, 0.0);
   float firstShadowCosine = 0.0;
   bool haveShadowTest = false;
 #endif

@@ -2,7 +2,7 @@
 // map. C++ twin: softrender/shadow-inl.h, function by function in the same order of
 // operations. Compiled in only with HAS_SHADOWS (a scene with a shadowed light), so every
 // other scene keeps the program it had. The prelude defines MAX_SHADOWED_LIGHTS,
-// MAX_SHADOW_SLOPE_TANGENT, MIN_SHADOW_COSINE, SHADOW_ACNE_WINDOW and the views' colours.
+// MAX_SHADOW_SLOPE_TANGENT, MIN_SHADOW_COSINE, SHADOW_ACNE_TEXELS and the views' colours.
 
 #ifdef HAS_SHADOWS
 struct ShadowUniform {
@@ -12,8 +12,10 @@ struct ShadowUniform {
   float depthA;         // cube: the faces' depth terms, z_clip = depthA (-m) + depthB, w = m
   float depthB;
   float size;           // texels per side
-  float biasConstant;   // depth units
-  float biasSlope;      // depth units per unit of tan(theta)
+  float biasConstant;   // world units along the light
+  float biasSlope;      // texels of the surface's rise
+  float texelWorld;     // orthographic: a texel's width, world units; cube: 2 / size (times m)
+  float depthPerWorld;  // orthographic: depth units per world unit; cube: 0.5 |depthB| (over m^2)
   int pcf;              // 1, 3 or 5
 };
 uniform ShadowUniform shadows[MAX_SHADOWED_LIGHTS];
@@ -38,6 +40,7 @@ struct ShadowTest {
   float bias;
   float stored;      // the map's depth at the fragment's texel, 1 outside
   float inside;      // 1 inside the map, else 0
+  float acneWindow;  // depth units: SHADOW_ACNE_TEXELS of the surface's own rise (at least a texel's)
 };
 
 // GL's cube face table with llvmpipe's tie rule (cubeCoordLanes in softrender/cube_sample-inl.h).
@@ -65,9 +68,8 @@ ShadowTest shadowTest(int slot, vec3 posWorld, vec3 n, vec3 l) {
   float cosTheta = max(dot(n, l), MIN_SHADOW_COSINE);
   float sinTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
   float tanTheta = min(sinTheta / cosTheta, MAX_SHADOW_SLOPE_TANGENT);
-  float bias = u.biasConstant + u.biasSlope * tanTheta;
 
-  float s, t, z, layer;
+  float s, t, z, layer, texelWorld, depthPerWorld;
   if (u.kind == 0) {
     mat4 m = u.clipFromWorld;  // columns summed from the left, w = 1
     float x = ((m[0][0] * posWorld.x + m[1][0] * posWorld.y) + m[2][0] * posWorld.z) + m[3][0];
@@ -77,12 +79,20 @@ ShadowTest shadowTest(int slot, vec3 posWorld, vec3 n, vec3 l) {
     t = y * 0.5 + 0.5;
     z = zc * 0.5 + 0.5;
     layer = 0.0;
+    texelWorld = u.texelWorld;
+    depthPerWorld = u.depthPerWorld;
   } else {
     vec3 d = posWorld - u.lightPosWorld;
     shadowCubeCoord(d, layer, s, t);
     float ma = max(abs(d.z), max(abs(d.x), abs(d.y)));
     z = 0.5 * ((u.depthB - u.depthA * ma) / ma) + 0.5;
+    texelWorld = u.texelWorld * ma;
+    depthPerWorld = u.depthPerWorld / (ma * ma);
   }
+  // bias = (constant + slope tan(theta) texel (1 + pcf / 2)) depth units per world unit
+  float reach = float(1 + u.pcf / 2);
+  float rise = tanTheta * texelWorld;
+  float bias = (u.biasConstant + (u.biasSlope * rise) * reach) * depthPerWorld;
   bool inside = s >= 0.0 && s < 1.0 && t >= 0.0 && t < 1.0 && z <= 1.0 && !isinf(z) && !isnan(z);
   float size = u.size, last = size - 1.0;
   float x0 = inside ? floor(s * size) : 0.0;
@@ -106,6 +116,7 @@ ShadowTest shadowTest(int slot, vec3 posWorld, vec3 n, vec3 l) {
   r.bias = bias;
   r.stored = inside ? stored : 1.0;
   r.inside = inside ? 1.0 : 0.0;
+  r.acneWindow = (SHADOW_ACNE_TEXELS * max(rise, texelWorld)) * depthPerWorld;
   return r;
 }
 
@@ -114,7 +125,7 @@ vec4 shadowViewColour(ShadowTest test, float nDotL) {
   vec3 lit = SHADOW_VIEW_LIT, shadowed = SHADOW_VIEW_SHADOWED;
   vec3 c = shadowed + (lit - shadowed) * test.visibility;
   float reference = test.depth - test.bias;
-  bool acne = test.inside > 0.0 && test.stored < reference && reference - test.stored < SHADOW_ACNE_WINDOW;
+  bool acne = test.inside > 0.0 && test.stored < reference && reference - test.stored < test.acneWindow;
   c = acne ? SHADOW_VIEW_ACNE : c;
   c = nDotL > 0.0 ? c : SHADOW_VIEW_AWAY;
   return vec4(c, 1.0);

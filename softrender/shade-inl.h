@@ -275,7 +275,7 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
     const Vec3L<L> ksSpec = Vec3L<L>(u.ks) * specScale;  // u.ks * specScale, specular's first
     Vec3L<L> sum(zero);
     // The first shadowed light's test, for the shadow views.
-    ShadowTestL<L> firstShadowTest{one, zero, zero, one, zero};
+    ShadowTestL<L> firstShadowTest{one, zero, zero, one, zero, zero};
     L firstShadowCosine = zero;
     bool haveShadowTest = false;
     for (int i = 0; i < u.lightCount; ++i) {
@@ -320,7 +320,7 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
       L shadow = selfShadowValue;
       // The light's shadow map (shadow-inl.h): a runtime branch per light, never taken by a
       // light without one. Its angle is the geometric normal's, in world space.
-      ShadowTestL<L> mapTest{one, zero, zero, one, zero};
+      ShadowTestL<L> mapTest{one, zero, zero, one, zero, zero};
       const bool mapOn = light.shadow.depth != nullptr;
       if (mapOn) {
         mapTest = (shadowTestLanes<L>)(light.shadow, f.posWorld, n, safeNormalize3<L>(toLight));

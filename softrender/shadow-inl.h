@@ -36,6 +36,7 @@ struct ShadowTestL {
   L bias;        // depth units
   L stored;      // the map's depth at the fragment's own texel (1 outside the map)
   L inside;      // 1 where the fragment lies inside the map, else 0
+  L acneWindow;  // depth units: kShadowAcneTexels of the surface's own rise (at least a texel's)
 };
 
 // The test at posWorld; n is the surface's unit normal and l the unit vector to the light, both
@@ -45,14 +46,13 @@ TWR_LANE_INLINE ShadowTestL<L> shadowTestLanes(const ShadowUniformT<ScalarOf<L>>
                                                const Vec3L<L>& n, const Vec3L<L>& l) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), half(S(0.5));
-  // bias = constant + slope * min(tan(theta), kMaxShadowSlopeTangent)
   const L cosTheta = maxOf(dot3<L>(n, l), L(static_cast<S>(kMinShadowCosine)));
   const L sinTheta = sqrtOf(maxOf(one - cosTheta * cosTheta, zero));
   const L tanTheta = minOf(sinTheta / cosTheta, L(static_cast<S>(kMaxShadowSlopeTangent)));
-  const L bias = L(u.biasConstant) + L(u.biasSlope) * tanTheta;
 
-  // Where the fragment lies in the map: (s, t) in [0, 1), its depth z, the layer.
-  L s, t, z, layer;
+  // Where the fragment lies in the map: (s, t) in [0, 1), its depth z, the layer; one texel's
+  // width in world units and the map's depth units per world unit there.
+  L s, t, z, layer, texelWorld, depthPerWorld;
   if (u.kind == ShadowKind::Orthographic) {
     const Mat4T<S>& m = u.clipFromWorld;  // columns summed from the left, w = 1 (vertex.h's transformPoint)
     const L x = ((L(m[0][0]) * posWorld.x + L(m[1][0]) * posWorld.y) + L(m[2][0]) * posWorld.z) + L(m[3][0]);
@@ -62,6 +62,8 @@ TWR_LANE_INLINE ShadowTestL<L> shadowTestLanes(const ShadowUniformT<ScalarOf<L>>
     t = y * half + half;
     z = zc * half + half;
     layer = zero;
+    texelWorld = L(u.texelWorld);
+    depthPerWorld = L(u.depthPerWorld);
   } else {
     const Vec3L<L> d = posWorld - Vec3L<L>(u.lightPosWorld);
     const CubeCoordL<L> c = (cubeCoordLanes<L>)(d);
@@ -70,7 +72,13 @@ TWR_LANE_INLINE ShadowTestL<L> shadowTestLanes(const ShadowUniformT<ScalarOf<L>>
     t = c.t;
     z = half * ((L(u.depthB) - L(u.depthA) * ma) / ma) + half;
     layer = c.face;
+    texelWorld = L(u.texelWorld) * ma;
+    depthPerWorld = L(u.depthPerWorld) / (ma * ma);
   }
+  // bias = (constant + slope tan(theta) texel (1 + pcf / 2)) depth units per world unit
+  const L reach(static_cast<S>(1 + u.pcf / 2));
+  const L rise = tanTheta * texelWorld;  // the surface's rise across one texel, world units
+  const L bias = (L(u.biasConstant) + (L(u.biasSlope) * rise) * reach) * depthPerWorld;
   const auto inside = (s >= zero) & (s < one) & (t >= zero) & (t < one) & (z <= one) & isFinite(z);
   const L size = L(u.size), last = size - one;
   // Out-of-map lanes read texel 0 (and count as lit below).
@@ -96,6 +104,7 @@ TWR_LANE_INLINE ShadowTestL<L> shadowTestLanes(const ShadowUniformT<ScalarOf<L>>
   r.bias = bias;
   r.stored = select(inside, stored, one);
   r.inside = select(inside, one, zero);
+  r.acneWindow = (L(static_cast<S>(kShadowAcneTexels)) * maxOf(rise, texelWorld)) * depthPerWorld;
   return r;
 }
 
@@ -109,7 +118,7 @@ TWR_LANE_INLINE Vec4L<L> shadowViewColourLanes(const ShadowTestL<L>& test, const
   Vec3L<L> c = shadowed + (lit - shadowed) * test.visibility;
   const L reference = test.depth - test.bias;
   const auto acne = (test.inside > zero) & (test.stored < reference) &
-                    (reference - test.stored < L(static_cast<S>(kShadowAcneWindow)));
+                    (reference - test.stored < test.acneWindow);
   c = select3<L>(acne, colour(kShadowViewAcne), c);
   c = select3<L>(nDotL > zero, c, colour(kShadowViewAway));
   return Vec4L<L>(c, one);

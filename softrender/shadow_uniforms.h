@@ -17,8 +17,10 @@ struct ShadowUniformT {
   Vec3T<S> lightPosWorld{S(0)};  // cube: the light
   S depthA = S(0), depthB = S(0);  // cube: the faces' depth terms (ShadowProjection)
   S size = S(1);                   // texels per side, as a lane value
-  S biasConstant = S(0), biasSlope = S(0);  // depth units
-  int pcf = 1;                              // 1, 3 or 5
+  S biasConstant = S(0);  // world units along the light
+  S biasSlope = S(0);     // texels of the surface's rise
+  S texelWorld = S(0), depthPerWorld = S(0);  // ShadowProjection's bias scales
+  int pcf = 1;            // 1, 3 or 5
 };
 
 // The uniform of `map` (null: none), in the lane scalar S (float values rounded once).
@@ -36,6 +38,8 @@ ShadowUniformT<S> makeShadowUniform(const ShadowMap* map) {
   u.size = static_cast<S>(p.size);
   u.biasConstant = static_cast<S>(p.bias.x);
   u.biasSlope = static_cast<S>(p.bias.y);
+  u.texelWorld = static_cast<S>(p.texelWorld);
+  u.depthPerWorld = static_cast<S>(p.depthPerWorld);
   u.pcf = p.pcf;
   return u;
 }

@@ -437,8 +437,8 @@ void printScene(std::ostream& out, const Scene& scene) {
     if (l.shadow) {
       const ShadowDesc& d = *l.shadow;
       out << "      shadow map: " << (l.type == LightType::Directional ? "orthographic " : "cube ") << d.size << "^2"
-          << (l.type == LightType::Directional ? "" : " x 6") << ", bias " << d.bias.x << " + " << d.bias.y
-          << " tan, pcf " << d.pcf << "x" << d.pcf << ", extent "
+          << (l.type == LightType::Directional ? "" : " x 6") << ", bias " << d.bias.x << " world units + "
+          << d.bias.y << " texels of slope, pcf " << d.pcf << "x" << d.pcf << ", extent "
           << (d.extent > 0.0f ? std::to_string(d.extent) + " world units" : std::string("from the scene's bounds"))
           << "\n";
     }

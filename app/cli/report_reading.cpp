@@ -742,13 +742,13 @@ KnobReading readDiffuseLight(const DiffuseLightSection& section) {
 KnobReading readShadows(const ShadowSection& section) {
   if (!section.skipped.empty()) return {"Not measured: " + section.skipped, section.skipped};
   if (section.rows.empty() || section.measured == 0) return {"Not measured: no pixel faces the light", "nothing measured"};
-  // The cheapest setting within 1 % wrong pixels, and how the error falls with the side at
+  // The cheapest setting within 0.1 % wrong pixels, and how the error falls with the side at
   // each kernel.
   const ShadowRow* cheapest = nullptr;
   const ShadowRow* best = &section.rows.front();
   for (const ShadowRow& row : section.rows) {
     if (row.wrongPercent < best->wrongPercent) best = &row;
-    if (row.wrongPercent <= 1.0 && (!cheapest || row.msMedian < cheapest->msMedian)) cheapest = &row;
+    if (row.wrongPercent <= 0.1 && (!cheapest || row.msMedian < cheapest->msMedian)) cheapest = &row;
   }
   const auto setting = [](const ShadowRow& r) {
     return std::to_string(r.size) + "\u00b2 PCF " + std::to_string(r.pcf);
@@ -756,9 +756,9 @@ KnobReading readShadows(const ShadowSection& section) {
   const auto ratio = [&](const ShadowRow& r) { return section.unshadowedMs > 0.0 ? r.msMedian / section.unshadowedMs : 0.0; };
   std::string summary = "Best: " + setting(*best) + ", " + fmt("%.2f", best->wrongPercent) + " % of lit-facing pixels answer "
                         "the other way than the traced shadow";
-  summary += cheapest ? "; the cheapest within 1 %: " + setting(*cheapest) + " at " + fmt("%.2f", ratio(*cheapest)) +
-                            "x the unshadowed frame."
-                      : "; no setting stays within 1 %.";
+  summary += cheapest ? "; the cheapest within 0.1 %: " + setting(*cheapest) + " at " +
+                            fmt("%.2f", ratio(*cheapest)) + "x the unshadowed frame."
+                      : "; no setting stays within 0.1 %.";
   std::string detail = std::to_string(section.measured) + " pixels face the light, " +
                        std::to_string(section.tracedShadowed) + " of them in its traced shadow (tracing them took " +
                        fmt("%.0f", section.traceMs) + " ms, one thread). ";

@@ -32,8 +32,11 @@ constexpr float kRotateDragSpeed = 0.5f;      // degrees
 constexpr float kScaleDragSpeed = 0.005f;
 constexpr float kSizeDragSpeed = 0.005f;      // world units
 constexpr float kAttenuationDragSpeed = 0.001f;
-// The shadow bias per dragged point (depth units).
-constexpr float kShadowBiasDragSpeed = 0.00005f;
+// The shadow bias per dragged point: world units (constant), texels (slope); both fields stop
+// at kMaxShadowBiasDrag (Ctrl+click types any value >= 0).
+constexpr float kShadowBiasDragSpeed = 0.001f;
+constexpr float kShadowSlopeDragSpeed = 0.01f;
+constexpr float kMaxShadowBiasDrag = 10.0f;
 // A directional light's direction components per dragged point (unitless; renormalised after).
 constexpr float kDirectionDragSpeed = 0.005f;
 // Largest magnitude the transform and size fields accept (inclusive), world units or degrees.
@@ -89,12 +92,18 @@ bool editShadow(Light& light, const std::vector<Light>& lights) {
     ImGui::EndCombo();
   }
   itemTooltip("Texels per side of the map (each cube face). Smaller maps show blockier shadow edges.");
-  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
-  changed |= ImGui::DragFloat2("Bias c, slope", &shadow.bias.x, kShadowBiasDragSpeed, 0.0f, 0.1f, "%.5f",
-                               ImGuiSliderFlags_AlwaysClamp);
-  itemTooltip("Depth bias in the map's depth units (0..1): constant + slope * tan(angle to the light). Too "
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.4f);
+  changed |= ImGui::DragFloat("Bias constant", &shadow.bias.x, kShadowBiasDragSpeed, 0.0f, kMaxShadowBiasDrag, "%.4f",
+                              ImGuiSliderFlags_AlwaysClamp);
+  itemTooltip("World units along the light the surface is moved towards it before the test (bias[0]). Too "
               "little shows acne (the surface shadows itself: the shadow view paints it magenta), too much "
               "peter-panning (shadows come loose from their casters).");
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.4f);
+  changed |= ImGui::DragFloat("Bias slope", &shadow.bias.y, kShadowSlopeDragSpeed, 0.0f, kMaxShadowBiasDrag, "%.2f",
+                              ImGuiSliderFlags_AlwaysClamp);
+  itemTooltip("Texels of the surface's own rise across the kernel (bias[1]): tan(angle to the light) * one texel's "
+              "width * (1 + pcf / 2), added to the constant. 1 covers a surface sloping away from the light at any "
+              "map size and kernel (docs/shadows.md).");
   int pcf = shadow.pcf;
   ImGui::TextUnformatted("PCF");
   for (const int side : {1, 3, 5}) {

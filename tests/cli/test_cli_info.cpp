@@ -121,7 +121,7 @@ TEST(CliInfo, ShadowMaps) {
   const std::string scene = kSource + "/assets/scenes/shadow_point_cube.json";
   const RunResult text = runCli("info \"" + scene + "\"");
   ASSERT_EQ(text.exitCode, 0) << text.err;
-  expectContains(text.out, "shadow map: cube 512^2 x 6, bias 0.0002 + 0.0002 tan, pcf 3x3, extent from the scene's bounds");
+  expectContains(text.out, "shadow map: cube 512^2 x 6, bias 0.01 world units + 1 texels of slope, pcf 3x3, extent from the scene's bounds");
   const RunResult json = runCli("info --json \"" + scene + "\"");
   ASSERT_EQ(json.exitCode, 0) << json.err;
   const nlohmann::json shadow = nlohmann::json::parse(json.out)["lights"][0]["shadow"];

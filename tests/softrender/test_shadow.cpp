@@ -24,6 +24,8 @@ ShadowMap halfOccludedMap(float near, int pcf, vec2 bias) {
   map.projection.clipFromWorld[0] = mat4(1.0f);
   map.projection.pcf = pcf;
   map.projection.bias = bias;
+  map.projection.texelWorld = 2.0f / kSize;  // clip space is world space: 2 units over kSize texels
+  map.projection.depthPerWorld = 0.5f;       // depth = 0.5 z + 0.5
   map.depth.assign(kSize * kSize, 1.0f);
   for (int y = 0; y < kSize; ++y) {
     for (int x = 0; x < kSize / 2; ++x) map.depth[static_cast<std::size_t>(y * kSize + x)] = near;
@@ -56,14 +58,20 @@ TEST(ShadowTest, TheBiasDecidesAtTheOccludersOwnDepth) {
   const vec3 onSurface(worldXOf(1), 0.0f, 0.0f);  // depth 0.5, the occluder's
   EXPECT_EQ(testAt<float>(halfOccludedMap(0.5f - 1e-4f, 1, vec2(0.0f)), onSurface).visibility, 0.0f);
   EXPECT_EQ(testAt<float>(halfOccludedMap(0.5f - 1e-4f, 1, vec2(1e-3f, 0.0f)), onSurface).visibility, 1.0f);
-  // The slope term: constant + slope tan(theta), theta between the normal and the light.
-  const ShadowMap sloped = halfOccludedMap(0.5f, 1, vec2(0.001f, 0.01f));
+  // bias = (constant + slope tan(theta) texel (1 + pcf / 2)) depth per world unit: the
+  // constant in world units, the slope in texels of the surface's rise over the kernel.
   const vec3 n(0.0f, 0.0f, 1.0f);
-  EXPECT_FLOAT_EQ(testAt<float>(sloped, onSurface, n, n).bias, 0.001f);
+  const float texel = 2.0f / kSize, depthPerWorld = 0.5f;
+  EXPECT_FLOAT_EQ(testAt<float>(halfOccludedMap(0.5f, 1, vec2(0.01f, 2.0f)), onSurface, n, n).bias,
+                  0.01f * depthPerWorld);
   const vec3 at60(std::sin(glm::radians(60.0f)), 0.0f, 0.5f);  // cos 0.5: tan sqrt(3)
-  EXPECT_NEAR(testAt<float>(sloped, onSurface, n, at60).bias, 0.001f + 0.01f * std::sqrt(3.0f), 1e-6f);
+  EXPECT_NEAR(testAt<float>(halfOccludedMap(0.5f, 1, vec2(0.01f, 2.0f)), onSurface, n, at60).bias,
+              (0.01f + 2.0f * std::sqrt(3.0f) * texel) * depthPerWorld, 1e-6f);
+  EXPECT_NEAR(testAt<float>(halfOccludedMap(0.5f, 5, vec2(0.01f, 2.0f)), onSurface, n, at60).bias,
+              (0.01f + 2.0f * std::sqrt(3.0f) * texel * 3.0f) * depthPerWorld, 1e-6f);  // a 5 x 5 kernel reaches 3
   // Edge-on: the tangent is clamped.
-  EXPECT_NEAR(testAt<float>(sloped, onSurface, n, vec3(1, 0, 0)).bias, 0.001f + 0.01f * kMaxShadowSlopeTangent, 1e-6f);
+  EXPECT_NEAR(testAt<float>(halfOccludedMap(0.5f, 1, vec2(0.0f, 1.0f)), onSurface, n, vec3(1, 0, 0)).bias,
+              kMaxShadowSlopeTangent * texel * depthPerWorld, 1e-6f);
 }
 
 TEST(ShadowTest, PcfAveragesTheKernelAtAnEdge) {
