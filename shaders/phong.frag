@@ -227,8 +227,15 @@ void main() {
     bool mapOn = false;
 #ifdef HAS_SHADOWS
     // The light's shadow map (shadow.glsl), at the geometric normal's angle, in world space.
+    // Tested only where it can matter: a fragment the light lights (diffuse or specular) and the
+    // shadow views; elsewhere both terms are 0 and so is their product with it.
+#if defined(SHADOW_VIEW_SHADOW) || defined(SHADOW_VIEW_LIGHT_DEPTH)
+    const bool shadowTestAlways = true;
+#else
+    const bool shadowTestAlways = false;
+#endif
     int slot = shadowSlotOfLight[i];
-    if (slot >= 0) {
+    if (slot >= 0 && (shadowTestAlways || diffuseFactor > 0.0 || nDotL > 0.0)) {
       ShadowTest mapTest = shadowTest(slot, posWorld, n, safeNormalize(toLightWorld(lights[i], posWorld)));
       shadow = shadow * mapTest.visibility;
       mapOn = true;

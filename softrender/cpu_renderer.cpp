@@ -84,7 +84,7 @@ class CpuRenderer final : public Renderer {
           }
           return shadowTarget_;
         },
-        shadowMilliseconds);
+        shadowMilliseconds, &shadowPool_);
     stats.shadowMilliseconds = shadowMilliseconds;
 
     Framebuffer fb = fast_ ? fast_->allocateFramebuffer(width, height)  // draw() clears it bin by bin
@@ -131,6 +131,7 @@ class CpuRenderer final : public Renderer {
   CpuOptions options_;
   std::unique_ptr<FastPipeline> fast_;  // made on the first fast render, kept for its threads and buffers
   Framebuffer shadowTarget_;            // the shadow pass's layers are drawn here, kept across frames
+  ShadowMapPool shadowPool_;            // the maps' storage, reused once no output holds it
 };
 
 }  // namespace

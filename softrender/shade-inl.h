@@ -321,7 +321,10 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
       // The light's shadow map (shadow-inl.h): a runtime branch per light, never taken by a
       // light without one. Its angle is the geometric normal's, in world space.
       ShadowTestL<L> mapTest{one, zero, zero, one, zero, zero};
-      const bool mapOn = light.shadow.depth != nullptr;
+      // Tested only where it can matter: a lane the light lights (diffuse or specular), the
+      // shadow views and the trace; elsewhere both terms are 0 and so is their product with it.
+      const bool mapOn = light.shadow.depth != nullptr &&
+                         (kTrace || isShadowView(u.shadedView) || anyOf((diffuseFactor > zero) | lit));
       if (mapOn) {
         mapTest = (shadowTestLanes<L>)(light.shadow, f.posWorld, n, safeNormalize3<L>(toLight));
         shadow = shadow * mapTest.visibility;

@@ -13,8 +13,25 @@ RenderSettings shadowPassSettings(const RenderSettings& frame) {
   return s;
 }
 
+std::shared_ptr<ShadowMap> ShadowMapPool::acquire(std::size_t texels) {
+  for (std::shared_ptr<ShadowMap>& map : maps_) {
+    if (map.use_count() != 1 || map->depth.size() != texels) continue;
+    map->projection = ShadowProjection{};
+    map->milliseconds = 0.0;
+    return map;  // every texel is written by the pass
+  }
+  // None free: drop the free ones of other sizes beyond the cap, then make one.
+  if (maps_.size() >= kMaxKept) {
+    std::erase_if(maps_, [](const std::shared_ptr<ShadowMap>& m) { return m.use_count() == 1; });
+  }
+  auto map = std::make_shared<ShadowMap>();
+  map->depth.resize(texels);
+  if (maps_.size() < kMaxKept) maps_.push_back(map);
+  return map;
+}
+
 ShadowMaps renderShadowMaps(const Scene& scene, const RenderSettings& settings, const DepthDraw& draw,
-                            double& milliseconds) {
+                            double& milliseconds, ShadowMapPool* pool) {
   milliseconds = 0.0;
   if (!sceneHasShadows(scene)) return {};
   const auto start = std::chrono::steady_clock::now();
@@ -28,11 +45,18 @@ ShadowMaps renderShadowMaps(const Scene& scene, const RenderSettings& settings, 
     const Light& light = scene.lights[i];
     if (!light.shadow) continue;
     const auto lightStart = std::chrono::steady_clock::now();
-    auto map = std::make_shared<ShadowMap>();
-    map->projection = shadowProjectionFor(light, bounds);
-    const int size = map->projection.size;
+    const ShadowProjection projection = shadowProjectionFor(light, bounds);
+    const int size = projection.size;
     const std::size_t layerTexels = static_cast<std::size_t>(size) * static_cast<std::size_t>(size);
-    map->depth.resize(layerTexels * static_cast<std::size_t>(map->projection.layers));
+    const std::size_t texels = layerTexels * static_cast<std::size_t>(projection.layers);
+    std::shared_ptr<ShadowMap> map;
+    if (pool) {
+      map = pool->acquire(texels);
+    } else {
+      map = std::make_shared<ShadowMap>();
+      map->depth.resize(texels);
+    }
+    map->projection = projection;
     for (int layer = 0; layer < map->projection.layers; ++layer) {
       items.clear();
       for (const DrawItem& item : drawItems) {

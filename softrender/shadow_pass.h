@@ -9,6 +9,7 @@
 #include "softrender/framebuffer.h"
 
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace twr {
@@ -22,11 +23,24 @@ using DepthDraw = std::function<const Framebuffer&(const std::vector<ItemState>&
 // (the cheapest permutation: the colour is thrown away), no TBN lines.
 RenderSettings shadowPassSettings(const RenderSettings& frame);
 
+// Maps kept across frames by one renderer: a map no frame's output holds any more is written
+// again instead of allocated and filled anew (a 2048^2 map is 16 MB of fresh pages per frame
+// otherwise). Outputs keep their own maps for as long as their holders keep them.
+class ShadowMapPool {
+ public:
+  // A map with `texels` depth values whose other fields are reset; shared with nobody.
+  std::shared_ptr<ShadowMap> acquire(std::size_t texels);
+
+ private:
+  static constexpr std::size_t kMaxKept = 8;  // maps, every light's of the last frames
+  std::vector<std::shared_ptr<ShadowMap>> maps_;
+};
+
 // The maps of every light with "shadow" (per light index; null for the others), each layer
 // drawn with `draw`. Empty when no light casts a shadow. `milliseconds` receives the pass's
-// wall time.
+// wall time. `pool`: where the maps' storage comes from (null: allocated for this call).
 ShadowMaps renderShadowMaps(const Scene& scene, const RenderSettings& settings, const DepthDraw& draw,
-                            double& milliseconds);
+                            double& milliseconds, ShadowMapPool* pool = nullptr);
 
 // The teaching traversal (cpu_renderer.cpp): the vertex stage per item, then one band of rows
 // per thread, each walking every triangle (draw_loop.h).

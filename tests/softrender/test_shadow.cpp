@@ -4,10 +4,15 @@
 #include "softrender/shade.h"
 
 #include "scene/shadow_map.h"
+#include "softrender/shadow_pass.h"
+#include "scene/scene_file.h"
+#include "softrender/cpu_renderer.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
+#include <string>
 
 namespace twr {
 namespace {
@@ -126,6 +131,62 @@ TEST(ShadowTest, CubeMapReadsTheFaceOfTheDirection) {
   EXPECT_EQ(testAt<float>(map, vec3(0.3f, -0.2f, -2.0f), n, -n).visibility, 1.0f);  // -Z
   EXPECT_EQ(testAt<float>(map, vec3(3.0f, -0.2f, 2.0f), n, -n).visibility, 1.0f);   // +X
   EXPECT_FLOAT_EQ(testAt<float>(map, vec3(0.3f, -0.2f, 2.0f), n, -n).depth, cubeShadowDepth(map.projection, 2.0f));
+}
+
+}  // namespace
+}  // namespace twr
+
+namespace twr {
+namespace {
+
+TEST(ShadowMapPool, ReusesOnlyAMapNobodyHolds) {
+  ShadowMapPool pool;
+  std::shared_ptr<ShadowMap> a = pool.acquire(16);
+  ASSERT_EQ(a->depth.size(), 16u);
+  a->depth[3] = 0.25f;
+  a->milliseconds = 5.0;
+  const ShadowMap* first = a.get();
+  // Held by a frame's output: a second acquire gets another map.
+  std::shared_ptr<const ShadowMap> held = a;
+  a.reset();
+  std::shared_ptr<ShadowMap> b = pool.acquire(16);
+  EXPECT_NE(b.get(), first);
+  const ShadowMap* second = b.get();
+  // Released: stored maps come back (no third allocation), bookkeeping reset (the texels are
+  // the pass's to write).
+  held.reset();
+  b.reset();
+  std::shared_ptr<ShadowMap> c = pool.acquire(16);
+  EXPECT_TRUE(c.get() == first || c.get() == second);
+  EXPECT_EQ(c->milliseconds, 0.0);
+  std::shared_ptr<ShadowMap> d = pool.acquire(16);
+  EXPECT_TRUE(d.get() == first || d.get() == second);
+  EXPECT_NE(c.get(), d.get());
+  // Another size never reuses it.
+  EXPECT_EQ(pool.acquire(64)->depth.size(), 64u);
+}
+
+TEST(ShadowMapPool, FramesShareNoMapAndDrawTheSame) {
+  // One renderer, three frames: while the first frame's output is held the second draws into
+  // other storage; once both are dropped the third reuses one, and every frame's map and image
+  // are the same (nothing of the storage's earlier contents leaks in).
+  const Scene scene = loadSceneFile(std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes/shadow_directional.json");
+  std::unique_ptr<Renderer> cpu = makeCpuRenderer();
+  RenderOutput first = cpu->render(scene, scene.settings, 96, 72);
+  RenderOutput second = cpu->render(scene, scene.settings, 96, 72);
+  ASSERT_EQ(first.shadowMaps.size(), 1u);
+  ASSERT_TRUE(first.shadowMaps[0] && second.shadowMaps[0]);
+  EXPECT_NE(first.shadowMaps[0].get(), second.shadowMaps[0].get());
+  EXPECT_EQ(first.shadowMaps[0]->depth, second.shadowMaps[0]->depth);
+  const std::vector<float> depth = first.shadowMaps[0]->depth;
+  const std::vector<std::uint8_t> rgba = first.rgba;
+  const ShadowMap* reused[] = {first.shadowMaps[0].get(), second.shadowMaps[0].get()};
+  first = RenderOutput{};
+  second = RenderOutput{};
+  const RenderOutput third = cpu->render(scene, scene.settings, 96, 72);
+  EXPECT_TRUE(third.shadowMaps[0].get() == reused[0] || third.shadowMaps[0].get() == reused[1]);
+  EXPECT_EQ(third.shadowMaps[0]->depth, depth);
+  EXPECT_EQ(third.rgba, rgba);
 }
 
 }  // namespace
