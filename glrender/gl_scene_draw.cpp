@@ -153,13 +153,7 @@ void applyPipelineState(const RenderSettings& settings) {
   // Cube maps filter across face edges, as the CPU does (softrender/cube_sample-inl.h); off by
   // default in a core context.
   glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-  glFrontFace(settings.frontFace == FrontFace::Ccw ? GL_CCW : GL_CW);
-  if (settings.cull == CullMode::None) {
-    glDisable(GL_CULL_FACE);
-  } else {
-    glEnable(GL_CULL_FACE);
-    glCullFace(settings.cull == CullMode::Back ? GL_BACK : GL_FRONT);
-  }
+  applyFaceCulling(settings);
 }
 
 void setUniforms(GLuint program, const Scene& scene, const RenderSettings& settings, const GlClipState& clipState,
@@ -310,6 +304,16 @@ void drawSky(ProgramCache& programs, GlUploadCache& uploads, const Scene& scene,
 }
 
 }  // namespace
+
+void applyFaceCulling(const RenderSettings& settings) {
+  glFrontFace(settings.frontFace == FrontFace::Ccw ? GL_CCW : GL_CW);
+  if (settings.cull == CullMode::None) {
+    glDisable(GL_CULL_FACE);
+  } else {
+    glEnable(GL_CULL_FACE);
+    glCullFace(settings.cull == CullMode::Back ? GL_BACK : GL_FRONT);
+  }
+}
 
 std::vector<std::string> environmentMapDefines(const Environment& environment) {
   std::vector<std::string> defines;

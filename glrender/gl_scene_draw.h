@@ -23,6 +23,9 @@ struct SceneDrawStats {
 // The permutation defines of the phong program for one material (exposed for tests).
 // `environment`: the scene's environment when the material mixes it in (shaders/environment.glsl),
 // else null.
+// settings.frontFace and settings.cull as GL state (the frame's draws and the shadow pass).
+void applyFaceCulling(const RenderSettings& settings);
+
 // The defines that choose how the environment is read (shaders/environment_map.glsl):
 // ENVIRONMENT_SPHERE or ENVIRONMENT_DUAL_PARABOLOID for a built map, none for the cube.
 std::vector<std::string> environmentMapDefines(const Environment& environment);

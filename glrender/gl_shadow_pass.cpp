@@ -1,6 +1,7 @@
 #include "glrender/gl_shadow_pass.h"
 
 #include "glrender/gl_clip_state.h"
+#include "glrender/gl_scene_draw.h"
 #include "scene/errors.h"
 
 #include <chrono>
@@ -23,13 +24,7 @@ ShadowMaps GlShadowMaps::draw(ProgramCache& programs, GlUploadCache& uploads, co
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
   glDisable(GL_SCISSOR_TEST);
-  glFrontFace(settings.frontFace == FrontFace::Ccw ? GL_CCW : GL_CW);
-  if (settings.cull == CullMode::None) {
-    glDisable(GL_CULL_FACE);
-  } else {
-    glEnable(GL_CULL_FACE);
-    glCullFace(settings.cull == CullMode::Back ? GL_BACK : GL_FRONT);
-  }
+  applyFaceCulling(settings);
   for (std::size_t i = 0; i < scene.lights.size() && i < static_cast<std::size_t>(kMaxLights); ++i) {
     const Light& light = scene.lights[i];
     if (!light.shadow) continue;

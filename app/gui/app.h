@@ -152,7 +152,9 @@ class GuiApp {
   void drawEnvironmentViewLegend(View view);
   bool drawEnvironmentCaptureControls(Environment& env);
   void drawEnvironmentSourceImages(const Environment& env);
-  void drawShadowMapImages(std::size_t light);  // the light's map as each renderer drew it, and their difference  // env_face's swatches, env_lod's heat bar
+  void drawShadowMapImages(std::size_t light);
+  void showCachedImage(ImageTexture& texture, const void* source, std::uint64_t revision,
+                       const std::function<Image()>& make, const char* label, ImVec2 size);  // the light's map as each renderer drew it, and their difference  // env_face's swatches, env_lod's heat bar
   void drawLightsSection();
   void drawCameraTab();
   void drawViewPanel();

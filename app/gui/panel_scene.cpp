@@ -704,20 +704,27 @@ bool GuiApp::drawEnvironmentCaptureControls(Environment& env) {
   return changed;
 }
 
+// `make`'s image in `texture` under `label`, made again only when `source` or `revision` changes
+// (`revision` tells apart two frames' buffers that happen to reuse one address); nothing when
+// `source` is null.
+void GuiApp::showCachedImage(ImageTexture& texture, const void* source, std::uint64_t revision,
+                             const std::function<Image()>& make, const char* label, ImVec2 size) {
+  if (source == nullptr) return;
+  if (texture.empty() || crossSources_[&texture] != std::make_pair(source, revision)) {
+    texture.upload(make());
+    crossSources_[&texture] = {source, revision};
+  }
+  ImGui::TextDisabled("%s", label);
+  ImGui::Image(texture.id(), size);
+}
+
 // The environment's source as a cube cross: the loaded cube's level 0, or the faces each
 // renderer captured for the frames shown.
 void GuiApp::drawEnvironmentSourceImages(const Environment& env) {
   const float width = ImGui::GetContentRegionAvail().x;
-  // `revision` tells apart two frames' faces that happen to reuse one address.
   const auto show = [&](ImageTexture& texture, const void* source, std::uint64_t revision,
                         const std::function<Image()>& make, const char* label) {
-    if (source == nullptr) return;
-    if (texture.empty() || crossSources_[&texture] != std::make_pair(source, revision)) {
-      texture.upload(make());
-      crossSources_[&texture] = {source, revision};
-    }
-    ImGui::TextDisabled("%s", label);
-    ImGui::Image(texture.id(), ImVec2(width, width * 0.75f));
+    showCachedImage(texture, source, revision, make, label, ImVec2(width, width * 0.75f));
   };
   if (!env.capture) {
     if (!env.cube || !ImGui::TreeNode("source images")) return;
@@ -754,14 +761,8 @@ void GuiApp::drawShadowMapImages(std::size_t light) {
   const float width = ImGui::GetContentRegionAvail().x;
   const auto show = [&](ImageTexture& texture, const void* source, std::uint64_t revision,
                         const std::function<Image()>& make, const char* label) {
-    if (source == nullptr) return;
-    if (texture.empty() || crossSources_[&texture] != std::make_pair(source, revision)) {
-      texture.upload(make());
-      crossSources_[&texture] = {source, revision};
-    }
-    const ShadowProjection& p = (cpu ? cpu : gl)->projection;
-    ImGui::TextDisabled("%s", label);
-    ImGui::Image(texture.id(), ImVec2(width, width / static_cast<float>(p.layers)));
+    const int layers = (cpu ? cpu : gl)->projection.layers;
+    showCachedImage(texture, source, revision, make, label, ImVec2(width, width / static_cast<float>(layers)));
   };
   const auto layers = [](const ShadowMap& m) {
     return depthLayersImage(m.depth, m.projection.size, m.projection.size, m.projection.layers);
