@@ -514,8 +514,13 @@ class SceneReader {
     if (j.is_boolean()) return j.get<bool>() ? std::optional<ShadowDesc>(shadow) : std::nullopt;
     if (!j.is_object()) fail(path, "expected true, false or an object {size, bias, pcf, extent}, got " + quote(j));
     checkKeys(j, path, {"size", "bias", "pcf", "extent"}, "a shadow");
-    const int maxSize = cube ? kMaxCubeShadowMapSize : kMaxShadowMapSize;
-    if (const Json* v = find(j, "size")) shadow.size = readInt(*v, childPath(path, "size"), kMinShadowMapSize, maxSize);
+    if (const Json* v = find(j, "size")) {
+      shadow.size = readInt(*v, childPath(path, "size"), kMinShadowMapSize, kMaxShadowMapSize);
+      if (cube && shadow.size > kMaxCubeShadowMapSize) {
+        fail(childPath(path, "size"), "expected at most " + std::to_string(kMaxCubeShadowMapSize) +
+                                          " for a point light's cube map (six faces of that side), got " + quote(*v));
+      }
+    }
     if (const Json* v = find(j, "bias")) shadow.bias = readVector<2>(*v, childPath(path, "bias"), NumberRule::NonNegative);
     if (const Json* v = find(j, "pcf")) {
       shadow.pcf = readInt(*v, childPath(path, "pcf"), 1, kMaxShadowPcf);

@@ -130,9 +130,13 @@ std::string shadowError(const std::string& light) {
 }
 
 TEST(ShadowMap, SceneFileRefusesBadShadows) {
-  EXPECT_NE(shadowError(R"({"position": [0, 3, 0], "shadow": {"size": 2048}})").find("lights[0].shadow.size"),
+  EXPECT_NE(shadowError(R"({"position": [0, 3, 0], "shadow": {"size": 2048}})")
+                .find("lights[0].shadow.size: expected at most 1024 for a point light's cube map"),
             std::string::npos)
-      << "a cube map over 1024 texels must be refused";
+      << "a cube map over 1024 texels must be refused, saying why";
+  EXPECT_NE(shadowError(R"({"type": "directional", "shadow": {"size": 8192}})")
+                .find("lights[0].shadow.size: expected an integer in [16, 4096]"),
+            std::string::npos);
   EXPECT_NE(shadowError(R"({"type": "directional", "shadow": {"pcf": 2}})").find("expected 1, 3 or 5"),
             std::string::npos);
   EXPECT_NE(shadowError(R"({"type": "directional", "shadow": {"bias": [-1, 0]}})").find("lights[0].shadow.bias"),
