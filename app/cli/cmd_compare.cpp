@@ -176,19 +176,24 @@ std::vector<BufferRow> compareBuffers(const std::vector<PassBuffer>& buffers, co
     }
     CompareOptions options;
     options.compareBackground = buffer == PassBuffer::Final && drawsSky(scene, scene.settings);
-    RenderOutput a = cpuOut, b = glOut;
+    // The frame itself, or the scene drawn again in the buffer's view.
+    const RenderOutput* a = &cpuOut;
+    const RenderOutput* b = &glOut;
+    RenderOutput viewCpu, viewGl;
     if (buffer == PassBuffer::GbufferNormal || buffer == PassBuffer::GbufferAlbedo) {
       RenderSettings settings = scene.settings;
       settings.view = viewOfBuffer(buffer, settings.view);
       settings.tbnLines.enabled = false;
-      a = cpu.render(scene, settings, width, height);
-      b = gl.render(scene, settings, width, height);
+      viewCpu = cpu.render(scene, settings, width, height);
+      viewGl = gl.render(scene, settings, width, height);
+      a = &viewCpu;
+      b = &viewGl;
     }
-    const CompareResult result = buffer == PassBuffer::Final ? frame : compareDetailed(a, b, options);
+    const CompareResult result = buffer == PassBuffer::Final ? frame : compareDetailed(*a, *b, options);
     row.colourMetrics = result.metrics;
     row.passes = checkThresholds(result.metrics, targets).empty();
-    savePng(dir + "/buffer_" + name + "_cpu.png", rawImage(a));
-    savePng(dir + "/buffer_" + name + "_gl.png", rawImage(b));
+    savePng(dir + "/buffer_" + name + "_cpu.png", rawImage(*a));
+    savePng(dir + "/buffer_" + name + "_gl.png", rawImage(*b));
     savePng(dir + "/buffer_" + name + "_diff.png", makeHeatMap(result.pixels));
     rows.push_back(row);
   }

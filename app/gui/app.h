@@ -21,12 +21,14 @@
 #include "app/gui/scene_doc.h"
 #include "app/gui/test_probe.h"
 #include "compare/metrics.h"
+#include "compare/pass_buffers.h"
 #include "glrender/context_glfw.h"
 
 #include <imgui.h>
 
 #include <functional>
 #include <map>
+#include <tuple>
 #include <memory>
 #include <optional>
 #include <set>
@@ -239,6 +241,9 @@ class GuiApp {
   // with what each texture was last made from (re-uploaded when that changes).
   ImageTexture sourceCrossTexture_, captureCpuTexture_, captureGlTexture_;
   ImageTexture shadowCpuTexture_, shadowGlTexture_, shadowDiffTexture_;
+  // The shadow maps' comparison shown, and the (light, CPU revision, GL revision) it is of.
+  DepthBufferMetrics shadowDiffMetrics_;
+  std::tuple<std::size_t, std::uint64_t, std::uint64_t> shadowDiffKey_{};
   std::map<const ImageTexture*, std::pair<const void*, std::uint64_t>> crossSources_;
   bool cpuTextureStale_ = true, glTextureStale_ = true;
 

@@ -23,8 +23,6 @@ CpuProbe CpuWorker::probe(Renderer& renderer, const CpuJob& job, const RenderOut
   result.pixel = *job.probePixel;
   std::shared_ptr<PixelTrace> trace;
   try {
-    trace = std::make_shared<PixelTrace>(
-        tracePixelVisits(*job.scene, job.settings, job.width, job.height, result.pixel.x, result.pixel.yTop));
     // The final pixel as the chosen renderer drew it: this job's frame, the frame the UI
     // already has for this edit, else one more render.
     RenderOutput own;
@@ -33,6 +31,11 @@ CpuProbe CpuWorker::probe(Renderer& renderer, const CpuJob& job, const RenderOut
       own = renderer.render(*job.scene, job.settings, job.width, job.height);
       frameOutput = &own;
     }
+    // The replay shades with that frame's shadow maps rather than drawing them again on the
+    // teaching path (a 2048^2 map on one thread, for every pinned pixel).
+    trace = std::make_shared<PixelTrace>(tracePixelVisits(
+        *job.scene, job.settings, job.width, job.height, result.pixel.x, result.pixel.yTop,
+        frameOutput->shadowMaps.empty() ? nullptr : &frameOutput->shadowMaps));
     const std::size_t i = static_cast<std::size_t>(result.pixel.yTop) * static_cast<std::size_t>(job.width) +
                           static_cast<std::size_t>(result.pixel.x);
     for (std::size_t c = 0; c < 4; ++c) trace->rgba[c] = frameOutput->rgba[i * 4 + c];
