@@ -12,6 +12,7 @@ namespace {
 constexpr std::pair<PassBuffer, std::string_view> kNames[] = {
     {PassBuffer::ShadowMap, "shadow_map"},       {PassBuffer::GbufferDepth, "gbuffer_depth"},
     {PassBuffer::GbufferNormal, "gbuffer_normal"}, {PassBuffer::GbufferAlbedo, "gbuffer_albedo"},
+    {PassBuffer::GbufferSpecular, "gbuffer_specular"}, {PassBuffer::GbufferEmission, "gbuffer_emission"},
     {PassBuffer::Lighting, "lighting"},          {PassBuffer::Final, "final"}};
 
 // Gap between two layers in the side-by-side images, pixels.
@@ -79,11 +80,52 @@ std::string_view passOfBuffer(PassBuffer buffer) {
     case PassBuffer::ShadowMap: return "shadow";
     case PassBuffer::GbufferDepth:
     case PassBuffer::GbufferNormal:
-    case PassBuffer::GbufferAlbedo: return "gbuffer";
+    case PassBuffer::GbufferAlbedo:
+    case PassBuffer::GbufferSpecular:
+    case PassBuffer::GbufferEmission: return "gbuffer";
     case PassBuffer::Lighting: return "lighting";
     case PassBuffer::Final: return "final";
   }
   return "?";
+}
+
+const std::vector<vec4>* gbufferTargetOf(const GBuffer& g, PassBuffer buffer) {
+  switch (buffer) {
+    case PassBuffer::GbufferNormal: return &g.normal;
+    case PassBuffer::GbufferAlbedo: return &g.albedo;
+    case PassBuffer::GbufferSpecular: return &g.specular;
+    case PassBuffer::GbufferEmission: return &g.emission;
+    default: return nullptr;
+  }
+}
+
+std::vector<float> gbufferPlanes(const std::vector<vec4>& target, int width, int height) {
+  std::vector<float> planes(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3, 0.0f);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const std::size_t top = static_cast<std::size_t>(height - 1 - y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
+      if (top >= target.size()) continue;
+      for (int c = 0; c < 3; ++c) planes[texelIndex(x, y, c, width, height)] = target[top][c];
+    }
+  }
+  return planes;
+}
+
+Image gbufferImage(const std::vector<vec4>& target, int width, int height, bool normal) {
+  Image image = makeImage(width, height, kGapRgba);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
+      const vec4 v = i < target.size() ? target[i] : vec4(0.0f);
+      std::uint8_t* p = image.pixel(x, y);
+      for (int c = 0; c < 3; ++c) {
+        const float value = normal ? 0.5f + 0.5f * v[c] : v[c];
+        p[c] = static_cast<std::uint8_t>(std::lround(std::clamp(std::isfinite(value) ? value : 0.0f, 0.0f, 1.0f) * 255.0f));
+      }
+      p[3] = 255;
+    }
+  }
+  return image;
 }
 
 DepthBufferMetrics compareDepthBuffers(const std::vector<float>& a, const std::vector<float>& b, int width, int height,
@@ -155,7 +197,7 @@ nlohmann::json bufferRowToJson(const BufferRow& row) {
   nlohmann::json j = {{"buffer", std::string(toString(row.buffer))},
                       {"pass", std::string(passOfBuffer(row.buffer))},
                       {"available", row.available},
-                      {"kind", row.depth ? "depth" : "colour"}};
+                      {"kind", row.floats ? "float" : row.depth ? "depth" : "colour"}};
   if (row.light >= 0) j["light"] = row.light;
   if (!row.available) {
     j["note"] = row.note;
@@ -169,9 +211,10 @@ nlohmann::json bufferRowToJson(const BufferRow& row) {
     j["layers"] = m.layers;
     j["compared"] = m.compared;
     j["non_finite"] = m.nonFinite;
-    j["depth_max_diff"] = m.maxAbsDiff;
-    j["depth_mean_diff"] = m.meanAbsDiff;
-    j["depth_tolerance"] = m.tolerance;
+    const std::string prefix = row.floats ? "" : "depth_";  // a G-buffer row: "max_diff" ...
+    j[prefix + "max_diff"] = m.maxAbsDiff;
+    j[prefix + "mean_diff"] = m.meanAbsDiff;
+    j[prefix + "tolerance"] = m.tolerance;
     j["over_tolerance"] = m.overTolerance;
     j["max_at"] = {{"x", m.maxX}, {"y", m.maxY}, {"layer", m.maxLayer}};
   } else {

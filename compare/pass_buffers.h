@@ -3,12 +3,15 @@
 // `--all-buffers` writes one row per buffer, in pass order, to metrics.json's "buffers".
 //   shadow_map      each shadowed light's map (every layer), window depth: the shadow pass;
 //   gbuffer_depth   the frame's window depth;
-//   gbuffer_normal  the world normal each pixel's surface writes, as the `normal` view shows it;
-//   gbuffer_albedo  its albedo times kd, as the `albedo` view shows it;
+//   gbuffer_normal  the lighting normal each pixel's surface writes (world space);
+//   gbuffer_albedo  its albedo times kd;
+//   gbuffer_specular, gbuffer_emission  its ks specScale and what no light scales;
 //   lighting        the lit surfaces (the frame without its sky box);
 //   final           the frame as written.
-// The G-buffer rows are what a G-buffer pass writes per pixel, drawn by the forward pipeline's
-// own views (the deferred pipeline's G-buffer, settings.pipeline, is the next step).
+// A deferred frame (settings.pipeline deferred) diffs its G-buffer's float targets, channel by
+// channel within kGBufferTolerance. A forward frame has no G-buffer: its normal and albedo rows
+// are the forward pipeline's `normal` and `albedo` views, its specular and emission rows are
+// not available.
 #pragma once
 
 #include "compare/metrics.h"
@@ -23,10 +26,19 @@
 
 namespace twr {
 
-enum class PassBuffer { ShadowMap, GbufferDepth, GbufferNormal, GbufferAlbedo, Lighting, Final };
-inline constexpr PassBuffer kAllPassBuffers[] = {PassBuffer::ShadowMap,     PassBuffer::GbufferDepth,
-                                                 PassBuffer::GbufferNormal, PassBuffer::GbufferAlbedo,
-                                                 PassBuffer::Lighting,      PassBuffer::Final};
+enum class PassBuffer {
+  ShadowMap,
+  GbufferDepth,
+  GbufferNormal,
+  GbufferAlbedo,
+  GbufferSpecular,
+  GbufferEmission,
+  Lighting,
+  Final
+};
+inline constexpr PassBuffer kAllPassBuffers[] = {
+    PassBuffer::ShadowMap,       PassBuffer::GbufferDepth,    PassBuffer::GbufferNormal, PassBuffer::GbufferAlbedo,
+    PassBuffer::GbufferSpecular, PassBuffer::GbufferEmission, PassBuffer::Lighting,      PassBuffer::Final};
 std::string_view toString(PassBuffer buffer);
 bool parse(std::string_view name, PassBuffer& out);  // false for an unknown name
 std::string allPassBufferNames();                   // "shadow_map|gbuffer_depth|..."
@@ -34,6 +46,16 @@ std::string allPassBufferNames();                   // "shadow_map|gbuffer_depth
 constexpr bool isDepthBuffer(PassBuffer b) { return b == PassBuffer::ShadowMap || b == PassBuffer::GbufferDepth; }
 // The view a colour buffer is drawn in (final and lighting: the scene's own).
 View viewOfBuffer(PassBuffer buffer, View sceneView);
+
+// A G-buffer target's channels, as the colour they end up in: one 8-bit level.
+inline constexpr double kGBufferTolerance = 1.0 / 255.0;
+// The G-buffer target a row reads (null for a buffer that is no G-buffer colour target).
+const std::vector<vec4>* gbufferTargetOf(const GBuffer& g, PassBuffer buffer);
+// A target's x, y and z as three layers of compareDepthBuffers' layout (rows bottom first).
+std::vector<float> gbufferPlanes(const std::vector<vec4>& target, int width, int height);
+// A target as a picture, top row first: a normal as the normal view shows it (0.5 + 0.5 n),
+// the other targets clamped to [0, 1].
+Image gbufferImage(const std::vector<vec4>& target, int width, int height, bool normal);
 
 // Two depth buffers of the same shape, texel by texel (layers * height * width floats).
 struct DepthBufferMetrics {
@@ -65,6 +87,7 @@ struct BufferRow {
   bool available = false;     // both renderers produced it
   std::string note;           // why not, when not
   bool depth = false;         // depth metrics (else colour metrics)
+  bool floats = false;        // with depth: a G-buffer target's channels, not window depths
   DepthBufferMetrics depthMetrics;
   CompareMetrics colourMetrics;
   bool passes = true;         // within the targets (depth: overTolerance 0)

@@ -88,6 +88,7 @@ RenderSettings randomSettings(ByteReader& r) {
   s.tbnLines.enabled = r.flag();
   const float length = r.nonNegativeFloat();
   s.tbnLines.length = length > 0.0f ? length : 0.1f;  // the loader wants > 0
+  s.pipeline = static_cast<Pipeline>(r.intIn(0, 1));
   return s;
 }
 

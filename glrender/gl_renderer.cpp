@@ -14,6 +14,7 @@
 #include "glrender/gl_context.h"
 #include "glrender/gl_program.h"
 #include "glrender/gl_scene_draw.h"
+#include "glrender/gl_gbuffer.h"
 #include "glrender/gl_shadow_pass.h"
 #include "glrender/gl_targets.h"
 #include "glrender/llvmpipe_sampling.h"
@@ -28,6 +29,7 @@
 
 #include <array>
 #include <chrono>
+#include <functional>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -46,6 +48,7 @@ struct GlDevice {
   GlUploadCache uploads;  // meshes and textures kept across renders
   RenderTargets targets;
   GlShadowMaps shadows;  // the shadow pass's depth textures, kept across frames
+  GlGBuffer gbuffer;     // the deferred pipeline's targets, kept across frames
   std::unique_ptr<ImmediateTbnLines> immediateLines;  // loaded on first use
 
   GlDevice(std::unique_ptr<HeadlessGlContext> context, GlProcFunction proc, const std::string& shaderDir,
@@ -265,11 +268,30 @@ class GlRenderer final : public Renderer {
       glDisable(GL_SCISSOR_TEST);
     }
     device.targets.clear(scene.output.background);
-    device.targets.drawSurfaces();
     const GlClipState clipState = makeGlClipState(drawSettings, scene.camera);
+    const bool deferred = drawsDeferred(drawSettings);
+    double gbufferMilliseconds = 0.0, lightingMilliseconds = 0.0;
+    std::function<void()> lighting;
+    auto passStart = std::chrono::steady_clock::now();
+    if (deferred) {
+      // The G-buffer pass, then the lighting pass before the sky (gl_gbuffer.h); each pass's
+      // time is measured to its glFinish, only when a full frame is read back.
+      device.gbuffer.bindForSurfaces(device.targets, options_.frame);
+      lighting = [&] {
+        if (options_.frame == GlFrame::Full) glFinish();
+        const auto lightingStart = std::chrono::steady_clock::now();
+        gbufferMilliseconds = std::chrono::duration<double, std::milli>(lightingStart - passStart).count();
+        device.gbuffer.light(device.programs, scene, &device.shadows, clipFromWorld, device.targets);
+        if (options_.frame == GlFrame::Full) glFinish();
+        lightingMilliseconds =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - lightingStart).count();
+      };
+    } else {
+      device.targets.drawSurfaces();
+    }
     const SceneDrawStats drawStats = drawScene(device.programs, device.uploads, scene, drawSettings, clipState, items,
-                                               clipFromWorld, width, height, options_.frame, &device.shadows);
-    checkGlErrors("drawing the scene");
+                                               clipFromWorld, width, height, options_.frame, &device.shadows, lighting);
+    checkGlErrors(deferred ? "drawing the G-buffer and lighting passes" : "drawing the scene");
 
     if (settings.tbnLines.enabled) {
       drawLines(device, items, settings, clipState, viewFromWorldMatrix, clipFromViewMatrix, clipFromWorld);
@@ -284,12 +306,15 @@ class GlRenderer final : public Renderer {
       glDisable(GL_SCISSOR_TEST);
     } else {
       device.targets.readBack(out);
+      if (deferred && options_.frame == GlFrame::Full) out.gbuffer = device.gbuffer.readBack();
     }
     checkGlErrors("reading back");
     out.stats.readbackMilliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - drawn).count();
 
     out.stats.shadowMilliseconds = shadowMilliseconds;
+    out.stats.gbufferMilliseconds = gbufferMilliseconds;
+    out.stats.lightingMilliseconds = lightingMilliseconds;
     out.shadowMaps = std::move(shadowMaps);
     out.stats.trianglesIn = drawStats.trianglesIn;
     out.stats.pixelsShaded = drawStats.samplesPassed;

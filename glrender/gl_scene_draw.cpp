@@ -156,17 +156,10 @@ void applyPipelineState(const RenderSettings& settings) {
   applyFaceCulling(settings);
 }
 
-void setUniforms(GLuint program, const Scene& scene, const RenderSettings& settings, const GlClipState& clipState,
-                 const DrawItem& item, const mat4& clipFromWorld) {
-  const ModelTransforms transforms = makeModelTransforms(item.worldFromModel, settings.tangentTransform);
-  glUniformMatrix4fv(uniformLocation(program, "worldFromModel"), 1, GL_FALSE, &transforms.worldFromModel[0][0]);
-  glUniformMatrix4fv(uniformLocation(program, "clipFromWorld"), 1, GL_FALSE, &clipFromWorld[0][0]);
-  glUniformMatrix3fv(uniformLocation(program, "normalFromModel"), 1, GL_FALSE, &transforms.normalFromModel[0][0]);
-  glUniformMatrix3fv(uniformLocation(program, "tangentFromModel"), 1, GL_FALSE,
-                     &transforms.tangentFromModel[0][0]);
-  glUniform1f(uniformLocation(program, "mirrorSign"), transforms.mirrorSign);
-  glUniform3fv(uniformLocation(program, "eyePosWorld"), 1, &scene.camera.position.x);
+}  // namespace
 
+void setLightUniforms(GLuint program, const Scene& scene) {
+  glUniform3fv(uniformLocation(program, "eyePosWorld"), 1, &scene.camera.position.x);
   // The vertex stage reads lightVectorWorld[], the fragment stage lights[] (as the C++
   // VertexUniforms and ShadeUniforms do): each light as lightVectorWorld gives it, a point
   // light's position with w 1, a directional light's direction towards it with w 0.
@@ -184,6 +177,20 @@ void setUniforms(GLuint program, const Scene& scene, const RenderSettings& setti
     glUniform3fv(uniformLocation(program, (prefix + "specular").c_str()), 1, &light.specular.x);
     glUniform3fv(uniformLocation(program, (prefix + "attenuation").c_str()), 1, &attenuation.x);
   }
+}
+
+namespace {
+
+void setUniforms(GLuint program, const Scene& scene, const RenderSettings& settings, const GlClipState& clipState,
+                 const DrawItem& item, const mat4& clipFromWorld) {
+  const ModelTransforms transforms = makeModelTransforms(item.worldFromModel, settings.tangentTransform);
+  glUniformMatrix4fv(uniformLocation(program, "worldFromModel"), 1, GL_FALSE, &transforms.worldFromModel[0][0]);
+  glUniformMatrix4fv(uniformLocation(program, "clipFromWorld"), 1, GL_FALSE, &clipFromWorld[0][0]);
+  glUniformMatrix3fv(uniformLocation(program, "normalFromModel"), 1, GL_FALSE, &transforms.normalFromModel[0][0]);
+  glUniformMatrix3fv(uniformLocation(program, "tangentFromModel"), 1, GL_FALSE,
+                     &transforms.tangentFromModel[0][0]);
+  glUniform1f(uniformLocation(program, "mirrorSign"), transforms.mirrorSign);
+  setLightUniforms(program, scene);
   setGlClipUniforms(program, clipState, settings.userClipPlanes);
 
   const Material& material = *item.material;
@@ -381,7 +388,7 @@ std::vector<std::string> phongDefines(const Material& material, const RenderSett
 SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const Scene& scene,
                          const RenderSettings& settings, const GlClipState& clipState,
                          const std::vector<DrawItem>& items, const mat4& clipFromWorld, int width, int height,
-                         GlFrame frame, const GlShadowMaps* shadows) {
+                         GlFrame frame, const GlShadowMaps* shadows, const std::function<void()>& gbufferLighting) {
   SceneDrawStats stats;
   const bool countSamples = frame == GlFrame::Full;
   applyPipelineState(settings);
@@ -408,13 +415,14 @@ SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const S
     ProgramDesc desc{"phong",
                      {"common.glsl", "phong.vert"},
                      {"common.glsl", "surface_detail.glsl", "environment_map.glsl", "environment.glsl", "shadow.glsl",
-                      "phong.frag"},
+                      "lighting.glsl", "phong.frag"},
                      phongDefines(material, settings, materialReadsEnvironment(material, scene) ? &*scene.environment : nullptr)};
     if (materialReadsEnvironment(material, scene)) {
       for (std::string& d : environmentMapDefines(*scene.environment)) desc.defines.push_back(std::move(d));
     }
     if (frame == GlFrame::Lean) desc.defines.push_back("NO_TRIANGLE_ID");
     if (sceneHasShadows(scene)) desc.defines.push_back("HAS_SHADOWS");
+    if (gbufferLighting) desc.defines.push_back("GBUFFER_PASS");
     const GLuint program = programs.get(desc);
     glUseProgram(program);
     setUniforms(program, scene, settings, clipState, item, clipFromWorld);
@@ -463,6 +471,7 @@ SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const S
     glGetQueryObjectui64v(samples.id(), GL_QUERY_RESULT, &passed);
     stats.samplesPassed = passed;
   }
+  if (gbufferLighting) gbufferLighting();
   const SkyUniformsT<float> sky = makeSkyUniforms(scene, width, height, settings.view);
   if (sky.cube) drawSky(programs, uploads, scene, sky);
   glActiveTexture(GL_TEXTURE0);

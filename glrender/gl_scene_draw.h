@@ -11,6 +11,7 @@
 #include "scene/renderer.h"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace twr {
@@ -39,10 +40,17 @@ std::vector<std::string> phongDefines(const Material& material, const RenderSett
 // (samplesPassed), and the programs write the triangle id (location 1). GlFrame::Lean draws
 // as a user does: no query (samplesPassed 0), programs compiled with NO_TRIANGLE_ID.
 // `shadows`: the maps the shadow pass drew this frame (null or none drawn: a scene without
-// shadows), read by programs compiled with HAS_SHADOWS.
+// shadows), read by programs compiled with HAS_SHADOWS. `gbufferLighting` (the deferred
+// pipeline, gl_gbuffer.h): the items are drawn with GBUFFER_PASS into the bound G-buffer, then
+// it is called (the lighting pass) before the sky.
 SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const Scene& scene,
                          const RenderSettings& settings, const GlClipState& clipState,
                          const std::vector<DrawItem>& items, const mat4& clipFromWorld, int width, int height,
-                         GlFrame frame = GlFrame::Full, const GlShadowMaps* shadows = nullptr);
+                         GlFrame frame = GlFrame::Full, const GlShadowMaps* shadows = nullptr,
+                         const std::function<void()>& gbufferLighting = {});
+
+// The frame's lights and eye (shaders/lighting.glsl's uniforms, and phong.vert's
+// lightVectorWorld[]) on `program`, which is in use.
+void setLightUniforms(GLuint program, const Scene& scene);
 
 }  // namespace twr

@@ -50,6 +50,13 @@ class RenderTargets {
   // into `out` as a 1 x 1 output. Full sets only.
   void readPixel(int x, int yGl, RenderOutput& out) const;
 
+  // For the deferred pipeline's G-buffer (gl_gbuffer.h), which draws into this frame's
+  // triangle-id storage (0 in a lean set) and copies its depth into this framebuffer.
+  int width() const { return width_; }
+  int height() const { return height_; }
+  GLuint framebufferId() const { return framebuffer_.id(); }
+  GLuint triangleIdStorage() const { return triangleId_.id(); }
+
  private:
   GlFrame set_;
   int width_ = 0;

@@ -2,6 +2,8 @@
 
 #include "scene/errors.h"
 
+#include <glm/matrix.hpp>
+
 #include <cmath>
 
 namespace twr {
@@ -67,5 +69,7 @@ mat4 clipFromView(const Camera& camera, float aspect) {
   m[3][2] = static_cast<float>(2.0 * fa * n / (n - fa));
   return m;
 }
+
+mat4 worldFromClipOf(const mat4& clipFromWorld) { return mat4(glm::inverse(glm::dmat4(clipFromWorld))); }
 
 }  // namespace twr

@@ -26,5 +26,8 @@ std::string validateCamera(const Camera& camera);
 // Both throw InputError for an invalid camera.
 mat4 viewFromWorld(const Camera& camera);
 mat4 clipFromView(const Camera& camera, float aspect);
+// The inverse of a clipFromWorld, computed in double and rounded once (the deferred lighting
+// pass's position from depth on both renderers: one matrix, the same floats).
+mat4 worldFromClipOf(const mat4& clipFromWorld);
 
 }  // namespace twr

@@ -31,6 +31,20 @@ struct RenderStats {
   double captureMilliseconds = 0.0;
   // Of `milliseconds`, the part spent drawing the lights' shadow maps (0 without shadows).
   double shadowMilliseconds = 0.0;
+  // Of `milliseconds`, the deferred pipeline's G-buffer pass and lighting pass (0 forward).
+  double gbufferMilliseconds = 0.0;
+  double lightingMilliseconds = 0.0;
+};
+
+// A deferred frame's G-buffer (docs/deferred.md): one RGBA float target per surface quantity,
+// width * height entries, top row first. Its depth is the frame's depth buffer.
+struct GBuffer {
+  int width = 0, height = 0;
+  std::vector<vec4> normal;     // xyz: the normal lighting uses, world space, unit; w: the Phong exponent
+  std::vector<vec4> geometric;  // xyz: the interpolated normal (the shadow maps' slope), world, unit; w 1
+  std::vector<vec4> albedo;     // xyz: kd albedo, scaled by (1 - the environment's share); w 1
+  std::vector<vec4> specular;   // xyz: ks specScale, scaled the same; w 1
+  std::vector<vec4> emission;   // xyz: what no light scales (ambient, environment); w 1
 };
 
 struct CapturedFaces;  // below
@@ -52,6 +66,9 @@ struct RenderOutput {
   // Per light, the shadow map this renderer drew and shaded with (scene/shadow_map.h); empty
   // when no light casts a shadow, null for a light without one. GL's lean frame reads none back.
   ShadowMaps shadowMaps;
+  // The G-buffer a deferred frame was lit from; null for a forward frame (and GL's lean frame,
+  // which reads none back).
+  std::shared_ptr<const GBuffer> gbuffer;
 };
 
 // A captured environment's faces as the renderer drew them, in GL order (+X, -X, +Y, -Y, +Z,

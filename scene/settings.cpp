@@ -33,6 +33,7 @@ constexpr NameTable<View, 20> kView{{{View::Shaded, "shaded"},
                                      {View::Shadow, "shadow"},
                                      {View::LightDepth, "light_depth"}}};
 constexpr NameTable<LightingSpace, 2> kSpace{{{LightingSpace::World, "world"}, {LightingSpace::Tangent, "tangent"}}};
+constexpr NameTable<Pipeline, 2> kPipeline{{{Pipeline::Forward, "forward"}, {Pipeline::Deferred, "deferred"}}};
 constexpr NameTable<TangentTransform, 2> kTangent{
     {{TangentTransform::Model, "model"}, {TangentTransform::InverseTranspose, "inverse_transpose"}}};
 constexpr NameTable<TextureFilter, 6> kFilter{{{TextureFilter::Nearest, "nearest"},
@@ -88,6 +89,7 @@ std::string_view toString(CullMode v) { return nameOf(kCull, v); }
 std::string_view toString(FrontFace v) { return nameOf(kFront, v); }
 std::string_view toString(View v) { return nameOf(kView, v); }
 std::string_view toString(LightingSpace v) { return nameOf(kSpace, v); }
+std::string_view toString(Pipeline v) { return nameOf(kPipeline, v); }
 std::string_view toString(TangentTransform v) { return nameOf(kTangent, v); }
 std::string_view toString(TextureFilter v) { return nameOf(kFilter, v); }
 std::string_view toString(LineMode v) { return nameOf(kLine, v); }
@@ -101,6 +103,7 @@ bool parse(std::string_view s, CullMode& out) { return valueOf(kCull, s, out); }
 bool parse(std::string_view s, FrontFace& out) { return valueOf(kFront, s, out); }
 bool parse(std::string_view s, View& out) { return valueOf(kView, s, out); }
 bool parse(std::string_view s, LightingSpace& out) { return valueOf(kSpace, s, out); }
+bool parse(std::string_view s, Pipeline& out) { return valueOf(kPipeline, s, out); }
 bool parse(std::string_view s, TangentTransform& out) { return valueOf(kTangent, s, out); }
 bool parse(std::string_view s, TextureFilter& out) { return valueOf(kFilter, s, out) || valueOf(kFilterAliases, s, out); }
 bool parse(std::string_view s, LineMode& out) { return valueOf(kLine, s, out); }

@@ -64,6 +64,9 @@ enum class Fresnel { None, Schlick };
 enum class EnvironmentSpecular { None, Mirror, Prefiltered };
 enum class EnvironmentDiffuse { None, IrradianceMap, Sh9 };
 enum class LightingSpace { World, Tangent };
+// How a shaded frame is lit (docs/deferred.md): forward (every fragment lit as it is drawn) or
+// deferred (a G-buffer pass writes each pixel's surface, then one lighting pass per pixel).
+enum class Pipeline { Forward, Deferred };
 enum class TangentTransform { Model, InverseTranspose };
 // GL's minification filters (docs/textures.md): nearest = GL_NEAREST, bilinear = GL_LINEAR
 // (level 0 only), trilinear = GL_LINEAR_MIPMAP_LINEAR, and the other three mipmapped ones by
@@ -104,17 +107,25 @@ struct RenderSettings {
   std::vector<vec4> userClipPlanes;  // world space, keeps a*x + b*y + c*z + d >= 0
   View view = View::Shaded;
   LightingSpace lightingSpace = LightingSpace::World;
+  Pipeline pipeline = Pipeline::Forward;
   TangentTransform tangentTransform = TangentTransform::Model;
   TextureFilter textureFilter = TextureFilter::Bilinear;
   float anisotropy = 1.0f;  // GL_TEXTURE_MAX_ANISOTROPY, in [1, kMaxTextureAnisotropy]
   TbnLines tbnLines;
 };
 
+// Whether a frame with these settings draws deferred (docs/deferred.md): the pipeline asks for
+// it and the view is the shaded one (every debug view shows one surface quantity, drawn forward).
+inline bool drawsDeferred(const RenderSettings& settings) {
+  return settings.pipeline == Pipeline::Deferred && settings.view == View::Shaded;
+}
+
 // Names as written in scene files and on the command line.
 std::string_view toString(CullMode v);
 std::string_view toString(FrontFace v);
 std::string_view toString(View v);
 std::string_view toString(LightingSpace v);
+std::string_view toString(Pipeline v);
 std::string_view toString(TangentTransform v);
 std::string_view toString(TextureFilter v);
 std::string_view toString(LineMode v);
@@ -129,6 +140,7 @@ bool parse(std::string_view s, CullMode& out);
 bool parse(std::string_view s, FrontFace& out);
 bool parse(std::string_view s, View& out);
 bool parse(std::string_view s, LightingSpace& out);
+bool parse(std::string_view s, Pipeline& out);
 bool parse(std::string_view s, TangentTransform& out);
 bool parse(std::string_view s, TextureFilter& out);
 bool parse(std::string_view s, LineMode& out);

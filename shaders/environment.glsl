@@ -32,9 +32,10 @@ float schlick(float f0, float cosTheta) {
 // The environment mixed into `base` (the Phong colour): nl the lighting normal, vVec the
 // unnormalised eye direction, both in the lighting space; t, b, n the fragment's frame.
 // reflectWorldOut and reflectLodOut: the reflection's direction and the LOD it was read at,
-// for the environment views.
+// for the environment views; reflectedOut and shareOut: the reflection and its share w of the
+// mix (the deferred G-buffer folds the mix into its targets).
 vec3 environmentMix(vec3 nl, vec3 vVec, vec3 t, vec3 b, vec3 n, vec3 base, out vec3 reflectWorldOut,
-                    out float reflectLodOut) {
+                    out float reflectLodOut, out vec3 reflectedOut, out float shareOut) {
   vec3 v = safeNormalize(vVec);
   float nDotV = dot(nl, v);
   vec3 r = (2.0 * nDotV) * nl - v;  // reflect(-v, nl)
@@ -72,6 +73,8 @@ vec3 environmentMix(vec3 nl, vec3 vVec, vec3 t, vec3 b, vec3 n, vec3 base, out v
   share = reflectivity;
 #endif
 #endif
+  reflectedOut = reflected;
+  shareOut = share;
   return transmitted + (reflected - transmitted) * share;
 }
 

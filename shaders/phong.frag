@@ -21,6 +21,9 @@
 // NO_TRIANGLE_ID: no triangle-id output, as an OpenGL user's shader has none (the lean
 // frame, glrender/gl_renderer.h; llvmpipe pays for gl_PrimitiveID even when no draw buffer
 // takes the output).
+// GBUFFER_PASS (with VIEW_SHADED): the deferred pipeline's G-buffer pass, the surface written
+// to five targets instead of the colour (docs/deferred.md). The frame's lights and the light
+// loop are shaders/lighting.glsl's, included before this file.
 
 in vec3 posWorld;
 in vec3 nWorld;
@@ -32,26 +35,11 @@ in vec3 lightDirTangent[MAX_LIGHTS];
 in vec3 eyeDirTangent;
 #endif
 
-struct LightUniform {
-  vec4 vectorWorld;  // (position, 1) for a point light, (towards the light, 0) for a directional one
-  vec3 diffuse;      // Id
-  vec3 specular;     // Is
-  vec3 attenuation;  // A_C, A_L, A_Q
-};
-
 uniform vec3 ka;  // material reflectances
 uniform vec3 kd;
 uniform vec3 ks;
 uniform float shininess;  // Phong exponent, >= 0
 uniform vec3 ambient;     // Ia
-uniform LightUniform lights[MAX_LIGHTS];
-uniform int lightCount;   // in [0, MAX_LIGHTS]
-
-// The vector from p to a light: xyz - w p (w 1 for a point light, 0 for a directional one).
-vec3 toLightWorld(LightUniform light, vec3 p) {
-  return light.vectorWorld.xyz - light.vectorWorld.w * p;
-}
-uniform vec3 eyePosWorld;
 uniform uint firstTriangleId;
 uniform sampler2D diffuseMap;
 uniform sampler2D normalMap;
@@ -72,9 +60,25 @@ uniform vec2 specularUvScale;
 uniform vec2 specularUvOffset;
 #endif
 
+#ifdef GBUFFER_PASS
+// The deferred pipeline's G-buffer (scene/renderer.h's GBuffer, target by target); the
+// triangle id after them. A material whose light terms read its height field is lit here.
+layout(location = 0) out vec4 gbufferNormal;
+layout(location = 1) out vec4 gbufferGeometric;
+layout(location = 2) out vec4 gbufferAlbedo;
+layout(location = 3) out vec4 gbufferSpecular;
+layout(location = 4) out vec4 gbufferEmission;
+#ifndef NO_TRIANGLE_ID
+layout(location = 5) out uint fragTriangleId;
+#endif
+#if defined(SURFACE_BUMP_EMBOSS) || defined(SELF_SHADOW)
+#define GBUFFER_LIT_HERE
+#endif
+#else
 layout(location = 0) out vec4 fragColour;
 #ifndef NO_TRIANGLE_ID
 layout(location = 1) out uint fragTriangleId;
+#endif
 #endif
 
 void main() {
@@ -180,88 +184,25 @@ void main() {
 
   vec4 colour = vec4(0.0);
 #if defined(VIEW_SHADED)
-  vec3 sum = vec3(0.0);
-#ifdef HAS_SHADOWS
-  // The first shadowed light's test, for the shadow views.
-  ShadowTest firstShadowTest = ShadowTest(1.0, 0.0, 0.0, 1.0, 0.0, 0.0);
-  float firstShadowCosine = 0.0;
-  bool haveShadowTest = false;
-#endif
-  for (int i = 0; i < lightCount; ++i) {
-#ifdef LIGHTING_TANGENT
-    vec3 lVec = lightDirTangent[i];
-    vec3 vVec = eyeDirTangent;
-#else
-    vec3 lVec = toLightWorld(lights[i], posWorld);
-    vec3 vVec = eyePosWorld - posWorld;
-#endif
-    float d = length(toLightWorld(lights[i], posWorld));  // always from posWorld, both spaces
-    vec3 l = safeNormalize(lVec);
-    vec3 v = safeNormalize(vVec);
-    float nDotL = dot(nl, l);
-    vec3 r = 2.0 * nDotL * nl - l;
-    float rDotV = max(dot(r, v), 0.0);
-    float attenuation = 1.0 / max(lights[i].attenuation.x + lights[i].attenuation.y * d +
-                                      lights[i].attenuation.z * d * d,
-                                  MIN_ATTENUATION_DENOMINATOR);
-#if defined(SURFACE_BUMP_EMBOSS) || defined(SELF_SHADOW)
-    vec3 lT = tangentFromLighting(lVec, t, b, n);  // the light in tangent space
-#endif
-    float diffuseFactor = max(nDotL, 0.0);
-#ifdef SURFACE_BUMP_EMBOSS
-    // Emboss: N'.L ~ N.L + s (h(uv) - h(uv + lT.xy d)) / d, d = one texel; diffuse only.
-    float texel = heightTexel.x;
-    float hShifted = heightAt(vec2(uv.x + lT.x * texel, uv.y + lT.y * texel));
-    diffuseFactor = max(nDotL + heightScale * (detail.height - hShifted) / texel, 0.0);
-#endif
-    vec3 diffuse = kd * albedo * diffuseFactor * lights[i].diffuse;
-#ifdef SURFACE_BUMP_EMBOSS
-    vec3 specular = vec3(0.0);
-#else
-    vec3 specular = nDotL > 0.0 ? ks * specScale * phongPow(rDotV, shininess) * lights[i].specular : vec3(0.0);
-#endif
-    float shadow = 1.0;
-#ifdef SELF_SHADOW
-    shadow = selfShadow(detail, lT);
-#endif
-    bool mapOn = false;
-#ifdef HAS_SHADOWS
-    // The light's shadow map (shadow.glsl), at the geometric normal's angle, in world space.
-    // Tested only where it can matter: a fragment the light lights (diffuse or specular) and the
-    // shadow views; elsewhere both terms are 0 and so is their product with it.
-#if defined(SHADOW_VIEW_SHADOW) || defined(SHADOW_VIEW_LIGHT_DEPTH)
-    const bool shadowTestAlways = true;
-#else
-    const bool shadowTestAlways = false;
-#endif
-    int slot = shadowSlotOfLight[i];
-    if (slot >= 0 && (shadowTestAlways || diffuseFactor > 0.0 || nDotL > 0.0)) {
-      ShadowTest mapTest = shadowTest(slot, posWorld, n, safeNormalize(toLightWorld(lights[i], posWorld)));
-      shadow = shadow * mapTest.visibility;
-      mapOn = true;
-      if (!haveShadowTest) {
-        firstShadowTest = mapTest;
-        firstShadowCosine = dot(n, safeNormalize(toLightWorld(lights[i], posWorld)));
-        haveShadowTest = true;
-      }
-    }
-#endif
-#ifdef SELF_SHADOW
-    sum += ((diffuse + specular) * attenuation) * shadow;
-#else
-    if (mapOn) {
-      sum += ((diffuse + specular) * attenuation) * shadow;
-    } else {
-      sum += (diffuse + specular) * attenuation;
-    }
-#endif
-  }
+  vec3 kdAlbedo = kd * albedo;   // diffuse's first product
+  vec3 ksSpec = ks * specScale;  // specular's first
+  // What no light scales first: the ambient term, then the environment's diffuse light, added
+  // as the lights' diffuse terms are (environment.glsl). The G-buffer pass stores this sum.
   vec3 ambientTerm = ka * albedo * ambient;
-  colour = vec4(ambientTerm + sum, 1.0);
+  vec3 unlit = ambientTerm;
 #ifdef ENVIRONMENT_DIFFUSE
-  // The environment's diffuse light, added as the lights' diffuse terms are (environment.glsl).
-  colour = vec4(colour.rgb + (kd * albedo) * environmentDiffuse(nl, t, b, n), 1.0);
+  unlit = unlit + kdAlbedo * environmentDiffuse(nl, t, b, n);
 #endif
+#if !defined(GBUFFER_PASS) || defined(GBUFFER_LIT_HERE)
+  LightSum lit = lightSum(posWorld, n, t, b, nl, kdAlbedo, ksSpec, shininess
+#ifdef LIGHTING_TANGENT
+                          , lightDirTangent, eyeDirTangent
+#endif
+#ifdef HAS_HEIGHT_MAP
+                          , detail, uv
+#endif
+  );
+  colour = vec4(unlit + lit.sum, 1.0);
 #if defined(ENVIRONMENT_REFLECT) || defined(ENVIRONMENT_REFRACTION)
   // The environment, mixed into the Phong colour (environment.glsl).
 #ifdef LIGHTING_TANGENT
@@ -271,7 +212,10 @@ void main() {
 #endif
   vec3 reflectWorld;
   float reflectLod;
-  colour = vec4(environmentMix(nl, eyeVecEnvironment, t, b, n, colour.rgb, reflectWorld, reflectLod), 1.0);
+  vec3 reflected;
+  float share;
+  colour = vec4(environmentMix(nl, eyeVecEnvironment, t, b, n, colour.rgb, reflectWorld, reflectLod, reflected, share),
+                1.0);
 #ifdef ENVIRONMENT_VIEW
   colour = environmentViewColour(reflectWorld, reflectLod);
 #endif
@@ -282,17 +226,66 @@ void main() {
 #if defined(SHADOW_VIEW_SHADOW) || defined(SHADOW_VIEW_LIGHT_DEPTH)
   // The shadow views (shadow.glsl): the first shadowed light's test, or dimmed without one.
 #ifdef HAS_SHADOWS
-  if (!haveShadowTest) {
+  if (!lit.haveShadowTest) {
     colour = dimmedColour(colour);
   } else {
 #ifdef SHADOW_VIEW_SHADOW
-    colour = shadowViewColour(firstShadowTest, firstShadowCosine);
+    colour = shadowViewColour(lit.firstShadowTest, lit.firstShadowCosine);
 #else
-    colour = lightDepthColour(firstShadowTest);
+    colour = lightDepthColour(lit.firstShadowTest);
 #endif
   }
 #else
   colour = dimmedColour(colour);
+#endif
+#endif
+#endif  // the forward lighting
+#ifdef GBUFFER_PASS
+  // The G-buffer (C++ twin: gbufferFragmentLanes, softrender/deferred-inl.h). The lighting
+  // normal in world space: a tangent-space material's mapped normal through its TBN.
+  vec3 nlWorld = nl;
+#ifdef LIGHTING_TANGENT
+#if defined(HAS_NORMAL_MAP) || defined(SURFACE_BUMP_BLINN)
+  nlWorld = safeNormalize(t * mappedTangent.x + b * mappedTangent.y + n * mappedTangent.z);
+#else
+  nlWorld = n;
+#endif
+#endif
+  gbufferNormal = vec4(nlWorld, shininess);
+  gbufferGeometric = vec4(n, 1.0);
+#ifdef GBUFFER_LIT_HERE
+  gbufferAlbedo = vec4(0.0, 0.0, 0.0, 1.0);
+  gbufferSpecular = vec4(0.0, 0.0, 0.0, 1.0);
+  gbufferEmission = vec4(clamp(colour.rgb, 0.0, 1.0), 1.0);
+#else
+  // The environment's mix, colour = phong + (C - phong) w, folded into the targets: albedo and
+  // specular scaled by (1 - w), the emission (1 - w) unlit + w C. Refraction: w = 1.
+  float mixShare = 0.0;
+  vec3 mixTarget = vec3(0.0);
+#if defined(ENVIRONMENT_REFLECT) || defined(ENVIRONMENT_REFRACTION)
+#ifdef LIGHTING_TANGENT
+  vec3 eyeVecSurface = eyeDirTangent;
+#else
+  vec3 eyeVecSurface = eyePosWorld - posWorld;
+#endif
+  vec3 reflectWorldSurface;
+  float reflectLodSurface;
+  vec3 reflectedSurface;
+  float shareSurface;
+  vec3 mixedSurface = environmentMix(nl, eyeVecSurface, t, b, n, vec3(0.0), reflectWorldSurface, reflectLodSurface,
+                                     reflectedSurface, shareSurface);
+#ifdef ENVIRONMENT_REFRACTION
+  mixShare = 1.0;
+  mixTarget = mixedSurface;
+#else
+  mixShare = shareSurface;
+  mixTarget = reflectedSurface;
+#endif
+#endif
+  float keep = 1.0 - mixShare;
+  gbufferAlbedo = vec4(kdAlbedo * keep, 1.0);
+  gbufferSpecular = vec4(ksSpec * keep, 1.0);
+  gbufferEmission = vec4(unlit * keep + mixTarget * mixShare, 1.0);
 #endif
 #endif
 #elif defined(VIEW_ALBEDO)
@@ -354,7 +347,9 @@ void main() {
 #error "phong.frag: no VIEW_<NAME> defined"
 #endif
 
+#ifndef GBUFFER_PASS
   fragColour = clamp(colour, 0.0, 1.0);
+#endif
 #ifndef NO_TRIANGLE_ID
   fragTriangleId = firstTriangleId + uint(gl_PrimitiveID);
 #endif

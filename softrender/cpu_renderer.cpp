@@ -11,6 +11,7 @@
 #include "scene/projection_checks.h"
 #include "softrender/clip.h"
 #include "softrender/debug_lines.h"
+#include "softrender/deferred.h"
 #include "softrender/draw_list.h"
 #include "softrender/draw_loop.h"
 #include "softrender/fast_pipeline.h"
@@ -42,6 +43,46 @@ struct FramebufferTarget {
     writeFragment(fb, px, py, colour, depth, triangleId);
   }
 };
+
+// The G-buffer pass's target on the teaching path: depth and ids in the framebuffer, each
+// fragment's surface in the G-buffer (draw_loop.h's kWritesSurface).
+struct GBufferTarget {
+  static constexpr bool kWritesSurface = true;
+  Framebuffer& fb;
+  GBuffer& g;
+  float storedDepth(int px, int py) const { return fb.depth[fb.index(px, py)]; }
+  void writeSurface(int px, int py, const GBufferTexelL<float>& s, float depth, std::uint32_t triangleId) {
+    const std::size_t i = fb.index(px, py);
+    fb.depth[i] = depth;
+    fb.triangleId[i] = triangleId;
+    g.normal[i] = vec4(s.nl, s.shininess);
+    g.geometric[i] = vec4(s.n, 1.0f);
+    g.albedo[i] = vec4(s.kdAlbedo, 1.0f);
+    g.specular[i] = vec4(s.ksSpec, 1.0f);
+    g.emission[i] = vec4(s.emission, 1.0f);
+  }
+};
+
+// The teaching loop's items: each item's vertex stage run, its state copied.
+std::vector<LoopItemT<float>> teachingLoopItems(const std::vector<ItemState>& items) {
+  std::vector<LoopItemT<float>> loopItems(items.size());
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const ItemState& s = items[k];
+    LoopItemT<float>& d = loopItems[k];
+    d.mesh = s.item->mesh;
+    d.firstTriangleId = s.item->firstTriangleId;
+    d.vertices.resize(d.mesh->vertices.size());
+    for (std::size_t i = 0; i < d.vertices.size(); ++i) d.vertices[i] = runVertexStage(d.mesh->vertices[i], s.vertexUniforms);
+    d.shade = s.shade;
+    d.shaderKey = s.shaderKey;
+    d.clip = s.clip;
+    d.cull = s.cull;
+    d.frontFace = s.frontFace;
+    d.viewport = s.viewport;
+    d.tangentLighting = s.tangentLighting;
+  }
+  return loopItems;
+}
 
 class CpuRenderer final : public Renderer {
  public:
@@ -101,10 +142,38 @@ class CpuRenderer final : public Renderer {
       setShadowUniforms(items.back().shade, shadows);
     }
 
-    if (options_.path == CpuPath::Teaching) {
-      drawTeachingItems(items, options_.threads, fb, stats);
+    std::shared_ptr<GBuffer> gbuffer;
+    if (!drawsDeferred(settings)) {
+      if (options_.path == CpuPath::Teaching) {
+        drawTeachingItems(items, options_.threads, fb, stats);
+      } else {
+        fast_->draw(items, scene.output.background, fb, stats);
+      }
     } else {
-      fast_->draw(items, scene.output.background, fb, stats);
+      // Deferred (deferred.h): the G-buffer pass with the frame's own traversal, then the
+      // lighting pass over its pixels.
+      const auto gbufferStart = std::chrono::steady_clock::now();
+      gbuffer = std::make_shared<GBuffer>();
+      resizeGBuffer(*gbuffer, width, height, options_.path == CpuPath::Teaching);  // the fast pass writes every texel
+      if (options_.path == CpuPath::Teaching) {
+        const std::vector<LoopItemT<float>> loopItems = teachingLoopItems(items);
+        GBufferTarget target{fb, *gbuffer};
+        drawInBands(
+            options_.threads, fb.height, true,
+            [&](const RowBand& band, RenderStats& bandStats) { drawBand(loopItems, band, target, bandStats); }, stats);
+      } else {
+        fast_->draw(items, scene.output.background, fb, stats, false, gbuffer.get());
+      }
+      const auto lightingStart = std::chrono::steady_clock::now();
+      const DeferredUniforms lighting = makeDeferredUniforms(scene, drawSettings, width, height, shadows);
+      if (options_.path == CpuPath::Teaching) {
+        lightGBufferTeaching(*gbuffer, lighting, options_.threads, fb);
+      } else {
+        fast_->light(*gbuffer, lighting, fb);
+      }
+      const auto lightingEnd = std::chrono::steady_clock::now();
+      stats.gbufferMilliseconds = std::chrono::duration<double, std::milli>(lightingStart - gbufferStart).count();
+      stats.lightingMilliseconds = std::chrono::duration<double, std::milli>(lightingEnd - lightingStart).count();
     }
 
     // The sky box where no triangle was drawn (the environment's background), in the shaded
@@ -124,6 +193,7 @@ class CpuRenderer final : public Renderer {
     stats.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     out.stats = stats;
     out.shadowMaps = shadows;
+    out.gbuffer = std::move(gbuffer);
     return out;
   }
 
@@ -137,22 +207,7 @@ class CpuRenderer final : public Renderer {
 }  // namespace
 
 void drawTeachingItems(const std::vector<ItemState>& items, int threads, Framebuffer& fb, RenderStats& stats) {
-  std::vector<LoopItemT<float>> loopItems(items.size());
-  for (std::size_t k = 0; k < items.size(); ++k) {
-    const ItemState& s = items[k];
-    LoopItemT<float>& d = loopItems[k];
-    d.mesh = s.item->mesh;
-    d.firstTriangleId = s.item->firstTriangleId;
-    d.vertices.resize(d.mesh->vertices.size());
-    for (std::size_t i = 0; i < d.vertices.size(); ++i) d.vertices[i] = runVertexStage(d.mesh->vertices[i], s.vertexUniforms);
-    d.shade = s.shade;
-    d.shaderKey = s.shaderKey;
-    d.clip = s.clip;
-    d.cull = s.cull;
-    d.frontFace = s.frontFace;
-    d.viewport = s.viewport;
-    d.tangentLighting = s.tangentLighting;
-  }
+  const std::vector<LoopItemT<float>> loopItems = teachingLoopItems(items);
   FramebufferTarget target{fb};
   drawInBands(
       threads, fb.height, true,

@@ -6,13 +6,17 @@
 //   T storedDepth(int px, int py) const                   the depth buffer at the pixel
 //   void write(int px, int py, const Vec4T<T>& colour, T depth, std::uint32_t triangleId)
 // (GL window coordinates, row 0 at the bottom). The teaching path's target is its RGBA8
-// framebuffer; the reference's a double sample buffer. The fast path runs the same stages in
+// framebuffer; the reference's a double sample buffer. A target with kWritesSurface (the
+// deferred pipeline's G-buffer, deferred.h) takes each fragment's surface instead:
+//   void writeSurface(int px, int py, const GBufferTexelL<T>& surface, T depth, std::uint32_t triangleId)
+// and is drawn with the shaded permutations only. The fast path runs the same stages in
 // another traversal (fast_pipeline.h).
 #pragma once
 
 #include "scene/mesh.h"
 #include "scene/renderer.h"
 #include "softrender/clip.h"
+#include "softrender/deferred.h"
 #include "softrender/interpolate.h"
 #include "softrender/raster.h"
 #include "softrender/setup.h"
@@ -84,7 +88,11 @@ void drawClippedTriangle(const LoopItemT<T>& s, const ClipVertexT<T>& v0, const 
         }
       }
       setEnvironmentDifferences<Features>(varyings, px, py, s.shade, fragment);  // only when the material reads it
-      target.write(px, py, shadeFragment<Features>(fragment, s.shade, nullptr), depth, triangleId);
+      if constexpr (requires { Target::kWritesSurface; }) {
+        target.writeSurface(px, py, gbufferFragment<Features>(fragment, s.shade), depth, triangleId);
+      } else {
+        target.write(px, py, shadeFragment<Features>(fragment, s.shade, nullptr), depth, triangleId);
+      }
       ++stats.pixelsShaded;
     }
   });
@@ -116,8 +124,9 @@ void drawItem(const LoopItemT<T>& s, const RowBand& band, Target& target, Render
 // the shader permutation (withShaderFeatures), so nothing per pixel is dispatched.
 template <typename T, typename Target>
 void drawBand(const std::vector<LoopItemT<T>>& items, const RowBand& band, Target& target, RenderStats& stats) {
+  constexpr bool kSurface = requires { Target::kWritesSurface; };
   for (const LoopItemT<T>& s : items) {
-    withShaderFeatures(s.shaderKey, [&]<typename Features>() { drawItem<Features>(s, band, target, stats); });
+    withShaderFeatures<kSurface>(s.shaderKey, [&]<typename Features>() { drawItem<Features>(s, band, target, stats); });
   }
 }
 

@@ -24,6 +24,7 @@
 #include "scene/errors.h"
 #include "softrender/cpu_isa_targets.h"
 #include "softrender/raster.h"
+#include "softrender/deferred.h"
 #include "softrender/shade.h"
 
 #include <algorithm>
@@ -129,6 +130,7 @@ HWY_AFTER_NAMESPACE();
 
 #include "softrender/output_merge-inl.h"
 #include "softrender/shade-inl.h"
+#include "softrender/deferred-inl.h"
 
 #if defined(TWR_FAST_KERNEL_TARGETS) && (HWY_TARGET & (TWR_FAST_KERNEL_TARGETS))
 HWY_BEFORE_NAMESPACE();
@@ -249,11 +251,12 @@ HWY_INLINE void setUvDifferencesOfOneTriangle(const UvPlanesL<LaneF>& uv, LaneF 
 }
 #endif
 
+// The fragments of a segment's lanes: their triangles' planes (broadcast when all lanes share
+// one, gathered lane by lane otherwise) evaluated at the lanes' pixels, with the quad
+// differences the permutation reads.
 template <typename Features>
-void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps, std::uint32_t* rgbaOut) {
+HWY_INLINE FragmentL<LaneF> SegmentFragment(const Segment& s, const ItemState& item, const ItemMaps& maps) {
   const DF df;
-  const DI di;
-  const DU du;
   const std::size_t lanes = laneCount();
   const bool tangent = Features::kSpace == LightingSpace::Tangent;
   const int lightCount = item.shade.lightCount;
@@ -327,6 +330,15 @@ void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps,
       setEnvironmentDifferencesLanes<Features, LaneF>(planes, px, py, quadColumns, quadRow, item.shade, maps, fragment);
     }
   }
+  (void)df;
+  return fragment;
+}
+
+template <typename Features>
+void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps, std::uint32_t* rgbaOut) {
+  const DI di;
+  const DU du;
+  const FragmentL<LaneF> fragment = SegmentFragment<Features>(s, item, maps);
   const Vec4L<LaneF> colour =
       shadeFragmentLanes<Features, LaneF>(fragment, item.shade, maps, static_cast<std::nullptr_t*>(nullptr));
 
@@ -335,7 +347,23 @@ void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps,
   const auto word = hn::Or(hn::Or(byteOf(colour.x), hn::ShiftLeft<8>(byteOf(colour.y))),
                            hn::Or(hn::ShiftLeft<16>(byteOf(colour.z)), hn::Set(du, 0xFF000000u)));
   hn::BlendedStore(word, hn::RebindMask(du, lanesOf(s.bits).m), du, rgbaOut);
-  (void)df;
+}
+
+// The deferred pipeline's G-buffer pass for a segment: the surface (gbufferFragmentLanes) of
+// this item's lanes into `channels` (deferred.h's targets in order, four floats of normal then
+// three each of geometric, albedo, specular and emission), the other lanes left as they were.
+inline constexpr int kSurfaceChannels = 16;
+template <typename Features>
+void SurfaceSegment(const Segment& s, const ItemState& item, const ItemMaps& maps, float (*channels)[kMaxLanes]) {
+  const DF df;
+  const FragmentL<LaneF> fragment = SegmentFragment<Features>(s, item, maps);
+  const GBufferTexelL<LaneF> g = gbufferFragmentLanes<Features, LaneF>(fragment, item.shade, maps);
+  const LaneF values[kSurfaceChannels] = {g.nl.x,       g.nl.y,       g.nl.z,       g.shininess,
+                                          g.n.x,        g.n.y,        g.n.z,        g.kdAlbedo.x,
+                                          g.kdAlbedo.y, g.kdAlbedo.z, g.ksSpec.x,   g.ksSpec.y,
+                                          g.ksSpec.z,   g.emission.x, g.emission.y, g.emission.z};
+  const auto mask = lanesOf(s.bits).m;
+  for (int c = 0; c < kSurfaceChannels; ++c) hn::BlendedStore(values[c].v, mask, df, channels[c]);
 }
 
 using SegmentKernel = void (*)(const Segment&, const ItemState&, const ItemMaps&, std::uint32_t*);
@@ -347,18 +375,35 @@ SegmentKernel kernelFor(const ShaderKey& key) {
   withShaderFeatures(key, [&]<typename Features>() { kernel = &ShadeSegment<Features>; });
   return kernel;
 }
+using SurfaceKernel = void (*)(const Segment&, const ItemState&, const ItemMaps&, float (*)[kMaxLanes]);
+SurfaceKernel surfaceKernelFor(const ShaderKey& key) {
+  SurfaceKernel kernel = nullptr;
+  withShaderFeatures<true>(key, [&]<typename Features>() { kernel = &SurfaceSegment<Features>; });
+  return kernel;
+}
 
-void ShadeBin(const std::vector<BinTriangle>& triangles, const std::vector<ItemState>& items,
-              const std::vector<ItemMaps>& maps, const std::uint32_t* slots, int rowBegin, int rowEnd,
-              std::uint32_t background, Framebuffer& fb) {
+// Both shading passes of a bin: every pixel of rows [rowBegin, rowEnd) gets its triangle id
+// and, without `surfaces`, its colour (the background word where nothing was drawn); with
+// `surfaces`, the background word and its G-buffer texel (0 where nothing was drawn).
+void ShadeRows(const std::vector<BinTriangle>& triangles, const std::vector<ItemState>& items,
+               const std::vector<ItemMaps>& maps, const std::uint32_t* slots, int rowBegin, int rowEnd,
+               std::uint32_t background, Framebuffer& fb, GBuffer* surfaces) {
   const std::size_t lanes = laneCount();
   const std::size_t width = static_cast<std::size_t>(fb.width);
   std::vector<SegmentKernel> kernels(items.size());
-  for (std::size_t k = 0; k < items.size(); ++k) kernels[k] = kernelFor(items[k].shaderKey);
+  std::vector<SurfaceKernel> surfaceKernels(items.size());
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    if (surfaces) {
+      surfaceKernels[k] = surfaceKernelFor(items[k].shaderKey);
+    } else {
+      kernels[k] = kernelFor(items[k].shaderKey);
+    }
+  }
   HWY_ALIGN std::uint32_t slotLanes[kMaxLanes];
   HWY_ALIGN std::uint32_t itemLanes[kMaxLanes];
   HWY_ALIGN std::uint32_t rgbaLanes[kMaxLanes];
   HWY_ALIGN std::uint32_t idLanes[kMaxLanes];
+  HWY_ALIGN float channels[kSurfaceChannels][kMaxLanes];
   for (int py = rowBegin; py < rowEnd; ++py) {
     const std::uint32_t* row = slots + static_cast<std::size_t>(py - rowBegin) * width;
     for (std::size_t x = 0; x < width; x += lanes) {
@@ -366,8 +411,8 @@ void ShadeBin(const std::vector<BinTriangle>& triangles, const std::vector<ItemS
       std::uint64_t remaining = 0;
       for (std::size_t l = 0; l < lanes; ++l) {
         slotLanes[l] = l < inRow ? row[x + l] : kNoSlot;
+        rgbaLanes[l] = background;
         if (slotLanes[l] == kNoSlot) {
-          rgbaLanes[l] = background;
           idLanes[l] = kNoTriangle;
         } else {
           const BinTriangle& t = triangles[slotLanes[l]];
@@ -375,6 +420,9 @@ void ShadeBin(const std::vector<BinTriangle>& triangles, const std::vector<ItemS
           idLanes[l] = t.triangleId;
           remaining |= std::uint64_t{1} << l;
         }
+      }
+      if (surfaces) {
+        for (auto& channel : channels) std::fill(channel, channel + lanes, 0.0f);
       }
       // One pass per draw item present in the segment (usually one).
       while (remaining != 0) {
@@ -384,11 +432,83 @@ void ShadeBin(const std::vector<BinTriangle>& triangles, const std::vector<ItemS
           if (((remaining >> l) & 1u) != 0 && itemLanes[l] == item) bits |= std::uint64_t{1} << l;
         }
         remaining &= ~bits;
-        kernels[item](Segment{&triangles, slotLanes, bits, static_cast<int>(x), py}, items[item], maps[item], rgbaLanes);
+        const Segment segment{&triangles, slotLanes, bits, static_cast<int>(x), py};
+        if (surfaces) {
+          surfaceKernels[item](segment, items[item], maps[item], channels);
+        } else {
+          kernels[item](segment, items[item], maps[item], rgbaLanes);
+        }
       }
       const std::size_t origin = fb.index(static_cast<int>(x), py);
       std::memcpy(&fb.rgba[4 * origin], rgbaLanes, inRow * sizeof(std::uint32_t));
       std::memcpy(&fb.triangleId[origin], idLanes, inRow * sizeof(std::uint32_t));
+      if (surfaces) {
+        for (std::size_t l = 0; l < inRow; ++l) {
+          const auto at = [&](int c) { return channels[c][l]; };
+          surfaces->normal[origin + l] = vec4(at(0), at(1), at(2), at(3));
+          surfaces->geometric[origin + l] = vec4(at(4), at(5), at(6), 1.0f);
+          surfaces->albedo[origin + l] = vec4(at(7), at(8), at(9), 1.0f);
+          surfaces->specular[origin + l] = vec4(at(10), at(11), at(12), 1.0f);
+          surfaces->emission[origin + l] = vec4(at(13), at(14), at(15), 1.0f);
+        }
+      }
+    }
+  }
+}
+
+void ShadeBin(const std::vector<BinTriangle>& triangles, const std::vector<ItemState>& items,
+              const std::vector<ItemMaps>& maps, const std::uint32_t* slots, int rowBegin, int rowEnd,
+              std::uint32_t background, Framebuffer& fb) {
+  ShadeRows(triangles, items, maps, slots, rowBegin, rowEnd, background, fb, nullptr);
+}
+
+void SurfaceBin(const std::vector<BinTriangle>& triangles, const std::vector<ItemState>& items,
+                const std::vector<ItemMaps>& maps, const std::uint32_t* slots, int rowBegin, int rowEnd,
+                std::uint32_t background, Framebuffer& fb, GBuffer& surfaces) {
+  ShadeRows(triangles, items, maps, slots, rowBegin, rowEnd, background, fb, &surfaces);
+}
+
+// The lighting pass over rows [rowBegin, rowEnd): a vector of pixels of a row at a time, the
+// G-buffer's texels gathered into lanes, deferredLightingLanes where the depth is below the
+// clear depth; the other pixels keep their colour.
+void LightRows(const GBuffer& g, const DeferredUniforms& u, int rowBegin, int rowEnd, Framebuffer& fb) {
+  const DF df;
+  const DI di;
+  const DU du;
+  const std::size_t lanes = laneCount();
+  const std::size_t width = static_cast<std::size_t>(fb.width);
+  HWY_ALIGN float channels[kSurfaceChannels + 1][kMaxLanes];  // the surface, then the depth
+  for (int py = rowBegin; py < rowEnd; ++py) {
+    for (std::size_t x = 0; x < width; x += lanes) {
+      const std::size_t inRow = std::min(lanes, width - x);
+      const std::size_t origin = fb.index(static_cast<int>(x), py);
+      std::uint64_t bits = 0;
+      for (std::size_t l = 0; l < lanes; ++l) {
+        const bool drawn = l < inRow && fb.depth[origin + l] < kClearDepth;
+        if (drawn) bits |= std::uint64_t{1} << l;
+        const std::size_t i = drawn ? origin + l : origin;  // a sane texel for lanes not written
+        const vec4 &n = g.normal[i], &m = g.geometric[i], &a = g.albedo[i], &sp = g.specular[i], &e = g.emission[i];
+        const float values[kSurfaceChannels + 1] = {n.x, n.y, n.z, n.w, m.x, m.y, m.z, a.x, a.y,
+                                                    a.z, sp.x, sp.y, sp.z, e.x, e.y, e.z, fb.depth[i]};
+        for (int c = 0; c <= kSurfaceChannels; ++c) channels[c][l] = values[c];
+      }
+      if (bits == 0) continue;
+      const auto lane = [&](int c) HWY_ATTR { return LaneF(hn::Load(df, channels[c])); };
+      const GBufferTexelL<LaneF> surface{Vec3L<LaneF>(lane(0), lane(1), lane(2)),    lane(3),
+                                         Vec3L<LaneF>(lane(4), lane(5), lane(6)),    Vec3L<LaneF>(lane(7), lane(8), lane(9)),
+                                         Vec3L<LaneF>(lane(10), lane(11), lane(12)), Vec3L<LaneF>(lane(13), lane(14), lane(15))};
+      const LaneF px = pixelColumnsF(static_cast<int>(x)), pyLanes(static_cast<float>(py));
+      const Vec3L<LaneF> posWorld =
+          worldFromWindowLanes<LaneF>(u.worldFromClip, u.viewportSize, px, pyLanes, lane(kSurfaceChannels));
+      const Vec4L<LaneF> colour = deferredLightingLanes<LaneF>(surface, posWorld, u.lighting);
+      const auto byteOf = [&](LaneF c) HWY_ATTR { return hn::BitCast(du, hn::ConvertTo(di, byteValueOf<LaneF>(c).v)); };
+      const auto word = hn::Or(hn::Or(byteOf(colour.x), hn::ShiftLeft<8>(byteOf(colour.y))),
+                               hn::Or(hn::ShiftLeft<16>(byteOf(colour.z)), hn::Set(du, 0xFF000000u)));
+      HWY_ALIGN std::uint32_t words[kMaxLanes];
+      hn::Store(word, du, words);
+      for (std::size_t l = 0; l < inRow; ++l) {
+        if (((bits >> l) & 1u) != 0) std::memcpy(&fb.rgba[4 * (origin + l)], &words[l], sizeof(std::uint32_t));
+      }
     }
   }
 }
@@ -427,6 +547,8 @@ FastKernels GetKernels() {
   k.lanes = static_cast<int>(laneCount());
   k.visibility = &Visibility;
   k.shadeBin = &ShadeBin;
+  k.surfaceBin = &SurfaceBin;
+  k.lightRows = &LightRows;
   k.phongPow = &PhongPow;
   return k;
 }

@@ -17,6 +17,7 @@
 #include "scene/conventions.h"
 #include "scene/texture.h"
 #include "softrender/cpu_renderer.h"
+#include "softrender/deferred.h"
 #include "softrender/draw_list.h"
 #include "softrender/framebuffer.h"
 #include "softrender/interpolate.h"
@@ -104,6 +105,18 @@ struct FastKernels {
   void (*shadeBin)(const std::vector<BinTriangle>& triangles, const std::vector<ItemState>& items,
                    const std::vector<ItemMaps>& maps, const std::uint32_t* slots, int rowBegin, int rowEnd,
                    std::uint32_t background, Framebuffer& fb) = nullptr;
+
+  // The deferred pipeline's G-buffer pass over rows [rowBegin, rowEnd), as shadeBin but with
+  // the shaded permutation's surface (gbufferFragmentLanes, deferred-inl.h) written into
+  // `surfaces` instead of the colour: every pixel of the rows gets its texel (0 where nothing
+  // was drawn) and the background word in colour.
+  void (*surfaceBin)(const std::vector<BinTriangle>& triangles, const std::vector<ItemState>& items,
+                     const std::vector<ItemMaps>& maps, const std::uint32_t* slots, int rowBegin, int rowEnd,
+                     std::uint32_t background, Framebuffer& fb, GBuffer& surfaces) = nullptr;
+
+  // The deferred lighting pass over rows [rowBegin, rowEnd): every pixel whose depth is below
+  // the clear depth gets deferredLightingLanes's colour (alpha 255); the others keep theirs.
+  void (*lightRows)(const GBuffer& surfaces, const DeferredUniforms& u, int rowBegin, int rowEnd, Framebuffer& fb) = nullptr;
 
   // phongPow of x[0, count) with this target's vectors, into out (for the tests: the same
   // bits as powPositive).

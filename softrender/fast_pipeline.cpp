@@ -257,7 +257,7 @@ void FastPipeline::runFrontEnd(const std::vector<ItemState>& items, int binCount
 }
 
 std::uint64_t FastPipeline::drawBin(const std::vector<ItemState>& items, int bin, std::uint32_t background,
-                                        Framebuffer& fb, BackEnd& scratch, bool depthOnly) {
+                                        Framebuffer& fb, BackEnd& scratch, bool depthOnly, GBuffer* surfaces) {
   const int rowBegin = bin * kBinRows;
   const int rowEnd = std::min(fb.height, rowBegin + kBinRows);
   clearDepthRows(rowBegin, rowEnd, fb);  // colour and ids: the shading pass writes every pixel
@@ -284,12 +284,17 @@ std::uint64_t FastPipeline::drawBin(const std::vector<ItemState>& items, int bin
       t.item = r.item;
     }
   }
-  if (!depthOnly) kernels_.shadeBin(scratch.triangles, items, maps_, scratch.slots.data(), rowBegin, rowEnd, background, fb);
+  if (depthOnly) return passed;
+  if (surfaces) {
+    kernels_.surfaceBin(scratch.triangles, items, maps_, scratch.slots.data(), rowBegin, rowEnd, background, fb, *surfaces);
+  } else {
+    kernels_.shadeBin(scratch.triangles, items, maps_, scratch.slots.data(), rowBegin, rowEnd, background, fb);
+  }
   return passed;
 }
 
 void FastPipeline::draw(const std::vector<ItemState>& items, vec4 background, Framebuffer& fb, RenderStats& stats,
-                        bool depthOnly) {
+                        bool depthOnly, GBuffer* surfaces) {
   const std::uint32_t backgroundRgba = backgroundWord(background);
   runVertexStage(items);
   const int binCount = (fb.height + kBinRows - 1) / kBinRows;
@@ -298,7 +303,7 @@ void FastPipeline::draw(const std::vector<ItemState>& items, vec4 background, Fr
   std::vector<std::uint64_t> shaded(static_cast<std::size_t>(binCount), 0);
   pool_.run(binCount, [&](int bin, int thread) {
     shaded[static_cast<std::size_t>(bin)] =
-        drawBin(items, bin, backgroundRgba, fb, backEnds_[static_cast<std::size_t>(thread)], depthOnly);
+        drawBin(items, bin, backgroundRgba, fb, backEnds_[static_cast<std::size_t>(thread)], depthOnly, surfaces);
   });
   for (const FrontEnd& frontEnd : frontEnds_) {
     stats.trianglesIn += frontEnd.stats.trianglesIn;
@@ -307,6 +312,13 @@ void FastPipeline::draw(const std::vector<ItemState>& items, vec4 background, Fr
     stats.trianglesProduced += frontEnd.stats.trianglesProduced;
   }
   for (const std::uint64_t n : shaded) stats.pixelsShaded += n;
+}
+
+void FastPipeline::light(const GBuffer& surfaces, const DeferredUniforms& u, Framebuffer& fb) {
+  const int binCount = (fb.height + kBinRows - 1) / kBinRows;
+  pool_.run(binCount, [&](int bin, int) {
+    kernels_.lightRows(surfaces, u, bin * kBinRows, std::min(fb.height, (bin + 1) * kBinRows), fb);
+  });
 }
 
 }  // namespace twr

@@ -22,6 +22,7 @@
 #include "scene/renderer.h"
 #include "softrender/cpu_renderer.h"
 #include "softrender/clip.h"
+#include "softrender/deferred.h"
 #include "softrender/draw_list.h"
 #include "softrender/fast_kernels.h"
 #include "softrender/framebuffer.h"
@@ -61,9 +62,15 @@ class FastPipeline {
   // Clears `fb` to `background` (as makeFramebuffer) and draws every item's triangles into it,
   // adding the counts to `stats`. `items` are in submission order; validateIndices must have
   // passed for each. depthOnly: the visibility pass alone (a shadow pass): depth is written,
-  // colour and triangle ids are left as they were, nothing is shaded.
+  // colour and triangle ids are left as they were, nothing is shaded. `surfaces` (the deferred
+  // pipeline's G-buffer pass, sized as fb): each pixel's surface is written there instead of
+  // its colour (kernels' surfaceBin); colour gets the background.
   void draw(const std::vector<ItemState>& items, vec4 background, Framebuffer& fb, RenderStats& stats,
-            bool depthOnly = false);
+            bool depthOnly = false, GBuffer* surfaces = nullptr);
+
+  // The deferred lighting pass: fb's pixels with a surface (depth below the clear depth) lit
+  // from `surfaces`, bins of rows on the pool's threads.
+  void light(const GBuffer& surfaces, const DeferredUniforms& u, Framebuffer& fb);
 
  private:
   // One item's vertex stage output, one entry per mesh vertex (capacity kept across frames).
@@ -121,7 +128,7 @@ class FastPipeline {
   void emit(const ItemState& s, std::uint32_t item, std::uint32_t triangleId, std::array<const FastVertex*, 3> v,
             std::array<const float*, 3> varyings, FrontEnd& out);
   std::uint64_t drawBin(const std::vector<ItemState>& items, int bin, std::uint32_t background, Framebuffer& fb,
-                        BackEnd& scratch, bool depthOnly);
+                        BackEnd& scratch, bool depthOnly, GBuffer* surfaces);
 
   WorkerPool pool_;
   FastKernels kernels_;  // the chosen Highway target's

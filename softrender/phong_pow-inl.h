@@ -75,6 +75,23 @@ TWR_LANE_INLINE L phongPow(L x, ScalarOf<L> s) {
   }
 }
 
+// phongPow with one exponent per lane (the deferred lighting pass reads the shininess from the
+// G-buffer): the same operations, so a lane gets phongPow's bits for its own s. Float lanes only.
+template <typename L>
+TWR_LANE_INLINE L phongPowPerLane(L x, L s) {
+  using S = ScalarOf<L>;
+  const S infinity = std::numeric_limits<S>::infinity();
+  const L zero(S(0)), one(S(1));
+  const auto positive = x > zero;
+  const auto infinite = positive & !(x < L(infinity));
+  const L finiteX = select(positive & !infinite, x, one);
+  const L powered = toNarrow<L>(powPositiveWide(toWide(finiteX), toWide(s)));
+  const auto sPositive = s > zero;
+  const L zeroCase = select(sPositive, zero, one);
+  const L infCase = select(sPositive, L(infinity), one);
+  return select(infinite, infCase, select(positive, powered, zeroCase));
+}
+
 TWR_LANES_END
 
 #endif  // TWR_PHONG_POW_INL_EMIT

@@ -217,6 +217,181 @@ TWR_LANE_OUTLINE void setEnvironmentDifferencesLanes(const VaryingPlanesL<L>& pl
   f.refractDy = difference(firstRow, own.refractWorld, columnPartner.refractWorld);
 }
 
+// The material's own texels at the surface detail's uv: the diffuse map's albedo and the
+// specular map's scale (1 without the map). phong.frag's albedo and specScale.
+template <typename L>
+struct MaterialTexelsL {
+  Vec3L<L> albedo, specScale;
+};
+template <typename Features, typename L, typename Maps>
+TWR_LANE_INLINE MaterialTexelsL<L> materialTexelsLanes(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u,
+                                                       const Maps& maps, const SurfaceDetailL<L>& detail) {
+  using S = ScalarOf<L>;
+  const L one(S(1));
+  // A shifted uv is read with GLSL's dFdx / dFdy (textureGrad), the fine differences.
+  const bool uvShifted = Features::kHasHeightMap && shiftsUv(u.surfaceDetail);
+  MaterialTexelsL<L> m{Vec3L<L>(one), Vec3L<L>(one)};
+  if constexpr (Features::kHasDiffuseMap) {
+    const Vec4L<L> texel = sampleMapLanes<L>(*maps.diffuse, u, kDiffuseSlot, f, detail.uv, uvShifted);
+    m.albedo = Vec3L<L>(texel.x, texel.y, texel.z);
+  }
+  if constexpr (Features::kHasSpecularMap) {
+    const Vec4L<L> texel = sampleMapLanes<L>(*maps.specular, u, kSpecularSlot, f, detail.uv, uvShifted);
+    m.specScale = Vec3L<L>(texel.x, texel.y, texel.z);
+  }
+  return m;
+}
+
+// x^s for the specular term, s one uniform (forward shading) or one per lane (the deferred
+// lighting pass reads it from the G-buffer): the same bits for the same s.
+template <typename L, typename Shininess>
+TWR_LANE_INLINE L specularPowLanes(L x, const Shininess& s) {
+  if constexpr (std::is_same_v<Shininess, ScalarOf<L>>) {
+    return phongPow<L>(x, s);
+  } else {
+    return phongPowPerLane<L>(x, s);
+  }
+}
+
+// The frame's lights at one surface point: shaders/lighting.glsl's lightSum, the loop the
+// forward shading and the deferred lighting pass share. `frame` gives n (the interpolated
+// normal: the shadow maps' slope), nl (the normal lighting uses, in the lighting space) and,
+// for a height-mapped material, t, b and the surface detail; kdAlbedo and ksSpec are the
+// diffuse and specular terms' first products. `f` is the fragment a forward shading reads the
+// tangent-space light vectors and the height field's uv from; the deferred pass lights in
+// world space without a height map and passes null.
+template <typename L>
+struct LightSumL {
+  Vec3L<L> sum;                    // sum_i (diffuse + specular) If shadow
+  ShadowTestL<L> firstShadowTest;  // the first shadowed light's test, for the shadow views
+  L firstShadowCosine;
+  bool haveShadowTest;
+};
+template <typename Features, typename L, typename Maps, typename Shininess, typename Terms>
+TWR_LANE_INLINE LightSumL<L> lightSumLanes(const FragmentL<L>* f, const ShadeUniformsT<ScalarOf<L>>& u, const Maps& maps,
+                                           const Vec3L<L>& posWorld, const SurfaceFrameL<L>& frame,
+                                           const Vec3L<L>& kdAlbedo, const Vec3L<L>& ksSpec, const Shininess& shininess,
+                                           Terms* terms) {
+  using S = ScalarOf<L>;
+  constexpr bool kTrace = !std::is_same_v<Terms, std::nullptr_t>;
+  constexpr bool kTangentSpace = Features::kSpace == LightingSpace::Tangent;
+  const L zero(S(0)), one(S(1)), two(S(2));
+  const Vec3L<L>& n = frame.n;
+  const Vec3L<L>& nl = frame.nl;
+  const bool emboss = Features::kHasHeightMap && u.surfaceDetail == SurfaceDetail::BumpEmboss;
+  const bool selfShadowOn = Features::kHasHeightMap && u.selfShadow != SelfShadow::None;
+  LightSumL<L> out{Vec3L<L>(zero), ShadowTestL<L>{one, zero, zero, one, zero, zero}, zero, false};
+  for (int i = 0; i < u.lightCount; ++i) {
+    const LightUniformT<S>& light = u.lights[static_cast<std::size_t>(i)];
+    const Vec3L<L> toLight = toLightLanes<L>(light, posWorld);
+    Vec3L<L> lVec, vVec;
+    if constexpr (kTangentSpace) {
+      lVec = f->lightDirTangent[static_cast<std::size_t>(i)];
+      vVec = f->eyeDirTangent;
+    } else {
+      lVec = toLight;
+      vVec = Vec3L<L>(u.eyePosWorld) - posWorld;
+    }
+    const L d = lengthOf<L>(toLight);
+    const Vec3L<L> l = safeNormalize3<L>(lVec);
+    const Vec3L<L> v = safeNormalize3<L>(vVec);
+    const L nDotL = dot3<L>(nl, l);
+    const Vec3L<L> r = (two * nDotL) * nl - l;
+    const L rDotV = maxOf(dot3<L>(r, v), zero);
+    const L attenuation = attenuationLanes<L>(light.attenuation, d);
+    L diffuseFactor = maxOf(nDotL, zero);
+    L selfShadowValue = one;
+    if constexpr (Features::kHasHeightMap) {
+      Vec3L<L> lT(zero, zero, one);  // the light in tangent space (emboss and self-shadowing)
+      if (emboss || selfShadowOn) lT = tangentFromLightingLanes<L>(lVec, frame.t, frame.b, n, kTangentSpace);
+      if (emboss) {
+        // Emboss: N'.L ~ N.L + s (h(uv) - h(uv + lT.xy d)) / d, d = one texel: Blinn's first
+        // order term along the light, from two height samples; diffuse only.
+        const L texel(u.heightTexel.x);
+        const L hShifted =
+            heightAtLanes<L>(*maps.height, u, Vec2L<L>(f->uv.x + lT.x * texel, f->uv.y + lT.y * texel), *f);
+        diffuseFactor = maxOf(nDotL + L(u.heightScale) * (frame.detail.height - hShifted) / texel, zero);
+      }
+      if (selfShadowOn) selfShadowValue = selfShadowLanes<L>(maps, u, *f, frame.detail, lT);
+    }
+    const Vec3L<L> diffuse = (kdAlbedo * diffuseFactor) * Vec3L<L>(light.diffuse);
+    // The specular term only where N.L > 0 (and pow only when some lane needs it).
+    const auto lit = nDotL > zero;
+    Vec3L<L> specular(zero);
+    if (!emboss && anyOf(lit)) {
+      specular = select3<L>(lit, (ksSpec * specularPowLanes<L>(rDotV, shininess)) * Vec3L<L>(light.specular), specular);
+    }
+    L shadow = selfShadowValue;
+    // The light's shadow map (shadow-inl.h): a runtime branch per light, never taken by a
+    // light without one. Its angle is the geometric normal's, in world space.
+    ShadowTestL<L> mapTest{one, zero, zero, one, zero, zero};
+    // Tested only where it can matter: a lane the light lights (diffuse or specular), the
+    // shadow views and the trace; elsewhere both terms are 0 and so is their product with it.
+    const bool mapOn = light.shadow.depth != nullptr &&
+                       (kTrace || isShadowView(u.shadedView) || anyOf((diffuseFactor > zero) | lit));
+    if (mapOn) {
+      mapTest = (shadowTestLanes<L>)(light.shadow, posWorld, n, safeNormalize3<L>(toLight));
+      shadow = shadow * mapTest.visibility;
+      if (!out.haveShadowTest) {
+        out.firstShadowTest = mapTest;
+        out.firstShadowCosine = dot3<L>(n, safeNormalize3<L>(toLight));
+        out.haveShadowTest = true;
+      }
+    }
+    if (selfShadowOn || mapOn) {
+      out.sum += ((diffuse + specular) * attenuation) * shadow;
+    } else {
+      out.sum += (diffuse + specular) * attenuation;
+    }
+    if constexpr (kTrace) {
+      if (terms) {
+        auto& lt = terms->lights[static_cast<std::size_t>(i)];
+        lt.lVec = lVec;
+        lt.vVec = vVec;
+        lt.distance = d;
+        lt.l = l;
+        lt.v = v;
+        lt.r = r;
+        lt.nDotL = nDotL;
+        lt.rDotV = rDotV;
+        lt.attenuation = attenuation;
+        lt.selfShadow = selfShadowValue;
+        lt.shadowOn = mapOn;
+        lt.shadowVisibility = mapTest.visibility;
+        lt.shadowDepth = mapTest.depth;
+        lt.shadowBias = mapTest.bias;
+        lt.shadowStored = mapTest.stored;
+        lt.diffuse = diffuse;
+        lt.specular = specular;
+      }
+    }
+  }
+  return out;
+}
+
+// What no light scales, summed first: the ambient term, then the environment's diffuse light
+// added as the lights' diffuse terms are (kd albedo times it). The forward shading adds the
+// lights to it; the deferred pipeline's G-buffer pass stores it (gbufferFragmentLanes).
+template <typename L>
+struct UnlitTermsL {
+  Vec3L<L> ambient, environmentDiffuse, unlit;
+};
+template <typename Features, typename L>
+TWR_LANE_INLINE UnlitTermsL<L> unlitTermsLanes(const ShadeUniformsT<ScalarOf<L>>& u, const SurfaceFrameL<L>& frame,
+                                               const Vec3L<L>& albedo, const Vec3L<L>& kdAlbedo) {
+  using S = ScalarOf<L>;
+  constexpr bool kTangentSpace = Features::kSpace == LightingSpace::Tangent;
+  UnlitTermsL<L> out;
+  out.ambient = (Vec3L<L>(u.ka) * albedo) * Vec3L<L>(u.ambient);
+  out.environmentDiffuse = Vec3L<L>(L(S(0)));
+  out.unlit = out.ambient;
+  if (u.environment.cube && u.environment.diffuse != EnvironmentDiffuse::None) {
+    out.environmentDiffuse = (environmentDiffuseLanes<L>)(u.environment, frame.nl, frame.t, frame.b, frame.n, kTangentSpace);
+    out.unlit = out.unlit + kdAlbedo * out.environmentDiffuse;
+  }
+  return out;
+}
+
 // Shades one fragment per lane with the permutation `Features` (shade.h's ShaderFeatures).
 // `maps` holds the material's textures as the lane type reads them (members diffuse, normal,
 // specular: pointers to views, see texture_sample-inl.h); `terms`, when not null, receives
@@ -227,7 +402,7 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
   using S = ScalarOf<L>;
   constexpr bool kTrace = !std::is_same_v<Terms, std::nullptr_t>;
   constexpr bool kTangentSpace = Features::kSpace == LightingSpace::Tangent;
-  const L zero(S(0)), one(S(1)), two(S(2));
+  const L zero(S(0)), one(S(1));
   const bool wantHeight = kTrace || Features::kView == View::Height || u.selfShadow == SelfShadow::HeightMarch;
   const SurfaceFrameL<L> frame = (surfaceFrameLanes<Features, L>)(f, u, maps, wantHeight);
   const Vec3L<L>& n = frame.n;
@@ -237,21 +412,11 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
   const Vec3L<L>& nl = frame.nl;
   const Vec3L<L>& mappedTangent = frame.mappedTangent;
   const Vec4L<L>& normalTexel = frame.normalTexel;
-  // A shifted uv is read with GLSL's dFdx / dFdy (textureGrad), the fine differences.
-  const bool uvShifted = Features::kHasHeightMap && shiftsUv(u.surfaceDetail);
-  const bool emboss = Features::kHasHeightMap && u.surfaceDetail == SurfaceDetail::BumpEmboss;
   const bool selfShadowOn = Features::kHasHeightMap && u.selfShadow != SelfShadow::None;
 
-  Vec3L<L> albedo(one);
-  if constexpr (Features::kHasDiffuseMap) {
-    const Vec4L<L> texel = sampleMapLanes<L>(*maps.diffuse, u, kDiffuseSlot, f, detail.uv, uvShifted);
-    albedo = Vec3L<L>(texel.x, texel.y, texel.z);
-  }
-  Vec3L<L> specScale(one);
-  if constexpr (Features::kHasSpecularMap) {
-    const Vec4L<L> texel = sampleMapLanes<L>(*maps.specular, u, kSpecularSlot, f, detail.uv, uvShifted);
-    specScale = Vec3L<L>(texel.x, texel.y, texel.z);
-  }
+  const MaterialTexelsL<L> texels = (materialTexelsLanes<Features, L>)(f, u, maps, detail);
+  const Vec3L<L>& albedo = texels.albedo;
+  const Vec3L<L>& specScale = texels.specScale;
 
   if constexpr (kTrace) {
     if (terms) {
@@ -273,119 +438,21 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
   if constexpr (Features::kView == View::Shaded) {
     const Vec3L<L> kdAlbedo = Vec3L<L>(u.kd) * albedo;   // u.kd * albedo, diffuse's first product
     const Vec3L<L> ksSpec = Vec3L<L>(u.ks) * specScale;  // u.ks * specScale, specular's first
-    Vec3L<L> sum(zero);
-    // The first shadowed light's test, for the shadow views.
-    ShadowTestL<L> firstShadowTest{one, zero, zero, one, zero, zero};
-    L firstShadowCosine = zero;
-    bool haveShadowTest = false;
-    for (int i = 0; i < u.lightCount; ++i) {
-      const LightUniformT<S>& light = u.lights[static_cast<std::size_t>(i)];
-      const Vec3L<L> toLight = toLightLanes<L>(light, f.posWorld);
-      Vec3L<L> lVec, vVec;
-      if constexpr (kTangentSpace) {
-        lVec = f.lightDirTangent[static_cast<std::size_t>(i)];
-        vVec = f.eyeDirTangent;
-      } else {
-        lVec = toLight;
-        vVec = Vec3L<L>(u.eyePosWorld) - f.posWorld;
-      }
-      const L d = lengthOf<L>(toLight);
-      const Vec3L<L> l = safeNormalize3<L>(lVec);
-      const Vec3L<L> v = safeNormalize3<L>(vVec);
-      const L nDotL = dot3<L>(nl, l);
-      const Vec3L<L> r = (two * nDotL) * nl - l;
-      const L rDotV = maxOf(dot3<L>(r, v), zero);
-      const L attenuation = attenuationLanes<L>(light.attenuation, d);
-      Vec3L<L> lT(zero, zero, one);  // the light in tangent space (emboss and self-shadowing)
-      if (emboss || selfShadowOn) lT = tangentFromLightingLanes<L>(lVec, t, b, n, kTangentSpace);
-      L diffuseFactor = maxOf(nDotL, zero);
-      if constexpr (Features::kHasHeightMap) {
-        if (emboss) {
-          // Emboss: N'.L ~ N.L + s (h(uv) - h(uv + lT.xy d)) / d, d = one texel: Blinn's first
-          // order term along the light, from two height samples; diffuse only.
-          const L texel(u.heightTexel.x);
-          const L hShifted = heightAtLanes<L>(*maps.height, u, Vec2L<L>(f.uv.x + lT.x * texel, f.uv.y + lT.y * texel), f);
-          diffuseFactor = maxOf(nDotL + L(u.heightScale) * (detail.height - hShifted) / texel, zero);
-        }
-      }
-      const Vec3L<L> diffuse = (kdAlbedo * diffuseFactor) * Vec3L<L>(light.diffuse);
-      // The specular term only where N.L > 0 (and pow only when some lane needs it).
-      const auto lit = nDotL > zero;
-      Vec3L<L> specular(zero);
-      if (!emboss && anyOf(lit)) {
-        specular = select3<L>(lit, (ksSpec * phongPow<L>(rDotV, u.shininess)) * Vec3L<L>(light.specular), specular);
-      }
-      L selfShadowValue = one;
-      if (selfShadowOn) selfShadowValue = selfShadowLanes<L>(maps, u, f, detail, lT);
-      L shadow = selfShadowValue;
-      // The light's shadow map (shadow-inl.h): a runtime branch per light, never taken by a
-      // light without one. Its angle is the geometric normal's, in world space.
-      ShadowTestL<L> mapTest{one, zero, zero, one, zero, zero};
-      // Tested only where it can matter: a lane the light lights (diffuse or specular), the
-      // shadow views and the trace; elsewhere both terms are 0 and so is their product with it.
-      const bool mapOn = light.shadow.depth != nullptr &&
-                         (kTrace || isShadowView(u.shadedView) || anyOf((diffuseFactor > zero) | lit));
-      if (mapOn) {
-        mapTest = (shadowTestLanes<L>)(light.shadow, f.posWorld, n, safeNormalize3<L>(toLight));
-        shadow = shadow * mapTest.visibility;
-        if (!haveShadowTest) {
-          firstShadowTest = mapTest;
-          firstShadowCosine = dot3<L>(n, safeNormalize3<L>(toLight));
-          haveShadowTest = true;
-        }
-      }
-      if (selfShadowOn || mapOn) {
-        sum += ((diffuse + specular) * attenuation) * shadow;
-      } else {
-        sum += (diffuse + specular) * attenuation;
-      }
-      if constexpr (kTrace) {
-        if (terms) {
-          auto& lt = terms->lights[static_cast<std::size_t>(i)];
-          lt.lVec = lVec;
-          lt.vVec = vVec;
-          lt.distance = d;
-          lt.l = l;
-          lt.v = v;
-          lt.r = r;
-          lt.nDotL = nDotL;
-          lt.rDotV = rDotV;
-          lt.attenuation = attenuation;
-          lt.selfShadow = selfShadowValue;
-          lt.shadowOn = mapOn;
-          lt.shadowVisibility = mapTest.visibility;
-          lt.shadowDepth = mapTest.depth;
-          lt.shadowBias = mapTest.bias;
-          lt.shadowStored = mapTest.stored;
-          lt.diffuse = diffuse;
-          lt.specular = specular;
-        }
+    const UnlitTermsL<L> unlitTerms = (unlitTermsLanes<Features, L>)(u, frame, albedo, kdAlbedo);
+    const Vec3L<L>& ambient = unlitTerms.ambient;
+    const Vec3L<L>& unlit = unlitTerms.unlit;
+    if constexpr (kTrace) {
+      if (terms && u.environment.cube) {
+        terms->environmentDiffuseOn = u.environment.diffuse != EnvironmentDiffuse::None;
+        terms->environmentDiffuse = unlitTerms.environmentDiffuse;
       }
     }
-    const Vec3L<L> ambient = (Vec3L<L>(u.ka) * albedo) * Vec3L<L>(u.ambient);
-    colour = Vec4L<L>(ambient + sum, one);
+    const LightSumL<L> lit = (lightSumLanes<Features, L>)(&f, u, maps, f.posWorld, frame, kdAlbedo, ksSpec, u.shininess, terms);
+    colour = Vec4L<L>(unlit + lit.sum, one);
     if constexpr (kTrace) {
       if (terms) {
         terms->ambient = ambient;
         terms->lightCount = u.lightCount;
-      }
-    }
-    // The environment, mixed into the Phong colour (environment-inl.h): one branch per draw
-    // item, never taken by a material without an environment.
-    if (u.environment.cube) {
-      Vec3L<L> phong(colour.x, colour.y, colour.z);
-      // The diffuse light first, added as the lights' diffuse terms are (kd albedo times it).
-      Vec3L<L> diffuseLight(zero);
-      if (u.environment.diffuse != EnvironmentDiffuse::None) {
-        diffuseLight = (environmentDiffuseLanes<L>)(u.environment, nl, t, b, n, kTangentSpace);
-        phong = phong + kdAlbedo * diffuseLight;
-        colour = Vec4L<L>(phong, one);
-      }
-      if constexpr (kTrace) {
-        if (terms) {
-          terms->environmentDiffuseOn = u.environment.diffuse != EnvironmentDiffuse::None;
-          terms->environmentDiffuse = diffuseLight;
-        }
       }
     }
     if (u.environment.cube && u.environment.readsDirections()) {
@@ -421,12 +488,12 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
     }
     if (isShadowView(u.shadedView)) {
       // The shadow views (shadow-inl.h): the first shadowed light's test, or dimmed without one.
-      if (!haveShadowTest) {
+      if (!lit.haveShadowTest) {
         colour = (dimmedColourLanes<L>)(colour);
       } else if (u.shadedView == View::Shadow) {
-        colour = (shadowViewColourLanes<L>)(firstShadowTest, firstShadowCosine);
+        colour = (shadowViewColourLanes<L>)(lit.firstShadowTest, lit.firstShadowCosine);
       } else {
-        colour = (lightDepthColourLanes<L>)(firstShadowTest);
+        colour = (lightDepthColourLanes<L>)(lit.firstShadowTest);
       }
     } else if (u.shadedView != View::Shaded && !(u.environment.cube && u.environment.readsDirections())) {
       colour = (dimmedColourLanes<L>)(colour);

@@ -261,7 +261,9 @@ ShaderKey shaderKeyFor(const ShadeUniformsT<T>& uniforms, const RenderSettings& 
 // Calls body.template operator()<ShaderFeatures<...>>() for the permutation `key` names: the
 // one runtime branch per draw item, so nothing per pixel is dispatched at run time. A debug
 // view is instantiated only for the features it reads (canonicalShaderKey clears the others).
-template <typename Body>
+// kShadedOnly: the shaded permutations alone (the deferred pipeline's G-buffer pass, which
+// runs for the shaded view only), so a caller that needs no other view compiles no other.
+template <bool kShadedOnly = false, typename Body>
 void withShaderFeatures(const ShaderKey& keyIn, Body&& body) {
   const ShaderKey key = canonicalShaderKey(keyIn);
   constexpr LightingSpace kWorld = LightingSpace::World, kTangent = LightingSpace::Tangent;
@@ -302,6 +304,10 @@ void withShaderFeatures(const ShaderKey& keyIn, Body&& body) {
     }
     withNormal.template operator()<false, V>();
   };
+  if constexpr (kShadedOnly) {
+    withAll.template operator()<View::Shaded>();
+    return;
+  }
   switch (key.view) {
     case View::Shaded: withAll.template operator()<View::Shaded>(); break;
     case View::Albedo:

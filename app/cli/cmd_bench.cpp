@@ -225,8 +225,9 @@ std::vector<std::string> childArguments(const BenchArgs& args, int width, int he
                                    "--threads", std::to_string(threads),
                                    "--gl-precise-child"};
   for (const std::string& argument : glRequestArguments(args.gl)) argv.push_back(argument);
-  const std::array<std::pair<const char*, const std::string*>, 6> overrides = {{
+  const std::array<std::pair<const char*, const std::string*>, 7> overrides = {{
       {"--view", &r.view},
+      {"--pipeline", &r.pipeline},
       {"--cull", &r.cull},
       {"--front-face", &r.frontFace},
       {"--lighting-space", &r.lightingSpace},

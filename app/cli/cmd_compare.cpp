@@ -174,6 +174,29 @@ std::vector<BufferRow> compareBuffers(const std::vector<PassBuffer>& buffers, co
       rows.push_back(row);
       continue;
     }
+    if (cpuOut.gbuffer && glOut.gbuffer && gbufferTargetOf(*cpuOut.gbuffer, buffer)) {
+      // A deferred frame's G-buffer target, channel by channel (x, y, z side by side).
+      const std::vector<vec4>& ta = *gbufferTargetOf(*cpuOut.gbuffer, buffer);
+      const std::vector<vec4>& tb = *gbufferTargetOf(*glOut.gbuffer, buffer);
+      const std::vector<float> a = gbufferPlanes(ta, width, height), b = gbufferPlanes(tb, width, height);
+      row.depth = true;
+      row.floats = true;
+      row.depthMetrics = compareDepthBuffers(a, b, width, height, 3, kGBufferTolerance);
+      row.passes = row.depthMetrics.overTolerance == 0 && row.depthMetrics.nonFinite == 0;
+      const bool normal = buffer == PassBuffer::GbufferNormal;
+      savePng(dir + "/buffer_" + name + "_cpu.png", gbufferImage(ta, width, height, normal));
+      savePng(dir + "/buffer_" + name + "_gl.png", gbufferImage(tb, width, height, normal));
+      savePng(dir + "/buffer_" + name + "_diff.png", depthDiffImage(a, b, width, height, 3, kGBufferTolerance));
+      rows.push_back(row);
+      continue;
+    }
+    if (buffer == PassBuffer::GbufferSpecular || buffer == PassBuffer::GbufferEmission) {
+      row.available = false;
+      row.depth = true;
+      row.note = "a forward frame has no G-buffer (settings.pipeline deferred writes one)";
+      rows.push_back(row);
+      continue;
+    }
     CompareOptions options;
     options.compareBackground = buffer == PassBuffer::Final && drawsSky(scene, scene.settings);
     // The frame itself, or the scene drawn again in the buffer's view.
@@ -203,7 +226,7 @@ std::vector<BufferRow> compareBuffers(const std::vector<PassBuffer>& buffers, co
 void printBufferRows(const std::vector<BufferRow>& rows, const std::string& dir) {
   std::cout << "buffers, in pass order (images: " << dir << "/buffer_<name>_cpu|gl|diff.png):\n";
   for (const BufferRow& row : rows) {
-    std::cout << "  " << std::left << std::setw(15) << toString(row.buffer) << std::right;
+    std::cout << "  " << std::left << std::setw(16) << toString(row.buffer) << std::right;
     if (row.light >= 0) std::cout << " light " << row.light;
     if (!row.available) {
       std::cout << ": not available (" << row.note << ")\n";
@@ -213,7 +236,8 @@ void printBufferRows(const std::vector<BufferRow>& rows, const std::string& dir)
     if (row.depth) {
       const DepthBufferMetrics& m = row.depthMetrics;
       std::cout << ": " << m.width << "x" << m.height << (m.layers > 1 ? " x " + std::to_string(m.layers) : "")
-                << ", depth max diff " << m.maxAbsDiff << ", texels over " << m.tolerance << ": " << m.overTolerance;
+                << (row.floats ? " channels, max diff " : ", depth max diff ") << m.maxAbsDiff << ", texels over "
+                << m.tolerance << ": " << m.overTolerance;
     } else {
       const CompareMetrics& m = row.colourMetrics;
       std::cout << std::setprecision(3) << ": max abs diff " << m.maxAbsDiff << " levels, over 1 level " << m.over1

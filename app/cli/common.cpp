@@ -41,6 +41,9 @@ void addRenderOptions(CLI::App& cmd, RenderRequest& request) {
       ->check(kNonEmpty);
   cmd.add_option("--lighting-space", request.lightingSpace, "Override settings.lighting_space: world|tangent")
       ->check(kNonEmpty);
+  cmd.add_option("--pipeline", request.pipeline,
+                 "Override settings.pipeline: forward|deferred (a G-buffer pass, then a lighting pass)")
+      ->check(kNonEmpty);
   cmd.add_option("--tangent-transform", request.tangentTransform,
                  "Override settings.tangent_transform: model|inverse_transpose")
       ->check(kNonEmpty);
@@ -67,6 +70,7 @@ Scene loadRequestedScene(const RenderRequest& request) {
   applyOverride(request.cull, "--cull", s.cull, "none|back|front");
   applyOverride(request.frontFace, "--front-face", s.frontFace, "ccw|cw");
   applyOverride(request.lightingSpace, "--lighting-space", s.lightingSpace, "world|tangent");
+  applyOverride(request.pipeline, "--pipeline", s.pipeline, "forward|deferred");
   applyOverride(request.tangentTransform, "--tangent-transform", s.tangentTransform, "model|inverse_transpose");
   applyOverride(request.textureFilter, "--filter", s.textureFilter,
                 "nearest|bilinear|trilinear|nearest_mipmap_nearest|linear_mipmap_nearest|nearest_mipmap_linear");

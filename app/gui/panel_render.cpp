@@ -19,6 +19,7 @@ namespace {
 constexpr CullMode kCullModes[] = {CullMode::None, CullMode::Back, CullMode::Front};
 constexpr FrontFace kFrontFaces[] = {FrontFace::Ccw, FrontFace::Cw};
 constexpr LightingSpace kLightingSpaces[] = {LightingSpace::World, LightingSpace::Tangent};
+constexpr Pipeline kPipelines[] = {Pipeline::Forward, Pipeline::Deferred};
 constexpr TangentTransform kTangentTransforms[] = {TangentTransform::Model, TangentTransform::InverseTranspose};
 constexpr const TextureFilter (&kTextureFilters)[6] = kAllTextureFilters;
 constexpr LineMode kLineModes[] = {LineMode::Core, LineMode::Immediate};
@@ -191,6 +192,10 @@ void GuiApp::drawRenderingTab() {
   }
 
   sectionTitle("Shading");
+  changed |= enumRadio("Pipeline", settings.pipeline, kPipelines, labelWidth,
+                       "forward: each fragment lit as it is drawn. deferred: a G-buffer pass writes each pixel's "
+                       "surface, then a lighting pass lights every pixel once (docs/deferred.md). The debug views "
+                       "draw forward.");
   changed |= enumRadio("Lighting space", settings.lightingSpace, kLightingSpaces, labelWidth,
                        "world: N from the normal map is rotated to world space per pixel. tangent: L and V are "
                        "rotated into tangent space per vertex and interpolated (the tutorial's way).");

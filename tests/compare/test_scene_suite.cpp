@@ -42,6 +42,7 @@ struct SuiteCase {
   std::string cull, frontFace;  // empty: the scene's own
   std::string filter;           // empty: the scene's own texture_filter
   int width = 0, height = 0;    // 0: the scene's output size
+  bool deferred = false;        // settings.pipeline deferred (and checked against forward too)
   std::string name;
 };
 
@@ -106,6 +107,22 @@ std::vector<SuiteCase> suiteCases() {
     c.name = stem(scene) + "_1280x720";
     cases.push_back(c);
   }
+  // Every scene deferred (issue 18): the G-buffer and lighting passes on both renderers, each
+  // renderer's deferred frame held to the same limits against its forward frame too; the
+  // shadow scenes at 1280x720 as well.
+  for (const suite::SceneTolerance& row : suite::kSceneTolerances) {
+    const std::string scene(row.scene);
+    SuiteCase c;
+    c.scene = scene;
+    c.deferred = true;
+    c.name = stem(scene) + "_deferred";
+    cases.push_back(c);
+    if (scene.rfind("shadow_", 0) != 0 || kQuickSuite) continue;
+    c.width = 1280;
+    c.height = 720;
+    c.name = stem(scene) + "_deferred_1280x720";
+    cases.push_back(c);
+  }
   // The shadow views on the shadowed scenes (the default scene shows them dimmed: no shadow).
   for (const char* scene : {"shadow_directional.json", "shadow_point_cube.json"}) {
     for (View view : {View::Shadow, View::LightDepth}) {
@@ -155,6 +172,7 @@ TEST_P(SceneSuite, CpuMatchesLlvmpipeWithinTolerance) {
   if (!c.filter.empty()) {
     ASSERT_TRUE(parse(c.filter, scene.settings.textureFilter));
   }
+  if (c.deferred) scene.settings.pipeline = Pipeline::Deferred;
   const int divisor = kQuickSuite ? 2 : 1;
   const int width = c.width > 0 ? c.width : scene.output.width / divisor;
   const int height = c.height > 0 ? c.height : scene.output.height / divisor;
@@ -215,6 +233,49 @@ TEST_P(SceneSuite, CpuMatchesLlvmpipeWithinTolerance) {
       ADD_FAILURE() << "light " << i << "'s shadow map: " << d.overTolerance << " texels differ by more than "
                     << kDefaultDepthTolerance << " (max " << d.maxAbsDiff << "), " << d.nonFinite
                     << " not finite; images in " << stem << "_*.png";
+    }
+  }
+
+  // Deferred: the G-buffers' targets channel by channel, and each renderer's deferred frame
+  // against its own forward frame, under the same limits.
+  if (c.deferred) {
+    ASSERT_TRUE(cpu.gbuffer && gl.gbuffer) << "a deferred frame without its G-buffer";
+    for (PassBuffer buffer : kAllPassBuffers) {
+      const std::vector<vec4>* ta = gbufferTargetOf(*cpu.gbuffer, buffer);
+      if (!ta) continue;
+      const std::vector<vec4>& tb = *gbufferTargetOf(*gl.gbuffer, buffer);
+      const std::vector<float> pa = gbufferPlanes(*ta, width, height), pb = gbufferPlanes(tb, width, height);
+      const DepthBufferMetrics d = compareDepthBuffers(pa, pb, width, height, 3, kGBufferTolerance);
+      // As the colour targets allow over 1 level: limits.maxOver1Pct of the covered pixels.
+      const double allowed = *limits.maxOver1Pct / 100.0 * static_cast<double>(m.bothCovered) * 3.0;
+      if (static_cast<double>(d.overTolerance) > allowed || d.nonFinite > 0) {
+        const std::string dir = std::string(TWINRASTER_TEST_OUT) + "/suite/" + c.name;
+        std::filesystem::create_directories(dir);
+        const std::string stem = dir + "/" + std::string(toString(buffer));
+        savePng(stem + "_cpu.png", gbufferImage(*ta, width, height, buffer == PassBuffer::GbufferNormal));
+        savePng(stem + "_gl.png", gbufferImage(tb, width, height, buffer == PassBuffer::GbufferNormal));
+        savePng(stem + "_diff.png", depthDiffImage(pa, pb, width, height, 3, kGBufferTolerance));
+        ADD_FAILURE() << toString(buffer) << ": " << d.overTolerance << " channels differ by more than "
+                      << kGBufferTolerance << " (max " << d.maxAbsDiff << " at " << d.maxX << ", " << d.maxY
+                      << "), allowed " << allowed << "; images in " << stem << "_*.png";
+      }
+    }
+    RenderSettings forward = scene.settings;
+    forward.pipeline = Pipeline::Forward;
+    const std::pair<const char*, const RenderOutput*> sides[] = {{"cpu", &cpu}, {"gl", &gl}};
+    for (const auto& [side, deferredOut] : sides) {
+      const RenderOutput forwardOut = std::string(side) == "cpu" ? makeCpuRenderer()->render(scene, forward, width, height)
+                                                                 : makeGlRenderer()->render(scene, forward, width, height);
+      const CompareResult against = compareDetailed(*deferredOut, forwardOut, options);
+      const std::vector<ThresholdViolation> v = checkThresholds(against.metrics, limits);
+      if (!v.empty()) {
+        const std::string dir = std::string(TWINRASTER_TEST_OUT) + "/suite/" + c.name + "/" + side + "_deferred_vs_forward";
+        const ArtifactPaths paths = writeCompareArtifacts(dir, *deferredOut, forwardOut, against, metricsToJson(against.metrics));
+        std::string message = std::string(side) + ": deferred against forward exceeds the limits:\n";
+        for (const ThresholdViolation& x : v) message += "  " + x.message + "\n";
+        for (const std::string& path : paths.all()) message += "  " + path + "\n";
+        ADD_FAILURE() << message;
+      }
     }
   }
 

@@ -1,0 +1,120 @@
+// The frame's lights (docs/shading.md) and the light loop that lights one surface point:
+// shared by the forward shading (phong.frag) and the deferred pipeline's lighting pass
+// (deferred_lighting.frag). C++ twin: lightSumLanes in softrender/shade-inl.h, the same order
+// of operations. Included after shadow.glsl (and surface_detail.glsl for a height field).
+
+struct LightUniform {
+  vec4 vectorWorld;  // (position, 1) for a point light, (towards the light, 0) for a directional one
+  vec3 diffuse;      // Id
+  vec3 specular;     // Is
+  vec3 attenuation;  // A_C, A_L, A_Q
+};
+
+uniform LightUniform lights[MAX_LIGHTS];
+uniform int lightCount;   // in [0, MAX_LIGHTS]
+uniform vec3 eyePosWorld;
+
+// The vector from p to a light: xyz - w p (w 1 for a point light, 0 for a directional one).
+vec3 toLightWorld(LightUniform light, vec3 p) {
+  return light.vectorWorld.xyz - light.vectorWorld.w * p;
+}
+
+struct LightSum {
+  vec3 sum;  // sum_i (diffuse + specular) If shadow
+#ifdef HAS_SHADOWS
+  ShadowTest firstShadowTest;  // the first shadowed light's test, for the shadow views
+  float firstShadowCosine;
+  bool haveShadowTest;
+#endif
+};
+
+// n: the interpolated normal (the shadow maps' slope, world space); nl: the normal lighting
+// uses, in the lighting space; kdAlbedo, ksSpec: the diffuse and specular terms' first
+// products. Tangent-space lighting reads the vertex stage's light and eye vectors; a height
+// field's emboss and self-shadowing read the detail and the fragment's uv.
+LightSum lightSum(vec3 posWorld, vec3 n, vec3 t, vec3 b, vec3 nl, vec3 kdAlbedo, vec3 ksSpec, float exponent
+#ifdef LIGHTING_TANGENT
+                  , vec3 lightDirs[MAX_LIGHTS], vec3 eyeDir
+#endif
+#ifdef HAS_HEIGHT_MAP
+                  , SurfaceDetail detail, vec2 fragmentUv
+#endif
+) {
+  LightSum result;
+  result.sum = vec3(0.0);
+#ifdef HAS_SHADOWS
+  result.firstShadowTest = ShadowTest(1.0, 0.0, 0.0, 1.0, 0.0, 0.0);
+  result.firstShadowCosine = 0.0;
+  result.haveShadowTest = false;
+#endif
+  for (int i = 0; i < lightCount; ++i) {
+#ifdef LIGHTING_TANGENT
+    vec3 lVec = lightDirs[i];
+    vec3 vVec = eyeDir;
+#else
+    vec3 lVec = toLightWorld(lights[i], posWorld);
+    vec3 vVec = eyePosWorld - posWorld;
+#endif
+    float d = length(toLightWorld(lights[i], posWorld));  // always from posWorld, both spaces
+    vec3 l = safeNormalize(lVec);
+    vec3 v = safeNormalize(vVec);
+    float nDotL = dot(nl, l);
+    vec3 r = 2.0 * nDotL * nl - l;
+    float rDotV = max(dot(r, v), 0.0);
+    float attenuation = 1.0 / max(lights[i].attenuation.x + lights[i].attenuation.y * d +
+                                      lights[i].attenuation.z * d * d,
+                                  MIN_ATTENUATION_DENOMINATOR);
+    float diffuseFactor = max(nDotL, 0.0);
+    float shadow = 1.0;
+#if defined(SURFACE_BUMP_EMBOSS) || defined(SELF_SHADOW)
+    vec3 lT = tangentFromLighting(lVec, t, b, n);  // the light in tangent space
+#endif
+#ifdef SURFACE_BUMP_EMBOSS
+    // Emboss: N'.L ~ N.L + s (h(uv) - h(uv + lT.xy d)) / d, d = one texel; diffuse only.
+    float texel = heightTexel.x;
+    float hShifted = heightAt(vec2(fragmentUv.x + lT.x * texel, fragmentUv.y + lT.y * texel));
+    diffuseFactor = max(nDotL + heightScale * (detail.height - hShifted) / texel, 0.0);
+#endif
+#ifdef SELF_SHADOW
+    shadow = selfShadow(detail, lT);
+#endif
+    vec3 diffuse = kdAlbedo * diffuseFactor * lights[i].diffuse;
+#ifdef SURFACE_BUMP_EMBOSS
+    vec3 specular = vec3(0.0);
+#else
+    vec3 specular = nDotL > 0.0 ? ksSpec * phongPow(rDotV, exponent) * lights[i].specular : vec3(0.0);
+#endif
+    bool mapOn = false;
+#ifdef HAS_SHADOWS
+    // The light's shadow map (shadow.glsl), at the geometric normal's angle, in world space.
+    // Tested only where it can matter: a point the light lights (diffuse or specular) and the
+    // shadow views; elsewhere both terms are 0 and so is their product with it.
+#if defined(SHADOW_VIEW_SHADOW) || defined(SHADOW_VIEW_LIGHT_DEPTH)
+    const bool shadowTestAlways = true;
+#else
+    const bool shadowTestAlways = false;
+#endif
+    int slot = shadowSlotOfLight[i];
+    if (slot >= 0 && (shadowTestAlways || diffuseFactor > 0.0 || nDotL > 0.0)) {
+      ShadowTest mapTest = shadowTest(slot, posWorld, n, safeNormalize(toLightWorld(lights[i], posWorld)));
+      shadow = shadow * mapTest.visibility;
+      mapOn = true;
+      if (!result.haveShadowTest) {
+        result.firstShadowTest = mapTest;
+        result.firstShadowCosine = dot(n, safeNormalize(toLightWorld(lights[i], posWorld)));
+        result.haveShadowTest = true;
+      }
+    }
+#endif
+#ifdef SELF_SHADOW
+    result.sum += ((diffuse + specular) * attenuation) * shadow;
+#else
+    if (mapOn) {
+      result.sum += ((diffuse + specular) * attenuation) * shadow;
+    } else {
+      result.sum += (diffuse + specular) * attenuation;
+    }
+#endif
+  }
+  return result;
+}
