@@ -444,12 +444,13 @@ void ShadeRows(const std::vector<BinTriangle>& triangles, const std::vector<Item
       std::memcpy(&fb.triangleId[origin], idLanes, inRow * sizeof(std::uint32_t));
       if (surfaces) {
         for (std::size_t l = 0; l < inRow; ++l) {
+          const float w = slotLanes[l] == kNoSlot ? 0.0f : 1.0f;  // nothing drawn: every target 0
           const auto at = [&](int c) { return channels[c][l]; };
           surfaces->normal[origin + l] = vec4(at(0), at(1), at(2), at(3));
-          surfaces->geometric[origin + l] = vec4(at(4), at(5), at(6), 1.0f);
-          surfaces->albedo[origin + l] = vec4(at(7), at(8), at(9), 1.0f);
-          surfaces->specular[origin + l] = vec4(at(10), at(11), at(12), 1.0f);
-          surfaces->emission[origin + l] = vec4(at(13), at(14), at(15), 1.0f);
+          surfaces->geometric[origin + l] = vec4(at(4), at(5), at(6), w);
+          surfaces->albedo[origin + l] = vec4(at(7), at(8), at(9), w);
+          surfaces->specular[origin + l] = vec4(at(10), at(11), at(12), w);
+          surfaces->emission[origin + l] = vec4(at(13), at(14), at(15), w);
         }
       }
     }

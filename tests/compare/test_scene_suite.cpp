@@ -197,6 +197,12 @@ TEST_P(SceneSuite, CpuMatchesLlvmpipeWithinTolerance) {
   } else {
     limits.maxCoverageMismatch = 0.0;
   }
+  // Deferred: the lighting pass rebuilds each position from the 24-bit depth, which moves it
+  // along its ray by up to half a depth step; where the result jumps with the position (a
+  // shadow-map texel's edge under PCF, a light touching the surface) a handful of pixels jump
+  // with it (docs/deferred.md, "Measured"). The share of pixels over one level keeps the row's
+  // limit; the largest difference is reported, not limited.
+  if (c.deferred) limits.maxAbsDiff = std::nullopt;
   std::vector<ThresholdViolation> violations = checkThresholds(m, limits);
   // A captured environment: each renderer drew its own six faces, held to the same limits.
   EXPECT_EQ(cpu.capturedFaces != nullptr, scene.environment && scene.environment->capture);
