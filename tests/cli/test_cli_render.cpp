@@ -142,12 +142,18 @@ TEST(CliCompare, AllBuffersRowsInPassOrderWithTheirImages) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const nlohmann::json json = nlohmann::json::parse(r.out);
   ASSERT_TRUE(json["buffers"].is_array());
-  const std::vector<std::string> order = {"shadow_map",     "gbuffer_depth", "gbuffer_normal",
-                                          "gbuffer_albedo", "lighting",      "final"};
+  const std::vector<std::string> order = {"shadow_map",       "gbuffer_depth",    "gbuffer_normal", "gbuffer_albedo",
+                                          "gbuffer_specular", "gbuffer_emission", "lighting",       "final"};
   ASSERT_EQ(json["buffers"].size(), order.size());
   for (std::size_t i = 0; i < order.size(); ++i) {
     const nlohmann::json& row = json["buffers"][i];
     EXPECT_EQ(row["buffer"], order[i]);
+    if (order[i] == "gbuffer_specular" || order[i] == "gbuffer_emission") {
+      // A forward frame has no G-buffer to read them from.
+      EXPECT_FALSE(row["available"].get<bool>()) << order[i];
+      EXPECT_NE(row["note"].get<std::string>().find("deferred"), std::string::npos) << order[i];
+      continue;
+    }
     EXPECT_TRUE(row["available"].get<bool>()) << order[i];
     EXPECT_TRUE(row["passes"].get<bool>()) << order[i];
     for (const char* suffix : {"_cpu.png", "_gl.png", "_diff.png"}) {
@@ -165,6 +171,26 @@ TEST(CliCompare, AllBuffersRowsInPassOrderWithTheirImages) {
   EXPECT_TRUE(json["first_differing_buffer"].is_null());
   EXPECT_GT(json["cpu_shadow_ms"].get<double>(), 0.0);
   EXPECT_GT(json["gl_shadow_ms"].get<double>(), 0.0);
+
+  // Deferred: the G-buffer rows diff the real float targets, channel by channel.
+  const auto deferredDir = testDir("cli_compare_buffers_deferred");
+  const RunResult d = runCli("compare \"" + kSource + "/assets/scenes/shadow_directional.json\" --out-dir \"" +
+                                 deferredDir.string() +
+                                 "\" --width 160 --height 120 --repeat 1 --targets --all-buffers --pipeline deferred --json",
+                             deferredDir);
+  ASSERT_EQ(d.exitCode, 0) << d.err;
+  const nlohmann::json deferred = nlohmann::json::parse(d.out);
+  ASSERT_EQ(deferred["buffers"].size(), order.size());
+  for (std::size_t i = 2; i <= 5; ++i) {
+    const nlohmann::json& row = deferred["buffers"][i];
+    EXPECT_EQ(row["kind"], "float") << order[i];
+    EXPECT_TRUE(row["available"].get<bool>()) << order[i];
+    EXPECT_TRUE(row["passes"].get<bool>()) << order[i];
+    EXPECT_EQ(row["layers"], 3) << order[i];
+    EXPECT_LE(row["max_diff"].get<double>(), 1.0 / 255.0) << order[i];
+    EXPECT_TRUE(std::filesystem::exists(deferredDir / ("buffer_" + order[i] + "_diff.png"))) << order[i];
+  }
+  EXPECT_TRUE(deferred["first_differing_buffer"].is_null());
 
   // One buffer; a scene without a shadow says the map is not there; a bad name is refused.
   const RunResult one = runCli("compare \"" + kDefaultScene + "\" --out-dir \"" + dir.string() +
