@@ -128,6 +128,32 @@ Image gbufferImage(const std::vector<vec4>& target, int width, int height, bool 
   return image;
 }
 
+std::optional<RenderOutput> bufferAsOutput(const RenderOutput& frame, PassBuffer buffer) {
+  if (buffer == PassBuffer::Final) return frame;
+  const std::vector<vec4>* target = frame.gbuffer ? gbufferTargetOf(*frame.gbuffer, buffer) : nullptr;
+  if (buffer != PassBuffer::GbufferDepth && !target) return std::nullopt;
+  RenderOutput out;
+  out.width = frame.width;
+  out.height = frame.height;
+  out.depth = frame.depth;
+  out.triangleId = frame.triangleId;
+  out.lineMask = frame.lineMask;
+  out.stats = frame.stats;
+  if (target) {
+    const Image image = gbufferImage(*target, frame.width, frame.height, buffer == PassBuffer::GbufferNormal);
+    out.rgba = image.rgba;
+  } else {
+    out.rgba.resize(frame.depth.size() * 4);
+    for (std::size_t i = 0; i < frame.depth.size(); ++i) {
+      const float d = frame.depth[i];
+      const auto g = static_cast<std::uint8_t>(std::lround(std::clamp(std::isfinite(d) ? d : 0.0f, 0.0f, 1.0f) * 255.0f));
+      out.rgba[4 * i + 0] = out.rgba[4 * i + 1] = out.rgba[4 * i + 2] = g;
+      out.rgba[4 * i + 3] = 255;
+    }
+  }
+  return out;
+}
+
 DepthBufferMetrics compareDepthBuffers(const std::vector<float>& a, const std::vector<float>& b, int width, int height,
                                        int layers, double tolerance) {
   DepthBufferMetrics m;

@@ -20,6 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -56,6 +57,18 @@ std::vector<float> gbufferPlanes(const std::vector<vec4>& target, int width, int
 // A target as a picture, top row first: a normal as the normal view shows it (0.5 + 0.5 n),
 // the other targets clamped to [0, 1].
 Image gbufferImage(const std::vector<vec4>& target, int width, int height, bool normal);
+
+// The buffers a frame can be shown as (the GUI's buffer picker), in pass order: the frame, its
+// depth, the G-buffer's colour targets.
+inline constexpr PassBuffer kShowableBuffers[] = {PassBuffer::Final,           PassBuffer::GbufferDepth,
+                                                  PassBuffer::GbufferNormal,   PassBuffer::GbufferAlbedo,
+                                                  PassBuffer::GbufferSpecular, PassBuffer::GbufferEmission};
+// `frame` with its colour replaced by the buffer as a picture, depth, triangle ids and line
+// mask kept (so it diffs and reads back as a frame does): a G-buffer target as gbufferImage
+// draws it, the depth as grey (window depth, black 0, white 1), Final the frame itself. Empty
+// when the frame does not hold the buffer (a forward frame's G-buffer targets; shadow_map and
+// lighting are no picture of the frame).
+std::optional<RenderOutput> bufferAsOutput(const RenderOutput& frame, PassBuffer buffer);
 
 // Two depth buffers of the same shape, texel by texel (layers * height * width floats).
 struct DepthBufferMetrics {

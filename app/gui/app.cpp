@@ -481,6 +481,11 @@ void GuiApp::frame(bool& finalFrame, bool present) {
     state["horizon_status"] = horizonStatus();
     state["horizon_last_build"] = horizonLastBuild_;
     state["anisotropy"] = doc_.scene.settings.anisotropy;
+    state["pipeline"] = std::string(toString(doc_.scene.settings.pipeline));
+    state["buffer"] = std::string(toString(shownBuffer_));
+    state["diff_buffer"] = std::string(toString(diff_.buffer));
+    state["cpu_gbuffer"] = cpuFrame_.output && cpuFrame_.output->gbuffer != nullptr;
+    state["gl_gbuffer"] = glFrame_.output && glFrame_.output->gbuffer != nullptr;
     state["environment"] = doc_.scene.environment
                                ? nlohmann::json{{"intensity", doc_.scene.environment->intensity},
                                                 {"background", doc_.scene.environment->background},

@@ -50,6 +50,9 @@ struct DiffState {
   std::optional<CompareResult> result;
   std::string error;
   bool texturesStale = true;  // heat/class map textures need rebuilding
+  // The frames compared and the buffer they were compared as (a new buffer re-diffs them).
+  std::shared_ptr<const RenderOutput> cpu, gl;
+  PassBuffer buffer = PassBuffer::Final;
 };
 
 // The pinned pixel and what each backend says about it.
@@ -120,6 +123,11 @@ class GuiApp {
   void submitCpu();
   void keepGlTwins();
   void updateDiff();
+  // diff_.result of diff_.cpu and diff_.gl as shownBuffer_ shows them.
+  void computeDiff();
+  // The frame as the buffer picker shows it: the buffer's picture, or the frame itself when it
+  // does not hold that buffer (a forward frame's G-buffer targets).
+  RenderOutput shownBufferOf(const RenderOutput& frame) const;
   void refreshTextures();
   bool renderInputsValid() const { return renderBlocker_.empty(); }
   // Checks the camera again: a panel drawn after an edit must not use a stale verdict.
@@ -246,6 +254,8 @@ class GuiApp {
   std::tuple<std::size_t, std::uint64_t, std::uint64_t> shadowDiffKey_{};
   std::map<const ImageTexture*, std::pair<const void*, std::uint64_t>> crossSources_;
   bool cpuTextureStale_ = true, glTextureStale_ = true;
+  // What the images show of each frame (the buffer picker beside the debug views).
+  PassBuffer shownBuffer_ = PassBuffer::Final;
 
   RedrawPolicy redraw_;
   long presentedFrames_ = 0;  // frames drawn on screen (the test probe's "presented")

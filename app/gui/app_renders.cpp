@@ -335,6 +335,10 @@ void GuiApp::submitCpu() {
 }
 
 void GuiApp::updateDiff() {
+  if (cpuFrame_.revision != 0 && cpuFrame_.revision == diff_.revision && diff_.buffer != shownBuffer_) {
+    computeDiff();  // the same frames, shown as another buffer
+    return;
+  }
   if (cpuFrame_.revision == 0 || cpuFrame_.revision == diff_.revision) return;
   const auto twin = glForCpu_.find(cpuFrame_.revision);
   // GL draws every edit the CPU draws, usually first; when the CPU won, wait for its twin.
@@ -342,21 +346,34 @@ void GuiApp::updateDiff() {
   const std::shared_ptr<const RenderOutput> gl = twin != glForCpu_.end() ? twin->second : nullptr;
   diff_.revision = cpuFrame_.revision;
   keepGlTwins();  // this twin is used, older GL frames can no longer meet theirs
+  diff_.cpu = cpuFrame_.output;
+  diff_.gl = gl;
+  computeDiff();
+}
+
+void GuiApp::computeDiff() {
+  diff_.buffer = shownBuffer_;
   diff_.texturesStale = true;
   diff_.result.reset();
   diff_.error.clear();
-  if (!cpuFrame_.output || !gl) {
+  if (!diff_.cpu || !diff_.gl) {
     diff_.error = "no diff: one backend has no image for this frame (see its error)";
     return;
   }
   try {
-    // Under a sky box the pixels no triangle covers are compared too.
+    // Under a sky box the pixels no triangle covers are compared too (in the frame itself).
     CompareOptions options;
-    options.compareBackground = drawsSky(doc_.scene, doc_.scene.settings);
-    diff_.result = compareDetailed(*cpuFrame_.output, *gl, options);
+    options.compareBackground = shownBuffer_ == PassBuffer::Final && drawsSky(doc_.scene, doc_.scene.settings);
+    diff_.result = compareDetailed(shownBufferOf(*diff_.cpu), shownBufferOf(*diff_.gl), options);
   } catch (const std::exception& e) {
     diff_.error = e.what();
   }
+}
+
+RenderOutput GuiApp::shownBufferOf(const RenderOutput& frame) const {
+  if (shownBuffer_ == PassBuffer::Final) return frame;
+  std::optional<RenderOutput> shown = bufferAsOutput(frame, shownBuffer_);
+  return shown ? std::move(*shown) : frame;
 }
 
 void GuiApp::refreshTextures() {
@@ -369,9 +386,10 @@ void GuiApp::refreshTextures() {
     linearDepthRange_ = drawnEyeRange({cpuFrame_.output.get(), glFrame_.output.get()}, camera.near, camera.far);
     cpuTextureStale_ = glTextureStale_ = true;
   }
-  const auto shown = [&](const RenderOutput& output) {
-    return linear ? viewImage(withLinearDepth(output, camera.near, camera.far, linearDepthRange_), background)
-                  : viewImage(output, background);
+  const auto shown = [&](const RenderOutput& frame) {
+    if (shownBuffer_ != PassBuffer::Final) return viewImage(shownBufferOf(frame), background);
+    return linear ? viewImage(withLinearDepth(frame, camera.near, camera.far, linearDepthRange_), background)
+                  : viewImage(frame, background);
   };
   if (cpuTextureStale_) {
     if (cpuFrame_.output) cpuTexture_.upload(shown(*cpuFrame_.output));

@@ -82,11 +82,23 @@ void GuiApp::drawInspectorPanel() {
     };
     const std::size_t i = static_cast<std::size_t>(p.yTop) * static_cast<std::size_t>(renderWidth_) +
                           static_cast<std::size_t>(p.x);
-    const char* rows[] = {"colour", "depth", "triangle"};
-    for (int r = 0; r < 3; ++r) {
+    // A deferred frame's G-buffer (docs/deferred.md) at the pixel too, target by target.
+    const auto hasGBuffer = [&](const std::shared_ptr<const RenderOutput>& output) {
+      return usable(output) && output->gbuffer && output->gbuffer->normal.size() > i;
+    };
+    const bool gbufferRows = hasGBuffer(outputs[0]) || hasGBuffer(outputs[1]);
+    const char* rows[] = {"colour",    "depth",       "triangle",   "G normal",  "G geometric",
+                          "G albedo",  "G specular",  "G emission"};
+    const int rowCount = gbufferRows ? 8 : 3;
+    for (int r = 0; r < rowCount; ++r) {
       ImGui::TableNextRow();
       ImGui::TableSetColumnIndex(0);
       ImGui::TextUnformatted(rows[r]);
+      if (r >= 3) {
+        itemTooltip("The G-buffer a deferred frame was lit from: the world lighting normal (w: the Phong "
+                    "exponent), the interpolated normal, kd albedo, ks specScale and what no light scales "
+                    "(docs/deferred.md). A forward frame has none.");
+      }
       for (int b = 0; b < 2; ++b) {
         ImGui::TableSetColumnIndex(b + 1);
         const std::shared_ptr<const RenderOutput>& output = outputs[b];
@@ -97,7 +109,19 @@ void GuiApp::drawInspectorPanel() {
         if (r == 0) rgbaValue(&output->rgba[i * 4], true);
         if (r == 1) ImGui::Text("%.7f", static_cast<double>(output->depth[i]));
         if (r == 2) ImGui::TextUnformatted(triangleText(output->triangleId[i]).c_str());
+        if (r >= 3) {
+          if (!hasGBuffer(output)) {
+            ImGui::TextDisabled("forward");
+            continue;
+          }
+          const GBuffer& g = *output->gbuffer;
+          const std::vector<vec4>* targets[] = {&g.normal, &g.geometric, &g.albedo, &g.specular, &g.emission};
+          const vec4 v = (*targets[r - 3])[i];
+          ImGui::Text("%.4f %.4f %.4f %.4g", static_cast<double>(v.x), static_cast<double>(v.y),
+                      static_cast<double>(v.z), static_cast<double>(v.w));
+        }
       }
+
     }
     ImGui::EndTable();
   }

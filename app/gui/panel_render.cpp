@@ -118,6 +118,29 @@ void GuiApp::drawRenderingTab() {
   itemTooltip("What both backends write per pixel: the shaded colour, or one shading input as a colour "
               "(vectors as (v + 1) / 2, see docs/shading.md).");
   hintText(viewLegend(settings.view));
+  // The buffer picker: what the images, the diff and the inspector's colour row show of each
+  // frame (compare --buffer's buffers; docs/deferred.md).
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  if (ImGui::BeginCombo("##buffer", concat("buffer: ", toString(shownBuffer_)).c_str())) {
+    for (const PassBuffer buffer : kShowableBuffers) {
+      const bool chosen = shownBuffer_ == buffer;
+      if (ImGui::Selectable(std::string(toString(buffer)).c_str(), chosen) && !chosen) {
+        shownBuffer_ = buffer;
+        cpuTextureStale_ = glTextureStale_ = true;
+      }
+      probe_.item(concat("buffer_", toString(buffer)).c_str());
+      if (chosen) ImGui::SetItemDefaultFocus();
+    }
+    ImGui::EndCombo();
+  }
+  probe_.item("buffer");
+  itemTooltip("Which buffer of each frame the images and the diff show: the frame (final), its depth, or a "
+              "deferred frame's G-buffer targets (normal as (n + 1) / 2, kd albedo, ks specScale, emission).");
+  const bool gbufferTarget = shownBuffer_ != PassBuffer::Final && shownBuffer_ != PassBuffer::GbufferDepth;
+  if (gbufferTarget && !drawsDeferred(settings)) {
+    warningText("A forward frame has no G-buffer: set Pipeline to deferred (Shading, below) in the shaded view. "
+                "The frame is shown meanwhile.");
+  }
   if (settings.view == View::ParallaxSteps) drawParallaxStepsLegend();
   if (settings.view == View::EnvFace || settings.view == View::EnvLod) drawEnvironmentViewLegend(settings.view);
   if (settings.view == View::Depth) {

@@ -801,6 +801,47 @@ TEST(GuiScripted, HeightFieldControlsRedrawBothBackends) {
 // only for an event, a worker's result or a timed change (the tags' ages, coarser as they age),
 // and an expose draws it again. Frames are still laid out, not drawn, for this test's probe, so
 // "presented" (frames drawn on screen) and "frames" (laid out) part while the app is idle.
+// Issue 18: a deferred scene's G-buffer in the buffer picker. Both backends hand over their
+// G-buffer; picking gbuffer_normal re-diffs the same frames as that buffer, within the targets;
+// final again shows the frame.
+TEST(GuiScripted, BufferPickerShowsTheDeferredGBuffer) {
+  REQUIRE_DISPLAY_AND_XDOTOOL();
+  const fs::path dir = fs::path(TWINRASTER_TEST_OUT) / "gui_scripted" / (testName() + "_scene");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "scene.json") << R"({
+    "camera": {"position": [0, 1.5, 3], "target": [0, 0.3, 0]},
+    "lights": [{"type": "directional", "direction": [-0.4, -1, -0.3], "shadow": {"size": 512}}],
+    "materials": {"plain": {"kd": [0.7, 0.6, 0.5], "ks": [0.3, 0.3, 0.3]}},
+    "settings": {"pipeline": "deferred"},
+    "nodes": [{"name": "floor", "material": "plain", "mesh": {"type": "plane", "size": [4, 4]}},
+              {"name": "ball", "material": "plain", "mesh": {"type": "sphere", "radius": 0.4}, "translate": [0, 0.4, 0]}]
+  })";
+  GuiProcess app(testName(), {(dir / "scene.json").string(), "--reset", "--view-mode", "diff"});
+  app.window();
+  json s = app.waitSettled();
+  EXPECT_EQ(s["pipeline"], "deferred") << s.dump(1);
+  EXPECT_TRUE(s["cpu_gbuffer"].get<bool>()) << s.dump(1);
+  EXPECT_TRUE(s["gl_gbuffer"].get<bool>()) << s.dump(1);
+  ASSERT_TRUE(s.contains("diff")) << s.dump(1);
+  EXPECT_LE(s["diff"]["max_abs_diff"].get<int>(), 3) << s.dump(1);
+
+  app.click("buffer");
+  app.click("buffer_gbuffer_normal");
+  s = app.waitFor("the diff of the G-buffer's normals", [](const json& st) {
+    return st["buffer"] == "gbuffer_normal" && st["diff_buffer"] == "gbuffer_normal" && st.contains("diff");
+  });
+  EXPECT_LE(s["diff"]["max_abs_diff"].get<int>(), 1) << s.dump(1);
+  app.xdotool("key F12");  // the window as the user sees it
+  app.waitFor("the window screenshot", [](const json& st) { return !st.value("screenshot_message", "").empty(); });
+
+  app.click("buffer");
+  app.click("buffer_final");
+  s = app.waitFor("the frame again", [](const json& st) { return st["diff_buffer"] == "final"; });
+  EXPECT_FALSE(s.contains("panel_faults")) << s.dump(1);
+  EXPECT_EQ(app.quit(), 0) << app.err();
+}
+
 TEST(GuiScripted, AnIdleWindowIsDrawnOnlyWhenSomethingHappens) {
   REQUIRE_DISPLAY_AND_XDOTOOL();
   GuiProcess app(testName(), {kDefaultScene, "--reset", "--view-mode", "side"});
