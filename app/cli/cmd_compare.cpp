@@ -367,7 +367,12 @@ void runCompare(CompareArgs& args) {
     mergeExtraKeys(json, {{"buffers", rows}, {"first_differing_buffer", firstDiffering}});
   }
   mergeExtraKeys(json, {{"cpu_shadow_ms", cpuOut.stats.shadowMilliseconds},
-                        {"gl_shadow_ms", glOut.stats.shadowMilliseconds}});
+                        {"gl_shadow_ms", glOut.stats.shadowMilliseconds},
+                        // The deferred pipeline's passes (0 for a forward frame; docs/deferred.md).
+                        {"cpu_gbuffer_ms", cpuOut.stats.gbufferMilliseconds},
+                        {"cpu_lighting_ms", cpuOut.stats.lightingMilliseconds},
+                        {"gl_gbuffer_ms", glOut.stats.gbufferMilliseconds},
+                        {"gl_lighting_ms", glOut.stats.lightingMilliseconds}});
   const ArtifactPaths paths = writeCompareArtifacts(args.outDir, cpuOut, glOut, result, json);
   std::optional<CaptureArtifactPaths> facePaths;
   if (faces) facePaths = writeCaptureArtifacts(args.outDir, *cpuOut.capturedFaces, *glOut.capturedFaces, *faces);

@@ -191,6 +191,9 @@ TEST(CliCompare, AllBuffersRowsInPassOrderWithTheirImages) {
     EXPECT_TRUE(std::filesystem::exists(deferredDir / ("buffer_" + order[i] + "_diff.png"))) << order[i];
   }
   EXPECT_TRUE(deferred["first_differing_buffer"].is_null());
+  EXPECT_GT(deferred["cpu_lighting_ms"].get<double>(), 0.0);
+  EXPECT_GT(deferred["gl_lighting_ms"].get<double>(), 0.0);
+  EXPECT_EQ(json["cpu_lighting_ms"].get<double>(), 0.0);  // the forward frame above
 
   // One buffer; a scene without a shadow says the map is not there; a bad name is refused.
   const RunResult one = runCli("compare \"" + kDefaultScene + "\" --out-dir \"" + dir.string() +
