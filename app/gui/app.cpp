@@ -308,6 +308,7 @@ bool GuiApp::settled() const {
   const std::uint64_t now = doc_.revision;
   if (cpuFrame_.revision != now || glFrame_.revision != now) return false;
   if (cpuFrame_.output && glFrame_.output && diff_.revision != now) return false;
+  if (diff_.cpu && diff_.gl && diff_.buffer != shownBuffer_) return false;  // the diff is of another buffer
   if (pin_.pixel) {
     // A CPU frame that threw has no probe (its error is shown instead).
     const bool cpuProbeDone = (pin_.cpu && pin_.cpuRevision == now) || !cpuFrame_.error.empty();

@@ -82,6 +82,8 @@ void GuiApp::syncRenders() {
     submitCpu();
     updateDiff();
   }
+  // A new buffer re-diffs the frames on screen at once, whatever else is pending.
+  if (diff_.cpu && diff_.gl && diff_.buffer != shownBuffer_) computeDiff();
   refreshTextures();
 }
 
@@ -335,10 +337,6 @@ void GuiApp::submitCpu() {
 }
 
 void GuiApp::updateDiff() {
-  if (cpuFrame_.revision != 0 && cpuFrame_.revision == diff_.revision && diff_.buffer != shownBuffer_) {
-    computeDiff();  // the same frames, shown as another buffer
-    return;
-  }
   if (cpuFrame_.revision == 0 || cpuFrame_.revision == diff_.revision) return;
   const auto twin = glForCpu_.find(cpuFrame_.revision);
   // GL draws every edit the CPU draws, usually first; when the CPU won, wait for its twin.

@@ -136,6 +136,10 @@ void GuiApp::drawInspectorPanel() {
     warningText(pairNote(shown));
   }
 
+  if (drawsDeferred(doc_.scene.settings)) {
+    hintText("This frame was lit deferred (the G rows above). The trace and the views below shade the pixel "
+             "forward, on both backends: the lighting terms are the forward pipeline's.");
+  }
   if (!pin_.cpu) {
     hintText("CPU trace: waiting for the worker...");
   } else if (!pin_.cpu->traceError.empty()) {
