@@ -334,19 +334,22 @@ HWY_INLINE FragmentL<LaneF> SegmentFragment(const Segment& s, const ItemState& i
   return fragment;
 }
 
-template <typename Features>
-void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps, std::uint32_t* rgbaOut) {
+// Output merge: each lane's colour as its RGBA8 word, alpha 255 (geometry drawn).
+HWY_INLINE auto rgbaWordsOf(const Vec4L<LaneF>& colour) {
   const DI di;
   const DU du;
+  const auto byteOf = [&](LaneF c) HWY_ATTR { return hn::BitCast(du, hn::ConvertTo(di, byteValueOf<LaneF>(c).v)); };
+  return hn::Or(hn::Or(byteOf(colour.x), hn::ShiftLeft<8>(byteOf(colour.y))),
+                hn::Or(hn::ShiftLeft<16>(byteOf(colour.z)), hn::Set(du, 0xFF000000u)));
+}
+
+template <typename Features>
+void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps, std::uint32_t* rgbaOut) {
   const FragmentL<LaneF> fragment = SegmentFragment<Features>(s, item, maps);
   const Vec4L<LaneF> colour =
       shadeFragmentLanes<Features, LaneF>(fragment, item.shade, maps, static_cast<std::nullptr_t*>(nullptr));
 
-  // Output merge: RGBA8 with alpha 255 (geometry drawn).
-  const auto byteOf = [&](LaneF c) HWY_ATTR { return hn::BitCast(du, hn::ConvertTo(di, byteValueOf<LaneF>(c).v)); };
-  const auto word = hn::Or(hn::Or(byteOf(colour.x), hn::ShiftLeft<8>(byteOf(colour.y))),
-                           hn::Or(hn::ShiftLeft<16>(byteOf(colour.z)), hn::Set(du, 0xFF000000u)));
-  hn::BlendedStore(word, hn::RebindMask(du, lanesOf(s.bits).m), du, rgbaOut);
+  hn::BlendedStore(rgbaWordsOf(colour), hn::RebindMask(DU(), lanesOf(s.bits).m), DU(), rgbaOut);
 }
 
 // The deferred pipeline's G-buffer pass for a segment: the surface (gbufferFragmentLanes) of
@@ -474,7 +477,6 @@ void SurfaceBin(const std::vector<BinTriangle>& triangles, const std::vector<Ite
 // clear depth; the other pixels keep their colour.
 void LightRows(const GBuffer& g, const DeferredUniforms& u, int rowBegin, int rowEnd, Framebuffer& fb) {
   const DF df;
-  const DI di;
   const DU du;
   const std::size_t lanes = laneCount();
   const std::size_t width = static_cast<std::size_t>(fb.width);
@@ -502,11 +504,8 @@ void LightRows(const GBuffer& g, const DeferredUniforms& u, int rowBegin, int ro
       const Vec3L<LaneF> posWorld =
           worldFromWindowLanes<LaneF>(u.worldFromClip, u.viewportSize, px, pyLanes, lane(kSurfaceChannels));
       const Vec4L<LaneF> colour = deferredLightingLanes<LaneF>(surface, posWorld, u.lighting);
-      const auto byteOf = [&](LaneF c) HWY_ATTR { return hn::BitCast(du, hn::ConvertTo(di, byteValueOf<LaneF>(c).v)); };
-      const auto word = hn::Or(hn::Or(byteOf(colour.x), hn::ShiftLeft<8>(byteOf(colour.y))),
-                               hn::Or(hn::ShiftLeft<16>(byteOf(colour.z)), hn::Set(du, 0xFF000000u)));
       HWY_ALIGN std::uint32_t words[kMaxLanes];
-      hn::Store(word, du, words);
+      hn::Store(rgbaWordsOf(colour), du, words);
       for (std::size_t l = 0; l < inRow; ++l) {
         if (((bits >> l) & 1u) != 0) std::memcpy(&fb.rgba[4 * (origin + l)], &words[l], sizeof(std::uint32_t));
       }

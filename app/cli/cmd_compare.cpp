@@ -193,7 +193,7 @@ std::vector<BufferRow> compareBuffers(const std::vector<PassBuffer>& buffers, co
     if (buffer == PassBuffer::GbufferSpecular || buffer == PassBuffer::GbufferEmission) {
       row.available = false;
       row.depth = true;
-      row.note = "a forward frame has no G-buffer (settings.pipeline deferred writes one)";
+      row.note = "a forward frame has no G-buffer; settings.pipeline deferred writes one";
       rows.push_back(row);
       continue;
     }

@@ -200,9 +200,11 @@ TEST_P(SceneSuite, CpuMatchesLlvmpipeWithinTolerance) {
   // Deferred: the lighting pass rebuilds each position from the 24-bit depth, which moves it
   // along its ray by up to half a depth step; where the result jumps with the position (a
   // shadow-map texel's edge under PCF, a light touching the surface) a handful of pixels jump
-  // with it (docs/deferred.md, "Measured"). The share of pixels over one level keeps the row's
-  // limit; the largest difference is reported, not limited.
-  if (c.deferred) limits.maxAbsDiff = std::nullopt;
+  // with it (docs/deferred.md, "Measured"). On the scenes where that was measured (every
+  // shadowed scene, light_touching) the share of pixels over one level keeps the row's limit
+  // and the largest difference is reported, not limited; every other scene keeps both.
+  const bool positionJumps = c.scene.rfind("shadow_", 0) == 0 || c.scene == "light_touching.json";
+  if (c.deferred && positionJumps) limits.maxAbsDiff = std::nullopt;
   std::vector<ThresholdViolation> violations = checkThresholds(m, limits);
   // A captured environment: each renderer drew its own six faces, held to the same limits.
   EXPECT_EQ(cpu.capturedFaces != nullptr, scene.environment && scene.environment->capture);
