@@ -13,6 +13,7 @@ constexpr std::pair<PassBuffer, std::string_view> kNames[] = {
     {PassBuffer::ShadowMap, "shadow_map"},       {PassBuffer::GbufferDepth, "gbuffer_depth"},
     {PassBuffer::GbufferNormal, "gbuffer_normal"}, {PassBuffer::GbufferAlbedo, "gbuffer_albedo"},
     {PassBuffer::GbufferSpecular, "gbuffer_specular"}, {PassBuffer::GbufferEmission, "gbuffer_emission"},
+    {PassBuffer::GbufferPosition, "gbuffer_position"},
     {PassBuffer::Lighting, "lighting"},          {PassBuffer::Final, "final"}};
 
 // Gap between two layers in the side-by-side images, pixels.
@@ -42,6 +43,13 @@ Image layersImage(int width, int height, int layers, const Colour& colour) {
     }
   }
   return image;
+}
+
+// One channel of a G-buffer target as gbufferImage shows it, before clamping to [0, 1].
+float shownChannel(float x, PassBuffer buffer) {
+  if (buffer == PassBuffer::GbufferNormal) return 0.5f + 0.5f * x;
+  if (buffer == PassBuffer::GbufferPosition) return std::fabs(2.0f * (0.5f * x - std::floor(0.5f * x)) - 1.0f);
+  return x;
 }
 
 }  // namespace
@@ -82,7 +90,8 @@ std::string_view passOfBuffer(PassBuffer buffer) {
     case PassBuffer::GbufferNormal:
     case PassBuffer::GbufferAlbedo:
     case PassBuffer::GbufferSpecular:
-    case PassBuffer::GbufferEmission: return "gbuffer";
+    case PassBuffer::GbufferEmission:
+    case PassBuffer::GbufferPosition: return "gbuffer";
     case PassBuffer::Lighting: return "lighting";
     case PassBuffer::Final: return "final";
   }
@@ -95,6 +104,7 @@ const std::vector<vec4>* gbufferTargetOf(const GBuffer& g, PassBuffer buffer) {
     case PassBuffer::GbufferAlbedo: return &g.albedo;
     case PassBuffer::GbufferSpecular: return &g.specular;
     case PassBuffer::GbufferEmission: return &g.emission;
+    case PassBuffer::GbufferPosition: return g.position.empty() ? nullptr : &g.position;
     default: return nullptr;
   }
 }
@@ -111,15 +121,17 @@ std::vector<float> gbufferPlanes(const std::vector<vec4>& target, int width, int
   return planes;
 }
 
-Image gbufferImage(const std::vector<vec4>& target, int width, int height, bool normal) {
+Image gbufferImage(const std::vector<vec4>& target, int width, int height, PassBuffer buffer) {
   Image image = makeImage(width, height, kGapRgba);
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
       const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
       const vec4 v = i < target.size() ? target[i] : vec4(0.0f);
       std::uint8_t* p = image.pixel(x, y);
+      // A position target's w is 1 where a surface was drawn: black elsewhere, not the wave's 1.
+      const bool empty = buffer == PassBuffer::GbufferPosition && v.w == 0.0f;
       for (int c = 0; c < 3; ++c) {
-        const float value = normal ? 0.5f + 0.5f * v[c] : v[c];
+        const float value = empty ? 0.0f : shownChannel(v[c], buffer);
         p[c] = static_cast<std::uint8_t>(std::lround(std::clamp(std::isfinite(value) ? value : 0.0f, 0.0f, 1.0f) * 255.0f));
       }
       p[3] = 255;
@@ -140,7 +152,7 @@ std::optional<RenderOutput> bufferAsOutput(const RenderOutput& frame, PassBuffer
   out.lineMask = frame.lineMask;
   out.stats = frame.stats;
   if (target) {
-    const Image image = gbufferImage(*target, frame.width, frame.height, buffer == PassBuffer::GbufferNormal);
+    const Image image = gbufferImage(*target, frame.width, frame.height, buffer);
     out.rgba = image.rgba;
   } else {
     out.rgba.resize(frame.depth.size() * 4);

@@ -6,6 +6,7 @@
 //   gbuffer_normal  the lighting normal each pixel's surface writes (world space);
 //   gbuffer_albedo  its albedo times kd;
 //   gbuffer_specular, gbuffer_emission  its ks specScale and what no light scales;
+//   gbuffer_position  its world position (settings.gbuffer_position stored);
 //   lighting        the lit surfaces (the frame without its sky box);
 //   final           the frame as written.
 // A deferred frame (settings.pipeline deferred) diffs its G-buffer's float targets, channel by
@@ -34,12 +35,14 @@ enum class PassBuffer {
   GbufferAlbedo,
   GbufferSpecular,
   GbufferEmission,
+  GbufferPosition,
   Lighting,
   Final
 };
 inline constexpr PassBuffer kAllPassBuffers[] = {
     PassBuffer::ShadowMap,       PassBuffer::GbufferDepth,    PassBuffer::GbufferNormal, PassBuffer::GbufferAlbedo,
-    PassBuffer::GbufferSpecular, PassBuffer::GbufferEmission, PassBuffer::Lighting,      PassBuffer::Final};
+    PassBuffer::GbufferSpecular, PassBuffer::GbufferEmission, PassBuffer::GbufferPosition, PassBuffer::Lighting,
+    PassBuffer::Final};
 std::string_view toString(PassBuffer buffer);
 bool parse(std::string_view name, PassBuffer& out);  // false for an unknown name
 std::string allPassBufferNames();                   // "shadow_map|gbuffer_depth|..."
@@ -48,21 +51,25 @@ constexpr bool isDepthBuffer(PassBuffer b) { return b == PassBuffer::ShadowMap |
 // The view a colour buffer is drawn in (final and lighting: the scene's own).
 View viewOfBuffer(PassBuffer buffer, View sceneView);
 
-// A G-buffer target's channels, as the colour they end up in: one 8-bit level.
+// A G-buffer target's channels, as the colour they end up in: one 8-bit level (the position's:
+// world units, where the renderers' interpolation differs by about 1e-6).
 inline constexpr double kGBufferTolerance = 1.0 / 255.0;
-// The G-buffer target a row reads (null for a buffer that is no G-buffer colour target).
+// The G-buffer target a row reads (null for a buffer that is no G-buffer colour target, and for
+// a position the frame did not store).
 const std::vector<vec4>* gbufferTargetOf(const GBuffer& g, PassBuffer buffer);
 // A target's x, y and z as three layers of compareDepthBuffers' layout (rows bottom first).
 std::vector<float> gbufferPlanes(const std::vector<vec4>& target, int width, int height);
-// A target as a picture, top row first: a normal as the normal view shows it (0.5 + 0.5 n),
-// the other targets clamped to [0, 1].
-Image gbufferImage(const std::vector<vec4>& target, int width, int height, bool normal);
+// A target as a picture, top row first: a normal as the normal view shows it (0.5 + 0.5 n), a
+// position as a triangle wave of period 2 world units (1 at even units, 0 at odd ones:
+// continuous, so a floor lying at y = 0 does not speckle; black where nothing was drawn), the
+// other targets clamped to [0, 1].
+Image gbufferImage(const std::vector<vec4>& target, int width, int height, PassBuffer buffer);
 
 // The buffers a frame can be shown as (the GUI's buffer picker), in pass order: the frame, its
 // depth, the G-buffer's colour targets.
-inline constexpr PassBuffer kShowableBuffers[] = {PassBuffer::Final,           PassBuffer::GbufferDepth,
-                                                  PassBuffer::GbufferNormal,   PassBuffer::GbufferAlbedo,
-                                                  PassBuffer::GbufferSpecular, PassBuffer::GbufferEmission};
+inline constexpr PassBuffer kShowableBuffers[] = {
+    PassBuffer::Final,           PassBuffer::GbufferDepth,    PassBuffer::GbufferNormal,  PassBuffer::GbufferAlbedo,
+    PassBuffer::GbufferSpecular, PassBuffer::GbufferEmission, PassBuffer::GbufferPosition};
 // `frame` with its colour replaced by the buffer as a picture, depth, triangle ids and line
 // mask kept (so it diffs and reads back as a frame does): a G-buffer target as gbufferImage
 // draws it, the depth as grey (window depth, black 0, white 1), Final the frame itself. Empty

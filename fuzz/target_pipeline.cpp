@@ -89,6 +89,7 @@ RenderSettings randomSettings(ByteReader& r) {
   const float length = r.nonNegativeFloat();
   s.tbnLines.length = length > 0.0f ? length : 0.1f;  // the loader wants > 0
   s.pipeline = static_cast<Pipeline>(r.intIn(0, 1));
+  s.gbufferPosition = static_cast<GBufferPosition>(r.intIn(0, 1));
   return s;
 }
 

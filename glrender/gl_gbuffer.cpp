@@ -12,11 +12,14 @@
 namespace twr {
 namespace {
 
-constexpr GLenum kFirstTarget = GL_COLOR_ATTACHMENT0;                       // five: 0 to 4
-constexpr GLenum kTriangleIdTarget = GL_COLOR_ATTACHMENT0 + kGBufferTargets;  // 5
-// The lighting pass's texture units: the depth, then the five targets.
+constexpr GLenum kFirstTarget = GL_COLOR_ATTACHMENT0;                           // five: 0 to 4
+constexpr GLenum kPositionTarget = GL_COLOR_ATTACHMENT0 + kGBufferTargets;        // 5
+constexpr GLenum kTriangleIdTarget = GL_COLOR_ATTACHMENT0 + kGBufferTargets + 1;  // 6
+constexpr int kDrawBuffers = kGBufferTargets + 2;
+// The lighting pass's texture units: the depth, the five targets, the position.
 constexpr GLint kDepthUnit = 0;
 constexpr GLint kFirstTargetUnit = 1;
+constexpr GLint kPositionUnit = kFirstTargetUnit + kGBufferTargets;
 constexpr std::array<const char*, kGBufferTargets> kTargetSamplers = {"gbufferNormal", "gbufferGeometric",
                                                                       "gbufferAlbedo", "gbufferSpecular",
                                                                       "gbufferEmission"};
@@ -35,13 +38,14 @@ GlTexture makeTarget(GLenum internalFormat, GLenum format, GLenum type, int widt
 
 }  // namespace
 
-void GlGBuffer::bindForSurfaces(const RenderTargets& targets, GlFrame set) {
+void GlGBuffer::bindForSurfaces(const RenderTargets& targets, GlFrame set, bool position) {
   const int width = targets.width(), height = targets.height();
-  if (framebuffer_.id() == 0 || width != width_ || height != height_ || set != set_ ||
+  if (framebuffer_.id() == 0 || width != width_ || height != height_ || set != set_ || position != storesPosition_ ||
       targets.triangleIdStorage() != triangleIdStorage_) {
     width_ = width;
     height_ = height;
     set_ = set;
+    storesPosition_ = position;
     triangleIdStorage_ = targets.triangleIdStorage();
     framebuffer_ = makeGlFramebuffer();
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
@@ -50,6 +54,8 @@ void GlGBuffer::bindForSurfaces(const RenderTargets& targets, GlFrame set) {
       glFramebufferTexture2D(GL_FRAMEBUFFER, static_cast<GLenum>(kFirstTarget + k), GL_TEXTURE_2D,
                              targets_[static_cast<std::size_t>(k)].id(), 0);
     }
+    position_ = position ? makeTarget(GL_RGBA32F, GL_RGBA, GL_FLOAT, width, height) : GlTexture{};
+    if (position) glFramebufferTexture2D(GL_FRAMEBUFFER, kPositionTarget, GL_TEXTURE_2D, position_.id(), 0);
     depth_ = makeTarget(GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, width, height);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_.id(), 0);
     if (set == GlFrame::Full) {
@@ -62,15 +68,16 @@ void GlGBuffer::bindForSurfaces(const RenderTargets& targets, GlFrame set) {
   }
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
   glViewport(0, 0, width_, height_);
-  std::array<GLenum, kGBufferTargets + 1> buffers{};
+  std::array<GLenum, kDrawBuffers> buffers{};
   for (int k = 0; k < kGBufferTargets; ++k) buffers[static_cast<std::size_t>(k)] = static_cast<GLenum>(kFirstTarget + k);
-  buffers[kGBufferTargets] = set_ == GlFrame::Full ? kTriangleIdTarget : GL_NONE;
+  buffers[kGBufferTargets] = storesPosition_ ? kPositionTarget : GL_NONE;
+  buffers[kGBufferTargets + 1] = set_ == GlFrame::Full ? kTriangleIdTarget : GL_NONE;
   glDrawBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
   const std::array<GLfloat, 4> zero = {0.0f, 0.0f, 0.0f, 0.0f};
-  for (int k = 0; k < kGBufferTargets; ++k) glClearBufferfv(GL_COLOR, k, zero.data());
+  for (int k = 0; k < kGBufferTargets + (storesPosition_ ? 1 : 0); ++k) glClearBufferfv(GL_COLOR, k, zero.data());
   if (set_ == GlFrame::Full) {
     const std::array<GLuint, 4> noTriangle = {kNoTriangle, 0, 0, 0};
-    glClearBufferuiv(GL_COLOR, kGBufferTargets, noTriangle.data());
+    glClearBufferuiv(GL_COLOR, kGBufferTargets + 1, noTriangle.data());
   }
   const GLfloat farDepth = 1.0f;
   glClearBufferfv(GL_DEPTH, 0, &farDepth);
@@ -97,6 +104,7 @@ void GlGBuffer::light(ProgramCache& programs, const Scene& scene, const GlShadow
 
   std::vector<std::string> defines;
   if (sceneHasShadows(scene)) defines.push_back("HAS_SHADOWS");
+  if (storesPosition_) defines.push_back("GBUFFER_POSITION");
   const GLuint program = programs.get(ProgramDesc{"deferred_lighting",
                                                  {"common.glsl", "sky.vert"},
                                                  {"common.glsl", "shadow.glsl", "lighting.glsl", "deferred_lighting.frag"},
@@ -116,11 +124,16 @@ void GlGBuffer::light(ProgramCache& programs, const Scene& scene, const GlShadow
     glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + kFirstTargetUnit + k));
     glBindTexture(GL_TEXTURE_2D, targets_[static_cast<std::size_t>(k)].id());
   }
+  if (storesPosition_) {
+    glUniform1i(uniformLocation(program, "gbufferPosition"), kPositionUnit);
+    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + kPositionUnit));
+    glBindTexture(GL_TEXTURE_2D, position_.id());
+  }
   GlVertexArray empty = makeGlVertexArray();  // core profile: a draw needs a vertex array
   glBindVertexArray(empty.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
-  for (int k = 0; k <= kGBufferTargets; ++k) {
+  for (int k = 0; k <= kPositionUnit; ++k) {
     glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + k));
     glBindTexture(GL_TEXTURE_2D, 0);
   }
@@ -140,10 +153,11 @@ std::shared_ptr<GBuffer> GlGBuffer::readBack() const {
   g->width = width_;
   g->height = height_;
   glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.id());
-  std::vector<vec4>* outputs[kGBufferTargets] = {&g->normal, &g->geometric, &g->albedo, &g->specular, &g->emission};
+  std::vector<vec4>* outputs[kGBufferTargets + 1] = {&g->normal,   &g->geometric, &g->albedo,
+                                                     &g->specular, &g->emission,  &g->position};
   const std::size_t rowTexels = static_cast<std::size_t>(width_);
   std::vector<vec4> row(rowTexels);
-  for (int k = 0; k < kGBufferTargets; ++k) {
+  for (int k = 0; k < kGBufferTargets + (storesPosition_ ? 1 : 0); ++k) {  // the position is attachment 5
     std::vector<vec4>& out = *outputs[k];
     out.resize(rowTexels * static_cast<std::size_t>(height_));
     glReadBuffer(static_cast<GLenum>(kFirstTarget + k));

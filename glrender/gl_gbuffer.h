@@ -1,6 +1,6 @@
 // The deferred pipeline on GL (docs/deferred.md): the G-buffer pass draws the scene with
 // phong.frag's GBUFFER_PASS into five RGBA32F textures (scene/renderer.h's GBuffer, target by
-// target), a DEPTH_COMPONENT24 texture and, in a full frame, the frame's own triangle-id
+// target), a sixth for the position when the frame stores it, a DEPTH_COMPONENT24 texture and, in a full frame, the frame's own triangle-id
 // storage; the lighting pass (deferred_lighting.frag) then draws one full-screen triangle into
 // the frame's colour, reading them with texelFetch. The CPU twin is softrender/deferred.h.
 #pragma once
@@ -23,8 +23,9 @@ class GlGBuffer {
  public:
   // (Re)creates the textures at `targets`' size and binds the G-buffer framebuffer with every
   // target cleared: colours to 0, depth to 1, ids to kNoTriangle (full set). Fragment outputs:
-  // locations 0-4 the targets, 5 the triangle id.
-  void bindForSurfaces(const RenderTargets& targets, GlFrame set);
+  // locations 0-4 the targets, 5 the position (`position`: settings.gbuffer_position stored),
+  // 6 the triangle id.
+  void bindForSurfaces(const RenderTargets& targets, GlFrame set, bool position);
 
   // After the surfaces: copies the depth into `targets` (the frame's depth, for the sky and
   // the lines), binds it and draws the lighting pass into its colour alone, with the frame's
@@ -32,15 +33,17 @@ class GlGBuffer {
   void light(ProgramCache& programs, const Scene& scene, const GlShadowMaps* shadows, const mat4& clipFromWorld,
              const RenderTargets& targets) const;
 
-  // The five targets, top row first (a full frame's compare rows).
+  // The targets (five, or six with the position), top row first (a full frame's compare rows).
   std::shared_ptr<GBuffer> readBack() const;
 
  private:
   int width_ = 0, height_ = 0;
   GlFrame set_ = GlFrame::Full;
+  bool storesPosition_ = false;
   GLuint triangleIdStorage_ = 0;  // the one attached, to notice a new frame's storage
   GlFramebuffer framebuffer_;
   std::array<GlTexture, kGBufferTargets> targets_;
+  GlTexture position_;  // 0 when the position is rebuilt from depth
   GlTexture depth_;
 };
 

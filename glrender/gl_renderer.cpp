@@ -276,7 +276,7 @@ class GlRenderer final : public Renderer {
     if (deferred) {
       // The G-buffer pass, then the lighting pass before the sky (gl_gbuffer.h); each pass's
       // time is measured to its glFinish, only when a full frame is read back.
-      device.gbuffer.bindForSurfaces(device.targets, options_.frame);
+      device.gbuffer.bindForSurfaces(device.targets, options_.frame, storesGBufferPosition(drawSettings));
       lighting = [&] {
         if (options_.frame == GlFrame::Full) glFinish();
         const auto lightingStart = std::chrono::steady_clock::now();

@@ -423,6 +423,7 @@ SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const S
     if (frame == GlFrame::Lean) desc.defines.push_back("NO_TRIANGLE_ID");
     if (sceneHasShadows(scene)) desc.defines.push_back("HAS_SHADOWS");
     if (gbufferLighting) desc.defines.push_back("GBUFFER_PASS");
+    if (gbufferLighting && storesGBufferPosition(settings)) desc.defines.push_back("GBUFFER_POSITION");
     const GLuint program = programs.get(desc);
     glUseProgram(program);
     setUniforms(program, scene, settings, clipState, item, clipFromWorld);

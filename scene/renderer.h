@@ -45,6 +45,9 @@ struct GBuffer {
   std::vector<vec4> albedo;     // xyz: kd albedo, scaled by (1 - the environment's share); w 1
   std::vector<vec4> specular;   // xyz: ks specScale, scaled the same; w 1
   std::vector<vec4> emission;   // xyz: what no light scales (ambient, environment); w 1
+  // xyz: the world position the forward shading interpolates; w 1. Empty when the frame
+  // rebuilds positions from depth (settings.gbuffer_position depth).
+  std::vector<vec4> position;
 };
 
 struct CapturedFaces;  // below

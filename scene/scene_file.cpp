@@ -913,7 +913,7 @@ class SceneReader {
     requireObject(j, path);
     checkKeys(j, path,
               {"cull", "front_face", "clip", "user_clip_planes", "view", "lighting_space", "tangent_transform",
-               "texture_filter", "anisotropy", "tbn_lines", "pipeline"},
+               "texture_filter", "anisotropy", "tbn_lines", "pipeline", "gbuffer_position"},
               "settings");
     RenderSettings& s = scene_.settings;
     if (const Json* v = find(j, "cull")) s.cull = readEnum<CullMode>(*v, childPath(path, "cull"));
@@ -926,6 +926,9 @@ class SceneReader {
     if (const Json* v = find(j, "view")) s.view = readEnum<View>(*v, childPath(path, "view"));
     if (const Json* v = find(j, "lighting_space")) s.lightingSpace = readEnum<LightingSpace>(*v, childPath(path, "lighting_space"));
     if (const Json* v = find(j, "pipeline")) s.pipeline = readEnum<Pipeline>(*v, childPath(path, "pipeline"));
+    if (const Json* v = find(j, "gbuffer_position")) {
+      s.gbufferPosition = readEnum<GBufferPosition>(*v, childPath(path, "gbuffer_position"));
+    }
     if (const Json* v = find(j, "tangent_transform")) {
       s.tangentTransform = readEnum<TangentTransform>(*v, childPath(path, "tangent_transform"));
     }

@@ -34,6 +34,8 @@ constexpr NameTable<View, 20> kView{{{View::Shaded, "shaded"},
                                      {View::LightDepth, "light_depth"}}};
 constexpr NameTable<LightingSpace, 2> kSpace{{{LightingSpace::World, "world"}, {LightingSpace::Tangent, "tangent"}}};
 constexpr NameTable<Pipeline, 2> kPipeline{{{Pipeline::Forward, "forward"}, {Pipeline::Deferred, "deferred"}}};
+constexpr NameTable<GBufferPosition, 2> kGBufferPosition{
+    {{GBufferPosition::Stored, "stored"}, {GBufferPosition::Depth, "depth"}}};
 constexpr NameTable<TangentTransform, 2> kTangent{
     {{TangentTransform::Model, "model"}, {TangentTransform::InverseTranspose, "inverse_transpose"}}};
 constexpr NameTable<TextureFilter, 6> kFilter{{{TextureFilter::Nearest, "nearest"},
@@ -90,6 +92,7 @@ std::string_view toString(FrontFace v) { return nameOf(kFront, v); }
 std::string_view toString(View v) { return nameOf(kView, v); }
 std::string_view toString(LightingSpace v) { return nameOf(kSpace, v); }
 std::string_view toString(Pipeline v) { return nameOf(kPipeline, v); }
+std::string_view toString(GBufferPosition v) { return nameOf(kGBufferPosition, v); }
 std::string_view toString(TangentTransform v) { return nameOf(kTangent, v); }
 std::string_view toString(TextureFilter v) { return nameOf(kFilter, v); }
 std::string_view toString(LineMode v) { return nameOf(kLine, v); }
@@ -104,6 +107,7 @@ bool parse(std::string_view s, FrontFace& out) { return valueOf(kFront, s, out);
 bool parse(std::string_view s, View& out) { return valueOf(kView, s, out); }
 bool parse(std::string_view s, LightingSpace& out) { return valueOf(kSpace, s, out); }
 bool parse(std::string_view s, Pipeline& out) { return valueOf(kPipeline, s, out); }
+bool parse(std::string_view s, GBufferPosition& out) { return valueOf(kGBufferPosition, s, out); }
 bool parse(std::string_view s, TangentTransform& out) { return valueOf(kTangent, s, out); }
 bool parse(std::string_view s, TextureFilter& out) { return valueOf(kFilter, s, out) || valueOf(kFilterAliases, s, out); }
 bool parse(std::string_view s, LineMode& out) { return valueOf(kLine, s, out); }

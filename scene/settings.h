@@ -67,6 +67,11 @@ enum class LightingSpace { World, Tangent };
 // How a shaded frame is lit (docs/deferred.md): forward (every fragment lit as it is drawn) or
 // deferred (a G-buffer pass writes each pixel's surface, then one lighting pass per pixel).
 enum class Pipeline { Forward, Deferred };
+// Where the deferred lighting pass finds a pixel's world position: `stored`, a G-buffer target
+// holding the position the forward shading interpolates (so deferred lights the very point
+// forward lights); `depth`, rebuilt from the window depth through the inverse camera matrix
+// (no extra target, but the depth's quantisation moves the point along its ray).
+enum class GBufferPosition { Stored, Depth };
 enum class TangentTransform { Model, InverseTranspose };
 // GL's minification filters (docs/textures.md): nearest = GL_NEAREST, bilinear = GL_LINEAR
 // (level 0 only), trilinear = GL_LINEAR_MIPMAP_LINEAR, and the other three mipmapped ones by
@@ -108,6 +113,7 @@ struct RenderSettings {
   View view = View::Shaded;
   LightingSpace lightingSpace = LightingSpace::World;
   Pipeline pipeline = Pipeline::Forward;
+  GBufferPosition gbufferPosition = GBufferPosition::Stored;  // read by a deferred frame only
   TangentTransform tangentTransform = TangentTransform::Model;
   TextureFilter textureFilter = TextureFilter::Bilinear;
   float anisotropy = 1.0f;  // GL_TEXTURE_MAX_ANISOTROPY, in [1, kMaxTextureAnisotropy]
@@ -119,6 +125,10 @@ struct RenderSettings {
 inline bool drawsDeferred(const RenderSettings& settings) {
   return settings.pipeline == Pipeline::Deferred && settings.view == View::Shaded;
 }
+// Whether a deferred frame's G-buffer holds the position (its sixth target).
+inline bool storesGBufferPosition(const RenderSettings& settings) {
+  return drawsDeferred(settings) && settings.gbufferPosition == GBufferPosition::Stored;
+}
 
 // Names as written in scene files and on the command line.
 std::string_view toString(CullMode v);
@@ -126,6 +136,7 @@ std::string_view toString(FrontFace v);
 std::string_view toString(View v);
 std::string_view toString(LightingSpace v);
 std::string_view toString(Pipeline v);
+std::string_view toString(GBufferPosition v);
 std::string_view toString(TangentTransform v);
 std::string_view toString(TextureFilter v);
 std::string_view toString(LineMode v);
@@ -141,6 +152,7 @@ bool parse(std::string_view s, FrontFace& out);
 bool parse(std::string_view s, View& out);
 bool parse(std::string_view s, LightingSpace& out);
 bool parse(std::string_view s, Pipeline& out);
+bool parse(std::string_view s, GBufferPosition& out);
 bool parse(std::string_view s, TangentTransform& out);
 bool parse(std::string_view s, TextureFilter& out);
 bool parse(std::string_view s, LineMode& out);

@@ -1,6 +1,6 @@
 // The deferred pipeline's lighting pass (docs/deferred.md): one fragment per pixel of a
-// full-screen triangle (sky.vert's), the G-buffer read with texelFetch, the world position
-// rebuilt from the depth, lit by the frame's lights with lighting.glsl's loop. C++ twin:
+// full-screen triangle (sky.vert's), the G-buffer read with texelFetch, the world position read
+// from its target (GBUFFER_POSITION) or rebuilt from the depth, lit by the frame's lights with lighting.glsl's loop. C++ twin:
 // deferredLightingLanes and worldFromWindowLanes in softrender/deferred-inl.h, in the same
 // order of operations. Included after common.glsl, shadow.glsl and lighting.glsl.
 
@@ -10,6 +10,9 @@ uniform sampler2D gbufferGeometric;  // xyz: the interpolated normal, world
 uniform sampler2D gbufferAlbedo;     // xyz: kd albedo (1 - the environment's share)
 uniform sampler2D gbufferSpecular;   // xyz: ks specScale, scaled the same
 uniform sampler2D gbufferEmission;   // xyz: what no light scales
+#ifdef GBUFFER_POSITION
+uniform sampler2D gbufferPosition;   // xyz: the world position forward interpolates
+#endif
 uniform mat4 worldFromClip;          // the inverse of the camera's clipFromWorld
 uniform vec2 viewportSize;           // pixels
 
@@ -38,7 +41,11 @@ void main() {
   vec3 kdAlbedo = texelFetch(gbufferAlbedo, pixel, 0).xyz;
   vec3 ksSpec = texelFetch(gbufferSpecular, pixel, 0).xyz;
   vec3 emission = texelFetch(gbufferEmission, pixel, 0).xyz;
+#ifdef GBUFFER_POSITION
+  vec3 posWorld = texelFetch(gbufferPosition, pixel, 0).xyz;
+#else
   vec3 posWorld = worldFromWindow(gl_FragCoord.xy, depth);
+#endif
   LightSum lit = lightSum(posWorld, geometric, vec3(0.0), vec3(0.0), normal.xyz, kdAlbedo, ksSpec, normal.w);
   fragColour = clamp(vec4(emission + lit.sum, 1.0), 0.0, 1.0);
 }

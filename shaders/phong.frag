@@ -22,7 +22,8 @@
 // frame, glrender/gl_renderer.h; llvmpipe pays for gl_PrimitiveID even when no draw buffer
 // takes the output).
 // GBUFFER_PASS (with VIEW_SHADED): the deferred pipeline's G-buffer pass, the surface written
-// to five targets instead of the colour (docs/deferred.md). The frame's lights and the light
+// to five targets instead of the colour (docs/deferred.md); GBUFFER_POSITION: and the world
+// position to a sixth. The frame's lights and the light
 // loop are shaders/lighting.glsl's, included before this file.
 
 in vec3 posWorld;
@@ -68,8 +69,11 @@ layout(location = 1) out vec4 gbufferGeometric;
 layout(location = 2) out vec4 gbufferAlbedo;
 layout(location = 3) out vec4 gbufferSpecular;
 layout(location = 4) out vec4 gbufferEmission;
+#ifdef GBUFFER_POSITION
+layout(location = 5) out vec4 gbufferPosition;
+#endif
 #ifndef NO_TRIANGLE_ID
-layout(location = 5) out uint fragTriangleId;
+layout(location = 6) out uint fragTriangleId;
 #endif
 #if defined(SURFACE_BUMP_EMBOSS) || defined(SELF_SHADOW)
 #define GBUFFER_LIT_HERE
@@ -253,6 +257,9 @@ void main() {
 #endif
   gbufferNormal = vec4(nlWorld, shininess);
   gbufferGeometric = vec4(n, 1.0);
+#ifdef GBUFFER_POSITION
+  gbufferPosition = vec4(posWorld, 1.0);
+#endif
 #ifdef GBUFFER_LIT_HERE
   gbufferAlbedo = vec4(0.0, 0.0, 0.0, 1.0);
   gbufferSpecular = vec4(0.0, 0.0, 0.0, 1.0);

@@ -60,6 +60,7 @@ struct GBufferTarget {
     g.albedo[i] = vec4(s.kdAlbedo, 1.0f);
     g.specular[i] = vec4(s.ksSpec, 1.0f);
     g.emission[i] = vec4(s.emission, 1.0f);
+    if (!g.position.empty()) g.position[i] = vec4(s.posWorld, 1.0f);
   }
 };
 
@@ -154,7 +155,8 @@ class CpuRenderer final : public Renderer {
       // lighting pass over its pixels.
       const auto gbufferStart = std::chrono::steady_clock::now();
       gbuffer = std::make_shared<GBuffer>();
-      resizeGBuffer(*gbuffer, width, height, options_.path == CpuPath::Teaching);  // the fast pass writes every texel
+      // The fast pass writes every texel, the teaching loop only the drawn ones.
+      resizeGBuffer(*gbuffer, width, height, options_.path == CpuPath::Teaching, storesGBufferPosition(drawSettings));
       if (options_.path == CpuPath::Teaching) {
         const std::vector<LoopItemT<float>> loopItems = teachingLoopItems(items);
         GBufferTarget target{fb, *gbuffer};

@@ -39,6 +39,7 @@ struct GBufferTexelL {
   Vec3L<L> kdAlbedo;   // albedo.xyz
   Vec3L<L> ksSpec;     // specular.xyz
   Vec3L<L> emission;   // emission.xyz
+  Vec3L<L> posWorld;   // position.xyz (when the G-buffer stores it)
 };
 
 // The G-buffer pass's shading of one fragment (phong.frag's main with GBUFFER_PASS): the forward
@@ -61,7 +62,7 @@ TWR_LANE_INLINE GBufferTexelL<L> gbufferFragmentLanes(const FragmentL<L>& f, con
     const Vec3L<L>& m = frame.mappedTangent;
     nlWorld = mapped ? safeNormalize3<L>(frame.t * m.x + frame.b * m.y + frame.n * m.z) : frame.n;
   }
-  GBufferTexelL<L> g{nlWorld, L(u.shininess), frame.n, Vec3L<L>(zero), Vec3L<L>(zero), Vec3L<L>(zero)};
+  GBufferTexelL<L> g{nlWorld, L(u.shininess), frame.n, Vec3L<L>(zero), Vec3L<L>(zero), Vec3L<L>(zero), f.posWorld};
   if constexpr (Features::kHasHeightMap) {
     if (litInGBufferPass(u)) {
       const Vec4L<L> colour = (shadeFragmentLanes<Features, L>)(f, u, maps, static_cast<std::nullptr_t*>(nullptr));
@@ -111,13 +112,12 @@ TWR_LANE_INLINE Vec3L<L> worldFromWindowLanes(const Mat4T<ScalarOf<L>>& m, const
 }
 
 // The lighting pass at one pixel (deferred_lighting.frag's main): the G-buffer's surface at
-// posWorld lit by the frame's lights with the forward shading's own loop (world space, no
+// g.posWorld (its stored position, or worldFromWindowLanes's) lit by the frame's lights with the forward shading's own loop (world space, no
 // height field), added to the emission and clamped as the forward colour is.
 struct NoMaps {};
 using DeferredLightingFeatures = ShaderFeatures<false, false, false, LightingSpace::World, View::Shaded, false>;
 template <typename L>
-TWR_LANE_INLINE Vec4L<L> deferredLightingLanes(const GBufferTexelL<L>& g, const Vec3L<L>& posWorld,
-                                               const ShadeUniformsT<ScalarOf<L>>& u) {
+TWR_LANE_INLINE Vec4L<L> deferredLightingLanes(const GBufferTexelL<L>& g, const ShadeUniformsT<ScalarOf<L>>& u) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1));
   SurfaceFrameL<L> frame;
@@ -129,7 +129,7 @@ TWR_LANE_INLINE Vec4L<L> deferredLightingLanes(const GBufferTexelL<L>& g, const 
   frame.mappedTangent = Vec3L<L>(zero, zero, one);
   frame.nl = g.nl;
   const LightSumL<L> lit = (lightSumLanes<DeferredLightingFeatures, L>)(
-      static_cast<const FragmentL<L>*>(nullptr), u, NoMaps{}, posWorld, frame, g.kdAlbedo, g.ksSpec, g.shininess,
+      static_cast<const FragmentL<L>*>(nullptr), u, NoMaps{}, g.posWorld, frame, g.kdAlbedo, g.ksSpec, g.shininess,
       static_cast<std::nullptr_t*>(nullptr));
   return clampUnit4<L>(Vec4L<L>(g.emission + lit.sum, one));
 }

@@ -10,11 +10,13 @@
 
 namespace twr {
 
-void resizeGBuffer(GBuffer& g, int width, int height, bool clear) {
+void resizeGBuffer(GBuffer& g, int width, int height, bool clear, bool position) {
   const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
   g.width = width;
   g.height = height;
-  for (std::vector<vec4>* target : {&g.normal, &g.geometric, &g.albedo, &g.specular, &g.emission}) {
+  if (!position) g.position = {};
+  for (std::vector<vec4>* target : {&g.normal, &g.geometric, &g.albedo, &g.specular, &g.emission, &g.position}) {
+    if (target == &g.position && !position) continue;
     if (clear) {
       target->assign(pixels, vec4(0.0f));
     } else {
@@ -34,6 +36,7 @@ DeferredUniforms makeDeferredUniforms(const Scene& scene, const RenderSettings& 
   setShadowUniforms(u.lighting, shadows);
   u.worldFromClip = worldFromClipOf(clipFromWorldFor(scene.camera, width, height));
   u.viewportSize = vec2(static_cast<float>(width), static_cast<float>(height));
+  u.positionStored = storesGBufferPosition(settings);
   return u;
 }
 
@@ -47,11 +50,15 @@ void lightGBufferTeaching(const GBuffer& g, const DeferredUniforms& u, int threa
             const std::size_t i = fb.index(px, py);
             const float depth = fb.depth[i];
             if (!(depth < kClearDepth)) continue;  // nothing drawn: the background stays
-            const GBufferTexelL<float> surface{vec3(g.normal[i]), g.normal[i].w, vec3(g.geometric[i]),
-                                               vec3(g.albedo[i]), vec3(g.specular[i]), vec3(g.emission[i])};
-            const vec3 posWorld = worldFromWindowLanes<float>(u.worldFromClip, u.viewportSize, static_cast<float>(px),
-                                                              static_cast<float>(py), depth);
-            writeFragment(fb, px, py, deferredLightingLanes<float>(surface, posWorld, u.lighting), depth, fb.triangleId[i]);
+            const vec3 posWorld =
+                u.positionStored ? vec3(g.position[i])
+                                 : worldFromWindowLanes<float>(u.worldFromClip, u.viewportSize, static_cast<float>(px),
+                                                               static_cast<float>(py), depth);
+            const GBufferTexelL<float> surface{vec3(g.normal[i]),   g.normal[i].w,       vec3(g.geometric[i]),
+                                               vec3(g.albedo[i]),   vec3(g.specular[i]), vec3(g.emission[i]),
+                                               posWorld};
+            writeFragment(fb, px, py, deferredLightingLanes<float>(surface, u.lighting), depth,
+                          fb.triangleId[i]);
           }
         }
       },

@@ -18,8 +18,8 @@ namespace twr {
 // The G-buffer is scene/renderer.h's GBuffer: the CPU writes it in place, rows as the
 // framebuffer stores them (Framebuffer::index), and hands it to the frame's output.
 // Sized for the frame; `clear`: every target 0 (no surface), else whatever was there (a pass
-// that writes every pixel).
-void resizeGBuffer(GBuffer& g, int width, int height, bool clear);
+// that writes every pixel). `position`: with the position target (else it is emptied).
+void resizeGBuffer(GBuffer& g, int width, int height, bool clear, bool position);
 
 // What the lighting pass reads besides the G-buffer: the frame's lights and eye (a shading
 // uniform block with no material), and how a pixel's window depth becomes a world position.
@@ -28,6 +28,7 @@ struct DeferredUniformsT {
   ShadeUniformsT<S> lighting;  // lights, lightCount, eyePosWorld (shadow maps set), view Shaded
   Mat4T<S> worldFromClip{S(1)};  // the inverse of the camera's clipFromWorld (computed in double)
   Vec2T<S> viewportSize{S(1)};   // pixels
+  bool positionStored = false;   // read the G-buffer's position target, else rebuild it from depth
 };
 using DeferredUniforms = DeferredUniformsT<float>;
 DeferredUniforms makeDeferredUniforms(const Scene& scene, const RenderSettings& settings, int width, int height,

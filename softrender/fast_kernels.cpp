@@ -354,8 +354,10 @@ void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps,
 
 // The deferred pipeline's G-buffer pass for a segment: the surface (gbufferFragmentLanes) of
 // this item's lanes into `channels` (deferred.h's targets in order, four floats of normal then
-// three each of geometric, albedo, specular and emission), the other lanes left as they were.
-inline constexpr int kSurfaceChannels = 16;
+// three each of geometric, albedo, specular, emission and position), the other lanes left as
+// they were.
+inline constexpr int kSurfaceChannels = 19;
+inline constexpr int kPositionChannel = 16;  // the first of the position's three
 template <typename Features>
 void SurfaceSegment(const Segment& s, const ItemState& item, const ItemMaps& maps, float (*channels)[kMaxLanes]) {
   const DF df;
@@ -364,7 +366,8 @@ void SurfaceSegment(const Segment& s, const ItemState& item, const ItemMaps& map
   const LaneF values[kSurfaceChannels] = {g.nl.x,       g.nl.y,       g.nl.z,       g.shininess,
                                           g.n.x,        g.n.y,        g.n.z,        g.kdAlbedo.x,
                                           g.kdAlbedo.y, g.kdAlbedo.z, g.ksSpec.x,   g.ksSpec.y,
-                                          g.ksSpec.z,   g.emission.x, g.emission.y, g.emission.z};
+                                          g.ksSpec.z,   g.emission.x, g.emission.y, g.emission.z,
+                                          g.posWorld.x, g.posWorld.y, g.posWorld.z};
   const auto mask = lanesOf(s.bits).m;
   for (int c = 0; c < kSurfaceChannels; ++c) hn::BlendedStore(values[c].v, mask, df, channels[c]);
 }
@@ -454,6 +457,7 @@ void ShadeRows(const std::vector<BinTriangle>& triangles, const std::vector<Item
           surfaces->albedo[origin + l] = vec4(at(7), at(8), at(9), w);
           surfaces->specular[origin + l] = vec4(at(10), at(11), at(12), w);
           surfaces->emission[origin + l] = vec4(at(13), at(14), at(15), w);
+          if (!surfaces->position.empty()) surfaces->position[origin + l] = vec4(at(16), at(17), at(18), w);
         }
       }
     }
@@ -481,6 +485,7 @@ void LightRows(const GBuffer& g, const DeferredUniforms& u, int rowBegin, int ro
   const std::size_t lanes = laneCount();
   const std::size_t width = static_cast<std::size_t>(fb.width);
   HWY_ALIGN float channels[kSurfaceChannels + 1][kMaxLanes];  // the surface, then the depth
+  const vec4 noPosition(0.0f);
   for (int py = rowBegin; py < rowEnd; ++py) {
     for (std::size_t x = 0; x < width; x += lanes) {
       const std::size_t inRow = std::min(lanes, width - x);
@@ -491,19 +496,23 @@ void LightRows(const GBuffer& g, const DeferredUniforms& u, int rowBegin, int ro
         if (drawn) bits |= std::uint64_t{1} << l;
         const std::size_t i = drawn ? origin + l : origin;  // a sane texel for lanes not written
         const vec4 &n = g.normal[i], &m = g.geometric[i], &a = g.albedo[i], &sp = g.specular[i], &e = g.emission[i];
-        const float values[kSurfaceChannels + 1] = {n.x, n.y, n.z, n.w, m.x, m.y, m.z, a.x, a.y,
-                                                    a.z, sp.x, sp.y, sp.z, e.x, e.y, e.z, fb.depth[i]};
+        const vec4& p = u.positionStored ? g.position[i] : noPosition;
+        const float values[kSurfaceChannels + 1] = {n.x,  n.y,  n.z, n.w, m.x, m.y, m.z, a.x, a.y, a.z,
+                                                    sp.x, sp.y, sp.z, e.x, e.y, e.z, p.x, p.y, p.z, fb.depth[i]};
         for (int c = 0; c <= kSurfaceChannels; ++c) channels[c][l] = values[c];
       }
       if (bits == 0) continue;
       const auto lane = [&](int c) HWY_ATTR { return LaneF(hn::Load(df, channels[c])); };
-      const GBufferTexelL<LaneF> surface{Vec3L<LaneF>(lane(0), lane(1), lane(2)),    lane(3),
-                                         Vec3L<LaneF>(lane(4), lane(5), lane(6)),    Vec3L<LaneF>(lane(7), lane(8), lane(9)),
-                                         Vec3L<LaneF>(lane(10), lane(11), lane(12)), Vec3L<LaneF>(lane(13), lane(14), lane(15))};
       const LaneF px = pixelColumnsF(static_cast<int>(x)), pyLanes(static_cast<float>(py));
       const Vec3L<LaneF> posWorld =
-          worldFromWindowLanes<LaneF>(u.worldFromClip, u.viewportSize, px, pyLanes, lane(kSurfaceChannels));
-      const Vec4L<LaneF> colour = deferredLightingLanes<LaneF>(surface, posWorld, u.lighting);
+          u.positionStored
+              ? Vec3L<LaneF>(lane(kPositionChannel), lane(kPositionChannel + 1), lane(kPositionChannel + 2))
+              : worldFromWindowLanes<LaneF>(u.worldFromClip, u.viewportSize, px, pyLanes, lane(kSurfaceChannels));
+      const GBufferTexelL<LaneF> surface{Vec3L<LaneF>(lane(0), lane(1), lane(2)),    lane(3),
+                                         Vec3L<LaneF>(lane(4), lane(5), lane(6)),    Vec3L<LaneF>(lane(7), lane(8), lane(9)),
+                                         Vec3L<LaneF>(lane(10), lane(11), lane(12)), Vec3L<LaneF>(lane(13), lane(14), lane(15)),
+                                         posWorld};
+      const Vec4L<LaneF> colour = deferredLightingLanes<LaneF>(surface, u.lighting);
       HWY_ALIGN std::uint32_t words[kMaxLanes];
       hn::Store(rgbaWordsOf(colour), du, words);
       for (std::size_t l = 0; l < inRow; ++l) {

@@ -225,9 +225,10 @@ std::vector<std::string> childArguments(const BenchArgs& args, int width, int he
                                    "--threads", std::to_string(threads),
                                    "--gl-precise-child"};
   for (const std::string& argument : glRequestArguments(args.gl)) argv.push_back(argument);
-  const std::array<std::pair<const char*, const std::string*>, 7> overrides = {{
+  const std::array<std::pair<const char*, const std::string*>, 8> overrides = {{
       {"--view", &r.view},
       {"--pipeline", &r.pipeline},
+      {"--gbuffer-position", &r.gbufferPosition},
       {"--cull", &r.cull},
       {"--front-face", &r.frontFace},
       {"--lighting-space", &r.lightingSpace},

@@ -183,17 +183,19 @@ std::vector<BufferRow> compareBuffers(const std::vector<PassBuffer>& buffers, co
       row.floats = true;
       row.depthMetrics = compareDepthBuffers(a, b, width, height, 3, kGBufferTolerance);
       row.passes = row.depthMetrics.overTolerance == 0 && row.depthMetrics.nonFinite == 0;
-      const bool normal = buffer == PassBuffer::GbufferNormal;
-      savePng(dir + "/buffer_" + name + "_cpu.png", gbufferImage(ta, width, height, normal));
-      savePng(dir + "/buffer_" + name + "_gl.png", gbufferImage(tb, width, height, normal));
+      savePng(dir + "/buffer_" + name + "_cpu.png", gbufferImage(ta, width, height, buffer));
+      savePng(dir + "/buffer_" + name + "_gl.png", gbufferImage(tb, width, height, buffer));
       savePng(dir + "/buffer_" + name + "_diff.png", depthDiffImage(a, b, width, height, 3, kGBufferTolerance));
       rows.push_back(row);
       continue;
     }
-    if (buffer == PassBuffer::GbufferSpecular || buffer == PassBuffer::GbufferEmission) {
+    if (buffer == PassBuffer::GbufferSpecular || buffer == PassBuffer::GbufferEmission ||
+        buffer == PassBuffer::GbufferPosition) {
       row.available = false;
       row.depth = true;
-      row.note = "a forward frame has no G-buffer; settings.pipeline deferred writes one";
+      row.note = cpuOut.gbuffer && glOut.gbuffer
+                     ? "settings.gbuffer_position depth: the frame rebuilds each position from the depth"
+                     : "a forward frame has no G-buffer; settings.pipeline deferred writes one";
       rows.push_back(row);
       continue;
     }

@@ -206,6 +206,7 @@ Json settingsJson(const RenderSettings& s) {
   j["view"] = std::string(toString(s.view));
   j["lighting_space"] = std::string(toString(s.lightingSpace));
   j["pipeline"] = std::string(toString(s.pipeline));
+  j["gbuffer_position"] = std::string(toString(s.gbufferPosition));
   j["tangent_transform"] = std::string(toString(s.tangentTransform));
   j["texture_filter"] = std::string(toString(s.textureFilter));
   j["tbn_lines"] = Json{{"enabled", s.tbnLines.enabled}, {"length", clean(s.tbnLines.length)},
@@ -459,7 +460,9 @@ void printScene(std::ostream& out, const Scene& scene) {
   for (const vec4& p : s.userClipPlanes) {
     out << "    " << num(p.x) << " x + " << num(p.y) << " y + " << num(p.z) << " z + " << num(p.w) << " >= 0\n";
   }
-  out << "  view " << toString(s.view) << ", pipeline " << toString(s.pipeline) << ", lighting_space "
+  out << "  view " << toString(s.view) << ", pipeline " << toString(s.pipeline)
+      << (s.pipeline == Pipeline::Deferred ? " (position " + std::string(toString(s.gbufferPosition)) + ")" : "")
+      << ", lighting_space "
       << toString(s.lightingSpace) << ", tangent_transform "
       << toString(s.tangentTransform) << ", texture_filter " << toString(s.textureFilter) << "\n"
       << "  tbn_lines " << (s.tbnLines.enabled ? "on" : "off") << ", length " << num(s.tbnLines.length) << ", mode "

@@ -44,6 +44,10 @@ void addRenderOptions(CLI::App& cmd, RenderRequest& request) {
   cmd.add_option("--pipeline", request.pipeline,
                  "Override settings.pipeline: forward|deferred (a G-buffer pass, then a lighting pass)")
       ->check(kNonEmpty);
+  cmd.add_option("--gbuffer-position", request.gbufferPosition,
+                 "Override settings.gbuffer_position: stored (a G-buffer target, the position forward "
+                 "lights) or depth (rebuilt from the window depth)")
+      ->check(kNonEmpty);
   cmd.add_option("--tangent-transform", request.tangentTransform,
                  "Override settings.tangent_transform: model|inverse_transpose")
       ->check(kNonEmpty);
@@ -71,6 +75,7 @@ Scene loadRequestedScene(const RenderRequest& request) {
   applyOverride(request.frontFace, "--front-face", s.frontFace, "ccw|cw");
   applyOverride(request.lightingSpace, "--lighting-space", s.lightingSpace, "world|tangent");
   applyOverride(request.pipeline, "--pipeline", s.pipeline, "forward|deferred");
+  applyOverride(request.gbufferPosition, "--gbuffer-position", s.gbufferPosition, "stored|depth");
   applyOverride(request.tangentTransform, "--tangent-transform", s.tangentTransform, "model|inverse_transpose");
   applyOverride(request.textureFilter, "--filter", s.textureFilter,
                 "nearest|bilinear|trilinear|nearest_mipmap_nearest|linear_mipmap_nearest|nearest_mipmap_linear");

@@ -17,7 +17,7 @@ struct RenderRequest {
   std::string scenePath;
   std::optional<int> width, height;  // default: the scene's output size
   std::string view;                   // default: the scene's settings.view
-  std::string cull, frontFace, lightingSpace, tangentTransform, textureFilter, pipeline;  // optional overrides
+  std::string cull, frontFace, lightingSpace, tangentTransform, textureFilter, pipeline, gbufferPosition;  // optional overrides
   bool verbose = false;
 };
 

@@ -483,6 +483,7 @@ void GuiApp::frame(bool& finalFrame, bool present) {
     state["horizon_last_build"] = horizonLastBuild_;
     state["anisotropy"] = doc_.scene.settings.anisotropy;
     state["pipeline"] = std::string(toString(doc_.scene.settings.pipeline));
+    state["gbuffer_position"] = std::string(toString(doc_.scene.settings.gbufferPosition));
     state["buffer"] = std::string(toString(shownBuffer_));
     state["diff_buffer"] = std::string(toString(diff_.buffer));
     state["cpu_gbuffer"] = cpuFrame_.output && cpuFrame_.output->gbuffer != nullptr;

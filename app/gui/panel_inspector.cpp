@@ -87,17 +87,18 @@ void GuiApp::drawInspectorPanel() {
       return usable(output) && output->gbuffer && output->gbuffer->normal.size() > i;
     };
     const bool gbufferRows = hasGBuffer(outputs[0]) || hasGBuffer(outputs[1]);
-    const char* rows[] = {"colour",    "depth",       "triangle",   "G normal",  "G geometric",
-                          "G albedo",  "G specular",  "G emission"};
-    const int rowCount = gbufferRows ? 8 : 3;
+    const char* rows[] = {"colour",   "depth",      "triangle",   "G normal",  "G geometric",
+                          "G albedo", "G specular", "G emission", "G position"};
+    const int rowCount = gbufferRows ? 9 : 3;
     for (int r = 0; r < rowCount; ++r) {
       ImGui::TableNextRow();
       ImGui::TableSetColumnIndex(0);
       ImGui::TextUnformatted(rows[r]);
       if (r >= 3) {
         itemTooltip("The G-buffer a deferred frame was lit from: the world lighting normal (w: the Phong "
-                    "exponent), the interpolated normal, kd albedo, ks specScale and what no light scales "
-                    "(docs/deferred.md). A forward frame has none.");
+                    "exponent), the interpolated normal, kd albedo, ks specScale, what no light scales and "
+                    "the world position (docs/deferred.md). A forward frame has none; a frame that rebuilds "
+                    "the position from depth stores none.");
       }
       for (int b = 0; b < 2; ++b) {
         ImGui::TableSetColumnIndex(b + 1);
@@ -115,7 +116,12 @@ void GuiApp::drawInspectorPanel() {
             continue;
           }
           const GBuffer& g = *output->gbuffer;
-          const std::vector<vec4>* targets[] = {&g.normal, &g.geometric, &g.albedo, &g.specular, &g.emission};
+          const std::vector<vec4>* targets[] = {&g.normal,   &g.geometric, &g.albedo,
+                                                &g.specular, &g.emission,  &g.position};
+          if (targets[r - 3]->size() <= i) {
+            ImGui::TextDisabled("from depth");
+            continue;
+          }
           const vec4 v = (*targets[r - 3])[i];
           ImGui::Text("%.4f %.4f %.4f %.4g", static_cast<double>(v.x), static_cast<double>(v.y),
                       static_cast<double>(v.z), static_cast<double>(v.w));

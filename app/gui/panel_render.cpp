@@ -20,6 +20,7 @@ constexpr CullMode kCullModes[] = {CullMode::None, CullMode::Back, CullMode::Fro
 constexpr FrontFace kFrontFaces[] = {FrontFace::Ccw, FrontFace::Cw};
 constexpr LightingSpace kLightingSpaces[] = {LightingSpace::World, LightingSpace::Tangent};
 constexpr Pipeline kPipelines[] = {Pipeline::Forward, Pipeline::Deferred};
+constexpr GBufferPosition kGBufferPositions[] = {GBufferPosition::Stored, GBufferPosition::Depth};
 constexpr TangentTransform kTangentTransforms[] = {TangentTransform::Model, TangentTransform::InverseTranspose};
 constexpr const TextureFilter (&kTextureFilters)[6] = kAllTextureFilters;
 constexpr LineMode kLineModes[] = {LineMode::Core, LineMode::Immediate};
@@ -135,7 +136,8 @@ void GuiApp::drawRenderingTab() {
   }
   probe_.item("buffer");
   itemTooltip("Which buffer of each frame the images and the diff show: the frame (final), its depth, or a "
-              "deferred frame's G-buffer targets (normal as (n + 1) / 2, kd albedo, ks specScale, emission).");
+              "deferred frame's G-buffer targets (normal as (n + 1) / 2, kd albedo, ks specScale, emission, "
+              "the world position as a triangle wave of period 2 units).");
   const bool gbufferTarget = shownBuffer_ != PassBuffer::Final && shownBuffer_ != PassBuffer::GbufferDepth;
   if (gbufferTarget && !drawsDeferred(settings)) {
     warningText("A forward frame has no G-buffer: set Pipeline to deferred (Shading, below) in the shaded view. "
@@ -219,6 +221,13 @@ void GuiApp::drawRenderingTab() {
                        "forward: each fragment lit as it is drawn. deferred: a G-buffer pass writes each pixel's "
                        "surface, then a lighting pass lights every pixel once (docs/deferred.md). The debug views "
                        "draw forward.");
+  ImGui::BeginDisabled(settings.pipeline != Pipeline::Deferred);
+  changed |= enumRadio("G position", settings.gbufferPosition, kGBufferPositions, labelWidth,
+                       "Where the deferred lighting pass finds each pixel's world position. stored: a G-buffer "
+                       "target holds the position forward lights (deferred matches forward). depth: rebuilt from "
+                       "the window depth through the inverse camera matrix, one target less, but the depth's "
+                       "rounding moves the point along its ray and a shadow-map texel edge can flip a pixel.");
+  ImGui::EndDisabled();
   changed |= enumRadio("Lighting space", settings.lightingSpace, kLightingSpaces, labelWidth,
                        "world: N from the normal map is rotated to world space per pixel. tangent: L and V are "
                        "rotated into tangent space per vertex and interpolated (the tutorial's way).");

@@ -142,13 +142,14 @@ TEST(CliCompare, AllBuffersRowsInPassOrderWithTheirImages) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const nlohmann::json json = nlohmann::json::parse(r.out);
   ASSERT_TRUE(json["buffers"].is_array());
-  const std::vector<std::string> order = {"shadow_map",       "gbuffer_depth",    "gbuffer_normal", "gbuffer_albedo",
-                                          "gbuffer_specular", "gbuffer_emission", "lighting",       "final"};
+  const std::vector<std::string> order = {"shadow_map",       "gbuffer_depth",    "gbuffer_normal",   "gbuffer_albedo",
+                                          "gbuffer_specular", "gbuffer_emission", "gbuffer_position", "lighting",
+                                          "final"};
   ASSERT_EQ(json["buffers"].size(), order.size());
   for (std::size_t i = 0; i < order.size(); ++i) {
     const nlohmann::json& row = json["buffers"][i];
     EXPECT_EQ(row["buffer"], order[i]);
-    if (order[i] == "gbuffer_specular" || order[i] == "gbuffer_emission") {
+    if (order[i] == "gbuffer_specular" || order[i] == "gbuffer_emission" || order[i] == "gbuffer_position") {
       // A forward frame has no G-buffer to read them from.
       EXPECT_FALSE(row["available"].get<bool>()) << order[i];
       EXPECT_NE(row["note"].get<std::string>().find("deferred"), std::string::npos) << order[i];
@@ -181,7 +182,7 @@ TEST(CliCompare, AllBuffersRowsInPassOrderWithTheirImages) {
   ASSERT_EQ(d.exitCode, 0) << d.err;
   const nlohmann::json deferred = nlohmann::json::parse(d.out);
   ASSERT_EQ(deferred["buffers"].size(), order.size());
-  for (std::size_t i = 2; i <= 5; ++i) {
+  for (std::size_t i = 2; i <= 6; ++i) {
     const nlohmann::json& row = deferred["buffers"][i];
     EXPECT_EQ(row["kind"], "float") << order[i];
     EXPECT_TRUE(row["available"].get<bool>()) << order[i];
@@ -194,6 +195,23 @@ TEST(CliCompare, AllBuffersRowsInPassOrderWithTheirImages) {
   EXPECT_GT(deferred["cpu_lighting_ms"].get<double>(), 0.0);
   EXPECT_GT(deferred["gl_lighting_ms"].get<double>(), 0.0);
   EXPECT_EQ(json["cpu_lighting_ms"].get<double>(), 0.0);  // the forward frame above
+  // Positions rebuilt from depth: no position target to diff, and the row says why.
+  const RunResult p = runCli("compare \"" + kSource + "/assets/scenes/shadow_directional.json\" --out-dir \"" +
+                                 deferredDir.string() +
+                                 "\" --width 80 --height 60 --repeat 1 --pipeline deferred --gbuffer-position depth "
+                                 "--buffer gbuffer_position --json",
+                             deferredDir);
+  ASSERT_EQ(p.exitCode, 0) << p.err;
+  const nlohmann::json fromDepth = nlohmann::json::parse(p.out);
+  ASSERT_EQ(fromDepth["buffers"].size(), 1u);
+  EXPECT_FALSE(fromDepth["buffers"][0]["available"].get<bool>());
+  EXPECT_NE(fromDepth["buffers"][0]["note"].get<std::string>().find("gbuffer_position depth"), std::string::npos);
+  const RunResult badPosition = runCli("compare \"" + kDefaultScene + "\" --out-dir \"" + dir.string() +
+                                           "\" --width 80 --height 60 --repeat 1 --gbuffer-position deep",
+                                       dir);
+  EXPECT_EQ(badPosition.exitCode, 2);
+  EXPECT_NE(badPosition.err.find("--gbuffer-position: expected one of stored|depth, got 'deep'"), std::string::npos)
+      << badPosition.err;
 
   // One buffer; a scene without a shadow says the map is not there; a bad name is refused.
   const RunResult one = runCli("compare \"" + kDefaultScene + "\" --out-dir \"" + dir.string() +

@@ -26,6 +26,7 @@ RenderOutput twoPixelFrame(bool deferred) {
     g->albedo = {vec4(0.5f, 0.25f, 2.0f, 1.0f), vec4(0.0f)};
     g->specular = {vec4(0.1f, 0.1f, 0.1f, 1.0f), vec4(0.0f)};
     g->emission = {vec4(0.0f, 0.0f, 0.2f, 1.0f), vec4(0.0f)};
+    g->position = {vec4(1.25f, -0.75f, 3.0f, 1.0f), vec4(0.0f)};
     out.gbuffer = g;
   }
   return out;
@@ -46,6 +47,18 @@ TEST(PassBuffers, GBufferTargetsAsPicturesAndPlanes) {
   EXPECT_EQ(albedo->rgba[0], 128);
   EXPECT_EQ(albedo->rgba[1], 64);
   EXPECT_EQ(albedo->rgba[2], 255);  // clamped
+  // A position's triangle wave |2 fract(p / 2) - 1|: 1.25 -> 0.25 -> 64, -0.75 -> 0.25 -> 64, 3 -> 0.
+  const std::optional<RenderOutput> position = bufferAsOutput(frame, PassBuffer::GbufferPosition);
+  ASSERT_TRUE(position);
+  EXPECT_EQ(position->rgba[0], 64);
+  EXPECT_EQ(position->rgba[1], 64);
+  EXPECT_EQ(position->rgba[2], 0);
+  // Continuous across whole units: a floor at y = 0 rounds to either side of it and shows the same.
+  const Image across = gbufferImage({vec4(1e-7f, -1e-7f, 0.0f, 1.0f)}, 1, 1, PassBuffer::GbufferPosition);
+  EXPECT_EQ(across.rgba[0], 255);
+  EXPECT_EQ(across.rgba[1], 255);
+  EXPECT_EQ(across.rgba[2], 255);
+  EXPECT_EQ(position->rgba[4], 0);  // pixel 1: nothing drawn (w 0), black
   // Planes: x, y, z of every pixel, layer by layer.
   const std::vector<float> planes = gbufferPlanes(frame.gbuffer->albedo, 2, 1);
   ASSERT_EQ(planes.size(), 6u);
@@ -66,6 +79,15 @@ TEST(PassBuffers, WhatAFrameCannotShow) {
   const RenderOutput forward = twoPixelFrame(false);
   EXPECT_FALSE(bufferAsOutput(forward, PassBuffer::GbufferNormal));
   EXPECT_FALSE(bufferAsOutput(forward, PassBuffer::GbufferEmission));
+  EXPECT_FALSE(bufferAsOutput(forward, PassBuffer::GbufferPosition));
+  // A deferred frame that rebuilds its positions from depth stores none.
+  RenderOutput fromDepth = twoPixelFrame(true);
+  auto g = std::make_shared<GBuffer>(*fromDepth.gbuffer);
+  g->position.clear();
+  fromDepth.gbuffer = g;
+  EXPECT_EQ(gbufferTargetOf(*g, PassBuffer::GbufferPosition), nullptr);
+  EXPECT_FALSE(bufferAsOutput(fromDepth, PassBuffer::GbufferPosition));
+  EXPECT_TRUE(bufferAsOutput(fromDepth, PassBuffer::GbufferNormal));
   EXPECT_FALSE(bufferAsOutput(forward, PassBuffer::ShadowMap));
   const std::optional<RenderOutput> final = bufferAsOutput(forward, PassBuffer::Final);
   ASSERT_TRUE(final);

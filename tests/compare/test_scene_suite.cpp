@@ -43,6 +43,7 @@ struct SuiteCase {
   std::string filter;           // empty: the scene's own texture_filter
   int width = 0, height = 0;    // 0: the scene's output size
   bool deferred = false;        // settings.pipeline deferred (and checked against forward too)
+  GBufferPosition position = GBufferPosition::Stored;  // a deferred frame's settings.gbuffer_position
   std::string name;
 };
 
@@ -117,6 +118,15 @@ std::vector<SuiteCase> suiteCases() {
     c.deferred = true;
     c.name = stem(scene) + "_deferred";
     cases.push_back(c);
+    // The position rebuilt from depth where it was measured to jump (below): the share over
+    // one level still holds.
+    const bool positionJumps = scene.rfind("shadow_", 0) == 0 || scene == "light_touching.json";
+    if (positionJumps) {
+      SuiteCase fromDepth = c;
+      fromDepth.position = GBufferPosition::Depth;
+      fromDepth.name = stem(scene) + "_deferred_from_depth";
+      cases.push_back(fromDepth);
+    }
     if (scene.rfind("shadow_", 0) != 0 || kQuickSuite) continue;
     c.width = 1280;
     c.height = 720;
@@ -172,7 +182,10 @@ TEST_P(SceneSuite, CpuMatchesLlvmpipeWithinTolerance) {
   if (!c.filter.empty()) {
     ASSERT_TRUE(parse(c.filter, scene.settings.textureFilter));
   }
-  if (c.deferred) scene.settings.pipeline = Pipeline::Deferred;
+  if (c.deferred) {
+    scene.settings.pipeline = Pipeline::Deferred;
+    scene.settings.gbufferPosition = c.position;
+  }
   const int divisor = kQuickSuite ? 2 : 1;
   const int width = c.width > 0 ? c.width : scene.output.width / divisor;
   const int height = c.height > 0 ? c.height : scene.output.height / divisor;
@@ -197,14 +210,13 @@ TEST_P(SceneSuite, CpuMatchesLlvmpipeWithinTolerance) {
   } else {
     limits.maxCoverageMismatch = 0.0;
   }
-  // Deferred: the lighting pass rebuilds each position from the 24-bit depth, which moves it
-  // along its ray by up to half a depth step; where the result jumps with the position (a
-  // shadow-map texel's edge under PCF, a light touching the surface) a handful of pixels jump
-  // with it (docs/deferred.md, "Measured"). On the scenes where that was measured (every
-  // shadowed scene, light_touching) the share of pixels over one level keeps the row's limit
-  // and the largest difference is reported, not limited; every other scene keeps both.
-  const bool positionJumps = c.scene.rfind("shadow_", 0) == 0 || c.scene == "light_touching.json";
-  if (c.deferred && positionJumps) limits.maxAbsDiff = std::nullopt;
+  // Deferred with the position rebuilt from the 24-bit depth (settings.gbuffer_position depth):
+  // the point moves along its ray by up to half a depth step; where the result jumps with the
+  // position (a shadow-map texel's edge under PCF, a light touching the surface) a handful of
+  // pixels jump with it (docs/deferred.md, "Measured"). Those cases keep the row's share of
+  // pixels over one level; the largest difference is reported, not limited. A stored position
+  // is the one forward lights, and keeps every limit.
+  if (c.deferred && c.position == GBufferPosition::Depth) limits.maxAbsDiff = std::nullopt;
   std::vector<ThresholdViolation> violations = checkThresholds(m, limits);
   // A captured environment: each renderer drew its own six faces, held to the same limits.
   EXPECT_EQ(cpu.capturedFaces != nullptr, scene.environment && scene.environment->capture);
@@ -260,8 +272,8 @@ TEST_P(SceneSuite, CpuMatchesLlvmpipeWithinTolerance) {
         const std::string dir = std::string(TWINRASTER_TEST_OUT) + "/suite/" + c.name;
         std::filesystem::create_directories(dir);
         const std::string stem = dir + "/" + std::string(toString(buffer));
-        savePng(stem + "_cpu.png", gbufferImage(*ta, width, height, buffer == PassBuffer::GbufferNormal));
-        savePng(stem + "_gl.png", gbufferImage(tb, width, height, buffer == PassBuffer::GbufferNormal));
+        savePng(stem + "_cpu.png", gbufferImage(*ta, width, height, buffer));
+        savePng(stem + "_gl.png", gbufferImage(tb, width, height, buffer));
         savePng(stem + "_diff.png", depthDiffImage(pa, pb, width, height, 3, kGBufferTolerance));
         ADD_FAILURE() << toString(buffer) << ": " << d.overTolerance << " channels differ by more than "
                       << kGBufferTolerance << " (max " << d.maxAbsDiff << " at " << d.maxX << ", " << d.maxY

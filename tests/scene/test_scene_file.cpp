@@ -214,6 +214,16 @@ TEST(SceneFileErrors, BadEnumValue) {
                  {"inline.json: settings.cull: expected one of none|back|front, got \"sideways\""});
   expectContains(parseError(R"({"nodes": [], "settings": {"tbn_lines": {"mode": "legacy"}}})"),
                  {"inline.json: settings.tbn_lines.mode: expected one of core|immediate"});
+  expectContains(parseError(R"({"nodes": [], "settings": {"gbuffer_position": "view"}})"),
+                 {"inline.json: settings.gbuffer_position: expected one of stored|depth, got \"view\""});
+}
+
+TEST(SceneFile, GBufferPositionStoredByDefault) {
+  EXPECT_EQ(RenderSettings{}.gbufferPosition, GBufferPosition::Stored);
+  const Scene scene = parseScene(R"({"nodes": [], "settings": {"pipeline": "deferred", "gbuffer_position": "depth"}})",
+                                 kInline, kDataDir);
+  EXPECT_EQ(scene.settings.gbufferPosition, GBufferPosition::Depth);
+  EXPECT_FALSE(storesGBufferPosition(scene.settings));
 }
 
 TEST(SceneFileErrors, UnknownMaterial) {

@@ -1,4 +1,4 @@
-// The deferred pipeline on the CPU (softrender/deferred.h): the position rebuilt from depth,
+// The deferred pipeline on the CPU (softrender/deferred.h): the position stored or rebuilt from depth,
 // the per-lane Phong exponent, the G-buffer's contents, the teaching and fast paths' bits, and
 // deferred frames against forward ones on scenes of every kind (the suite compares both
 // renderers' deferred frames, tests/compare/test_scene_suite.cpp).
@@ -24,9 +24,11 @@ Scene loadScene(const std::string& name) {
   return loadSceneFile(std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes/" + name);
 }
 
-RenderOutput renderWith(const Scene& scene, Pipeline pipeline, CpuPath path, int width = 160, int height = 120) {
+RenderOutput renderWith(const Scene& scene, Pipeline pipeline, CpuPath path, int width = 160, int height = 120,
+                        GBufferPosition position = GBufferPosition::Stored) {
   RenderSettings settings = scene.settings;
   settings.pipeline = pipeline;
+  settings.gbufferPosition = position;
   CpuOptions options;
   options.path = path;
   options.threads = 2;
@@ -75,6 +77,7 @@ TEST(Deferred, ForwardFramesHaveNoGBufferDeferredOnesDo) {
       ++covered;
       EXPECT_NEAR(glm::length(vec3(g.normal[i])), 1.0f, 1e-5f) << "pixel " << i;
       EXPECT_NEAR(glm::length(vec3(g.geometric[i])), 1.0f, 1e-5f) << "pixel " << i;
+      EXPECT_EQ(g.position[i].w, 1.0f) << "pixel " << i;
     } else {
       EXPECT_EQ(g.normal[i], vec4(0.0f)) << "pixel " << i << ": nothing drawn there";
       EXPECT_EQ(g.emission[i], vec4(0.0f)) << "pixel " << i;
@@ -82,6 +85,35 @@ TEST(Deferred, ForwardFramesHaveNoGBufferDeferredOnesDo) {
   }
   EXPECT_GT(covered, 1000u);
   EXPECT_GT(out.stats.lightingMilliseconds, 0.0);
+  // Rebuilt from depth: no position target.
+  const RenderOutput fromDepth =
+      renderWith(scene, Pipeline::Deferred, CpuPath::Fast, 160, 120, GBufferPosition::Depth);
+  ASSERT_NE(fromDepth.gbuffer, nullptr);
+  EXPECT_TRUE(fromDepth.gbuffer->position.empty());
+}
+
+// The stored position is where the pixel's depth puts it: on the pixel centre's ray at its depth,
+// within the depth's rounding and the distance from the centre to where the fragment's
+// attributes are interpolated (none: both are the centre's), under 1e-3 world units here.
+TEST(Deferred, StoredPositionLiesWhereTheDepthSaysItDoes) {
+  const Scene scene = loadScene("default.json");
+  const int width = 160, height = 120;
+  const RenderOutput out = renderWith(scene, Pipeline::Deferred, CpuPath::Fast, width, height);
+  ASSERT_TRUE(out.gbuffer);
+  const mat4 worldFromClip = worldFromClipOf(clipFromWorldFor(scene.camera, width, height));
+  std::size_t checked = 0;
+  for (int row = 0; row < height; ++row) {
+    for (int px = 0; px < width; ++px) {
+      const std::size_t i = static_cast<std::size_t>(row) * width + static_cast<std::size_t>(px);
+      if (!(out.depth[i] < 1.0f)) continue;
+      const float py = static_cast<float>(height - 1 - row);  // window rows count from the bottom
+      const vec3 rebuilt = worldFromWindowLanes<float>(worldFromClip, vec2(width, height), static_cast<float>(px), py,
+                                                       out.depth[i]);
+      EXPECT_LT(glm::length(rebuilt - vec3(out.gbuffer->position[i])), 1e-3f) << "pixel " << px << ", " << row;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 1000u);
 }
 
 TEST(Deferred, DebugViewsDrawForward) {
@@ -111,14 +143,23 @@ TEST_P(DeferredPaths, FastMatchesTeachingBitForBit) {
   EXPECT_TRUE(same(teaching.gbuffer->albedo, fast.gbuffer->albedo));
   EXPECT_TRUE(same(teaching.gbuffer->specular, fast.gbuffer->specular));
   EXPECT_TRUE(same(teaching.gbuffer->emission, fast.gbuffer->emission));
+  EXPECT_TRUE(same(teaching.gbuffer->position, fast.gbuffer->position));
+  EXPECT_FALSE(teaching.gbuffer->position.empty());
+  // Rebuilt from depth, the two paths agree too.
+  const RenderOutput teachingDepth =
+      renderWith(scene, Pipeline::Deferred, CpuPath::Teaching, 160, 120, GBufferPosition::Depth);
+  const RenderOutput fastDepth = renderWith(scene, Pipeline::Deferred, CpuPath::Fast, 160, 120, GBufferPosition::Depth);
+  EXPECT_EQ(teachingDepth.rgba, fastDepth.rgba);
 }
 INSTANTIATE_TEST_SUITE_P(Scenes, DeferredPaths,
                          ::testing::Values("default.json", "tangent_space.json", "shadow_point_cube.json",
                                            "env_glass_sphere.json", "height_bump_emboss.json", "many_lights.json"));
 
-// Deferred against forward on the same renderer: within a level where the G-buffer holds the
-// surface (the position rebuilt from depth and the environment's folded mix round differently),
-// and the same bits where nothing differs (a material lit in the G-buffer pass).
+// Deferred against forward on the same renderer, with the stored position: within a level where
+// the G-buffer holds the surface (the world-space lighting of a tangent-space material and the
+// environment's folded mix round differently), the same bits where nothing differs (a material
+// lit in the G-buffer pass), on the shadowed scenes and a light touching the surface too, where
+// a position rebuilt from depth jumps (below).
 struct ForwardCase {
   const char* scene;
   int maxLevels;
@@ -128,6 +169,7 @@ TEST_P(DeferredForward, DeferredMatchesForward) {
   const Scene scene = loadScene(GetParam().scene);
   const RenderOutput forward = renderWith(scene, Pipeline::Forward, CpuPath::Fast, 320, 240);
   const RenderOutput deferred = renderWith(scene, Pipeline::Deferred, CpuPath::Fast, 320, 240);
+  ASSERT_TRUE(deferred.gbuffer && !deferred.gbuffer->position.empty());
   ASSERT_EQ(deferred.rgba.size(), forward.rgba.size());
   int maxLevels = 0;
   std::size_t covered = 0;
@@ -145,6 +187,9 @@ TEST_P(DeferredForward, DeferredMatchesForward) {
 INSTANTIATE_TEST_SUITE_P(Scenes, DeferredForward,
                          ::testing::Values(ForwardCase{"default.json", 1}, ForwardCase{"many_lights.json", 1},
                                            ForwardCase{"shadow_directional.json", 1},
+                                           ForwardCase{"shadow_point_cube.json", 1},
+                                           ForwardCase{"shadow_peter_panning.json", 1},
+                                           ForwardCase{"light_touching.json", 1},
                                            ForwardCase{"env_mirror_sphere.json", 1},
                                            ForwardCase{"env_glass_sphere.json", 1},
                                            ForwardCase{"env_diffuse_light.json", 1},
