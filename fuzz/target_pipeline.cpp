@@ -165,6 +165,14 @@ Scene randomScene(ByteReader& r) {
         light.directionWorld = vec3(d / glm::length(d));
       }
     }
+    if (light.type == LightType::Point && r.flag()) {  // a spot cone, within the loader's bounds
+      const glm::dvec3 d(r.tameVec3());
+      SpotCone spot;
+      if (glm::length(d) > 0.0) spot.directionWorld = vec3(d / glm::length(d));
+      spot.outerDeg = static_cast<float>(r.intIn(1, static_cast<int>(kMaxSpotOuterDeg) - 1));
+      spot.innerDeg = static_cast<float>(r.intIn(0, static_cast<int>(spot.outerDeg)));
+      light.spot = spot;
+    }
     if (r.flag() && std::count_if(scene.lights.begin(), scene.lights.end(),
                                   [](const Light& l) { return l.shadow.has_value(); }) < kMaxShadowedLights) {
       ShadowDesc shadow;  // small maps: the pass's code is the same at any size

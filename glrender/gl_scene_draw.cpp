@@ -176,6 +176,9 @@ void setLightUniforms(GLuint program, const Scene& scene) {
     glUniform3fv(uniformLocation(program, (prefix + "diffuse").c_str()), 1, &light.diffuse.x);
     glUniform3fv(uniformLocation(program, (prefix + "specular").c_str()), 1, &light.specular.x);
     glUniform3fv(uniformLocation(program, (prefix + "attenuation").c_str()), 1, &attenuation.x);
+    const SpotUniform spot = spotUniformOf(light);
+    glUniform4fv(uniformLocation(program, (prefix + "spotAxis").c_str()), 1, &spot.axis.x);
+    glUniform2fv(uniformLocation(program, (prefix + "spotCone").c_str()), 1, &spot.cone.x);
   }
 }
 

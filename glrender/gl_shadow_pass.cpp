@@ -105,7 +105,7 @@ void GlShadowMaps::bind(GLuint program) const {
     const ShadowProjection& p = slot.projection;
     const std::string prefix = "shadows[" + std::to_string(s) + "].";
     const auto name = [&](const char* member) { return prefix + member; };
-    glUniform1i(uniformLocation(program, name("kind").c_str()), p.kind == ShadowKind::Orthographic ? 0 : 1);
+    glUniform1i(uniformLocation(program, name("kind").c_str()), static_cast<GLint>(p.kind));
     glUniformMatrix4fv(uniformLocation(program, name("clipFromWorld").c_str()), 1, GL_FALSE, &p.clipFromWorld[0][0][0]);
     glUniform3fv(uniformLocation(program, name("lightPosWorld").c_str()), 1, &p.lightPosWorld.x);
     glUniform1f(uniformLocation(program, name("depthA").c_str()), p.depthA);

@@ -1,5 +1,8 @@
 #include "scene/scene.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace twr {
@@ -55,6 +58,21 @@ void flattenNode(const Scene& scene, const Node& node, const mat4& worldFromPare
 
 vec4 lightVectorWorld(const Light& light) {
   return light.type == LightType::Directional ? vec4(-light.directionWorld, 0.0f) : vec4(light.posWorld, 1.0f);
+}
+
+vec2 spotCosines(const SpotCone& spot) {
+  constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
+  return vec2(static_cast<float>(std::cos(static_cast<double>(spot.outerDeg) * kRadiansPerDegree)),
+              static_cast<float>(std::cos(static_cast<double>(spot.innerDeg) * kRadiansPerDegree)));
+}
+
+SpotUniform spotUniformOf(const Light& light) {
+  SpotUniform u;
+  if (!isSpotLight(light)) return u;
+  const vec2 c = spotCosines(*light.spot);
+  u.axis = vec4(light.spot->directionWorld, 1.0f);
+  u.cone = vec2(c.x, std::max(c.y - c.x, kMinSpotCosineRange));
+  return u;
 }
 
 vec3 attenuationUsed(const Light& light) {

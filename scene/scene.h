@@ -82,6 +82,18 @@ struct Material {
 // the GAMES202 write-up's light) shines along directionWorld from infinitely far, unattenuated.
 enum class LightType { Point, Directional };
 
+// A point light's spot cone (the scene file's "spot"): the light shines only within outerDeg
+// of the cone's axis, at full strength within innerDeg, and between the two its strength
+// falls with smoothstep(cos outer, cos inner, cos angle). Half-angles in degrees,
+// 0 <= innerDeg <= outerDeg < kMaxSpotOuterDeg; a shadowed spot light gets one perspective map
+// covering the cone (scene/shadow_map.h) instead of a cube map.
+inline constexpr float kMaxSpotOuterDeg = 89.0f;
+struct SpotCone {
+  vec3 directionWorld{0.0f, -1.0f, 0.0f};  // the cone's axis, the way the light shines, unit length
+  float innerDeg = 20.0f;
+  float outerDeg = 30.0f;
+};
+
 struct Light {
   vec3 posWorld{2.0f, 3.0f, 4.0f};  // point: where it is, world units
   vec3 diffuse{1.0f};               // Id
@@ -92,7 +104,25 @@ struct Light {
   vec3 directionWorld{0.0f, -1.0f, 0.0f};  // directional: the way its light travels, unit length
   // Its shadow map (scene/shadow_map.h): none unless the scene file gives "shadow".
   std::optional<ShadowDesc> shadow;
+  // A point light's cone; none: it shines every way.
+  std::optional<SpotCone> spot;
 };
+
+// Whether a light is a spot light (a point light with a cone).
+inline bool isSpotLight(const Light& light) { return light.type == LightType::Point && light.spot.has_value(); }
+// A spot cone's cosines: (cos outerDeg, cos innerDeg), computed in double and rounded once.
+vec2 spotCosines(const SpotCone& spot);
+// The smallest cos inner - cos outer the falloff divides by (unitless): inner == outer is a
+// hard-edged cone.
+inline constexpr float kMinSpotCosineRange = 1e-6f;
+// A light's cone as both renderers' shaders take it (shaders/lighting.glsl's LightUniform):
+// axis (the cone's axis, 1) for a spot light, w 0 for any other (then nothing else is read);
+// cone (cos outer, max(cos inner - cos outer, kMinSpotCosineRange)).
+struct SpotUniform {
+  vec4 axis{0.0f};
+  vec2 cone{-1.0f, 1.0f};
+};
+SpotUniform spotUniformOf(const Light& light);
 
 // The light as both renderers' shaders take it, one vec4 for either type:
 //   point:        (posWorld, 1)

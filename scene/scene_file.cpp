@@ -454,8 +454,8 @@ class SceneReader {
       const std::string lightPath = indexPath(path, i);
       const Json& lj = j[i];
       requireObject(lj, lightPath);
-      checkKeys(lj, lightPath, {"type", "position", "direction", "diffuse", "specular", "attenuation", "shadow"},
-                "a light");
+      checkKeys(lj, lightPath,
+                {"type", "position", "direction", "diffuse", "specular", "attenuation", "shadow", "spot"}, "a light");
       Light light;
       if (const Json* v = find(lj, "type")) {
         const std::string type = readString(*v, childPath(lightPath, "type"), "point or directional");
@@ -467,7 +467,8 @@ class SceneReader {
       }
       const bool directional = light.type == LightType::Directional;
       // What the other type reads is read and reported as ignored.
-      for (const char* key : {directional ? "position" : "direction", directional ? "attenuation" : ""}) {
+      for (const char* key :
+           {directional ? "position" : "direction", directional ? "attenuation" : "", directional ? "spot" : ""}) {
         if (*key != '\0' && find(lj, key)) {
           scene_.warnings.push_back(fileName_ + ": " + childPath(lightPath, key) + ": ignored: a " +
                                     (directional ? "directional" : "point") + " light has no " + key);
@@ -494,7 +495,12 @@ class SceneReader {
           fail(attenuationPath, "expected [A_C, A_L, A_Q] not all zero (the light would be infinitely bright), got " + quote(*v));
         }
       }
-      if (const Json* v = find(lj, "shadow")) light.shadow = readShadow(*v, childPath(lightPath, "shadow"), light.type);
+      if (const Json* v = find(lj, "spot"); v && !directional) light.spot = readSpot(*v, childPath(lightPath, "spot"));
+      if (const Json* v = find(lj, "shadow")) {
+        light.shadow = readShadow(*v, childPath(lightPath, "shadow"), isSpotLight(light) ? ShadowKind::Perspective
+                                                                      : directional ? ShadowKind::Orthographic
+                                                                                    : ShadowKind::Cube);
+      }
       scene_.lights.push_back(light);
     }
     const auto shadowed = std::count_if(scene_.lights.begin(), scene_.lights.end(),
@@ -505,10 +511,44 @@ class SceneReader {
     }
   }
 
+  // A point light's "spot" (scene/scene.h's SpotCone): an object with direction, inner_deg
+  // and outer_deg, each optional.
+  SpotCone readSpot(const Json& j, const std::string& path) {
+    if (!j.is_object()) fail(path, "expected an object {direction, inner_deg, outer_deg}, got " + quote(j));
+    checkKeys(j, path, {"direction", "inner_deg", "outer_deg"}, "a spot");
+    const auto num = [](float value) { return quote(Json(value)); };
+    SpotCone spot;
+    if (const Json* v = find(j, "direction")) {
+      const std::string directionPath = childPath(path, "direction");
+      const glm::dvec3 direction(readVector<3>(*v, directionPath, NumberRule::Finite));
+      const double length = glm::length(direction);
+      if (!(length > 0.0) || !std::isfinite(length)) {
+        fail(directionPath, "expected a non-zero direction (the cone's axis, the way the light shines), got " +
+                                quote(*v));
+      }
+      spot.directionWorld = vec3(direction / length);  // normalised in double, rounded once
+    }
+    const Json* inner = find(j, "inner_deg");
+    const Json* outer = find(j, "outer_deg");
+    if (outer) spot.outerDeg = readNumber(*outer, childPath(path, "outer_deg"), NumberRule::Finite);
+    if (!(spot.outerDeg > 0.0f && spot.outerDeg < kMaxSpotOuterDeg)) {
+      fail(childPath(path, "outer_deg"), "expected a half-angle above 0 and below " + num(kMaxSpotOuterDeg) +
+                                             " degrees, got " + (outer ? quote(*outer) : num(spot.outerDeg)));
+    }
+    // Without inner_deg the cone's soft edge is the default's share of it.
+    spot.innerDeg = inner ? readNumber(*inner, childPath(path, "inner_deg"), NumberRule::Finite)
+                          : std::min(SpotCone{}.innerDeg, spot.outerDeg);
+    if (!(spot.innerDeg >= 0.0f && spot.innerDeg <= spot.outerDeg)) {
+      fail(childPath(path, "inner_deg"), "expected a half-angle from 0 to outer_deg (" + num(spot.outerDeg) +
+                                             "), got " + (inner ? quote(*inner) : num(spot.innerDeg)));
+    }
+    return spot;
+  }
+
   // A light's "shadow" (scene/shadow_map.h): true for the defaults, false for none, or an
-  // object with size, bias [constant, slope], pcf and extent.
-  std::optional<ShadowDesc> readShadow(const Json& j, const std::string& path, LightType type) {
-    const bool cube = type == LightType::Point;
+  // object with size, bias [constant, slope], pcf and extent. `kind`: the map the light gets.
+  std::optional<ShadowDesc> readShadow(const Json& j, const std::string& path, ShadowKind kind) {
+    const bool cube = kind == ShadowKind::Cube;
     ShadowDesc shadow;
     if (cube) shadow.size = kDefaultCubeShadowMapSize;
     if (j.is_boolean()) return j.get<bool>() ? std::optional<ShadowDesc>(shadow) : std::nullopt;

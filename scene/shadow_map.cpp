@@ -33,12 +33,12 @@ mat4 orthographic(float halfWidth, float near, float far) {
   return m;
 }
 
-// A 90-degree square perspective (a cube face), the depth terms in double rounded once (as
-// camera.cpp's clipFromView).
-mat4 cubeFacePerspective(double near, double far) {
+// A square perspective of half-angle atan(tanHalf) (1: a 90-degree cube face), the terms in
+// double rounded once (as camera.cpp's clipFromView).
+mat4 squarePerspective(double tanHalf, double near, double far) {
   mat4 m(0.0f);
-  m[0][0] = 1.0f;
-  m[1][1] = 1.0f;
+  m[0][0] = static_cast<float>(1.0 / tanHalf);
+  m[1][1] = static_cast<float>(1.0 / tanHalf);
   m[2][2] = static_cast<float>((far + near) / (near - far));
   m[2][3] = -1.0f;
   m[3][2] = static_cast<float>(2.0 * far * near / (near - far));
@@ -107,8 +107,9 @@ ShadowProjection shadowProjectionFor(const Light& light, const WorldBounds& boun
     p.depthPerWorld = 1.0f / depthRange;  // window depth 0.5 z_ndc + 0.5 spans the range once
     return p;
   }
-  p.kind = ShadowKind::Cube;
-  p.layers = kCubeShadowLayers;
+  const bool spot = isSpotLight(light);
+  p.kind = spot ? ShadowKind::Perspective : ShadowKind::Cube;
+  p.layers = spot ? 1 : kCubeShadowLayers;
   p.lightPosWorld = light.posWorld;
   float far = desc.extent;
   if (!(far > 0.0f)) {
@@ -123,9 +124,21 @@ ShadowProjection shadowProjectionFor(const Light& light, const WorldBounds& boun
   far = std::clamp(far, kMinShadowExtent, kMaxShadowFar);
   p.near = far * kCubeShadowNearRatio;
   p.far = far;
-  const mat4 projection = cubeFacePerspective(p.near, p.far);
+  // A spot map's field of view is the cone's: tan of the outer half-angle (double, rounded once).
+  const double tanHalf = spot ? std::tan(static_cast<double>(light.spot->outerDeg) * (3.14159265358979323846 / 180.0))
+                              : 1.0;
+  const mat4 projection = squarePerspective(tanHalf, p.near, p.far);
   p.depthA = projection[2][2];
   p.depthB = projection[3][2];
+  if (spot) {
+    const glm::dvec3 axis(light.spot->directionWorld);
+    const glm::dvec3 up = std::fabs(axis.y) > kMaxUpAlignment ? glm::dvec3(0.0, 0.0, -1.0) : glm::dvec3(0.0, 1.0, 0.0);
+    p.clipFromWorld[0] = projection * viewAlong(glm::dvec3(light.posWorld), axis, up);
+    // A texel at m along the axis is 2 m tan(outer) / size wide; depth units as a cube face's.
+    p.texelWorld = static_cast<float>(2.0 * tanHalf / static_cast<double>(p.size));
+    p.depthPerWorld = 0.5f * std::fabs(p.depthB);
+    return p;
+  }
   for (int face = 0; face < kCubeShadowLayers; ++face) {
     // The face's middle direction and its increasing-t direction (GL's table, exact unit axes),
     // as scene/environment_capture.h's face cameras.
@@ -151,10 +164,19 @@ int cubeFaceOf(const vec3& d) {
   return d.y < 0.0f ? 3 : 2;
 }
 
+std::string_view toString(ShadowKind kind) {
+  switch (kind) {
+    case ShadowKind::Orthographic: return "orthographic";
+    case ShadowKind::Cube: return "cube";
+    case ShadowKind::Perspective: return "perspective";
+  }
+  return "?";
+}
+
 std::string describeShadow(const ShadowProjection& p) {
   char text[160];
-  std::snprintf(text, sizeof text, "%s %d^2%s, bias %g + %g texel slope, pcf %d",
-                p.kind == ShadowKind::Orthographic ? "orthographic" : "cube", p.size,
+  std::snprintf(text, sizeof text, "%s %d^2%s, bias %g + %g texel slope, pcf %d", std::string(toString(p.kind)).c_str(),
+                p.size,
                 p.kind == ShadowKind::Cube ? " x 6" : "", static_cast<double>(p.bias.x), static_cast<double>(p.bias.y),
                 p.pcf);
   return text;

@@ -8,7 +8,10 @@
 //                scene;
 //   point        a cube shadow map: six 90-degree perspective maps from the light, one per
 //                cube face in GL order, reaching `extent` world units (0: the farthest corner
-//                of the scene's bounds).
+//                of the scene's bounds);
+//   spot         (a point light with a "spot" cone) one square perspective map from the light
+//                along the cone's axis, its field of view twice the cone's outer half-angle
+//                (the cone's circle inscribed in the square), reaching as a cube map does.
 //
 // What a map holds: the light camera's window depth (0.5 z_ndc + 0.5, as the renderers' depth
 // buffers do), layer by layer, each row by row with row 0 at the bottom (GL window and
@@ -16,9 +19,11 @@
 //
 // The test (written once over lanes in softrender/shadow-inl.h, and in shaders/shadow.glsl):
 //   (s, t, z) = the fragment's position in the map (layer: the cube face of P - light, by
-//               the largest axis, as a cube map picks its face);
+//               the largest axis, as a cube map picks its face; a spot map's point behind
+//               the light lies outside it);
 //   texel     = one texel's width in world units at the fragment (orthographic: 2 extent /
-//               size; cube: 2 m / size, m the distance along the face's axis);
+//               size; cube: 2 m / size, m the distance along the face's axis; spot:
+//               2 m tan(outer) / size, m the distance along the cone's axis);
 //   bias      = (constant + slope * min(tan(theta), kMaxShadowSlopeTangent) * texel *
 //               (1 + pcf / 2)) * the map's depth units per world unit at the fragment;
 //               theta the angle between the surface's normal and the light: the constant in
@@ -34,6 +39,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace twr {
@@ -84,7 +90,8 @@ struct ShadowDesc {
   float extent = 0.0f;  // world units, >= 0; 0 picks it from the scene's bounds (above)
 };
 
-enum class ShadowKind { Orthographic, Cube };
+// Its values are the shaders' ShadowUniform.kind (shaders/shadow.glsl).
+enum class ShadowKind { Orthographic = 0, Cube = 1, Perspective = 2 };
 inline constexpr int kCubeShadowLayers = 6;
 
 // Where a light's map lies in the world: what each layer's render is drawn with.
@@ -94,7 +101,7 @@ struct ShadowProjection {
   int layers = 1;  // 1 (orthographic) or kCubeShadowLayers
   // The render of each layer: clip from world (layers entries used).
   std::array<mat4, kCubeShadowLayers> clipFromWorld{};
-  // Cube: the light's position, the faces' near and far planes (world units), and their
+  // Cube and spot: the light's position, the faces' near and far planes (world units), and their
   // projection's depth terms as the face renders use them (clipFromView's m[2][2] and m[3][2],
   // floats): a point m world units along a face's axis has z_clip = depthA (-m) + depthB and
   // w = m, so its window depth is 0.5 (depthB - depthA m) / m + 0.5 (cubeShadowDepth).
@@ -103,7 +110,8 @@ struct ShadowProjection {
   float depthA = 0.0f, depthB = 0.0f;
   // The bias's scales (see the test above). Orthographic: one texel's width in world units and
   // the map's depth units per world unit, both constant. Cube: 2 / size (times m: the texel's
-  // width) and 0.5 |depthB| (over m^2: the depth units per world unit along the axis).
+  // width) and 0.5 |depthB| (over m^2: the depth units per world unit along the axis). Spot:
+  // 2 tan(outer) / size and 0.5 |depthB|, the same way.
   float texelWorld = 0.0f, depthPerWorld = 0.0f;
   vec2 bias{0.0f};
   int pcf = 1;
@@ -146,6 +154,8 @@ float cubeShadowDepth(const ShadowProjection& projection, float m);
 // component by magnitude, ties to z, then y (llvmpipe's rule, softrender/cube_sample-inl.h).
 int cubeFaceOf(const vec3& d);
 
+// "orthographic", "cube", "perspective".
+std::string_view toString(ShadowKind kind);
 // "orthographic 2048^2, bias 0.005 + 1 texel slope, pcf 3" for info and the GUI.
 std::string describeShadow(const ShadowProjection& projection);
 

@@ -8,6 +8,8 @@ struct LightUniform {
   vec3 diffuse;      // Id
   vec3 specular;     // Is
   vec3 attenuation;  // A_C, A_L, A_Q
+  vec4 spotAxis;     // a spot light: (the cone's axis, 1); any other light: w 0
+  vec2 spotCone;     // cos outer, cos inner - cos outer
 };
 
 uniform LightUniform lights[MAX_LIGHTS];
@@ -17,6 +19,15 @@ uniform vec3 eyePosWorld;
 // The vector from p to a light: xyz - w p (w 1 for a point light, 0 for a directional one).
 vec3 toLightWorld(LightUniform light, vec3 p) {
   return light.vectorWorld.xyz - light.vectorWorld.w * p;
+}
+
+// A spot light's cone at a point: smoothstep(cos outer, cos inner, cos angle), written out (the
+// builtin's precision is the driver's), the angle between the cone's axis and the way from the
+// light to the point. C++ twin: spotFactorLanes (softrender/shade-inl.h).
+float spotFactor(LightUniform light, vec3 toLight) {
+  float cosAngle = 0.0 - dot(light.spotAxis.xyz, safeNormalize(toLight));
+  float x = clamp((cosAngle - light.spotCone.x) / light.spotCone.y, 0.0, 1.0);
+  return (x * x) * (3.0 - 2.0 * x);
 }
 
 struct LightSum {
@@ -64,6 +75,7 @@ LightSum lightSum(vec3 posWorld, vec3 n, vec3 t, vec3 b, vec3 nl, vec3 kdAlbedo,
     float attenuation = 1.0 / max(lights[i].attenuation.x + lights[i].attenuation.y * d +
                                       lights[i].attenuation.z * d * d,
                                   MIN_ATTENUATION_DENOMINATOR);
+    if (lights[i].spotAxis.w > 0.0) attenuation = attenuation * spotFactor(lights[i], toLightWorld(lights[i], posWorld));
     float diffuseFactor = max(nDotL, 0.0);
     float shadow = 1.0;
 #if defined(SURFACE_BUMP_EMBOSS) || defined(SELF_SHADOW)

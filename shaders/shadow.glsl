@@ -6,16 +6,16 @@
 
 #ifdef HAS_SHADOWS
 struct ShadowUniform {
-  int kind;             // 0: orthographic (one layer), 1: cube (six layers, GL face order)
-  mat4 clipFromWorld;   // orthographic: the map's clip from world
+  int kind;             // 0: orthographic (one layer), 1: cube (six layers, GL face order), 2: spot (one perspective layer)
+  mat4 clipFromWorld;   // orthographic and spot: the map's clip from world
   vec3 lightPosWorld;   // cube: the light
-  float depthA;         // cube: the faces' depth terms, z_clip = depthA (-m) + depthB, w = m
+  float depthA;         // cube and spot: the faces' depth terms, z_clip = depthA (-m) + depthB, w = m
   float depthB;
   float size;           // texels per side
   float biasConstant;   // world units along the light
   float biasSlope;      // texels of the surface's rise
-  float texelWorld;     // orthographic: a texel's width, world units; cube: 2 / size (times m)
-  float depthPerWorld;  // orthographic: depth units per world unit; cube: 0.5 |depthB| (over m^2)
+  float texelWorld;     // orthographic: a texel's width, world units; cube: 2 / size, spot: 2 tan(outer) / size (times m)
+  float depthPerWorld;  // orthographic: depth units per world unit; cube and spot: 0.5 |depthB| (over m^2)
   int pcf;              // 1, 3 or 5
 };
 uniform ShadowUniform shadows[MAX_SHADOWED_LIGHTS];
@@ -70,17 +70,30 @@ ShadowTest shadowTest(int slot, vec3 posWorld, vec3 n, vec3 l) {
   float tanTheta = min(sinTheta / cosTheta, MAX_SHADOW_SLOPE_TANGENT);
 
   float s, t, z, layer, texelWorld, depthPerWorld;
-  if (u.kind == 0) {
-    mat4 m = u.clipFromWorld;  // columns summed from the left, w = 1
+  bool inFront = true;  // a spot map's points behind the light are outside it
+  if (u.kind == 0 || u.kind == 2) {
+    mat4 m = u.clipFromWorld;  // columns summed from the left (orthographic: w = 1)
     float x = ((m[0][0] * posWorld.x + m[1][0] * posWorld.y) + m[2][0] * posWorld.z) + m[3][0];
     float y = ((m[0][1] * posWorld.x + m[1][1] * posWorld.y) + m[2][1] * posWorld.z) + m[3][1];
-    float zc = ((m[0][2] * posWorld.x + m[1][2] * posWorld.y) + m[2][2] * posWorld.z) + m[3][2];
-    s = x * 0.5 + 0.5;
-    t = y * 0.5 + 0.5;
-    z = zc * 0.5 + 0.5;
+    if (u.kind == 0) {
+      float zc = ((m[0][2] * posWorld.x + m[1][2] * posWorld.y) + m[2][2] * posWorld.z) + m[3][2];
+      s = x * 0.5 + 0.5;
+      t = y * 0.5 + 0.5;
+      z = zc * 0.5 + 0.5;
+      texelWorld = u.texelWorld;
+      depthPerWorld = u.depthPerWorld;
+    } else {
+      // Spot: w is the distance along the cone's axis, m; the depth as a cube face's at m.
+      float w = ((m[0][3] * posWorld.x + m[1][3] * posWorld.y) + m[2][3] * posWorld.z) + m[3][3];
+      inFront = w > 0.0;
+      float safeW = inFront ? w : 1.0;
+      s = (x / safeW) * 0.5 + 0.5;
+      t = (y / safeW) * 0.5 + 0.5;
+      z = 0.5 * ((u.depthB - u.depthA * safeW) / safeW) + 0.5;
+      texelWorld = u.texelWorld * safeW;
+      depthPerWorld = u.depthPerWorld / (safeW * safeW);
+    }
     layer = 0.0;
-    texelWorld = u.texelWorld;
-    depthPerWorld = u.depthPerWorld;
   } else {
     vec3 d = posWorld - u.lightPosWorld;
     shadowCubeCoord(d, layer, s, t);
@@ -93,7 +106,7 @@ ShadowTest shadowTest(int slot, vec3 posWorld, vec3 n, vec3 l) {
   float reach = float(1 + u.pcf / 2);
   float rise = tanTheta * texelWorld;
   float bias = (u.biasConstant + (u.biasSlope * rise) * reach) * depthPerWorld;
-  bool inside = s >= 0.0 && s < 1.0 && t >= 0.0 && t < 1.0 && z <= 1.0 && !isinf(z) && !isnan(z);
+  bool inside = inFront && s >= 0.0 && s < 1.0 && t >= 0.0 && t < 1.0 && z <= 1.0 && !isinf(z) && !isnan(z);
   float size = u.size, last = size - 1.0;
   float x0 = inside ? floor(s * size) : 0.0;
   float y0 = inside ? floor(t * size) : 0.0;

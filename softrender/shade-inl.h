@@ -47,6 +47,18 @@ TWR_LANE_INLINE L attenuationLanes(const Vec3T<ScalarOf<L>>& a, L d) {
   return L(S(1)) / maxOf(denominator, L(static_cast<S>(kMinAttenuationDenominator)));
 }
 
+// A spot light's cone at a point (lighting.glsl's spotFactor): smoothstep(cos outer, cos inner,
+// cos angle) written out, the angle between the cone's axis and the way from the light to the
+// point; toLight is the vector from the point to the light.
+template <typename L>
+TWR_LANE_INLINE L spotFactorLanes(const LightUniformT<ScalarOf<L>>& light, const Vec3L<L>& toLight) {
+  using S = ScalarOf<L>;
+  const L zero(S(0)), one(S(1));
+  const L cosAngle = zero - dot3<L>(Vec3L<L>(light.spotAxis), safeNormalize3<L>(toLight));
+  const L x = minOf(maxOf((cosAngle - L(light.spotCosOuter)) / L(light.spotCosRange), zero), one);
+  return (x * x) * (L(S(3)) - L(S(2)) * x);
+}
+
 // The vector from p to a light: xyz - w p, with the light as lightVectorWorld gives it (w 1 for
 // a point light, 0 for a directional one). phong.frag's toLightWorld.
 template <typename L>
@@ -298,7 +310,8 @@ TWR_LANE_INLINE LightSumL<L> lightSumLanes(const FragmentL<L>* f, const ShadeUni
     const L nDotL = dot3<L>(nl, l);
     const Vec3L<L> r = (two * nDotL) * nl - l;
     const L rDotV = maxOf(dot3<L>(r, v), zero);
-    const L attenuation = attenuationLanes<L>(light.attenuation, d);
+    L attenuation = attenuationLanes<L>(light.attenuation, d);
+    if (light.spot) attenuation = attenuation * spotFactorLanes<L>(light, toLight);
     L diffuseFactor = maxOf(nDotL, zero);
     L selfShadowValue = one;
     if constexpr (Features::kHasHeightMap) {

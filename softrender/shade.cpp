@@ -68,6 +68,11 @@ ShadeUniformsT<T> makeShadeUniforms(const Material& material, const Scene& scene
     lu.diffuse = Vec3T<T>(light.diffuse);
     lu.specular = Vec3T<T>(light.specular);
     lu.attenuation = Vec3T<T>(attenuationUsed(light));
+    const SpotUniform spot = spotUniformOf(light);
+    lu.spot = spot.axis.w > 0.0f;
+    lu.spotAxis = Vec3T<T>(vec3(spot.axis));
+    lu.spotCosOuter = static_cast<T>(spot.cone.x);
+    lu.spotCosRange = static_cast<T>(spot.cone.y);
   }
   u.eyePosWorld = Vec3T<T>(scene.camera.position);
   u.shadedView = isEnvironmentView(settings.view) || isShadowView(settings.view) ? settings.view : View::Shaded;

@@ -34,6 +34,10 @@ struct LightUniformT {
   Vec3T<T> diffuse{T(0)};                         // Id
   Vec3T<T> specular{T(0)};                        // Is
   Vec3T<T> attenuation{T(1), T(0), T(0)};         // A_C, A_L, A_Q
+  // A spot light's cone (scene.h's SpotUniform): spot false for any other light.
+  bool spot = false;
+  Vec3T<T> spotAxis{T(0), T(-1), T(0)};           // the cone's axis, the way the light shines, unit
+  T spotCosOuter = T(-1), spotCosRange = T(1);    // cos outer; cos inner - cos outer (>= kMinSpotCosineRange)
   ShadowUniformT<T> shadow;                       // its shadow map (shadow.depth null: none)
 };
 using LightUniform = LightUniformT<float>;

@@ -53,17 +53,30 @@ TWR_LANE_INLINE ShadowTestL<L> shadowTestLanes(const ShadowUniformT<ScalarOf<L>>
   // Where the fragment lies in the map: (s, t) in [0, 1), its depth z, the layer; one texel's
   // width in world units and the map's depth units per world unit there.
   L s, t, z, layer, texelWorld, depthPerWorld;
-  if (u.kind == ShadowKind::Orthographic) {
-    const Mat4T<S>& m = u.clipFromWorld;  // columns summed from the left, w = 1 (vertex.h's transformPoint)
+  MaskOf<L> inFront = one > zero;  // all true; a spot map's points behind the light are outside it
+  if (u.kind == ShadowKind::Orthographic || u.kind == ShadowKind::Perspective) {
+    const Mat4T<S>& m = u.clipFromWorld;  // columns summed from the left (orthographic: w = 1, vertex.h's transformPoint)
     const L x = ((L(m[0][0]) * posWorld.x + L(m[1][0]) * posWorld.y) + L(m[2][0]) * posWorld.z) + L(m[3][0]);
     const L y = ((L(m[0][1]) * posWorld.x + L(m[1][1]) * posWorld.y) + L(m[2][1]) * posWorld.z) + L(m[3][1]);
-    const L zc = ((L(m[0][2]) * posWorld.x + L(m[1][2]) * posWorld.y) + L(m[2][2]) * posWorld.z) + L(m[3][2]);
-    s = x * half + half;
-    t = y * half + half;
-    z = zc * half + half;
+    if (u.kind == ShadowKind::Orthographic) {
+      const L zc = ((L(m[0][2]) * posWorld.x + L(m[1][2]) * posWorld.y) + L(m[2][2]) * posWorld.z) + L(m[3][2]);
+      s = x * half + half;
+      t = y * half + half;
+      z = zc * half + half;
+      texelWorld = L(u.texelWorld);
+      depthPerWorld = L(u.depthPerWorld);
+    } else {
+      // Spot: w is the distance along the cone's axis, m; the depth as a cube face's at m.
+      const L w = ((L(m[0][3]) * posWorld.x + L(m[1][3]) * posWorld.y) + L(m[2][3]) * posWorld.z) + L(m[3][3]);
+      inFront = w > zero;
+      const L safeW = select(inFront, w, one);
+      s = (x / safeW) * half + half;
+      t = (y / safeW) * half + half;
+      z = half * ((L(u.depthB) - L(u.depthA) * safeW) / safeW) + half;
+      texelWorld = L(u.texelWorld) * safeW;
+      depthPerWorld = L(u.depthPerWorld) / (safeW * safeW);
+    }
     layer = zero;
-    texelWorld = L(u.texelWorld);
-    depthPerWorld = L(u.depthPerWorld);
   } else {
     const Vec3L<L> d = posWorld - Vec3L<L>(u.lightPosWorld);
     const CubeCoordL<L> c = (cubeCoordLanes<L>)(d);
@@ -79,7 +92,7 @@ TWR_LANE_INLINE ShadowTestL<L> shadowTestLanes(const ShadowUniformT<ScalarOf<L>>
   const L reach(static_cast<S>(1 + u.pcf / 2));
   const L rise = tanTheta * texelWorld;  // the surface's rise across one texel, world units
   const L bias = (L(u.biasConstant) + (L(u.biasSlope) * rise) * reach) * depthPerWorld;
-  const auto inside = (s >= zero) & (s < one) & (t >= zero) & (t < one) & (z <= one) & isFinite(z);
+  const auto inside = inFront & (s >= zero) & (s < one) & (t >= zero) & (t < one) & (z <= one) & isFinite(z);
   const L size = L(u.size), last = size - one;
   // Out-of-map lanes read texel 0 (and count as lit below).
   const L x0 = select(inside, floorOf(s * size), zero);

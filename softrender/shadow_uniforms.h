@@ -13,9 +13,9 @@ struct ShadowUniformT {
   // Null: the light casts no shadow; nothing is read.
   const float* depth = nullptr;  // ShadowMap::depth: layers * size * size window depths
   ShadowKind kind = ShadowKind::Orthographic;
-  Mat4T<S> clipFromWorld{S(1)};  // orthographic: the map's clip from world
+  Mat4T<S> clipFromWorld{S(1)};  // orthographic and spot (perspective): the map's clip from world
   Vec3T<S> lightPosWorld{S(0)};  // cube: the light
-  S depthA = S(0), depthB = S(0);  // cube: the faces' depth terms (ShadowProjection)
+  S depthA = S(0), depthB = S(0);  // cube and spot: the faces' depth terms (ShadowProjection)
   S size = S(1);                   // texels per side, as a lane value
   S biasConstant = S(0);  // world units along the light
   S biasSlope = S(0);     // texels of the surface's rise

@@ -304,11 +304,18 @@ Json sceneJson(const Scene& scene) {
                           {"diffuse", toJson(l.diffuse)},
                           {"specular", toJson(l.specular)},
                           {"attenuation", toJson(attenuationUsed(l))}});
+    lights.back()["spot"] = isSpotLight(l) ? Json{{"direction", toJson(l.spot->directionWorld)},
+                                                  {"inner_deg", clean(l.spot->innerDeg)},
+                                                  {"outer_deg", clean(l.spot->outerDeg)}}
+                                           : Json(nullptr);
     if (l.shadow) {
       const ShadowDesc& d = *l.shadow;
-      lights.back()["shadow"] = Json{{"kind", directional ? "orthographic" : "cube"},
+      const ShadowKind kind = directional ? ShadowKind::Orthographic
+                              : isSpotLight(l) ? ShadowKind::Perspective
+                                               : ShadowKind::Cube;
+      lights.back()["shadow"] = Json{{"kind", std::string(toString(kind))},
                                      {"size", d.size},
-                                     {"layers", directional ? 1 : kCubeShadowLayers},
+                                     {"layers", kind == ShadowKind::Cube ? kCubeShadowLayers : 1},
                                      {"bias", {d.bias.x, d.bias.y}},
                                      {"pcf", d.pcf},
                                      {"extent", d.extent}};
@@ -435,11 +442,17 @@ void printScene(std::ostream& out, const Scene& scene) {
     } else {
       out << "  [" << i << "] position " << text(l.posWorld) << ", diffuse " << text(l.diffuse) << ", specular "
           << text(l.specular) << ", attenuation " << text(l.attenuation) << "\n";
+      if (isSpotLight(l)) {
+        out << "      spot: axis " << text(l.spot->directionWorld) << ", full within " << l.spot->innerDeg
+            << " deg, none beyond " << l.spot->outerDeg << " deg\n";
+      }
     }
     if (l.shadow) {
       const ShadowDesc& d = *l.shadow;
-      out << "      shadow map: " << (l.type == LightType::Directional ? "orthographic " : "cube ") << d.size << "^2"
-          << (l.type == LightType::Directional ? "" : " x 6") << ", bias " << d.bias.x << " world units + "
+      const bool cube = l.type == LightType::Point && !isSpotLight(l);
+      out << "      shadow map: "
+          << (l.type == LightType::Directional ? "orthographic " : cube ? "cube " : "perspective (the spot's cone) ")
+          << d.size << "^2" << (cube ? " x 6" : "") << ", bias " << d.bias.x << " world units + "
           << d.bias.y << " texels of slope, pcf " << d.pcf << "x" << d.pcf << ", extent "
           << (d.extent > 0.0f ? std::to_string(d.extent) + " world units" : std::string("from the scene's bounds"))
           << "\n";

@@ -57,7 +57,7 @@ constexpr float kMinDimension = 0.001f;
 // kernel. A point light's cube map is at most kMaxCubeShadowMapSize; at most
 // kMaxShadowedLights lights cast shadows. True when something changed.
 bool editShadow(Light& light, const std::vector<Light>& lights) {
-  const bool cube = light.type == LightType::Point;
+  const bool cube = light.type == LightType::Point && !isSpotLight(light);
   const int maxSize = cube ? kMaxCubeShadowMapSize : kMaxShadowMapSize;
   if (light.shadow && light.shadow->size > maxSize) light.shadow->size = maxSize;  // switched to a point light
   const auto others = std::count_if(lights.begin(), lights.end(),
@@ -76,8 +76,8 @@ bool editShadow(Light& light, const std::vector<Light>& lights) {
   }
   ImGui::EndDisabled();
   itemTooltip("A shadow map (shadow): a depth pass from the light before the frame, on both renderers; an "
-              "orthographic map for a directional light, a cube of six for a point light (docs/shadows.md). "
-              "At most 4 lights.");
+              "orthographic map for a directional light, a cube of six for a point light, one perspective map "
+              "over a spot light's cone (docs/shadows.md). At most 4 lights.");
   if (!light.shadow) return changed;
   ShadowDesc& shadow = *light.shadow;
   const std::string label = std::to_string(shadow.size) + (cube ? " x 6" : "");
@@ -113,6 +113,47 @@ bool editShadow(Light& light, const std::vector<Light>& lights) {
       changed = true;
     }
   }
+  return changed;
+}
+
+// A point light's spot cone (scene.h's SpotCone): on or off, its axis and half-angles. True
+// when something changed.
+constexpr float kSpotAngleDragSpeed = 0.2f;  // degrees
+bool editSpot(Light& light) {
+  bool changed = false;
+  bool on = light.spot.has_value();
+  if (ImGui::Checkbox("spot", &on)) {
+    if (on) {
+      light.spot = SpotCone{};
+    } else {
+      light.spot.reset();
+    }
+    changed = true;
+  }
+  itemTooltip("A spot cone (spot): the light shines only within the outer half-angle of its axis, fully "
+              "within the inner one, smoothstep between; a shadowed spot light gets one perspective map "
+              "over its cone instead of a cube (docs/shadows.md).");
+  if (!light.spot) return changed;
+  SpotCone& spot = *light.spot;
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+  vec3 axis = spot.directionWorld;
+  if (ImGui::DragFloat3("Spot axis", &axis.x, kDirectionDragSpeed, -1.0f, 1.0f, "%.3f")) {
+    // Kept unit length, as the scene file leaves it; a zero vector keeps the last one.
+    if (glm::length(axis) > 0.0f) spot.directionWorld = glm::normalize(axis);
+    changed = true;
+  }
+  itemTooltip("The cone's axis, the way the light shines, world space (spot.direction; kept unit length).");
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.4f);
+  if (ImGui::DragFloat("Outer deg", &spot.outerDeg, kSpotAngleDragSpeed, 0.1f, kMaxSpotOuterDeg - 0.1f, "%.1f",
+                       ImGuiSliderFlags_AlwaysClamp)) {
+    spot.innerDeg = std::min(spot.innerDeg, spot.outerDeg);
+    changed = true;
+  }
+  itemTooltip("Half-angle beyond which the light gives nothing (spot.outer_deg, below 89).");
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.4f);
+  changed |= ImGui::DragFloat("Inner deg", &spot.innerDeg, kSpotAngleDragSpeed, 0.0f, spot.outerDeg, "%.1f",
+                              ImGuiSliderFlags_AlwaysClamp);
+  itemTooltip("Half-angle within which the light is at full strength (spot.inner_deg, at most outer_deg).");
   return changed;
 }
 
@@ -1004,6 +1045,7 @@ void GuiApp::drawLightsSection() {
                                    "%.4f", ImGuiSliderFlags_AlwaysClamp);
       ImGui::EndDisabled();
       itemTooltip("Attenuation If = 1 / (A_C + A_L d + A_Q d^2), d in world units (point lights only).");
+      if (!directional) changed |= editSpot(light);
       changed |= editShadow(light, lights);
       if (light.shadow) drawShadowMapImages(i);
       ImGui::TreePop();

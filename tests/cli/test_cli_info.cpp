@@ -131,6 +131,19 @@ TEST(CliInfo, ShadowMaps) {
   EXPECT_EQ(shadow["pcf"], 3);
   const RunResult plain = runCli("info --json \"" + kDefaultScene + "\"");
   EXPECT_TRUE(nlohmann::json::parse(plain.out)["lights"][0]["shadow"].is_null());
+  EXPECT_TRUE(nlohmann::json::parse(plain.out)["lights"][0]["spot"].is_null());
+  // A spot light: its cone, and one perspective map over it.
+  const std::string spotScene = kSource + "/assets/scenes/shadow_spot.json";
+  const RunResult spotText = runCli("info \"" + spotScene + "\"");
+  ASSERT_EQ(spotText.exitCode, 0) << spotText.err;
+  expectContains(spotText.out, "full within 22 deg, none beyond 32 deg");
+  expectContains(spotText.out, "shadow map: perspective (the spot's cone) 1024^2, bias");
+  const RunResult spotJson = runCli("info --json \"" + spotScene + "\"");
+  const nlohmann::json spot = nlohmann::json::parse(spotJson.out)["lights"][0];
+  EXPECT_EQ(spot["shadow"]["kind"], "perspective");
+  EXPECT_EQ(spot["shadow"]["layers"], 1);
+  EXPECT_EQ(spot["spot"]["outer_deg"], 32.0);
+  EXPECT_EQ(spot["spot"]["inner_deg"], 22.0);
 }
 
 TEST(CliInfo, NamesTheCpuTargetActuallyUsedAndEverySupportedOne) {

@@ -134,7 +134,7 @@ std::vector<SuiteCase> suiteCases() {
     cases.push_back(c);
   }
   // The shadow views on the shadowed scenes (the default scene shows them dimmed: no shadow).
-  for (const char* scene : {"shadow_directional.json", "shadow_point_cube.json"}) {
+  for (const char* scene : {"shadow_directional.json", "shadow_point_cube.json", "shadow_spot.json"}) {
     for (View view : {View::Shadow, View::LightDepth}) {
       SuiteCase c;
       c.scene = scene;

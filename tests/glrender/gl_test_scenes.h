@@ -32,7 +32,7 @@ inline Scene emptyScene() {
   scene.output.background = vec4(0.2f, 0.4f, 0.6f, 1.0f);
   scene.camera = frontCamera();
   scene.lights.push_back(Light{vec3(0.0f, 0.0f, 0.0f), vec3(1.0f), vec3(1.0f), vec3(1.0f, 0.0f, 0.0f),
-                               LightType::Point, vec3(0.0f, -1.0f, 0.0f), std::nullopt});
+                               LightType::Point, vec3(0.0f, -1.0f, 0.0f), std::nullopt, std::nullopt});
   return scene;
 }
 

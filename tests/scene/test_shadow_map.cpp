@@ -102,6 +102,32 @@ TEST(ShadowMap, CubeFacesAgreeWithTheFaceRendersAndTheDepthFormula) {
   EXPECT_EQ(cubeFaceOf(vec3(-1.0f, 1.0f, 0.0f)), 2);
 }
 
+TEST(ShadowMap, SpotMapLooksAlongTheConeWithItsFieldOfView) {
+  const Scene scene = floorAndBox();
+  Light light;
+  light.posWorld = vec3(0.3f, 2.0f, 0.1f);
+  light.spot = SpotCone{glm::normalize(vec3(0.2f, -1.0f, 0.1f)), 10.0f, 25.0f};
+  light.shadow = ShadowDesc{};
+  const ShadowProjection p = shadowProjectionFor(light, worldBoundsOf(scene));
+  EXPECT_EQ(p.kind, ShadowKind::Perspective);
+  EXPECT_EQ(p.layers, 1);
+  EXPECT_FLOAT_EQ(p.near, p.far * kCubeShadowNearRatio);
+  // On the axis: the map's centre, at the cube-face depth of its distance.
+  const vec3 onAxis = windowOf(p.clipFromWorld[0], light.posWorld + light.spot->directionWorld * 1.5f);
+  EXPECT_NEAR(onAxis.x, 0.5f, 1e-5f);
+  EXPECT_NEAR(onAxis.y, 0.5f, 1e-5f);
+  EXPECT_NEAR(onAxis.z, cubeShadowDepth(p, 1.5f), 1e-6f);
+  // 25 degrees off the axis (the outer half-angle) lies on the map's edge circle: half the side
+  // from the centre, in any direction across the axis.
+  const vec3 axis = light.spot->directionWorld;
+  const vec3 across = glm::normalize(glm::cross(axis, vec3(1.0f, 0.0f, 0.0f)));
+  const float tanOuter = std::tan(25.0f * 3.14159265f / 180.0f);
+  const vec3 edge = windowOf(p.clipFromWorld[0], light.posWorld + (axis + across * tanOuter) * 1.5f);
+  EXPECT_NEAR(glm::length(vec2(edge.x, edge.y) - vec2(0.5f)), 0.5f, 1e-4f);
+  EXPECT_NEAR(p.texelWorld, 2.0f * tanOuter / static_cast<float>(p.size), 1e-7f);
+  EXPECT_EQ(describeShadow(p).rfind("perspective 2048^2", 0), 0u) << describeShadow(p);
+}
+
 TEST(ShadowMap, SceneFileReadsShadowKeys) {
   const Scene scene = parseScene(R"({"lights": [
       {"type": "directional", "direction": [0, -1, 0], "shadow": {"size": 1024, "bias": [0.001, 0.003], "pcf": 5, "extent": 3}},
@@ -127,6 +153,50 @@ std::string shadowError(const std::string& light) {
     return e.what();
   }
   return "";
+}
+
+TEST(ShadowMap, SceneFileReadsSpotLights) {
+  const Scene scene = parseScene(R"({"lights": [
+      {"position": [0, 3, 0], "spot": {"direction": [0, -2, 0], "inner_deg": 10, "outer_deg": 40}, "shadow": true},
+      {"position": [0, 3, 0], "spot": {"outer_deg": 12}},
+      {"position": [0, 3, 0], "spot": {}, "shadow": {"size": 4096}}], "nodes": []})",
+                                 "inline.json", ".");
+  ASSERT_EQ(scene.lights.size(), 3u);
+  ASSERT_TRUE(scene.lights[0].spot);
+  EXPECT_EQ(scene.lights[0].spot->directionWorld, vec3(0.0f, -1.0f, 0.0f));  // normalised
+  EXPECT_EQ(scene.lights[0].spot->innerDeg, 10.0f);
+  EXPECT_EQ(scene.lights[0].spot->outerDeg, 40.0f);
+  EXPECT_EQ(scene.lights[0].shadow->size, kDefaultShadowMapSize);  // one map, not a cube's six
+  EXPECT_EQ(scene.lights[1].spot->innerDeg, 12.0f);  // the default inner clamped to the outer
+  EXPECT_EQ(scene.lights[2].spot->outerDeg, SpotCone{}.outerDeg);
+  EXPECT_EQ(scene.lights[2].shadow->size, 4096);  // a spot map may be as large as a directional one
+  const vec2 c = spotCosines(*scene.lights[0].spot);
+  EXPECT_FLOAT_EQ(c.x, std::cos(40.0f * 3.14159265f / 180.0f));
+  EXPECT_FLOAT_EQ(c.y, std::cos(10.0f * 3.14159265f / 180.0f));
+  const SpotUniform u = spotUniformOf(scene.lights[0]);
+  EXPECT_EQ(u.axis, vec4(0.0f, -1.0f, 0.0f, 1.0f));
+  EXPECT_FLOAT_EQ(u.cone.y, c.y - c.x);
+  EXPECT_EQ(spotUniformOf(Light{}).axis.w, 0.0f);  // not a spot: the cone is never read
+  // A spot on a directional light is read and ignored, with a warning.
+  const Scene warned = parseScene(R"({"lights": [{"type": "directional", "spot": {}}], "nodes": []})", "inline.json", ".");
+  EXPECT_FALSE(warned.lights[0].spot);
+  ASSERT_EQ(warned.warnings.size(), 1u);
+  EXPECT_NE(warned.warnings[0].find("lights[0].spot: ignored"), std::string::npos) << warned.warnings[0];
+}
+
+TEST(ShadowMap, SceneFileRefusesBadSpots) {
+  EXPECT_NE(shadowError(R"({"spot": {"outer_deg": 90}})").find("lights[0].spot.outer_deg: expected a half-angle above 0"),
+            std::string::npos)
+      << shadowError(R"({"spot": {"outer_deg": 90}})");
+  EXPECT_NE(shadowError(R"({"spot": {"outer_deg": 0}})").find("lights[0].spot.outer_deg"), std::string::npos);
+  EXPECT_NE(shadowError(R"({"spot": {"inner_deg": 35, "outer_deg": 30}})")
+                .find("lights[0].spot.inner_deg: expected a half-angle from 0 to outer_deg (30.0), got 35"),
+            std::string::npos)
+      << shadowError(R"({"spot": {"inner_deg": 35, "outer_deg": 30}})");
+  EXPECT_NE(shadowError(R"({"spot": {"direction": [0, 0, 0]}})").find("lights[0].spot.direction: expected a non-zero"),
+            std::string::npos);
+  EXPECT_NE(shadowError(R"({"spot": {"angle": 30}})").find("lights[0].spot.angle"), std::string::npos);
+  EXPECT_NE(shadowError(R"({"spot": 30})").find("lights[0].spot: expected an object"), std::string::npos);
 }
 
 TEST(ShadowMap, SceneFileRefusesBadShadows) {

@@ -248,12 +248,12 @@ Scene syntheticScene(vec2 uvMin, vec2 uvMax, int textureWidth, int textureHeight
   scene.camera.near = 0.05f;
   scene.ambient = vec3(0.1f);
   scene.lights.push_back(Light{vec3(1.0f, 2.0f, 2.0f), vec3(1.0f), vec3(1.0f), vec3(1.0f, 0.09f, 0.032f),
-                               LightType::Point, vec3(0.0f, -1.0f, 0.0f), std::nullopt});
+                               LightType::Point, vec3(0.0f, -1.0f, 0.0f), std::nullopt, std::nullopt});
   // A light inside the sphere's surface and one exactly at a vertex of the plane.
   scene.lights.push_back(Light{vec3(0.0f, 0.2f, 0.0f), vec3(0.5f), vec3(0.8f), vec3(0.0f, 0.0f, 0.0f),
-                               LightType::Point, vec3(0.0f, -1.0f, 0.0f), std::nullopt});
+                               LightType::Point, vec3(0.0f, -1.0f, 0.0f), std::nullopt, std::nullopt});
   scene.lights.push_back(Light{vec3(2.0f, -0.5f, 2.0f), vec3(0.3f), vec3(0.4f), vec3(1.0f, 0.0f, 1.0f),
-                               LightType::Point, vec3(0.0f, -1.0f, 0.0f), std::nullopt});
+                               LightType::Point, vec3(0.0f, -1.0f, 0.0f), std::nullopt, std::nullopt});
   Material material;
   material.ks = vec3(0.7f);
   material.shininess = shininess;

@@ -92,6 +92,38 @@ TEST(Shade, DirectionalLightIsUnattenuatedAndTheSameEverywhere) {
   EXPECT_EQ(there.lights[0].lVec, terms.lights[0].lVec);
 }
 
+TEST(Shade, SpotConeScalesTheLightBySmoothstepOfTheAngle) {
+  // A spot light 2 above the surface point, its axis tilted by a known angle from straight
+  // down: full within 20 degrees, nothing beyond 30, smoothstep of the cosine between.
+  const auto attenuationAt = [](float tiltDeg) {
+    Light light;
+    light.posWorld = vec3(0.0f, 0.0f, 2.0f);
+    const float a = tiltDeg * 3.14159265f / 180.0f;
+    light.spot = SpotCone{vec3(std::sin(a), 0.0f, -std::cos(a)), 20.0f, 30.0f};
+    ShadeUniforms u = uniformsWithLight(light.posWorld, {1, 0, 0});
+    const SpotUniform spot = spotUniformOf(light);
+    u.lights[0].spot = true;
+    u.lights[0].spotAxis = vec3(spot.axis);
+    u.lights[0].spotCosOuter = spot.cone.x;
+    u.lights[0].spotCosRange = spot.cone.y;
+    ShadeTerms terms;
+    shadeFragment<PlainShaded>(surfaceFragment(), u, &terms);
+    return terms.lights[0].attenuation;
+  };
+  EXPECT_NEAR(attenuationAt(0.0f), 1.0f, kEps);
+  EXPECT_NEAR(attenuationAt(19.0f), 1.0f, kEps);
+  EXPECT_EQ(attenuationAt(31.0f), 0.0f);
+  EXPECT_EQ(attenuationAt(150.0f), 0.0f);  // pointing away
+  const float c = std::cos(25.0f * 3.14159265f / 180.0f), lo = std::cos(30.0f * 3.14159265f / 180.0f),
+              hi = std::cos(20.0f * 3.14159265f / 180.0f);
+  const float x = (c - lo) / (hi - lo);
+  EXPECT_NEAR(attenuationAt(25.0f), x * x * (3.0f - 2.0f * x), 1e-4f);
+  // A hard-edged cone (inner == outer) is a step, not a division by zero.
+  Light hard;
+  hard.spot = SpotCone{vec3(0.0f, 0.0f, -1.0f), 30.0f, 30.0f};
+  EXPECT_EQ(spotUniformOf(hard).cone.y, kMinSpotCosineRange);
+}
+
 TEST(Shade, LightBehindTheSurfaceGivesOnlyAmbient) {
   const vec4 c = shadeFragment<PlainShaded>(surfaceFragment(), uniformsWithLight({0, 0, -2}, {1, 0, 0}), nullptr);
   EXPECT_NEAR(c.r, 0.1f, kEps);

@@ -133,6 +133,34 @@ TEST(ShadowTest, CubeMapReadsTheFaceOfTheDirection) {
   EXPECT_FLOAT_EQ(testAt<float>(map, vec3(0.3f, -0.2f, 2.0f), n, -n).depth, cubeShadowDepth(map.projection, 2.0f));
 }
 
+TEST(ShadowTest, SpotMapCoversTheConeAndNothingBehindTheLight) {
+  Light light;
+  light.posWorld = vec3(0.0f, 3.0f, 0.0f);
+  light.spot = SpotCone{vec3(0.0f, -1.0f, 0.0f), 20.0f, 30.0f};
+  light.shadow = ShadowDesc{kSize, vec2(0.0f), 1, 10.0f};
+  ShadowMap map;
+  map.projection = shadowProjectionFor(light, WorldBounds{vec3(-5.0f), vec3(5.0f)});
+  ASSERT_EQ(map.projection.kind, ShadowKind::Perspective);
+  ASSERT_EQ(map.projection.layers, 1);
+  // An occluder 1 unit below the light everywhere in the map.
+  map.depth.assign(static_cast<std::size_t>(kSize * kSize), cubeShadowDepth(map.projection, 1.0f));
+  const vec3 n(0.0f, 1.0f, 0.0f);
+  EXPECT_EQ(testAt<float>(map, vec3(0.2f, 1.0f, -0.1f), n, n).visibility, 0.0f);  // 2 below: behind the occluder
+  EXPECT_EQ(testAt<float>(map, vec3(0.1f, 2.5f, 0.1f), n, n).visibility, 1.0f);   // 0.5 below: in front of it
+  // The depth along the axis is a cube face's at the same distance; the cone's edge (30 degrees
+  // off the axis) lies inside the map, a point 40 degrees off it outside.
+  EXPECT_FLOAT_EQ(testAt<float>(map, vec3(0.0f, 1.0f, 0.0f), n, n).depth, cubeShadowDepth(map.projection, 2.0f));
+  const float edge = 2.0f * std::tan(29.0f * 3.14159265f / 180.0f), beyond = 2.0f * std::tan(40.0f * 3.14159265f / 180.0f);
+  EXPECT_EQ(testAt<float>(map, vec3(edge, 1.0f, 0.0f), n, n).inside, 1.0f);
+  EXPECT_EQ(testAt<float>(map, vec3(beyond, 1.0f, 0.0f), n, n).inside, 0.0f);
+  // Behind the light: outside the map (and lit), never projected through it.
+  const ShadowTestL<float> behind = testAt<float>(map, vec3(0.2f, 4.0f, 0.1f), n, n);
+  EXPECT_EQ(behind.inside, 0.0f);
+  EXPECT_EQ(behind.visibility, 1.0f);
+  // Double lanes read the same texels.
+  EXPECT_EQ(testAt<double>(map, vec3(0.2f, 1.0f, -0.1f), n, n).visibility, 0.0);
+}
+
 }  // namespace
 }  // namespace twr
 
