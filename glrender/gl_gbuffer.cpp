@@ -148,6 +148,86 @@ void GlGBuffer::light(ProgramCache& programs, const Scene& scene, const GlShadow
   glDrawBuffers(2, surfaces.data());
 }
 
+void GlGBuffer::reflect(ProgramCache& programs, const Scene& scene, const RenderSettings& settings,
+                        const mat4& clipFromWorld, const RenderTargets& targets) {
+  // The lit colour, copied: the pass reads it at other pixels while it writes the frame.
+  if (litCopy_.id() == 0 || litCopyWidth_ != width_ || litCopyHeight_ != height_) {
+    litCopy_ = makeTarget(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width_, height_);
+    litCopyWidth_ = width_;
+    litCopyHeight_ = height_;
+  }
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.framebufferId());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glBindTexture(GL_TEXTURE_2D, litCopy_.id());
+  glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, width_, height_);  // the scissor does not limit a copy
+  glBindTexture(GL_TEXTURE_2D, 0);
+
+  glBindFramebuffer(GL_FRAMEBUFFER, targets.framebufferId());
+  const std::array<GLenum, 2> colourOnly = {GL_COLOR_ATTACHMENT0, GL_NONE};
+  glDrawBuffers(set_ == GlFrame::Full ? 2 : 1, colourOnly.data());
+  GLboolean depthMask = GL_TRUE;
+  glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask);
+  const GLboolean depthTest = glIsEnabled(GL_DEPTH_TEST);
+  const GLboolean cull = glIsEnabled(GL_CULL_FACE);
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+  glDisable(GL_CULL_FACE);
+
+  std::vector<std::string> defines;
+  if (storesPosition_) defines.push_back("GBUFFER_POSITION");
+  const GLuint program =
+      programs.get(ProgramDesc{"ssr", {"common.glsl", "sky.vert"}, {"common.glsl", "ssr.frag"}, defines});
+  glUseProgram(program);
+  const SsrSettings& ssr = settings.ssr;
+  const double n = scene.camera.near, f = scene.camera.far;
+  const auto setFloat = [&](const char* name, float value) { glUniform1f(uniformLocation(program, name), value); };
+  glUniformMatrix4fv(uniformLocation(program, "clipFromWorld"), 1, GL_FALSE, &clipFromWorld[0][0]);
+  if (!storesPosition_) {
+    const mat4 worldFromClip = worldFromClipOf(clipFromWorld);
+    glUniformMatrix4fv(uniformLocation(program, "worldFromClip"), 1, GL_FALSE, &worldFromClip[0][0]);
+  }
+  const vec2 viewportSize(static_cast<float>(width_), static_cast<float>(height_));
+  glUniform2fv(uniformLocation(program, "viewportSize"), 1, &viewportSize.x);
+  // The distance terms as makeSsrUniforms makes them: double, rounded once.
+  setFloat("distanceNumerator", static_cast<float>(2.0 * n * f));
+  setFloat("distanceSum", static_cast<float>(f + n));
+  setFloat("distanceDifference", static_cast<float>(f - n));
+  glUniform3fv(uniformLocation(program, "eyePosWorld"), 1, &scene.camera.position.x);
+  glUniform1i(uniformLocation(program, "adaptiveMarch"), ssr.march == SsrMarch::AdaptiveWorld ? 1 : 0);
+  glUniform1i(uniformLocation(program, "maxSteps"), ssr.maxSteps);
+  setFloat("marchStep", ssr.step);
+  setFloat("minStep", ssr.step * kSsrAdaptiveMinStepRatio);
+  setFloat("thickness", ssr.thickness);
+  setFloat("reflectStrength", ssr.reflectStrength);
+  // Texture units: depth, normal, specular, position, the lit colour.
+  const std::array<std::pair<const char*, GLuint>, 5> textures = {{{"gbufferDepth", depth_.id()},
+                                                                   {"gbufferNormal", targets_[0].id()},
+                                                                   {"gbufferSpecular", targets_[3].id()},
+                                                                   {"gbufferPosition", position_.id()},
+                                                                   {"litColour", litCopy_.id()}}};
+  for (std::size_t unit = 0; unit < textures.size(); ++unit) {
+    glUniform1i(uniformLocation(program, textures[unit].first), static_cast<GLint>(unit));
+    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
+    glBindTexture(GL_TEXTURE_2D, textures[unit].second);
+  }
+  GlVertexArray empty = makeGlVertexArray();  // core profile: a draw needs a vertex array
+  glBindVertexArray(empty.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  for (std::size_t unit = 0; unit < textures.size(); ++unit) {
+    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
+    glBindTexture(GL_TEXTURE_2D, 0);
+  }
+  glActiveTexture(GL_TEXTURE0);
+
+  if (depthTest) glEnable(GL_DEPTH_TEST);
+  glDepthMask(depthMask);
+  if (cull) glEnable(GL_CULL_FACE);
+  const std::array<GLenum, 2> surfaces = {GL_COLOR_ATTACHMENT0,
+                                          set_ == GlFrame::Full ? GLenum{GL_COLOR_ATTACHMENT1} : GLenum{GL_NONE}};
+  glDrawBuffers(2, surfaces.data());
+}
+
 std::shared_ptr<GBuffer> GlGBuffer::readBack() const {
   auto g = std::make_shared<GBuffer>();
   g->width = width_;

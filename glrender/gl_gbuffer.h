@@ -33,6 +33,12 @@ class GlGBuffer {
   void light(ProgramCache& programs, const Scene& scene, const GlShadowMaps* shadows, const mat4& clipFromWorld,
              const RenderTargets& targets) const;
 
+  // Screen-space reflections (docs/ssr.md), after light(): copies the frame's lit colour into
+  // a texture and draws ssr.frag over the frame's colour alone, which changes the pixels whose
+  // mirror ray hits. The caller's scissor applies.
+  void reflect(ProgramCache& programs, const Scene& scene, const RenderSettings& settings, const mat4& clipFromWorld,
+               const RenderTargets& targets);
+
   // The targets (five, or six with the position), top row first (a full frame's compare rows).
   std::shared_ptr<GBuffer> readBack() const;
 
@@ -45,6 +51,8 @@ class GlGBuffer {
   std::array<GlTexture, kGBufferTargets> targets_;
   GlTexture position_;  // 0 when the position is rebuilt from depth
   GlTexture depth_;
+  GlTexture litCopy_;  // reflect()'s copy of the lit colour (RGBA8), made at the frame's size
+  int litCopyWidth_ = 0, litCopyHeight_ = 0;
 };
 
 }  // namespace twr

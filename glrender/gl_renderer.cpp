@@ -144,6 +144,9 @@ void validateRequest(const Scene& scene, const RenderSettings& settings, int wid
                      " user clip planes, at most " + std::to_string(kMaxUserClipPlanes) + " are supported");
   }
   if (const std::string problem = clipSlotProblem(settings); !problem.empty()) throw InputError("GL: " + problem);
+  if (drawsSsr(settings)) {
+    if (const std::string problem = ssrSizeProblem(width, height); !problem.empty()) throw InputError("GL: " + problem);
+  }
   if (const std::string problem = projectionProblem(scene, width, height); !problem.empty()) {
     throw InputError("GL: " + problem);
   }
@@ -270,7 +273,7 @@ class GlRenderer final : public Renderer {
     device.targets.clear(scene.output.background);
     const GlClipState clipState = makeGlClipState(drawSettings, scene.camera);
     const bool deferred = drawsDeferred(drawSettings);
-    double gbufferMilliseconds = 0.0, lightingMilliseconds = 0.0;
+    double gbufferMilliseconds = 0.0, lightingMilliseconds = 0.0, ssrMilliseconds = 0.0;
     std::function<void()> lighting;
     auto passStart = std::chrono::steady_clock::now();
     if (deferred) {
@@ -283,8 +286,14 @@ class GlRenderer final : public Renderer {
         gbufferMilliseconds = std::chrono::duration<double, std::milli>(lightingStart - passStart).count();
         device.gbuffer.light(device.programs, scene, &device.shadows, clipFromWorld, device.targets);
         if (options_.frame == GlFrame::Full) glFinish();
-        lightingMilliseconds =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - lightingStart).count();
+        const auto lightingEnd = std::chrono::steady_clock::now();
+        lightingMilliseconds = std::chrono::duration<double, std::milli>(lightingEnd - lightingStart).count();
+        if (drawsSsr(drawSettings)) {
+          device.gbuffer.reflect(device.programs, scene, drawSettings, clipFromWorld, device.targets);
+          if (options_.frame == GlFrame::Full) glFinish();
+          ssrMilliseconds =
+              std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - lightingEnd).count();
+        }
       };
     } else {
       device.targets.drawSurfaces();
@@ -314,6 +323,7 @@ class GlRenderer final : public Renderer {
 
     out.stats.shadowMilliseconds = shadowMilliseconds;
     out.stats.gbufferMilliseconds = gbufferMilliseconds;
+    out.stats.ssrMilliseconds = ssrMilliseconds;
     out.stats.lightingMilliseconds = lightingMilliseconds;
     out.shadowMaps = std::move(shadowMaps);
     out.stats.trianglesIn = drawStats.trianglesIn;

@@ -201,6 +201,7 @@ void setUniforms(GLuint program, const Scene& scene, const RenderSettings& setti
   glUniform3fv(uniformLocation(program, "kd"), 1, &material.kd.x);
   glUniform3fv(uniformLocation(program, "ks"), 1, &material.ks.x);
   glUniform1f(uniformLocation(program, "shininess"), std::fmax(material.shininess, 0.0f));
+  glUniform1f(uniformLocation(program, "ssrReflect"), material.ssrReflect);
   glUniform3fv(uniformLocation(program, "ambient"), 1, &scene.ambient.x);
   glUniform1ui(uniformLocation(program, "firstTriangleId"), item.firstTriangleId);
   glUniform1i(uniformLocation(program, "diffuseMap"), kDiffuseUnit);

@@ -34,6 +34,7 @@ struct RenderStats {
   // Of `milliseconds`, the deferred pipeline's G-buffer pass and lighting pass (0 forward).
   double gbufferMilliseconds = 0.0;
   double lightingMilliseconds = 0.0;
+  double ssrMilliseconds = 0.0;  // the screen-space reflection pass (0 without settings.ssr)
 };
 
 // A deferred frame's G-buffer (docs/deferred.md): one RGBA float target per surface quantity,
@@ -43,7 +44,7 @@ struct GBuffer {
   std::vector<vec4> normal;     // xyz: the normal lighting uses, world space, unit; w: the Phong exponent
   std::vector<vec4> geometric;  // xyz: the interpolated normal (the shadow maps' slope), world, unit; w 1
   std::vector<vec4> albedo;     // xyz: kd albedo, scaled by (1 - the environment's share); w 1
-  std::vector<vec4> specular;   // xyz: ks specScale, scaled the same; w 1
+  std::vector<vec4> specular;   // xyz: ks specScale, scaled the same; w: the material's ssr_reflect
   std::vector<vec4> emission;   // xyz: what no light scales (ambient, environment); w 1
   // xyz: the world position the forward shading interpolates; w 1. Empty when the frame
   // rebuilds positions from depth (settings.gbuffer_position depth).

@@ -73,6 +73,9 @@ struct Material {
   // colour stood (glass shows what is behind it).
   float reflectivity = 0.0f;
   float refractionIndex = 0.0f;
+  // The share of the screen-space reflection this surface adds (docs/ssr.md), [0, 1]; drawn
+  // only with settings.ssr on.
+  float ssrReflect = 0.0f;
   Fresnel fresnel = Fresnel::None;
   EnvironmentSpecular environmentSpecular = EnvironmentSpecular::None;
   EnvironmentDiffuse environmentDiffuse = EnvironmentDiffuse::None;

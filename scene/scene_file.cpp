@@ -269,6 +269,10 @@ class SceneReader {
                                   " mixes nothing in: reflectivity is 0 and fresnel is none");
       }
     }
+    if (scene_.settings.ssr.enabled &&
+        std::none_of(scene_.materials.begin(), scene_.materials.end(), [](const Material& m) { return m.ssrReflect > 0.0f; })) {
+      scene_.warnings.push_back(fileName_ + ": settings.ssr: on, but no material has ssr_reflect > 0: nothing reflects");
+    }
     const Json* nodes = find(root, "nodes");
     if (!nodes) fail("nodes", "missing; expected an array of nodes (it may be empty)");
     requireArray(*nodes, "nodes");
@@ -583,7 +587,7 @@ class SceneReader {
       checkKeys(mj, materialPath,
                 {"ka", "kd", "ks", "shininess", "diffuse_map", "normal_map", "specular_map", "height_map", "height_scale",
                  "surface_detail", "parallax_layers", "relief_refinement_steps", "self_shadow", "horizon_directions",
-                 "reflectivity", "refraction_index", "fresnel", "environment_specular", "environment_diffuse"},
+                 "reflectivity", "refraction_index", "fresnel", "environment_specular", "environment_diffuse", "ssr_reflect"},
                 "a material");
       Material material;
       material.name = it.key();
@@ -690,6 +694,7 @@ class SceneReader {
   void readEnvironmentKeys(const Json& mj, const std::string& materialPath, Material& material) {
     const auto at = [&](const char* key) { return childPath(materialPath, key); };
     if (const Json* v = find(mj, "reflectivity")) material.reflectivity = readNumber(*v, at("reflectivity"), NumberRule::UnitInterval);
+    if (const Json* v = find(mj, "ssr_reflect")) material.ssrReflect = readNumber(*v, at("ssr_reflect"), NumberRule::UnitInterval);
     if (const Json* v = find(mj, "refraction_index")) {
       material.refractionIndex = readNumber(*v, at("refraction_index"), NumberRule::Positive);
       if (material.refractionIndex > kMaxRefractionIndex) {
@@ -953,7 +958,7 @@ class SceneReader {
     requireObject(j, path);
     checkKeys(j, path,
               {"cull", "front_face", "clip", "user_clip_planes", "view", "lighting_space", "tangent_transform",
-               "texture_filter", "anisotropy", "tbn_lines", "pipeline", "gbuffer_position"},
+               "texture_filter", "anisotropy", "tbn_lines", "pipeline", "gbuffer_position", "ssr"},
               "settings");
     RenderSettings& s = scene_.settings;
     if (const Json* v = find(j, "cull")) s.cull = readEnum<CullMode>(*v, childPath(path, "cull"));
@@ -981,6 +986,7 @@ class SceneReader {
       }
     }
     if (const Json* v = find(j, "tbn_lines")) readTbnLines(*v, childPath(path, "tbn_lines"));
+    if (const Json* v = find(j, "ssr")) readSsr(*v, childPath(path, "ssr"));
   }
 
   void readClip(const Json& j, const std::string& path) {
@@ -1017,6 +1023,47 @@ class SceneReader {
     if (const Json* v = find(j, "enabled")) lines.enabled = readBool(*v, childPath(path, "enabled"));
     if (const Json* v = find(j, "length")) lines.length = readNumber(*v, childPath(path, "length"), NumberRule::Positive);
     if (const Json* v = find(j, "mode")) lines.mode = readEnum<LineMode>(*v, childPath(path, "mode"));
+  }
+
+  // settings.ssr (docs/ssr.md). Every key of the format is read; what is not drawn yet
+  // (the dda_screen and hiz marches, indirect samples) is refused by name, never drawn wrong.
+  void readSsr(const Json& j, const std::string& path) {
+    requireObject(j, path);
+    checkKeys(j, path,
+              {"enabled", "march", "max_steps", "step", "thickness", "indirect_samples", "sample_distribution",
+               "reflect_strength"},
+              "settings.ssr");
+    SsrSettings& ssr = scene_.settings.ssr;
+    if (const Json* v = find(j, "enabled")) ssr.enabled = readBool(*v, childPath(path, "enabled"));
+    if (const Json* v = find(j, "march")) {
+      ssr.march = readEnum<SsrMarch>(*v, childPath(path, "march"));
+      if (ssr.march == SsrMarch::DdaScreen || ssr.march == SsrMarch::Hiz) {
+        fail(childPath(path, "march"), std::string(toString(ssr.march)) +
+                                           " is not drawn yet; linear_world and adaptive_world are (docs/ssr.md)");
+      }
+    }
+    if (const Json* v = find(j, "max_steps")) ssr.maxSteps = readInt(*v, childPath(path, "max_steps"), 1, kMaxSsrSteps);
+    if (const Json* v = find(j, "step")) ssr.step = readNumber(*v, childPath(path, "step"), NumberRule::Positive);
+    if (const Json* v = find(j, "thickness")) {
+      ssr.thickness = readNumber(*v, childPath(path, "thickness"), NumberRule::Positive);
+    }
+    if (const Json* v = find(j, "indirect_samples")) {
+      ssr.indirectSamples = readInt(*v, childPath(path, "indirect_samples"), 0, kMaxSsrIndirectSamples);
+      if (ssr.indirectSamples > 0) {
+        fail(childPath(path, "indirect_samples"),
+             "indirect light is not drawn yet: only 0 is (mirror reflections alone, docs/ssr.md)");
+      }
+    }
+    if (const Json* v = find(j, "sample_distribution")) {
+      ssr.sampleDistribution = readEnum<SampleDistribution>(*v, childPath(path, "sample_distribution"));
+    }
+    if (const Json* v = find(j, "reflect_strength")) {
+      const std::string at = childPath(path, "reflect_strength");
+      ssr.reflectStrength = readNumber(*v, at, NumberRule::NonNegative);
+      if (ssr.reflectStrength > kMaxSsrReflectStrength) {
+        fail(at, "expected a number in [0, " + quote(Json(kMaxSsrReflectStrength)) + "], got " + quote(*v));
+      }
+    }
   }
 
   // ---- nodes and meshes ----

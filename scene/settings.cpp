@@ -36,6 +36,12 @@ constexpr NameTable<LightingSpace, 2> kSpace{{{LightingSpace::World, "world"}, {
 constexpr NameTable<Pipeline, 2> kPipeline{{{Pipeline::Forward, "forward"}, {Pipeline::Deferred, "deferred"}}};
 constexpr NameTable<GBufferPosition, 2> kGBufferPosition{
     {{GBufferPosition::Stored, "stored"}, {GBufferPosition::Depth, "depth"}}};
+constexpr NameTable<SsrMarch, 4> kSsrMarch{{{SsrMarch::LinearWorld, "linear_world"},
+                                            {SsrMarch::AdaptiveWorld, "adaptive_world"},
+                                            {SsrMarch::DdaScreen, "dda_screen"},
+                                            {SsrMarch::Hiz, "hiz"}}};
+constexpr NameTable<SampleDistribution, 2> kSampleDistribution{
+    {{SampleDistribution::Uniform, "uniform"}, {SampleDistribution::Cosine, "cosine"}}};
 constexpr NameTable<TangentTransform, 2> kTangent{
     {{TangentTransform::Model, "model"}, {TangentTransform::InverseTranspose, "inverse_transpose"}}};
 constexpr NameTable<TextureFilter, 6> kFilter{{{TextureFilter::Nearest, "nearest"},
@@ -87,12 +93,22 @@ bool valueOf(const NameTable<E, N>& table, std::string_view s, E& out) {
 
 }  // namespace
 
+std::string ssrSizeProblem(int width, int height) {
+  const long long pixels = static_cast<long long>(width) * static_cast<long long>(height);
+  if (pixels <= kMaxSsrFramePixels) return "";
+  return "settings.ssr: a frame of " + std::to_string(width) + "x" + std::to_string(height) + " (" +
+         std::to_string(pixels) + " pixels) is not marched: at most " + std::to_string(kMaxSsrFramePixels) +
+         " pixels (4096x4096), whose element indices are exact in a float lane";
+}
+
 std::string_view toString(CullMode v) { return nameOf(kCull, v); }
 std::string_view toString(FrontFace v) { return nameOf(kFront, v); }
 std::string_view toString(View v) { return nameOf(kView, v); }
 std::string_view toString(LightingSpace v) { return nameOf(kSpace, v); }
 std::string_view toString(Pipeline v) { return nameOf(kPipeline, v); }
 std::string_view toString(GBufferPosition v) { return nameOf(kGBufferPosition, v); }
+std::string_view toString(SsrMarch v) { return nameOf(kSsrMarch, v); }
+std::string_view toString(SampleDistribution v) { return nameOf(kSampleDistribution, v); }
 std::string_view toString(TangentTransform v) { return nameOf(kTangent, v); }
 std::string_view toString(TextureFilter v) { return nameOf(kFilter, v); }
 std::string_view toString(LineMode v) { return nameOf(kLine, v); }
@@ -108,6 +124,8 @@ bool parse(std::string_view s, View& out) { return valueOf(kView, s, out); }
 bool parse(std::string_view s, LightingSpace& out) { return valueOf(kSpace, s, out); }
 bool parse(std::string_view s, Pipeline& out) { return valueOf(kPipeline, s, out); }
 bool parse(std::string_view s, GBufferPosition& out) { return valueOf(kGBufferPosition, s, out); }
+bool parse(std::string_view s, SsrMarch& out) { return valueOf(kSsrMarch, s, out); }
+bool parse(std::string_view s, SampleDistribution& out) { return valueOf(kSampleDistribution, s, out); }
 bool parse(std::string_view s, TangentTransform& out) { return valueOf(kTangent, s, out); }
 bool parse(std::string_view s, TextureFilter& out) { return valueOf(kFilter, s, out) || valueOf(kFilterAliases, s, out); }
 bool parse(std::string_view s, LineMode& out) { return valueOf(kLine, s, out); }

@@ -105,6 +105,38 @@ struct TbnLines {
   LineMode mode = LineMode::Core;  // immediate needs a compatibility context (GL only)
 };
 
+// Screen-space reflections (docs/ssr.md): after the deferred lighting pass, each pixel whose
+// material has ssr_reflect > 0 marches its mirror ray through the depth buffer and adds
+// reflect_strength * ssr_reflect times the lit colour where the ray hits.
+//   linear_world    the GAMES202 write-up's march: fixed world-space steps of `step`; a hit
+//                   when the ray passes behind the depth buffer's surface by less than
+//                   `thickness` (both sides of the crossing), placed between the two steps;
+//   adaptive_world  its adaptive step: `step` first, halved at every overshoot until it is
+//                   step / 16, then the same test;
+//   dda_screen, hiz named by the scene format, not drawn yet (refused at load).
+enum class SsrMarch { LinearWorld, AdaptiveWorld, DdaScreen, Hiz };
+enum class SampleDistribution { Uniform, Cosine };
+inline constexpr int kMaxSsrSteps = 1024;
+inline constexpr int kMaxSsrIndirectSamples = 64;
+// The largest reflect_strength (unitless): a reflection may be brighter than the lit colour.
+inline constexpr float kMaxSsrReflectStrength = 4.0f;
+// adaptive_world stops halving at step * this (unitless: four halvings).
+inline constexpr float kSsrAdaptiveMinStepRatio = 1.0f / 16.0f;
+// The largest frame the march addresses (pixels): its element indices are exact in a float lane.
+inline constexpr long long kMaxSsrFramePixels = 1LL << 24;
+// Why a frame of this size cannot be marched; empty when it can. Both renderers refuse alike.
+std::string ssrSizeProblem(int width, int height);
+struct SsrSettings {
+  bool enabled = false;
+  SsrMarch march = SsrMarch::LinearWorld;
+  int maxSteps = 64;        // [1, kMaxSsrSteps]
+  float step = 0.05f;       // world units, > 0: linear's every step, adaptive's first
+  float thickness = 0.1f;   // world units, > 0: how far behind a surface a ray still hits it
+  int indirectSamples = 0;  // [0, kMaxSsrIndirectSamples]; only 0 is drawn yet
+  SampleDistribution sampleDistribution = SampleDistribution::Uniform;
+  float reflectStrength = 1.0f;  // [0, kMaxSsrReflectStrength]
+};
+
 struct RenderSettings {
   CullMode cull = CullMode::Back;
   FrontFace frontFace = FrontFace::Ccw;
@@ -118,12 +150,19 @@ struct RenderSettings {
   TextureFilter textureFilter = TextureFilter::Bilinear;
   float anisotropy = 1.0f;  // GL_TEXTURE_MAX_ANISOTROPY, in [1, kMaxTextureAnisotropy]
   TbnLines tbnLines;
+  SsrSettings ssr;
 };
 
+// Whether a frame with these settings marches screen-space reflections (docs/ssr.md): they are
+// on and the view is the shaded one.
+inline bool drawsSsr(const RenderSettings& settings) {
+  return settings.ssr.enabled && settings.view == View::Shaded;
+}
 // Whether a frame with these settings draws deferred (docs/deferred.md): the pipeline asks for
-// it and the view is the shaded one (every debug view shows one surface quantity, drawn forward).
+// it, or the reflections need its G-buffer, and the view is the shaded one (every debug view
+// shows one surface quantity, drawn forward).
 inline bool drawsDeferred(const RenderSettings& settings) {
-  return settings.pipeline == Pipeline::Deferred && settings.view == View::Shaded;
+  return (settings.pipeline == Pipeline::Deferred || settings.ssr.enabled) && settings.view == View::Shaded;
 }
 // Whether a deferred frame's G-buffer holds the position (its sixth target).
 inline bool storesGBufferPosition(const RenderSettings& settings) {
@@ -137,6 +176,8 @@ std::string_view toString(View v);
 std::string_view toString(LightingSpace v);
 std::string_view toString(Pipeline v);
 std::string_view toString(GBufferPosition v);
+std::string_view toString(SsrMarch v);
+std::string_view toString(SampleDistribution v);
 std::string_view toString(TangentTransform v);
 std::string_view toString(TextureFilter v);
 std::string_view toString(LineMode v);
@@ -153,6 +194,8 @@ bool parse(std::string_view s, View& out);
 bool parse(std::string_view s, LightingSpace& out);
 bool parse(std::string_view s, Pipeline& out);
 bool parse(std::string_view s, GBufferPosition& out);
+bool parse(std::string_view s, SsrMarch& out);
+bool parse(std::string_view s, SampleDistribution& out);
 bool parse(std::string_view s, TangentTransform& out);
 bool parse(std::string_view s, TextureFilter& out);
 bool parse(std::string_view s, LineMode& out);

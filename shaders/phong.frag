@@ -40,6 +40,9 @@ uniform vec3 ka;  // material reflectances
 uniform vec3 kd;
 uniform vec3 ks;
 uniform float shininess;  // Phong exponent, >= 0
+#ifdef GBUFFER_PASS
+uniform float ssrReflect;  // the material's share of the screen-space reflection (specular.w)
+#endif
 uniform vec3 ambient;     // Ia
 uniform uint firstTriangleId;
 uniform sampler2D diffuseMap;
@@ -262,7 +265,7 @@ void main() {
 #endif
 #ifdef GBUFFER_LIT_HERE
   gbufferAlbedo = vec4(0.0, 0.0, 0.0, 1.0);
-  gbufferSpecular = vec4(0.0, 0.0, 0.0, 1.0);
+  gbufferSpecular = vec4(0.0, 0.0, 0.0, ssrReflect);
   gbufferEmission = vec4(clamp(colour.rgb, 0.0, 1.0), 1.0);
 #else
   // The environment's mix, colour = phong + (C - phong) w, folded into the targets: albedo and
@@ -291,7 +294,7 @@ void main() {
 #endif
   float keep = 1.0 - mixShare;
   gbufferAlbedo = vec4(kdAlbedo * keep, 1.0);
-  gbufferSpecular = vec4(ksSpec * keep, 1.0);
+  gbufferSpecular = vec4(ksSpec * keep, ssrReflect);
   gbufferEmission = vec4(unlit * keep + mixTarget * mixShare, 1.0);
 #endif
 #endif

@@ -12,6 +12,7 @@
 #include "softrender/clip.h"
 #include "softrender/debug_lines.h"
 #include "softrender/deferred.h"
+#include "softrender/ssr.h"
 #include "softrender/draw_list.h"
 #include "softrender/draw_loop.h"
 #include "softrender/fast_pipeline.h"
@@ -58,7 +59,7 @@ struct GBufferTarget {
     g.normal[i] = vec4(s.nl, s.shininess);
     g.geometric[i] = vec4(s.n, 1.0f);
     g.albedo[i] = vec4(s.kdAlbedo, 1.0f);
-    g.specular[i] = vec4(s.ksSpec, 1.0f);
+    g.specular[i] = vec4(s.ksSpec, s.ssrReflect);
     g.emission[i] = vec4(s.emission, 1.0f);
     if (!g.position.empty()) g.position[i] = vec4(s.posWorld, 1.0f);
   }
@@ -102,6 +103,9 @@ class CpuRenderer final : public Renderer {
     validateImageSize(width, height);
     // What GL cannot draw is refused here too, so the two never draw different scenes.
     if (const std::string problem = clipSlotProblem(settings); !problem.empty()) throw InputError("CPU: " + problem);
+    if (drawsSsr(settings)) {
+      if (const std::string problem = ssrSizeProblem(width, height); !problem.empty()) throw InputError("CPU: " + problem);
+    }
     if (const std::string problem = projectionProblem(scene, width, height); !problem.empty()) {
       throw InputError("CPU: " + problem);
     }
@@ -176,6 +180,18 @@ class CpuRenderer final : public Renderer {
       const auto lightingEnd = std::chrono::steady_clock::now();
       stats.gbufferMilliseconds = std::chrono::duration<double, std::milli>(lightingStart - gbufferStart).count();
       stats.lightingMilliseconds = std::chrono::duration<double, std::milli>(lightingEnd - lightingStart).count();
+      if (drawsSsr(drawSettings)) {
+        // Screen-space reflections (ssr.h) read the lit frame, before the sky.
+        const SsrUniforms ssr = makeSsrUniforms(scene, drawSettings, width, height);
+        const bool positionStored = storesGBufferPosition(drawSettings);
+        if (options_.path == CpuPath::Teaching) {
+          reflectTeaching(*gbuffer, ssr, lighting.worldFromClip, positionStored, options_.threads, fb);
+        } else {
+          fast_->reflect(*gbuffer, ssr, lighting.worldFromClip, positionStored, fb);
+        }
+        stats.ssrMilliseconds =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - lightingEnd).count();
+      }
     }
 
     // The sky box where no triangle was drawn (the environment's background), in the shaded

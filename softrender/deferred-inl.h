@@ -40,6 +40,7 @@ struct GBufferTexelL {
   Vec3L<L> ksSpec;     // specular.xyz
   Vec3L<L> emission;   // emission.xyz
   Vec3L<L> posWorld;   // position.xyz (when the G-buffer stores it)
+  L ssrReflect;        // specular.w: the material's share of the screen-space reflection
 };
 
 // The G-buffer pass's shading of one fragment (phong.frag's main with GBUFFER_PASS): the forward
@@ -62,7 +63,8 @@ TWR_LANE_INLINE GBufferTexelL<L> gbufferFragmentLanes(const FragmentL<L>& f, con
     const Vec3L<L>& m = frame.mappedTangent;
     nlWorld = mapped ? safeNormalize3<L>(frame.t * m.x + frame.b * m.y + frame.n * m.z) : frame.n;
   }
-  GBufferTexelL<L> g{nlWorld, L(u.shininess), frame.n, Vec3L<L>(zero), Vec3L<L>(zero), Vec3L<L>(zero), f.posWorld};
+  GBufferTexelL<L> g{nlWorld,         L(u.shininess), frame.n,    Vec3L<L>(zero),
+                     Vec3L<L>(zero),  Vec3L<L>(zero), f.posWorld, L(u.ssrReflect)};
   if constexpr (Features::kHasHeightMap) {
     if (litInGBufferPass(u)) {
       const Vec4L<L> colour = (shadeFragmentLanes<Features, L>)(f, u, maps, static_cast<std::nullptr_t*>(nullptr));

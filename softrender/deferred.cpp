@@ -56,7 +56,7 @@ void lightGBufferTeaching(const GBuffer& g, const DeferredUniforms& u, int threa
                                                                static_cast<float>(py), depth);
             const GBufferTexelL<float> surface{vec3(g.normal[i]),   g.normal[i].w,       vec3(g.geometric[i]),
                                                vec3(g.albedo[i]),   vec3(g.specular[i]), vec3(g.emission[i]),
-                                               posWorld};
+                                               posWorld,            g.specular[i].w};
             writeFragment(fb, px, py, deferredLightingLanes<float>(surface, u.lighting), depth,
                           fb.triangleId[i]);
           }

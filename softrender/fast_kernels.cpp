@@ -26,6 +26,7 @@
 #include "softrender/raster.h"
 #include "softrender/deferred.h"
 #include "softrender/shade.h"
+#include "softrender/ssr.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -131,6 +132,7 @@ HWY_AFTER_NAMESPACE();
 #include "softrender/output_merge-inl.h"
 #include "softrender/shade-inl.h"
 #include "softrender/deferred-inl.h"
+#include "softrender/ssr-inl.h"
 
 #if defined(TWR_FAST_KERNEL_TARGETS) && (HWY_TARGET & (TWR_FAST_KERNEL_TARGETS))
 HWY_BEFORE_NAMESPACE();
@@ -354,10 +356,11 @@ void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps,
 
 // The deferred pipeline's G-buffer pass for a segment: the surface (gbufferFragmentLanes) of
 // this item's lanes into `channels` (deferred.h's targets in order, four floats of normal then
-// three each of geometric, albedo, specular, emission and position), the other lanes left as
-// they were.
-inline constexpr int kSurfaceChannels = 19;
+// three each of geometric, albedo, specular, emission and position, then the specular's w),
+// the other lanes left as they were.
+inline constexpr int kSurfaceChannels = 20;
 inline constexpr int kPositionChannel = 16;  // the first of the position's three
+inline constexpr int kSsrReflectChannel = 19;
 template <typename Features>
 void SurfaceSegment(const Segment& s, const ItemState& item, const ItemMaps& maps, float (*channels)[kMaxLanes]) {
   const DF df;
@@ -367,7 +370,7 @@ void SurfaceSegment(const Segment& s, const ItemState& item, const ItemMaps& map
                                           g.n.x,        g.n.y,        g.n.z,        g.kdAlbedo.x,
                                           g.kdAlbedo.y, g.kdAlbedo.z, g.ksSpec.x,   g.ksSpec.y,
                                           g.ksSpec.z,   g.emission.x, g.emission.y, g.emission.z,
-                                          g.posWorld.x, g.posWorld.y, g.posWorld.z};
+                                          g.posWorld.x, g.posWorld.y, g.posWorld.z, g.ssrReflect};
   const auto mask = lanesOf(s.bits).m;
   for (int c = 0; c < kSurfaceChannels; ++c) hn::BlendedStore(values[c].v, mask, df, channels[c]);
 }
@@ -455,7 +458,7 @@ void ShadeRows(const std::vector<BinTriangle>& triangles, const std::vector<Item
           surfaces->normal[origin + l] = vec4(at(0), at(1), at(2), at(3));
           surfaces->geometric[origin + l] = vec4(at(4), at(5), at(6), w);
           surfaces->albedo[origin + l] = vec4(at(7), at(8), at(9), w);
-          surfaces->specular[origin + l] = vec4(at(10), at(11), at(12), w);
+          surfaces->specular[origin + l] = vec4(at(10), at(11), at(12), at(kSsrReflectChannel));
           surfaces->emission[origin + l] = vec4(at(13), at(14), at(15), w);
           if (!surfaces->position.empty()) surfaces->position[origin + l] = vec4(at(16), at(17), at(18), w);
         }
@@ -497,8 +500,8 @@ void LightRows(const GBuffer& g, const DeferredUniforms& u, int rowBegin, int ro
         const std::size_t i = drawn ? origin + l : origin;  // a sane texel for lanes not written
         const vec4 &n = g.normal[i], &m = g.geometric[i], &a = g.albedo[i], &sp = g.specular[i], &e = g.emission[i];
         const vec4& p = u.positionStored ? g.position[i] : noPosition;
-        const float values[kSurfaceChannels + 1] = {n.x,  n.y,  n.z, n.w, m.x, m.y, m.z, a.x, a.y, a.z,
-                                                    sp.x, sp.y, sp.z, e.x, e.y, e.z, p.x, p.y, p.z, fb.depth[i]};
+        const float values[kSurfaceChannels + 1] = {n.x, n.y, n.z, n.w, m.x, m.y, m.z, a.x,  a.y,  a.z,        sp.x,
+                                                    sp.y, sp.z, e.x, e.y, e.z, p.x, p.y, p.z, sp.w, fb.depth[i]};
         for (int c = 0; c <= kSurfaceChannels; ++c) channels[c][l] = values[c];
       }
       if (bits == 0) continue;
@@ -511,12 +514,63 @@ void LightRows(const GBuffer& g, const DeferredUniforms& u, int rowBegin, int ro
       const GBufferTexelL<LaneF> surface{Vec3L<LaneF>(lane(0), lane(1), lane(2)),    lane(3),
                                          Vec3L<LaneF>(lane(4), lane(5), lane(6)),    Vec3L<LaneF>(lane(7), lane(8), lane(9)),
                                          Vec3L<LaneF>(lane(10), lane(11), lane(12)), Vec3L<LaneF>(lane(13), lane(14), lane(15)),
-                                         posWorld};
+                                         posWorld,                                   lane(kSsrReflectChannel)};
       const Vec4L<LaneF> colour = deferredLightingLanes<LaneF>(surface, u.lighting);
       HWY_ALIGN std::uint32_t words[kMaxLanes];
       hn::Store(rgbaWordsOf(colour), du, words);
       for (std::size_t l = 0; l < inRow; ++l) {
         if (((bits >> l) & 1u) != 0) std::memcpy(&fb.rgba[4 * (origin + l)], &words[l], sizeof(std::uint32_t));
+      }
+    }
+  }
+}
+
+// Screen-space reflections over rows [rowBegin, rowEnd): a vector of pixels of a row at a time,
+// gathered from the G-buffer, marched with ssrPixelLanes where a surface reflects; the hit
+// pixels get the new colour, the others keep theirs.
+void ReflectRows(const GBuffer& g, const SsrUniforms& u, const Mat4T<float>& worldFromClip, bool positionStored,
+                 int rowBegin, int rowEnd, Framebuffer& fb) {
+  const DF df;
+  const DU du;
+  const std::size_t lanes = laneCount();
+  const std::size_t width = static_cast<std::size_t>(fb.width);
+  constexpr int kChannels = 11;  // normal xyz, position xyz, ssr_reflect, depth, own colour rgb
+  HWY_ALIGN float channels[kChannels][kMaxLanes];
+  const vec4 noPosition(0.0f);
+  for (int py = rowBegin; py < rowEnd; ++py) {
+    for (std::size_t x = 0; x < width; x += lanes) {
+      const std::size_t inRow = std::min(lanes, width - x);
+      const std::size_t origin = fb.index(static_cast<int>(x), py);
+      std::uint64_t bits = 0;
+      for (std::size_t l = 0; l < lanes; ++l) {
+        const bool marched = l < inRow && fb.depth[origin + l] < kClearDepth && g.specular[origin + l].w > 0.0f;
+        if (marched) bits |= std::uint64_t{1} << l;
+        const std::size_t i = marched ? origin + l : origin;  // a sane texel for lanes not marched
+        const vec4& n = g.normal[i];
+        const vec4& p = positionStored ? g.position[i] : noPosition;
+        const float values[kChannels] = {n.x, n.y, n.z, p.x, p.y, p.z, g.specular[i].w, fb.depth[i],
+                                         u.colour[0][i], u.colour[1][i], u.colour[2][i]};
+        for (int c = 0; c < kChannels; ++c) channels[c][l] = values[c];
+        if (!marched) channels[6][l] = 0.0f;  // ssr_reflect 0: the lane is not marched
+      }
+      if (bits == 0) continue;
+      const auto lane = [&](int c) HWY_ATTR { return LaneF(hn::Load(df, channels[c])); };
+      const LaneF px = pixelColumnsF(static_cast<int>(x)), pyLanes(static_cast<float>(py));
+      const Vec3L<LaneF> posWorld =
+          positionStored ? Vec3L<LaneF>(lane(3), lane(4), lane(5))
+                         : worldFromWindowLanes<LaneF>(worldFromClip, u.viewportSize, px, pyLanes, lane(7));
+      const LaneF zero(0.0f);
+      Vec3L<LaneF> colour(lane(8), lane(9), lane(10));
+      const SsrMarchL<LaneF> m = (ssrPixelLanes<LaneF>)(u, Vec3L<LaneF>(lane(0), lane(1), lane(2)), posWorld, lane(6),
+                                                      lane(6) > zero, colour);
+      HWY_ALIGN float hit[kMaxLanes];
+      hn::Store(m.result.v, df, hit);
+      HWY_ALIGN std::uint32_t words[kMaxLanes];
+      hn::Store(rgbaWordsOf(Vec4L<LaneF>(colour, LaneF(1.0f))), du, words);
+      for (std::size_t l = 0; l < inRow; ++l) {
+        if (((bits >> l) & 1u) != 0 && hit[l] == static_cast<float>(static_cast<int>(SsrResult::Hit))) {
+          std::memcpy(&fb.rgba[4 * (origin + l)], &words[l], sizeof(std::uint32_t));
+        }
       }
     }
   }
@@ -558,6 +612,7 @@ FastKernels GetKernels() {
   k.shadeBin = &ShadeBin;
   k.surfaceBin = &SurfaceBin;
   k.lightRows = &LightRows;
+  k.reflectRows = &ReflectRows;
   k.phongPow = &PhongPow;
   return k;
 }

@@ -18,6 +18,7 @@
 #include "scene/texture.h"
 #include "softrender/cpu_renderer.h"
 #include "softrender/deferred.h"
+#include "softrender/ssr.h"
 #include "softrender/draw_list.h"
 #include "softrender/framebuffer.h"
 #include "softrender/interpolate.h"
@@ -117,6 +118,13 @@ struct FastKernels {
   // The deferred lighting pass over rows [rowBegin, rowEnd): every pixel whose depth is below
   // the clear depth gets deferredLightingLanes's colour (alpha 255); the others keep theirs.
   void (*lightRows)(const GBuffer& surfaces, const DeferredUniforms& u, int rowBegin, int rowEnd, Framebuffer& fb) = nullptr;
+
+  // Screen-space reflections over rows [rowBegin, rowEnd) (ssr-inl.h): each pixel with a
+  // surface and ssr_reflect > 0 (surfaces.specular.w) marches its mirror ray from its position
+  // (the G-buffer's, else rebuilt from depth through worldFromClip); a hit pixel gets
+  // ssrPixelLanes's colour (alpha 255), the others keep theirs. u's buffers must be set.
+  void (*reflectRows)(const GBuffer& surfaces, const SsrUniforms& u, const Mat4T<float>& worldFromClip,
+                      bool positionStored, int rowBegin, int rowEnd, Framebuffer& fb) = nullptr;
 
   // phongPow of x[0, count) with this target's vectors, into out (for the tests: the same
   // bits as powPositive).

@@ -72,6 +72,11 @@ class FastPipeline {
   // from `surfaces`, bins of rows on the pool's threads.
   void light(const GBuffer& surfaces, const DeferredUniforms& u, Framebuffer& fb);
 
+  // Screen-space reflections (ssr.h): fb's reflecting pixels marched, bins of rows on the
+  // pool's threads; the lit colour they read is copied first.
+  void reflect(const GBuffer& surfaces, SsrUniforms u, const Mat4T<float>& worldFromClip, bool positionStored,
+               Framebuffer& fb);
+
  private:
   // One item's vertex stage output, one entry per mesh vertex (capacity kept across frames).
   struct ItemVertices {
@@ -131,6 +136,7 @@ class FastPipeline {
                         BackEnd& scratch, bool depthOnly, GBuffer* surfaces);
 
   WorkerPool pool_;
+  SsrPlanes ssrPlanes_;  // what the reflections read of the lit frame (capacity kept across frames)
   FastKernels kernels_;  // the chosen Highway target's
   std::vector<ItemVertices> vertices_;  // per item
   std::vector<FrontEnd> frontEnds_;     // one per thread

@@ -16,6 +16,7 @@ ShadeUniformsT<T> makeShadeUniforms(const Material& material, const Scene& scene
   u.kd = Vec3T<T>(material.kd);
   u.ks = Vec3T<T>(material.ks);
   u.shininess = static_cast<T>(std::fmax(material.shininess, 0.0f));
+  u.ssrReflect = static_cast<T>(material.ssrReflect);
   // A map with no texels cannot be sampled; the feature is then off, as if absent.
   auto usable = [](const std::shared_ptr<const Texture>& t) -> const Texture* {
     return t && t->width > 0 && t->height > 0 && !t->rgba.empty() ? t.get() : nullptr;

@@ -47,6 +47,7 @@ template <typename T>
 struct ShadeUniformsT {
   Vec3T<T> ka{T(1)}, kd{T(1)}, ks{T(0)};
   T shininess = T(32);
+  T ssrReflect = T(0);  // the material's share of the screen-space reflection (the G-buffer's specular.w)
   const Texture* diffuseMap = nullptr;
   const Texture* normalMap = nullptr;
   const Texture* specularMap = nullptr;

@@ -373,8 +373,10 @@ void runCompare(CompareArgs& args) {
                         // The deferred pipeline's passes (0 for a forward frame; docs/deferred.md).
                         {"cpu_gbuffer_ms", cpuOut.stats.gbufferMilliseconds},
                         {"cpu_lighting_ms", cpuOut.stats.lightingMilliseconds},
+                        {"cpu_ssr_ms", cpuOut.stats.ssrMilliseconds},
                         {"gl_gbuffer_ms", glOut.stats.gbufferMilliseconds},
-                        {"gl_lighting_ms", glOut.stats.lightingMilliseconds}});
+                        {"gl_lighting_ms", glOut.stats.lightingMilliseconds},
+                        {"gl_ssr_ms", glOut.stats.ssrMilliseconds}});
   const ArtifactPaths paths = writeCompareArtifacts(args.outDir, cpuOut, glOut, result, json);
   std::optional<CaptureArtifactPaths> facePaths;
   if (faces) facePaths = writeCaptureArtifacts(args.outDir, *cpuOut.capturedFaces, *glOut.capturedFaces, *faces);

@@ -207,6 +207,14 @@ Json settingsJson(const RenderSettings& s) {
   j["lighting_space"] = std::string(toString(s.lightingSpace));
   j["pipeline"] = std::string(toString(s.pipeline));
   j["gbuffer_position"] = std::string(toString(s.gbufferPosition));
+  j["ssr"] = Json{{"enabled", s.ssr.enabled},
+                  {"march", std::string(toString(s.ssr.march))},
+                  {"max_steps", s.ssr.maxSteps},
+                  {"step", clean(s.ssr.step)},
+                  {"thickness", clean(s.ssr.thickness)},
+                  {"indirect_samples", s.ssr.indirectSamples},
+                  {"sample_distribution", std::string(toString(s.ssr.sampleDistribution))},
+                  {"reflect_strength", clean(s.ssr.reflectStrength)}};
   j["tangent_transform"] = std::string(toString(s.tangentTransform));
   j["texture_filter"] = std::string(toString(s.textureFilter));
   j["tbn_lines"] = Json{{"enabled", s.tbnLines.enabled}, {"length", clean(s.tbnLines.length)},
@@ -478,6 +486,12 @@ void printScene(std::ostream& out, const Scene& scene) {
       << ", lighting_space "
       << toString(s.lightingSpace) << ", tangent_transform "
       << toString(s.tangentTransform) << ", texture_filter " << toString(s.textureFilter) << "\n"
+      << "  ssr " << (s.ssr.enabled ? "on, " + std::string(toString(s.ssr.march)) + ", max_steps " +
+                                          std::to_string(s.ssr.maxSteps) + ", step " + num(s.ssr.step) +
+                                          ", thickness " + num(s.ssr.thickness) + ", reflect_strength " +
+                                          num(s.ssr.reflectStrength)
+                                    : std::string("off"))
+      << "\n"
       << "  tbn_lines " << (s.tbnLines.enabled ? "on" : "off") << ", length " << num(s.tbnLines.length) << ", mode "
       << toString(s.tbnLines.mode) << "\n";
 }

@@ -471,6 +471,7 @@ void GuiApp::frame(bool& finalFrame, bool present) {
                            {"horizon_stale", horizonMapStale(doc_, m)},
                            {"error", heightFieldErrors_.count(m) != 0 ? heightFieldErrors_.at(m) : std::string()},
                            {"reflectivity", material.reflectivity},
+                           {"ssr_reflect", material.ssrReflect},
                            {"refraction_index", material.refractionIndex},
                            {"fresnel", std::string(toString(material.fresnel))},
                            {"environment_specular", std::string(toString(material.environmentSpecular))},
@@ -484,6 +485,10 @@ void GuiApp::frame(bool& finalFrame, bool present) {
     state["anisotropy"] = doc_.scene.settings.anisotropy;
     state["pipeline"] = std::string(toString(doc_.scene.settings.pipeline));
     state["gbuffer_position"] = std::string(toString(doc_.scene.settings.gbufferPosition));
+    const SsrSettings& ssr = doc_.scene.settings.ssr;
+    state["ssr"] = {{"enabled", ssr.enabled},       {"march", std::string(toString(ssr.march))},
+                    {"max_steps", ssr.maxSteps},    {"step", ssr.step},
+                    {"thickness", ssr.thickness},   {"reflect_strength", ssr.reflectStrength}};
     state["buffer"] = std::string(toString(shownBuffer_));
     state["diff_buffer"] = std::string(toString(diff_.buffer));
     state["cpu_gbuffer"] = cpuFrame_.output && cpuFrame_.output->gbuffer != nullptr;

@@ -19,10 +19,12 @@ GlProbe GlWorker::probe(Renderer& renderer, const GlJob& job) const {
   // Every debug view at the pixel, lines off so they cannot cover it; each a one-pixel render
   // (renderGlPixel), not a frame.
   // Forward, as the CPU side shades the traced fragment (pixel_views.h): a deferred frame's
-  // G-buffer is listed on its own rows.
+  // G-buffer is listed on its own rows. No reflections either: a one-pixel render holds no
+  // other pixel for a ray to find.
   RenderSettings viewSettings = job.scene->settings;
   viewSettings.tbnLines.enabled = false;
   viewSettings.pipeline = Pipeline::Forward;
+  viewSettings.ssr.enabled = false;
   for (std::size_t i = 0; i < kViewCount; ++i) {
     if (queue_.superseded()) return result;
     viewSettings.view = kAllViews[i];

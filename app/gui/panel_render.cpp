@@ -21,6 +21,9 @@ constexpr FrontFace kFrontFaces[] = {FrontFace::Ccw, FrontFace::Cw};
 constexpr LightingSpace kLightingSpaces[] = {LightingSpace::World, LightingSpace::Tangent};
 constexpr Pipeline kPipelines[] = {Pipeline::Forward, Pipeline::Deferred};
 constexpr GBufferPosition kGBufferPositions[] = {GBufferPosition::Stored, GBufferPosition::Depth};
+// The marches drawn so far (dda_screen and hiz are named by the format, not drawn yet).
+constexpr SsrMarch kSsrMarches[] = {SsrMarch::LinearWorld, SsrMarch::AdaptiveWorld};
+constexpr float kSsrStepDragSpeed = 0.005f;  // world units per dragged point
 constexpr TangentTransform kTangentTransforms[] = {TangentTransform::Model, TangentTransform::InverseTranspose};
 constexpr const TextureFilter (&kTextureFilters)[6] = kAllTextureFilters;
 constexpr LineMode kLineModes[] = {LineMode::Core, LineMode::Immediate};
@@ -221,7 +224,7 @@ void GuiApp::drawRenderingTab() {
                        "forward: each fragment lit as it is drawn. deferred: a G-buffer pass writes each pixel's "
                        "surface, then a lighting pass lights every pixel once (docs/deferred.md). The debug views "
                        "draw forward.");
-  ImGui::BeginDisabled(settings.pipeline != Pipeline::Deferred);
+  ImGui::BeginDisabled(settings.pipeline != Pipeline::Deferred && !settings.ssr.enabled);  // reflections draw deferred too
   changed |= enumRadio("G position", settings.gbufferPosition, kGBufferPositions, labelWidth,
                        "Where the deferred lighting pass finds each pixel's world position. stored: a G-buffer "
                        "target holds the position forward lights (deferred matches forward). depth: rebuilt from "
@@ -255,6 +258,35 @@ void GuiApp::drawRenderingTab() {
                                 ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
   itemTooltip(anisotropyHelp);
   probe_.item("anisotropy");
+
+  sectionTitle("Reflections (SSR)");
+  SsrSettings& ssr = settings.ssr;
+  changed |= ImGui::Checkbox("Screen-space reflections", &ssr.enabled);
+  probe_.item("ssr_enabled");
+  itemTooltip("After the lighting pass, each pixel whose material has ssr reflect > 0 marches its mirror ray "
+              "through the depth buffer and adds the lit colour where it hits (docs/ssr.md). The frame draws "
+              "deferred: the march reads the G-buffer.");
+  ImGui::BeginDisabled(!ssr.enabled);
+  changed |= enumRadio("March", ssr.march, kSsrMarches, labelWidth,
+                       "linear_world: fixed world-space steps (the GAMES202 write-up's). adaptive_world: the first "
+                       "step is Step, halved at every overshoot down to Step / 16.");
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+  changed |= ImGui::SliderInt("Max steps", &ssr.maxSteps, 1, kMaxSsrSteps, "%d", ImGuiSliderFlags_Logarithmic |
+                                                                                      ImGuiSliderFlags_AlwaysClamp);
+  itemTooltip("The most steps a ray takes before it counts as a miss (max_steps).");
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+  changed |= ImGui::DragFloat("Step", &ssr.step, kSsrStepDragSpeed, 0.001f, 10.0f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+  itemTooltip("World units: linear_world's every step, adaptive_world's first (step).");
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+  changed |= ImGui::DragFloat("Thickness", &ssr.thickness, kSsrStepDragSpeed, 0.001f, 10.0f, "%.3f",
+                              ImGuiSliderFlags_AlwaysClamp);
+  itemTooltip("World units: how far behind the depth buffer's surface a ray may be and still hit it, on both "
+              "sides of the crossing (thickness). Below the depth a step covers, rays pass through.");
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+  changed |= ImGui::SliderFloat("Strength", &ssr.reflectStrength, 0.0f, kMaxSsrReflectStrength, "%.2f",
+                                ImGuiSliderFlags_AlwaysClamp);
+  itemTooltip("Scales every reflection (reflect_strength), times each material's ssr reflect.");
+  ImGui::EndDisabled();
 
   sectionTitle("TBN lines");
   changed |= ImGui::Checkbox("Draw T (red), B (green), N (blue) at every vertex", &settings.tbnLines.enabled);

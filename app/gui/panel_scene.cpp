@@ -861,6 +861,11 @@ bool GuiApp::drawEnvironmentControls(std::size_t index) {
     }
     return changed;
   };
+  ImGui::SetNextItemWidth(fieldWidth);
+  edited |= ImGui::SliderFloat("ssr reflect", &material.ssrReflect, 0.0f, 1.0f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+  itemTooltip("The share of the screen-space reflection this surface adds (ssr_reflect, [0, 1]); drawn with "
+              "Reflections (SSR) on, Rendering tab (docs/ssr.md).");
+  probe_.item(concat(key, "ssr_reflect").c_str());
   ImGui::PushID("environment");
   ImGui::TextDisabled("environment");
   ImGui::Indent();

@@ -77,6 +77,7 @@ inline constexpr SceneTolerance kSceneTolerances[] = {
     {"shadow_point_cube.json"},    // a point light's cube shadow map (6 x 512^2) over boxes, a ball and a wall
     {"shadow_peter_panning.json"},  // a thin card under a too-large bias: its shadow lost (peter-panning)
     {"shadow_spot.json"},  // a spot light's cone and its perspective shadow map (1024^2) over a box and a ball
+    {"ssr_mirror_floor.json"},  // a cube and a ball on a floor that reflects them (SSR, linear_world), shadowed
 };
 
 }  // namespace twr::suite

@@ -44,6 +44,7 @@ struct SuiteCase {
   int width = 0, height = 0;    // 0: the scene's output size
   bool deferred = false;        // settings.pipeline deferred (and checked against forward too)
   GBufferPosition position = GBufferPosition::Stored;  // a deferred frame's settings.gbuffer_position
+  std::optional<SsrMarch> ssrMarch;  // settings.ssr.march instead of the scene's
   std::string name;
 };
 
@@ -133,6 +134,21 @@ std::vector<SuiteCase> suiteCases() {
     c.name = stem(scene) + "_deferred_1280x720";
     cases.push_back(c);
   }
+  // Screen-space reflections (issue 19): every march drawn, at both sizes.
+  for (const SsrMarch march : {SsrMarch::LinearWorld, SsrMarch::AdaptiveWorld}) {
+    for (const int width : {640, 1280}) {
+      if (march == SsrMarch::LinearWorld && width == 640) continue;  // the row's own case
+      if (width == 1280 && kQuickSuite) continue;
+      SuiteCase c;
+      c.scene = "ssr_mirror_floor.json";
+      c.ssrMarch = march;
+      c.width = width;
+      c.height = width == 640 ? 480 : 720;
+      c.name = "ssr_mirror_floor_" + std::string(toString(march)) + "_" + std::to_string(width) + "x" +
+               std::to_string(c.height);
+      cases.push_back(c);
+    }
+  }
   // The shadow views on the shadowed scenes (the default scene shows them dimmed: no shadow).
   for (const char* scene : {"shadow_directional.json", "shadow_point_cube.json", "shadow_spot.json"}) {
     for (View view : {View::Shadow, View::LightDepth}) {
@@ -182,6 +198,7 @@ TEST_P(SceneSuite, CpuMatchesLlvmpipeWithinTolerance) {
   if (!c.filter.empty()) {
     ASSERT_TRUE(parse(c.filter, scene.settings.textureFilter));
   }
+  if (c.ssrMarch) scene.settings.ssr.march = *c.ssrMarch;
   if (c.deferred) {
     scene.settings.pipeline = Pipeline::Deferred;
     scene.settings.gbufferPosition = c.position;

@@ -218,6 +218,52 @@ TEST(SceneFileErrors, BadEnumValue) {
                  {"inline.json: settings.gbuffer_position: expected one of stored|depth, got \"view\""});
 }
 
+TEST(SceneFile, SsrSettingsAndMaterialKeys) {
+  const Scene defaults = parseScene(R"({"nodes": []})", kInline, kDataDir);
+  EXPECT_FALSE(defaults.settings.ssr.enabled);
+  EXPECT_FALSE(drawsSsr(defaults.settings));
+  EXPECT_FALSE(drawsDeferred(defaults.settings));  // defaults draw as before
+  const Scene scene = parseScene(R"({"materials": {"floor": {"ssr_reflect": 0.4}}, "nodes": [],
+      "settings": {"ssr": {"enabled": true, "march": "adaptive_world", "max_steps": 20, "step": 0.8,
+                           "thickness": 0.2, "indirect_samples": 0, "sample_distribution": "cosine",
+                           "reflect_strength": 0.5}}})",
+                                 kInline, kDataDir);
+  const SsrSettings& ssr = scene.settings.ssr;
+  EXPECT_TRUE(ssr.enabled);
+  EXPECT_EQ(ssr.march, SsrMarch::AdaptiveWorld);
+  EXPECT_EQ(ssr.maxSteps, 20);
+  EXPECT_FLOAT_EQ(ssr.step, 0.8f);
+  EXPECT_FLOAT_EQ(ssr.thickness, 0.2f);
+  EXPECT_EQ(ssr.sampleDistribution, SampleDistribution::Cosine);
+  EXPECT_FLOAT_EQ(ssr.reflectStrength, 0.5f);
+  EXPECT_FLOAT_EQ(scene.materials[0].ssrReflect, 0.4f);
+  EXPECT_TRUE(drawsDeferred(scene.settings));  // the reflections read the G-buffer
+  EXPECT_TRUE(scene.warnings.empty());
+  // On with nothing reflecting: said.
+  const Scene idle = parseScene(R"({"nodes": [], "settings": {"ssr": {"enabled": true}}})", kInline, kDataDir);
+  ASSERT_EQ(idle.warnings.size(), 1u);
+  EXPECT_NE(idle.warnings[0].find("no material has ssr_reflect > 0"), std::string::npos);
+}
+
+TEST(SceneFileErrors, BadSsrSettings) {
+  expectContains(parseError(R"({"nodes": [], "settings": {"ssr": {"march": "binary"}}})"),
+                 {"inline.json: settings.ssr.march: expected one of linear_world|adaptive_world|dda_screen|hiz, got \"binary\""});
+  expectContains(parseError(R"({"nodes": [], "settings": {"ssr": {"march": "hiz"}}})"),
+                 {"inline.json: settings.ssr.march: hiz is not drawn yet"});
+  expectContains(parseError(R"({"nodes": [], "settings": {"ssr": {"indirect_samples": 4}}})"),
+                 {"inline.json: settings.ssr.indirect_samples: indirect light is not drawn yet"});
+  expectContains(parseError(R"({"nodes": [], "settings": {"ssr": {"max_steps": 0}}})"),
+                 {"inline.json: settings.ssr.max_steps: expected an integer in [1, 1024]"});
+  expectContains(parseError(R"({"nodes": [], "settings": {"ssr": {"step": 0}}})"),
+                 {"inline.json: settings.ssr.step: expected a number > 0"});
+  expectContains(parseError(R"({"nodes": [], "settings": {"ssr": {"reflect_strength": 5}}})"),
+                 {"inline.json: settings.ssr.reflect_strength: expected a number in [0, 4.0], got 5"});
+  expectContains(parseError(R"({"nodes": [], "settings": {"ssr": {"enable": true}}})"),
+                 {"inline.json: settings.ssr.enable: unknown key"});
+  expectContains(parseError(R"({"materials": {"m": {"ssr_reflect": 1.5}}, "nodes": []})"),
+                 {"inline.json: materials.m.ssr_reflect: expected a number in [0, 1]"});
+}
+
 TEST(SceneFile, GBufferPositionStoredByDefault) {
   EXPECT_EQ(RenderSettings{}.gbufferPosition, GBufferPosition::Stored);
   const Scene scene = parseScene(R"({"nodes": [], "settings": {"pipeline": "deferred", "gbuffer_position": "depth"}})",
