@@ -90,6 +90,15 @@ RenderSettings randomSettings(ByteReader& r) {
   s.tbnLines.length = length > 0.0f ? length : 0.1f;  // the loader wants > 0
   s.pipeline = static_cast<Pipeline>(r.intIn(0, 1));
   s.gbufferPosition = static_cast<GBufferPosition>(r.intIn(0, 1));
+  // Reflections as the loader admits them: the drawn marches, few steps (the fuzzer's frames
+  // are tiny), a step and thickness > 0 from hostile values.
+  s.ssr.enabled = r.flag();
+  s.ssr.march = static_cast<SsrMarch>(r.intIn(0, 1));
+  s.ssr.maxSteps = r.intIn(1, 16);
+  const float step = r.nonNegativeFloat(), thickness = r.nonNegativeFloat();
+  s.ssr.step = step > 0.0f ? step : 0.05f;
+  s.ssr.thickness = thickness > 0.0f ? thickness : 0.1f;
+  s.ssr.reflectStrength = static_cast<float>(r.intIn(0, 4));
   return s;
 }
 
@@ -190,6 +199,7 @@ Scene randomScene(ByteReader& r) {
   material.kd = loaderColour(r);
   material.ks = loaderColour(r);
   material.shininess = r.nonNegativeFloat();
+  material.ssrReflect = static_cast<float>(r.intIn(0, 4)) / 4.0f;
   material.diffuseMap = randomTexture(r);
   material.normalMap = randomTexture(r);
   material.specularMap = randomTexture(r);

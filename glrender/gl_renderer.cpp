@@ -146,6 +146,7 @@ void validateRequest(const Scene& scene, const RenderSettings& settings, int wid
   if (const std::string problem = clipSlotProblem(settings); !problem.empty()) throw InputError("GL: " + problem);
   if (drawsSsr(settings)) {
     if (const std::string problem = ssrSizeProblem(width, height); !problem.empty()) throw InputError("GL: " + problem);
+    if (const std::string problem = ssrSettingsProblem(settings.ssr); !problem.empty()) throw InputError("GL: " + problem);
   }
   if (const std::string problem = projectionProblem(scene, width, height); !problem.empty()) {
     throw InputError("GL: " + problem);
@@ -213,6 +214,11 @@ class GlRenderer final : public Renderer {
     if (x < 0 || x >= width || yTop < 0 || yTop >= height) {
       throw InputError("GL: pixel (" + std::to_string(x) + ", " + std::to_string(yTop) + ") is outside the " +
                        std::to_string(width) + " x " + std::to_string(height) + " frame");
+    }
+    // A reflection reads other pixels of the lit frame, which a one-pixel render never draws.
+    if (drawsSsr(settings)) {
+      throw InputError("GL: a pixel render cannot draw screen-space reflections (they read the whole frame); "
+                       "turn settings.ssr off for it");
     }
     return draw(scene, settings, width, height, std::array<int, 2>{x, height - 1 - yTop});
   }

@@ -88,9 +88,12 @@ enum class LightType { Point, Directional };
 // A point light's spot cone (the scene file's "spot"): the light shines only within outerDeg
 // of the cone's axis, at full strength within innerDeg, and between the two its strength
 // falls with smoothstep(cos outer, cos inner, cos angle). Half-angles in degrees,
-// 0 <= innerDeg <= outerDeg < kMaxSpotOuterDeg; a shadowed spot light gets one perspective map
+// 0 <= innerDeg <= outerDeg, kMinSpotOuterDeg <= outerDeg < kMaxSpotOuterDeg; a shadowed spot light gets one perspective map
 // covering the cone (scene/shadow_map.h) instead of a cube map.
 inline constexpr float kMaxSpotOuterDeg = 89.0f;
+// The narrowest outer half-angle (degrees): below about 0.02 its cosine rounds to 1 in float
+// and the cone would light nothing.
+inline constexpr float kMinSpotOuterDeg = 0.1f;
 struct SpotCone {
   vec3 directionWorld{0.0f, -1.0f, 0.0f};  // the cone's axis, the way the light shines, unit length
   float innerDeg = 20.0f;

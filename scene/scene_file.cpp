@@ -535,9 +535,10 @@ class SceneReader {
     const Json* inner = find(j, "inner_deg");
     const Json* outer = find(j, "outer_deg");
     if (outer) spot.outerDeg = readNumber(*outer, childPath(path, "outer_deg"), NumberRule::Finite);
-    if (!(spot.outerDeg > 0.0f && spot.outerDeg < kMaxSpotOuterDeg)) {
-      fail(childPath(path, "outer_deg"), "expected a half-angle above 0 and below " + num(kMaxSpotOuterDeg) +
-                                             " degrees, got " + (outer ? quote(*outer) : num(spot.outerDeg)));
+    if (!(spot.outerDeg >= kMinSpotOuterDeg && spot.outerDeg < kMaxSpotOuterDeg)) {
+      fail(childPath(path, "outer_deg"), "expected a half-angle from " + num(kMinSpotOuterDeg) + " to below " +
+                                             num(kMaxSpotOuterDeg) + " degrees, got " +
+                                             (outer ? quote(*outer) : num(spot.outerDeg)));
     }
     // Without inner_deg the cone's soft edge is the default's share of it.
     spot.innerDeg = inner ? readNumber(*inner, childPath(path, "inner_deg"), NumberRule::Finite)

@@ -1,6 +1,7 @@
 #include "scene/settings.h"
 
 #include <array>
+#include <cmath>
 #include <utility>
 
 namespace twr {
@@ -99,6 +100,23 @@ std::string ssrSizeProblem(int width, int height) {
   return "settings.ssr: a frame of " + std::to_string(width) + "x" + std::to_string(height) + " (" +
          std::to_string(pixels) + " pixels) is not marched: at most " + std::to_string(kMaxSsrFramePixels) +
          " pixels (4096x4096), whose element indices are exact in a float lane";
+}
+
+std::string ssrSettingsProblem(const SsrSettings& ssr) {
+  if (ssr.march == SsrMarch::DdaScreen || ssr.march == SsrMarch::Hiz) {
+    return "settings.ssr.march: " + std::string(toString(ssr.march)) +
+           " is not drawn yet; linear_world and adaptive_world are (docs/ssr.md)";
+  }
+  if (ssr.indirectSamples != 0) return "settings.ssr.indirect_samples: indirect light is not drawn yet: only 0 is";
+  if (!(ssr.maxSteps >= 1 && ssr.maxSteps <= kMaxSsrSteps)) return "settings.ssr.max_steps: out of [1, 1024]";
+  if (!(ssr.step > 0.0f) || !std::isfinite(ssr.step)) return "settings.ssr.step: expected a finite number > 0";
+  if (!(ssr.thickness > 0.0f) || !std::isfinite(ssr.thickness)) {
+    return "settings.ssr.thickness: expected a finite number > 0";
+  }
+  if (!(ssr.reflectStrength >= 0.0f && ssr.reflectStrength <= kMaxSsrReflectStrength)) {
+    return "settings.ssr.reflect_strength: out of [0, 4]";
+  }
+  return "";
 }
 
 std::string_view toString(CullMode v) { return nameOf(kCull, v); }

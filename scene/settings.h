@@ -126,6 +126,11 @@ inline constexpr float kSsrAdaptiveMinStepRatio = 1.0f / 16.0f;
 inline constexpr long long kMaxSsrFramePixels = 1LL << 24;
 // Why a frame of this size cannot be marched; empty when it can. Both renderers refuse alike.
 std::string ssrSizeProblem(int width, int height);
+// Why these reflection settings cannot be drawn (a march or indirect light not built yet, a
+// value out of its range); empty when they can. Both renderers refuse alike, whoever filled
+// the settings in (the scene loader refuses the same by key).
+struct SsrSettings;
+std::string ssrSettingsProblem(const SsrSettings& ssr);
 struct SsrSettings {
   bool enabled = false;
   SsrMarch march = SsrMarch::LinearWorld;

@@ -105,6 +105,9 @@ class CpuRenderer final : public Renderer {
     if (const std::string problem = clipSlotProblem(settings); !problem.empty()) throw InputError("CPU: " + problem);
     if (drawsSsr(settings)) {
       if (const std::string problem = ssrSizeProblem(width, height); !problem.empty()) throw InputError("CPU: " + problem);
+      if (const std::string problem = ssrSettingsProblem(settings.ssr); !problem.empty()) {
+        throw InputError("CPU: " + problem);
+      }
     }
     if (const std::string problem = projectionProblem(scene, width, height); !problem.empty()) {
       throw InputError("CPU: " + problem);

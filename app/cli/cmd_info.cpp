@@ -482,7 +482,7 @@ void printScene(std::ostream& out, const Scene& scene) {
     out << "    " << num(p.x) << " x + " << num(p.y) << " y + " << num(p.z) << " z + " << num(p.w) << " >= 0\n";
   }
   out << "  view " << toString(s.view) << ", pipeline " << toString(s.pipeline)
-      << (s.pipeline == Pipeline::Deferred ? " (position " + std::string(toString(s.gbufferPosition)) + ")" : "")
+      << (drawsDeferred(s) ? " (drawn deferred, position " + std::string(toString(s.gbufferPosition)) + ")" : "")
       << ", lighting_space "
       << toString(s.lightingSpace) << ", tangent_transform "
       << toString(s.tangentTransform) << ", texture_filter " << toString(s.textureFilter) << "\n"

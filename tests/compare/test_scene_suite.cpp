@@ -273,14 +273,17 @@ TEST_P(SceneSuite, CpuMatchesLlvmpipeWithinTolerance) {
     }
   }
 
-  // Deferred: the G-buffers' targets channel by channel, and each renderer's deferred frame
-  // against its own forward frame, under the same limits.
-  if (c.deferred) {
+  // Deferred (asked for, or for the reflections): the G-buffers' targets channel by channel,
+  // the reflections' ssr_reflect (the specular target's w) too, and each renderer's deferred
+  // frame against its own forward frame, under the same limits.
+  if (c.deferred || drawsDeferred(scene.settings)) {
     ASSERT_TRUE(cpu.gbuffer && gl.gbuffer) << "a deferred frame without its G-buffer";
     for (PassBuffer buffer : kAllPassBuffers) {
       const std::vector<vec4>* ta = gbufferTargetOf(*cpu.gbuffer, buffer);
+      const std::vector<vec4>* tbOrNull = gbufferTargetOf(*gl.gbuffer, buffer);
+      ASSERT_EQ(ta == nullptr, tbOrNull == nullptr) << toString(buffer) << ": only one renderer has the target";
       if (!ta) continue;
-      const std::vector<vec4>& tb = *gbufferTargetOf(*gl.gbuffer, buffer);
+      const std::vector<vec4>& tb = *tbOrNull;
       const std::vector<float> pa = gbufferPlanes(*ta, width, height), pb = gbufferPlanes(tb, width, height);
       const DepthBufferMetrics d = compareDepthBuffers(pa, pb, width, height, 3, kGBufferTolerance);
       // As the colour targets allow over 1 level: limits.maxOver1Pct of the covered pixels.
@@ -297,10 +300,17 @@ TEST_P(SceneSuite, CpuMatchesLlvmpipeWithinTolerance) {
                       << "), allowed " << allowed << "; images in " << stem << "_*.png";
       }
     }
+    ASSERT_EQ(cpu.gbuffer->specular.size(), gl.gbuffer->specular.size());
+    for (std::size_t i = 0; i < cpu.gbuffer->specular.size(); ++i) {
+      ASSERT_EQ(cpu.gbuffer->specular[i].w, gl.gbuffer->specular[i].w) << "ssr_reflect at element " << i;
+    }
+    // Against forward only without reflections: a forward frame has none to compare.
     RenderSettings forward = scene.settings;
     forward.pipeline = Pipeline::Forward;
+    forward.ssr.enabled = false;
     const std::pair<const char*, const RenderOutput*> sides[] = {{"cpu", &cpu}, {"gl", &gl}};
     for (const auto& [side, deferredOut] : sides) {
+      if (drawsSsr(scene.settings)) break;
       const RenderOutput forwardOut = std::string(side) == "cpu" ? makeCpuRenderer()->render(scene, forward, width, height)
                                                                  : makeGlRenderer()->render(scene, forward, width, height);
       const CompareResult against = compareDetailed(*deferredOut, forwardOut, options);

@@ -185,10 +185,11 @@ TEST(ShadowMap, SceneFileReadsSpotLights) {
 }
 
 TEST(ShadowMap, SceneFileRefusesBadSpots) {
-  EXPECT_NE(shadowError(R"({"spot": {"outer_deg": 90}})").find("lights[0].spot.outer_deg: expected a half-angle above 0"),
+  EXPECT_NE(shadowError(R"({"spot": {"outer_deg": 90}})").find("lights[0].spot.outer_deg: expected a half-angle from 0.1"),
             std::string::npos)
       << shadowError(R"({"spot": {"outer_deg": 90}})");
   EXPECT_NE(shadowError(R"({"spot": {"outer_deg": 0}})").find("lights[0].spot.outer_deg"), std::string::npos);
+  EXPECT_NE(shadowError(R"({"spot": {"outer_deg": 0.01}})").find("lights[0].spot.outer_deg"), std::string::npos);
   EXPECT_NE(shadowError(R"({"spot": {"inner_deg": 35, "outer_deg": 30}})")
                 .find("lights[0].spot.inner_deg: expected a half-angle from 0 to outer_deg (30.0), got 35"),
             std::string::npos)

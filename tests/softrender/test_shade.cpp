@@ -95,11 +95,11 @@ TEST(Shade, DirectionalLightIsUnattenuatedAndTheSameEverywhere) {
 TEST(Shade, SpotConeScalesTheLightBySmoothstepOfTheAngle) {
   // A spot light 2 above the surface point, its axis tilted by a known angle from straight
   // down: full within 20 degrees, nothing beyond 30, smoothstep of the cosine between.
-  const auto attenuationAt = [](float tiltDeg) {
+  const auto attenuationAt = [](float tiltDeg, float innerDeg = 20.0f) {
     Light light;
     light.posWorld = vec3(0.0f, 0.0f, 2.0f);
     const float a = tiltDeg * 3.14159265f / 180.0f;
-    light.spot = SpotCone{vec3(std::sin(a), 0.0f, -std::cos(a)), 20.0f, 30.0f};
+    light.spot = SpotCone{vec3(std::sin(a), 0.0f, -std::cos(a)), innerDeg, 30.0f};
     ShadeUniforms u = uniformsWithLight(light.posWorld, {1, 0, 0});
     const SpotUniform spot = spotUniformOf(light);
     u.lights[0].spot = true;
@@ -122,6 +122,9 @@ TEST(Shade, SpotConeScalesTheLightBySmoothstepOfTheAngle) {
   Light hard;
   hard.spot = SpotCone{vec3(0.0f, 0.0f, -1.0f), 30.0f, 30.0f};
   EXPECT_EQ(spotUniformOf(hard).cone.y, kMinSpotCosineRange);
+  EXPECT_EQ(attenuationAt(29.0f, 30.0f), 1.0f);
+  EXPECT_EQ(attenuationAt(31.0f, 30.0f), 0.0f);
+  EXPECT_TRUE(std::isfinite(attenuationAt(30.0f, 30.0f)));
 }
 
 TEST(Shade, LightBehindTheSurfaceGivesOnlyAmbient) {
