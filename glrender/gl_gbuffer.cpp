@@ -3,7 +3,9 @@
 #include "glrender/gl_scene_draw.h"
 #include "scene/camera.h"
 #include "scene/renderer.h"
+#include "scene/settings.h"
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -34,6 +36,69 @@ GlTexture makeTarget(GLenum internalFormat, GLenum format, GLenum type, int widt
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
   glBindTexture(GL_TEXTURE_2D, 0);
   return texture;
+}
+
+// A full-screen pass's state: no depth test or writes, no culling, the scissor as given; the
+// scene's own is restored after, for the sky and the lines that draw on.
+class ScreenPassState {
+ public:
+  explicit ScreenPassState(bool keepScissor) {
+    glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask_);
+    depthTest_ = glIsEnabled(GL_DEPTH_TEST);
+    cull_ = glIsEnabled(GL_CULL_FACE);
+    scissor_ = glIsEnabled(GL_SCISSOR_TEST);
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_CULL_FACE);
+    if (!keepScissor) glDisable(GL_SCISSOR_TEST);
+  }
+  ~ScreenPassState() {
+    if (depthTest_) glEnable(GL_DEPTH_TEST);
+    glDepthMask(depthMask_);
+    if (cull_) glEnable(GL_CULL_FACE);
+    if (scissor_) glEnable(GL_SCISSOR_TEST);
+  }
+  ScreenPassState(const ScreenPassState&) = delete;
+  ScreenPassState& operator=(const ScreenPassState&) = delete;
+
+ private:
+  GLboolean depthMask_ = GL_TRUE, depthTest_ = GL_FALSE, cull_ = GL_FALSE, scissor_ = GL_FALSE;
+};
+
+// One full-screen triangle (sky.vert's) with the bound program.
+void drawScreenTriangle() {
+  GlVertexArray empty = makeGlVertexArray();  // core profile: a draw needs a vertex array
+  glBindVertexArray(empty.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+}
+
+// The surface distances' uniforms (ssr_distance.glsl), as makeSsrUniforms makes them: the
+// distance terms in double, rounded once.
+void setDistanceUniforms(GLuint program, const Scene& scene, const mat4& clipFromWorld) {
+  const double n = scene.camera.near, f = scene.camera.far;
+  glUniformMatrix4fv(uniformLocation(program, "clipFromWorld"), 1, GL_FALSE, &clipFromWorld[0][0]);
+  glUniform1f(uniformLocation(program, "distanceNumerator"), static_cast<float>(2.0 * n * f));
+  glUniform1f(uniformLocation(program, "distanceSum"), static_cast<float>(f + n));
+  glUniform1f(uniformLocation(program, "distanceDifference"), static_cast<float>(f - n));
+}
+
+// Binds `textures` to units 0, 1, ... and names each unit in the program's sampler; unbind()
+// clears them after the draw.
+template <std::size_t N>
+void bindTextures(GLuint program, const std::array<std::pair<const char*, GLuint>, N>& textures) {
+  for (std::size_t unit = 0; unit < N; ++unit) {
+    glUniform1i(uniformLocation(program, textures[unit].first), static_cast<GLint>(unit));
+    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
+    glBindTexture(GL_TEXTURE_2D, textures[unit].second);
+  }
+}
+void unbindTextures(std::size_t count) {
+  for (std::size_t unit = 0; unit < count; ++unit) {
+    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
+    glBindTexture(GL_TEXTURE_2D, 0);
+  }
+  glActiveTexture(GL_TEXTURE0);
 }
 
 }  // namespace
@@ -93,14 +158,7 @@ void GlGBuffer::light(ProgramCache& programs, const Scene& scene, const GlShadow
   const std::array<GLenum, 2> colourOnly = {GL_COLOR_ATTACHMENT0, GL_NONE};
   glDrawBuffers(set_ == GlFrame::Full ? 2 : 1, colourOnly.data());
 
-  // Saved and restored: the scene's state, for the sky and the lines after.
-  GLboolean depthMask = GL_TRUE;
-  glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask);
-  const GLboolean depthTest = glIsEnabled(GL_DEPTH_TEST);
-  const GLboolean cull = glIsEnabled(GL_CULL_FACE);
-  glDisable(GL_DEPTH_TEST);
-  glDepthMask(GL_FALSE);
-  glDisable(GL_CULL_FACE);
+  const ScreenPassState state(true);
 
   std::vector<std::string> defines;
   if (sceneHasShadows(scene)) defines.push_back("HAS_SHADOWS");
@@ -129,19 +187,12 @@ void GlGBuffer::light(ProgramCache& programs, const Scene& scene, const GlShadow
     glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + kPositionUnit));
     glBindTexture(GL_TEXTURE_2D, position_.id());
   }
-  GlVertexArray empty = makeGlVertexArray();  // core profile: a draw needs a vertex array
-  glBindVertexArray(empty.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
-  for (int k = 0; k <= kPositionUnit; ++k) {
-    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + k));
-    glBindTexture(GL_TEXTURE_2D, 0);
-  }
-  glActiveTexture(GL_TEXTURE0);
+  drawScreenTriangle();
+  unbindTextures(kPositionUnit + 1);
+  restoreSurfaceDrawBuffers();
+}
 
-  if (depthTest) glEnable(GL_DEPTH_TEST);
-  glDepthMask(depthMask);
-  if (cull) glEnable(GL_CULL_FACE);
+void GlGBuffer::restoreSurfaceDrawBuffers() const {
   // The surfaces' draw buffers again (colour, triangle id), as the frame's draws left them.
   const std::array<GLenum, 2> surfaces = {GL_COLOR_ATTACHMENT0,
                                           set_ == GlFrame::Full ? GLenum{GL_COLOR_ATTACHMENT1} : GLenum{GL_NONE}};
@@ -162,70 +213,116 @@ void GlGBuffer::reflect(ProgramCache& programs, const Scene& scene, const Render
   glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, width_, height_);  // the scissor does not limit a copy
   glBindTexture(GL_TEXTURE_2D, 0);
 
+  const SsrSettings& ssr = settings.ssr;
+  const int hizLevels = ssr.march == SsrMarch::Hiz ? hizLevelsOf(width_, height_) : 0;
+  if (ssr.march == SsrMarch::Hiz) buildHiz(programs, scene, clipFromWorld, hizLevels);
+
   glBindFramebuffer(GL_FRAMEBUFFER, targets.framebufferId());
+  glViewport(0, 0, width_, height_);
   const std::array<GLenum, 2> colourOnly = {GL_COLOR_ATTACHMENT0, GL_NONE};
   glDrawBuffers(set_ == GlFrame::Full ? 2 : 1, colourOnly.data());
-  GLboolean depthMask = GL_TRUE;
-  glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask);
-  const GLboolean depthTest = glIsEnabled(GL_DEPTH_TEST);
-  const GLboolean cull = glIsEnabled(GL_CULL_FACE);
-  glDisable(GL_DEPTH_TEST);
-  glDepthMask(GL_FALSE);
-  glDisable(GL_CULL_FACE);
+  const ScreenPassState state(true);
 
   std::vector<std::string> defines;
   if (storesPosition_) defines.push_back("GBUFFER_POSITION");
-  const GLuint program =
-      programs.get(ProgramDesc{"ssr", {"common.glsl", "sky.vert"}, {"common.glsl", "ssr.frag"}, defines});
+  const GLuint program = programs.get(
+      ProgramDesc{"ssr", {"common.glsl", "sky.vert"}, {"common.glsl", "ssr_distance.glsl", "ssr.frag"}, defines});
   glUseProgram(program);
-  const SsrSettings& ssr = settings.ssr;
-  const double n = scene.camera.near, f = scene.camera.far;
   const auto setFloat = [&](const char* name, float value) { glUniform1f(uniformLocation(program, name), value); };
-  glUniformMatrix4fv(uniformLocation(program, "clipFromWorld"), 1, GL_FALSE, &clipFromWorld[0][0]);
+  setDistanceUniforms(program, scene, clipFromWorld);
   if (!storesPosition_) {
     const mat4 worldFromClip = worldFromClipOf(clipFromWorld);
     glUniformMatrix4fv(uniformLocation(program, "worldFromClip"), 1, GL_FALSE, &worldFromClip[0][0]);
   }
   const vec2 viewportSize(static_cast<float>(width_), static_cast<float>(height_));
   glUniform2fv(uniformLocation(program, "viewportSize"), 1, &viewportSize.x);
-  // The distance terms as makeSsrUniforms makes them: double, rounded once.
-  setFloat("distanceNumerator", static_cast<float>(2.0 * n * f));
-  setFloat("distanceSum", static_cast<float>(f + n));
-  setFloat("distanceDifference", static_cast<float>(f - n));
   glUniform3fv(uniformLocation(program, "eyePosWorld"), 1, &scene.camera.position.x);
-  glUniform1i(uniformLocation(program, "adaptiveMarch"), ssr.march == SsrMarch::AdaptiveWorld ? 1 : 0);
+  const int marchKind = ssr.march == SsrMarch::LinearWorld ? 0 : ssr.march == SsrMarch::AdaptiveWorld ? 1 : 2;
+  glUniform1i(uniformLocation(program, "marchKind"), marchKind);
   glUniform1i(uniformLocation(program, "maxSteps"), ssr.maxSteps);
   setFloat("marchStep", ssr.step);
   setFloat("minStep", ssr.step * kSsrAdaptiveMinStepRatio);
   setFloat("thickness", ssr.thickness);
   setFloat("reflectStrength", ssr.reflectStrength);
-  // Texture units: depth, normal, specular, position, the lit colour.
-  const std::array<std::pair<const char*, GLuint>, 5> textures = {{{"gbufferDepth", depth_.id()},
+  // As makeSsrUniforms: the camera's near and far, rounded once.
+  setFloat("nearDistance", static_cast<float>(scene.camera.near));
+  setFloat("farDistance", static_cast<float>(scene.camera.far));
+  glUniform1i(uniformLocation(program, "hizLevels"), hizLevels);
+  const std::array<std::pair<const char*, GLuint>, 6> textures = {{{"gbufferDepth", depth_.id()},
                                                                    {"gbufferNormal", targets_[0].id()},
                                                                    {"gbufferSpecular", targets_[3].id()},
                                                                    {"gbufferPosition", position_.id()},
-                                                                   {"litColour", litCopy_.id()}}};
-  for (std::size_t unit = 0; unit < textures.size(); ++unit) {
-    glUniform1i(uniformLocation(program, textures[unit].first), static_cast<GLint>(unit));
-    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
-    glBindTexture(GL_TEXTURE_2D, textures[unit].second);
-  }
-  GlVertexArray empty = makeGlVertexArray();  // core profile: a draw needs a vertex array
-  glBindVertexArray(empty.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
-  for (std::size_t unit = 0; unit < textures.size(); ++unit) {
-    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
-    glBindTexture(GL_TEXTURE_2D, 0);
-  }
-  glActiveTexture(GL_TEXTURE0);
+                                                                   {"litColour", litCopy_.id()},
+                                                                   {"hizDistance", hiz_.id()}}};
+  bindTextures(program, textures);
+  drawScreenTriangle();
+  unbindTextures(textures.size());
+  restoreSurfaceDrawBuffers();
+}
 
-  if (depthTest) glEnable(GL_DEPTH_TEST);
-  glDepthMask(depthMask);
-  if (cull) glEnable(GL_CULL_FACE);
-  const std::array<GLenum, 2> surfaces = {GL_COLOR_ATTACHMENT0,
-                                          set_ == GlFrame::Full ? GLenum{GL_COLOR_ATTACHMENT1} : GLenum{GL_NONE}};
-  glDrawBuffers(2, surfaces.data());
+void GlGBuffer::buildHiz(ProgramCache& programs, const Scene& scene, const mat4& clipFromWorld, int levels) {
+  if (hiz_.id() == 0 || hizWidth_ != width_ || hizHeight_ != height_ || hizLevels_ != levels) {
+    hiz_ = makeGlTexture();
+    glBindTexture(GL_TEXTURE_2D, hiz_.id());
+    for (int k = 0; k <= levels; ++k) {
+      glTexImage2D(GL_TEXTURE_2D, k, GL_R32F, std::max(1, width_ >> k), std::max(1, height_ >> k), 0, GL_RED, GL_FLOAT,
+                   nullptr);
+    }
+    // Read with texelFetch at a level; levels 0 to `levels` defined and no more, so the
+    // texture is mipmap complete (a level above the base is only drawn into then).
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, levels);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    hizFramebuffer_ = makeGlFramebuffer();
+    hizWidth_ = width_;
+    hizHeight_ = height_;
+    hizLevels_ = levels;
+  }
+  const ScreenPassState state(false);  // every texel of every level, whatever the frame's scissor
+  glBindFramebuffer(GL_FRAMEBUFFER, hizFramebuffer_.id());
+  const GLenum target = GL_COLOR_ATTACHMENT0;
+  glDrawBuffers(1, &target);
+  std::vector<std::string> defines = {"HIZ_FROM_GBUFFER"};
+  if (storesPosition_) defines.push_back("GBUFFER_POSITION");
+  const GLuint fromGBuffer = programs.get(
+      ProgramDesc{"hiz_from_gbuffer", {"common.glsl", "sky.vert"}, {"common.glsl", "ssr_distance.glsl", "hiz.frag"}, defines});
+  const GLuint fromBelow =
+      programs.get(ProgramDesc{"hiz", {"common.glsl", "sky.vert"}, {"common.glsl", "hiz.frag"}, {}});
+  for (int k = 0; k <= levels; ++k) {
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, hiz_.id(), k);
+    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+      throw std::logic_error("GL: Hi-Z level " + std::to_string(k) + " framebuffer incomplete (status " +
+                             std::to_string(status) + ")");
+    }
+    glViewport(0, 0, std::max(1, width_ >> k), std::max(1, height_ >> k));
+    if (k == 0) {
+      glUseProgram(fromGBuffer);
+      setDistanceUniforms(fromGBuffer, scene, clipFromWorld);
+      const std::array<std::pair<const char*, GLuint>, 2> textures = {
+          {{"gbufferDepth", depth_.id()}, {"gbufferPosition", position_.id()}}};
+      bindTextures(fromGBuffer, textures);
+      drawScreenTriangle();
+      unbindTextures(textures.size());
+      continue;
+    }
+    // The level below alone is read while this one is drawn: the base level, with a filter
+    // that reads the base alone (no feedback loop).
+    glBindTexture(GL_TEXTURE_2D, hiz_.id());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, k - 1);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glUseProgram(fromBelow);
+    const std::array<std::pair<const char*, GLuint>, 1> textures = {{{"levelBelow", hiz_.id()}}};
+    bindTextures(fromBelow, textures);
+    drawScreenTriangle();
+    unbindTextures(textures.size());
+  }
+  glBindTexture(GL_TEXTURE_2D, hiz_.id());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+  glBindTexture(GL_TEXTURE_2D, 0);
 }
 
 std::shared_ptr<GBuffer> GlGBuffer::readBack() const {

@@ -35,14 +35,19 @@ class GlGBuffer {
 
   // Screen-space reflections (docs/ssr.md), after light(): copies the frame's lit colour into
   // a texture and draws ssr.frag over the frame's colour alone, which changes the pixels whose
-  // mirror ray hits. The caller's scissor applies.
+  // mirror ray hits. The caller's scissor applies (not to the hiz march's chain, built whole).
   void reflect(ProgramCache& programs, const Scene& scene, const RenderSettings& settings, const mat4& clipFromWorld,
                const RenderTargets& targets);
+
+  // The hiz march's chain (shaders/hiz.frag): level 0 the surface distances, `levels` above.
+  void buildHiz(ProgramCache& programs, const Scene& scene, const mat4& clipFromWorld, int levels);
 
   // The targets (five, or six with the position), top row first (a full frame's compare rows).
   std::shared_ptr<GBuffer> readBack() const;
 
  private:
+  void restoreSurfaceDrawBuffers() const;
+
   int width_ = 0, height_ = 0;
   GlFrame set_ = GlFrame::Full;
   bool storesPosition_ = false;
@@ -53,6 +58,9 @@ class GlGBuffer {
   GlTexture depth_;
   GlTexture litCopy_;  // reflect()'s copy of the lit colour (RGBA8), made at the frame's size
   int litCopyWidth_ = 0, litCopyHeight_ = 0;
+  GlTexture hiz_;  // the hiz march's min-distance chain (R32F, one level per halving)
+  GlFramebuffer hizFramebuffer_;
+  int hizWidth_ = 0, hizHeight_ = 0, hizLevels_ = -1;
 };
 
 }  // namespace twr

@@ -1027,7 +1027,7 @@ class SceneReader {
   }
 
   // settings.ssr (docs/ssr.md). Every key of the format is read; what is not drawn yet
-  // (the dda_screen and hiz marches, indirect samples) is refused by name, never drawn wrong.
+  // (indirect samples) is refused by name, never drawn wrong.
   void readSsr(const Json& j, const std::string& path) {
     requireObject(j, path);
     checkKeys(j, path,
@@ -1038,13 +1038,13 @@ class SceneReader {
     if (const Json* v = find(j, "enabled")) ssr.enabled = readBool(*v, childPath(path, "enabled"));
     if (const Json* v = find(j, "march")) {
       ssr.march = readEnum<SsrMarch>(*v, childPath(path, "march"));
-      if (ssr.march == SsrMarch::DdaScreen || ssr.march == SsrMarch::Hiz) {
-        fail(childPath(path, "march"), std::string(toString(ssr.march)) +
-                                           " is not drawn yet; linear_world and adaptive_world are (docs/ssr.md)");
-      }
     }
     if (const Json* v = find(j, "max_steps")) ssr.maxSteps = readInt(*v, childPath(path, "max_steps"), 1, kMaxSsrSteps);
     if (const Json* v = find(j, "step")) ssr.step = readNumber(*v, childPath(path, "step"), NumberRule::Positive);
+    if (find(j, "step") && (ssr.march == SsrMarch::DdaScreen || ssr.march == SsrMarch::Hiz)) {
+      scene_.warnings.push_back(fileName_ + ": " + childPath(path, "step") + ": read and ignored: " +
+                                std::string(toString(ssr.march)) + " steps one pixel at a time (docs/ssr.md)");
+    }
     if (const Json* v = find(j, "thickness")) {
       ssr.thickness = readNumber(*v, childPath(path, "thickness"), NumberRule::Positive);
     }

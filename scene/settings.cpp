@@ -102,11 +102,13 @@ std::string ssrSizeProblem(int width, int height) {
          " pixels (4096x4096), whose element indices are exact in a float lane";
 }
 
+int hizLevelsOf(int width, int height) {
+  int levels = 0;
+  while (levels < kMaxHizLevels && (width >> (levels + 1)) >= 1 && (height >> (levels + 1)) >= 1) ++levels;
+  return levels;
+}
+
 std::string ssrSettingsProblem(const SsrSettings& ssr) {
-  if (ssr.march == SsrMarch::DdaScreen || ssr.march == SsrMarch::Hiz) {
-    return "settings.ssr.march: " + std::string(toString(ssr.march)) +
-           " is not drawn yet; linear_world and adaptive_world are (docs/ssr.md)";
-  }
   if (ssr.indirectSamples != 0) return "settings.ssr.indirect_samples: indirect light is not drawn yet: only 0 is";
   if (!(ssr.maxSteps >= 1 && ssr.maxSteps <= kMaxSsrSteps)) return "settings.ssr.max_steps: out of [1, 1024]";
   if (!(ssr.step > 0.0f) || !std::isfinite(ssr.step)) return "settings.ssr.step: expected a finite number > 0";

@@ -113,7 +113,11 @@ struct TbnLines {
 //                   `thickness` (both sides of the crossing), placed between the two steps;
 //   adaptive_world  its adaptive step: `step` first, halved at every overshoot until it is
 //                   step / 16, then the same test;
-//   dda_screen, hiz named by the scene format, not drawn yet (refused at load).
+//   dda_screen      the ray as a line on the screen, one pixel per step (perspective-correct:
+//                   1 / eye distance is linear on the screen); a hit where the ray between two
+//                   samples meets the pixel's surface within `thickness`; `step` is not used;
+//   hiz             dda_screen's samples and answer in fewer steps: cells of a min-distance
+//                   mip chain the ray passes wholly in front of are skipped at once.
 enum class SsrMarch { LinearWorld, AdaptiveWorld, DdaScreen, Hiz };
 enum class SampleDistribution { Uniform, Cosine };
 inline constexpr int kMaxSsrSteps = 1024;
@@ -126,6 +130,11 @@ inline constexpr float kSsrAdaptiveMinStepRatio = 1.0f / 16.0f;
 inline constexpr long long kMaxSsrFramePixels = 1LL << 24;
 // Why a frame of this size cannot be marched; empty when it can. Both renderers refuse alike.
 std::string ssrSizeProblem(int width, int height);
+// The most levels above the frame the hiz march's chain holds (a 65536-pixel side halves 16 times).
+inline constexpr int kMaxHizLevels = 16;
+// How many levels above a width x height frame its Hi-Z chain holds: while both sides are at
+// least 1 (floor(log2(min(width, height))), at most kMaxHizLevels). Both renderers build these.
+int hizLevelsOf(int width, int height);
 // Why these reflection settings cannot be drawn (a march or indirect light not built yet, a
 // value out of its range); empty when they can. Both renderers refuse alike, whoever filled
 // the settings in (the scene loader refuses the same by key).
@@ -135,7 +144,7 @@ struct SsrSettings {
   bool enabled = false;
   SsrMarch march = SsrMarch::LinearWorld;
   int maxSteps = 64;        // [1, kMaxSsrSteps]
-  float step = 0.05f;       // world units, > 0: linear's every step, adaptive's first
+  float step = 0.05f;       // world units, > 0: linear's every step, adaptive's first (screen marches: unused)
   float thickness = 0.1f;   // world units, > 0: how far behind a surface a ray still hits it
   int indirectSamples = 0;  // [0, kMaxSsrIndirectSamples]; only 0 is drawn yet
   SampleDistribution sampleDistribution = SampleDistribution::Uniform;

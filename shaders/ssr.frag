@@ -3,29 +3,27 @@
 // (the G-buffer's specular.w) marches its mirror ray through the depth buffer; on a hit it adds
 // reflect_strength * ssr_reflect times the lit colour there, every other fragment is discarded.
 // C++ twin: softrender/ssr-inl.h, function by function in the same order of operations.
-// Included after common.glsl; GBUFFER_POSITION as in deferred_lighting.frag.
+// Included after common.glsl and ssr_distance.glsl (the surface distances; GBUFFER_POSITION as
+// there).
 
-uniform sampler2D gbufferDepth;     // window depth, 1 where nothing was drawn
 uniform sampler2D gbufferNormal;    // xyz: the lighting normal, world
 uniform sampler2D gbufferSpecular;  // w: ssr_reflect
-#ifdef GBUFFER_POSITION
-uniform sampler2D gbufferPosition;  // xyz: the world position
-#else
+#ifndef GBUFFER_POSITION
 uniform mat4 worldFromClip;         // the inverse of the camera's clipFromWorld
 #endif
 uniform sampler2D litColour;        // the frame after the lighting pass (RGBA8)
-uniform mat4 clipFromWorld;
 uniform vec2 viewportSize;          // pixels
-uniform float distanceNumerator;    // 2 n f
-uniform float distanceSum;          // f + n
-uniform float distanceDifference;   // f - n
 uniform vec3 eyePosWorld;
-uniform int adaptiveMarch;          // 0: linear_world, 1: adaptive_world
+uniform int marchKind;              // 0: linear_world, 1: adaptive_world, 2: dda_screen or hiz
 uniform int maxSteps;
 uniform float marchStep;            // world units: linear's every step, adaptive's first
 uniform float minStep;              // adaptive's smallest
 uniform float thickness;            // world units
 uniform float reflectStrength;
+uniform float nearDistance;         // the camera's near and far, world units: a screen ray's ends
+uniform float farDistance;
+uniform int hizLevels;              // hiz: the chain's levels above the frame; 0 for dda_screen
+uniform sampler2D hizDistance;      // level k: the least surface distance of 2^k x 2^k pixels
 
 layout(location = 0) out vec4 fragColour;
 
@@ -57,12 +55,6 @@ struct Screen {
   bool onScreen;
   ivec2 pixel;
 };
-// A world point's eye distance: the clip w (ssrDistanceOfPointLanes).
-float distanceOfPoint(vec3 p) {
-  mat4 m = clipFromWorld;  // columns summed from the left
-  return ((m[0][3] * p.x + m[1][3] * p.y) + m[2][3] * p.z) + m[3][3];
-}
-
 Screen screenOf(vec3 p) {
   mat4 m = clipFromWorld;  // columns summed from the left
   float x = ((m[0][0] * p.x + m[1][0] * p.y) + m[2][0] * p.z) + m[3][0];
@@ -77,24 +69,6 @@ Screen screenOf(vec3 p) {
                s.window.y < viewportSize.y;
   s.pixel = s.onScreen ? ivec2(floor(s.window)) : ivec2(0, 0);
   return s;
-}
-
-// A window depth's eye distance (ssrDistanceOfDepthLanes), the far plane at the clear depth.
-float distanceOfDepth(float d) {
-  float zNdc = 2.0 * d - 1.0;
-  return distanceNumerator / (distanceSum - zNdc * distanceDifference);
-}
-
-// The eye distance of the surface the frame holds at a pixel (ssrPlanesOf's plane): the stored
-// position's own, the same floats on both renderers; else the depth's.
-float bufferDistance(ivec2 pixel) {
-  float d = texelFetch(gbufferDepth, pixel, 0).r;
-  if (!(d < 1.0)) return distanceOfDepth(1.0);
-#ifdef GBUFFER_POSITION
-  return distanceOfPoint(texelFetch(gbufferPosition, pixel, 0).xyz);
-#else
-  return distanceOfDepth(d);
-#endif
 }
 
 // The march (ssrMarchLanes): the result, the steps, the hit pixel.
@@ -113,7 +87,7 @@ float march(vec3 origin, vec3 dir, out float steps, out ivec2 hitPixel) {
     if (!sn.onScreen) return SSR_OFF_SCREEN;
     float surfaceNext = bufferDistance(sn.pixel);
     bool inFront = sn.w < surfaceNext;
-    bool decide = !inFront && (adaptiveMarch == 0 || !(stepLength > minStep));
+    bool decide = !inFront && (marchKind == 0 || !(stepLength > minStep));
     if (decide) {
       Screen sc = screenOf(origin + dir * tCur);
       float s1 = bufferDistance(sc.pixel) - sc.w;
@@ -128,9 +102,131 @@ float march(vec3 origin, vec3 dir, out float steps, out ivec2 hitPixel) {
       return SSR_BEHIND;
     }
     if (inFront) tCur = tNext;
-    if (adaptiveMarch != 0 && !inFront) stepLength = stepLength * 0.5;
+    if (marchKind == 1 && !inFront) stepLength = stepLength * 0.5;
   }
   return result;
+}
+
+// The screen marches' ray as a line on the screen (ssrScreenRayLanes): sample j at
+// (x0, y0) + step j, one pixel a step along the major axis, its eye distance 1 / (k0 + stepK j).
+struct ScreenRay {
+  vec2 origin;      // window position, pixels
+  vec2 step;        // pixels per sample
+  float k0, stepK;  // 1 / eye distance at the origin and its change per sample
+  float lastSample;
+};
+ScreenRay screenRay(vec3 origin, vec3 dir) {
+  mat4 m = clipFromWorld;
+  Screen s0 = screenOf(origin);
+  float wPerT = (m[0][3] * dir.x + m[1][3] * dir.y) + m[2][3] * dir.z;
+  bool away = wPerT > 0.0;
+  bool toward = wPerT < 0.0;
+  float tAway = (farDistance - s0.w) / (away ? wPerT : 1.0);
+  float tToward = (nearDistance - s0.w) / (toward ? wPerT : -1.0);
+  float tEnd = min(max(away ? tAway : (toward ? tToward : farDistance), 0.0), farDistance);
+  Screen s1 = screenOf(origin + dir * tEnd);
+  float dx = s1.window.x - s0.window.x;
+  float dy = s1.window.y - s0.window.y;
+  float len = max(abs(dx), abs(dy));
+  bool long1 = len >= 1.0;
+  float safeLength = long1 ? len : 1.0;
+  float safeW0 = s0.w > 0.0 ? s0.w : 1.0;
+  float safeW1 = s1.w > 0.0 ? s1.w : 1.0;
+  ScreenRay r;
+  r.origin = s0.window;
+  r.step = vec2(dx / safeLength, dy / safeLength);
+  r.k0 = 1.0 / safeW0;
+  r.stepK = (1.0 / safeW1 - r.k0) / safeLength;
+  r.lastSample = long1 && s0.w > 0.0 ? floor(len) : 0.0;
+  return r;
+}
+
+// Sample j of a screen ray (ssrSampleLanes).
+struct Sample {
+  float w;
+  vec2 pixel;  // 0 off the screen
+  bool onScreen;
+};
+Sample sampleAt(ScreenRay r, float j) {
+  float x = r.origin.x + r.step.x * j;
+  float y = r.origin.y + r.step.y * j;
+  Sample s;
+  s.w = 1.0 / (r.k0 + r.stepK * j);
+  s.onScreen = x >= 0.0 && x < viewportSize.x && y >= 0.0 && y < viewportSize.y;
+  s.pixel = vec2(floor(s.onScreen ? x : 0.0), floor(s.onScreen ? y : 0.0));
+  return s;
+}
+
+// dda_screen (hizLevels 0) and hiz (ssrScreenMarchLanes): the result, the steps, the hit pixel.
+float screenMarch(vec3 origin, vec3 dir, out float steps, out ivec2 hitPixel) {
+  steps = 0.0;
+  hitPixel = ivec2(0, 0);
+  ScreenRay ray = screenRay(origin, dir);
+  float skyDistance = distanceOfDepth(1.0);  // where nothing was drawn (ssrUniforms's skyDistance)
+  float topLevel = float(hizLevels);
+  float j = 0.0;         // the last sample marched: it and every one before lie in front
+  float level = 0.0;     // the level the next sample is tried at
+  float cellSize = 1.0;  // 2^level pixels
+  for (int i = 0; i < maxSteps; ++i) {
+    float n = j + 1.0;
+    steps = steps + 1.0;
+    if (n > ray.lastSample) return SSR_MISS;
+    Sample sn = sampleAt(ray, n);
+    if (!sn.onScreen) return SSR_OFF_SCREEN;
+    if (level == 0.0) {
+      float surfaceN = bufferDistance(ivec2(sn.pixel));
+      bool inFront = sn.w < surfaceN || !(surfaceN < skyDistance);  // in front, or nothing there
+      if (!inFront) {
+        // The ray's nearer end of the last step, against this pixel's surface.
+        float behindBy = min(sampleAt(ray, j).w, sn.w) - surfaceN;
+        if (behindBy < thickness) {
+          hitPixel = ivec2(sn.pixel);
+          return SSR_HIT;
+        }
+        return SSR_BEHIND;
+      }
+      j = n;
+      if (topLevel > 0.0) {
+        level = 1.0;
+        cellSize = 2.0;
+      }
+    } else {
+      float levelWidth = floor(viewportSize.x / cellSize);
+      float levelHeight = floor(viewportSize.y / cellSize);
+      float cx = min(floor(sn.pixel.x / cellSize), levelWidth - 1.0);
+      float cy = min(floor(sn.pixel.y / cellSize), levelHeight - 1.0);
+      float left = cx * cellSize;
+      float bottom = cy * cellSize;
+      float right = cx == levelWidth - 1.0 ? viewportSize.x : left + cellSize;
+      float top = cy == levelHeight - 1.0 ? viewportSize.y : bottom + cellSize;
+      bool rightward = ray.step.x > 0.0;
+      bool leftward = ray.step.x < 0.0;
+      bool upward = ray.step.y > 0.0;
+      bool downward = ray.step.y < 0.0;
+      float safeStepX = rightward || leftward ? ray.step.x : 1.0;
+      float safeStepY = upward || downward ? ray.step.y : 1.0;
+      float lastX = rightward ? (0.0 - floor((ray.origin.x - right) / safeStepX)) - 1.0
+                              : (leftward ? floor((left - ray.origin.x) / safeStepX) : ray.lastSample);
+      float lastY = upward ? (0.0 - floor((ray.origin.y - top) / safeStepY)) - 1.0
+                           : (downward ? floor((bottom - ray.origin.y) / safeStepY) : ray.lastSample);
+      float last = min(min(lastX, lastY), ray.lastSample);
+      Sample sl = sampleAt(ray, last);
+      bool fits = last >= n && sl.onScreen && sl.pixel.x >= left && sl.pixel.x < right && sl.pixel.y >= bottom &&
+                  sl.pixel.y < top;
+      float cellLeast = fits ? texelFetch(hizDistance, ivec2(int(cx), int(cy)), int(level)).r : 0.0;
+      if (fits && max(sn.w, sl.w) < cellLeast) {
+        j = last;
+        if (level < topLevel) {
+          level = level + 1.0;
+          cellSize = cellSize * 2.0;
+        }
+      } else {
+        level = level - 1.0;
+        cellSize = cellSize * 0.5;
+      }
+    }
+  }
+  return SSR_MISS;
 }
 
 void main() {
@@ -148,7 +244,7 @@ void main() {
   vec3 r = safeNormalize((2.0 * dot(nl, wo)) * nl - wo);
   float steps;
   ivec2 hitPixel;
-  float result = march(posWorld, r, steps, hitPixel);
+  float result = marchKind == 2 ? screenMarch(posWorld, r, steps, hitPixel) : march(posWorld, r, steps, hitPixel);
   if (result != SSR_HIT) discard;  // the lit colour stays
   vec3 colour = texelFetch(litColour, pixel, 0).rgb;
   vec3 reflected = texelFetch(litColour, hitPixel, 0).rgb;

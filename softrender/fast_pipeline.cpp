@@ -317,8 +317,7 @@ void FastPipeline::draw(const std::vector<ItemState>& items, vec4 background, Fr
 void FastPipeline::reflect(const GBuffer& surfaces, SsrUniforms u, const Mat4T<float>& worldFromClip,
                            bool positionStored, Framebuffer& fb) {
   ssrPlanesOf(fb, surfaces, positionStored, u, ssrPlanes_);
-  u.surfaceDistance = ssrPlanes_.surfaceDistance.data();
-  for (std::size_t c = 0; c < 3; ++c) u.colour[c] = ssrPlanes_.rgb[c].data();
+  useSsrPlanes(ssrPlanes_, u);
   const int binCount = (fb.height + kBinRows - 1) / kBinRows;
   pool_.run(binCount, [&](int bin, int) {
     kernels_.reflectRows(surfaces, u, worldFromClip, positionStored, bin * kBinRows,

@@ -144,6 +144,168 @@ TWR_LANE_INLINE SsrMarchL<L> ssrMarchLanes(const SsrUniformsT<ScalarOf<L>>& u, c
   return m;
 }
 
+// The screen marches' ray (ssr.frag's screenRay): the mirror ray from `origin` along the unit
+// `dir` as a line on the screen, from the origin's window position to where the ray's eye
+// distance reaches the far distance (moving away from the eye) or the near one (toward it), at
+// most farDistance world units along it. Sample j lies j steps from the origin, a step one
+// pixel along the line's major axis; 1 / (eye distance) is linear on the screen, so the ray's
+// eye distance at sample j is 1 / (k0 + stepK j) (McGuire and Mara 2014: perspective-correct).
+template <typename L>
+struct SsrScreenRayL {
+  L x0, y0;        // the origin's window position (pixels)
+  L stepX, stepY;  // window pixels per sample: 1 along the major axis
+  L k0, stepK;     // 1 / eye distance at the origin, and its change per sample (1 / world units)
+  L lastSample;    // the samples run 1 .. lastSample (0: the line is under a pixel long)
+};
+template <typename L>
+TWR_LANE_INLINE SsrScreenRayL<L> ssrScreenRayLanes(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& origin,
+                                                   const Vec3L<L>& dir) {
+  using S = ScalarOf<L>;
+  const L zero(S(0)), one(S(1));
+  const auto& m = u.clipFromWorld;
+  const SsrScreenL<L> s0 = (ssrScreenOfLanes<L>)(u, origin);
+  // The eye distance's change per world unit along the ray (the clip w row, without its offset).
+  const L wPerT = (L(m[0][3]) * dir.x + L(m[1][3]) * dir.y) + L(m[2][3]) * dir.z;
+  const L nearW(u.nearDistance), farW(u.farDistance);
+  const MaskOf<L> away = wPerT > zero, toward = wPerT < zero;
+  const L tAway = (farW - s0.w) / select(away, wPerT, one);
+  const L tToward = (nearW - s0.w) / select(toward, wPerT, L(S(-1)));
+  const L tEnd = minOf(maxOf(select(away, tAway, select(toward, tToward, farW)), zero), farW);
+  const SsrScreenL<L> s1 = (ssrScreenOfLanes<L>)(u, origin + dir * tEnd);
+  const L dx = s1.windowX - s0.windowX, dy = s1.windowY - s0.windowY;
+  const L length = maxOf(absOf(dx), absOf(dy));  // pixels along the major axis
+  const MaskOf<L> long1 = length >= one;
+  const L safeLength = select(long1, length, one);
+  const L safeW0 = select(s0.w > zero, s0.w, one), safeW1 = select(s1.w > zero, s1.w, one);
+  SsrScreenRayL<L> r;
+  r.x0 = s0.windowX;
+  r.y0 = s0.windowY;
+  r.stepX = dx / safeLength;
+  r.stepY = dy / safeLength;
+  r.k0 = one / safeW0;
+  r.stepK = (one / safeW1 - r.k0) / safeLength;
+  r.lastSample = select(long1 & (s0.w > zero), floorOf(length), zero);
+  return r;
+}
+
+// Sample j of a screen ray (ssr.frag's sampleAt): the ray's eye distance there, its pixel and
+// whether that is on the screen, the pixel's element (0 off the screen).
+template <typename L>
+struct SsrSampleL {
+  L w;
+  L pixelX, pixelY;  // 0 off the screen
+  MaskOf<L> onScreen;
+  L index;
+};
+template <typename L>
+TWR_LANE_INLINE SsrSampleL<L> ssrSampleLanes(const SsrUniformsT<ScalarOf<L>>& u, const SsrScreenRayL<L>& r,
+                                             const L& j) {
+  using S = ScalarOf<L>;
+  const L zero(S(0)), one(S(1));
+  const L x = r.x0 + r.stepX * j;
+  const L y = r.y0 + r.stepY * j;
+  const L width(u.viewportSize.x), height(u.viewportSize.y);
+  SsrSampleL<L> s;
+  s.w = one / (r.k0 + r.stepK * j);
+  s.onScreen = (x >= zero) & (x < width) & (y >= zero) & (y < height);
+  s.pixelX = floorOf(select(s.onScreen, x, zero));
+  s.pixelY = floorOf(select(s.onScreen, y, zero));
+  s.index = ((height - one) - s.pixelY) * width + s.pixelX;
+  return s;
+}
+
+// The screen marches (ssr.frag's screenMarch): dda_screen with u.hizLevels 0, hiz above.
+// dda_screen takes the ray's samples one pixel at a time: a sample in front of its pixel's
+// surface (or over a pixel where nothing was drawn) moves on; at the first one that is not, the ray between the sample before and this
+// one met the surface if its nearer end lies less than the thickness behind it: a hit at this
+// pixel; otherwise the ray passed behind (linear_world's two-sided test would compare the
+// sample before with its own pixel's surface, which a step across a pixel leaves far behind).
+// hiz reaches the same samples and the same answer in fewer steps. After a sample in front, the
+// next is tried a level up: the cell of that level holding it, its least surface distance
+// from the chain, and the ray's samples while they stay in the cell. If the farthest of them
+// (the ray's eye distance only grows or only shrinks along it) is nearer than the cell's
+// nearest surface, every one is in front of its pixel's surface: the march jumps past them and
+// climbs a level; otherwise it descends one and tries again, down to single pixels.
+template <typename L>
+TWR_LANE_INLINE SsrMarchL<L> ssrScreenMarchLanes(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& origin,
+                                                 const Vec3L<L>& dir, const MaskOf<L>& active) {
+  using S = ScalarOf<L>;
+  const L zero(S(0)), one(S(1)), two(S(2)), half(S(0.5));
+  const L width(u.viewportSize.x), height(u.viewportSize.y), thickness(u.thickness);
+  const L topLevel(static_cast<S>(u.hizLevels));
+  const SsrScreenRayL<L> ray = (ssrScreenRayLanes<L>)(u, origin, dir);
+  SsrMarchL<L> m{select(active, (ssrResultLane<L>)(SsrResult::Miss), (ssrResultLane<L>)(SsrResult::NotMarched)), zero, zero};
+  MaskOf<L> live = active;
+  L j = zero;         // the last sample marched: it and every one before lie in front
+  L level = zero;     // the level the next sample is tried at (0: its pixel alone)
+  L cellSize = one;   // that level's cells' side, pixels (2^level, exact)
+  for (int i = 0; i < u.maxSteps && anyOf(live); ++i) {
+    const L n = j + one;
+    m.steps = select(live, m.steps + one, m.steps);
+    const MaskOf<L> ended = live & (n > ray.lastSample);
+    m.result = select(ended, (ssrResultLane<L>)(SsrResult::Miss), m.result);
+    live = live & !ended;
+    const SsrSampleL<L> sn = (ssrSampleLanes<L>)(u, ray, n);
+    m.result = select(live & !sn.onScreen, (ssrResultLane<L>)(SsrResult::OffScreen), m.result);
+    live = live & sn.onScreen;
+    const MaskOf<L> atPixel = live & (level == zero);
+    const MaskOf<L> atCell = live & (level > zero);
+    if (anyOf(atPixel)) {
+      const L surfaceN = (ssrBufferDistanceLanes<L>)(u, sn.index);
+      const MaskOf<L> passes = (sn.w < surfaceN) | !(surfaceN < L(u.skyDistance));  // in front, or nothing there
+      const MaskOf<L> inFront = atPixel & passes;
+      const MaskOf<L> crossed = atPixel & !passes;
+      if (anyOf(crossed)) {
+        // The ray's nearest point between the last sample and this one, against this pixel's
+        // surface: within the thickness behind it, the ray met the surface.
+        const L behindBy = minOf((ssrSampleLanes<L>)(u, ray, j).w, sn.w) - surfaceN;
+        const MaskOf<L> hit = crossed & (behindBy < thickness);
+        m.hitIndex = select(hit, sn.index, m.hitIndex);
+        m.result = select(hit, (ssrResultLane<L>)(SsrResult::Hit), select(crossed, (ssrResultLane<L>)(SsrResult::Behind), m.result));
+        live = live & !crossed;
+      }
+      j = select(inFront, n, j);
+      const MaskOf<L> up = inFront & (topLevel > zero);
+      level = select(up, one, level);
+      cellSize = select(up, two, cellSize);
+    }
+    if (anyOf(atCell)) {
+      // The cell holding sample n, its pixel bounds [left, right) x [bottom, top): a level's
+      // last column (row) also holds the odd one the halving dropped.
+      const L levelWidth = floorOf(width / cellSize), levelHeight = floorOf(height / cellSize);
+      const L cx = minOf(floorOf(sn.pixelX / cellSize), levelWidth - one);
+      const L cy = minOf(floorOf(sn.pixelY / cellSize), levelHeight - one);
+      const L left = cx * cellSize, bottom = cy * cellSize;
+      const L right = select(cx == levelWidth - one, width, left + cellSize);
+      const L top = select(cy == levelHeight - one, height, bottom + cellSize);
+      // The last sample still in the cell, axis by axis: x0 + stepX j < right moving right,
+      // >= left moving left.
+      const MaskOf<L> rightward = ray.stepX > zero, leftward = ray.stepX < zero;
+      const MaskOf<L> upward = ray.stepY > zero, downward = ray.stepY < zero;
+      const L safeStepX = select(rightward | leftward, ray.stepX, one);
+      const L safeStepY = select(upward | downward, ray.stepY, one);
+      const L lastX = select(rightward, (zero - floorOf((ray.x0 - right) / safeStepX)) - one,
+                             select(leftward, floorOf((left - ray.x0) / safeStepX), ray.lastSample));
+      const L lastY = select(upward, (zero - floorOf((ray.y0 - top) / safeStepY)) - one,
+                             select(downward, floorOf((bottom - ray.y0) / safeStepY), ray.lastSample));
+      const L last = minOf(minOf(lastX, lastY), ray.lastSample);
+      // Rounding may put the computed last sample a pixel out: then the cell is not used.
+      const SsrSampleL<L> sl = (ssrSampleLanes<L>)(u, ray, last);
+      const MaskOf<L> fits = atCell & (last >= n) & sl.onScreen & (sl.pixelX >= left) & (sl.pixelX < right) &
+                             (sl.pixelY >= bottom) & (sl.pixelY < top);
+      const L cellIndex = lookupLanes(u.hizOffset.data(), select(atCell, level, zero)) + cy * levelWidth + cx;
+      const L cellLeast = lookupLanes(u.hizCells, select(fits, cellIndex, zero));
+      const MaskOf<L> skip = fits & (maxOf(sn.w, sl.w) < cellLeast);
+      const MaskOf<L> down = atCell & !skip;
+      const MaskOf<L> climb = skip & (level < topLevel);
+      j = select(skip, last, j);
+      level = select(climb, level + one, select(down, level - one, level));
+      cellSize = select(climb, cellSize * two, select(down, cellSize * half, cellSize));
+    }
+  }
+  return m;
+}
+
 // One pixel's reflection (ssr.frag's main): the G-buffer's lighting normal, position and
 // ssr_reflect, the pixel's own lit colour. The mirror direction of the eye's, marched; on a
 // hit, the lit colour there times reflect_strength ssr_reflect is added and clamped. Returns
@@ -157,7 +319,8 @@ TWR_LANE_INLINE SsrMarchL<L> ssrPixelLanes(const SsrUniformsT<ScalarOf<L>>& u, c
   const Vec3L<L> wo = safeNormalize3<L>(Vec3L<L>(u.eyePosWorld) - posWorld);
   const Vec3L<L> r = safeNormalize3<L>((two * dot3<L>(nl, wo)) * nl - wo);
   const MaskOf<L> active = drawn & (ssrReflect > zero);
-  const SsrMarchL<L> m = (ssrMarchLanes<L>)(u, posWorld, r, active);
+  const bool screen = u.march == SsrMarch::DdaScreen || u.march == SsrMarch::Hiz;
+  const SsrMarchL<L> m = screen ? (ssrScreenMarchLanes<L>)(u, posWorld, r, active) : (ssrMarchLanes<L>)(u, posWorld, r, active);
   const MaskOf<L> hit = m.result == (ssrResultLane<L>)(SsrResult::Hit);
   if (anyOf(hit)) {
     const L index = select(hit, m.hitIndex, zero);

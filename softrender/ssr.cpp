@@ -8,6 +8,7 @@
 #include "softrender/framebuffer.h"
 #include "softrender/output_merge.h"
 
+#include <algorithm>
 #include <cstddef>
 
 namespace twr {
@@ -20,6 +21,9 @@ SsrUniforms makeSsrUniforms(const Scene& scene, const RenderSettings& settings, 
   u.distanceNumerator = static_cast<float>(2.0 * n * f);
   u.distanceSum = static_cast<float>(f + n);
   u.distanceDifference = static_cast<float>(f - n);
+  u.nearDistance = static_cast<float>(n);
+  u.farDistance = static_cast<float>(f);
+  u.skyDistance = ssrDistanceOfDepthLanes<float>(u, kClearDepth);
   u.eyePosWorld = scene.camera.position;
   const SsrSettings& s = settings.ssr;
   u.march = s.march;
@@ -28,7 +32,53 @@ SsrUniforms makeSsrUniforms(const Scene& scene, const RenderSettings& settings, 
   u.minStep = s.step * kSsrAdaptiveMinStepRatio;
   u.thickness = s.thickness;
   u.reflectStrength = s.reflectStrength;
+  u.hizLevels = s.march == SsrMarch::Hiz ? hizLevelsOf(width, height) : 0;
   return u;
+}
+
+void hizChainOf(const std::vector<float>& surfaceDistance, int width, int height, SsrPlanes& planes) {
+  planes.hizLevels = hizLevelsOf(width, height);
+  std::size_t total = 0;
+  for (int k = 1; k <= planes.hizLevels; ++k) {
+    planes.hizOffset[static_cast<std::size_t>(k)] = static_cast<float>(total);
+    total += static_cast<std::size_t>(width >> k) * static_cast<std::size_t>(height >> k);
+  }
+  planes.hizCells.resize(total);
+  // The level below, read by column and row from the bottom: the frame's plane is top row first.
+  int belowWidth = width, belowHeight = height;
+  const auto below = [&](int k, int x, int y) {
+    if (k == 1) return surfaceDistance[static_cast<std::size_t>(height - 1 - y) * static_cast<std::size_t>(width) +
+                                       static_cast<std::size_t>(x)];
+    const std::size_t at = static_cast<std::size_t>(planes.hizOffset[static_cast<std::size_t>(k - 1)]);
+    return planes.hizCells[at + static_cast<std::size_t>(y) * static_cast<std::size_t>(belowWidth) +
+                           static_cast<std::size_t>(x)];
+  };
+  for (int k = 1; k <= planes.hizLevels; ++k) {
+    const int levelWidth = width >> k, levelHeight = height >> k;
+    float* cells = planes.hizCells.data() + static_cast<std::size_t>(planes.hizOffset[static_cast<std::size_t>(k)]);
+    for (int y = 0; y < levelHeight; ++y) {
+      // The last row (column) also covers the odd row (column) the halving drops.
+      const int yEnd = y == levelHeight - 1 ? belowHeight : 2 * y + 2;
+      for (int x = 0; x < levelWidth; ++x) {
+        const int xEnd = x == levelWidth - 1 ? belowWidth : 2 * x + 2;
+        float least = below(k, 2 * x, 2 * y);
+        for (int by = 2 * y; by < yEnd; ++by) {
+          for (int bx = 2 * x; bx < xEnd; ++bx) least = std::min(least, below(k, bx, by));
+        }
+        cells[static_cast<std::size_t>(y) * static_cast<std::size_t>(levelWidth) + static_cast<std::size_t>(x)] = least;
+      }
+    }
+    belowWidth = levelWidth;
+    belowHeight = levelHeight;
+  }
+}
+
+void useSsrPlanes(const SsrPlanes& planes, SsrUniforms& u) {
+  u.surfaceDistance = planes.surfaceDistance.data();
+  for (std::size_t c = 0; c < 3; ++c) u.colour[c] = planes.rgb[c].data();
+  u.hizCells = planes.hizCells.data();
+  u.hizOffset = planes.hizOffset;
+  u.hizLevels = std::min(u.hizLevels, planes.hizLevels);
 }
 
 void ssrPlanesOf(const Framebuffer& fb, const GBuffer& g, bool positionStored, const SsrUniforms& u,
@@ -40,21 +90,22 @@ void ssrPlanesOf(const Framebuffer& fb, const GBuffer& g, bool positionStored, c
     for (std::size_t i = 0; i < pixels; ++i) plane[i] = static_cast<float>(fb.rgba[4 * i + c]) / 255.0f;
   }
   planes.surfaceDistance.resize(pixels);
-  const float far = ssrDistanceOfDepthLanes<float>(u, kClearDepth);
+  const float far = u.skyDistance;
   for (std::size_t i = 0; i < pixels; ++i) {
     const bool drawn = fb.depth[i] < kClearDepth;
     planes.surfaceDistance[i] = !drawn         ? far
                                 : positionStored ? ssrDistanceOfPointLanes<float>(u, vec3(g.position[i]))
                                                  : ssrDistanceOfDepthLanes<float>(u, fb.depth[i]);
   }
+  planes.hizLevels = 0;
+  if (u.march == SsrMarch::Hiz) hizChainOf(planes.surfaceDistance, fb.width, fb.height, planes);
 }
 
 void reflectTeaching(const GBuffer& g, SsrUniforms u, const Mat4T<float>& worldFromClip, bool positionStored,
                      int threads, Framebuffer& fb) {
   SsrPlanes planes;
   ssrPlanesOf(fb, g, positionStored, u, planes);
-  u.surfaceDistance = planes.surfaceDistance.data();
-  for (std::size_t c = 0; c < 3; ++c) u.colour[c] = planes.rgb[c].data();
+  useSsrPlanes(planes, u);
   RenderStats unused;
   drawInBands(
       threads, fb.height, false,

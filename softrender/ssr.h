@@ -1,6 +1,7 @@
 // Screen-space reflections on the CPU (docs/ssr.md): after the deferred lighting pass, every
 // pixel whose material has ssr_reflect > 0 marches its mirror ray through the frame's depth
-// buffer (linear_world or adaptive_world, settings.ssr) and, where it hits, adds
+// buffer (settings.ssr.march: linear_world and adaptive_world step in world units, dda_screen
+// one pixel at a time, hiz the same pixels skipping what a min-distance chain clears) and, where it hits, adds
 // reflect_strength * ssr_reflect times the lit colour at the hit. It reads the G-buffer (the
 // lighting normal, the position, ssr_reflect in specular.w), the depth and a copy of the lit
 // colour; shaders/ssr.frag is the GL twin, ssr-inl.h the one C++ source of the per-pixel work.
@@ -38,6 +39,12 @@ struct SsrUniformsT {
   // A window depth d's eye distance, 2 n f / ((f + n) - (2 d - 1) (f - n)): the three terms
   // from the camera's near and far in double, rounded once.
   S distanceNumerator = S(1), distanceSum = S(2), distanceDifference = S(0);
+  // The camera's near and far distances: the screen marches' ray ends where its eye distance
+  // reaches one of them (world units).
+  S nearDistance = S(1), farDistance = S(100);
+  // The distance the surface-distance plane gives where nothing was drawn (the clear depth's):
+  // the screen marches pass over such pixels, there is nothing there to hit.
+  S skyDistance = S(100);
   Vec3T<S> eyePosWorld{S(0)};
   SsrMarch march = SsrMarch::LinearWorld;
   int maxSteps = 64;
@@ -46,6 +53,13 @@ struct SsrUniformsT {
   // and the lit frame's r, g, b in [0, 1].
   const float* surfaceDistance = nullptr;
   std::array<const float*, 3> colour{};
+  // hiz: the chain's levels above the frame (0 for every other march; a screen march with 0
+  // levels is dda_screen). Level k >= 1 is floor(width / 2^k) x floor(height / 2^k) cells,
+  // bottom row first, from hizCells + hizOffset[k]; a cell holds the least surface distance of
+  // the 2x2 cells below it (3 wide or high at an odd level's last column or row).
+  int hizLevels = 0;
+  const float* hizCells = nullptr;
+  std::array<float, kMaxHizLevels + 1> hizOffset{};  // elements, exact in a float
 };
 using SsrUniforms = SsrUniformsT<float>;
 
@@ -57,12 +71,23 @@ SsrUniforms makeSsrUniforms(const Scene& scene, const RenderSettings& settings, 
 // position's own (ssrDistanceOfPointLanes): the same floats on every renderer, so a ray meets
 // a surface at the same step everywhere. Without, the depth's (ssrDistanceOfDepthLanes), which
 // rounds as each renderer converts its depth. The clear depth gives the far plane.
+// With the hiz march, the min-distance chain over the surface distances too (hizChainOf).
 struct SsrPlanes {
   std::array<std::vector<float>, 3> rgb;
   std::vector<float> surfaceDistance;
+  std::vector<float> hizCells;  // levels 1 and up, as SsrUniforms::hizCells
+  int hizLevels = 0;
+  std::array<float, kMaxHizLevels + 1> hizOffset{};
 };
 void ssrPlanesOf(const Framebuffer& fb, const GBuffer& g, bool positionStored, const SsrUniforms& u,
                  SsrPlanes& planes);
+// Points u's buffers at the planes' (the colour, the distances, the chain).
+void useSsrPlanes(const SsrPlanes& planes, SsrUniforms& u);
+
+// The min-distance chain over a top-row-first plane of surface distances (SsrUniforms's
+// hizCells): each cell the least of the cells below it, the level above's odd last column or
+// row folded into the last cell. GL builds the same levels with shaders/hiz.frag.
+void hizChainOf(const std::vector<float>& surfaceDistance, int width, int height, SsrPlanes& planes);
 
 // The pass on the teaching path, scalar float, over `threads` bands of rows: each drawn pixel
 // of fb with ssr_reflect > 0 is marched and, on a hit, gets ssrPixelLanes's colour.

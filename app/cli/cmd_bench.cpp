@@ -225,21 +225,7 @@ std::vector<std::string> childArguments(const BenchArgs& args, int width, int he
                                    "--threads", std::to_string(threads),
                                    "--gl-precise-child"};
   for (const std::string& argument : glRequestArguments(args.gl)) argv.push_back(argument);
-  const std::array<std::pair<const char*, const std::string*>, 8> overrides = {{
-      {"--view", &r.view},
-      {"--pipeline", &r.pipeline},
-      {"--gbuffer-position", &r.gbufferPosition},
-      {"--cull", &r.cull},
-      {"--front-face", &r.frontFace},
-      {"--lighting-space", &r.lightingSpace},
-      {"--tangent-transform", &r.tangentTransform},
-      {"--filter", &r.textureFilter},
-  }};
-  for (const auto& [option, value] : overrides) {
-    if (value->empty()) continue;
-    argv.push_back(option);
-    argv.push_back(*value);
-  }
+  for (const std::string& argument : overrideArguments(r)) argv.push_back(argument);
   return argv;
 }
 

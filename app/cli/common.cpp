@@ -5,7 +5,12 @@
 #include "scene/projection_checks.h"
 #include "scene/scene_file.h"
 
+#include <array>
+#include <iomanip>
 #include <iostream>
+#include <limits>
+#include <sstream>
+#include <utility>
 
 namespace twr::cli {
 
@@ -55,7 +60,49 @@ void addRenderOptions(CLI::App& cmd, RenderRequest& request) {
                  "Override settings.texture_filter: nearest|bilinear|trilinear|nearest_mipmap_nearest|"
                  "linear_mipmap_nearest|nearest_mipmap_linear")
       ->check(kNonEmpty);
+  cmd.add_option("--ssr", request.ssr, "Override settings.ssr.enabled: on|off (screen-space reflections, docs/ssr.md)")
+      ->check(CLI::IsMember({"on", "off"}));
+  cmd.add_option("--ssr-march", request.ssrMarch,
+                 "Override settings.ssr.march: linear_world|adaptive_world (world-space steps)|dda_screen (one pixel "
+                 "a step)|hiz (dda_screen's answer over a min-depth mip chain)")
+      ->check(kNonEmpty);
+  cmd.add_option("--ssr-max-steps", request.ssrMaxSteps, "Override settings.ssr.max_steps")
+      ->check(CLI::Range(1, kMaxSsrSteps));
+  cmd.add_option("--ssr-thickness", request.ssrThickness, "Override settings.ssr.thickness (world units, > 0)")
+      ->check(CLI::PositiveNumber);
   cmd.add_flag("--verbose,-v", request.verbose, "Print GL_VERSION, GL_RENDERER and timings on stderr");
+}
+
+std::vector<std::string> overrideArguments(const RenderRequest& r) {
+  const std::array<std::pair<const char*, const std::string*>, 10> named = {{
+      {"--view", &r.view},
+      {"--pipeline", &r.pipeline},
+      {"--gbuffer-position", &r.gbufferPosition},
+      {"--cull", &r.cull},
+      {"--front-face", &r.frontFace},
+      {"--lighting-space", &r.lightingSpace},
+      {"--tangent-transform", &r.tangentTransform},
+      {"--filter", &r.textureFilter},
+      {"--ssr", &r.ssr},
+      {"--ssr-march", &r.ssrMarch},
+  }};
+  std::vector<std::string> argv;
+  for (const auto& [option, value] : named) {
+    if (value->empty()) continue;
+    argv.push_back(option);
+    argv.push_back(*value);
+  }
+  if (r.ssrMaxSteps) {
+    argv.push_back("--ssr-max-steps");
+    argv.push_back(std::to_string(*r.ssrMaxSteps));
+  }
+  if (r.ssrThickness) {
+    std::ostringstream text;
+    text << std::setprecision(std::numeric_limits<float>::max_digits10) << *r.ssrThickness;
+    argv.push_back("--ssr-thickness");
+    argv.push_back(text.str());
+  }
+  return argv;
 }
 
 void printSceneWarnings(const Scene& scene) {
@@ -79,6 +126,10 @@ Scene loadRequestedScene(const RenderRequest& request) {
   applyOverride(request.tangentTransform, "--tangent-transform", s.tangentTransform, "model|inverse_transpose");
   applyOverride(request.textureFilter, "--filter", s.textureFilter,
                 "nearest|bilinear|trilinear|nearest_mipmap_nearest|linear_mipmap_nearest|nearest_mipmap_linear");
+  if (!request.ssr.empty()) s.ssr.enabled = request.ssr == "on";
+  applyOverride(request.ssrMarch, "--ssr-march", s.ssr.march, "linear_world|adaptive_world|dda_screen|hiz");
+  if (request.ssrMaxSteps) s.ssr.maxSteps = *request.ssrMaxSteps;
+  if (request.ssrThickness) s.ssr.thickness = *request.ssrThickness;
   printSceneWarnings(scene);
   const int width = request.width.value_or(scene.output.width), height = request.height.value_or(scene.output.height);
   if (const std::string problem = renderSizeProblem(width, height); !problem.empty()) {

@@ -18,11 +18,18 @@ struct RenderRequest {
   std::optional<int> width, height;  // default: the scene's output size
   std::string view;                   // default: the scene's settings.view
   std::string cull, frontFace, lightingSpace, tangentTransform, textureFilter, pipeline, gbufferPosition;  // optional overrides
+  // settings.ssr overrides: --ssr on|off, --ssr-march, --ssr-max-steps, --ssr-thickness.
+  std::string ssr, ssrMarch;
+  std::optional<int> ssrMaxSteps;
+  std::optional<float> ssrThickness;
   bool verbose = false;
 };
 
 // Adds SCENE, --width/--height, --view and the setting overrides to `cmd`.
 void addRenderOptions(CLI::App& cmd, RenderRequest& request);
+// The overrides `request` holds as command-line arguments ("--pipeline", "deferred", ...), for
+// a child process that renders the same request.
+std::vector<std::string> overrideArguments(const RenderRequest& request);
 
 // Loads the scene and applies the overrides; throws InputError (exit 2) on bad input.
 // "warning: ..." on stderr for each of the scene's warnings (scene.h) and for settings it

@@ -22,7 +22,7 @@ constexpr LightingSpace kLightingSpaces[] = {LightingSpace::World, LightingSpace
 constexpr Pipeline kPipelines[] = {Pipeline::Forward, Pipeline::Deferred};
 constexpr GBufferPosition kGBufferPositions[] = {GBufferPosition::Stored, GBufferPosition::Depth};
 // The marches drawn so far (dda_screen and hiz are named by the format, not drawn yet).
-constexpr SsrMarch kSsrMarches[] = {SsrMarch::LinearWorld, SsrMarch::AdaptiveWorld};
+constexpr SsrMarch kSsrMarches[] = {SsrMarch::LinearWorld, SsrMarch::AdaptiveWorld, SsrMarch::DdaScreen, SsrMarch::Hiz};
 constexpr float kSsrStepDragSpeed = 0.005f;  // world units per dragged point
 constexpr TangentTransform kTangentTransforms[] = {TangentTransform::Model, TangentTransform::InverseTranspose};
 constexpr const TextureFilter (&kTextureFilters)[6] = kAllTextureFilters;
@@ -269,19 +269,26 @@ void GuiApp::drawRenderingTab() {
   ImGui::BeginDisabled(!ssr.enabled);
   changed |= enumRadio("March", ssr.march, kSsrMarches, labelWidth,
                        "linear_world: fixed world-space steps (the GAMES202 write-up's). adaptive_world: the first "
-                       "step is Step, halved at every overshoot down to Step / 16.");
+                       "step is Step, halved at every overshoot down to Step / 16. dda_screen: one pixel per step "
+                       "along the ray's line on the screen. hiz: dda_screen's answer, skipping the cells of a "
+                       "min-depth mip chain the ray passes wholly in front of.");
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
   changed |= ImGui::SliderInt("Max steps", &ssr.maxSteps, 1, kMaxSsrSteps, "%d", ImGuiSliderFlags_Logarithmic |
                                                                                       ImGuiSliderFlags_AlwaysClamp);
   itemTooltip("The most steps a ray takes before it counts as a miss (max_steps).");
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+  const bool screenMarch = ssr.march == SsrMarch::DdaScreen || ssr.march == SsrMarch::Hiz;
+  ImGui::BeginDisabled(screenMarch);  // one pixel per step
   changed |= ImGui::DragFloat("Step", &ssr.step, kSsrStepDragSpeed, 0.001f, 10.0f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
-  itemTooltip("World units: linear_world's every step, adaptive_world's first (step).");
+  ImGui::EndDisabled();
+  itemTooltip("World units: linear_world's every step, adaptive_world's first (step). The screen marches step one "
+              "pixel at a time.");
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
   changed |= ImGui::DragFloat("Thickness", &ssr.thickness, kSsrStepDragSpeed, 0.001f, 10.0f, "%.3f",
                               ImGuiSliderFlags_AlwaysClamp);
-  itemTooltip("World units: how far behind the depth buffer's surface a ray may be and still hit it, on both "
-              "sides of the crossing (thickness). Below the depth a step covers, rays pass through.");
+  itemTooltip("World units: how far behind the depth buffer's surface a ray may be and still hit it (thickness): "
+              "the world marches test both sides of the crossing, the screen marches the ray's nearer end of the "
+              "last step. Below the depth a step covers, rays pass through.");
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
   changed |= ImGui::SliderFloat("Strength", &ssr.reflectStrength, 0.0f, kMaxSsrReflectStrength, "%.2f",
                                 ImGuiSliderFlags_AlwaysClamp);

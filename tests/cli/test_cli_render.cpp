@@ -229,6 +229,35 @@ TEST(CliCompare, AllBuffersRowsInPassOrderWithTheirImages) {
   EXPECT_NE(bad.err.find("--buffer: expected one of shadow_map|gbuffer_depth|"), std::string::npos) << bad.err;
 }
 
+// The reflection overrides: a march and its steps from the command line, both renderers alike;
+// off draws no reflection pass; a bad name or count exits 2 and says which option.
+TEST(CliCompare, SsrOverridesChooseTheMarch) {
+  const auto dir = testDir("cli_compare_ssr");
+  const std::string scene = "\"" + kSource + "/assets/scenes/ssr_mirror_floor.json\"";
+  const RunResult hiz = runCli("compare " + scene + " --out-dir \"" + dir.string() +
+                                   "\" --width 160 --height 120 --repeat 1 --ssr-march hiz --ssr-max-steps 200 "
+                                   "--ssr-thickness 0.2 --json",
+                               dir);
+  ASSERT_EQ(hiz.exitCode, 0) << hiz.err;
+  const nlohmann::json on = nlohmann::json::parse(hiz.out);
+  EXPECT_LE(on["max_abs_diff"].get<int>(), 1);
+  EXPECT_GT(on["cpu_ssr_ms"].get<double>(), 0.0);
+  EXPECT_GT(on["gl_ssr_ms"].get<double>(), 0.0);
+  const RunResult off = runCli("compare " + scene + " --out-dir \"" + dir.string() +
+                                   "\" --width 160 --height 120 --repeat 1 --ssr off --json",
+                               dir);
+  ASSERT_EQ(off.exitCode, 0) << off.err;
+  EXPECT_EQ(nlohmann::json::parse(off.out)["cpu_ssr_ms"].get<double>(), 0.0);
+  const RunResult badMarch = runCli("render " + scene + " -o \"" + (dir / "x.png").string() + "\" --ssr-march deep", dir);
+  EXPECT_EQ(badMarch.exitCode, 2);
+  EXPECT_NE(badMarch.err.find("--ssr-march: expected one of linear_world|adaptive_world|dda_screen|hiz, got 'deep'"),
+            std::string::npos)
+      << badMarch.err;
+  const RunResult badSteps = runCli("render " + scene + " -o \"" + (dir / "x.png").string() + "\" --ssr-max-steps 0", dir);
+  EXPECT_EQ(badSteps.exitCode, 2);
+  EXPECT_NE(badSteps.err.find("--ssr-max-steps"), std::string::npos) << badSteps.err;
+}
+
 TEST(CliCompare, ExitsOneOverAThreshold) {
   const auto dir = testDir("cli_compare");
   // The two renderers differ by at most 1 level on this scene, so a 0-level limit on a

@@ -135,7 +135,7 @@ std::vector<SuiteCase> suiteCases() {
     cases.push_back(c);
   }
   // Screen-space reflections (issue 19): every march drawn, at both sizes.
-  for (const SsrMarch march : {SsrMarch::LinearWorld, SsrMarch::AdaptiveWorld}) {
+  for (const SsrMarch march : {SsrMarch::LinearWorld, SsrMarch::AdaptiveWorld, SsrMarch::DdaScreen, SsrMarch::Hiz}) {
     for (const int width : {640, 1280}) {
       if (march == SsrMarch::LinearWorld && width == 640) continue;  // the row's own case
       if (width == 1280 && kQuickSuite) continue;

@@ -243,13 +243,22 @@ TEST(SceneFile, SsrSettingsAndMaterialKeys) {
   const Scene idle = parseScene(R"({"nodes": [], "settings": {"ssr": {"enabled": true}}})", kInline, kDataDir);
   ASSERT_EQ(idle.warnings.size(), 1u);
   EXPECT_NE(idle.warnings[0].find("no material has ssr_reflect > 0"), std::string::npos);
+  // The screen marches step one pixel at a time: a step given to them is said to be ignored.
+  for (const char* march : {"dda_screen", "hiz"}) {
+    const std::string text = std::string(R"({"nodes": [], "materials": {"m": {"ssr_reflect": 1}},
+                                             "settings": {"ssr": {"enabled": true, "step": 0.1, "march": ")") +
+                             march + "\"}}}";
+    const Scene screen = parseScene(text, kInline, kDataDir);
+    EXPECT_EQ(toString(screen.settings.ssr.march), march);
+    ASSERT_EQ(screen.warnings.size(), 1u) << march;
+    EXPECT_EQ(screen.warnings[0], std::string("inline.json: settings.ssr.step: read and ignored: ") + march +
+                                      " steps one pixel at a time (docs/ssr.md)");
+  }
 }
 
 TEST(SceneFileErrors, BadSsrSettings) {
   expectContains(parseError(R"({"nodes": [], "settings": {"ssr": {"march": "binary"}}})"),
                  {"inline.json: settings.ssr.march: expected one of linear_world|adaptive_world|dda_screen|hiz, got \"binary\""});
-  expectContains(parseError(R"({"nodes": [], "settings": {"ssr": {"march": "hiz"}}})"),
-                 {"inline.json: settings.ssr.march: hiz is not drawn yet"});
   expectContains(parseError(R"({"nodes": [], "settings": {"ssr": {"indirect_samples": 4}}})"),
                  {"inline.json: settings.ssr.indirect_samples: indirect light is not drawn yet"});
   expectContains(parseError(R"({"nodes": [], "settings": {"ssr": {"max_steps": 0}}})"),

@@ -10,9 +10,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace twr {
@@ -53,6 +56,10 @@ struct WallView {
 template <typename L>
 SsrMarchL<L> marchFrom(const SsrUniformsT<ScalarOf<L>>& u, vec3 origin, vec3 dir) {
   return ssrMarchLanes<L>(u, Vec3L<L>(origin), Vec3L<L>(glm::normalize(dir)), MaskOf<L>(true));
+}
+
+SsrMarchL<float> marchScreen(const SsrUniforms& u, vec3 origin, vec3 dir) {
+  return ssrScreenMarchLanes<float>(u, origin, glm::normalize(dir), true);
 }
 
 template <typename L>
@@ -141,6 +148,183 @@ TEST(Ssr, HitAddsTheLitColourThereScaled) {
   EXPECT_EQ(kept, vec3(0.3f));
 }
 
+// The screen marches' view: the WallView's camera over 64 x 64 pixels, the surface distances
+// given directly (a wall kWall away unless a test puts something nearer).
+constexpr int kScreenSide = 64;
+struct ScreenView {
+  int side = kScreenSide;
+  std::vector<float> plane;  // top row first
+  std::vector<float> colour;
+  SsrPlanes planes;
+  SsrUniforms u;
+  explicit ScreenView(SsrMarch march, int sidePixels = kScreenSide) : side(sidePixels) {
+    Scene scene;
+    scene.camera.position = vec3(0.0f);
+    scene.camera.target = vec3(0.0f, 0.0f, -1.0f);
+    scene.camera.fovDeg = 90.0f;
+    scene.camera.near = 1.0f;
+    scene.camera.far = 100.0f;
+    RenderSettings settings;
+    settings.ssr.enabled = true;
+    settings.ssr.march = march;
+    settings.ssr.maxSteps = kMaxSsrSteps;
+    settings.ssr.thickness = 0.1f;
+    u = makeSsrUniforms(scene, settings, side, side);
+    plane.assign(static_cast<std::size_t>(side * side), kWall);
+    colour.assign(static_cast<std::size_t>(side * side), 0.0f);
+  }
+  // A column x (from the left) of every row at eye distance d.
+  void column(int x, float d) {
+    for (int y = 0; y < side; ++y) plane[static_cast<std::size_t>(y * side + x)] = d;
+  }
+  // Points the uniforms at the plane, with its chain for hiz.
+  const SsrUniforms& ready() {
+    planes.surfaceDistance = plane;
+    for (auto& c : planes.rgb) c = colour;
+    planes.hizLevels = 0;
+    if (u.march == SsrMarch::Hiz) hizChainOf(plane, side, side, planes);
+    useSsrPlanes(planes, u);
+    return u;
+  }
+};
+
+// The pixel (column, row from the bottom) of an element of a top-row-first plane.
+std::pair<int, int> pixelOf(float index, int width, int height) {
+  const int i = static_cast<int>(index);
+  return {i % width, height - 1 - i / width};
+}
+
+class SsrScreenMarches : public ::testing::TestWithParam<SsrMarch> {};
+
+TEST_P(SsrScreenMarches, EndInEachOutcome) {
+  ScreenView view(GetParam());
+  const SsrUniforms& u = view.ready();
+  // Right and away from 5 in front of the eye: the wall at x = 5, seen at window x 48.
+  const SsrMarchL<float> hit = marchScreen(u, vec3(0.0f, 0.0f, -5.0f), vec3(1.0f, 0.0f, -1.0f));
+  EXPECT_EQ(hit.result, ssrResultLane<float>(SsrResult::Hit));
+  const auto [hitX, hitY] = pixelOf(hit.hitIndex, kScreenSide, kScreenSide);
+  EXPECT_NEAR(hitX, 48, 1);
+  EXPECT_EQ(hitY, 32);
+  // Parallel to the wall, to the right: off the screen at pixel 64, 32 samples on.
+  const SsrMarchL<float> off = marchScreen(u, vec3(0.0f, 0.0f, -5.0f), vec3(1.0f, 0.0f, 0.0f));
+  EXPECT_EQ(off.result, ssrResultLane<float>(SsrResult::OffScreen));
+  if (GetParam() == SsrMarch::DdaScreen) {
+    EXPECT_EQ(off.steps, 32.0f);
+  }
+  // Out of steps: a miss.
+  ScreenView few(GetParam());
+  few.u.maxSteps = 3;
+  EXPECT_EQ(marchScreen(few.ready(), vec3(0.0f, 0.0f, -5.0f), vec3(1.0f, 0.0f, -1.0f)).result,
+            ssrResultLane<float>(SsrResult::Miss));
+  // Straight away from the eye: under a pixel on the screen, nothing to march.
+  EXPECT_EQ(marchScreen(u, vec3(0.0f, 0.0f, -5.0f), vec3(0.0f, 0.0f, -1.0f)).result,
+            ssrResultLane<float>(SsrResult::Miss));
+}
+
+TEST_P(SsrScreenMarches, PassBehindANearerSurfaceAndOverTheSky) {
+  // A pole at eye distance 6 in columns 40 and 41: the ray reaches those columns at about 6.7,
+  // behind it by more than the thickness.
+  ScreenView pole(GetParam());
+  pole.column(40, 6.0f);
+  pole.column(41, 6.0f);
+  const SsrMarchL<float> behind = marchScreen(pole.ready(), vec3(0.0f, 0.0f, -5.0f), vec3(1.0f, 0.0f, -1.0f));
+  EXPECT_EQ(behind.result, ssrResultLane<float>(SsrResult::Behind));
+  // The same pole at 6.7 is met within the thickness.
+  ScreenView near(GetParam());
+  for (int x = 38; x < 44; ++x) near.column(x, 6.69f);
+  const SsrMarchL<float> met = marchScreen(near.ready(), vec3(0.0f, 0.0f, -5.0f), vec3(1.0f, 0.0f, -1.0f));
+  EXPECT_EQ(met.result, ssrResultLane<float>(SsrResult::Hit));
+  EXPECT_NEAR(pixelOf(met.hitIndex, kScreenSide, kScreenSide).first, 40, 1);
+  // Nothing drawn anywhere (the sky's distance): the ray runs to its end at the far distance.
+  ScreenView sky(GetParam());
+  sky.plane.assign(sky.plane.size(), sky.u.skyDistance);
+  EXPECT_EQ(marchScreen(sky.ready(), vec3(0.0f, 0.0f, -5.0f), vec3(0.2f, 0.0f, -1.0f)).result,
+            ssrResultLane<float>(SsrResult::Miss));
+}
+INSTANTIATE_TEST_SUITE_P(Marches, SsrScreenMarches, ::testing::Values(SsrMarch::DdaScreen, SsrMarch::Hiz),
+                         [](const auto& info) { return std::string(toString(info.param)); });
+
+TEST(Ssr, HizChainHoldsTheLeastOfEachCellsPixels) {
+  EXPECT_EQ(hizLevelsOf(1, 1), 0);
+  EXPECT_EQ(hizLevelsOf(640, 480), 8);
+  EXPECT_EQ(hizLevelsOf(1280, 720), 9);
+  EXPECT_EQ(hizLevelsOf(4096, 4096), 12);
+  // Odd sides, so the last column and row of a level fold in the one the halving drops.
+  const int width = 13, height = 6;
+  std::vector<float> plane(static_cast<std::size_t>(width * height));
+  std::uint32_t state = 12345u;
+  for (float& d : plane) {
+    state = state * 1664525u + 1013904223u;
+    d = 1.0f + static_cast<float>(state >> 8) / 16777216.0f * 50.0f;
+  }
+  SsrPlanes planes;
+  hizChainOf(plane, width, height, planes);
+  ASSERT_EQ(planes.hizLevels, 2);
+  for (int k = 1; k <= planes.hizLevels; ++k) {
+    const int levelWidth = width >> k, levelHeight = height >> k, side = 1 << k;
+    for (int cy = 0; cy < levelHeight; ++cy) {
+      for (int cx = 0; cx < levelWidth; ++cx) {
+        const int xEnd = cx == levelWidth - 1 ? width : (cx + 1) * side;
+        const int yEnd = cy == levelHeight - 1 ? height : (cy + 1) * side;
+        float least = 1e30f;
+        for (int y = cy * side; y < yEnd; ++y) {  // window rows from the bottom
+          for (int x = cx * side; x < xEnd; ++x) least = std::min(least, plane[static_cast<std::size_t>((height - 1 - y) * width + x)]);
+        }
+        const std::size_t at = static_cast<std::size_t>(planes.hizOffset[static_cast<std::size_t>(k)]) +
+                               static_cast<std::size_t>(cy * levelWidth + cx);
+        EXPECT_EQ(planes.hizCells[at], least) << "level " << k << " cell " << cx << ", " << cy;
+      }
+    }
+  }
+}
+
+// hiz skips only what dda_screen would step over in front: over a field of poles and boxes at
+// 256 x 256, every ray ends the same (result and hit pixel), in fewer steps overall (a ray that
+// grazes surfaces may take more: each failed skip is a step).
+TEST(Ssr, HizEndsEveryRayAsDdaDoesInFewerSteps) {
+  constexpr int kFieldSide = 256;
+  ScreenView dda(SsrMarch::DdaScreen, kFieldSide), hiz(SsrMarch::Hiz, kFieldSide);
+  std::uint32_t state = 7u;
+  const auto next = [&] {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<float>(state >> 8) / 16777216.0f;
+  };
+  for (int box = 0; box < 12; ++box) {
+    const int x0 = static_cast<int>(next() * 240.0f), y0 = static_cast<int>(next() * 240.0f);
+    const int w = 1 + static_cast<int>(next() * 32.0f), h = 1 + static_cast<int>(next() * 80.0f);
+    const float d = 3.0f + next() * 6.0f;
+    for (int y = y0; y < std::min(kFieldSide, y0 + h); ++y) {
+      for (int x = x0; x < std::min(kFieldSide, x0 + w); ++x) {
+        dda.plane[static_cast<std::size_t>(y * kFieldSide + x)] = d + 0.01f * static_cast<float>(x);
+      }
+    }
+  }
+  hiz.plane = dda.plane;
+  const SsrUniforms& ud = dda.ready();
+  const SsrUniforms& uh = hiz.ready();
+  float ddaSteps = 0.0f, hizSteps = 0.0f;
+  int hits = 0, kinds[5] = {};
+  for (int ray = 0; ray < 400; ++ray) {
+    const vec3 origin((next() - 0.5f) * 4.0f, (next() - 0.5f) * 4.0f, -2.0f - next() * 4.0f);
+    const vec3 dir(next() - 0.5f, next() - 0.5f, -next());
+    if (glm::length(dir) < 0.1f) continue;
+    const SsrMarchL<float> a = marchScreen(ud, origin, dir);
+    const SsrMarchL<float> b = marchScreen(uh, origin, dir);
+    ASSERT_EQ(a.result, b.result) << "ray " << ray;
+    if (a.result == ssrResultLane<float>(SsrResult::Hit)) {
+      ++hits;
+      EXPECT_EQ(a.hitIndex, b.hitIndex) << "ray " << ray;
+    }
+    ++kinds[static_cast<int>(a.result)];
+    ddaSteps += a.steps;
+    hizSteps += b.steps;
+  }
+  EXPECT_GT(hits, 50);
+  EXPECT_GT(kinds[static_cast<int>(SsrResult::Behind)], 10);
+  EXPECT_GT(kinds[static_cast<int>(SsrResult::OffScreen)], 10);
+  EXPECT_LT(hizSteps, 0.5f * ddaSteps) << "hiz " << hizSteps << " steps, dda_screen " << ddaSteps;
+}
+
 Scene mirrorFloor() {
   return loadSceneFile(std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes/ssr_mirror_floor.json");
 }
@@ -174,6 +358,29 @@ TEST(Ssr, OffChangesNothingOnReflects) {
   EXPECT_EQ(on.depth, plain.depth);
 }
 
+// On the mirror floor, with steps enough for every ray: hiz reflects exactly what dda_screen
+// does, and both reflect.
+TEST(Ssr, HizDrawsTheDdaFrameOnTheMirrorFloor) {
+  const Scene scene = mirrorFloor();
+  RenderSettings off = scene.settings;
+  off.ssr.enabled = false;
+  off.pipeline = Pipeline::Deferred;
+  const RenderOutput plain = renderCpu(scene, off, CpuPath::Fast);
+  RenderSettings dda = scene.settings;
+  dda.ssr.march = SsrMarch::DdaScreen;
+  dda.ssr.maxSteps = kMaxSsrSteps;
+  RenderSettings hiz = dda;
+  hiz.ssr.march = SsrMarch::Hiz;
+  const RenderOutput a = renderCpu(scene, dda, CpuPath::Fast);
+  const RenderOutput b = renderCpu(scene, hiz, CpuPath::Fast);
+  EXPECT_EQ(a.rgba, b.rgba);
+  std::size_t changed = 0;
+  for (std::size_t i = 0; i < a.depth.size(); ++i) {
+    if (std::memcmp(&a.rgba[4 * i], &plain.rgba[4 * i], 4) != 0) ++changed;
+  }
+  EXPECT_GT(changed, 300u);
+}
+
 class SsrPaths : public ::testing::TestWithParam<SsrMarch> {};
 TEST_P(SsrPaths, FastMatchesTeachingBitForBit) {
   const Scene scene = mirrorFloor();
@@ -186,7 +393,9 @@ TEST_P(SsrPaths, FastMatchesTeachingBitForBit) {
     EXPECT_EQ(teaching.rgba, fast.rgba) << toString(GetParam()) << ", position " << toString(position);
   }
 }
-INSTANTIATE_TEST_SUITE_P(Marches, SsrPaths, ::testing::Values(SsrMarch::LinearWorld, SsrMarch::AdaptiveWorld));
+INSTANTIATE_TEST_SUITE_P(Marches, SsrPaths,
+                         ::testing::Values(SsrMarch::LinearWorld, SsrMarch::AdaptiveWorld, SsrMarch::DdaScreen,
+                                           SsrMarch::Hiz));
 
 TEST(Ssr, FramesPastTheLaneIndexRangeAreRefused) {
   EXPECT_EQ(ssrSizeProblem(4096, 4096), "");
