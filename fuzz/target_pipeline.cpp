@@ -90,10 +90,12 @@ RenderSettings randomSettings(ByteReader& r) {
   s.tbnLines.length = length > 0.0f ? length : 0.1f;  // the loader wants > 0
   s.pipeline = static_cast<Pipeline>(r.intIn(0, 1));
   s.gbufferPosition = static_cast<GBufferPosition>(r.intIn(0, 1));
-  // Reflections as the loader admits them: the drawn marches, few steps (the fuzzer's frames
-  // are tiny), a step and thickness > 0 from hostile values.
+  // Reflections as the loader admits them: every march, few steps and indirect samples (the
+  // fuzzer's frames are tiny), a step and thickness > 0 from hostile values.
   s.ssr.enabled = r.flag();
-  s.ssr.march = static_cast<SsrMarch>(r.intIn(0, 1));
+  s.ssr.march = static_cast<SsrMarch>(r.intIn(0, 3));
+  s.ssr.indirectSamples = r.intIn(0, 2);
+  s.ssr.sampleDistribution = static_cast<SampleDistribution>(r.intIn(0, 1));
   s.ssr.maxSteps = r.intIn(1, 16);
   const float step = r.nonNegativeFloat(), thickness = r.nonNegativeFloat();
   s.ssr.step = step > 0.0f ? step : 0.05f;

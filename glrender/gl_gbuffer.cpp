@@ -248,12 +248,17 @@ void GlGBuffer::reflect(ProgramCache& programs, const Scene& scene, const Render
   setFloat("nearDistance", static_cast<float>(scene.camera.near));
   setFloat("farDistance", static_cast<float>(scene.camera.far));
   glUniform1i(uniformLocation(program, "hizLevels"), hizLevels);
-  const std::array<std::pair<const char*, GLuint>, 6> textures = {{{"gbufferDepth", depth_.id()},
+  glUniform1i(uniformLocation(program, "indirectSamples"), ssr.indirectSamples);
+  glUniform1i(uniformLocation(program, "cosineSamples"), ssr.sampleDistribution == SampleDistribution::Cosine ? 1 : 0);
+  // As makeSsrUniforms: 1 / samples rounded once here, so neither renderer divides its own way.
+  setFloat("indirectScale", ssr.indirectSamples > 0 ? 1.0f / static_cast<float>(ssr.indirectSamples) : 1.0f);
+  const std::array<std::pair<const char*, GLuint>, 7> textures = {{{"gbufferDepth", depth_.id()},
                                                                    {"gbufferNormal", targets_[0].id()},
                                                                    {"gbufferSpecular", targets_[3].id()},
                                                                    {"gbufferPosition", position_.id()},
                                                                    {"litColour", litCopy_.id()},
-                                                                   {"hizDistance", hiz_.id()}}};
+                                                                   {"hizDistance", hiz_.id()},
+                                                                   {"gbufferAlbedo", targets_[2].id()}}};
   bindTextures(program, textures);
   drawScreenTriangle();
   unbindTextures(textures.size());

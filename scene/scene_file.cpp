@@ -269,7 +269,7 @@ class SceneReader {
                                   " mixes nothing in: reflectivity is 0 and fresnel is none");
       }
     }
-    if (scene_.settings.ssr.enabled &&
+    if (scene_.settings.ssr.enabled && scene_.settings.ssr.indirectSamples == 0 &&
         std::none_of(scene_.materials.begin(), scene_.materials.end(), [](const Material& m) { return m.ssrReflect > 0.0f; })) {
       scene_.warnings.push_back(fileName_ + ": settings.ssr: on, but no material has ssr_reflect > 0: nothing reflects");
     }
@@ -1026,8 +1026,7 @@ class SceneReader {
     if (const Json* v = find(j, "mode")) lines.mode = readEnum<LineMode>(*v, childPath(path, "mode"));
   }
 
-  // settings.ssr (docs/ssr.md). Every key of the format is read; what is not drawn yet
-  // (indirect samples) is refused by name, never drawn wrong.
+  // settings.ssr (docs/ssr.md).
   void readSsr(const Json& j, const std::string& path) {
     requireObject(j, path);
     checkKeys(j, path,
@@ -1050,13 +1049,13 @@ class SceneReader {
     }
     if (const Json* v = find(j, "indirect_samples")) {
       ssr.indirectSamples = readInt(*v, childPath(path, "indirect_samples"), 0, kMaxSsrIndirectSamples);
-      if (ssr.indirectSamples > 0) {
-        fail(childPath(path, "indirect_samples"),
-             "indirect light is not drawn yet: only 0 is (mirror reflections alone, docs/ssr.md)");
-      }
     }
     if (const Json* v = find(j, "sample_distribution")) {
       ssr.sampleDistribution = readEnum<SampleDistribution>(*v, childPath(path, "sample_distribution"));
+      if (ssr.indirectSamples == 0) {
+        scene_.warnings.push_back(fileName_ + ": " + childPath(path, "sample_distribution") +
+                                  ": read and ignored: indirect_samples is 0 (no indirect light)");
+      }
     }
     if (const Json* v = find(j, "reflect_strength")) {
       const std::string at = childPath(path, "reflect_strength");

@@ -109,7 +109,9 @@ int hizLevelsOf(int width, int height) {
 }
 
 std::string ssrSettingsProblem(const SsrSettings& ssr) {
-  if (ssr.indirectSamples != 0) return "settings.ssr.indirect_samples: indirect light is not drawn yet: only 0 is";
+  if (!(ssr.indirectSamples >= 0 && ssr.indirectSamples <= kMaxSsrIndirectSamples)) {
+    return "settings.ssr.indirect_samples: out of [0, 64]";
+  }
   if (!(ssr.maxSteps >= 1 && ssr.maxSteps <= kMaxSsrSteps)) return "settings.ssr.max_steps: out of [1, 1024]";
   if (!(ssr.step > 0.0f) || !std::isfinite(ssr.step)) return "settings.ssr.step: expected a finite number > 0";
   if (!(ssr.thickness > 0.0f) || !std::isfinite(ssr.thickness)) {

@@ -1,7 +1,9 @@
 // Screen-space reflections (docs/ssr.md): one fragment per pixel of a full-screen triangle
 // (sky.vert's), after the deferred lighting pass. A pixel whose material has ssr_reflect > 0
 // (the G-buffer's specular.w) marches its mirror ray through the depth buffer; on a hit it adds
-// reflect_strength * ssr_reflect times the lit colour there, every other fragment is discarded.
+// reflect_strength * ssr_reflect times the lit colour there. With indirect samples every drawn
+// pixel also marches rays over its hemisphere and adds its albedo times the light they find.
+// A fragment neither changes is discarded.
 // C++ twin: softrender/ssr-inl.h, function by function in the same order of operations.
 // Included after common.glsl and ssr_distance.glsl (the surface distances; GBUFFER_POSITION as
 // there).
@@ -24,6 +26,10 @@ uniform float nearDistance;         // the camera's near and far, world units: a
 uniform float farDistance;
 uniform int hizLevels;              // hiz: the chain's levels above the frame; 0 for dda_screen
 uniform sampler2D hizDistance;      // level k: the least surface distance of 2^k x 2^k pixels
+uniform int indirectSamples;        // indirect light's rays per pixel (0: none)
+uniform int cosineSamples;          // 1: cosine-weighted, 0: uniform over the hemisphere
+uniform float indirectScale;        // 1 / indirectSamples, rounded once on the CPU
+uniform sampler2D gbufferAlbedo;    // xyz: the diffuse albedo
 
 layout(location = 0) out vec4 fragColour;
 
@@ -229,11 +235,82 @@ float screenMarch(vec3 origin, vec3 dir, out float steps, out ivec2 hitPixel) {
   return SSR_MISS;
 }
 
+// Indirect light's random pair for sample k of a pixel (ssrRandomPairOf): PCG hashes
+// (Jarzynski and Olano 2020), 24 bits each, exact in a float.
+uint pcgHash(uint v) {
+  uint state = v * 747796405u + 2891336453u;
+  uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+  return (word >> 22u) ^ word;
+}
+vec2 randomPair(uvec2 pixel, uint k) {
+  uint seed = pcgHash(pixel.x ^ pcgHash(pixel.y ^ pcgHash(k)));
+  uint second = pcgHash(seed);
+  const float unit = 1.0 / 16777216.0;  // 2^-24
+  return vec2(float(seed >> 8u) * unit, float(second >> 8u) * unit);
+}
+
+// The cosine and sine of a turn in [0, 1) (ssrCircleLanes): the quadrant, then Taylor series.
+vec2 circle(float turn) {
+  float q4 = turn * 4.0;
+  float quadrant = floor(q4);
+  float a = (q4 - quadrant) * 1.57079637;
+  float a2 = a * a;
+  float sinA = a * (1.0 + a2 * (-0.166666672 + a2 * (0.00833333377 + a2 * (-0.000198412701 + a2 * (2.75573188e-06 + a2 * -2.50521079e-08)))));
+  float cosA = 1.0 + a2 * (-0.5 + a2 * (0.0416666679 + a2 * (-0.00138888892 + a2 * (2.48015876e-05 + a2 * (-2.755732e-07 + a2 * 2.08767559e-09)))));
+  float c = quadrant == 0.0 ? cosA : (quadrant == 1.0 ? 0.0 - sinA : (quadrant == 2.0 ? 0.0 - cosA : sinA));
+  float s = quadrant == 0.0 ? sinA : (quadrant == 1.0 ? cosA : (quadrant == 2.0 ? 0.0 - sinA : 0.0 - cosA));
+  return vec2(c, s);
+}
+
+// A direction over the hemisphere of n in Duff et al.'s basis, and its weight (ssrHemisphereLanes).
+vec3 hemisphere(vec3 n, vec2 xi, out float weight) {
+  float sign_ = n.z >= 0.0 ? 1.0 : -1.0;
+  float a = -1.0 / (sign_ + n.z);
+  float b = n.x * n.y * a;
+  vec3 b1 = vec3(1.0 + sign_ * n.x * n.x * a, sign_ * b, 0.0 - sign_ * n.x);
+  vec3 b2 = vec3(b, sign_ + n.y * n.y * a, 0.0 - n.y);
+  vec2 turn = circle(xi.y);
+  float z;
+  float r;
+  if (cosineSamples != 0) {
+    r = sqrt(xi.x);
+    z = sqrt(max(0.0, 1.0 - xi.x));
+    weight = 1.0;
+  } else {
+    z = xi.x;
+    r = sqrt(max(0.0, 1.0 - z * z));
+    weight = 2.0 * z;
+  }
+  return safeNormalize(b1 * (r * turn.x) + b2 * (r * turn.y) + n * z);
+}
+
+// The march the settings name (ssrMarchOfLanes).
+float marchOf(vec3 origin, vec3 dir, out float steps, out ivec2 hitPixel) {
+  return marchKind == 2 ? screenMarch(origin, dir, steps, hitPixel) : march(origin, dir, steps, hitPixel);
+}
+
+// Indirect diffuse light (ssrIndirectLanes): (1 / N) sum weight lit(hit), and the samples that hit.
+vec3 indirect(vec3 nl, vec3 posWorld, uvec2 pixel, out float hits) {
+  vec3 sum = vec3(0.0);
+  hits = 0.0;
+  for (int k = 0; k < indirectSamples; ++k) {
+    float weight;
+    vec3 dir = hemisphere(nl, randomPair(pixel, uint(k)), weight);
+    float steps;
+    ivec2 hitPixel;
+    if (marchOf(posWorld, dir, steps, hitPixel) != SSR_HIT) continue;
+    sum = sum + texelFetch(litColour, hitPixel, 0).rgb * weight;
+    hits = hits + 1.0;
+  }
+  return sum * indirectScale;
+}
+
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   float depth = texelFetch(gbufferDepth, pixel, 0).r;
   float ssrReflect = texelFetch(gbufferSpecular, pixel, 0).w;
-  if (!(depth < 1.0) || !(ssrReflect > 0.0)) discard;  // nothing drawn, or no reflection
+  // Nothing drawn, or neither a mirror ray nor indirect light: the lit colour stays.
+  if (!(depth < 1.0) || !(ssrReflect > 0.0 || indirectSamples > 0)) discard;
   vec3 nl = texelFetch(gbufferNormal, pixel, 0).xyz;
 #ifdef GBUFFER_POSITION
   vec3 posWorld = texelFetch(gbufferPosition, pixel, 0).xyz;
@@ -242,12 +319,25 @@ void main() {
 #endif
   vec3 wo = safeNormalize(eyePosWorld - posWorld);
   vec3 r = safeNormalize((2.0 * dot(nl, wo)) * nl - wo);
-  float steps;
-  ivec2 hitPixel;
-  float result = marchKind == 2 ? screenMarch(posWorld, r, steps, hitPixel) : march(posWorld, r, steps, hitPixel);
-  if (result != SSR_HIT) discard;  // the lit colour stays
   vec3 colour = texelFetch(litColour, pixel, 0).rgb;
-  vec3 reflected = texelFetch(litColour, hitPixel, 0).rgb;
-  float k = reflectStrength * ssrReflect;
-  fragColour = clamp(vec4(colour + reflected * k, 1.0), 0.0, 1.0);
+  vec3 total = colour;
+  bool changed = false;
+  if (ssrReflect > 0.0) {
+    float steps;
+    ivec2 hitPixel;
+    if (marchOf(posWorld, r, steps, hitPixel) == SSR_HIT) {
+      vec3 reflected = texelFetch(litColour, hitPixel, 0).rgb;
+      float k = reflectStrength * ssrReflect;
+      total = total + reflected * k;
+      changed = true;
+    }
+  }
+  if (indirectSamples > 0) {
+    float hits;
+    vec3 light = indirect(nl, posWorld, uvec2(pixel), hits);
+    total = total + texelFetch(gbufferAlbedo, pixel, 0).rgb * light;
+    changed = changed || hits > 0.0;
+  }
+  if (!changed) discard;  // the lit colour stays
+  fragColour = clamp(vec4(total, 1.0), 0.0, 1.0);
 }

@@ -526,49 +526,69 @@ void LightRows(const GBuffer& g, const DeferredUniforms& u, int rowBegin, int ro
 }
 
 // Screen-space reflections over rows [rowBegin, rowEnd): a vector of pixels of a row at a time,
-// gathered from the G-buffer, marched with ssrPixelLanes where a surface reflects; the hit
-// pixels get the new colour, the others keep theirs.
+// gathered from the G-buffer, with each pixel's indirect random pairs, through ssrPixelLanes
+// where a surface reflects or indirect light is on; the pixels it changed get their new colour,
+// the others keep theirs.
 void ReflectRows(const GBuffer& g, const SsrUniforms& u, const Mat4T<float>& worldFromClip, bool positionStored,
                  int rowBegin, int rowEnd, Framebuffer& fb) {
   const DF df;
   const DU du;
   const std::size_t lanes = laneCount();
   const std::size_t width = static_cast<std::size_t>(fb.width);
-  constexpr int kChannels = 11;  // normal xyz, position xyz, ssr_reflect, depth, own colour rgb
+  // normal xyz, position xyz, ssr_reflect, depth, own colour rgb, albedo rgb
+  constexpr int kChannels = 14;
+  constexpr int kReflect = 6, kDepth = 7, kColour = 8, kAlbedo = 11;
   HWY_ALIGN float channels[kChannels][kMaxLanes];
+  HWY_ALIGN float random[2 * kMaxSsrIndirectSamples][kMaxLanes];  // per sample: xi.x, xi.y
+  Vec2L<LaneF> samples[kMaxSsrIndirectSamples];
   const vec4 noPosition(0.0f);
+  const bool indirect = u.indirectSamples > 0;
   for (int py = rowBegin; py < rowEnd; ++py) {
     for (std::size_t x = 0; x < width; x += lanes) {
       const std::size_t inRow = std::min(lanes, width - x);
       const std::size_t origin = fb.index(static_cast<int>(x), py);
       std::uint64_t bits = 0;
       for (std::size_t l = 0; l < lanes; ++l) {
-        const bool marched = l < inRow && fb.depth[origin + l] < kClearDepth && g.specular[origin + l].w > 0.0f;
+        const bool drawn = l < inRow && fb.depth[origin + l] < kClearDepth;
+        const bool marched = drawn && (g.specular[origin + l].w > 0.0f || indirect);
         if (marched) bits |= std::uint64_t{1} << l;
         const std::size_t i = marched ? origin + l : origin;  // a sane texel for lanes not marched
         const vec4& n = g.normal[i];
         const vec4& p = positionStored ? g.position[i] : noPosition;
+        const vec4& a = g.albedo[i];
         const float values[kChannels] = {n.x, n.y, n.z, p.x, p.y, p.z, g.specular[i].w, fb.depth[i],
-                                         u.colour[0][i], u.colour[1][i], u.colour[2][i]};
+                                         u.colour[0][i], u.colour[1][i], u.colour[2][i], a.x, a.y, a.z};
         for (int c = 0; c < kChannels; ++c) channels[c][l] = values[c];
-        if (!marched) channels[6][l] = 0.0f;  // ssr_reflect 0: the lane is not marched
+        if (!marched) channels[kReflect][l] = 0.0f;  // ssr_reflect 0: no mirror ray
+        if (!marched) channels[kDepth][l] = kClearDepth;  // nothing drawn: no indirect rays
+        for (int k = 0; k < u.indirectSamples; ++k) {
+          const vec2 xi = ssrRandomPairOf(static_cast<std::uint32_t>(x + l), static_cast<std::uint32_t>(py),
+                                          static_cast<std::uint32_t>(k));
+          random[2 * k][l] = xi.x;
+          random[2 * k + 1][l] = xi.y;
+        }
       }
       if (bits == 0) continue;
       const auto lane = [&](int c) HWY_ATTR { return LaneF(hn::Load(df, channels[c])); };
+      for (int k = 0; k < u.indirectSamples; ++k) {
+        samples[k] = Vec2L<LaneF>(LaneF(hn::Load(df, random[2 * k])), LaneF(hn::Load(df, random[2 * k + 1])));
+      }
       const LaneF px = pixelColumnsF(static_cast<int>(x)), pyLanes(static_cast<float>(py));
       const Vec3L<LaneF> posWorld =
           positionStored ? Vec3L<LaneF>(lane(3), lane(4), lane(5))
-                         : worldFromWindowLanes<LaneF>(worldFromClip, u.viewportSize, px, pyLanes, lane(7));
-      const LaneF zero(0.0f);
-      Vec3L<LaneF> colour(lane(8), lane(9), lane(10));
-      const SsrMarchL<LaneF> m = (ssrPixelLanes<LaneF>)(u, Vec3L<LaneF>(lane(0), lane(1), lane(2)), posWorld, lane(6),
-                                                      lane(6) > zero, colour);
-      HWY_ALIGN float hit[kMaxLanes];
-      hn::Store(m.result.v, df, hit);
+                         : worldFromWindowLanes<LaneF>(worldFromClip, u.viewportSize, px, pyLanes, lane(kDepth));
+      Vec3L<LaneF> colour(lane(kColour), lane(kColour + 1), lane(kColour + 2));
+      const SsrPixelL<LaneF> p = (ssrPixelLanes<LaneF>)(
+          u, Vec3L<LaneF>(lane(0), lane(1), lane(2)), posWorld, lane(kReflect),
+          Vec3L<LaneF>(lane(kAlbedo), lane(kAlbedo + 1), lane(kAlbedo + 2)), samples, lane(kDepth) < LaneF(kClearDepth),
+          colour);
+      if (!anyOf(p.changed)) continue;
+      HWY_ALIGN float changed[kMaxLanes];
+      hn::Store(select(p.changed, LaneF(1.0f), LaneF(0.0f)).v, df, changed);
       HWY_ALIGN std::uint32_t words[kMaxLanes];
       hn::Store(rgbaWordsOf(Vec4L<LaneF>(colour, LaneF(1.0f))), du, words);
       for (std::size_t l = 0; l < inRow; ++l) {
-        if (((bits >> l) & 1u) != 0 && hit[l] == static_cast<float>(static_cast<int>(SsrResult::Hit))) {
+        if (((bits >> l) & 1u) != 0 && changed[l] != 0.0f) {
           std::memcpy(&fb.rgba[4 * (origin + l)], &words[l], sizeof(std::uint32_t));
         }
       }

@@ -306,31 +306,154 @@ TWR_LANE_INLINE SsrMarchL<L> ssrScreenMarchLanes(const SsrUniformsT<ScalarOf<L>>
   return m;
 }
 
-// One pixel's reflection (ssr.frag's main): the G-buffer's lighting normal, position and
-// ssr_reflect, the pixel's own lit colour. The mirror direction of the eye's, marched; on a
-// hit, the lit colour there times reflect_strength ssr_reflect is added and clamped. Returns
-// the march and, in `colour`, the pixel's new colour (its own where nothing was hit).
+// The cosine and sine of a turn in [0, 1) (ssr.frag's circle): written out, not the library's
+// or GLSL's own, which round differently, so both renderers turn a ray alike. The quadrant
+// (exact: 4 turn and its fraction are exact in a float), then Taylor series of the angle in
+// [0, pi/2) to the 11th and 12th powers, in Horner form (error below 1e-8).
 template <typename L>
-TWR_LANE_INLINE SsrMarchL<L> ssrPixelLanes(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& nl,
-                                           const Vec3L<L>& posWorld, const L& ssrReflect, const MaskOf<L>& drawn,
-                                           Vec3L<L>& colour) {
+TWR_LANE_INLINE Vec2L<L> ssrCircleLanes(const L& turn) {
+  using S = ScalarOf<L>;
+  const L zero(S(0)), one(S(1));
+  const L q4 = turn * L(S(4));
+  const L quadrant = floorOf(q4);
+  const L a = (q4 - quadrant) * L(S(1.57079637f));  // radians
+  const L a2 = a * a;
+  const L sinA =
+      a * (one + a2 * (L(S(-0.166666672f)) +
+                       a2 * (L(S(0.00833333377f)) +
+                             a2 * (L(S(-0.000198412701f)) + a2 * (L(S(2.75573188e-06f)) + a2 * L(S(-2.50521079e-08f)))))));
+  const L cosA =
+      one + a2 * (L(S(-0.5f)) +
+                  a2 * (L(S(0.0416666679f)) +
+                        a2 * (L(S(-0.00138888892f)) +
+                              a2 * (L(S(2.48015876e-05f)) + a2 * (L(S(-2.755732e-07f)) + a2 * L(S(2.08767559e-09f)))))));
+  const MaskOf<L> q0 = quadrant == zero, q1 = quadrant == one, q2 = quadrant == L(S(2));
+  const L c = select(q0, cosA, select(q1, zero - sinA, select(q2, zero - cosA, sinA)));
+  const L s = select(q0, sinA, select(q1, cosA, select(q2, zero - sinA, zero - cosA)));
+  return Vec2L<L>(c, s);
+}
+
+// A direction over the hemisphere of the unit normal n (ssr.frag's hemisphere): xi.x picks the
+// height z (uniform: z = xi.x; cosine-weighted: z = sqrt(1 - xi.x)), xi.y the turn about n; the
+// local direction is set in Duff et al.'s basis of n ("Building an Orthonormal Basis,
+// Revisited", JCGT 2017: s = sign of n.z, a = -1 / (s + n.z), b = n.x n.y a,
+// b1 = (1 + s n.x^2 a, s b, -s n.x), b2 = (b, s + n.y^2 a, -n.y); s + n.z never cancels).
+// `weight` is the sample's share of the diffuse light, f cos / pdf with f = albedo / pi taken
+// out as the albedo: uniform (pdf 1 / 2pi) 2 z, cosine (pdf z / pi) 1.
+template <typename L>
+TWR_LANE_INLINE Vec3L<L> ssrHemisphereLanes(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& n,
+                                            const Vec2L<L>& xi, L& weight) {
+  using S = ScalarOf<L>;
+  const L zero(S(0)), one(S(1)), two(S(2));
+  const L sign = select(n.z >= zero, one, L(S(-1)));
+  const L a = L(S(-1)) / (sign + n.z);
+  const L b = n.x * n.y * a;
+  const Vec3L<L> b1(one + sign * n.x * n.x * a, sign * b, zero - sign * n.x);
+  const Vec3L<L> b2(b, sign + n.y * n.y * a, zero - n.y);
+  const Vec2L<L> turn = (ssrCircleLanes<L>)(xi.y);
+  L z, r;
+  if (u.distribution == SampleDistribution::Cosine) {
+    r = sqrtOf(xi.x);
+    z = sqrtOf(maxOf(zero, one - xi.x));
+    weight = one;
+  } else {
+    z = xi.x;
+    r = sqrtOf(maxOf(zero, one - z * z));
+    weight = two * z;
+  }
+  return safeNormalize3<L>(b1 * (r * turn.x) + b2 * (r * turn.y) + n * z);
+}
+
+// The lit frame's colour at an element.
+template <typename L>
+TWR_LANE_INLINE Vec3L<L> ssrLitAtLanes(const SsrUniformsT<ScalarOf<L>>& u, const L& index) {
+  return Vec3L<L>(lookupLanes(u.colour[0], index), lookupLanes(u.colour[1], index), lookupLanes(u.colour[2], index));
+}
+
+// The march the settings name.
+template <typename L>
+TWR_LANE_INLINE SsrMarchL<L> ssrMarchOfLanes(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& origin,
+                                             const Vec3L<L>& dir, const MaskOf<L>& active) {
+  const bool screen = u.march == SsrMarch::DdaScreen || u.march == SsrMarch::Hiz;
+  return screen ? (ssrScreenMarchLanes<L>)(u, origin, dir, active) : (ssrMarchLanes<L>)(u, origin, dir, active);
+}
+
+// Indirect diffuse light (ssr.frag's indirect; the write-up's EvalIndirectionLight): for each
+// of the pixel's samples a hemisphere direction, marched; where it hits, the lit colour there is
+// light the surface receives, weighted as its sample's pdf asks. Returns (1 / N) sum weight
+// lit(hit), the light still to be multiplied by the albedo, and the samples that hit.
+template <typename L>
+struct SsrIndirectL {
+  Vec3L<L> light;
+  L hits;
+};
+template <typename L>
+TWR_LANE_INLINE SsrIndirectL<L> ssrIndirectLanes(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& nl,
+                                                 const Vec3L<L>& posWorld, const Vec2L<L>* samples,
+                                                 const MaskOf<L>& active) {
+  using S = ScalarOf<L>;
+  const L zero(S(0)), one(S(1));
+  Vec3L<L> sum(zero);
+  L hits = zero;
+  for (int k = 0; k < u.indirectSamples; ++k) {
+    L weight = zero;
+    const Vec3L<L> dir = (ssrHemisphereLanes<L>)(u, nl, samples[k], weight);
+    const SsrMarchL<L> m = (ssrMarchOfLanes<L>)(u, posWorld, dir, active);
+    const MaskOf<L> hit = m.result == (ssrResultLane<L>)(SsrResult::Hit);
+    if (!anyOf(hit)) continue;
+    const Vec3L<L> lit = (ssrLitAtLanes<L>)(u, select(hit, m.hitIndex, zero));
+    sum = select3<L>(hit, sum + lit * weight, sum);
+    hits = select(hit, hits + one, hits);
+  }
+  return SsrIndirectL<L>{sum * L(u.indirectScale), hits};
+}
+
+// One pixel's pass (ssr.frag's main): the G-buffer's lighting normal, position, ssr_reflect
+// and albedo, the pixel's own lit colour, its indirect samples' random pairs
+// (ssrRandomPairOf). The mirror direction of the eye's, marched where ssr_reflect > 0; on a
+// hit, the lit colour there times reflect_strength ssr_reflect is added. With indirect
+// samples, albedo times the indirect light is added too. The sum is clamped. Returns the
+// mirror march, whether the colour changed (a mirror hit or an indirect sample's) and, in
+// `colour`, the pixel's new colour (its own where nothing changed).
+template <typename L>
+struct SsrPixelL {
+  SsrMarchL<L> mirror;
+  L indirectHits;
+  MaskOf<L> changed;
+};
+template <typename L>
+TWR_LANE_INLINE SsrPixelL<L> ssrPixelLanes(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& nl,
+                                           const Vec3L<L>& posWorld, const L& ssrReflect, const Vec3L<L>& albedo,
+                                           const Vec2L<L>* samples, const MaskOf<L>& drawn, Vec3L<L>& colour) {
   using S = ScalarOf<L>;
   const L zero(S(0)), two(S(2));
   const Vec3L<L> wo = safeNormalize3<L>(Vec3L<L>(u.eyePosWorld) - posWorld);
   const Vec3L<L> r = safeNormalize3<L>((two * dot3<L>(nl, wo)) * nl - wo);
-  const MaskOf<L> active = drawn & (ssrReflect > zero);
-  const bool screen = u.march == SsrMarch::DdaScreen || u.march == SsrMarch::Hiz;
-  const SsrMarchL<L> m = screen ? (ssrScreenMarchLanes<L>)(u, posWorld, r, active) : (ssrMarchLanes<L>)(u, posWorld, r, active);
-  const MaskOf<L> hit = m.result == (ssrResultLane<L>)(SsrResult::Hit);
-  if (anyOf(hit)) {
-    const L index = select(hit, m.hitIndex, zero);
-    const Vec3L<L> reflected(lookupLanes(u.colour[0], index), lookupLanes(u.colour[1], index),
-                             lookupLanes(u.colour[2], index));
-    const L k = L(u.reflectStrength) * ssrReflect;
-    const Vec4L<L> lit = clampUnit4<L>(Vec4L<L>(colour + reflected * k, L(S(1))));
-    colour = select3<L>(hit, Vec3L<L>(lit.x, lit.y, lit.z), colour);
+  const MaskOf<L> reflects = drawn & (ssrReflect > zero);
+  const MaskOf<L> none = zero > zero;
+  SsrPixelL<L> p{{(ssrResultLane<L>)(SsrResult::NotMarched), zero, zero}, zero, none};
+  Vec3L<L> total = colour;
+  if (anyOf(reflects)) {
+    p.mirror = (ssrMarchOfLanes<L>)(u, posWorld, r, reflects);
+    const MaskOf<L> hit = p.mirror.result == (ssrResultLane<L>)(SsrResult::Hit);
+    if (anyOf(hit)) {
+      const Vec3L<L> reflected = (ssrLitAtLanes<L>)(u, select(hit, p.mirror.hitIndex, zero));
+      const L k = L(u.reflectStrength) * ssrReflect;
+      total = select3<L>(hit, total + reflected * k, total);
+      p.changed = hit;
+    }
   }
-  return m;
+  if (u.indirectSamples > 0 && anyOf(drawn)) {
+    const SsrIndirectL<L> indirect = (ssrIndirectLanes<L>)(u, nl, posWorld, samples, drawn);
+    total = total + albedo * indirect.light;
+    p.indirectHits = indirect.hits;
+    p.changed = p.changed | (indirect.hits > zero);
+  }
+  if (anyOf(p.changed)) {
+    const Vec4L<L> lit = clampUnit4<L>(Vec4L<L>(total, L(S(1))));
+    colour = select3<L>(p.changed, Vec3L<L>(lit.x, lit.y, lit.z), colour);
+  }
+  return p;
 }
 
 TWR_LANES_END

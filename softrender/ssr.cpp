@@ -9,7 +9,9 @@
 #include "softrender/output_merge.h"
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
+#include <cstdint>
 
 namespace twr {
 
@@ -33,7 +35,23 @@ SsrUniforms makeSsrUniforms(const Scene& scene, const RenderSettings& settings, 
   u.thickness = s.thickness;
   u.reflectStrength = s.reflectStrength;
   u.hizLevels = s.march == SsrMarch::Hiz ? hizLevelsOf(width, height) : 0;
+  u.indirectSamples = s.indirectSamples;
+  u.distribution = s.sampleDistribution;
+  u.indirectScale = s.indirectSamples > 0 ? 1.0f / static_cast<float>(s.indirectSamples) : 1.0f;
   return u;
+}
+
+std::uint32_t pcgHashOf(std::uint32_t v) {
+  const std::uint32_t state = v * 747796405u + 2891336453u;
+  const std::uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+  return (word >> 22u) ^ word;
+}
+
+vec2 ssrRandomPairOf(std::uint32_t x, std::uint32_t y, std::uint32_t k) {
+  const std::uint32_t seed = pcgHashOf(x ^ pcgHashOf(y ^ pcgHashOf(k)));
+  const std::uint32_t second = pcgHashOf(seed);
+  constexpr float kUnit = 1.0f / 16777216.0f;  // 2^-24: 24 bits, exact in a float
+  return vec2(static_cast<float>(seed >> 8u) * kUnit, static_cast<float>(second >> 8u) * kUnit);
 }
 
 void hizChainOf(const std::vector<float>& surfaceDistance, int width, int height, SsrPlanes& planes) {
@@ -115,16 +133,20 @@ void reflectTeaching(const GBuffer& g, SsrUniforms u, const Mat4T<float>& worldF
             const std::size_t i = fb.index(px, py);
             const float depth = fb.depth[i];
             const bool drawn = depth < kClearDepth;
-            if (!drawn || !(g.specular[i].w > 0.0f)) continue;
+            if (!drawn || !(g.specular[i].w > 0.0f || u.indirectSamples > 0)) continue;
             const vec3 posWorld = positionStored ? vec3(g.position[i])
                                                  : worldFromWindowLanes<float>(worldFromClip, u.viewportSize,
                                                                                static_cast<float>(px),
                                                                                static_cast<float>(py), depth);
-            vec3 colour(planes.rgb[0][i], planes.rgb[1][i], planes.rgb[2][i]);
-            const SsrMarchL<float> m = ssrPixelLanes<float>(u, vec3(g.normal[i]), posWorld, g.specular[i].w, drawn, colour);
-            if (m.result == ssrResultLane<float>(SsrResult::Hit)) {
-              writeFragment(fb, px, py, vec4(colour, 1.0f), depth, fb.triangleId[i]);
+            std::array<vec2, kMaxSsrIndirectSamples> samples;
+            for (int k = 0; k < u.indirectSamples; ++k) {
+              samples[static_cast<std::size_t>(k)] =
+                  ssrRandomPairOf(static_cast<std::uint32_t>(px), static_cast<std::uint32_t>(py), static_cast<std::uint32_t>(k));
             }
+            vec3 colour(planes.rgb[0][i], planes.rgb[1][i], planes.rgb[2][i]);
+            const SsrPixelL<float> p = ssrPixelLanes<float>(u, vec3(g.normal[i]), posWorld, g.specular[i].w,
+                                                            vec3(g.albedo[i]), samples.data(), drawn, colour);
+            if (p.changed) writeFragment(fb, px, py, vec4(colour, 1.0f), depth, fb.triangleId[i]);
           }
         }
       },

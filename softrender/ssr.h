@@ -60,8 +60,20 @@ struct SsrUniformsT {
   int hizLevels = 0;
   const float* hizCells = nullptr;
   std::array<float, kMaxHizLevels + 1> hizOffset{};  // elements, exact in a float
+  // Indirect diffuse light: rays per pixel (0: none) over the hemisphere of the lighting
+  // normal, uniform or cosine-weighted (ssrIndirectLanes).
+  int indirectSamples = 0;
+  SampleDistribution distribution = SampleDistribution::Uniform;
+  S indirectScale = S(1);  // 1 / indirectSamples, rounded once (GL gets the same float)
 };
 using SsrUniforms = SsrUniformsT<float>;
+
+// Indirect light's random numbers: sample k of the pixel at window column x, row y (from the
+// bottom) as two numbers in [0, 1) with 24 random bits each, the top bits of PCG hashes of the
+// three integers (Jarzynski and Olano, "Hash Functions for GPU Rendering", 2020). The same
+// integer arithmetic as ssr.frag's randomPair, so both renderers send the same rays.
+std::uint32_t pcgHashOf(std::uint32_t v);
+vec2 ssrRandomPairOf(std::uint32_t x, std::uint32_t y, std::uint32_t k);
 
 // The frame's uniforms (the buffers are set by the pass).
 SsrUniforms makeSsrUniforms(const Scene& scene, const RenderSettings& settings, int width, int height);

@@ -489,7 +489,11 @@ void printScene(std::ostream& out, const Scene& scene) {
       << "  ssr " << (s.ssr.enabled ? "on, " + std::string(toString(s.ssr.march)) + ", max_steps " +
                                           std::to_string(s.ssr.maxSteps) + ", step " + num(s.ssr.step) +
                                           ", thickness " + num(s.ssr.thickness) + ", reflect_strength " +
-                                          num(s.ssr.reflectStrength)
+                                          num(s.ssr.reflectStrength) +
+                                          (s.ssr.indirectSamples > 0
+                                               ? ", indirect_samples " + std::to_string(s.ssr.indirectSamples) +
+                                                     " (" + std::string(toString(s.ssr.sampleDistribution)) + ")"
+                                               : std::string(", no indirect light"))
                                     : std::string("off"))
       << "\n"
       << "  tbn_lines " << (s.tbnLines.enabled ? "on" : "off") << ", length " << num(s.tbnLines.length) << ", mode "

@@ -78,6 +78,7 @@ inline constexpr SceneTolerance kSceneTolerances[] = {
     {"shadow_peter_panning.json"},  // a thin card under a too-large bias: its shadow lost (peter-panning)
     {"shadow_spot.json"},  // a spot light's cone and its perspective shadow map (1024^2) over a box and a ball
     {"ssr_mirror_floor.json"},  // a cube and a ball on a floor that reflects them (SSR, linear_world), shadowed
+    {"ssr_cave.json"},  // a room lit through a hole in its roof: SSR hiz with 4 cosine-weighted indirect samples
 };
 
 }  // namespace twr::suite

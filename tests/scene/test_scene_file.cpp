@@ -225,7 +225,7 @@ TEST(SceneFile, SsrSettingsAndMaterialKeys) {
   EXPECT_FALSE(drawsDeferred(defaults.settings));  // defaults draw as before
   const Scene scene = parseScene(R"({"materials": {"floor": {"ssr_reflect": 0.4}}, "nodes": [],
       "settings": {"ssr": {"enabled": true, "march": "adaptive_world", "max_steps": 20, "step": 0.8,
-                           "thickness": 0.2, "indirect_samples": 0, "sample_distribution": "cosine",
+                           "thickness": 0.2, "indirect_samples": 4, "sample_distribution": "cosine",
                            "reflect_strength": 0.5}}})",
                                  kInline, kDataDir);
   const SsrSettings& ssr = scene.settings.ssr;
@@ -234,6 +234,7 @@ TEST(SceneFile, SsrSettingsAndMaterialKeys) {
   EXPECT_EQ(ssr.maxSteps, 20);
   EXPECT_FLOAT_EQ(ssr.step, 0.8f);
   EXPECT_FLOAT_EQ(ssr.thickness, 0.2f);
+  EXPECT_EQ(ssr.indirectSamples, 4);
   EXPECT_EQ(ssr.sampleDistribution, SampleDistribution::Cosine);
   EXPECT_FLOAT_EQ(ssr.reflectStrength, 0.5f);
   EXPECT_FLOAT_EQ(scene.materials[0].ssrReflect, 0.4f);
@@ -243,6 +244,17 @@ TEST(SceneFile, SsrSettingsAndMaterialKeys) {
   const Scene idle = parseScene(R"({"nodes": [], "settings": {"ssr": {"enabled": true}}})", kInline, kDataDir);
   ASSERT_EQ(idle.warnings.size(), 1u);
   EXPECT_NE(idle.warnings[0].find("no material has ssr_reflect > 0"), std::string::npos);
+  // A distribution without indirect samples is said to be ignored; indirect light alone is
+  // something drawn, even with nothing reflecting.
+  const Scene noIndirect = parseScene(R"({"nodes": [], "materials": {"m": {"ssr_reflect": 1}},
+      "settings": {"ssr": {"enabled": true, "sample_distribution": "cosine"}}})",
+                                      kInline, kDataDir);
+  ASSERT_EQ(noIndirect.warnings.size(), 1u);
+  EXPECT_EQ(noIndirect.warnings[0],
+            "inline.json: settings.ssr.sample_distribution: read and ignored: indirect_samples is 0 (no indirect light)");
+  const Scene indirectOnly = parseScene(R"({"nodes": [], "settings": {"ssr": {"enabled": true, "indirect_samples": 2}}})",
+                                        kInline, kDataDir);
+  EXPECT_TRUE(indirectOnly.warnings.empty());
   // The screen marches step one pixel at a time: a step given to them is said to be ignored.
   for (const char* march : {"dda_screen", "hiz"}) {
     const std::string text = std::string(R"({"nodes": [], "materials": {"m": {"ssr_reflect": 1}},
@@ -259,8 +271,8 @@ TEST(SceneFile, SsrSettingsAndMaterialKeys) {
 TEST(SceneFileErrors, BadSsrSettings) {
   expectContains(parseError(R"({"nodes": [], "settings": {"ssr": {"march": "binary"}}})"),
                  {"inline.json: settings.ssr.march: expected one of linear_world|adaptive_world|dda_screen|hiz, got \"binary\""});
-  expectContains(parseError(R"({"nodes": [], "settings": {"ssr": {"indirect_samples": 4}}})"),
-                 {"inline.json: settings.ssr.indirect_samples: indirect light is not drawn yet"});
+  expectContains(parseError(R"({"nodes": [], "settings": {"ssr": {"indirect_samples": 65}}})"),
+                 {"inline.json: settings.ssr.indirect_samples: expected an integer in [0, 64]"});
   expectContains(parseError(R"({"nodes": [], "settings": {"ssr": {"max_steps": 0}}})"),
                  {"inline.json: settings.ssr.max_steps: expected an integer in [1, 1024]"});
   expectContains(parseError(R"({"nodes": [], "settings": {"ssr": {"step": 0}}})"),

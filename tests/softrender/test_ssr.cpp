@@ -130,22 +130,87 @@ TEST(Ssr, HitAddsTheLitColourThereScaled) {
   // A mirror at z = -9.5 facing the eye sends the eye's ray straight back: off the screen once
   // it passes the eye (190 steps of 0.05).
   view.u.maxSteps = 400;
+  const vec3 albedo(1.0f);
   const SsrMarchL<float> back =
-      ssrPixelLanes<float>(view.u, vec3(0.0f, 0.0f, 1.0f), vec3(0.0f, 0.0f, -9.5f), 0.8f, true, colour);
+      ssrPixelLanes<float>(view.u, vec3(0.0f, 0.0f, 1.0f), vec3(0.0f, 0.0f, -9.5f), 0.8f, albedo, nullptr, true, colour)
+          .mirror;
   EXPECT_EQ(back.result, ssrResultLane<float>(SsrResult::OffScreen));
   EXPECT_EQ(colour, vec3(0.25f, 0.0f, 0.0f));
   // Tilted up (normal (0, 1, 0.2)): the ray r = 2 (n.wo) n - wo goes on to the wall, rising 0.2
   // by then: pixel (4, 4).
   const SsrMarchL<float> toWall = ssrPixelLanes<float>(view.u, glm::normalize(vec3(0.0f, 1.0f, 0.2f)),
-                                                       vec3(0.0f, 0.0f, -9.5f), 0.8f, true, colour);
+                                                       vec3(0.0f, 0.0f, -9.5f), 0.8f, albedo, nullptr, true, colour)
+                                      .mirror;
   EXPECT_EQ(toWall.result, ssrResultLane<float>(SsrResult::Hit));
   EXPECT_FLOAT_EQ(colour.r, 0.25f + 0.5f * (0.5f * 0.8f));
   EXPECT_EQ(colour.g, 0.0f);
   // ssr_reflect 0: not marched, the colour kept.
   vec3 kept(0.3f);
-  EXPECT_EQ(ssrPixelLanes<float>(view.u, vec3(0.0f, 0.0f, -1.0f), vec3(0.0f, 0.0f, -5.0f), 0.0f, true, kept).result,
-            ssrResultLane<float>(SsrResult::NotMarched));
+  const SsrPixelL<float> none =
+      ssrPixelLanes<float>(view.u, vec3(0.0f, 0.0f, -1.0f), vec3(0.0f, 0.0f, -5.0f), 0.0f, albedo, nullptr, true, kept);
+  EXPECT_EQ(none.mirror.result, ssrResultLane<float>(SsrResult::NotMarched));
+  EXPECT_FALSE(none.changed);
   EXPECT_EQ(kept, vec3(0.3f));
+}
+
+TEST(Ssr, RandomPairsAreFixedPerPixelAndSampleAndSpreadOverTheSquare) {
+  EXPECT_EQ(ssrRandomPairOf(3, 4, 0), ssrRandomPairOf(3, 4, 0));
+  EXPECT_NE(ssrRandomPairOf(3, 4, 0), ssrRandomPairOf(4, 3, 0));
+  EXPECT_NE(ssrRandomPairOf(3, 4, 0), ssrRandomPairOf(3, 4, 1));
+  // Over many pixels: in [0, 1), 24 bits, a quarter in each quadrant of the square.
+  int quadrants[4] = {};
+  double sum = 0.0;
+  constexpr int kSideSamples = 64;
+  for (std::uint32_t y = 0; y < kSideSamples; ++y) {
+    for (std::uint32_t x = 0; x < kSideSamples; ++x) {
+      const vec2 xi = ssrRandomPairOf(x, y, 2);
+      ASSERT_GE(xi.x, 0.0f);
+      ASSERT_LT(xi.x, 1.0f);
+      ASSERT_LT(xi.y, 1.0f);
+      EXPECT_EQ(xi.x * 16777216.0f, std::floor(xi.x * 16777216.0f));
+      ++quadrants[(xi.x < 0.5f ? 0 : 1) + (xi.y < 0.5f ? 0 : 2)];
+      sum += static_cast<double>(xi.x) + static_cast<double>(xi.y);
+    }
+  }
+  constexpr double kCount = kSideSamples * kSideSamples;
+  for (const int q : quadrants) EXPECT_NEAR(q / kCount, 0.25, 0.03);
+  EXPECT_NEAR(sum / (2.0 * kCount), 0.5, 0.02);
+}
+
+TEST(Ssr, CircleIsWithinAMillionthOfTheLibrarys) {
+  for (int i = 0; i < 4096; ++i) {
+    const double turn = i / 4096.0;
+    const vec2 c = ssrCircleLanes<float>(static_cast<float>(turn));
+    EXPECT_NEAR(c.x, std::cos(2.0 * 3.141592653589793 * turn), 1e-6) << turn;
+    EXPECT_NEAR(c.y, std::sin(2.0 * 3.141592653589793 * turn), 1e-6) << turn;
+  }
+}
+
+// The hemisphere directions: unit, on the normal's side, for normals everywhere (Duff's basis
+// has no bad direction, -Z included); each distribution's mean weight is 1, the albedo a white
+// sky returns (its estimate of the integral of cos / pi).
+TEST(Ssr, HemisphereSamplesEstimateTheCosineIntegral) {
+  for (const SampleDistribution distribution : {SampleDistribution::Uniform, SampleDistribution::Cosine}) {
+    SsrUniforms u;
+    u.distribution = distribution;
+    for (const vec3 n : {vec3(0.0f, 0.0f, 1.0f), vec3(0.0f, 0.0f, -1.0f), vec3(0.0f, 1.0f, 0.0f),
+                         glm::normalize(vec3(0.3f, -0.5f, -0.8f)), glm::normalize(vec3(1e-4f, 0.0f, -1.0f))}) {
+      double weights = 0.0, heights = 0.0;
+      constexpr int kSamples = 20000;
+      for (int k = 0; k < kSamples; ++k) {
+        float weight = 0.0f;
+        const vec3 dir = ssrHemisphereLanes<float>(u, n, ssrRandomPairOf(7, 11, static_cast<std::uint32_t>(k)), weight);
+        ASSERT_NEAR(glm::length(dir), 1.0f, 1e-5f);
+        ASSERT_GE(glm::dot(dir, n), -1e-5f);
+        weights += weight;
+        heights += glm::dot(dir, n);
+      }
+      EXPECT_NEAR(weights / kSamples, 1.0, 0.02) << toString(distribution);
+      // The mean height: 1/2 uniform, 2/3 cosine-weighted.
+      EXPECT_NEAR(heights / kSamples, distribution == SampleDistribution::Uniform ? 0.5 : 2.0 / 3.0, 0.01)
+          << toString(distribution);
+    }
+  }
 }
 
 // The screen marches' view: the WallView's camera over 64 x 64 pixels, the surface distances
@@ -379,6 +444,29 @@ TEST(Ssr, HizDrawsTheDdaFrameOnTheMirrorFloor) {
     if (std::memcmp(&a.rgba[4 * i], &plain.rgba[4 * i], 4) != 0) ++changed;
   }
   EXPECT_GT(changed, 300u);
+}
+
+// Indirect light on the mirror floor: only ever adds light, reaches pixels that reflect
+// nothing (the box's sides see the floor), and the teaching and fast paths agree bit for bit.
+TEST(Ssr, IndirectLightAddsOnBothPaths) {
+  const Scene scene = mirrorFloor();
+  RenderSettings mirror = scene.settings;
+  mirror.ssr.march = SsrMarch::Hiz;
+  const RenderOutput plain = renderCpu(scene, mirror, CpuPath::Fast);
+  for (const SampleDistribution distribution : {SampleDistribution::Uniform, SampleDistribution::Cosine}) {
+    RenderSettings settings = mirror;
+    settings.ssr.indirectSamples = 4;
+    settings.ssr.sampleDistribution = distribution;
+    const RenderOutput fast = renderCpu(scene, settings, CpuPath::Fast);
+    const RenderOutput teaching = renderCpu(scene, settings, CpuPath::Teaching);
+    EXPECT_EQ(fast.rgba, teaching.rgba) << toString(distribution);
+    std::size_t brighter = 0;
+    for (std::size_t i = 0; i < fast.rgba.size(); ++i) {
+      ASSERT_GE(fast.rgba[i], plain.rgba[i]) << "byte " << i;
+      if (fast.rgba[i] > plain.rgba[i]) ++brighter;
+    }
+    EXPECT_GT(brighter, 2000u) << toString(distribution);
+  }
 }
 
 class SsrPaths : public ::testing::TestWithParam<SsrMarch> {};
