@@ -248,7 +248,13 @@ void GlGBuffer::reflect(ProgramCache& programs, const Scene& scene, const Render
   setFloat("nearDistance", static_cast<float>(scene.camera.near));
   setFloat("farDistance", static_cast<float>(scene.camera.far));
   glUniform1i(uniformLocation(program, "hizLevels"), hizLevels);
-  glUniform1i(uniformLocation(program, "indirectSamples"), ssr.indirectSamples);
+  const int debugView = settings.view == View::SsrHit     ? 1
+                        : settings.view == View::SsrSteps ? 2
+                        : settings.view == View::SsrUv    ? 3
+                        : settings.view == View::HizLevel ? 4
+                                                          : 0;
+  glUniform1i(uniformLocation(program, "debugView"), debugView);
+  glUniform1i(uniformLocation(program, "indirectSamples"), debugView != 0 ? 0 : ssr.indirectSamples);
   glUniform1i(uniformLocation(program, "cosineSamples"), ssr.sampleDistribution == SampleDistribution::Cosine ? 1 : 0);
   // As makeSsrUniforms: 1 / samples rounded once here, so neither renderer divides its own way.
   setFloat("indirectScale", ssr.indirectSamples > 0 ? 1.0f / static_cast<float>(ssr.indirectSamples) : 1.0f);

@@ -134,7 +134,7 @@ std::string viewDefine(View view) {
   // mip_level is drawn as albedo of stand-in textures (scene/mip_level_view.h).
   // The environment views are the shaded program with ENVIRONMENT_VIEW (environmentViewDefines).
   std::string name(toString(view == View::MipLevel                                ? View::Albedo
-                            : isEnvironmentView(view) || isShadowView(view) ? View::Shaded
+                            : isEnvironmentView(view) || isShadowView(view) || isSsrView(view) ? View::Shaded
                                                                             : view));
   std::transform(name.begin(), name.end(), name.begin(),
                  [](unsigned char c) { return static_cast<char>(std::toupper(c)); });

@@ -16,7 +16,8 @@ enum class FrontFace { Ccw, Cw };
 // Height, ParallaxOffset, ParallaxSteps, SelfShadow: the height-field views (docs/parallax.md).
 enum class View {
   Shaded, Albedo, Normal, Tangent, Bitangent, MappedNormal, Uv, Depth, LightTangent, EyeTangent, MipLevel,
-  Height, ParallaxOffset, ParallaxSteps, SelfShadow, ReflectDir, EnvFace, EnvLod, Shadow, LightDepth
+  Height, ParallaxOffset, ParallaxSteps, SelfShadow, ReflectDir, EnvFace, EnvLod, Shadow, LightDepth,
+  SsrHit, SsrSteps, SsrUv, HizLevel
 };
 // Whether the view shows a height-field quantity (drawn only where a material has a height map).
 constexpr bool isHeightView(View v) {
@@ -34,6 +35,14 @@ constexpr bool isEnvironmentView(View v) { return v == View::ReflectDir || v == 
 // falls). Drawn by the shaded permutation like the environment views; without a shadowed
 // light every surface is shown dimmed to grey.
 constexpr bool isShadowView(View v) { return v == View::Shadow || v == View::LightDepth; }
+// Whether the view shows each pixel's screen-space reflection march (docs/ssr.md, "Debug
+// views"): ssr_hit (how it ended), ssr_steps (its steps), ssr_uv (where it hit), hiz_level (the
+// highest Hi-Z level it used). The frame draws deferred and shaded, then the reflection pass
+// marches every drawn pixel's mirror ray (whatever ssr.enabled and ssr_reflect say) and writes
+// the march's value in place of the colour. Not a per-fragment view: not in kAllViews.
+constexpr bool isSsrView(View v) {
+  return v == View::SsrHit || v == View::SsrSteps || v == View::SsrUv || v == View::HizLevel;
+}
 // Whether the view is drawn by the shaded permutation (the lights, the environment, the sky).
 constexpr bool isShadedView(View v) { return v == View::Shaded || isEnvironmentView(v) || isShadowView(v); }
 
@@ -146,7 +155,7 @@ struct SsrSettings {
   int maxSteps = 64;        // [1, kMaxSsrSteps]
   float step = 0.05f;       // world units, > 0: linear's every step, adaptive's first (screen marches: unused)
   float thickness = 0.1f;   // world units, > 0: how far behind a surface a ray still hits it
-  int indirectSamples = 0;  // [0, kMaxSsrIndirectSamples]; only 0 is drawn yet
+  int indirectSamples = 0;  // [0, kMaxSsrIndirectSamples]: indirect diffuse rays per pixel, 0 none
   SampleDistribution sampleDistribution = SampleDistribution::Uniform;
   float reflectStrength = 1.0f;  // [0, kMaxSsrReflectStrength]
 };
@@ -170,13 +179,14 @@ struct RenderSettings {
 // Whether a frame with these settings marches screen-space reflections (docs/ssr.md): they are
 // on and the view is the shaded one.
 inline bool drawsSsr(const RenderSettings& settings) {
-  return settings.ssr.enabled && settings.view == View::Shaded;
+  return (settings.ssr.enabled && settings.view == View::Shaded) || isSsrView(settings.view);
 }
 // Whether a frame with these settings draws deferred (docs/deferred.md): the pipeline asks for
 // it, or the reflections need its G-buffer, and the view is the shaded one (every debug view
 // shows one surface quantity, drawn forward).
 inline bool drawsDeferred(const RenderSettings& settings) {
-  return (settings.pipeline == Pipeline::Deferred || settings.ssr.enabled) && settings.view == View::Shaded;
+  return ((settings.pipeline == Pipeline::Deferred || settings.ssr.enabled) && settings.view == View::Shaded) ||
+         isSsrView(settings.view);
 }
 // Whether a deferred frame's G-buffer holds the position (its sixth target).
 inline bool storesGBufferPosition(const RenderSettings& settings) {
@@ -233,6 +243,8 @@ inline constexpr View kAllViews[] = {View::Shaded, View::Albedo, View::Normal, V
                                      View::EyeTangent, View::MipLevel, View::Height, View::ParallaxOffset,
                                      View::ParallaxSteps, View::SelfShadow, View::ReflectDir, View::EnvFace,
                                      View::EnvLod, View::Shadow, View::LightDepth};
+// The reflection pass's views (isSsrView), drawn over the whole frame, never one fragment alone.
+inline constexpr View kSsrViews[] = {View::SsrHit, View::SsrSteps, View::SsrUv, View::HizLevel};
 
 
 }  // namespace twr

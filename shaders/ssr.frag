@@ -30,6 +30,7 @@ uniform int indirectSamples;        // indirect light's rays per pixel (0: none)
 uniform int cosineSamples;          // 1: cosine-weighted, 0: uniform over the hemisphere
 uniform float indirectScale;        // 1 / indirectSamples, rounded once on the CPU
 uniform sampler2D gbufferAlbedo;    // xyz: the diffuse albedo
+uniform int debugView;              // 0: none; 1 ssr_hit, 2 ssr_steps, 3 ssr_uv, 4 hiz_level
 
 layout(location = 0) out vec4 fragColour;
 
@@ -163,6 +164,9 @@ Sample sampleAt(ScreenRay r, float j) {
   return s;
 }
 
+// hiz: the highest level the last march skipped a cell at (SsrMarchL::level).
+float levelReached = 0.0;
+
 // dda_screen (hizLevels 0) and hiz (ssrScreenMarchLanes): the result, the steps, the hit pixel.
 float screenMarch(vec3 origin, vec3 dir, out float steps, out ivec2 hitPixel) {
   steps = 0.0;
@@ -173,6 +177,7 @@ float screenMarch(vec3 origin, vec3 dir, out float steps, out ivec2 hitPixel) {
   float j = 0.0;         // the last sample marched: it and every one before lie in front
   float level = 0.0;     // the level the next sample is tried at
   float cellSize = 1.0;  // 2^level pixels
+  float blockedUntil = 0.0;  // the last level-1 cell not skipped ends here: single pixels till then
   for (int i = 0; i < maxSteps; ++i) {
     float n = j + 1.0;
     steps = steps + 1.0;
@@ -192,7 +197,7 @@ float screenMarch(vec3 origin, vec3 dir, out float steps, out ivec2 hitPixel) {
         return SSR_BEHIND;
       }
       j = n;
-      if (topLevel > 0.0) {
+      if (topLevel > 0.0 && !(n < blockedUntil)) {
         level = 1.0;
         cellSize = 2.0;
       }
@@ -222,11 +227,13 @@ float screenMarch(vec3 origin, vec3 dir, out float steps, out ivec2 hitPixel) {
       float cellLeast = fits ? texelFetch(hizDistance, ivec2(int(cx), int(cy)), int(level)).r : 0.0;
       if (fits && max(sn.w, sl.w) < cellLeast) {
         j = last;
+        levelReached = max(levelReached, level);
         if (level < topLevel) {
           level = level + 1.0;
           cellSize = cellSize * 2.0;
         }
       } else {
+        if (fits && level == 1.0) blockedUntil = last;
         level = level - 1.0;
         cellSize = cellSize * 0.5;
       }
@@ -286,6 +293,7 @@ vec3 hemisphere(vec3 n, vec2 xi, out float weight) {
 
 // The march the settings name (ssrMarchOfLanes).
 float marchOf(vec3 origin, vec3 dir, out float steps, out ivec2 hitPixel) {
+  levelReached = 0.0;
   return marchKind == 2 ? screenMarch(origin, dir, steps, hitPixel) : march(origin, dir, steps, hitPixel);
 }
 
@@ -305,12 +313,32 @@ vec3 indirect(vec3 nl, vec3 posWorld, uvec2 pixel, out float hits) {
   return sum * indirectScale;
 }
 
+// A debug view's colour for a march (ssrViewColourLanes): debugView 1 ssr_hit, 2 ssr_steps,
+// 3 ssr_uv, 4 hiz_level.
+vec3 viewColour(float result, float steps, ivec2 hitPixel) {
+  bool hit = result == SSR_HIT;
+  if (debugView == 1) {
+    return hit ? vec3(0.2, 0.85, 0.2)
+               : (result == SSR_MISS ? vec3(0.15, 0.3, 0.9)
+                                     : (result == SSR_OFF_SCREEN ? vec3(0.95, 0.85, 0.1)
+                                                                 : (result == SSR_BEHIND ? vec3(0.9, 0.15, 0.15) : vec3(0.0))));
+  }
+  if (debugView == 2) return heatColour(steps / float(maxSteps)).rgb;
+  if (debugView == 3) {
+    float x = (float(hitPixel.x) + 0.5) / viewportSize.x;
+    float y = (float(hitPixel.y) + 0.5) / viewportSize.y;
+    return hit ? vec3(x, y, 0.0) : vec3(0.0);
+  }
+  if (hizLevels == 0) return vec3(0.0);
+  return heatColour(levelReached / float(hizLevels)).rgb;
+}
+
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   float depth = texelFetch(gbufferDepth, pixel, 0).r;
   float ssrReflect = texelFetch(gbufferSpecular, pixel, 0).w;
-  // Nothing drawn, or neither a mirror ray nor indirect light: the lit colour stays.
-  if (!(depth < 1.0) || !(ssrReflect > 0.0 || indirectSamples > 0)) discard;
+  // Nothing drawn, or neither a mirror ray, indirect light nor a debug view: the lit colour stays.
+  if (!(depth < 1.0) || !(ssrReflect > 0.0 || indirectSamples > 0 || debugView != 0)) discard;
   vec3 nl = texelFetch(gbufferNormal, pixel, 0).xyz;
 #ifdef GBUFFER_POSITION
   vec3 posWorld = texelFetch(gbufferPosition, pixel, 0).xyz;
@@ -319,6 +347,13 @@ void main() {
 #endif
   vec3 wo = safeNormalize(eyePosWorld - posWorld);
   vec3 r = safeNormalize((2.0 * dot(nl, wo)) * nl - wo);
+  if (debugView != 0) {
+    float steps;
+    ivec2 hitPixel;
+    float result = marchOf(posWorld, r, steps, hitPixel);
+    fragColour = vec4(viewColour(result, steps, hitPixel), 1.0);
+    return;
+  }
   vec3 colour = texelFetch(litColour, pixel, 0).rgb;
   vec3 total = colour;
   bool changed = false;

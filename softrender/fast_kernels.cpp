@@ -542,7 +542,7 @@ void ReflectRows(const GBuffer& g, const SsrUniforms& u, const Mat4T<float>& wor
   HWY_ALIGN float random[2 * kMaxSsrIndirectSamples][kMaxLanes];  // per sample: xi.x, xi.y
   Vec2L<LaneF> samples[kMaxSsrIndirectSamples];
   const vec4 noPosition(0.0f);
-  const bool indirect = u.indirectSamples > 0;
+  const bool everyPixel = u.indirectSamples > 0 || isSsrView(u.view);  // not only the reflecting ones
   for (int py = rowBegin; py < rowEnd; ++py) {
     for (std::size_t x = 0; x < width; x += lanes) {
       const std::size_t inRow = std::min(lanes, width - x);
@@ -550,7 +550,7 @@ void ReflectRows(const GBuffer& g, const SsrUniforms& u, const Mat4T<float>& wor
       std::uint64_t bits = 0;
       for (std::size_t l = 0; l < lanes; ++l) {
         const bool drawn = l < inRow && fb.depth[origin + l] < kClearDepth;
-        const bool marched = drawn && (g.specular[origin + l].w > 0.0f || indirect);
+        const bool marched = drawn && (g.specular[origin + l].w > 0.0f || everyPixel);
         if (marched) bits |= std::uint64_t{1} << l;
         const std::size_t i = marched ? origin + l : origin;  // a sane texel for lanes not marched
         const vec4& n = g.normal[i];

@@ -223,7 +223,7 @@ struct ShaderKey {
 // permutation: albedo reads the diffuse map; mapped_normal the normal map; shaded everything;
 // the height views and a parallax method (which moves every map's uv) the height map.
 constexpr bool viewReadsHeightMap(View v) {
-  return isShadedView(v) || v == View::Albedo || v == View::MappedNormal || isHeightView(v);
+  return isShadedView(v) || isSsrView(v) || v == View::Albedo || v == View::MappedNormal || isHeightView(v);
 }
 inline ShaderKey canonicalShaderKey(ShaderKey key) {
   switch (key.view) {
@@ -233,7 +233,13 @@ inline ShaderKey canonicalShaderKey(ShaderKey key) {
     case View::EnvLod:
     case View::Shadow:
     case View::LightDepth:
-      key.view = View::Shaded;  // the environment and shadow views share the shaded permutation
+    case View::SsrHit:
+    case View::SsrSteps:
+    case View::SsrUv:
+    case View::HizLevel:
+      // The environment and shadow views share the shaded permutation; the reflection views
+      // draw a shaded frame the reflection pass then writes over.
+      key.view = View::Shaded;
       break;
     case View::Albedo:
     case View::MipLevel:
@@ -336,6 +342,10 @@ void withShaderFeatures(const ShaderKey& keyIn, Body&& body) {
     case View::EnvLod:  // drawn by the shaded permutation (ShadeUniformsT::shadedView)
     case View::Shadow:
     case View::LightDepth:
+    case View::SsrHit:  // a shaded frame the reflection pass writes over (isSsrView)
+    case View::SsrSteps:
+    case View::SsrUv:
+    case View::HizLevel:
       withAll.template operator()<View::Shaded>();
       break;
   }

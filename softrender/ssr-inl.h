@@ -90,9 +90,11 @@ TWR_LANE_INLINE L ssrResultLane(SsrResult r) {
 // One march's outcome per lane.
 template <typename L>
 struct SsrMarchL {
-  L result;    // an SsrResult, as a lane value
-  L steps;     // the steps taken
-  L hitIndex;  // the hit pixel's element (valid where result is Hit)
+  L result;        // an SsrResult, as a lane value
+  L steps;         // the steps taken
+  L hitIndex;      // the hit pixel's element (valid where result is Hit)
+  L hitX, hitY;    // the hit pixel's column and row from the bottom (valid where result is Hit)
+  L level;         // hiz: the highest level a cell was skipped at (0: none, and for the other marches)
 };
 
 // The mirror ray from `origin` along the unit `dir`, for the lanes in `active` (ssr.frag's
@@ -109,7 +111,8 @@ TWR_LANE_INLINE SsrMarchL<L> ssrMarchLanes(const SsrUniformsT<ScalarOf<L>>& u, c
   const L zero(S(0)), one(S(1)), half(S(0.5));
   const L thickness(u.thickness), minStep(u.minStep);
   const bool adaptive = u.march == SsrMarch::AdaptiveWorld;
-  SsrMarchL<L> m{select(active, (ssrResultLane<L>)(SsrResult::Miss), (ssrResultLane<L>)(SsrResult::NotMarched)), zero, zero};
+  SsrMarchL<L> m{select(active, (ssrResultLane<L>)(SsrResult::Miss), (ssrResultLane<L>)(SsrResult::NotMarched)),
+                 zero, zero, zero, zero, zero};
   MaskOf<L> live = active;
   // Distances along the ray, summed in plain adds: every renderer rounds them alike (a
   // multiply-add a GPU compiler may fuse would let positions stepped one from the next drift
@@ -135,6 +138,8 @@ TWR_LANE_INLINE SsrMarchL<L> ssrMarchLanes(const SsrUniformsT<ScalarOf<L>>& u, c
       const SsrScreenL<L> sh = (ssrScreenOfLanes<L>)(u, origin + dir * (tCur + stepLength * t));
       const MaskOf<L> hit = decide & (s1 < thickness) & (s2 < thickness) & sh.onScreen;
       m.hitIndex = select(hit, sh.index, m.hitIndex);
+      m.hitX = select(hit, floorOf(select(sh.onScreen, sh.windowX, zero)), m.hitX);
+      m.hitY = select(hit, floorOf(select(sh.onScreen, sh.windowY, zero)), m.hitY);
       m.result = select(hit, (ssrResultLane<L>)(SsrResult::Hit), select(decide, (ssrResultLane<L>)(SsrResult::Behind), m.result));
       live = live & !decide;
     }
@@ -225,7 +230,8 @@ TWR_LANE_INLINE SsrSampleL<L> ssrSampleLanes(const SsrUniformsT<ScalarOf<L>>& u,
 // from the chain, and the ray's samples while they stay in the cell. If the farthest of them
 // (the ray's eye distance only grows or only shrinks along it) is nearer than the cell's
 // nearest surface, every one is in front of its pixel's surface: the march jumps past them and
-// climbs a level; otherwise it descends one and tries again, down to single pixels.
+// climbs a level; otherwise it descends one and tries again, down to single pixels (and a
+// level-1 cell that could not be skipped is not tried again while the march is inside it).
 template <typename L>
 TWR_LANE_INLINE SsrMarchL<L> ssrScreenMarchLanes(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& origin,
                                                  const Vec3L<L>& dir, const MaskOf<L>& active) {
@@ -234,11 +240,15 @@ TWR_LANE_INLINE SsrMarchL<L> ssrScreenMarchLanes(const SsrUniformsT<ScalarOf<L>>
   const L width(u.viewportSize.x), height(u.viewportSize.y), thickness(u.thickness);
   const L topLevel(static_cast<S>(u.hizLevels));
   const SsrScreenRayL<L> ray = (ssrScreenRayLanes<L>)(u, origin, dir);
-  SsrMarchL<L> m{select(active, (ssrResultLane<L>)(SsrResult::Miss), (ssrResultLane<L>)(SsrResult::NotMarched)), zero, zero};
+  SsrMarchL<L> m{select(active, (ssrResultLane<L>)(SsrResult::Miss), (ssrResultLane<L>)(SsrResult::NotMarched)),
+                 zero, zero, zero, zero, zero};
   MaskOf<L> live = active;
   L j = zero;         // the last sample marched: it and every one before lie in front
   L level = zero;     // the level the next sample is tried at (0: its pixel alone)
   L cellSize = one;   // that level's cells' side, pixels (2^level, exact)
+  // The last sample of the last level-1 cell that could not be skipped: until the march is
+  // past it, it stays with single pixels instead of testing that cell again at every step.
+  L blockedUntil = zero;
   for (int i = 0; i < u.maxSteps && anyOf(live); ++i) {
     const L n = j + one;
     m.steps = select(live, m.steps + one, m.steps);
@@ -261,11 +271,13 @@ TWR_LANE_INLINE SsrMarchL<L> ssrScreenMarchLanes(const SsrUniformsT<ScalarOf<L>>
         const L behindBy = minOf((ssrSampleLanes<L>)(u, ray, j).w, sn.w) - surfaceN;
         const MaskOf<L> hit = crossed & (behindBy < thickness);
         m.hitIndex = select(hit, sn.index, m.hitIndex);
+        m.hitX = select(hit, sn.pixelX, m.hitX);
+        m.hitY = select(hit, sn.pixelY, m.hitY);
         m.result = select(hit, (ssrResultLane<L>)(SsrResult::Hit), select(crossed, (ssrResultLane<L>)(SsrResult::Behind), m.result));
         live = live & !crossed;
       }
       j = select(inFront, n, j);
-      const MaskOf<L> up = inFront & (topLevel > zero);
+      const MaskOf<L> up = inFront & (topLevel > zero) & !(n < blockedUntil);
       level = select(up, one, level);
       cellSize = select(up, two, cellSize);
     }
@@ -299,6 +311,8 @@ TWR_LANE_INLINE SsrMarchL<L> ssrScreenMarchLanes(const SsrUniformsT<ScalarOf<L>>
       const MaskOf<L> down = atCell & !skip;
       const MaskOf<L> climb = skip & (level < topLevel);
       j = select(skip, last, j);
+      m.level = select(skip, maxOf(m.level, level), m.level);
+      blockedUntil = select(fits & !skip & (level == one), last, blockedUntil);
       level = select(climb, level + one, select(down, level - one, level));
       cellSize = select(climb, cellSize * two, select(down, cellSize * half, cellSize));
     }
@@ -309,7 +323,7 @@ TWR_LANE_INLINE SsrMarchL<L> ssrScreenMarchLanes(const SsrUniformsT<ScalarOf<L>>
 // The cosine and sine of a turn in [0, 1) (ssr.frag's circle): written out, not the library's
 // or GLSL's own, which round differently, so both renderers turn a ray alike. The quadrant
 // (exact: 4 turn and its fraction are exact in a float), then Taylor series of the angle in
-// [0, pi/2) to the 11th and 12th powers, in Horner form (error below 1e-8).
+// [0, pi/2) to the 11th and 12th powers, in Horner form (error below 1e-7).
 template <typename L>
 TWR_LANE_INLINE Vec2L<L> ssrCircleLanes(const L& turn) {
   using S = ScalarOf<L>;
@@ -408,6 +422,40 @@ TWR_LANE_INLINE SsrIndirectL<L> ssrIndirectLanes(const SsrUniformsT<ScalarOf<L>>
   return SsrIndirectL<L>{sum * L(u.indirectScale), hits};
 }
 
+// A debug view's colour for a march (ssr.frag's viewColour; isSsrView says what each shows).
+template <typename L>
+TWR_LANE_INLINE Vec3L<L> ssrViewColourLanes(const SsrUniformsT<ScalarOf<L>>& u, const SsrMarchL<L>& m) {
+  using S = ScalarOf<L>;
+  const L zero(S(0)), half(S(0.5));
+  const MaskOf<L> hit = m.result == (ssrResultLane<L>)(SsrResult::Hit);
+  switch (u.view) {
+    case View::SsrHit: {
+      // hit green, miss blue, off screen yellow, behind red, not marched black
+      const MaskOf<L> miss = m.result == (ssrResultLane<L>)(SsrResult::Miss);
+      const MaskOf<L> off = m.result == (ssrResultLane<L>)(SsrResult::OffScreen);
+      const MaskOf<L> behind = m.result == (ssrResultLane<L>)(SsrResult::Behind);
+      const Vec3L<L> black(zero);
+      return select3<L>(hit, Vec3L<L>(L(S(0.2f)), L(S(0.85f)), L(S(0.2f))),
+                        select3<L>(miss, Vec3L<L>(L(S(0.15f)), L(S(0.3f)), L(S(0.9f))),
+                                   select3<L>(off, Vec3L<L>(L(S(0.95f)), L(S(0.85f)), L(S(0.1f))),
+                                              select3<L>(behind, Vec3L<L>(L(S(0.9f)), L(S(0.15f)), L(S(0.15f))), black))));
+    }
+    case View::SsrSteps: {
+      const Vec4L<L> heat = (heatColourLanes<L>)(m.steps / L(static_cast<S>(u.maxSteps)));
+      return Vec3L<L>(heat.x, heat.y, heat.z);
+    }
+    case View::SsrUv: {
+      const L x = (m.hitX + half) / L(u.viewportSize.x), y = (m.hitY + half) / L(u.viewportSize.y);
+      return select3<L>(hit, Vec3L<L>(x, y, zero), Vec3L<L>(zero));
+    }
+    default: {  // hiz_level
+      if (u.hizLevels == 0) return Vec3L<L>(zero);
+      const Vec4L<L> heat = (heatColourLanes<L>)(m.level / L(static_cast<S>(u.hizLevels)));
+      return Vec3L<L>(heat.x, heat.y, heat.z);
+    }
+  }
+}
+
 // One pixel's pass (ssr.frag's main): the G-buffer's lighting normal, position, ssr_reflect
 // and albedo, the pixel's own lit colour, its indirect samples' random pairs
 // (ssrRandomPairOf). The mirror direction of the eye's, marched where ssr_reflect > 0; on a
@@ -431,7 +479,14 @@ TWR_LANE_INLINE SsrPixelL<L> ssrPixelLanes(const SsrUniformsT<ScalarOf<L>>& u, c
   const Vec3L<L> r = safeNormalize3<L>((two * dot3<L>(nl, wo)) * nl - wo);
   const MaskOf<L> reflects = drawn & (ssrReflect > zero);
   const MaskOf<L> none = zero > zero;
-  SsrPixelL<L> p{{(ssrResultLane<L>)(SsrResult::NotMarched), zero, zero}, zero, none};
+  SsrPixelL<L> p{{(ssrResultLane<L>)(SsrResult::NotMarched), zero, zero, zero, zero, zero}, zero, none};
+  if (isSsrView(u.view)) {
+    // A debug view: every drawn pixel's mirror ray, its march's value in place of the colour.
+    p.mirror = (ssrMarchOfLanes<L>)(u, posWorld, r, drawn);
+    p.changed = drawn;
+    colour = select3<L>(drawn, (ssrViewColourLanes<L>)(u, p.mirror), colour);
+    return p;
+  }
   Vec3L<L> total = colour;
   if (anyOf(reflects)) {
     p.mirror = (ssrMarchOfLanes<L>)(u, posWorld, r, reflects);

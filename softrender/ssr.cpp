@@ -38,6 +38,7 @@ SsrUniforms makeSsrUniforms(const Scene& scene, const RenderSettings& settings, 
   u.indirectSamples = s.indirectSamples;
   u.distribution = s.sampleDistribution;
   u.indirectScale = s.indirectSamples > 0 ? 1.0f / static_cast<float>(s.indirectSamples) : 1.0f;
+  u.view = isSsrView(settings.view) ? settings.view : View::Shaded;
   return u;
 }
 
@@ -133,7 +134,7 @@ void reflectTeaching(const GBuffer& g, SsrUniforms u, const Mat4T<float>& worldF
             const std::size_t i = fb.index(px, py);
             const float depth = fb.depth[i];
             const bool drawn = depth < kClearDepth;
-            if (!drawn || !(g.specular[i].w > 0.0f || u.indirectSamples > 0)) continue;
+            if (!drawn || !(g.specular[i].w > 0.0f || u.indirectSamples > 0 || isSsrView(u.view))) continue;
             const vec3 posWorld = positionStored ? vec3(g.position[i])
                                                  : worldFromWindowLanes<float>(worldFromClip, u.viewportSize,
                                                                                static_cast<float>(px),

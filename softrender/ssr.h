@@ -26,7 +26,7 @@ struct Framebuffer;
 enum class SsrResult : int {
   NotMarched = 0,  // nothing drawn, or ssr_reflect 0
   Hit = 1,         // the ray met a surface within the thickness
-  Miss = 2,        // max_steps taken, nothing met
+  Miss = 2,        // max_steps taken, nothing met (screen marches: or the ray's end reached)
   OffScreen = 3,   // the ray left the screen (or went behind the eye)
   Behind = 4,      // the ray passed behind a surface by more than the thickness
 };
@@ -65,6 +65,9 @@ struct SsrUniformsT {
   int indirectSamples = 0;
   SampleDistribution distribution = SampleDistribution::Uniform;
   S indirectScale = S(1);  // 1 / indirectSamples, rounded once (GL gets the same float)
+  // A reflection view (isSsrView): every drawn pixel's mirror ray, its march shown in place of
+  // the colour. Shaded: the pass adds light.
+  View view = View::Shaded;
 };
 using SsrUniforms = SsrUniformsT<float>;
 

@@ -80,6 +80,18 @@ const char* viewLegend(View view) {
     case View::LightDepth:
       return "The first shadowed light's map depth where each pixel falls, as grey (0 black, 1 white): what the "
              "light sees there. Dark red outside the map; dimmed when no light has a shadow map.";
+    case View::SsrHit:
+      return "How each pixel's mirror ray ended with the chosen march (docs/ssr.md): green hit, blue miss (out of "
+             "steps or at the ray's end), yellow off screen, red behind a surface by more than the thickness. "
+             "Every drawn pixel is marched, whatever its ssr reflect.";
+    case View::SsrSteps:
+      return "The steps each pixel's mirror ray took, as a heat map from 0 (dark blue) to max steps (dark red).";
+    case View::SsrUv:
+      return "Where each pixel's mirror ray hit, as screen coordinates: red = x, green = y (0 at the left and "
+             "bottom, 1 at the right and top); black where it did not hit.";
+    case View::HizLevel:
+      return "The highest Hi-Z level each pixel's mirror ray skipped a cell at, as a heat map from 0 (dark blue: "
+             "pixel by pixel) to the chain's top (dark red). Black under the other marches.";
   }
   return "";
 }

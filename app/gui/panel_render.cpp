@@ -104,10 +104,12 @@ void GuiApp::drawRenderingTab() {
 
   sectionTitle("Debug view");
   ImGui::SetNextItemWidth(-FLT_MIN);
-  // kAllViews, each entry named for the scripted tests (height, parallax_offset, ... included).
+  // kAllViews and kSsrViews, each entry named for the scripted tests (height, parallax_offset, ... included).
   // Tall enough for every view: a scrolled list hid the height views at its end.
   if (ImGui::BeginCombo("##view", std::string(toString(settings.view)).c_str(), ImGuiComboFlags_HeightLargest)) {
-    for (const View view : kAllViews) {
+    std::vector<View> views(std::begin(kAllViews), std::end(kAllViews));
+    views.insert(views.end(), std::begin(kSsrViews), std::end(kSsrViews));  // the reflection pass's
+    for (const View view : views) {
       const bool chosen = settings.view == view;
       if (ImGui::Selectable(std::string(toString(view)).c_str(), chosen) && !chosen) {
         settings.view = view;
@@ -266,7 +268,7 @@ void GuiApp::drawRenderingTab() {
   itemTooltip("After the lighting pass, each pixel whose material has ssr reflect > 0 marches its mirror ray "
               "through the depth buffer and adds the lit colour where it hits (docs/ssr.md). The frame draws "
               "deferred: the march reads the G-buffer.");
-  ImGui::BeginDisabled(!ssr.enabled);
+  ImGui::BeginDisabled(!ssr.enabled && !isSsrView(settings.view));  // the reflection views march too
   changed |= enumRadio("March", ssr.march, kSsrMarches, labelWidth,
                        "linear_world: fixed world-space steps (the GAMES202 write-up's). adaptive_world: the first "
                        "step is Step, halved at every overshoot down to Step / 16. dda_screen: one pixel per step "

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -151,6 +152,15 @@ TEST(Ssr, HitAddsTheLitColourThereScaled) {
   EXPECT_EQ(none.mirror.result, ssrResultLane<float>(SsrResult::NotMarched));
   EXPECT_FALSE(none.changed);
   EXPECT_EQ(kept, vec3(0.3f));
+}
+
+// Known answers (computed apart from this code): GLSL's randomPair runs the same integers,
+// and a change here would change every indirect image.
+TEST(Ssr, PcgHashKnownAnswers) {
+  EXPECT_EQ(pcgHashOf(0u), 129708002u);
+  EXPECT_EQ(pcgHashOf(1u), 2831084092u);
+  EXPECT_EQ(pcgHashOf(12345u), 4099845390u);
+  EXPECT_EQ(ssrRandomPairOf(3, 4, 0), vec2(16614390.0f / 16777216.0f, 13960342.0f / 16777216.0f));
 }
 
 TEST(Ssr, RandomPairsAreFixedPerPixelAndSampleAndSpreadOverTheSquare) {
@@ -469,6 +479,38 @@ TEST(Ssr, IndirectLightAddsOnBothPaths) {
   }
 }
 
+// The reflection views: every drawn pixel marched, its march's value in place of the colour,
+// the same bits on both paths; ssr_hit shows hits on the floor and misses and off-screen rays
+// elsewhere, hiz_level shows levels above 0 where rays crossed empty floor.
+TEST(Ssr, ReflectionViewsShowTheMarch) {
+  const Scene scene = mirrorFloor();
+  const auto count = [](const RenderOutput& out, std::array<std::uint8_t, 3> rgb) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < out.depth.size(); ++i) {
+      if (out.rgba[4 * i] == rgb[0] && out.rgba[4 * i + 1] == rgb[1] && out.rgba[4 * i + 2] == rgb[2]) ++n;
+    }
+    return n;
+  };
+  for (const View view : kSsrViews) {
+    RenderSettings settings = scene.settings;
+    settings.ssr.enabled = false;  // the views march whatever ssr.enabled says
+    settings.ssr.march = SsrMarch::Hiz;
+    settings.view = view;
+    const RenderOutput fast = renderCpu(scene, settings, CpuPath::Fast);
+    const RenderOutput teaching = renderCpu(scene, settings, CpuPath::Teaching);
+    EXPECT_EQ(fast.rgba, teaching.rgba) << toString(view);
+    EXPECT_GT(fast.stats.ssrMilliseconds, 0.0) << toString(view);
+    if (view == View::SsrHit) {
+      // 0.2, 0.85, 0.2 hit; 0.15, 0.3, 0.9 miss; 0.95, 0.85, 0.1 off screen (8-bit, rounded)
+      EXPECT_GT(count(fast, {51, 217, 51}), 300u);
+      EXPECT_GT(count(fast, {242, 217, 26}), 300u);
+    }
+    if (view == View::SsrUv) {
+      EXPECT_GT(count(fast, {0, 0, 0}), 300u);  // no hit: black
+    }
+  }
+}
+
 class SsrPaths : public ::testing::TestWithParam<SsrMarch> {};
 TEST_P(SsrPaths, FastMatchesTeachingBitForBit) {
   const Scene scene = mirrorFloor();
@@ -480,6 +522,13 @@ TEST_P(SsrPaths, FastMatchesTeachingBitForBit) {
     const RenderOutput fast = renderCpu(scene, settings, CpuPath::Fast);
     EXPECT_EQ(teaching.rgba, fast.rgba) << toString(GetParam()) << ", position " << toString(position);
   }
+  // With indirect light: two cosine-weighted samples a pixel.
+  RenderSettings indirect = scene.settings;
+  indirect.ssr.march = GetParam();
+  indirect.ssr.indirectSamples = 2;
+  indirect.ssr.sampleDistribution = SampleDistribution::Cosine;
+  EXPECT_EQ(renderCpu(scene, indirect, CpuPath::Teaching).rgba, renderCpu(scene, indirect, CpuPath::Fast).rgba)
+      << toString(GetParam()) << ", indirect";
 }
 INSTANTIATE_TEST_SUITE_P(Marches, SsrPaths,
                          ::testing::Values(SsrMarch::LinearWorld, SsrMarch::AdaptiveWorld, SsrMarch::DdaScreen,
