@@ -6,6 +6,7 @@
 #include "scene/scene_file.h"
 
 #include <array>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -29,6 +30,18 @@ void applyOverride(const std::string& text, const char* option, E& target, const
 const CLI::Validator kNonEmpty(
     [](std::string& value) { return value.empty() ? std::string("an empty value names no setting") : std::string(); },
     "NONEMPTY");
+
+// A length in world units: finite and > 0, said in those words (CLI::PositiveNumber prints
+// the whole double range).
+const CLI::Validator kPositiveFinite(
+    [](std::string& value) {
+      float number = 0.0f;
+      if (!CLI::detail::lexical_cast(value, number) || !std::isfinite(number) || !(number > 0.0f)) {
+        return "expected a finite number > 0 (world units), got '" + value + "'";
+      }
+      return std::string();
+    },
+    "> 0");
 
 }  // namespace
 
@@ -69,7 +82,7 @@ void addRenderOptions(CLI::App& cmd, RenderRequest& request) {
   cmd.add_option("--ssr-max-steps", request.ssrMaxSteps, "Override settings.ssr.max_steps")
       ->check(CLI::Range(1, kMaxSsrSteps));
   cmd.add_option("--ssr-thickness", request.ssrThickness, "Override settings.ssr.thickness (world units, > 0)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositiveFinite);
   cmd.add_flag("--verbose,-v", request.verbose, "Print GL_VERSION, GL_RENDERER and timings on stderr");
 }
 

@@ -256,6 +256,12 @@ TEST(CliCompare, SsrOverridesChooseTheMarch) {
   const RunResult badSteps = runCli("render " + scene + " -o \"" + (dir / "x.png").string() + "\" --ssr-max-steps 0", dir);
   EXPECT_EQ(badSteps.exitCode, 2);
   EXPECT_NE(badSteps.err.find("--ssr-max-steps"), std::string::npos) << badSteps.err;
+  const RunResult badThickness =
+      runCli("render " + scene + " -o \"" + (dir / "x.png").string() + "\" --ssr-thickness -1", dir);
+  EXPECT_EQ(badThickness.exitCode, 2);
+  EXPECT_NE(badThickness.err.find("--ssr-thickness: expected a finite number > 0 (world units), got '-1'"),
+            std::string::npos)
+      << badThickness.err;
 }
 
 TEST(CliCompare, ExitsOneOverAThreshold) {
