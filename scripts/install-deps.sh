@@ -11,6 +11,7 @@ packages=(
   libtinyobjloader-dev libstb-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libbenchmark-dev
   libhwy-dev                 # Google Highway: the fast path's portable SIMD
+  libembree-dev              # Intel Embree: the ray-traced references (the build works without it)
   xvfb xauth xdotool         # xdotool drives the desktop app in tests/gui/test_gui_scripted
   imagemagick                # writes the BMP, TGA and DDS files the texture tests read
   clang libclang-rt-14-dev   # libFuzzer and clang's sanitizers (scripts/run-fuzzers.sh)
