@@ -13,6 +13,7 @@
 #include "compare/report_json.h"
 #include "compare/thresholds.h"
 #include "glrender/gl_renderer.h"
+#include "raytrace/ssr_reference_report.h"
 #include "scene/errors.h"
 #include "scene/sky_view.h"
 #include "softrender/cpu_renderer.h"
@@ -40,7 +41,57 @@ struct CompareArgs {
   Thresholds limits;
   std::string buffer;       // --buffer NAME: that pass buffer's row and images
   bool allBuffers = false;  // --all-buffers: every buffer's row
+  std::string reference;      // --reference raytrace: both frames against the ray tracer
+  int referenceSamples = -1;  // --reference-samples: its indirect rays per pixel (-1: the frame's)
 };
+
+// --reference raytrace's checks, before anything is rendered.
+void checkReferenceRequest(const CompareArgs& args, const Scene& scene) {
+  if (args.reference.empty()) {
+    if (args.referenceSamples >= 0) {
+      std::cerr << "twinraster: warning: --reference-samples read and ignored: no --reference asked for\n";
+    }
+    return;
+  }
+  if (!rayTracerAvailable()) throw InputError("--reference raytrace: " + rayTracerDescription());
+  if (!scene.settings.ssr.enabled) {
+    throw InputError("--reference raytrace measures screen-space reflections, and settings.ssr.enabled is false in " +
+                     args.request.scenePath + " (--ssr on turns them on)");
+  }
+  if (scene.settings.view != View::Shaded) {
+    throw InputError("--reference raytrace measures the shaded frame, and the view is '" +
+                     std::string(toString(scene.settings.view)) + "'");
+  }
+}
+
+void printReferenceSummary(const SsrReference& ref, const std::vector<SsrReferenceSide>& sides, const std::string& path) {
+  std::cout << std::setprecision(1) << "reference: ray traced (" << rayTracerDescription() << "), " << ref.milliseconds
+            << " ms, " << ref.indirectSamples << " indirect rays per pixel\n";
+  const auto rays = [](const char* what, const std::array<std::uint64_t, kSsrTruthCount>& counts) {
+    std::cout << "  " << what << " rays:";
+    for (std::size_t t = 1; t < kSsrTruthCount; ++t) {
+      std::cout << (t > 1 ? "," : "") << " " << toString(static_cast<SsrTruth>(t)) << " " << counts[t];
+    }
+    std::cout << "\n";
+  };
+  rays("mirror", ref.mirrorRays);
+  if (ref.indirectSamples > 0) rays("indirect", ref.indirectRays);
+  for (const SsrReferenceSide& side : sides) {
+    const SsrReferenceError& e = side.error;
+    std::cout << std::setprecision(2) << "  " << std::left << std::setw(3) << side.name << std::right
+              << " vs reference: mean " << e.all.meanAbs << " levels over " << e.all.pixels
+              << " reflecting pixels, max " << e.all.maxAbs << ", over 3: " << e.all.over3 << "\n      by class (mean, share of the error):";
+    for (std::size_t c = 0; c < kSsrErrorClassCount; ++c) {
+      const SsrErrorRow& row = e.byClass[c];
+      if (row.pixels == 0) continue;
+      std::cout << " " << toString(static_cast<SsrErrorClass>(c)) << " " << row.meanAbs << " ("
+                << std::setprecision(0) << (e.all.sumAbs > 0.0 ? 100.0 * row.sumAbs / e.all.sumAbs : 0.0) << "%)"
+                << std::setprecision(2);
+    }
+    std::cout << "\n";
+  }
+  std::cout << "wrote " << path << "\n";
+}
 
 double medianOf(std::vector<double> values) {
   std::sort(values.begin(), values.end());
@@ -268,6 +319,7 @@ void runCompare(CompareArgs& args) {
   const int width = requestedWidth(args.request, scene);
   const int height = requestedHeight(args.request, scene);
 
+  checkReferenceRequest(args, scene);
   glOptions.verbose = args.request.verbose;
   glOptions.fastSampling = args.glFastSampling;
   std::unique_ptr<Renderer> gl = makeGlRenderer(glOptions);
@@ -377,7 +429,21 @@ void runCompare(CompareArgs& args) {
                         {"gl_gbuffer_ms", glOut.stats.gbufferMilliseconds},
                         {"gl_lighting_ms", glOut.stats.lightingMilliseconds},
                         {"gl_ssr_ms", glOut.stats.ssrMilliseconds}});
+  // The ray-traced reference: the CPU's lit frame without reflections, the rays traced from it.
+  std::optional<SsrReference> traced;
+  std::vector<SsrReferenceSide> sides;
+  if (!args.reference.empty()) {
+    const RenderOutput base = cpu->render(scene, ssrBaseSettings(scene.settings), width, height);
+    SsrReferenceOptions options;
+    options.indirectSamples = args.referenceSamples;
+    traced = traceSsrReference(scene, scene.settings, base, RayScene(scene), options);
+    sides.push_back({"cpu", &cpuOut, measureSsrError(*traced, cpuOut)});
+    sides.push_back({"gl", &glOut, measureSsrError(*traced, glOut)});
+  }
+  mergeExtraKeys(json, {{"reference", traced ? ssrReferenceToJson(*traced, sides) : nlohmann::json(nullptr)}});
   const ArtifactPaths paths = writeCompareArtifacts(args.outDir, cpuOut, glOut, result, json);
+  const std::string referencePath = args.outDir + "/reference_raytrace.png";
+  if (traced) savePng(referencePath, ssrReferenceMontage(*traced, sides));
   std::optional<CaptureArtifactPaths> facePaths;
   if (faces) facePaths = writeCaptureArtifacts(args.outDir, *cpuOut.capturedFaces, *glOut.capturedFaces, *faces);
 
@@ -387,6 +453,7 @@ void runCompare(CompareArgs& args) {
     printSummary(result.metrics, json, paths);
     if (faces) printCaptureSummary(*faces, cpuOut, glOut, *facePaths);
     if (!bufferRows.empty()) printBufferRows(bufferRows, args.outDir);
+    if (traced) printReferenceSummary(*traced, sides, referencePath);
   }
   if (!targetsSkipped.empty()) std::cerr << "twinraster: note: " << targetsSkipped << "\n";
   for (const ThresholdViolation& v : violations) std::cerr << "twinraster: threshold exceeded: " << v.message << "\n";
@@ -424,6 +491,17 @@ const bool registered = registerCommand(30, [](CLI::App& app) {
                 "coverage mismatch 0 (at most 1 per 10,000 covered pixels when triangles are clipped). Only "
                 "when GL_RENDERER is llvmpipe: with another driver (a GPU through --gl-context egl) the metrics "
                 "are reported without these verdicts and a note says so");
+  cmd->add_option("--reference", args->reference,
+                  "Also measure both frames against a ground truth. raytrace: the SSR frame's mirror and indirect "
+                  "rays traced against the scene's own triangles with Intel Embree, the light they bring added to "
+                  "the same lit frame; the error by class (visible, off_screen, occluded, sky, indirect_only; "
+                  "docs/ssr.md, \"Against a ray tracer\"). Writes DIR/reference_raytrace.png and metrics.json's "
+                  "\"reference\". Needs settings.ssr on and a build with Embree (libembree-dev)")
+      ->check(CLI::IsMember({"raytrace"}));
+  cmd->add_option("--reference-samples", args->referenceSamples,
+                  "Indirect rays per pixel the reference traces (default: the frame's indirect_samples, the very "
+                  "rays SSR marches; more converge towards the true indirect light)")
+      ->check(CLI::Range(0, kMaxSsrReferenceSamples));
   Thresholds& t = args->limits;
   const auto limit = [cmd](const char* name, std::optional<double>& field, const char* help) {
     cmd->add_option(name, field, help)->group("Thresholds (exit 1 when exceeded; inclusive)");

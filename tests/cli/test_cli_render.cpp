@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <fstream>
 
 namespace twr::testcli {
@@ -262,6 +263,70 @@ TEST(CliCompare, SsrOverridesChooseTheMarch) {
   EXPECT_NE(badThickness.err.find("--ssr-thickness: expected a finite number > 0 (world units), got '-1'"),
             std::string::npos)
       << badThickness.err;
+}
+
+TEST(CliCompare, ReferenceRaytraceMeasuresBothFramesByClass) {
+  const auto dir = testDir("cli_compare_reference");
+  const std::string cave = "\"" + kSource + "/assets/scenes/ssr_cave.json\"";
+  const RunResult r = runCli("compare " + cave + " --out-dir \"" + dir.string() +
+                                 "\" --width 160 --height 120 --repeat 1 --reference raytrace --reference-samples 8",
+                             dir);
+  if (r.exitCode == 2 && r.err.find("this build has no ray tracer") != std::string::npos) {
+    // A build without Embree says so, and names the package.
+    EXPECT_NE(r.err.find("libembree-dev"), std::string::npos) << r.err;
+    GTEST_SKIP() << r.err;
+  }
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("reference: ray traced (Embree"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("8 indirect rays per pixel"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("cpu vs reference: mean"), std::string::npos) << r.out;
+  EXPECT_TRUE(std::filesystem::exists(dir / "reference_raytrace.png"));
+  const nlohmann::json m = nlohmann::json::parse(readFile(dir / "metrics.json"));
+  const nlohmann::json& ref = m["reference"];
+  EXPECT_EQ(ref["kind"], "raytrace");
+  EXPECT_EQ(ref["indirect_samples"], 8);
+  std::uint64_t mirror = 0, indirect = 0;
+  for (const char* truth : {"sky", "visible", "off_screen", "occluded"}) {
+    mirror += ref["rays"]["mirror"][truth].get<std::uint64_t>();
+    indirect += ref["rays"]["indirect"][truth].get<std::uint64_t>();
+  }
+  EXPECT_GT(ref["rays"]["indirect"]["off_screen"].get<std::uint64_t>(), 0u) << "the sky through the roof, the walls behind";
+  for (const char* side : {"cpu", "gl"}) {
+    const nlohmann::json& e = ref[side];
+    // Every drawn pixel of the cave sends indirect rays: 8 each.
+    EXPECT_EQ(8 * e["pixels"].get<std::uint64_t>(), indirect) << side;
+    std::uint64_t pixels = 0;
+    double share = 0.0;
+    for (const char* c : {"sky", "visible", "off_screen", "occluded", "indirect_only"}) {
+      pixels += e["classes"][c]["pixels"].get<std::uint64_t>();
+      share += e["classes"][c]["error_share"].get<double>();
+    }
+    EXPECT_EQ(pixels, e["pixels"].get<std::uint64_t>()) << side;
+    EXPECT_EQ(e["classes"]["indirect_only"]["pixels"].get<std::uint64_t>() + mirror, pixels) << side;
+    EXPECT_NEAR(share, 1.0, 1e-9) << side;
+    EXPECT_GT(e["mean_abs_diff"].get<double>(), 0.0) << side << ": 4 samples against 8 traced rays";
+  }
+
+  // Asked of a frame without reflections, or a debug view: refused, saying why.
+  const std::string plain = "\"" + kSource + "/assets/scenes/default.json\"";
+  const RunResult off = runCli("compare " + plain + " --out-dir \"" + dir.string() + "\" --reference raytrace", dir);
+  EXPECT_EQ(off.exitCode, 2);
+  EXPECT_NE(off.err.find("settings.ssr.enabled is false"), std::string::npos) << off.err;
+  const RunResult view = runCli("compare " + cave + " --out-dir \"" + dir.string() +
+                                    "\" --width 64 --height 48 --reference raytrace --view ssr_hit",
+                                dir);
+  EXPECT_EQ(view.exitCode, 2);
+  EXPECT_NE(view.err.find("the view is 'ssr_hit'"), std::string::npos) << view.err;
+  const RunResult bad = runCli("compare " + cave + " --out-dir \"" + dir.string() + "\" --reference pathtrace", dir);
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("--reference"), std::string::npos) << bad.err;
+  // --reference-samples alone is read and ignored, and said so; metrics.json's reference is null.
+  const RunResult alone = runCli("compare " + cave + " --out-dir \"" + dir.string() +
+                                     "\" --width 64 --height 48 --repeat 1 --reference-samples 8",
+                                 dir);
+  EXPECT_EQ(alone.exitCode, 0) << alone.err;
+  EXPECT_NE(alone.err.find("--reference-samples read and ignored"), std::string::npos) << alone.err;
+  EXPECT_TRUE(nlohmann::json::parse(readFile(dir / "metrics.json"))["reference"].is_null());
 }
 
 TEST(CliCompare, ExitsOneOverAThreshold) {
