@@ -561,6 +561,118 @@ std::string shadowsHtml(const ShadowSection& section) {
   return s.str();
 }
 
+// Time per frame against error, one line per march (its step counts in order), the x axis
+// logarithmic: a point further left and lower is cheaper and nearer the ray tracer.
+std::string ssrChartSvg(const SsrSection& section) {
+  constexpr int kWidth = 620, kHeight = 300, kLeft = 60, kRight = 150, kTop = 20, kBottom = 40;
+  double top = 0.0, lo = 0.0, hi = 0.0;
+  for (const SsrMarchRow& r : section.steps) {
+    top = std::max(top, r.meanAbs);
+    lo = lo > 0.0 ? std::min(lo, r.msMedian) : r.msMedian;
+    hi = std::max(hi, r.msMedian);
+  }
+  if (section.steps.empty() || top <= 0.0 || lo <= 0.0 || hi <= lo) return "";
+  const double l0 = std::floor(std::log10(lo) * 4.0) / 4.0, l1 = std::ceil(std::log10(hi) * 4.0) / 4.0;
+  const auto x = [&](double ms) { return kLeft + (std::log10(ms) - l0) / (l1 - l0) * (kWidth - kLeft - kRight); };
+  const auto y = [&](double v) { return kTop + (1.0 - v / top) * (kHeight - kTop - kBottom); };
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(1);
+  s << "<svg width=\"" << kWidth << "\" height=\"" << kHeight << "\" font-size=\"11\" font-family=\"sans-serif\">\n";
+  s << "<line x1=\"" << kLeft << "\" y1=\"" << y(0) << "\" x2=\"" << kWidth - kRight << "\" y2=\"" << y(0)
+    << "\" stroke=\"#888\"/>\n<line x1=\"" << kLeft << "\" y1=\"" << kTop << "\" x2=\"" << kLeft << "\" y2=\"" << y(0)
+    << "\" stroke=\"#888\"/>\n";
+  for (double e = std::floor(l0); e <= std::ceil(l1); e += 1.0) {
+    for (const double m : {1.0, 1.5, 2.0, 3.0, 5.0, 7.0}) {
+      const double ms = m * std::pow(10.0, e);
+      if (std::log10(ms) < l0 || std::log10(ms) > l1) continue;
+      s << "<text x=\"" << x(ms) << "\" y=\"" << kHeight - 22 << "\" text-anchor=\"middle\">" << tickText(ms) << "</text>\n";
+    }
+  }
+  s << "<text x=\"" << (kWidth - kRight + kLeft) / 2 << "\" y=\"" << kHeight - 6
+    << "\" text-anchor=\"middle\">CPU frame, ms (log)</text>\n";
+  for (int k = 0; k <= 4; ++k) {
+    const double v = top * k / 4.0;
+    s << "<text x=\"" << kLeft - 6 << "\" y=\"" << y(v) + 4 << "\" text-anchor=\"end\">" << std::setprecision(1) << v
+      << "</text>\n";
+  }
+  s << "<text x=\"12\" y=\"" << kTop + 90 << "\" transform=\"rotate(-90 12 " << kTop + 90
+    << ")\" text-anchor=\"middle\">mean error vs traced, levels</text>\n";
+  const struct {
+    const char* march;
+    const char* colour;
+  } lines[] = {{"linear_world", "#c0392b"}, {"adaptive_world", "#d68910"}, {"dda_screen", "#2471a3"}, {"hiz", "#1e8449"}};
+  int legendY = kTop;
+  for (const auto& line : lines) {
+    s << "<polyline fill=\"none\" stroke=\"" << line.colour << "\" stroke-width=\"2\" points=\"";
+    for (const SsrMarchRow& r : section.steps) {
+      if (r.march == line.march) s << x(r.msMedian) << "," << y(r.meanAbs) << " ";
+    }
+    s << "\"/>\n";
+    for (const SsrMarchRow& r : section.steps) {
+      if (r.march != line.march) continue;
+      s << "<circle cx=\"" << x(r.msMedian) << "\" cy=\"" << y(r.meanAbs) << "\" r=\"3\" fill=\"" << line.colour
+        << "\"><title>" << r.march << ", " << r.maxSteps << " steps: " << r.msMedian << " ms, " << r.meanAbs
+        << " levels</title></circle>\n<text x=\"" << x(r.msMedian) + 4 << "\" y=\"" << y(r.meanAbs) - 4
+        << "\" fill=\"" << line.colour << "\" font-size=\"9\">" << r.maxSteps << "</text>\n";
+    }
+    s << "<text x=\"" << kWidth - kRight + 10 << "\" y=\"" << legendY + 10 << "\" fill=\"" << line.colour << "\">"
+      << line.march << "</text>\n";
+    legendY += 14;
+  }
+  s << "</svg>\n";
+  return s.str();
+}
+
+std::string ssrMarchTable(const std::vector<SsrMarchRow>& rows, double baseMs) {
+  std::ostringstream s;
+  s << "<table><thead><tr><th>march</th><th>max_steps</th><th>thickness</th><th>frame ms</th><th>x no SSR</th>"
+       "<th>SSR pass ms</th><th>mean error</th><th>visible: mean</th><th>visible: over 3</th>"
+       "<th>false hits (sky, over 3)</th></tr></thead>\n<tbody>\n";
+  for (const SsrMarchRow& r : rows) {
+    s << "<tr><td>" << escape(r.march) << "</td><td>" << r.maxSteps << "</td><td>" << num(r.thickness, 2) << "</td><td>"
+      << msText(r.msMedian) << "</td><td>" << num(baseMs > 0.0 ? r.msMedian / baseMs : 0.0, 2) << "</td><td>"
+      << msText(r.ssrMs) << "</td><td>" << num(r.meanAbs, 2) << "</td><td>" << num(r.visibleMeanAbs, 2) << "</td><td>"
+      << r.missedVisible << "</td><td>" << r.falseHits << "</td></tr>\n";
+  }
+  s << "</tbody></table>\n";
+  return s.str();
+}
+
+std::string ssrHtml(const SsrSection& section) {
+  std::ostringstream s;
+  s << "<h2 id=\"ssr\">Screen-space reflections against a ray tracer</h2>\n";
+  s << "<p>Every march of settings.ssr at several max_steps and thicknesses on " << escape(section.scene)
+    << ", and the indirect light at several sample counts on " << escape(section.indirectScene)
+    << ". The reference traces the same rays (the mirror ray and the indirect samples, from the same G-buffer point "
+       "and normal) against the scene's own triangles with "
+    << escape(section.tracer.empty() ? std::string("Embree") : section.tracer)
+    << " and adds the light they bring to the same lit frame: surfaces the frame shows bring its colour there, "
+       "surfaces off the screen or hidden are lit by the frame's own shading. Error: the largest channel difference "
+       "in levels, over the pixels that reflect. Visible: pixels whose mirror ray meets a surface the frame shows, "
+       "where the error is the march's own; false hits: pixels whose mirror ray meets nothing that the march lit "
+       "anyway. Times: the whole CPU frame (fast path, every core). Source: raytrace/ssr_reference.cpp; docs/ssr.md."
+       "</p>\n";
+  s << "<div class=\"reading\"><b>" << escape(section.summary) << "</b><br>" << escape(section.reading) << "</div>\n";
+  if (!section.skipped.empty()) return s.str();
+  s << ssrChartSvg(section);
+  s << "<h3>Step counts (thickness " << num(section.steps.empty() ? 0.0 : section.steps.front().thickness, 2)
+    << ")</h3>\n" << ssrMarchTable(section.steps, section.baseMs);
+  s << "<h3>Thickness (64 steps)</h3>\n" << ssrMarchTable(section.thickness, section.baseMs);
+  s << "<h3>Indirect light: samples</h3>\n<table><thead><tr><th>samples</th><th>frame ms</th><th>SSR pass ms</th>"
+       "<th>mean error vs " << section.referenceSamples << " traced rays</th><th>vs the same rays traced (march alone)</th>"
+       "</tr></thead>\n<tbody>\n";
+  for (const SsrSamplesRow& r : section.samples) {
+    s << "<tr><td>" << r.samples << "</td><td>" << msText(r.msMedian) << "</td><td>" << msText(r.ssrMs) << "</td><td>"
+      << num(r.meanAbs, 2) << "</td><td>" << num(r.marchMeanAbs, 2) << "</td></tr>\n";
+  }
+  s << "</tbody></table>\n";
+  s << "<p class=\"small\">The mirror floor without reflections: " << msText(section.baseMs) << " ms. Its reference "
+    << "took " << num(section.traceMs, 0) << " ms, the cave's (" << section.referenceSamples << " rays per pixel) "
+    << num(section.indirectTraceMs, 0) << " ms.</p>\n";
+  s << figuresHtml(section.pictures, section.captions);
+  return s.str();
+}
+
 std::string heightFieldsHtml(const HeightFieldSection& section) {
   std::ostringstream s;
   s << "<h2 id=\"height_fields\">Height fields: each method against the displaced surface</h2>\n";
@@ -629,6 +741,8 @@ void writeReportHtml(const std::string& path, const ReportData& data) {
     << escape(data.glossy.summary) << "</li>\n";
   s << "<li><a href=\"#shadows\"><b>Shadow maps against a ray tracer</b></a>: " << escape(data.shadows.summary)
     << "</li>\n";
+  s << "<li><a href=\"#ssr\"><b>Screen-space reflections against a ray tracer</b></a>: " << escape(data.ssr.summary)
+    << "</li>\n";
   s << "<li><a href=\"#orthonormal_basis\"><b>Orthonormal bases</b></a>: " << escape(data.basisSummary) << "</li>\n";
   s << "</ul>\n";
 
@@ -645,6 +759,7 @@ void writeReportHtml(const std::string& path, const ReportData& data) {
   s << diffuseLightHtml(data.diffuseLight);
   s << glossyHtml(data.glossy);
   s << shadowsHtml(data.shadows);
+  s << ssrHtml(data.ssr);
 
   s << "<h2 id=\"orthonormal_basis\">Orthonormal bases from a normal</h2>\n";
   s << "<p>Four ways to build two unit vectors b1, b2 with b1 x b2 = n from a unit normal alone, in float as a shader "
@@ -717,6 +832,20 @@ void writeResultsCsv(const std::string& path, const ReportData& data) {
       << num(cost.normalMapMs, 4) << "," << cost.frames << std::string(18 + kHeightColumns, ',') << "\n";
     s << "height_fields_cost_720p," << quoted(cost.pomSetting) << ",\"cpu\"," << num(cost.pomMsMedian, 4) << ","
       << num(cost.pomMs, 4) << "," << cost.frames << std::string(18 + kHeightColumns, ',') << "\n";
+  }
+  // SSR: time and mean error against the ray tracer (mean_abs_diff); every other cell empty.
+  const auto ssrRow = [&](const std::string& id, const std::string& setting, double ms, double meanAbs) {
+    s << id << "," << quoted(setting) << ",\"cpu\"," << num(ms, 4) << ",,,,,," << num(meanAbs, 4)
+      << std::string(21, ',') << "\n";
+  };
+  for (const std::vector<SsrMarchRow>* rows : {&data.ssr.steps, &data.ssr.thickness}) {
+    for (const SsrMarchRow& r : *rows) {
+      ssrRow("ssr_march", r.march + " " + std::to_string(r.maxSteps) + " steps, thickness " + num(r.thickness, 2),
+             r.msMedian, r.meanAbs);
+    }
+  }
+  for (const SsrSamplesRow& r : data.ssr.samples) {
+    ssrRow("ssr_indirect", std::to_string(r.samples) + " samples", r.msMedian, r.meanAbs);
   }
   for (const BasisRow& r : data.bases) {
     // 17 empty cells: ms_median .. vs_exact_max_abs_diff; kHeightColumns more at the end.

@@ -156,6 +156,43 @@ struct ShadowSection {
   std::string summary, reading, skipped;
 };
 
+// Screen-space reflections against a ray tracer (docs/ssr.md, "Against a ray tracer"): each
+// march at several step counts and thicknesses on the mirror floor, and the indirect light at
+// 1..64 samples in the cave, each CPU frame against the ray-traced reference
+// (raytrace/ssr_reference.h). Errors are levels (the largest channel), over the pixels that reflect.
+struct SsrMarchRow {
+  std::string march;              // settings.ssr.march
+  int maxSteps = 0;
+  double thickness = 0.0;         // world units
+  double msMedian = 0.0;          // the whole CPU frame (fast path, every core)
+  double ssrMs = 0.0;             // of it, the reflection pass (median)
+  double meanAbs = 0.0;           // mean error against the reference
+  double visibleMeanAbs = 0.0;    // over the pixels whose mirror ray meets a surface the frame shows
+  std::uint64_t missedVisible = 0;  // of those, more than 3 levels off (a miss or a wrong hit)
+  std::uint64_t falseHits = 0;    // pixels whose mirror ray meets nothing, more than 3 levels off
+};
+struct SsrSamplesRow {
+  int samples = 0;                // indirect_samples
+  double msMedian = 0.0, ssrMs = 0.0;
+  double meanAbs = 0.0;           // against the converged reference: noise and march together
+  double marchMeanAbs = 0.0;      // against the reference of the very same rays: the march alone
+};
+struct SsrSection {
+  std::string scene, indirectScene, tracer;
+  double baseMs = 0.0;            // the mirror floor's frame without reflections (median)
+  std::uint64_t reflecting = 0;   // its pixels that reflect
+  std::uint64_t blindRays = 0;    // of their mirror rays, those meeting off-screen or occluded surfaces
+  double blindErrorShare = 0.0;   // the part of the best march's error those pixels carry, [0, 1]
+  double traceMs = 0.0;           // the mirror floor's reference, every core
+  int referenceSamples = 0;       // indirect rays per pixel of the cave's converged reference
+  double indirectTraceMs = 0.0;
+  std::vector<SsrMarchRow> steps;      // every march at several max_steps, the scene's thickness
+  std::vector<SsrMarchRow> thickness;  // two marches at one step count, several thicknesses
+  std::vector<SsrSamplesRow> samples;
+  std::vector<std::string> pictures, captions;  // beside report.html
+  std::string summary, reading, skipped;
+};
+
 struct ReportData {
   std::string generatedAt;  // local time
   std::string machine;      // CPU model, core count, GL renderer
@@ -169,6 +206,7 @@ struct ReportData {
   DiffuseLightSection diffuseLight;
   GlossySection glossy;
   ShadowSection shadows;
+  SsrSection ssr;
   std::vector<BasisRow> bases;
   std::size_t basisDirections = 0;
   std::string basisSummary;

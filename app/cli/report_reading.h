@@ -22,6 +22,10 @@ KnobReading readParameterizations(const ParameterizationSection& section);
 KnobReading readDiffuseLight(const DiffuseLightSection& section);
 KnobReading readShadows(const ShadowSection& section);
 KnobReading readGlossy(const GlossySection& section);
+// Screen-space reflections against the ray tracer: how many steps each march needs to reach
+// linear_world's best error and what those frames cost, where the thickness threshold leaks
+// (false hits) or loses (missed surfaces), and how the indirect light's noise falls with samples.
+KnobReading readSsr(const SsrSection& section);
 // The height-field section across its views: which method is worth its cost at which angle,
 // POM against plain parallax, where steep parallax's stair-steps show, how many layers POM
 // needs to beat relief, and the 720p cost line.

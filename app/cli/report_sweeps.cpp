@@ -10,6 +10,7 @@
 #include "compare/montage.h"
 #include "compare/side_by_side.h"
 #include "glrender/gl_renderer.h"
+#include "raytrace/ssr_reference_report.h"
 #include "scene/environment_error.h"
 #include "scene/environment_light.h"
 #include "scene/environment_specular.h"
@@ -218,6 +219,7 @@ class Sweeper {
   void diffuseLight(DiffuseLightSection& section, const std::string& outDir);
   void glossy(GlossySection& section, const std::string& outDir);
   void shadows(ShadowSection& section, const std::string& outDir);
+  void ssr(SsrSection& section, const std::string& outDir);
   // The asset tool's sky as a cube, or nothing with `skipped` saying why.
   std::optional<CubeMap> loadSky(std::string& skipped) const;
 
@@ -1172,6 +1174,173 @@ void Sweeper::shadows(ShadowSection& section, const std::string& outDir) {
                       "where both agree (light: lit, dark: shadowed); black: no surface turned to the light"};
 }
 
+namespace {
+
+// A CPU frame timed as timeRenderer does, keeping the reflection pass's share (RenderStats).
+Timing timeSsrFrame(Renderer& cpu, const Scene& scene, int width, int height, int frames, RenderOutput& out,
+                    double& ssrMs) {
+  for (int i = 0; i < kWarmupFrames; ++i) out = cpu.render(scene, scene.settings, width, height);
+  std::vector<double> frameMs, passMs;
+  for (int f = 0; f < frames; ++f) {
+    const auto begin = std::chrono::steady_clock::now();
+    out = cpu.render(scene, scene.settings, width, height);
+    frameMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count());
+    passMs.push_back(out.stats.ssrMilliseconds);
+  }
+  Timing t;
+  t.msMedian = medianOf(frameMs);
+  t.msMin = *std::min_element(frameMs.begin(), frameMs.end());
+  t.frames = frames;
+  ssrMs = medianOf(passMs);
+  return t;
+}
+
+}  // namespace
+
+void Sweeper::ssr(SsrSection& section, const std::string& outDir) {
+  if (!rayTracerAvailable()) {
+    section.skipped = rayTracerDescription();
+    return;
+  }
+  Scene floor, cave;
+  try {
+    floor = loadSceneFile(scenePath("ssr_mirror_floor.json"));
+    cave = loadSceneFile(scenePath("ssr_cave.json"));
+  } catch (const InputError& e) {
+    section.skipped = e.what();
+    return;
+  }
+  const int width = width_, height = height_;
+  section.tracer = rayTracerDescription();
+  section.scene = "ssr_mirror_floor.json at " + sizeText(width, height);
+  section.indirectScene = "ssr_cave.json at " + sizeText(width, height);
+  say("ssr: every march against rays traced with " + section.tracer);
+  CpuOptions cpuOptions;
+  cpuOptions.path = CpuPath::Fast;
+  cpuOptions.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  std::unique_ptr<Renderer> cpu = makeCpuRenderer(cpuOptions);
+  const int frames = options_.quick ? 1 : 3;
+
+  // The mirror floor's reference: its mirror rays only (no indirect light there).
+  floor.settings.ssr.enabled = true;
+  floor.settings.ssr.indirectSamples = 0;
+  const RenderOutput floorBase = cpu->render(floor, ssrBaseSettings(floor.settings), width, height);
+  {
+    RenderOutput unused;
+    Scene plain = floor;
+    plain.settings.ssr.enabled = false;
+    section.baseMs = timeRenderer(*cpu, plain, plain.settings, width, height, frames, unused).msMedian;
+  }
+  const RayScene floorRays(floor);
+  const SsrReference floorRef = traceSsrReference(floor, floor.settings, floorBase, floorRays);
+  section.traceMs = floorRef.milliseconds;
+  for (const std::uint64_t n : floorRef.mirrorRays) section.reflecting += n;
+  section.blindRays = floorRef.mirrorRays[static_cast<std::size_t>(SsrTruth::OffScreen)] +
+                      floorRef.mirrorRays[static_cast<std::size_t>(SsrTruth::Occluded)];
+
+  const auto measureMarch = [&](SsrMarch march, int steps, float thickness, RenderOutput* keep) {
+    Scene s = floor;
+    s.settings.ssr.march = march;
+    s.settings.ssr.maxSteps = steps;
+    s.settings.ssr.thickness = thickness;
+    RenderOutput out;
+    SsrMarchRow row;
+    row.march = std::string(toString(march));
+    row.maxSteps = steps;
+    row.thickness = thickness;
+    row.msMedian = timeSsrFrame(*cpu, s, width, height, frames, out, row.ssrMs).msMedian;
+    const SsrReferenceError e = measureSsrError(floorRef, out);
+    const SsrErrorRow& visible = e.byClass[static_cast<std::size_t>(SsrErrorClass::Visible)];
+    row.meanAbs = e.all.meanAbs;
+    row.visibleMeanAbs = visible.meanAbs;
+    row.missedVisible = visible.over3;
+    row.falseHits = e.byClass[static_cast<std::size_t>(SsrErrorClass::Sky)].over3;
+    std::ostringstream line;
+    line << "ssr " << row.march << " " << steps << " steps, thickness " << thickness << ": " << std::fixed
+         << std::setprecision(1) << row.msMedian << " ms, mean " << std::setprecision(2) << row.meanAbs
+         << " levels vs traced";
+    say(line.str());
+    if (keep) *keep = std::move(out);
+    return std::pair<SsrMarchRow, SsrReferenceError>(row, e);
+  };
+  const std::vector<int> steps = options_.quick ? std::vector<int>{16, 64} : std::vector<int>{8, 16, 32, 64, 128, 256};
+  const std::vector<float> thicknesses =
+      options_.quick ? std::vector<float>{0.02f, 0.4f} : std::vector<float>{0.02f, 0.05f, 0.1f, 0.2f, 0.4f, 0.8f};
+  const float sceneThickness = floor.settings.ssr.thickness;
+  RenderOutput pictured;
+  SsrReferenceError picturedError;
+  double bestMean = -1.0;
+  for (const SsrMarch march : {SsrMarch::LinearWorld, SsrMarch::AdaptiveWorld, SsrMarch::DdaScreen, SsrMarch::Hiz}) {
+    for (const int n : steps) {
+      const bool keep = march == SsrMarch::Hiz && n == 64;
+      auto [row, e] = measureMarch(march, n, sceneThickness, keep ? &pictured : nullptr);
+      if (keep) picturedError = e;
+      if (bestMean < 0.0 || row.meanAbs < bestMean) {
+        bestMean = row.meanAbs;
+        const double blind = e.byClass[static_cast<std::size_t>(SsrErrorClass::OffScreen)].sumAbs +
+                             e.byClass[static_cast<std::size_t>(SsrErrorClass::Occluded)].sumAbs;
+        section.blindErrorShare = e.all.sumAbs > 0.0 ? blind / e.all.sumAbs : 0.0;
+      }
+      section.steps.push_back(row);
+    }
+  }
+  for (const SsrMarch march : {SsrMarch::LinearWorld, SsrMarch::Hiz}) {
+    for (const float t : thicknesses) section.thickness.push_back(measureMarch(march, 64, t, nullptr).first);
+  }
+  const std::filesystem::path dir(outDir);
+  if (!pictured.rgba.empty()) {
+    savePng((dir / "ssr_vs_traced.png").string(),
+            ssrReferenceMontage(floorRef, {{"cpu", &pictured, picturedError}}));
+    section.pictures.push_back("ssr_vs_traced.png");
+    section.captions.push_back(
+        "The mirror floor: the ray-traced reference, the CPU's hiz march at 64 steps, each reflecting pixel's class (grey: its mirror ray meets nothing; green: a surface the frame shows; yellow: one off the "
+        "screen; red: one hidden behind another) and the march's error against the reference");
+  }
+
+  // The cave's indirect light: every sample count against a converged reference (many more
+  // rays from the same sequence) and against the reference of the same rays.
+  cave.settings.ssr.enabled = true;
+  const int referenceSamples = options_.quick ? 32 : 256;
+  section.referenceSamples = referenceSamples;
+  const RenderOutput caveBase = cpu->render(cave, ssrBaseSettings(cave.settings), width, height);
+  const RayScene caveRays(cave);
+  SsrReferenceOptions converged;
+  converged.indirectSamples = referenceSamples;
+  const SsrReference caveRef = traceSsrReference(cave, cave.settings, caveBase, caveRays, converged);
+  section.indirectTraceMs = caveRef.milliseconds;
+  say("ssr: the cave's converged reference, " + std::to_string(referenceSamples) + " rays per pixel, " +
+      fmtFixed(caveRef.milliseconds, 0) + " ms");
+  RenderOutput indirectPictured;
+  SsrReferenceError indirectError;
+  const std::vector<int> sampleCounts = options_.quick ? std::vector<int>{1, 4} : std::vector<int>{1, 2, 4, 8, 16, 32, 64};
+  for (const int n : sampleCounts) {
+    Scene s = cave;
+    s.settings.ssr.indirectSamples = n;
+    RenderOutput out;
+    SsrSamplesRow row;
+    row.samples = n;
+    row.msMedian = timeSsrFrame(*cpu, s, width, height, frames, out, row.ssrMs).msMedian;
+    const SsrReferenceError e = measureSsrError(caveRef, out);
+    row.meanAbs = e.all.meanAbs;
+    row.marchMeanAbs = measureSsrError(traceSsrReference(s, s.settings, caveBase, caveRays), out).all.meanAbs;
+    say("ssr indirect " + std::to_string(n) + " samples: " + fmtFixed(row.msMedian, 1) + " ms, mean " +
+        fmtFixed(row.meanAbs, 2) + " levels vs converged, " + fmtFixed(row.marchMeanAbs, 2) + " vs the same rays");
+    if (n == 4) {
+      indirectPictured = std::move(out);
+      indirectError = e;
+    }
+    section.samples.push_back(row);
+  }
+  if (!indirectPictured.rgba.empty()) {
+    savePng((dir / "ssr_indirect_vs_traced.png").string(),
+            ssrReferenceMontage(caveRef, {{"cpu", &indirectPictured, indirectError}}));
+    section.pictures.push_back("ssr_indirect_vs_traced.png");
+    section.captions.push_back("The cave: the reference traced with " + std::to_string(referenceSamples) +
+                               " rays per pixel, the CPU's indirect light with 4 samples per pixel, the classes and "
+                               "the error (noise and march together)");
+  }
+}
+
 std::string machineDescription() {
   std::ifstream cpuinfo("/proc/cpuinfo");
   std::string line, model = "unknown CPU";
@@ -1229,6 +1398,10 @@ ReportData Sweeper::run() {
   const KnobReading shadowReading = readShadows(data.shadows);
   data.shadows.summary = shadowReading.summary;
   data.shadows.reading = shadowReading.detail;
+  ssr(data.ssr, options_.outDir);
+  const KnobReading ssrReading = readSsr(data.ssr);
+  data.ssr.summary = ssrReading.summary;
+  data.ssr.reading = ssrReading.detail;
   bases(data);
   data.machine =
       machineDescription() + "; GL: " + glRendererString() + ", " + glVersionString() + "; " + glContextString();

@@ -63,13 +63,19 @@ TEST(CliReport, QuickWritesHtmlAndCsvWithEveryKnob) {
   EXPECT_EQ(columns[3], "ms_median");
   EXPECT_EQ(columns[6], "rmse_levels");
   std::set<std::pair<std::string, std::string>> knobBackends;
-  std::set<std::string> basisMethods, heightMethods, costSettings;
+  std::set<std::string> basisMethods, heightMethods, costSettings, ssrSettings;
   std::string line;
   while (std::getline(lines, line)) {
     const std::vector<std::string> cells = splitCsvLine(line);
     ASSERT_EQ(cells.size(), columns.size()) << line;
     if (cells[0] == "orthonormal_basis") {
       basisMethods.insert(cells[1]);
+      continue;
+    }
+    if (cells[0] == "ssr_march" || cells[0] == "ssr_indirect") {  // time and mean error against the ray tracer
+      ssrSettings.insert(cells[0] + " " + cells[1]);
+      EXPECT_GT(std::stod(cells[3]), 0.0) << line;
+      EXPECT_GE(std::stod(cells[9]), 0.0) << line;
       continue;
     }
     if (cells[0] == "height_fields_cost_720p") {  // timing only
@@ -111,7 +117,24 @@ TEST(CliReport, QuickWritesHtmlAndCsvWithEveryKnob) {
 
   const std::string html = readFile(out / "report.html");
   expectContains(html, "<!DOCTYPE html>");
-  EXPECT_EQ(count(html, "<svg"), 9u + 8u + 1u) << "one chart per knob, per height-field view and the environment's";
+  // Screen-space reflections against the ray tracer, or why not (a build without Embree).
+  expectContains(html, "id=\"ssr\"");
+  const bool traced = html.find("this build has no ray tracer") == std::string::npos;
+  EXPECT_EQ(count(html, "<svg"), 9u + 8u + 1u + (traced ? 1u : 0u))
+      << "one chart per knob, per height-field view, the environment's and SSR's";
+  if (traced) {
+    for (const char* setting : {"ssr_march linear_world 16 steps, thickness 0.10", "ssr_march hiz 64 steps, thickness 0.10",
+                                "ssr_march hiz 64 steps, thickness 0.40", "ssr_march dda_screen 16 steps, thickness 0.10",
+                                "ssr_indirect 1 samples", "ssr_indirect 4 samples"}) {
+      EXPECT_TRUE(ssrSettings.count(setting)) << setting;
+    }
+    EXPECT_TRUE(std::filesystem::exists(out / "ssr_vs_traced.png"));
+    EXPECT_TRUE(std::filesystem::exists(out / "ssr_indirect_vs_traced.png"));
+    expectContains(html, "linear_world's best error is");
+    expectContains(html, "mean error vs traced, levels");
+  } else {
+    EXPECT_TRUE(ssrSettings.empty());
+  }
   expectContains(html, "id=\"environment_parameterizations\"");
   expectContains(html, "<img src=\"env_sphere_error.png\"");
   for (const char* picture : {"env_sphere_map.png", "env_sphere_error.png", "env_dual_paraboloid_map.png",

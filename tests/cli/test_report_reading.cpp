@@ -1,7 +1,8 @@
 // The height-field section's reading (app/cli/report_reading.cpp, compiled into this test):
 // written from the numbers it is given, so made-up numbers must give the matching sentences:
 // POM against plain parallax, the pick per view, the stair-steps, the layers POM needs to
-// match and beat relief, the 720p ratio against the 2x target, and "not measured".
+// match and beat relief, the 720p ratio against the 2x target, and "not measured"; SSR's steps to
+// linear_world's best error, its thickness leaks and its noise against samples.
 #include "app/cli/report_reading.h"
 
 #include <gtest/gtest.h>
@@ -129,6 +130,58 @@ TEST(ReportReadingHeightFields, NotMeasured) {
   HeightFieldSection s;
   s.skipped = "no GL";
   EXPECT_EQ(readHeightFields(s).summary, "Not measured: no GL");
+}
+
+SsrMarchRow marchRow(const std::string& march, int steps, double ms, double mean) {
+  SsrMarchRow r;
+  r.march = march;
+  r.maxSteps = steps;
+  r.thickness = 0.1;
+  r.msMedian = ms;
+  r.meanAbs = mean;
+  return r;
+}
+
+TEST(ReportReadingSsr, StepsToLinearsBestLeaksAndNoiseFromTheNumbers) {
+  SsrSection s;
+  s.reflecting = 5000;
+  s.blindRays = 400;
+  s.blindErrorShare = 0.6;
+  s.referenceSamples = 256;
+  s.steps = {marchRow("linear_world", 16, 10.0, 9.0), marchRow("linear_world", 64, 20.0, 4.0),
+             marchRow("linear_world", 256, 60.0, 3.0), marchRow("hiz", 8, 5.0, 6.0), marchRow("hiz", 16, 6.0, 3.1),
+             marchRow("hiz", 64, 8.0, 2.0), marchRow("dda_screen", 64, 30.0, 5.0)};
+  SsrMarchRow thin = marchRow("linear_world", 64, 20.0, 5.0), thick = marchRow("linear_world", 64, 20.0, 6.0);
+  thin.thickness = 0.02;
+  thin.missedVisible = 300;
+  thick.thickness = 0.8;
+  thick.falseHits = 120;
+  s.thickness = {thin, thick};
+  SsrSamplesRow one, many;
+  one.samples = 1;
+  one.msMedian = 10.0;
+  one.meanAbs = 16.0;
+  many.samples = 64;
+  many.msMedian = 400.0;
+  many.meanAbs = 2.0;  // 16 -> 2 over 6 doublings: 0.5^(1/2) each = 0.71
+  many.marchMeanAbs = 1.25;
+  s.samples = {one, many};
+  const KnobReading r = readSsr(s);
+  expectContains(r.summary, "linear_world's best error is 3.00 levels");
+  expectContains(r.summary, "hiz reaches it in 16 steps (6.0 ms a frame) where linear_world needs 256 (60.0 ms)");
+  expectContains(r.summary, "60 % of the best march's error");
+  expectContains(r.detail, "dda_screen not within the steps tried");
+  expectContains(r.detail, "linear_world at 0.80 lights 120 pixels");
+  expectContains(r.detail, "linear_world at 0.02 leaves 300 pixels");
+  expectContains(r.detail, "scales the error by 0.71");
+  expectContains(r.detail, "the march alone is 1.25 levels off at 64 samples");
+  expectContains(r.detail, "hiz 8: 6.00, 16: 3.10, 64: 2.00");
+}
+
+TEST(ReportReadingSsr, NotMeasured) {
+  SsrSection s;
+  s.skipped = "this build has no ray tracer";
+  EXPECT_EQ(readSsr(s).summary, "Not measured: this build has no ray tracer");
 }
 
 }  // namespace
