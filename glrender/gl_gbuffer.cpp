@@ -223,10 +223,22 @@ void GlGBuffer::reflect(ProgramCache& programs, const Scene& scene, const Render
   glDrawBuffers(set_ == GlFrame::Full ? 2 : 1, colourOnly.data());
   const ScreenPassState state(true);
 
+  const GLuint program = useSsrProgram(programs, scene, settings, clipFromWorld, hizLevels, false);
+  const std::array<std::pair<const char*, GLuint>, 7> textures = ssrTextures();
+  bindTextures(program, textures);
+  drawScreenTriangle();
+  unbindTextures(textures.size());
+  restoreSurfaceDrawBuffers();
+}
+
+GLuint GlGBuffer::useSsrProgram(ProgramCache& programs, const Scene& scene, const RenderSettings& settings,
+                                const mat4& clipFromWorld, int hizLevels, bool probe) const {
   std::vector<std::string> defines;
   if (storesPosition_) defines.push_back("GBUFFER_POSITION");
+  if (probe) defines.push_back("SSR_PROBE");
   const GLuint program = programs.get(
-      ProgramDesc{"ssr", {"common.glsl", "sky.vert"}, {"common.glsl", "ssr_distance.glsl", "ssr.frag"}, defines});
+      ProgramDesc{probe ? "ssr_probe" : "ssr", {"common.glsl", "sky.vert"}, {"common.glsl", "ssr_distance.glsl", "ssr.frag"}, defines});
+  const SsrSettings& ssr = settings.ssr;
   glUseProgram(program);
   const auto setFloat = [&](const char* name, float value) { glUniform1f(uniformLocation(program, name), value); };
   setDistanceUniforms(program, scene, clipFromWorld);
@@ -258,17 +270,68 @@ void GlGBuffer::reflect(ProgramCache& programs, const Scene& scene, const Render
   glUniform1i(uniformLocation(program, "cosineSamples"), ssr.sampleDistribution == SampleDistribution::Cosine ? 1 : 0);
   // As makeSsrUniforms: 1 / samples rounded once here, so neither renderer divides its own way.
   setFloat("indirectScale", ssr.indirectSamples > 0 ? 1.0f / static_cast<float>(ssr.indirectSamples) : 1.0f);
-  const std::array<std::pair<const char*, GLuint>, 7> textures = {{{"gbufferDepth", depth_.id()},
-                                                                   {"gbufferNormal", targets_[0].id()},
-                                                                   {"gbufferSpecular", targets_[3].id()},
-                                                                   {"gbufferPosition", position_.id()},
-                                                                   {"litColour", litCopy_.id()},
-                                                                   {"hizDistance", hiz_.id()},
-                                                                   {"gbufferAlbedo", targets_[2].id()}}};
-  bindTextures(program, textures);
-  drawScreenTriangle();
-  unbindTextures(textures.size());
-  restoreSurfaceDrawBuffers();
+  return program;
+}
+
+std::array<std::pair<const char*, GLuint>, 7> GlGBuffer::ssrTextures() const {
+  return {{{"gbufferDepth", depth_.id()},
+           {"gbufferNormal", targets_[0].id()},
+           {"gbufferSpecular", targets_[3].id()},
+           {"gbufferPosition", position_.id()},
+           {"litColour", litCopy_.id()},
+           {"hizDistance", hiz_.id()},
+           {"gbufferAlbedo", targets_[2].id()}}};
+}
+
+std::vector<SsrMarchStep> GlGBuffer::probeReflection(ProgramCache& programs, const Scene& scene,
+                                                     const RenderSettings& settings, const mat4& clipFromWorld, int x,
+                                                     int yGl) {
+  const SsrSettings& ssr = settings.ssr;
+  const int hizLevels = ssr.march == SsrMarch::Hiz ? hizLevelsOf(width_, height_) : 0;
+  if (ssr.march == SsrMarch::Hiz) buildHiz(programs, scene, clipFromWorld, hizLevels);
+  // A strip of max_steps x 2 texels: fragment (k, 0) step k's sample, (k, 1) its decision.
+  const int steps = ssr.maxSteps;
+  GlTexture strip = makeTarget(GL_RGBA32F, GL_RGBA, GL_FLOAT, steps, 2);
+  GlFramebuffer framebuffer = makeGlFramebuffer();
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, strip.id(), 0);
+  const GLenum first = GL_COLOR_ATTACHMENT0;
+  glDrawBuffers(1, &first);
+  GLint viewport[4] = {0, 0, 0, 0};
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  GLint previous = 0;  // the frame's framebuffer, bound again after
+  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous);
+  glViewport(0, 0, steps, 2);
+  std::vector<float> texels(static_cast<std::size_t>(steps) * 2 * 4, 0.0f);
+  {
+    const ScreenPassState state(false);
+    const GLuint program = useSsrProgram(programs, scene, settings, clipFromWorld, hizLevels, true);
+    glUniform2i(uniformLocation(program, "probePixel"), x, yGl);
+    const std::array<std::pair<const char*, GLuint>, 7> textures = ssrTextures();
+    bindTextures(program, textures);
+    drawScreenTriangle();
+    unbindTextures(textures.size());
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, steps, 2, GL_RGBA, GL_FLOAT, texels.data());
+  }
+  glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previous));
+  std::vector<SsrMarchStep> out;
+  for (int k = 0; k < steps; ++k) {
+    const float* sample = &texels[static_cast<std::size_t>(k) * 4];
+    const float* decision = &texels[(static_cast<std::size_t>(steps) + static_cast<std::size_t>(k)) * 4];
+    if (decision[3] != 1.0f) break;  // the march ended before step k
+    SsrMarchStep step;
+    step.pixel = vec2(sample[0], sample[1]);
+    step.rayDistance = sample[2];
+    step.surfaceDistance = sample[3];
+    step.level = static_cast<int>(decision[0]);
+    step.kind = static_cast<SsrStepKind>(static_cast<int>(decision[1]));
+    step.along = decision[2];
+    out.push_back(step);
+  }
+  return out;
 }
 
 void GlGBuffer::buildHiz(ProgramCache& programs, const Scene& scene, const mat4& clipFromWorld, int levels) {

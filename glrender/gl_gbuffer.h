@@ -11,9 +11,12 @@
 #include "glrender/gl_shadow_pass.h"
 #include "glrender/gl_targets.h"
 #include "scene/renderer.h"
+#include "scene/ssr_trace.h"
 
 #include <array>
 #include <memory>
+#include <utility>
+#include <vector>
 
 namespace twr {
 
@@ -39,6 +42,12 @@ class GlGBuffer {
   void reflect(ProgramCache& programs, const Scene& scene, const RenderSettings& settings, const mat4& clipFromWorld,
                const RenderTargets& targets);
 
+  // The pixel inspector's probe (scene/ssr_trace.h), after reflect(): window pixel (x, yGl)'s
+  // mirror-ray march step by step, as ssr.frag's SSR_PROBE records it, one step per fragment of
+  // a max_steps x 2 strip read back. The frame's targets and bindings are left as they were.
+  std::vector<SsrMarchStep> probeReflection(ProgramCache& programs, const Scene& scene, const RenderSettings& settings,
+                                            const mat4& clipFromWorld, int x, int yGl);
+
   // The hiz march's chain (shaders/hiz.frag): level 0 the surface distances, `levels` above.
   void buildHiz(ProgramCache& programs, const Scene& scene, const mat4& clipFromWorld, int levels);
 
@@ -47,6 +56,10 @@ class GlGBuffer {
 
  private:
   void restoreSurfaceDrawBuffers() const;
+  // ssr.frag bound with every uniform the settings give (SSR_PROBE: the probe's variant).
+  GLuint useSsrProgram(ProgramCache& programs, const Scene& scene, const RenderSettings& settings,
+                       const mat4& clipFromWorld, int hizLevels, bool probe) const;
+  std::array<std::pair<const char*, GLuint>, 7> ssrTextures() const;
 
   int width_ = 0, height_ = 0;
   GlFrame set_ = GlFrame::Full;

@@ -223,7 +223,39 @@ class GlRenderer final : public Renderer {
     return draw(scene, settings, width, height, std::array<int, 2>{x, height - 1 - yTop});
   }
 
+  SsrMarchTrace traceSsrMarch(const Scene& scene, const RenderSettings& settings, int width, int height, int x,
+                              int yTop) {
+    if (options_.frame != GlFrame::Full) throw InputError("GL: a march trace needs the full frame's attachments");
+    if (x < 0 || x >= width || yTop < 0 || yTop >= height) {
+      throw InputError("GL: pixel (" + std::to_string(x) + ", " + std::to_string(yTop) + ") is outside the " +
+                       std::to_string(width) + " x " + std::to_string(height) + " frame");
+    }
+    if (!drawsSsr(settings)) {
+      throw InputError("GL: a march trace needs screen-space reflections (settings.ssr on, or an SSR view)");
+    }
+    // The frame as render() draws it, the probe run after its reflection pass.
+    struct Reset {
+      std::optional<std::array<int, 2>>& probe;
+      ~Reset() { probe.reset(); }
+    } reset{ssrProbe_};
+    ssrProbe_ = std::array<int, 2>{x, height - 1 - yTop};
+    probedSteps_.clear();
+    const RenderOutput out = draw(scene, settings, width, height, std::nullopt);
+    SsrMarchTrace trace;
+    const std::size_t i = static_cast<std::size_t>(yTop) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
+    trace.marched = out.triangleId[i] != kNoTriangle && out.gbuffer;
+    if (!trace.marched) return trace;
+    const mat4 clipFromWorld =
+        clipFromView(scene.camera, static_cast<float>(width) / static_cast<float>(height)) * viewFromWorld(scene.camera);
+    setSsrRayOf(*out.gbuffer, out.depth[i], clipFromWorld, scene.camera.position, x, yTop, trace);
+    trace.steps = std::move(probedSteps_);
+    return trace;
+  }
+
  private:
+  std::optional<std::array<int, 2>> ssrProbe_;  // traceSsrMarch's pixel (GL window coordinates)
+  std::vector<SsrMarchStep> probedSteps_;
+
   // A frame, or with `onlyPixel` (x, y in GL window coordinates) the same draws under a
   // one-pixel scissor and that pixel read back as a 1 x 1 output.
   RenderOutput draw(const Scene& scene, const RenderSettings& settings, int width, int height,
@@ -299,6 +331,10 @@ class GlRenderer final : public Renderer {
           if (options_.frame == GlFrame::Full) glFinish();
           ssrMilliseconds =
               std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - lightingEnd).count();
+          if (ssrProbe_) {
+            probedSteps_ = device.gbuffer.probeReflection(device.programs, scene, drawSettings, clipFromWorld,
+                                                          (*ssrProbe_)[0], (*ssrProbe_)[1]);
+          }
         }
       };
     } else {
@@ -489,6 +525,13 @@ RenderOutput renderGlPixel(Renderer& renderer, const Scene& scene, const RenderS
   auto* gl = dynamic_cast<GlRenderer*>(&renderer);
   if (!gl) throw InputError("renderGlPixel: the renderer '" + renderer.name() + "' is not the GL renderer");
   return gl->renderPixel(scene, settings, width, height, x, yTop);
+}
+
+SsrMarchTrace traceGlSsrMarch(Renderer& renderer, const Scene& scene, const RenderSettings& settings, int width,
+                              int height, int x, int yTop) {
+  auto* gl = dynamic_cast<GlRenderer*>(&renderer);
+  if (!gl) throw InputError("traceGlSsrMarch: the renderer '" + renderer.name() + "' is not the GL renderer");
+  return gl->traceSsrMarch(scene, settings, width, height, x, yTop);
 }
 
 }  // namespace twr

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "scene/renderer.h"
+#include "scene/ssr_trace.h"
 
 #include <memory>
 #include <string>
@@ -115,5 +116,12 @@ struct GlContextProbe {
 // on every EGL device, and reports each; a missing library becomes one entry with `error`.
 // Sets llvmpipe's sampling mode for the process like a render would (options.fastSampling).
 std::vector<GlContextProbe> probeGlContexts(const GlOptions& options = {});
+
+// Pixel (x, yTop)'s mirror-ray march on GL, step by step (scene/ssr_trace.h): the frame
+// render() draws, then ssr.frag's SSR_PROBE variant marching that pixel's ray once per step
+// (docs/ssr.md, "One pixel's march"). Throws InputError when the settings draw no reflections,
+// the renderer is not the GL one or draws GlFrame::Lean, or the pixel is outside the frame.
+SsrMarchTrace traceGlSsrMarch(Renderer& renderer, const Scene& scene, const RenderSettings& settings, int width,
+                              int height, int x, int yTop);
 
 }  // namespace twr

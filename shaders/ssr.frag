@@ -39,6 +39,25 @@ const float SSR_MISS = 2.0;
 const float SSR_OFF_SCREEN = 3.0;
 const float SSR_BEHIND = 4.0;
 
+// The pixel inspector's probe (scene/ssr_trace.h): with SSR_PROBE the program marches one
+// pixel's mirror ray per fragment of a strip, fragment k keeping what step k did; record() is
+// called where ssrRecordStep is in softrender/ssr-inl.h, once per step. Without, it does nothing.
+#ifdef SSR_PROBE
+int probeStep = -1;
+int stepIndex = 0;
+vec4 probeSample = vec4(0.0);    // pixel x, y, ray distance, surface distance
+vec4 probeDecision = vec4(0.0);  // level, kind (SsrStepKind), along, 1 once recorded
+void record(float kind, vec2 pixel, float rayDistance, float surfaceDistance, float level, float along) {
+  if (stepIndex == probeStep) {
+    probeSample = vec4(pixel, rayDistance, surfaceDistance);
+    probeDecision = vec4(level, kind, along, 1.0);
+  }
+  stepIndex = stepIndex + 1;
+}
+#else
+void record(float kind, vec2 pixel, float rayDistance, float surfaceDistance, float level, float along) {}
+#endif
+
 #ifndef GBUFFER_POSITION
 // deferred_lighting.frag's worldFromWindow.
 vec3 worldFromWindow(vec2 fragCoord, float depth) {
@@ -91,7 +110,10 @@ float march(vec3 origin, vec3 dir, out float steps, out ivec2 hitPixel) {
     float tNext = tCur + stepLength;
     Screen sn = screenOf(origin + dir * tNext);
     steps = steps + 1.0;
-    if (!sn.onScreen) return SSR_OFF_SCREEN;
+    if (!sn.onScreen) {
+      record(3.0, vec2(0.0), sn.w, 0.0, 0.0, tNext);
+      return SSR_OFF_SCREEN;
+    }
     float surfaceNext = bufferDistance(sn.pixel);
     bool inFront = sn.w < surfaceNext;
     bool decide = !inFront && (marchKind == 0 || !(stepLength > minStep));
@@ -104,10 +126,13 @@ float march(vec3 origin, vec3 dir, out float steps, out ivec2 hitPixel) {
       Screen sh = screenOf(origin + dir * (tCur + stepLength * t));
       if (s1 < thickness && s2 < thickness && sh.onScreen) {
         hitPixel = sh.pixel;
+        record(1.0, vec2(sn.pixel), sn.w, surfaceNext, 0.0, tNext);
         return SSR_HIT;
       }
+      record(2.0, vec2(sn.pixel), sn.w, surfaceNext, 0.0, tNext);
       return SSR_BEHIND;
     }
+    record(inFront ? 0.0 : 5.0, vec2(sn.pixel), sn.w, surfaceNext, 0.0, tNext);
     if (inFront) tCur = tNext;
     if (marchKind == 1 && !inFront) stepLength = stepLength * 0.5;
   }
@@ -181,9 +206,15 @@ float screenMarch(vec3 origin, vec3 dir, out float steps, out ivec2 hitPixel) {
   for (int i = 0; i < maxSteps; ++i) {
     float n = j + 1.0;
     steps = steps + 1.0;
-    if (n > ray.lastSample) return SSR_MISS;
+    if (n > ray.lastSample) {
+      record(4.0, vec2(0.0), 0.0, 0.0, 0.0, n);
+      return SSR_MISS;
+    }
     Sample sn = sampleAt(ray, n);
-    if (!sn.onScreen) return SSR_OFF_SCREEN;
+    if (!sn.onScreen) {
+      record(3.0, vec2(0.0), sn.w, 0.0, 0.0, n);
+      return SSR_OFF_SCREEN;
+    }
     if (level == 0.0) {
       float surfaceN = bufferDistance(ivec2(sn.pixel));
       bool inFront = sn.w < surfaceN || !(surfaceN < skyDistance);  // in front, or nothing there
@@ -192,10 +223,13 @@ float screenMarch(vec3 origin, vec3 dir, out float steps, out ivec2 hitPixel) {
         float behindBy = min(sampleAt(ray, j).w, sn.w) - surfaceN;
         if (behindBy < thickness) {
           hitPixel = ivec2(sn.pixel);
+          record(1.0, sn.pixel, sn.w, surfaceN, 0.0, n);
           return SSR_HIT;
         }
+        record(2.0, sn.pixel, sn.w, surfaceN, 0.0, n);
         return SSR_BEHIND;
       }
+      record(0.0, sn.pixel, sn.w, surfaceN, 0.0, n);
       j = n;
       if (topLevel > 0.0 && !(n < blockedUntil)) {
         level = 1.0;
@@ -225,7 +259,9 @@ float screenMarch(vec3 origin, vec3 dir, out float steps, out ivec2 hitPixel) {
       bool fits = last >= n && sl.onScreen && sl.pixel.x >= left && sl.pixel.x < right && sl.pixel.y >= bottom &&
                   sl.pixel.y < top;
       float cellLeast = fits ? texelFetch(hizDistance, ivec2(int(cx), int(cy)), int(level)).r : 0.0;
-      if (fits && max(sn.w, sl.w) < cellLeast) {
+      bool skip = fits && max(sn.w, sl.w) < cellLeast;
+      record(skip ? 6.0 : 7.0, sn.pixel, max(sn.w, sl.w), fits ? cellLeast : 0.0, level, skip ? last : n);
+      if (skip) {
         j = last;
         levelReached = max(levelReached, level);
         if (level < topLevel) {
@@ -333,6 +369,28 @@ vec3 viewColour(float result, float steps, ivec2 hitPixel) {
   return heatColour(levelReached / float(hizLevels)).rgb;
 }
 
+#ifdef SSR_PROBE
+uniform ivec2 probePixel;  // window column and row from the bottom
+
+// Fragment (k, 0) of the strip: step k's sample; (k, 1): its decision (zeros past the march's end).
+void main() {
+  probeStep = int(gl_FragCoord.x);
+  ivec2 pixel = probePixel;
+  float depth = texelFetch(gbufferDepth, pixel, 0).r;
+  vec3 nl = texelFetch(gbufferNormal, pixel, 0).xyz;
+#ifdef GBUFFER_POSITION
+  vec3 posWorld = texelFetch(gbufferPosition, pixel, 0).xyz;
+#else
+  vec3 posWorld = worldFromWindow(vec2(pixel) + 0.5, depth);
+#endif
+  vec3 wo = safeNormalize(eyePosWorld - posWorld);
+  vec3 r = safeNormalize((2.0 * dot(nl, wo)) * nl - wo);
+  float steps;
+  ivec2 hitPixel;
+  marchOf(posWorld, r, steps, hitPixel);
+  fragColour = gl_FragCoord.y < 1.0 ? probeSample : probeDecision;
+}
+#else
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   float depth = texelFetch(gbufferDepth, pixel, 0).r;
@@ -376,3 +434,4 @@ void main() {
   if (!changed) discard;  // the lit colour stays
   fragColour = clamp(vec4(total, 1.0), 0.0, 1.0);
 }
+#endif

@@ -20,8 +20,12 @@
 #ifdef TWR_SSR_INL_EMIT
 #undef TWR_SSR_INL_EMIT
 
+#include "scene/ssr_trace.h"
 #include "softrender/lane_math-inl.h"
 #include "softrender/lanes.h"
+
+#include <type_traits>
+#include <vector>
 
 TWR_LANES_BEGIN
 
@@ -87,6 +91,24 @@ TWR_LANE_INLINE L ssrResultLane(SsrResult r) {
   return L(static_cast<ScalarOf<L>>(static_cast<int>(r)));
 }
 
+// The pixel inspector's record of one step (scene/ssr_trace.h), on the scalar lanes only (the
+// teaching path's float, the reference's double; a vector of pixels records nothing): the
+// march passes `log` only to trace one pixel (traceSsrMarch), else null. ssr.frag's record()
+// stores the same numbers at the same points.
+template <typename S>
+inline void ssrRecordStep(std::vector<SsrMarchStep>* log, SsrStepKind kind, S pixelX, S pixelY, S rayDistance,
+                          S surfaceDistance, S level, S along) {
+  if (!log) return;
+  SsrMarchStep step;
+  step.pixel = vec2(static_cast<float>(pixelX), static_cast<float>(pixelY));
+  step.rayDistance = static_cast<float>(rayDistance);
+  step.surfaceDistance = static_cast<float>(surfaceDistance);
+  step.level = static_cast<int>(level);
+  step.along = static_cast<float>(along);
+  step.kind = kind;
+  log->push_back(step);
+}
+
 // One march's outcome per lane.
 template <typename L>
 struct SsrMarchL {
@@ -106,7 +128,8 @@ struct SsrMarchL {
 // from `cur` to `next`; otherwise the ray passed behind the surface (behind).
 template <typename L>
 TWR_LANE_INLINE SsrMarchL<L> ssrMarchLanes(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& origin,
-                                           const Vec3L<L>& dir, const MaskOf<L>& active) {
+                                           const Vec3L<L>& dir, const MaskOf<L>& active,
+                                           std::vector<SsrMarchStep>* log = nullptr) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), half(S(0.5));
   const L thickness(u.thickness), minStep(u.minStep);
@@ -142,6 +165,14 @@ TWR_LANE_INLINE SsrMarchL<L> ssrMarchLanes(const SsrUniformsT<ScalarOf<L>>& u, c
       m.hitY = select(hit, floorOf(select(sh.onScreen, sh.windowY, zero)), m.hitY);
       m.result = select(hit, (ssrResultLane<L>)(SsrResult::Hit), select(decide, (ssrResultLane<L>)(SsrResult::Behind), m.result));
       live = live & !decide;
+    }
+    if constexpr (std::is_floating_point_v<L>) {
+      const SsrStepKind kind = !sn.onScreen ? SsrStepKind::OffScreen
+                               : decide     ? (m.result == (ssrResultLane<L>)(SsrResult::Hit) ? SsrStepKind::Hit : SsrStepKind::Behind)
+                               : inFront    ? SsrStepKind::InFront
+                                            : SsrStepKind::Refine;
+      const L px = sn.onScreen ? std::floor(sn.windowX) : zero, py = sn.onScreen ? std::floor(sn.windowY) : zero;
+      ssrRecordStep<L>(log, kind, px, py, sn.w, sn.onScreen ? surfaceNext : zero, zero, tNext);
     }
     tCur = select(inFront, tNext, tCur);
     if (adaptive) stepLength = select(crossed & live, stepLength * half, stepLength);
@@ -234,7 +265,8 @@ TWR_LANE_INLINE SsrSampleL<L> ssrSampleLanes(const SsrUniformsT<ScalarOf<L>>& u,
 // level-1 cell that could not be skipped is not tried again while the march is inside it).
 template <typename L>
 TWR_LANE_INLINE SsrMarchL<L> ssrScreenMarchLanes(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& origin,
-                                                 const Vec3L<L>& dir, const MaskOf<L>& active) {
+                                                 const Vec3L<L>& dir, const MaskOf<L>& active,
+                                                 std::vector<SsrMarchStep>* log = nullptr) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), two(S(2)), half(S(0.5));
   const L width(u.viewportSize.x), height(u.viewportSize.y), thickness(u.thickness);
@@ -255,7 +287,13 @@ TWR_LANE_INLINE SsrMarchL<L> ssrScreenMarchLanes(const SsrUniformsT<ScalarOf<L>>
     const MaskOf<L> ended = live & (n > ray.lastSample);
     m.result = select(ended, (ssrResultLane<L>)(SsrResult::Miss), m.result);
     live = live & !ended;
+    if constexpr (std::is_floating_point_v<L>) {
+      if (ended) ssrRecordStep<L>(log, SsrStepKind::Ended, zero, zero, zero, zero, zero, n);
+    }
     const SsrSampleL<L> sn = (ssrSampleLanes<L>)(u, ray, n);
+    if constexpr (std::is_floating_point_v<L>) {
+      if (live && !sn.onScreen) ssrRecordStep<L>(log, SsrStepKind::OffScreen, zero, zero, sn.w, zero, zero, n);
+    }
     m.result = select(live & !sn.onScreen, (ssrResultLane<L>)(SsrResult::OffScreen), m.result);
     live = live & sn.onScreen;
     const MaskOf<L> atPixel = live & (level == zero);
@@ -275,6 +313,12 @@ TWR_LANE_INLINE SsrMarchL<L> ssrScreenMarchLanes(const SsrUniformsT<ScalarOf<L>>
         m.hitY = select(hit, sn.pixelY, m.hitY);
         m.result = select(hit, (ssrResultLane<L>)(SsrResult::Hit), select(crossed, (ssrResultLane<L>)(SsrResult::Behind), m.result));
         live = live & !crossed;
+        if constexpr (std::is_floating_point_v<L>) {
+          ssrRecordStep<L>(log, hit ? SsrStepKind::Hit : SsrStepKind::Behind, sn.pixelX, sn.pixelY, sn.w, surfaceN, zero, n);
+        }
+      }
+      if constexpr (std::is_floating_point_v<L>) {
+        if (inFront) ssrRecordStep<L>(log, SsrStepKind::InFront, sn.pixelX, sn.pixelY, sn.w, surfaceN, zero, n);
       }
       j = select(inFront, n, j);
       const MaskOf<L> up = inFront & (topLevel > zero) & !(n < blockedUntil);
@@ -310,6 +354,10 @@ TWR_LANE_INLINE SsrMarchL<L> ssrScreenMarchLanes(const SsrUniformsT<ScalarOf<L>>
       const MaskOf<L> skip = fits & (maxOf(sn.w, sl.w) < cellLeast);
       const MaskOf<L> down = atCell & !skip;
       const MaskOf<L> climb = skip & (level < topLevel);
+      if constexpr (std::is_floating_point_v<L>) {
+        ssrRecordStep<L>(log, skip ? SsrStepKind::CellSkipped : SsrStepKind::CellDescend, sn.pixelX, sn.pixelY,
+                         maxOf(sn.w, sl.w), fits ? cellLeast : zero, level, skip ? last : n);
+      }
       j = select(skip, last, j);
       m.level = select(skip, maxOf(m.level, level), m.level);
       blockedUntil = select(fits & !skip & (level == one), last, blockedUntil);
@@ -387,9 +435,11 @@ TWR_LANE_INLINE Vec3L<L> ssrLitAtLanes(const SsrUniformsT<ScalarOf<L>>& u, const
 // The march the settings name.
 template <typename L>
 TWR_LANE_INLINE SsrMarchL<L> ssrMarchOfLanes(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& origin,
-                                             const Vec3L<L>& dir, const MaskOf<L>& active) {
+                                             const Vec3L<L>& dir, const MaskOf<L>& active,
+                                             std::vector<SsrMarchStep>* log = nullptr) {
   const bool screen = u.march == SsrMarch::DdaScreen || u.march == SsrMarch::Hiz;
-  return screen ? (ssrScreenMarchLanes<L>)(u, origin, dir, active) : (ssrMarchLanes<L>)(u, origin, dir, active);
+  return screen ? (ssrScreenMarchLanes<L>)(u, origin, dir, active, log)
+                : (ssrMarchLanes<L>)(u, origin, dir, active, log);
 }
 
 // Indirect diffuse light (ssr.frag's indirect; the write-up's EvalIndirectionLight): for each

@@ -7,6 +7,7 @@
 #include "softrender/draw_loop.h"
 #include "softrender/framebuffer.h"
 #include "softrender/output_merge.h"
+#include "scene/errors.h"
 
 #include <algorithm>
 #include <array>
@@ -108,16 +109,60 @@ void ssrPlanesOf(const Framebuffer& fb, const GBuffer& g, bool positionStored, c
     plane.resize(pixels);
     for (std::size_t i = 0; i < pixels; ++i) plane[i] = static_cast<float>(fb.rgba[4 * i + c]) / 255.0f;
   }
+  ssrDistancesOf(fb.depth, fb.width, fb.height, g, positionStored, u, planes);
+}
+
+void ssrDistancesOf(const std::vector<float>& depth, int width, int height, const GBuffer& g, bool positionStored,
+                    const SsrUniforms& u, SsrPlanes& planes) {
+  const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
   planes.surfaceDistance.resize(pixels);
   const float far = u.skyDistance;
   for (std::size_t i = 0; i < pixels; ++i) {
-    const bool drawn = fb.depth[i] < kClearDepth;
+    const bool drawn = depth[i] < kClearDepth;
     planes.surfaceDistance[i] = !drawn         ? far
                                 : positionStored ? ssrDistanceOfPointLanes<float>(u, vec3(g.position[i]))
-                                                 : ssrDistanceOfDepthLanes<float>(u, fb.depth[i]);
+                                                 : ssrDistanceOfDepthLanes<float>(u, depth[i]);
   }
   planes.hizLevels = 0;
-  if (u.march == SsrMarch::Hiz) hizChainOf(planes.surfaceDistance, fb.width, fb.height, planes);
+  if (u.march == SsrMarch::Hiz) hizChainOf(planes.surfaceDistance, width, height, planes);
+}
+
+SsrMarchTrace traceSsrMarch(const Scene& scene, const RenderSettings& settings, const RenderOutput& frame, int x,
+                            int yTop) {
+  const int width = frame.width, height = frame.height;
+  if (x < 0 || x >= width || yTop < 0 || yTop >= height) {
+    throw InputError("SSR march trace: pixel (" + std::to_string(x) + ", " + std::to_string(yTop) +
+                     ") is outside the " + std::to_string(width) + " x " + std::to_string(height) + " frame");
+  }
+  const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  if (!drawsSsr(settings) || !frame.gbuffer || frame.gbuffer->normal.size() != pixels || frame.depth.size() != pixels) {
+    throw InputError("SSR march trace: the frame draws no screen-space reflections (settings.ssr on, or an SSR "
+                     "view, gives it the G-buffer the march reads)");
+  }
+  const GBuffer& g = *frame.gbuffer;
+  const bool positionStored = !g.position.empty();
+  SsrUniforms u = makeSsrUniforms(scene, settings, width, height);
+  SsrPlanes planes;
+  ssrDistancesOf(frame.depth, width, height, g, positionStored, u, planes);
+  useSsrPlanes(planes, u);  // the march reads no colour
+  SsrMarchTrace trace;
+  const std::size_t i = static_cast<std::size_t>(yTop) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
+  const float depth = frame.depth[i];
+  trace.marched = depth < kClearDepth;
+  if (!trace.marched) return trace;
+  // As reflectTeaching and ssrPixelLanes: the ray's origin and the mirror direction.
+  const int yGl = height - 1 - yTop;
+  const vec3 posWorld = positionStored
+                            ? vec3(g.position[i])
+                            : worldFromWindowLanes<float>(worldFromClipOf(u.clipFromWorld), u.viewportSize,
+                                                          static_cast<float>(x), static_cast<float>(yGl), depth);
+  const vec3 nl(g.normal[i]);
+  const vec3 wo = safeNormalize3<float>(u.eyePosWorld - posWorld);
+  const vec3 r = safeNormalize3<float>((2.0f * dot3<float>(nl, wo)) * nl - wo);
+  trace.origin = posWorld;
+  trace.direction = r;
+  ssrMarchOfLanes<float>(u, posWorld, r, true, &trace.steps);
+  return trace;
 }
 
 void reflectTeaching(const GBuffer& g, SsrUniforms u, const Mat4T<float>& worldFromClip, bool positionStored,

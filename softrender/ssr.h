@@ -10,6 +10,7 @@
 #include "scene/conventions.h"
 #include "scene/renderer.h"
 #include "scene/settings.h"
+#include "scene/ssr_trace.h"
 #include "softrender/precision.h"
 
 #include <array>
@@ -96,6 +97,19 @@ struct SsrPlanes {
 };
 void ssrPlanesOf(const Framebuffer& fb, const GBuffer& g, bool positionStored, const SsrUniforms& u,
                  SsrPlanes& planes);
+// The surface distances and (hiz) the chain alone, from a frame's window depth (top row
+// first, as the framebuffer and RenderOutput store it) and its G-buffer: ssrPlanesOf's half
+// the march reads.
+void ssrDistancesOf(const std::vector<float>& depth, int width, int height, const GBuffer& g, bool positionStored,
+                    const SsrUniforms& u, SsrPlanes& planes);
+
+// Pixel (x, yTop)'s mirror-ray march on the CPU, step by step (scene/ssr_trace.h; the pixel
+// inspector and `trace`): `frame` is this renderer's frame of `settings` (its G-buffer and depth
+// are read), the march the teaching path's, recording as it goes. Throws InputError when the
+// frame has no G-buffer (settings draw no reflections) or the pixel is outside it.
+SsrMarchTrace traceSsrMarch(const Scene& scene, const RenderSettings& settings, const RenderOutput& frame, int x,
+                            int yTop);
+
 // Points u's buffers at the planes' (the colour, the distances, the chain).
 void useSsrPlanes(const SsrPlanes& planes, SsrUniforms& u);
 

@@ -1,4 +1,5 @@
-// `twinraster trace SCENE X Y`: the story of one pixel through the CPU pipeline.
+// `twinraster trace SCENE X Y`: the story of one pixel through the CPU pipeline (and, with
+// screen-space reflections, its mirror-ray march step by step on both renderers).
 // The replay of the stages is the teaching code (softrender/pixel_trace.cpp); the final
 // pixel it reports comes from a full render on --cpu-path / --cpu-isa (default fast, auto).
 // tracePixel() takes no renderer options and renders on the default fast path itself, so
@@ -9,10 +10,14 @@
 #include "app/cli/common.h"
 #include "scene/errors.h"
 #include "softrender/cpu_renderer.h"
+#include "glrender/gl_renderer.h"
+#include "scene/ssr_trace_report.h"
 #include "softrender/pixel_trace.h"
+#include "softrender/ssr.h"
 
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace twr::cli {
 namespace {
@@ -20,6 +25,7 @@ namespace {
 struct TraceArgs {
   RenderRequest request;
   CpuRequest cpu;
+  GlRequest gl;
   int x = 0;
   int y = 0;
   bool json = false;
@@ -51,13 +57,42 @@ void runTrace(const TraceArgs& args) {
   if (cpuOptions.path != tracePixelOwn.path || cpuOptions.isa != tracePixelOwn.isa) {
     takeFinalPixelFrom(cpuOptions, scene, width, height, trace);
   }
+  // A frame with reflections: the pixel's mirror-ray march step by step on both renderers.
+  std::optional<SsrMarchTrace> cpuMarch, glMarch;
+  std::string glMarchError;
+  if (drawsSsr(scene.settings)) {
+    const RenderOutput frame = makeCpuRenderer(cpuOptions)->render(scene, scene.settings, width, height);
+    cpuMarch = traceSsrMarch(scene, scene.settings, frame, args.x, args.y);
+    try {
+      std::unique_ptr<Renderer> gl = makeGlRenderer(requestedGlOptions(args.gl));
+      glMarch = traceGlSsrMarch(*gl, scene, scene.settings, width, height, args.x, args.y);
+    } catch (const InputError& e) {
+      glMarchError = e.what();  // no usable GL here: the CPU's march alone, and why
+    }
+  }
   const std::string path = cpuPathName(cpuOptions);
   if (args.json) {
     nlohmann::json json = pixelTraceToJson(trace);
     json["cpu_path"] = path;  // the render the final pixel comes from
+    if (cpuMarch) {
+      const std::optional<std::size_t> parted = glMarch ? firstDifferingStep(*cpuMarch, *glMarch) : std::nullopt;
+      json["ssr_march"] = {{"cpu", ssrMarchTraceToJson(*cpuMarch)},
+                           {"gl", glMarch ? ssrMarchTraceToJson(*glMarch) : nlohmann::json(nullptr)},
+                           {"gl_error", glMarchError.empty() ? nlohmann::json(nullptr) : nlohmann::json(glMarchError)},
+                           {"first_differing_step", parted ? nlohmann::json(*parted + 1) : nlohmann::json(nullptr)}};
+    } else {
+      json["ssr_march"] = nullptr;
+    }
     std::cout << jsonText(json, 2) << "\n";
   } else {
     std::cout << formatPixelTrace(trace) << "final pixel rendered by the cpu path: " << path << "\n";
+    if (cpuMarch) {
+      const SsrSettings& ssr = scene.settings.ssr;
+      std::cout << "\nSSR march of this pixel's mirror ray (" << toString(ssr.march) << ", max_steps " << ssr.maxSteps
+                << ", thickness " << ssr.thickness << "):\n"
+                << formatSsrMarchTraces("cpu", *cpuMarch, "gl", glMarch ? &*glMarch : nullptr);
+      if (!glMarchError.empty()) std::cout << "  gl: not traced: " << glMarchError << "\n";
+    }
   }
 }
 
@@ -67,13 +102,16 @@ const bool registered = registerCommand(40, [](CLI::App& app) {
       "trace",
       "Trace one pixel through the CPU pipeline: the triangles that reach it, the clip planes, snapped "
       "positions and edge functions, barycentrics, interpolated varyings, every shading term, the depth test. "
-      "The final pixel comes from a full render on --cpu-path and --cpu-isa.");
+      "The final pixel comes from a full render on --cpu-path and --cpu-isa. With screen-space reflections "
+      "(settings.ssr), also the pixel's mirror-ray march step by step on both renderers (GL's through ssr.frag's "
+      "probe), and the first step where they part.");
   addRenderOptions(*cmd, args->request);
   cmd->add_option("x", args->x, "Pixel column, 0 at the left edge of the image")->required();
   cmd->add_option("y", args->y, "Pixel row, 0 at the TOP edge of the image (as in the PNG files, not GL's bottom-left)")
       ->required();
   cmd->add_flag("--json", args->json, "Print the trace as JSON instead of text");
   addCpuOptions(*cmd, args->cpu);
+  addGlOptions(*cmd, args->gl);
   cmd->callback([args] { runTrace(*args); });
 });
 

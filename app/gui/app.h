@@ -65,6 +65,8 @@ struct PinState {
   std::uint64_t glRevision = 0;  // revision of `gl`; 0: not probed yet
   ViewSamples gl;
   std::string glError;
+  std::optional<SsrMarchTrace> glMarch;  // the GL probe's mirror-ray march (frames with reflections)
+  std::string glMarchError;
   std::uint64_t glAskedRevision = 0;  // the last probe job sent to the GL worker
   std::optional<PixelPos> glAskedPixel;
 };
@@ -179,6 +181,7 @@ class GuiApp {
   void drawInspectorPanel();
   void drawTraceSection(const PixelTrace& trace);
   void drawViewProbeSection();
+  void drawSsrMarchSection();
 
   GuiOptions options_;
   PrefsPaths paths_;

@@ -255,6 +255,8 @@ void GuiApp::takeGlFrames() {
         frame.height == renderHeight_) {
       pin_.gl = frame.probe->views;
       pin_.glError = frame.probe->error;
+      pin_.glMarch = frame.probe->ssrMarch;
+      pin_.glMarchError = frame.probe->ssrMarchError;
       pin_.glRevision = frame.revision;
     }
   }

@@ -1,4 +1,5 @@
 #include "app/gui/cpu_worker.h"
+#include "softrender/ssr.h"
 #include "app/gui/debug_views.h"
 #include "app/gui/worker_priority.h"
 
@@ -43,6 +44,14 @@ CpuProbe CpuWorker::probe(Renderer& renderer, const CpuJob& job, const RenderOut
     trace->triangleId = frameOutput->triangleId[i];
     trace->debugLine = frameOutput->lineMask[i] != 0;
     result.trace = trace;
+    // A frame with reflections: the pixel's march, step by step, from that frame's G-buffer.
+    if (drawsSsr(job.settings)) {
+      try {
+        result.ssrMarch = traceSsrMarch(*job.scene, job.settings, *frameOutput, result.pixel.x, result.pixel.yTop);
+      } catch (const std::exception& e) {
+        result.ssrMarchError = e.what();
+      }
+    }
   } catch (const std::exception& e) {
     result.traceError = e.what();
     return result;

@@ -7,6 +7,7 @@
 #include "app/gui/job_queue.h"
 #include "app/gui/pixel_probe.h"
 #include "scene/renderer.h"
+#include "scene/ssr_trace.h"
 #include "softrender/cpu_renderer.h"
 #include "softrender/pixel_trace.h"
 
@@ -42,6 +43,10 @@ struct CpuProbe {
   std::string traceError;
   ViewSamples views;  // the CPU image at the pixel in each debug view (TBN lines off)
   bool complete = false;  // false when a newer job cut the views short
+  // A frame with reflections: the pixel's mirror-ray march step by step (softrender/ssr.h's
+  // traceSsrMarch), or why not.
+  std::optional<SsrMarchTrace> ssrMarch;
+  std::string ssrMarchError;
 };
 
 struct CpuFrame {

@@ -37,6 +37,17 @@ GlProbe GlWorker::probe(Renderer& renderer, const GlJob& job) const {
       return result;
     }
   }
+  // A frame with reflections: the pixel's march step by step on GL (one more frame, its
+  // reflection pass followed by ssr.frag's probe).
+  if (drawsSsr(job.scene->settings)) {
+    if (queue_.superseded()) return result;
+    try {
+      result.ssrMarch = traceGlSsrMarch(renderer, *job.scene, job.scene->settings, job.width, job.height,
+                                        result.pixel.x, result.pixel.yTop);
+    } catch (const std::exception& e) {
+      result.ssrMarchError = e.what();
+    }
+  }
   result.complete = true;
   return result;
 }

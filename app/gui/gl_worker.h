@@ -14,6 +14,7 @@
 #include "app/gui/pixel_probe.h"
 #include "glrender/gl_renderer.h"
 #include "scene/renderer.h"
+#include "scene/ssr_trace.h"
 
 #include <chrono>
 #include <cstdint>
@@ -38,6 +39,10 @@ struct GlProbe {
   ViewSamples views;      // the GL image at the pixel in each debug view (TBN lines off)
   std::string error;      // what a view's render threw, else empty
   bool complete = false;  // false when a newer job cut the views short
+  // A frame with reflections: the pixel's mirror-ray march step by step on GL
+  // (traceGlSsrMarch), or why not.
+  std::optional<SsrMarchTrace> ssrMarch;
+  std::string ssrMarchError;
 };
 
 struct GlFrameResult {

@@ -154,6 +154,97 @@ void GuiApp::drawInspectorPanel() {
     drawTraceSection(*pin_.cpu->trace);
   }
   drawViewProbeSection();
+  if (drawsSsr(doc_.scene.settings)) drawSsrMarchSection();
+}
+
+namespace {
+
+// One backend's step of the march as table cells: what it did, where, the two distances.
+void marchStepCells(const SsrMarchStep* step) {
+  if (!step) {
+    ImGui::TableNextColumn();
+    ImGui::TextDisabled("-");
+    ImGui::TableNextColumn();
+    ImGui::TableNextColumn();
+    return;
+  }
+  ImGui::TableNextColumn();
+  if (step->level > 0) {
+    ImGui::Text("%s L%d", toString(step->kind), step->level);
+  } else {
+    ImGui::TextUnformatted(toString(step->kind));
+  }
+  ImGui::TableNextColumn();
+  ImGui::Text("%.0f, %.0f", static_cast<double>(step->pixel.x), static_cast<double>(step->pixel.y));
+  ImGui::TableNextColumn();
+  ImGui::Text("%.4f / %.4f", static_cast<double>(step->rayDistance), static_cast<double>(step->surfaceDistance));
+}
+
+}  // namespace
+
+// The pinned pixel's mirror-ray march, step by step, on both backends (docs/ssr.md, "One
+// pixel's march"), the first step where they part marked.
+void GuiApp::drawSsrMarchSection() {
+  const bool cpuCurrent = pin_.cpu && pin_.cpuRevision == doc_.revision;
+  std::string title = "SSR march at this pixel";
+  if (!cpuCurrent) title += " (CPU updating...)";
+  title += "###ssrmarch";
+  if (!ImGui::CollapsingHeader(title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!pin_.cpu || !pin_.cpu->ssrMarchError.empty()) {
+    if (pin_.cpu) errorText("CPU: " + pin_.cpu->ssrMarchError);
+    else hintText("CPU: waiting for the worker...");
+  }
+  if (!pin_.glMarchError.empty()) errorText("GL: " + pin_.glMarchError);
+  const SsrMarchTrace* cpu = cpuCurrent && pin_.cpu->ssrMarch ? &*pin_.cpu->ssrMarch : nullptr;
+  const SsrMarchTrace* gl = pin_.glMarch && pin_.glRevision == doc_.revision ? &*pin_.glMarch : nullptr;
+  if (!gl && pin_.glMarchError.empty()) hintText("GL: waiting for the worker...");
+  const SsrMarchTrace* any = cpu ? cpu : gl;
+  if (!any) return;
+  if (!any->marched) {
+    hintText("Nothing is drawn here: no ray to march.");
+    return;
+  }
+  hintText("The mirror ray of the lighting normal from the G-buffer's point, marched as settings.ssr says; each "
+           "step: what the march decided, the pixel it sampled (window, from the bottom), the ray's eye distance "
+           "against the surface's (a hiz cell: its farthest sample against the cell's nearest surface). The two "
+           "backends record the same numbers from their own march (GL: ssr.frag's probe).");
+  if (monoFont_) ImGui::PushFont(monoFont_);
+  ImGui::Text("origin %s  direction %s", formatVec(any->origin).c_str(), formatVec(any->direction).c_str());
+  if (monoFont_) ImGui::PopFont();
+  std::optional<std::size_t> parted;
+  if (cpu && gl) {
+    parted = firstDifferingStep(*cpu, *gl);
+    if (parted) {
+      warningText(concat("The backends part at step ", *parted + 1, "."));
+    } else {
+      ImGui::TextDisabled("Both backends take the same %zu steps.", cpu->steps.size());
+    }
+  }
+  const std::size_t rows = std::max(cpu ? cpu->steps.size() : 0, gl ? gl->steps.size() : 0);
+  if (ImGui::BeginTable("##ssrmarch", 7, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp |
+                                              ImGuiTableFlags_ScrollY,
+                        ImVec2(0.0f, ImGui::GetTextLineHeightWithSpacing() * 14.0f))) {
+    ImGui::TableSetupScrollFreeze(0, 1);
+    ImGui::TableSetupColumn("step", ImGuiTableColumnFlags_WidthStretch, 0.3f);
+    ImGui::TableSetupColumn("CPU", ImGuiTableColumnFlags_WidthStretch, 0.8f);
+    ImGui::TableSetupColumn("pixel", ImGuiTableColumnFlags_WidthStretch, 0.6f);
+    ImGui::TableSetupColumn("ray / surface", ImGuiTableColumnFlags_WidthStretch, 1.1f);
+    ImGui::TableSetupColumn("GL", ImGuiTableColumnFlags_WidthStretch, 0.8f);
+    ImGui::TableSetupColumn("pixel", ImGuiTableColumnFlags_WidthStretch, 0.6f);
+    ImGui::TableSetupColumn("ray / surface", ImGuiTableColumnFlags_WidthStretch, 1.1f);
+    ImGui::TableHeadersRow();
+    if (monoFont_) ImGui::PushFont(monoFont_);
+    for (std::size_t k = 0; k < rows; ++k) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      if (parted && *parted == k) ImGui::TextColored(kWarningColour, "%zu", k + 1);
+      else ImGui::Text("%zu", k + 1);
+      marchStepCells(cpu && k < cpu->steps.size() ? &cpu->steps[k] : nullptr);
+      marchStepCells(gl && k < gl->steps.size() ? &gl->steps[k] : nullptr);
+    }
+    if (monoFont_) ImGui::PopFont();
+    ImGui::EndTable();
+  }
 }
 
 // Every debug view at the pinned pixel, from both backends.

@@ -346,6 +346,35 @@ TEST(CliCompare, ExitsOneOverAThreshold) {
   EXPECT_EQ(r.exitCode, 2) << r.out << r.err;
 }
 
+TEST(CliTrace, ShowsTheSsrMarchOnBothRenderers) {
+  const auto dir = testDir("cli_trace_ssr");
+  const std::string scene = "\"" + kSource + "/assets/scenes/ssr_mirror_floor.json\"";
+  // A floor pixel below the box, whose mirror ray finds the box.
+  const RunResult text = runCli("trace " + scene + " 80 100 --width 160 --height 120 --ssr-march hiz", dir);
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  EXPECT_NE(text.out.find("SSR march of this pixel's mirror ray (hiz, max_steps 96"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("cpu and gl take the same"), std::string::npos) << text.out;
+  const RunResult json = runCli("trace " + scene + " 80 100 --width 160 --height 120 --ssr-march hiz --json", dir);
+  ASSERT_EQ(json.exitCode, 0) << json.err;
+  const nlohmann::json j = nlohmann::json::parse(json.out);
+  const nlohmann::json& march = j["ssr_march"];
+  ASSERT_TRUE(march.is_object()) << json.out;
+  EXPECT_TRUE(march["first_differing_step"].is_null());
+  // The same steps (distances within an ulp or so: llvmpipe divides its own way).
+  ASSERT_EQ(march["cpu"]["steps"].size(), march["gl"]["steps"].size());
+  for (std::size_t k = 0; k < march["cpu"]["steps"].size(); ++k) {
+    EXPECT_EQ(march["cpu"]["steps"][k]["kind"], march["gl"]["steps"][k]["kind"]) << k;
+    EXPECT_EQ(march["cpu"]["steps"][k]["pixel"], march["gl"]["steps"][k]["pixel"]) << k;
+  }
+  EXPECT_FALSE(march["cpu"]["steps"].empty());
+  const std::string last = march["cpu"]["steps"].back()["kind"];
+  EXPECT_TRUE(last == "hit" || last == "behind" || last == "off_screen" || last == "ended") << last;
+  // Without reflections there is no march to show.
+  const RunResult off = runCli("trace " + scene + " 80 100 --width 160 --height 120 --ssr off --json", dir);
+  ASSERT_EQ(off.exitCode, 0) << off.err;
+  EXPECT_TRUE(nlohmann::json::parse(off.out)["ssr_march"].is_null());
+}
+
 TEST(CliTrace, TellsTheStoryOfACoveredPixel) {
   const auto dir = testDir("cli_trace");
   // (80, 119) of a 160x120 image is on the floor in front of the camera.

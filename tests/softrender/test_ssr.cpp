@@ -5,6 +5,7 @@
 #include "softrender/ssr.h"
 
 #include "scene/camera.h"
+#include "scene/errors.h"
 #include "scene/scene_file.h"
 #include "softrender/cpu_renderer.h"
 
@@ -400,6 +401,85 @@ TEST(Ssr, HizEndsEveryRayAsDdaDoesInFewerSteps) {
   EXPECT_LT(hizSteps, 0.5f * ddaSteps) << "hiz " << hizSteps << " steps, dda_screen " << ddaSteps;
 }
 
+// The kind a march's last recorded step must have for its result.
+bool lastStepFits(const SsrMarchL<float>& m, const std::vector<SsrMarchStep>& log) {
+  if (log.empty()) return false;
+  const SsrStepKind last = log.back().kind;
+  switch (static_cast<SsrResult>(static_cast<int>(m.result))) {
+    case SsrResult::Hit: return last == SsrStepKind::Hit;
+    case SsrResult::Behind: return last == SsrStepKind::Behind;
+    case SsrResult::OffScreen: return last == SsrStepKind::OffScreen;
+    case SsrResult::Miss: return last == SsrStepKind::Ended || !endsMarch(last);  // the ray's end, or out of steps
+    case SsrResult::NotMarched: return false;
+  }
+  return false;
+}
+
+TEST(Ssr, TheRecordedStepsAreTheMarchsOwn) {
+  // The inspector's record (scene/ssr_trace.h): one step per step the march counts, the last
+  // one its outcome, a hit's pixel the hit's, hiz's skips recorded as such; recording changes
+  // nothing of the march.
+  constexpr int kFieldSide = 128;
+  ScreenView dda(SsrMarch::DdaScreen, kFieldSide), hiz(SsrMarch::Hiz, kFieldSide);
+  for (int y = 40; y < 90; ++y) {
+    for (int x = 30; x < 70; ++x) dda.plane[static_cast<std::size_t>(y * kFieldSide + x)] = 5.0f + 0.02f * static_cast<float>(x);
+  }
+  hiz.plane = dda.plane;
+  std::uint32_t state = 11u;
+  const auto next = [&] {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<float>(state >> 8) / 16777216.0f;
+  };
+  int skips = 0, hits = 0;
+  for (const SsrUniforms* u : {&dda.ready(), &hiz.ready()}) {
+    for (int ray = 0; ray < 200; ++ray) {
+      const vec3 origin((next() - 0.5f) * 3.0f, (next() - 0.5f) * 3.0f, -2.0f - next() * 2.0f);
+      const vec3 dir = glm::normalize(vec3(next() - 0.5f, next() - 0.5f, -0.2f - next()));
+      std::vector<SsrMarchStep> log;
+      const SsrMarchL<float> plain = ssrScreenMarchLanes<float>(*u, origin, dir, true);
+      const SsrMarchL<float> logged = ssrScreenMarchLanes<float>(*u, origin, dir, true, &log);
+      ASSERT_EQ(std::memcmp(&plain, &logged, sizeof plain), 0) << "ray " << ray;
+      ASSERT_EQ(log.size(), static_cast<std::size_t>(plain.steps)) << "ray " << ray;
+      EXPECT_TRUE(lastStepFits(plain, log)) << "ray " << ray << ": " << toString(log.back().kind);
+      if (plain.result == ssrResultLane<float>(SsrResult::Hit)) {
+        ++hits;
+        EXPECT_EQ(log.back().pixel, vec2(plain.hitX, plain.hitY)) << "ray " << ray;
+        EXPECT_GE(log.back().rayDistance, log.back().surfaceDistance) << "a hit lies behind the surface";
+      }
+      for (const SsrMarchStep& step : log) {
+        skips += step.kind == SsrStepKind::CellSkipped;
+        if (u->hizLevels == 0) {
+          EXPECT_EQ(step.level, 0);
+        }
+      }
+    }
+  }
+  EXPECT_GT(hits, 20);
+  EXPECT_GT(skips, 50) << "hiz skips cells";
+  // The world marches: every step a sample along the ray, adaptive's halvings as refine steps.
+  WallView view;
+  SsrUniforms u = view.u;
+  u.surfaceDistance = view.depth.data();
+  std::vector<SsrMarchStep> log;
+  const SsrMarchL<float> hit =
+      ssrMarchLanes<float>(u, vec3(0.0f, 0.0f, -9.0f), vec3(0.0f, 0.0f, -1.0f), true, &log);
+  ASSERT_EQ(log.size(), static_cast<std::size_t>(hit.steps));
+  EXPECT_EQ(log.back().kind, SsrStepKind::Hit);
+  EXPECT_NEAR(log.front().along, 0.05f, 1e-6f);
+  for (std::size_t k = 0; k + 1 < log.size(); ++k) EXPECT_EQ(log[k].kind, SsrStepKind::InFront) << k;
+  u.march = SsrMarch::AdaptiveWorld;
+  u.step = 3.0f;
+  u.minStep = 3.0f * kSsrAdaptiveMinStepRatio;
+  u.thickness = 0.2f;
+  log.clear();
+  const SsrMarchL<float> adaptive =
+      ssrMarchLanes<float>(u, vec3(0.0f, 0.0f, -2.0f), vec3(0.0f, 0.0f, -1.0f), true, &log);
+  ASSERT_EQ(log.size(), static_cast<std::size_t>(adaptive.steps));
+  EXPECT_EQ(std::count_if(log.begin(), log.end(), [](const SsrMarchStep& s) { return s.kind == SsrStepKind::Refine; }), 4)
+      << "3 halves to 3/16 in four steps";
+  EXPECT_EQ(log.back().kind, SsrStepKind::Hit);
+}
+
 Scene mirrorFloor() {
   return loadSceneFile(std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes/ssr_mirror_floor.json");
 }
@@ -409,6 +489,43 @@ RenderOutput renderCpu(const Scene& scene, const RenderSettings& settings, CpuPa
   options.path = path;
   options.threads = 2;
   return makeCpuRenderer(options)->render(scene, settings, 160, 120);
+}
+
+TEST(Ssr, TraceSsrMarchEndsAsTheHitViewShowsEveryPixel) {
+  Scene scene = mirrorFloor();
+  for (const SsrMarch march : {SsrMarch::LinearWorld, SsrMarch::Hiz}) {
+    scene.settings.ssr.march = march;
+    const RenderOutput frame = renderCpu(scene, scene.settings, CpuPath::Teaching);
+    RenderSettings hitView = scene.settings;
+    hitView.view = View::SsrHit;
+    const RenderOutput view = renderCpu(scene, hitView, CpuPath::Teaching);
+    int checked = 0;
+    for (int y = 0; y < 120; y += 5) {
+      for (int x = 0; x < 160; x += 5) {
+        const SsrMarchTrace trace = traceSsrMarch(scene, scene.settings, frame, x, y);
+        const std::size_t i = static_cast<std::size_t>(y) * 160 + static_cast<std::size_t>(x);
+        ASSERT_EQ(trace.marched, frame.triangleId[i] != kNoTriangle) << x << ", " << y;
+        if (!trace.marched) continue;
+        ASSERT_FALSE(trace.steps.empty());
+        // ssr_hit's colours: hit green, miss blue, off screen yellow, behind red.
+        const std::uint8_t* c = &view.rgba[4 * i];
+        const SsrStepKind last = trace.steps.back().kind;
+        const bool green = c[1] > 150 && c[0] < 100, blue = c[2] > 150 && c[0] < 100 && c[1] < 150;
+        const bool yellow = c[0] > 150 && c[1] > 150, red = c[0] > 150 && c[1] < 100;
+        EXPECT_EQ(green, last == SsrStepKind::Hit) << x << ", " << y;
+        EXPECT_EQ(yellow, last == SsrStepKind::OffScreen) << x << ", " << y;
+        EXPECT_EQ(red, last == SsrStepKind::Behind) << x << ", " << y;
+        EXPECT_EQ(blue, last == SsrStepKind::Ended || !endsMarch(last)) << x << ", " << y;
+        ++checked;
+      }
+    }
+    EXPECT_GT(checked, 300);
+  }
+  RenderSettings off = scene.settings;
+  off.ssr.enabled = false;
+  EXPECT_THROW(traceSsrMarch(scene, off, renderCpu(scene, off, CpuPath::Fast), 10, 10), InputError);
+  EXPECT_THROW(traceSsrMarch(scene, scene.settings, renderCpu(scene, scene.settings, CpuPath::Fast), 160, 10),
+               InputError);
 }
 
 TEST(Ssr, OffChangesNothingOnReflects) {

@@ -1,0 +1,68 @@
+#include "scene/ssr_trace.h"
+
+#include "scene/renderer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace twr {
+
+const char* toString(SsrStepKind kind) {
+  switch (kind) {
+    case SsrStepKind::InFront: return "in_front";
+    case SsrStepKind::Hit: return "hit";
+    case SsrStepKind::Behind: return "behind";
+    case SsrStepKind::OffScreen: return "off_screen";
+    case SsrStepKind::Ended: return "ended";
+    case SsrStepKind::Refine: return "refine";
+    case SsrStepKind::CellSkipped: return "cell_skipped";
+    case SsrStepKind::CellDescend: return "cell_descend";
+  }
+  return "?";
+}
+
+bool endsMarch(SsrStepKind kind) {
+  return kind == SsrStepKind::Hit || kind == SsrStepKind::Behind || kind == SsrStepKind::OffScreen ||
+         kind == SsrStepKind::Ended;
+}
+
+void setSsrRayOf(const GBuffer& g, float depth, const mat4& clipFromWorld, const vec3& eye, int x, int yTop,
+                 SsrMarchTrace& trace) {
+  const std::size_t i = static_cast<std::size_t>(yTop) * static_cast<std::size_t>(g.width) + static_cast<std::size_t>(x);
+  if (!g.position.empty()) {
+    trace.origin = vec3(g.position[i]);
+  } else {
+    const double yGl = static_cast<double>(g.height - 1 - yTop);
+    const glm::dvec4 ndc((x + 0.5) / g.width * 2.0 - 1.0, (yGl + 0.5) / g.height * 2.0 - 1.0, 2.0 * depth - 1.0, 1.0);
+    const glm::dvec4 p = glm::inverse(glm::dmat4(clipFromWorld)) * ndc;
+    trace.origin = vec3(glm::dvec3(p) / p.w);
+  }
+  const vec3 n = vec3(g.normal[i]);
+  const vec3 wo = glm::normalize(eye - trace.origin);
+  trace.direction = glm::normalize((2.0f * glm::dot(n, wo)) * n - wo);
+}
+
+namespace {
+
+bool near(float a, float b, float relativeTolerance) {
+  if (a == b) return true;
+  return std::abs(a - b) <= relativeTolerance * std::max(std::abs(a), std::abs(b));
+}
+
+}  // namespace
+
+std::optional<std::size_t> firstDifferingStep(const SsrMarchTrace& a, const SsrMarchTrace& b, float relativeTolerance) {
+  const std::size_t n = std::min(a.steps.size(), b.steps.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    const SsrMarchStep& s = a.steps[i];
+    const SsrMarchStep& t = b.steps[i];
+    if (s.kind != t.kind || s.level != t.level || s.pixel != t.pixel || !near(s.rayDistance, t.rayDistance, relativeTolerance) ||
+        !near(s.surfaceDistance, t.surfaceDistance, relativeTolerance) || !near(s.along, t.along, relativeTolerance)) {
+      return i;
+    }
+  }
+  if (a.steps.size() != b.steps.size()) return n;
+  return std::nullopt;
+}
+
+}  // namespace twr

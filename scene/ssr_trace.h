@@ -1,0 +1,61 @@
+// One pixel's mirror-ray march, step by step (docs/ssr.md, "One pixel's march"): what each
+// renderer's march did at every step, recorded by the march itself (softrender/ssr-inl.h on
+// the CPU, shaders/ssr.frag's SSR_PROBE on GL), so the pixel inspector and `trace` can show
+// both side by side and point at the first step where they part.
+#pragma once
+
+#include "scene/conventions.h"
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace twr {
+
+// What a step of the march did (the same numbers in ssr.frag's record calls).
+enum class SsrStepKind : int {
+  InFront = 0,      // the sample lies in front of its pixel's surface (or over nothing): go on
+  Hit = 1,          // the ray met the surface within the thickness: the march ends here
+  Behind = 2,       // it passed behind the surface by more than the thickness: ends, nothing found
+  OffScreen = 3,    // the sample left the screen (or went behind the eye): ends
+  Ended = 4,        // screen marches: the ray's last sample was reached: ends, nothing found
+  Refine = 5,       // adaptive_world: the sample crossed the surface, the step halves
+  CellSkipped = 6,  // hiz: every sample in the cell lies in front of its nearest surface: jumped past
+  CellDescend = 7,  // hiz: the cell could not be skipped: try a level lower
+};
+const char* toString(SsrStepKind kind);  // "in_front", "hit", ...
+bool endsMarch(SsrStepKind kind);        // Hit, Behind, OffScreen, Ended
+
+struct SsrMarchStep {
+  vec2 pixel{0.0f};             // the sample's pixel, window column and row from the bottom (0 off the screen)
+  float rayDistance = 0.0f;     // the ray's eye distance there (a cell: the farthest of its samples in the cell)
+  float surfaceDistance = 0.0f; // what it was compared with: the pixel's surface distance, or the cell's least (world units)
+  int level = 0;                // 0: one pixel; k: a hiz cell of 2^k x 2^k pixels
+  // How far along: the world marches' distance along the ray (world units), the screen marches'
+  // sample index (after a skip, the sample jumped to).
+  float along = 0.0f;
+  SsrStepKind kind = SsrStepKind::InFront;
+};
+
+struct SsrMarchTrace {
+  bool marched = false;   // the pixel shows a surface (its mirror ray was marched)
+  vec3 origin{0.0f};      // the G-buffer's position (or the one rebuilt from depth), world
+  vec3 direction{0.0f};   // the mirror direction, world, unit
+  std::vector<SsrMarchStep> steps;  // in order; the last one ends the march unless max_steps ran out
+};
+
+// Fills trace.origin and trace.direction for pixel (x, yTop) (top-left image coordinates) of a
+// frame: the G-buffer's stored position, or the one rebuilt from the pixel's window `depth`
+// with clipFromWorld's inverse, and the eye's mirror direction about the lighting normal, as the
+// pass computes them (for showing: the march itself reads them on each renderer).
+struct GBuffer;
+void setSsrRayOf(const GBuffer& g, float depth, const mat4& clipFromWorld, const vec3& eye, int x, int yTop,
+                 SsrMarchTrace& trace);
+
+// The first step where two traces differ: another kind, level or pixel, or a distance more than
+// `relativeTolerance` of itself apart; also where one has a step the other has not. None: the same.
+std::optional<std::size_t> firstDifferingStep(const SsrMarchTrace& a, const SsrMarchTrace& b,
+                                              float relativeTolerance = 1e-5f);
+
+}  // namespace twr
