@@ -53,18 +53,24 @@ std::string formatSsrMarchTraces(const std::string& nameA, const SsrMarchTrace& 
   std::snprintf(line, sizeof line, "   step  %-58s  %s\n", (nameA + ": kind, pixel, ray / surface distance").c_str(),
                 b ? nameB.c_str() : "");
   out << line;
-  const std::optional<std::size_t> parted = b ? firstDifferingStep(a, *b) : std::nullopt;
   const std::size_t rows = std::max(a.steps.size(), b ? b->steps.size() : std::size_t{0});
+  // A plain index (rows = none) rather than the optional: GCC's -O2 flow analysis takes the
+  // optional's payload for uninitialized when it is read in the loop below.
+  std::size_t parted = rows;
+  if (b) {
+    const std::optional<std::size_t> first = firstDifferingStep(a, *b);
+    if (first) parted = *first;
+  }
   for (std::size_t k = 0; k < rows; ++k) {
     const std::string left = stepText(k < a.steps.size() ? &a.steps[k] : nullptr);
     const std::string right = b ? stepText(k < b->steps.size() ? &b->steps[k] : nullptr) : "";
-    std::snprintf(line, sizeof line, "  %c%4zu  %-58s  %s\n", parted && *parted == k ? '*' : ' ', k + 1, left.c_str(),
+    std::snprintf(line, sizeof line, "  %c%4zu  %-58s  %s\n", parted == k ? '*' : ' ', k + 1, left.c_str(),
                   right.c_str());
     out << line;
   }
   if (b) {
-    if (parted) {
-      out << "  " << nameA << " and " << nameB << " part at step " << *parted + 1 << "\n";
+    if (parted < rows) {
+      out << "  " << nameA << " and " << nameB << " part at step " << parted + 1 << "\n";
     } else {
       out << "  " << nameA << " and " << nameB << " take the same " << a.steps.size() << " steps\n";
     }

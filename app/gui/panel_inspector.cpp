@@ -211,16 +211,17 @@ void GuiApp::drawSsrMarchSection() {
   if (monoFont_) ImGui::PushFont(monoFont_);
   ImGui::Text("origin %s  direction %s", formatVec(any->origin).c_str(), formatVec(any->direction).c_str());
   if (monoFont_) ImGui::PopFont();
-  std::optional<std::size_t> parted;
+  const std::size_t rows = std::max(cpu ? cpu->steps.size() : 0, gl ? gl->steps.size() : 0);
+  std::size_t parted = rows;  // a plain index (rows = none): see formatSsrMarchTraces
   if (cpu && gl) {
-    parted = firstDifferingStep(*cpu, *gl);
-    if (parted) {
-      warningText(concat("The backends part at step ", *parted + 1, "."));
+    const std::optional<std::size_t> first = firstDifferingStep(*cpu, *gl);
+    if (first) {
+      parted = *first;
+      warningText(concat("The backends part at step ", parted + 1, "."));
     } else {
       ImGui::TextDisabled("Both backends take the same %zu steps.", cpu->steps.size());
     }
   }
-  const std::size_t rows = std::max(cpu ? cpu->steps.size() : 0, gl ? gl->steps.size() : 0);
   if (ImGui::BeginTable("##ssrmarch", 7, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp |
                                               ImGuiTableFlags_ScrollY,
                         ImVec2(0.0f, ImGui::GetTextLineHeightWithSpacing() * 14.0f))) {
@@ -237,7 +238,7 @@ void GuiApp::drawSsrMarchSection() {
     for (std::size_t k = 0; k < rows; ++k) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      if (parted && *parted == k) ImGui::TextColored(kWarningColour, "%zu", k + 1);
+      if (parted == k) ImGui::TextColored(kWarningColour, "%zu", k + 1);
       else ImGui::Text("%zu", k + 1);
       marchStepCells(cpu && k < cpu->steps.size() ? &cpu->steps[k] : nullptr);
       marchStepCells(gl && k < gl->steps.size() ? &gl->steps[k] : nullptr);
