@@ -283,15 +283,17 @@ std::array<std::pair<const char*, GLuint>, 7> GlGBuffer::ssrTextures() const {
            {"gbufferAlbedo", targets_[2].id()}}};
 }
 
-std::vector<SsrMarchStep> GlGBuffer::probeReflection(ProgramCache& programs, const Scene& scene,
-                                                     const RenderSettings& settings, const mat4& clipFromWorld, int x,
-                                                     int yGl) {
+void GlGBuffer::probeReflection(ProgramCache& programs, const Scene& scene, const RenderSettings& settings,
+                                const mat4& clipFromWorld, int x, int yGl, int ray, SsrMarchTrace& trace) {
   const SsrSettings& ssr = settings.ssr;
   const int hizLevels = ssr.march == SsrMarch::Hiz ? hizLevelsOf(width_, height_) : 0;
   if (ssr.march == SsrMarch::Hiz) buildHiz(programs, scene, clipFromWorld, hizLevels);
-  // A strip of max_steps x 2 texels: fragment (k, 0) step k's sample, (k, 1) its decision.
+  // A strip of max_steps (at least 2) x 3 texels: fragment (k, 0) step k's sample, (k, 1) its
+  // decision; (0, 2) the ray's direction and weight.
   const int steps = ssr.maxSteps;
-  GlTexture strip = makeTarget(GL_RGBA32F, GL_RGBA, GL_FLOAT, steps, 2);
+  const int columns = std::max(steps, 2);
+  constexpr int kRows = 3;
+  GlTexture strip = makeTarget(GL_RGBA32F, GL_RGBA, GL_FLOAT, columns, kRows);
   GlFramebuffer framebuffer = makeGlFramebuffer();
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, strip.id(), 0);
@@ -301,26 +303,30 @@ std::vector<SsrMarchStep> GlGBuffer::probeReflection(ProgramCache& programs, con
   glGetIntegerv(GL_VIEWPORT, viewport);
   GLint previous = 0;  // the frame's framebuffer, bound again after
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous);
-  glViewport(0, 0, steps, 2);
-  std::vector<float> texels(static_cast<std::size_t>(steps) * 2 * 4, 0.0f);
+  glViewport(0, 0, columns, kRows);
+  std::vector<float> texels(static_cast<std::size_t>(columns) * kRows * 4, 0.0f);
   {
     const ScreenPassState state(false);
     const GLuint program = useSsrProgram(programs, scene, settings, clipFromWorld, hizLevels, true);
     glUniform2i(uniformLocation(program, "probePixel"), x, yGl);
+    glUniform1i(uniformLocation(program, "probeRay"), ray);
     const std::array<std::pair<const char*, GLuint>, 7> textures = ssrTextures();
     bindTextures(program, textures);
     drawScreenTriangle();
     unbindTextures(textures.size());
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, steps, 2, GL_RGBA, GL_FLOAT, texels.data());
+    glReadPixels(0, 0, columns, kRows, GL_RGBA, GL_FLOAT, texels.data());
   }
   glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
   glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previous));
-  std::vector<SsrMarchStep> out;
+  const float* ray3 = &texels[static_cast<std::size_t>(columns) * 2 * 4];
+  trace.direction = vec3(ray3[0], ray3[1], ray3[2]);
+  trace.weight = ray3[3];
+  trace.steps.clear();
   for (int k = 0; k < steps; ++k) {
     const float* sample = &texels[static_cast<std::size_t>(k) * 4];
-    const float* decision = &texels[(static_cast<std::size_t>(steps) + static_cast<std::size_t>(k)) * 4];
+    const float* decision = &texels[(static_cast<std::size_t>(columns) + static_cast<std::size_t>(k)) * 4];
     if (decision[3] != 1.0f) break;  // the march ended before step k
     SsrMarchStep step;
     step.pixel = vec2(sample[0], sample[1]);
@@ -329,9 +335,8 @@ std::vector<SsrMarchStep> GlGBuffer::probeReflection(ProgramCache& programs, con
     step.level = static_cast<int>(decision[0]);
     step.kind = static_cast<SsrStepKind>(static_cast<int>(decision[1]));
     step.along = decision[2];
-    out.push_back(step);
+    trace.steps.push_back(step);
   }
-  return out;
 }
 
 void GlGBuffer::buildHiz(ProgramCache& programs, const Scene& scene, const mat4& clipFromWorld, int levels) {

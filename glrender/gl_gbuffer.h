@@ -43,10 +43,11 @@ class GlGBuffer {
                const RenderTargets& targets);
 
   // The pixel inspector's probe (scene/ssr_trace.h), after reflect(): window pixel (x, yGl)'s
-  // mirror-ray march step by step, as ssr.frag's SSR_PROBE records it, one step per fragment of
-  // a max_steps x 2 strip read back. The frame's targets and bindings are left as they were.
-  std::vector<SsrMarchStep> probeReflection(ProgramCache& programs, const Scene& scene, const RenderSettings& settings,
-                                            const mat4& clipFromWorld, int x, int yGl);
+  // march of `ray` (its mirror ray or indirect sample k) step by step, as ssr.frag's SSR_PROBE
+  // records it, one step per fragment of a strip read back; fills trace's steps, direction and
+  // weight. The frame's targets and bindings are left as they were.
+  void probeReflection(ProgramCache& programs, const Scene& scene, const RenderSettings& settings,
+                       const mat4& clipFromWorld, int x, int yGl, int ray, SsrMarchTrace& trace);
 
   // The hiz march's chain (shaders/hiz.frag): level 0 the surface distances, `levels` above.
   void buildHiz(ProgramCache& programs, const Scene& scene, const mat4& clipFromWorld, int levels);

@@ -224,7 +224,7 @@ class GlRenderer final : public Renderer {
   }
 
   SsrMarchTrace traceSsrMarch(const Scene& scene, const RenderSettings& settings, int width, int height, int x,
-                              int yTop) {
+                              int yTop, int ray) {
     if (options_.frame != GlFrame::Full) throw InputError("GL: a march trace needs the full frame's attachments");
     if (x < 0 || x >= width || yTop < 0 || yTop >= height) {
       throw InputError("GL: pixel (" + std::to_string(x) + ", " + std::to_string(yTop) + ") is outside the " +
@@ -233,28 +233,32 @@ class GlRenderer final : public Renderer {
     if (!drawsSsr(settings)) {
       throw InputError("GL: a march trace needs screen-space reflections (settings.ssr on, or an SSR view)");
     }
+    checkSsrRay(settings, ray);
     // The frame as render() draws it, the probe run after its reflection pass.
     struct Reset {
-      std::optional<std::array<int, 2>>& probe;
+      std::optional<std::array<int, 3>>& probe;
       ~Reset() { probe.reset(); }
     } reset{ssrProbe_};
-    ssrProbe_ = std::array<int, 2>{x, height - 1 - yTop};
-    probedSteps_.clear();
+    ssrProbe_ = std::array<int, 3>{x, height - 1 - yTop, ray};
+    probed_ = SsrMarchTrace{};
     const RenderOutput out = draw(scene, settings, width, height, std::nullopt);
     SsrMarchTrace trace;
+    trace.ray = ray;
     const std::size_t i = static_cast<std::size_t>(yTop) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
     trace.marched = out.triangleId[i] != kNoTriangle && out.gbuffer;
     if (!trace.marched) return trace;
     const mat4 clipFromWorld =
         clipFromView(scene.camera, static_cast<float>(width) / static_cast<float>(height)) * viewFromWorld(scene.camera);
-    setSsrRayOf(*out.gbuffer, out.depth[i], clipFromWorld, scene.camera.position, x, yTop, trace);
-    trace.steps = std::move(probedSteps_);
+    setSsrRayOf(*out.gbuffer, out.depth[i], clipFromWorld, scene.camera.position, x, yTop, trace);  // the origin
+    trace.direction = probed_.direction;  // GL's own, as the probe marched it
+    trace.weight = probed_.weight;
+    trace.steps = std::move(probed_.steps);
     return trace;
   }
 
  private:
-  std::optional<std::array<int, 2>> ssrProbe_;  // traceSsrMarch's pixel (GL window coordinates)
-  std::vector<SsrMarchStep> probedSteps_;
+  std::optional<std::array<int, 3>> ssrProbe_;  // traceSsrMarch's pixel (GL window coordinates) and ray
+  SsrMarchTrace probed_;                        // what the probe read back
 
   // A frame, or with `onlyPixel` (x, y in GL window coordinates) the same draws under a
   // one-pixel scissor and that pixel read back as a 1 x 1 output.
@@ -332,8 +336,8 @@ class GlRenderer final : public Renderer {
           ssrMilliseconds =
               std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - lightingEnd).count();
           if (ssrProbe_) {
-            probedSteps_ = device.gbuffer.probeReflection(device.programs, scene, drawSettings, clipFromWorld,
-                                                          (*ssrProbe_)[0], (*ssrProbe_)[1]);
+            device.gbuffer.probeReflection(device.programs, scene, drawSettings, clipFromWorld, (*ssrProbe_)[0],
+                                           (*ssrProbe_)[1], (*ssrProbe_)[2], probed_);
           }
         }
       };
@@ -528,10 +532,10 @@ RenderOutput renderGlPixel(Renderer& renderer, const Scene& scene, const RenderS
 }
 
 SsrMarchTrace traceGlSsrMarch(Renderer& renderer, const Scene& scene, const RenderSettings& settings, int width,
-                              int height, int x, int yTop) {
+                              int height, int x, int yTop, int ray) {
   auto* gl = dynamic_cast<GlRenderer*>(&renderer);
   if (!gl) throw InputError("traceGlSsrMarch: the renderer '" + renderer.name() + "' is not the GL renderer");
-  return gl->traceSsrMarch(scene, settings, width, height, x, yTop);
+  return gl->traceSsrMarch(scene, settings, width, height, x, yTop, ray);
 }
 
 }  // namespace twr

@@ -117,11 +117,12 @@ struct GlContextProbe {
 // Sets llvmpipe's sampling mode for the process like a render would (options.fastSampling).
 std::vector<GlContextProbe> probeGlContexts(const GlOptions& options = {});
 
-// Pixel (x, yTop)'s mirror-ray march on GL, step by step (scene/ssr_trace.h): the frame
-// render() draws, then ssr.frag's SSR_PROBE variant marching that pixel's ray once per step
-// (docs/ssr.md, "One pixel's march"). Throws InputError when the settings draw no reflections,
-// the renderer is not the GL one or draws GlFrame::Lean, or the pixel is outside the frame.
+// Pixel (x, yTop)'s march on GL, step by step (scene/ssr_trace.h): of its mirror ray, or with
+// `ray` k >= 0 of its indirect light's sample k. The frame render() draws, then ssr.frag's
+// SSR_PROBE variant marching that pixel's ray once per step (docs/ssr.md, "One pixel's
+// march"). Throws InputError when the settings draw no reflections or have no sample k, the
+// renderer is not the GL one or draws GlFrame::Lean, or the pixel is outside the frame.
 SsrMarchTrace traceGlSsrMarch(Renderer& renderer, const Scene& scene, const RenderSettings& settings, int width,
-                              int height, int x, int yTop);
+                              int height, int x, int yTop, int ray = kSsrMirrorRay);
 
 }  // namespace twr

@@ -1,6 +1,8 @@
 #include "scene/ssr_trace.h"
 
+#include "scene/errors.h"
 #include "scene/renderer.h"
+#include "scene/settings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,6 +26,19 @@ const char* toString(SsrStepKind kind) {
 bool endsMarch(SsrStepKind kind) {
   return kind == SsrStepKind::Hit || kind == SsrStepKind::Behind || kind == SsrStepKind::OffScreen ||
          kind == SsrStepKind::Ended;
+}
+
+void checkSsrRay(const RenderSettings& settings, int ray) {
+  const int samples = settings.ssr.indirectSamples;
+  if (ray == kSsrMirrorRay || (ray >= 0 && ray < samples)) return;
+  throw InputError("SSR march trace: there is no indirect sample " + std::to_string(ray) +
+                   ": settings.ssr.indirect_samples is " + std::to_string(samples) +
+                   (samples == 0 ? " (the mirror ray is the only one)"
+                                 : " (samples 0.." + std::to_string(samples - 1) + ", or the mirror ray)"));
+}
+
+std::string ssrRayName(int ray) {
+  return ray == kSsrMirrorRay ? "mirror ray" : "indirect sample " + std::to_string(ray);
 }
 
 void setSsrRayOf(const GBuffer& g, float depth, const mat4& clipFromWorld, const vec3& eye, int x, int yTop,

@@ -1,5 +1,5 @@
-// One pixel's mirror-ray march, step by step (docs/ssr.md, "One pixel's march"): what each
-// renderer's march did at every step, recorded by the march itself (softrender/ssr-inl.h on
+// One pixel's march, step by step (docs/ssr.md, "One pixel's march"): its mirror ray or one of
+// its indirect light's rays, what each renderer's march did at every step, recorded by the march itself (softrender/ssr-inl.h on
 // the CPU, shaders/ssr.frag's SSR_PROBE on GL), so the pixel inspector and `trace` can show
 // both side by side and point at the first step where they part.
 #pragma once
@@ -38,12 +38,25 @@ struct SsrMarchStep {
   SsrStepKind kind = SsrStepKind::InFront;
 };
 
+// Which of a pixel's rays a trace follows: the mirror ray, or indirect light's sample k >= 0.
+constexpr int kSsrMirrorRay = -1;
+
 struct SsrMarchTrace {
-  bool marched = false;   // the pixel shows a surface (its mirror ray was marched)
+  bool marched = false;   // the pixel shows a surface (its ray was marched)
+  int ray = kSsrMirrorRay;  // the mirror ray, or indirect sample k
   vec3 origin{0.0f};      // the G-buffer's position (or the one rebuilt from depth), world
-  vec3 direction{0.0f};   // the mirror direction, world, unit
+  vec3 direction{0.0f};   // the ray's direction, world, unit (each renderer's own)
+  float weight = 1.0f;    // an indirect sample's weight (its pdf's: uniform 2 cos, cosine 1); 1 for the mirror ray
   std::vector<SsrMarchStep> steps;  // in order; the last one ends the march unless max_steps ran out
 };
+
+// Throws InputError unless `ray` is the mirror ray or one of `settings`' indirect samples
+// (0 .. indirect_samples - 1).
+struct RenderSettings;
+void checkSsrRay(const RenderSettings& settings, int ray);
+
+// The ray's name as trace and the pixel inspector print it: "mirror ray" or "indirect sample k".
+std::string ssrRayName(int ray);
 
 // Fills trace.origin and trace.direction for pixel (x, yTop) (top-left image coordinates) of a
 // frame: the G-buffer's stored position, or the one rebuilt from the pixel's window `depth`

@@ -17,8 +17,10 @@ nlohmann::json ssrMarchTraceToJson(const SsrMarchTrace& trace) {
                      {"along", s.along}});
   }
   return {{"marched", trace.marched},
+          {"ray", trace.ray == kSsrMirrorRay ? nlohmann::json("mirror") : nlohmann::json(trace.ray)},
           {"origin", {trace.origin.x, trace.origin.y, trace.origin.z}},
           {"direction", {trace.direction.x, trace.direction.y, trace.direction.z}},
+          {"weight", trace.weight},
           {"steps", steps}};
 }
 
@@ -50,6 +52,18 @@ std::string formatSsrMarchTraces(const std::string& nameA, const SsrMarchTrace& 
                 static_cast<double>(a.direction.x), static_cast<double>(a.direction.y),
                 static_cast<double>(a.direction.z));
   out << line;
+  if (a.ray != kSsrMirrorRay) {
+    std::snprintf(line, sizeof line, "  sample weight %.5f\n", static_cast<double>(a.weight));
+    out << line;
+  }
+  // The two directions to the last bit where they differ: an ulp here can part the marches later.
+  if (b && b->marched && b->direction != a.direction) {
+    std::snprintf(line, sizeof line, "  directions differ: %s (%.9g, %.9g, %.9g), %s (%.9g, %.9g, %.9g)\n",
+                  nameA.c_str(), static_cast<double>(a.direction.x), static_cast<double>(a.direction.y),
+                  static_cast<double>(a.direction.z), nameB.c_str(), static_cast<double>(b->direction.x),
+                  static_cast<double>(b->direction.y), static_cast<double>(b->direction.z));
+    out << line;
+  }
   std::snprintf(line, sizeof line, "   step  %-58s  %s\n", (nameA + ": kind, pixel, ray / surface distance").c_str(),
                 b ? nameB.c_str() : "");
   out << line;

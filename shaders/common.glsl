@@ -1,12 +1,19 @@
 // Helpers both phong stages use, each with a C++ twin of the same name and body:
-// safeNormalize in scene/conventions.h, phongPow in softrender/shade.*, vectorAsColour and
+// dot3 (glm::dot's order) and safeNormalize in scene/conventions.h, phongPow in softrender/shade.*, vectorAsColour and
 // heatColour in softrender/lane_math-inl.h, dimmedColour in softrender/environment_view-inl.h.
 // The prelude before this file defines MAX_LIGHTS, MAX_CLIP_PLANES, MIN_LENGTH_SQUARED and
 // MIN_ATTENUATION_DENOMINATOR from the C++ constants (glrender/gl_program.cpp).
 
+// The dot product summed in the C++ twins' order, (x x' + y y') + z z' (glm::dot, dot3 in
+// softrender/lane_math-inl.h). GLSL's dot() leaves the order to the compiler, and llvmpipe's
+// sums it another way: directions one ulp apart that part a screen-space march now and then.
+float dot3(vec3 a, vec3 b) {
+  return (a.x * b.x + a.y * b.y) + a.z * b.z;
+}
+
 // normalize() that never returns NaN: no usable direction gives (0, 0, 1).
 vec3 safeNormalize(vec3 v) {
-  float lengthSquared = dot(v, v);
+  float lengthSquared = dot3(v, v);
   if (!(lengthSquared > MIN_LENGTH_SQUARED) || isinf(lengthSquared) || isnan(lengthSquared)) {
     return vec3(0.0, 0.0, 1.0);
   }

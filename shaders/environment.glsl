@@ -37,7 +37,7 @@ float schlick(float f0, float cosTheta) {
 vec3 environmentMix(vec3 nl, vec3 vVec, vec3 t, vec3 b, vec3 n, vec3 base, out vec3 reflectWorldOut,
                     out float reflectLodOut, out vec3 reflectedOut, out float shareOut) {
   vec3 v = safeNormalize(vVec);
-  float nDotV = dot(nl, v);
+  float nDotV = dot3(nl, v);
   vec3 r = (2.0 * nDotV) * nl - v;  // reflect(-v, nl)
   vec3 reflectWorld = worldFromLighting(r, t, b, n);
   reflectWorldOut = reflectWorld;

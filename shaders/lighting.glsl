@@ -25,7 +25,7 @@ vec3 toLightWorld(LightUniform light, vec3 p) {
 // builtin's precision is the driver's), the angle between the cone's axis and the way from the
 // light to the point. C++ twin: spotFactorLanes (softrender/shade-inl.h).
 float spotFactor(LightUniform light, vec3 toLight) {
-  float cosAngle = 0.0 - dot(light.spotAxis.xyz, safeNormalize(toLight));
+  float cosAngle = 0.0 - dot3(light.spotAxis.xyz, safeNormalize(toLight));
   float x = clamp((cosAngle - light.spotCone.x) / light.spotCone.y, 0.0, 1.0);
   return (x * x) * (3.0 - 2.0 * x);
 }
@@ -69,9 +69,9 @@ LightSum lightSum(vec3 posWorld, vec3 n, vec3 t, vec3 b, vec3 nl, vec3 kdAlbedo,
     float d = length(toLightWorld(lights[i], posWorld));  // always from posWorld, both spaces
     vec3 l = safeNormalize(lVec);
     vec3 v = safeNormalize(vVec);
-    float nDotL = dot(nl, l);
+    float nDotL = dot3(nl, l);
     vec3 r = 2.0 * nDotL * nl - l;
-    float rDotV = max(dot(r, v), 0.0);
+    float rDotV = max(dot3(r, v), 0.0);
     float attenuation = 1.0 / max(lights[i].attenuation.x + lights[i].attenuation.y * d +
                                       lights[i].attenuation.z * d * d,
                                   MIN_ATTENUATION_DENOMINATOR);
@@ -113,7 +113,7 @@ LightSum lightSum(vec3 posWorld, vec3 n, vec3 t, vec3 b, vec3 nl, vec3 kdAlbedo,
       mapOn = true;
       if (!result.haveShadowTest) {
         result.firstShadowTest = mapTest;
-        result.firstShadowCosine = dot(n, safeNormalize(toLightWorld(lights[i], posWorld)));
+        result.firstShadowCosine = dot3(n, safeNormalize(toLightWorld(lights[i], posWorld)));
         result.haveShadowTest = true;
       }
     }

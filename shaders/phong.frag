@@ -325,7 +325,7 @@ void main() {
     dirTangent = safeNormalize(kLight ? lightDirTangent[0] : eyeDirTangent);
 #else
     vec3 w = kLight ? toLightWorld(lights[0], posWorld) : eyePosWorld - posWorld;
-    dirTangent = safeNormalize(vec3(dot(t, w), dot(b, w), dot(n, w)));
+    dirTangent = safeNormalize(vec3(dot3(t, w), dot3(b, w), dot3(n, w)));
 #endif
   }
   colour = vectorAsColour(dirTangent);

@@ -52,10 +52,10 @@ void main() {
   vec3 N = safeNormalize(nWorld);
   for (int i = 0; i < MAX_LIGHTS; ++i) {
     vec3 Lw = lightVectorWorld[i].xyz - lightVectorWorld[i].w * posWorld;
-    lightDirTangent[i] = i < lightCount ? vec3(dot(T, Lw), dot(B, Lw), dot(N, Lw)) : vec3(0.0);
+    lightDirTangent[i] = i < lightCount ? vec3(dot3(T, Lw), dot3(B, Lw), dot3(N, Lw)) : vec3(0.0);
   }
   vec3 Ew = eyePosWorld - posWorld;
-  eyeDirTangent = vec3(dot(T, Ew), dot(B, Ew), dot(N, Ew));
+  eyeDirTangent = vec3(dot3(T, Ew), dot3(B, Ew), dot3(N, Ew));
 #endif
 
   for (int slot = 0; slot < MAX_CLIP_PLANES; ++slot) {

@@ -65,7 +65,7 @@ void shadowCubeCoord(vec3 r, out float face, out float s, out float t) {
 // The test at posWorld; n the surface's unit normal, l the unit vector to the light (world).
 ShadowTest shadowTest(int slot, vec3 posWorld, vec3 n, vec3 l) {
   ShadowUniform u = shadows[slot];
-  float cosTheta = max(dot(n, l), MIN_SHADOW_COSINE);
+  float cosTheta = max(dot3(n, l), MIN_SHADOW_COSINE);
   float sinTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
   float tanTheta = min(sinTheta / cosTheta, MAX_SHADOW_SLOPE_TANGENT);
 

@@ -40,8 +40,9 @@ const float SSR_OFF_SCREEN = 3.0;
 const float SSR_BEHIND = 4.0;
 
 // The pixel inspector's probe (scene/ssr_trace.h): with SSR_PROBE the program marches one
-// pixel's mirror ray per fragment of a strip, fragment k keeping what step k did; record() is
-// called where ssrRecordStep is in softrender/ssr-inl.h, once per step. Without, it does nothing.
+// pixel's ray (its mirror ray or an indirect sample's) per fragment of a strip, fragment k
+// keeping what step k did; record() is called where ssrRecordStep is in softrender/ssr-inl.h,
+// once per step. Without, it does nothing.
 #ifdef SSR_PROBE
 int probeStep = -1;
 int stepIndex = 0;
@@ -371,8 +372,10 @@ vec3 viewColour(float result, float steps, ivec2 hitPixel) {
 
 #ifdef SSR_PROBE
 uniform ivec2 probePixel;  // window column and row from the bottom
+uniform int probeRay;      // -1: the mirror ray; k >= 0: indirect sample k (traceSsrMarch's ray)
 
-// Fragment (k, 0) of the strip: step k's sample; (k, 1): its decision (zeros past the march's end).
+// Fragment (k, 0) of the strip: step k's sample; (k, 1): its decision (zeros past the march's
+// end); (0, 2): the ray's direction and weight.
 void main() {
   probeStep = int(gl_FragCoord.x);
   ivec2 pixel = probePixel;
@@ -384,11 +387,13 @@ void main() {
   vec3 posWorld = worldFromWindow(vec2(pixel) + 0.5, depth);
 #endif
   vec3 wo = safeNormalize(eyePosWorld - posWorld);
-  vec3 r = safeNormalize((2.0 * dot(nl, wo)) * nl - wo);
+  vec3 r = safeNormalize((2.0 * dot3(nl, wo)) * nl - wo);
+  float weight = 1.0;
+  if (probeRay >= 0) r = hemisphere(nl, randomPair(uvec2(pixel), uint(probeRay)), weight);
   float steps;
   ivec2 hitPixel;
   marchOf(posWorld, r, steps, hitPixel);
-  fragColour = gl_FragCoord.y < 1.0 ? probeSample : probeDecision;
+  fragColour = gl_FragCoord.y < 1.0 ? probeSample : (gl_FragCoord.y < 2.0 ? probeDecision : vec4(r, weight));
 }
 #else
 void main() {
@@ -404,7 +409,7 @@ void main() {
   vec3 posWorld = worldFromWindow(gl_FragCoord.xy, depth);
 #endif
   vec3 wo = safeNormalize(eyePosWorld - posWorld);
-  vec3 r = safeNormalize((2.0 * dot(nl, wo)) * nl - wo);
+  vec3 r = safeNormalize((2.0 * dot3(nl, wo)) * nl - wo);
   if (debugView != 0) {
     float steps;
     ivec2 hitPixel;

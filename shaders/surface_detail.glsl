@@ -37,7 +37,7 @@ vec3 tangentFromLighting(vec3 w, vec3 t, vec3 b, vec3 n) {
 #ifdef LIGHTING_TANGENT
   return safeNormalize(w);
 #else
-  return safeNormalize(vec3(dot(t, w), dot(b, w), dot(n, w)));
+  return safeNormalize(vec3(dot3(t, w), dot3(b, w), dot3(n, w)));
 #endif
 }
 

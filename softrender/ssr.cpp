@@ -128,7 +128,7 @@ void ssrDistancesOf(const std::vector<float>& depth, int width, int height, cons
 }
 
 SsrMarchTrace traceSsrMarch(const Scene& scene, const RenderSettings& settings, const RenderOutput& frame, int x,
-                            int yTop) {
+                            int yTop, int ray) {
   const int width = frame.width, height = frame.height;
   if (x < 0 || x >= width || yTop < 0 || yTop >= height) {
     throw InputError("SSR march trace: pixel (" + std::to_string(x) + ", " + std::to_string(yTop) +
@@ -141,16 +141,19 @@ SsrMarchTrace traceSsrMarch(const Scene& scene, const RenderSettings& settings, 
   }
   const GBuffer& g = *frame.gbuffer;
   const bool positionStored = !g.position.empty();
+  checkSsrRay(settings, ray);
   SsrUniforms u = makeSsrUniforms(scene, settings, width, height);
   SsrPlanes planes;
   ssrDistancesOf(frame.depth, width, height, g, positionStored, u, planes);
   useSsrPlanes(planes, u);  // the march reads no colour
   SsrMarchTrace trace;
+  trace.ray = ray;
   const std::size_t i = static_cast<std::size_t>(yTop) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
   const float depth = frame.depth[i];
   trace.marched = depth < kClearDepth;
   if (!trace.marched) return trace;
-  // As reflectTeaching and ssrPixelLanes: the ray's origin and the mirror direction.
+  // As reflectTeaching and ssrPixelLanes: the ray's origin and direction (the mirror's, or the
+  // sample's over the hemisphere from the pixel's random pair).
   const int yGl = height - 1 - yTop;
   const vec3 posWorld = positionStored
                             ? vec3(g.position[i])
@@ -158,7 +161,12 @@ SsrMarchTrace traceSsrMarch(const Scene& scene, const RenderSettings& settings, 
                                                           static_cast<float>(x), static_cast<float>(yGl), depth);
   const vec3 nl(g.normal[i]);
   const vec3 wo = safeNormalize3<float>(u.eyePosWorld - posWorld);
-  const vec3 r = safeNormalize3<float>((2.0f * dot3<float>(nl, wo)) * nl - wo);
+  vec3 r = safeNormalize3<float>((2.0f * dot3<float>(nl, wo)) * nl - wo);
+  if (ray != kSsrMirrorRay) {
+    const vec2 xi = ssrRandomPairOf(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(yGl),
+                                    static_cast<std::uint32_t>(ray));
+    r = ssrHemisphereLanes<float>(u, nl, xi, trace.weight);
+  }
   trace.origin = posWorld;
   trace.direction = r;
   ssrMarchOfLanes<float>(u, posWorld, r, true, &trace.steps);

@@ -103,12 +103,14 @@ void ssrPlanesOf(const Framebuffer& fb, const GBuffer& g, bool positionStored, c
 void ssrDistancesOf(const std::vector<float>& depth, int width, int height, const GBuffer& g, bool positionStored,
                     const SsrUniforms& u, SsrPlanes& planes);
 
-// Pixel (x, yTop)'s mirror-ray march on the CPU, step by step (scene/ssr_trace.h; the pixel
-// inspector and `trace`): `frame` is this renderer's frame of `settings` (its G-buffer and depth
-// are read), the march the teaching path's, recording as it goes. Throws InputError when the
-// frame has no G-buffer (settings draw no reflections) or the pixel is outside it.
+// Pixel (x, yTop)'s march on the CPU, step by step (scene/ssr_trace.h; the pixel inspector and
+// `trace`): of its mirror ray, or with `ray` k >= 0 of its indirect light's sample k (the
+// direction and weight the pass gives it). `frame` is this renderer's frame of `settings` (its
+// G-buffer and depth are read), the march the teaching path's, recording as it goes. Throws
+// InputError when the frame has no G-buffer (settings draw no reflections), the pixel is
+// outside it or the settings have no sample k.
 SsrMarchTrace traceSsrMarch(const Scene& scene, const RenderSettings& settings, const RenderOutput& frame, int x,
-                            int yTop);
+                            int yTop, int ray = kSsrMirrorRay);
 
 // Points u's buffers at the planes' (the colour, the distances, the chain).
 void useSsrPlanes(const SsrPlanes& planes, SsrUniforms& u);

@@ -1,5 +1,6 @@
 // `twinraster trace SCENE X Y`: the story of one pixel through the CPU pipeline (and, with
-// screen-space reflections, its mirror-ray march step by step on both renderers).
+// screen-space reflections, its mirror ray's or an indirect sample's march step by step on both
+// renderers).
 // The replay of the stages is the teaching code (softrender/pixel_trace.cpp); the final
 // pixel it reports comes from a full render on --cpu-path / --cpu-isa (default fast, auto).
 // tracePixel() takes no renderer options and renders on the default fast path itself, so
@@ -29,7 +30,25 @@ struct TraceArgs {
   int x = 0;
   int y = 0;
   bool json = false;
+  std::string ssrRay = "mirror";  // --ssr-ray: mirror, or an indirect sample's index
 };
+
+// --ssr-ray's value: kSsrMirrorRay for "mirror", else a sample index (checked against the
+// scene's indirect_samples by checkSsrRay).
+int ssrRayOf(const std::string& text) {
+  if (text == "mirror") return kSsrMirrorRay;
+  std::size_t used = 0;
+  int k = -1;
+  try {
+    k = std::stoi(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || k < 0) {
+    throw InputError("--ssr-ray: expected 'mirror' or an indirect sample's index (0, 1, ...), got '" + text + "'");
+  }
+  return k;
+}
 
 // The final pixel of `trace` as a render with `options` draws it.
 void takeFinalPixelFrom(const CpuOptions& options, const Scene& scene, int width, int height, PixelTrace& trace) {
@@ -52,20 +71,25 @@ void runTrace(const TraceArgs& args) {
                      std::to_string(width) + "x" + std::to_string(height) + " image; expected 0 <= X < " +
                      std::to_string(width) + " and 0 <= Y < " + std::to_string(height));
   }
+  const int ray = ssrRayOf(args.ssrRay);
+  if (!drawsSsr(scene.settings) && ray != kSsrMirrorRay) {
+    throw InputError("--ssr-ray " + args.ssrRay + ": the scene draws no screen-space reflections (settings.ssr)");
+  }
+  if (drawsSsr(scene.settings)) checkSsrRay(scene.settings, ray);
   PixelTrace trace = tracePixel(scene, scene.settings, width, height, args.x, args.y);
   const CpuOptions tracePixelOwn;  // what tracePixel() renders with
   if (cpuOptions.path != tracePixelOwn.path || cpuOptions.isa != tracePixelOwn.isa) {
     takeFinalPixelFrom(cpuOptions, scene, width, height, trace);
   }
-  // A frame with reflections: the pixel's mirror-ray march step by step on both renderers.
+  // A frame with reflections: the pixel's ray's march step by step on both renderers.
   std::optional<SsrMarchTrace> cpuMarch, glMarch;
   std::string glMarchError;
   if (drawsSsr(scene.settings)) {
     const RenderOutput frame = makeCpuRenderer(cpuOptions)->render(scene, scene.settings, width, height);
-    cpuMarch = traceSsrMarch(scene, scene.settings, frame, args.x, args.y);
+    cpuMarch = traceSsrMarch(scene, scene.settings, frame, args.x, args.y, ray);
     try {
       std::unique_ptr<Renderer> gl = makeGlRenderer(requestedGlOptions(args.gl));
-      glMarch = traceGlSsrMarch(*gl, scene, scene.settings, width, height, args.x, args.y);
+      glMarch = traceGlSsrMarch(*gl, scene, scene.settings, width, height, args.x, args.y, ray);
     } catch (const InputError& e) {
       glMarchError = e.what();  // no usable GL here: the CPU's march alone, and why
     }
@@ -76,7 +100,8 @@ void runTrace(const TraceArgs& args) {
     json["cpu_path"] = path;  // the render the final pixel comes from
     if (cpuMarch) {
       const std::optional<std::size_t> parted = glMarch ? firstDifferingStep(*cpuMarch, *glMarch) : std::nullopt;
-      json["ssr_march"] = {{"cpu", ssrMarchTraceToJson(*cpuMarch)},
+      json["ssr_march"] = {{"ray", ray == kSsrMirrorRay ? nlohmann::json("mirror") : nlohmann::json(ray)},
+                           {"cpu", ssrMarchTraceToJson(*cpuMarch)},
                            {"gl", glMarch ? ssrMarchTraceToJson(*glMarch) : nlohmann::json(nullptr)},
                            {"gl_error", glMarchError.empty() ? nlohmann::json(nullptr) : nlohmann::json(glMarchError)},
                            {"first_differing_step", parted ? nlohmann::json(*parted + 1) : nlohmann::json(nullptr)}};
@@ -88,7 +113,8 @@ void runTrace(const TraceArgs& args) {
     std::cout << formatPixelTrace(trace) << "final pixel rendered by the cpu path: " << path << "\n";
     if (cpuMarch) {
       const SsrSettings& ssr = scene.settings.ssr;
-      std::cout << "\nSSR march of this pixel's mirror ray (" << toString(ssr.march) << ", max_steps " << ssr.maxSteps
+      std::cout << "\nSSR march of this pixel's " << ssrRayName(ray) << " (" << toString(ssr.march) << ", max_steps "
+                << ssr.maxSteps
                 << ", thickness " << ssr.thickness << "):\n"
                 << formatSsrMarchTraces("cpu", *cpuMarch, "gl", glMarch ? &*glMarch : nullptr);
       if (!glMarchError.empty()) std::cout << "  gl: not traced: " << glMarchError << "\n";
@@ -103,13 +129,16 @@ const bool registered = registerCommand(40, [](CLI::App& app) {
       "Trace one pixel through the CPU pipeline: the triangles that reach it, the clip planes, snapped "
       "positions and edge functions, barycentrics, interpolated varyings, every shading term, the depth test. "
       "The final pixel comes from a full render on --cpu-path and --cpu-isa. With screen-space reflections "
-      "(settings.ssr), also the pixel's mirror-ray march step by step on both renderers (GL's through ssr.frag's "
-      "probe), and the first step where they part.");
+      "(settings.ssr), also the pixel's mirror-ray march (or, with --ssr-ray K, its indirect sample K's) step by "
+      "step on both renderers (GL's through ssr.frag's probe), and the first step where they part.");
   addRenderOptions(*cmd, args->request);
   cmd->add_option("x", args->x, "Pixel column, 0 at the left edge of the image")->required();
   cmd->add_option("y", args->y, "Pixel row, 0 at the TOP edge of the image (as in the PNG files, not GL's bottom-left)")
       ->required();
   cmd->add_flag("--json", args->json, "Print the trace as JSON instead of text");
+  cmd->add_option("--ssr-ray", args->ssrRay,
+                  "With screen-space reflections: the ray whose march is traced, mirror (the default) or K, the "
+                  "pixel's indirect light sample K (0 .. settings.ssr.indirect_samples - 1)");
   addCpuOptions(*cmd, args->cpu);
   addGlOptions(*cmd, args->gl);
   cmd->callback([args] { runTrace(*args); });

@@ -65,10 +65,12 @@ struct PinState {
   std::uint64_t glRevision = 0;  // revision of `gl`; 0: not probed yet
   ViewSamples gl;
   std::string glError;
-  std::optional<SsrMarchTrace> glMarch;  // the GL probe's mirror-ray march (frames with reflections)
+  std::optional<SsrMarchTrace> glMarch;  // the GL probe's march of its job's ray (frames with reflections)
   std::string glMarchError;
   std::uint64_t glAskedRevision = 0;  // the last probe job sent to the GL worker
   std::optional<PixelPos> glAskedPixel;
+  int cpuAskedRay = kSsrMirrorRay;  // the ray of the last probe jobs
+  int glAskedRay = kSsrMirrorRay;
 };
 
 // One copy of the scene at one edit, shared by the GL and the CPU job of that edit (never
@@ -246,6 +248,12 @@ class GuiApp {
   std::uint64_t timingsFromRevision_ = 0;  // CPU frames of older edits (another scene) are not timed
   DiffState diff_;
   PinState pin_;
+  // The ray the inspector's SSR march follows: the mirror ray or indirect sample k (kept across
+  // pinned pixels; the mirror ray while the settings have no sample k).
+  int ssrTraceRay_ = kSsrMirrorRay;
+  int ssrTraceRayOf(const RenderSettings& settings) const {
+    return ssrTraceRay_ < settings.ssr.indirectSamples ? ssrTraceRay_ : kSsrMirrorRay;
+  }
 
   ImageTexture cpuTexture_, glTexture_, heatTexture_, classTexture_;
   // The environment's cube cross (Scene tab): a loaded cube's, or each renderer's captured faces,

@@ -283,7 +283,9 @@ void GuiApp::submitGl() {
   // The per-view reads wait while the user drags or types: each is a GL render of the whole
   // scene (one pixel drawn), and the next frame matters more.
   const bool probeNow = pin_.pixel && !interacting_;
-  const bool needProbe = probeNow && (pin_.glAskedRevision != now || pin_.glAskedPixel != pin_.pixel);
+  const int ray = ssrTraceRayOf(doc_.scene.settings);
+  const bool needProbe = probeNow && (pin_.glAskedRevision != now || pin_.glAskedPixel != pin_.pixel ||
+                                      pin_.glAskedRay != ray);
   if (!needFrame && !needProbe) return;
   if (needFrame) {
     glSnapshot_ = SceneSnapshot{now, std::make_shared<const Scene>(doc_.scene), renderWidth_, renderHeight_};
@@ -297,8 +299,10 @@ void GuiApp::submitGl() {
   job.renderFrame = needFrame;
   if (probeNow) {
     job.probePixel = pin_.pixel;
+    job.ssrRay = ray;
     pin_.glAskedRevision = now;
     pin_.glAskedPixel = pin_.pixel;
+    pin_.glAskedRay = ray;
   }
   glWorker_->submit(std::move(job));
 }
@@ -312,8 +316,9 @@ void GuiApp::submitCpu() {
   const bool needFrame = cpuSubmitted_ != snapshot.revision;
   // The pinned pixel is at the current render size; an older snapshot may have another.
   const bool probeFits = pin_.pixel && snapshot.width == renderWidth_ && snapshot.height == renderHeight_;
-  const bool needProbe =
-      probeFits && (pin_.cpuAskedRevision != snapshot.revision || pin_.cpuAskedPixel != pin_.pixel);
+  const int ray = ssrTraceRayOf(snapshot.scene->settings);
+  const bool needProbe = probeFits && (pin_.cpuAskedRevision != snapshot.revision ||
+                                       pin_.cpuAskedPixel != pin_.pixel || pin_.cpuAskedRay != ray);
   if (!needFrame && !needProbe) return;
   CpuJob job;
   job.revision = snapshot.revision;
@@ -326,8 +331,10 @@ void GuiApp::submitCpu() {
   job.renderFrame = needFrame;
   if (probeFits) {
     job.probePixel = pin_.pixel;
+    job.ssrRay = ray;
     pin_.cpuAskedRevision = snapshot.revision;
     pin_.cpuAskedPixel = pin_.pixel;
+    pin_.cpuAskedRay = ray;
     // A new path or target is a new edit (panel_render.cpp), so this edit's frame is the path's.
     if (!needFrame && cpuFrame_.revision == snapshot.revision) job.frame = cpuFrame_.output;
   }

@@ -47,7 +47,8 @@ CpuProbe CpuWorker::probe(Renderer& renderer, const CpuJob& job, const RenderOut
     // A frame with reflections: the pixel's march, step by step, from that frame's G-buffer.
     if (drawsSsr(job.settings)) {
       try {
-        result.ssrMarch = traceSsrMarch(*job.scene, job.settings, *frameOutput, result.pixel.x, result.pixel.yTop);
+        result.ssrMarch =
+            traceSsrMarch(*job.scene, job.settings, *frameOutput, result.pixel.x, result.pixel.yTop, job.ssrRay);
       } catch (const std::exception& e) {
         result.ssrMarchError = e.what();
       }

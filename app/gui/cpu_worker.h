@@ -32,6 +32,7 @@ struct CpuJob {
   CpuIsa isa = CpuIsa::Auto;     // a supported target (the UI offers no other)
   bool renderFrame = true;           // false: only the probe (a new pinned pixel, same frame)
   std::optional<PixelPos> probePixel;  // trace this pixel and read it in every debug view
+  int ssrRay = kSsrMirrorRay;          // the ray whose SSR march the probe traces (a sample the settings have)
   // Probe-only jobs: this edit's frame, already drawn by `path` (the trace's final pixel comes
   // from it); null: the probe draws the frame once more.
   std::shared_ptr<const RenderOutput> frame;
@@ -43,8 +44,8 @@ struct CpuProbe {
   std::string traceError;
   ViewSamples views;  // the CPU image at the pixel in each debug view (TBN lines off)
   bool complete = false;  // false when a newer job cut the views short
-  // A frame with reflections: the pixel's mirror-ray march step by step (softrender/ssr.h's
-  // traceSsrMarch), or why not.
+  // A frame with reflections: the pixel's march of the job's ray step by step
+  // (softrender/ssr.h's traceSsrMarch), or why not.
   std::optional<SsrMarchTrace> ssrMarch;
   std::string ssrMarchError;
 };

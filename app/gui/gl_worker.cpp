@@ -43,7 +43,7 @@ GlProbe GlWorker::probe(Renderer& renderer, const GlJob& job) const {
     if (queue_.superseded()) return result;
     try {
       result.ssrMarch = traceGlSsrMarch(renderer, *job.scene, job.scene->settings, job.width, job.height,
-                                        result.pixel.x, result.pixel.yTop);
+                                        result.pixel.x, result.pixel.yTop, job.ssrRay);
     } catch (const std::exception& e) {
       result.ssrMarchError = e.what();
     }

@@ -32,6 +32,7 @@ struct GlJob {
   int height = 0;                      // pixels
   bool renderFrame = true;             // false: only the probe (a new pinned pixel, same frame)
   std::optional<PixelPos> probePixel;  // read this pixel in every debug view
+  int ssrRay = kSsrMirrorRay;          // the ray whose SSR march the probe traces (a sample the settings have)
 };
 
 struct GlProbe {
@@ -39,7 +40,7 @@ struct GlProbe {
   ViewSamples views;      // the GL image at the pixel in each debug view (TBN lines off)
   std::string error;      // what a view's render threw, else empty
   bool complete = false;  // false when a newer job cut the views short
-  // A frame with reflections: the pixel's mirror-ray march step by step on GL
+  // A frame with reflections: the pixel's march of the job's ray step by step on GL
   // (traceGlSsrMarch), or why not.
   std::optional<SsrMarchTrace> ssrMarch;
   std::string ssrMarchError;

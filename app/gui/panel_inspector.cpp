@@ -182,21 +182,35 @@ void marchStepCells(const SsrMarchStep* step) {
 
 }  // namespace
 
-// The pinned pixel's mirror-ray march, step by step, on both backends (docs/ssr.md, "One
-// pixel's march"), the first step where they part marked.
+// The pinned pixel's march of its mirror ray or an indirect sample, step by step, on both
+// backends (docs/ssr.md, "One pixel's march"), the first step where they part marked.
 void GuiApp::drawSsrMarchSection() {
   const bool cpuCurrent = pin_.cpu && pin_.cpuRevision == doc_.revision;
   std::string title = "SSR march at this pixel";
   if (!cpuCurrent) title += " (CPU updating...)";
   title += "###ssrmarch";
   if (!ImGui::CollapsingHeader(title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) return;
+  // Which ray: the mirror ray, or one of indirect light's samples (a new probe on a change).
+  const int samples = doc_.scene.settings.ssr.indirectSamples;
+  const int ray = ssrTraceRayOf(doc_.scene.settings);
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 12.0f);
+  if (ImGui::BeginCombo("Ray##ssrray", ssrRayName(ray).c_str())) {
+    for (int k = kSsrMirrorRay; k < samples; ++k) {
+      if (ImGui::Selectable(ssrRayName(k).c_str(), k == ray)) ssrTraceRay_ = k;
+    }
+    ImGui::EndCombo();
+  }
+  if (samples == 0 && ImGui::IsItemHovered()) ImGui::SetTooltip("Indirect light is off (indirect_samples 0)");
   if (!pin_.cpu || !pin_.cpu->ssrMarchError.empty()) {
     if (pin_.cpu) errorText("CPU: " + pin_.cpu->ssrMarchError);
     else hintText("CPU: waiting for the worker...");
   }
   if (!pin_.glMarchError.empty()) errorText("GL: " + pin_.glMarchError);
-  const SsrMarchTrace* cpu = cpuCurrent && pin_.cpu->ssrMarch ? &*pin_.cpu->ssrMarch : nullptr;
-  const SsrMarchTrace* gl = pin_.glMarch && pin_.glRevision == doc_.revision ? &*pin_.glMarch : nullptr;
+  // A trace of another ray (just picked) waits for its own.
+  const SsrMarchTrace* cpu =
+      cpuCurrent && pin_.cpu->ssrMarch && pin_.cpu->ssrMarch->ray == ray ? &*pin_.cpu->ssrMarch : nullptr;
+  const SsrMarchTrace* gl =
+      pin_.glMarch && pin_.glRevision == doc_.revision && pin_.glMarch->ray == ray ? &*pin_.glMarch : nullptr;
   if (!gl && pin_.glMarchError.empty()) hintText("GL: waiting for the worker...");
   const SsrMarchTrace* any = cpu ? cpu : gl;
   if (!any) return;
@@ -204,13 +218,18 @@ void GuiApp::drawSsrMarchSection() {
     hintText("Nothing is drawn here: no ray to march.");
     return;
   }
-  hintText("The mirror ray of the lighting normal from the G-buffer's point, marched as settings.ssr says; each "
-           "step: what the march decided, the pixel it sampled (window, from the bottom), the ray's eye distance "
-           "against the surface's (a hiz cell: its farthest sample against the cell's nearest surface). The two "
+  hintText("The mirror ray of the lighting normal (or an indirect sample's ray over its hemisphere) from the "
+           "G-buffer's point, marched as settings.ssr says; each step: what the march decided, the pixel it "
+           "sampled (window, from the bottom), the ray's eye distance against the surface's (a hiz cell: its farthest sample against the cell's nearest surface). The two "
            "backends record the same numbers from their own march (GL: ssr.frag's probe).");
   if (monoFont_) ImGui::PushFont(monoFont_);
   ImGui::Text("origin %s  direction %s", formatVec(any->origin).c_str(), formatVec(any->direction).c_str());
+  if (any->ray != kSsrMirrorRay) ImGui::Text("sample weight %.5f", static_cast<double>(any->weight));
   if (monoFont_) ImGui::PopFont();
+  if (cpu && gl && cpu->direction != gl->direction) {
+    warningText(concat("The backends' directions differ: CPU ", formatVec(cpu->direction, 9), ", GL ",
+                       formatVec(gl->direction, 9), "."));
+  }
   const std::size_t rows = std::max(cpu ? cpu->steps.size() : 0, gl ? gl->steps.size() : 0);
   std::size_t parted = rows;  // a plain index (rows = none): see formatSsrMarchTraces
   if (cpu && gl) {

@@ -373,6 +373,40 @@ TEST(CliTrace, ShowsTheSsrMarchOnBothRenderers) {
   const RunResult off = runCli("trace " + scene + " 80 100 --width 160 --height 120 --ssr off --json", dir);
   ASSERT_EQ(off.exitCode, 0) << off.err;
   EXPECT_TRUE(nlohmann::json::parse(off.out)["ssr_march"].is_null());
+  // The mirror floor has no indirect light: no sample to trace, and --ssr-ray says what it wants.
+  const RunResult noSample = runCli("trace " + scene + " 80 100 --width 160 --height 120 --ssr-ray 0", dir);
+  EXPECT_EQ(noSample.exitCode, 2) << noSample.out;
+  EXPECT_NE(noSample.err.find("indirect_samples is 0"), std::string::npos) << noSample.err;
+  const RunResult bad = runCli("trace " + scene + " 80 100 --width 160 --height 120 --ssr-ray 1x", dir);
+  EXPECT_EQ(bad.exitCode, 2) << bad.out;
+  EXPECT_NE(bad.err.find("--ssr-ray: expected 'mirror' or an indirect sample's index"), std::string::npos) << bad.err;
+}
+
+TEST(CliTrace, ShowsAnIndirectSamplesMarchOnBothRenderers) {
+  const auto dir = testDir("cli_trace_ssr_indirect");
+  const std::string scene = "\"" + kSource + "/assets/scenes/ssr_cave.json\"";  // 4 cosine samples
+  const RunResult text = runCli("trace " + scene + " 80 70 --width 160 --height 120 --ssr-ray 2", dir);
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  EXPECT_NE(text.out.find("SSR march of this pixel's indirect sample 2 (hiz"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("sample weight 1.00000"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("cpu and gl take the same"), std::string::npos) << text.out;
+  EXPECT_EQ(text.out.find("directions differ"), std::string::npos) << text.out;
+  const RunResult json = runCli("trace " + scene + " 80 70 --width 160 --height 120 --ssr-ray 2 --json", dir);
+  ASSERT_EQ(json.exitCode, 0) << json.err;
+  const nlohmann::json march = nlohmann::json::parse(json.out)["ssr_march"];
+  EXPECT_EQ(march["ray"], 2);
+  EXPECT_EQ(march["cpu"]["ray"], 2);
+  EXPECT_EQ(march["cpu"]["direction"], march["gl"]["direction"]);
+  EXPECT_EQ(march["cpu"]["weight"], 1.0);
+  const RunResult mirror = runCli("trace " + scene + " 80 70 --width 160 --height 120 --json", dir);
+  ASSERT_EQ(mirror.exitCode, 0) << mirror.err;
+  EXPECT_EQ(nlohmann::json::parse(mirror.out)["ssr_march"]["ray"], "mirror");
+  EXPECT_NE(nlohmann::json::parse(mirror.out)["ssr_march"]["cpu"]["direction"], march["cpu"]["direction"]);
+  const RunResult past = runCli("trace " + scene + " 80 70 --width 160 --height 120 --ssr-ray 4", dir);
+  EXPECT_EQ(past.exitCode, 2) << past.out;
+  EXPECT_NE(past.err.find("there is no indirect sample 4: settings.ssr.indirect_samples is 4 (samples 0..3"),
+            std::string::npos)
+      << past.err;
 }
 
 TEST(CliTrace, TellsTheStoryOfACoveredPixel) {

@@ -46,9 +46,6 @@ struct SuiteCase {
   GBufferPosition position = GBufferPosition::Stored;  // a deferred frame's settings.gbuffer_position
   std::optional<SsrMarch> ssrMarch;  // settings.ssr.march instead of the scene's
   std::optional<int> ssrIndirect;    // settings.ssr.indirect_samples instead of the scene's
-  // The largest difference reported, not limited (the share over one level still is): a
-  // measured exception, said where the case is made.
-  bool largestReported = false;
   std::string name;
 };
 
@@ -154,9 +151,6 @@ std::vector<SuiteCase> suiteCases() {
         c.height = width == 640 ? 480 : 720;
         c.name = stem(scene) + "_" + std::string(toString(march)) + "_" + std::to_string(width) + "x" +
                  std::to_string(c.height);
-        // Measured: in the cave at 1280x720, adaptive_world's indirect rays agree at every
-        // pixel but one of 921,600, which differs by 37 levels (docs/ssr.md, "Measured").
-        c.largestReported = cave && march == SsrMarch::AdaptiveWorld && width == 1280;
         cases.push_back(c);
       }
     }
@@ -169,9 +163,6 @@ std::vector<SuiteCase> suiteCases() {
     c.view = view;
     c.overrideView = true;
     c.name = "ssr_mirror_floor_view_" + std::string(toString(view));
-    // Measured: hiz's path (its steps, the levels it climbed) differs at one pixel of 307,200,
-    // its outcome nowhere (ssr_hit and ssr_uv agree): docs/ssr.md, "Measured".
-    c.largestReported = view == View::SsrSteps || view == View::HizLevel;
     cases.push_back(c);
   }
   // The mirror floor with 4 indirect samples too (hiz, uniform), at both sizes.
@@ -272,7 +263,6 @@ TEST_P(SceneSuite, CpuMatchesLlvmpipeWithinTolerance) {
   // pixels over one level; the largest difference is reported, not limited. A stored position
   // is the one forward lights, and keeps every limit.
   if (c.deferred && c.position == GBufferPosition::Depth) limits.maxAbsDiff = std::nullopt;
-  if (c.largestReported) limits.maxAbsDiff = std::nullopt;
   std::vector<ThresholdViolation> violations = checkThresholds(m, limits);
   // A captured environment: each renderer drew its own six faces, held to the same limits.
   EXPECT_EQ(cpu.capturedFaces != nullptr, scene.environment && scene.environment->capture);

@@ -1,9 +1,14 @@
 // The march record's helpers (scene/ssr_trace.h, scene/ssr_trace_report.h): where two traces
 // part, which steps end a march, the text table and the JSON `trace` prints.
 #include "scene/ssr_trace.h"
+#include "scene/errors.h"
+#include "scene/settings.h"
 #include "scene/ssr_trace_report.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
 
 namespace twr {
 namespace {
@@ -66,6 +71,40 @@ TEST(SsrTrace, TextAndJson) {
   EXPECT_EQ(j["steps"][1]["level"], 2);
   EXPECT_EQ(j["steps"][2]["pixel"][0], 14.0);
   EXPECT_TRUE(j["marched"].get<bool>());
+  EXPECT_EQ(j["ray"], "mirror");
+  EXPECT_EQ(text.find("directions differ"), std::string::npos) << text;
+  EXPECT_EQ(text.find("sample weight"), std::string::npos) << "a mirror ray has no weight to show";
+  // An indirect sample's trace shows its weight, and directions an ulp apart are shown in full.
+  SsrMarchTrace sample = a;
+  sample.ray = 3;
+  sample.weight = 1.5f;
+  SsrMarchTrace other = sample;
+  other.direction.z = std::nextafter(other.direction.z, 0.0f);
+  const std::string sampleText = formatSsrMarchTraces("cpu", sample, "gl", &other);
+  EXPECT_NE(sampleText.find("sample weight 1.50000"), std::string::npos) << sampleText;
+  EXPECT_NE(sampleText.find("directions differ: cpu (0, 0, -1), gl (0, 0, -0.99999994)"), std::string::npos)
+      << sampleText;
+  EXPECT_EQ(ssrMarchTraceToJson(sample)["ray"], 3);
+  EXPECT_EQ(ssrMarchTraceToJson(sample)["weight"], 1.5);
+}
+
+TEST(SsrTrace, RaysTheSettingsHave) {
+  RenderSettings settings;
+  settings.ssr.indirectSamples = 0;
+  EXPECT_NO_THROW(checkSsrRay(settings, kSsrMirrorRay));
+  try {
+    checkSsrRay(settings, 0);
+    ADD_FAILURE() << "no samples, no sample 0";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("indirect_samples is 0 (the mirror ray is the only one)"), std::string::npos)
+        << e.what();
+  }
+  settings.ssr.indirectSamples = 4;
+  for (int k = 0; k < 4; ++k) EXPECT_NO_THROW(checkSsrRay(settings, k)) << k;
+  EXPECT_THROW(checkSsrRay(settings, 4), InputError);
+  EXPECT_THROW(checkSsrRay(settings, -2), InputError);
+  EXPECT_EQ(ssrRayName(kSsrMirrorRay), "mirror ray");
+  EXPECT_EQ(ssrRayName(2), "indirect sample 2");
 }
 
 }  // namespace
