@@ -288,10 +288,10 @@ void GlGBuffer::probeReflection(ProgramCache& programs, const Scene& scene, cons
   const SsrSettings& ssr = settings.ssr;
   const int hizLevels = ssr.march == SsrMarch::Hiz ? hizLevelsOf(width_, height_) : 0;
   if (ssr.march == SsrMarch::Hiz) buildHiz(programs, scene, clipFromWorld, hizLevels);
-  // A strip of max_steps (at least 2) x 3 texels: fragment (k, 0) step k's sample, (k, 1) its
-  // decision; (0, 2) the ray's direction and weight.
+  // A strip of max_steps x 3 texels: fragment (k, 0) step k's sample, (k, 1) its decision;
+  // (0, 2) the ray's direction and weight.
   const int steps = ssr.maxSteps;
-  const int columns = std::max(steps, 2);
+  const int columns = steps;
   constexpr int kRows = 3;
   GlTexture strip = makeTarget(GL_RGBA32F, GL_RGBA, GL_FLOAT, columns, kRows);
   GlFramebuffer framebuffer = makeGlFramebuffer();

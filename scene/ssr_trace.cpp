@@ -30,7 +30,12 @@ bool endsMarch(SsrStepKind kind) {
 
 void checkSsrRay(const RenderSettings& settings, int ray) {
   const int samples = settings.ssr.indirectSamples;
-  if (ray == kSsrMirrorRay || (ray >= 0 && ray < samples)) return;
+  if (ray == kSsrMirrorRay) return;
+  if (isSsrView(settings.view)) {
+    throw InputError("SSR march trace: the " + std::string(toString(settings.view)) +
+                     " view marches the mirror ray only (no indirect light is drawn in it)");
+  }
+  if (ray >= 0 && ray < samples) return;
   throw InputError("SSR march trace: there is no indirect sample " + std::to_string(ray) +
                    ": settings.ssr.indirect_samples is " + std::to_string(samples) +
                    (samples == 0 ? " (the mirror ray is the only one)"

@@ -1,6 +1,7 @@
 // Helpers both phong stages use, each with a C++ twin of the same name and body:
-// dot3 (glm::dot's order) and safeNormalize in scene/conventions.h, phongPow in softrender/shade.*, vectorAsColour and
-// heatColour in softrender/lane_math-inl.h, dimmedColour in softrender/environment_view-inl.h.
+// safeNormalize in scene/conventions.h (glm::dot's order, as dot3), phongPow in
+// softrender/shade.*, dot3, length3 (lengthOf), vectorAsColour and heatColour in
+// softrender/lane_math-inl.h, dimmedColour in softrender/environment_view-inl.h.
 // The prelude before this file defines MAX_LIGHTS, MAX_CLIP_PLANES, MIN_LENGTH_SQUARED and
 // MIN_ATTENUATION_DENOMINATOR from the C++ constants (glrender/gl_program.cpp).
 
@@ -9,6 +10,11 @@
 // sums it another way: directions one ulp apart that part a screen-space march now and then.
 float dot3(vec3 a, vec3 b) {
   return (a.x * b.x + a.y * b.y) + a.z * b.z;
+}
+
+// length() in the same order (lengthOf in softrender/lane_math-inl.h).
+float length3(vec3 v) {
+  return sqrt(dot3(v, v));
 }
 
 // normalize() that never returns NaN: no usable direction gives (0, 0, 1).

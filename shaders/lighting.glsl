@@ -66,7 +66,7 @@ LightSum lightSum(vec3 posWorld, vec3 n, vec3 t, vec3 b, vec3 nl, vec3 kdAlbedo,
     vec3 lVec = toLightWorld(lights[i], posWorld);
     vec3 vVec = eyePosWorld - posWorld;
 #endif
-    float d = length(toLightWorld(lights[i], posWorld));  // always from posWorld, both spaces
+    float d = length3(toLightWorld(lights[i], posWorld));  // always from posWorld, both spaces
     vec3 l = safeNormalize(lVec);
     vec3 v = safeNormalize(vVec);
     float nDotL = dot3(nl, l);

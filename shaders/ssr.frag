@@ -390,10 +390,14 @@ void main() {
   vec3 r = safeNormalize((2.0 * dot3(nl, wo)) * nl - wo);
   float weight = 1.0;
   if (probeRay >= 0) r = hemisphere(nl, randomPair(uvec2(pixel), uint(probeRay)), weight);
+  if (gl_FragCoord.y >= 2.0) {  // the ray's row: no march (only fragment (0, 2) is read)
+    fragColour = vec4(r, weight);
+    return;
+  }
   float steps;
   ivec2 hitPixel;
   marchOf(posWorld, r, steps, hitPixel);
-  fragColour = gl_FragCoord.y < 1.0 ? probeSample : (gl_FragCoord.y < 2.0 ? probeDecision : vec4(r, weight));
+  fragColour = gl_FragCoord.y < 1.0 ? probeSample : probeDecision;
 }
 #else
 void main() {

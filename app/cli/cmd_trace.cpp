@@ -16,6 +16,7 @@
 #include "softrender/pixel_trace.h"
 #include "softrender/ssr.h"
 
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -37,17 +38,13 @@ struct TraceArgs {
 // scene's indirect_samples by checkSsrRay).
 int ssrRayOf(const std::string& text) {
   if (text == "mirror") return kSsrMirrorRay;
-  std::size_t used = 0;
-  int k = -1;
-  try {
-    k = std::stoi(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || k < 0) {
+  // Digits only (std::stoi would take " 3", "+3" and "-0"), at most 4 (samples are at most 64).
+  const bool digits = !text.empty() && text.size() <= 4 &&
+                      std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+  if (!digits) {
     throw InputError("--ssr-ray: expected 'mirror' or an indirect sample's index (0, 1, ...), got '" + text + "'");
   }
-  return k;
+  return std::stoi(text);
 }
 
 // The final pixel of `trace` as a render with `options` draws it.

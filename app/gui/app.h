@@ -249,10 +249,13 @@ class GuiApp {
   DiffState diff_;
   PinState pin_;
   // The ray the inspector's SSR march follows: the mirror ray or indirect sample k (kept across
-  // pinned pixels; the mirror ray while the settings have no sample k).
+  // pinned pixels; the mirror ray while the settings have no sample k, as in an SSR view).
   int ssrTraceRay_ = kSsrMirrorRay;
+  static int ssrTraceSamples(const RenderSettings& settings) {
+    return isSsrView(settings.view) ? 0 : settings.ssr.indirectSamples;
+  }
   int ssrTraceRayOf(const RenderSettings& settings) const {
-    return ssrTraceRay_ < settings.ssr.indirectSamples ? ssrTraceRay_ : kSsrMirrorRay;
+    return ssrTraceRay_ < ssrTraceSamples(settings) ? ssrTraceRay_ : kSsrMirrorRay;
   }
 
   ImageTexture cpuTexture_, glTexture_, heatTexture_, classTexture_;

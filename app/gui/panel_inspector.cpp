@@ -191,16 +191,23 @@ void GuiApp::drawSsrMarchSection() {
   title += "###ssrmarch";
   if (!ImGui::CollapsingHeader(title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) return;
   // Which ray: the mirror ray, or one of indirect light's samples (a new probe on a change).
-  const int samples = doc_.scene.settings.ssr.indirectSamples;
+  const int samples = ssrTraceSamples(doc_.scene.settings);
   const int ray = ssrTraceRayOf(doc_.scene.settings);
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 12.0f);
   if (ImGui::BeginCombo("Ray##ssrray", ssrRayName(ray).c_str())) {
     for (int k = kSsrMirrorRay; k < samples; ++k) {
-      if (ImGui::Selectable(ssrRayName(k).c_str(), k == ray)) ssrTraceRay_ = k;
+      if (ImGui::Selectable(ssrRayName(k).c_str(), k == ray) && k != ray) {
+        ssrTraceRay_ = k;
+        // The last ray's errors go with it; the new ray's probes come with their own.
+        pin_.glMarchError.clear();
+        if (pin_.cpu) pin_.cpu->ssrMarchError.clear();
+      }
     }
     ImGui::EndCombo();
   }
-  if (samples == 0 && ImGui::IsItemHovered()) ImGui::SetTooltip("Indirect light is off (indirect_samples 0)");
+  if (samples == 0 && ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("No indirect light is drawn (indirect_samples 0, or an SSR view): the mirror ray only");
+  }
   if (!pin_.cpu || !pin_.cpu->ssrMarchError.empty()) {
     if (pin_.cpu) errorText("CPU: " + pin_.cpu->ssrMarchError);
     else hintText("CPU: waiting for the worker...");

@@ -12,6 +12,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace twr {
 namespace {
@@ -104,6 +105,42 @@ TEST(SsrMarchTrace, GlSendsAndMarchesTheCpusIndirectSamples) {
   EXPECT_THROW(traceSsrMarch(scene, scene.settings, frame, 80, 60, 4), InputError);
   EXPECT_THROW(traceGlSsrMarch(*gl, scene, scene.settings, kWidth, kHeight, 80, 60, 4), InputError);
   EXPECT_THROW(traceSsrMarch(scene, scene.settings, frame, 80, 60, -2), InputError);
+}
+
+// Uniform samples weigh 2 cos: each renderer's weight and direction, bit for bit (the cave's
+// cosine-weighted samples all weigh 1, the trace's default).
+TEST(SsrMarchTrace, GlWeighsUniformSamplesAsTheCpu) {
+  Scene scene = mirrorFloor();
+  scene.settings.ssr.march = SsrMarch::Hiz;
+  scene.settings.ssr.indirectSamples = 4;
+  scene.settings.ssr.sampleDistribution = SampleDistribution::Uniform;
+  std::unique_ptr<Renderer> gl = makeGlRenderer();
+  const RenderOutput cpuFrame = makeCpuRenderer()->render(scene, scene.settings, kWidth, kHeight);
+  int weighed = 0, notOne = 0;
+  for (const auto& [x, y] : {std::pair{80, 100}, std::pair{30, 110}, std::pair{130, 90}}) {
+    for (int k = 0; k < 4; ++k) {
+      const SsrMarchTrace cpu = traceSsrMarch(scene, scene.settings, cpuFrame, x, y, k);
+      const SsrMarchTrace glTrace = traceGlSsrMarch(*gl, scene, scene.settings, kWidth, kHeight, x, y, k);
+      ASSERT_TRUE(cpu.marched && glTrace.marched) << x << ", " << y << ": a floor pixel";
+      EXPECT_EQ(cpu.weight, glTrace.weight) << x << ", " << y << " sample " << k;
+      EXPECT_EQ(cpu.direction, glTrace.direction) << x << ", " << y << " sample " << k;
+      EXPECT_NEAR(cpu.weight, 2.0f * cpu.direction.y, 1e-6f) << "2 cos about the floor's normal, +y";
+      EXPECT_FALSE(firstDifferingStep(cpu, glTrace)) << x << ", " << y << " sample " << k;
+      ++weighed;
+      notOne += cpu.weight != 1.0f;
+    }
+  }
+  EXPECT_EQ(weighed, 12);
+  EXPECT_GT(notOne, 8);
+}
+
+// An SSR view draws the mirror ray's march only: no indirect sample to trace.
+TEST(SsrMarchTrace, AViewTracesTheMirrorRayOnly) {
+  Scene scene = loadSceneFile(std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes/ssr_cave.json");
+  scene.settings.view = View::SsrHit;
+  const RenderOutput frame = makeCpuRenderer()->render(scene, scene.settings, kWidth, kHeight);
+  EXPECT_NO_THROW(traceSsrMarch(scene, scene.settings, frame, 80, 60, kSsrMirrorRay));
+  EXPECT_THROW(traceSsrMarch(scene, scene.settings, frame, 80, 60, 0), InputError);
 }
 
 TEST(SsrMarchTrace, GlRefusesAFrameWithoutReflections) {
