@@ -288,10 +288,10 @@ void GlGBuffer::probeReflection(ProgramCache& programs, const Scene& scene, cons
   const SsrSettings& ssr = settings.ssr;
   const int hizLevels = ssr.march == SsrMarch::Hiz ? hizLevelsOf(width_, height_) : 0;
   if (ssr.march == SsrMarch::Hiz) buildHiz(programs, scene, clipFromWorld, hizLevels);
-  // A strip of max_steps x 3 texels: fragment (k, 0) step k's sample, (k, 1) its decision;
-  // (0, 2) the ray's direction and weight.
+  // A strip of max_steps (at least 2, for the ray's row) x 3 texels: fragment (k, 0) step k's
+  // sample, (k, 1) its decision; (0, 2) the ray's direction and weight, (1, 2) its origin.
   const int steps = ssr.maxSteps;
-  const int columns = steps;
+  const int columns = std::max(steps, 2);
   constexpr int kRows = 3;
   GlTexture strip = makeTarget(GL_RGBA32F, GL_RGBA, GL_FLOAT, columns, kRows);
   GlFramebuffer framebuffer = makeGlFramebuffer();
@@ -320,9 +320,10 @@ void GlGBuffer::probeReflection(ProgramCache& programs, const Scene& scene, cons
   }
   glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
   glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previous));
-  const float* ray3 = &texels[static_cast<std::size_t>(columns) * 2 * 4];
-  trace.direction = vec3(ray3[0], ray3[1], ray3[2]);
-  trace.weight = ray3[3];
+  const float* rayRow = &texels[static_cast<std::size_t>(columns) * 2 * 4];
+  trace.direction = vec3(rayRow[0], rayRow[1], rayRow[2]);
+  trace.weight = rayRow[3];
+  trace.origin = vec3(rayRow[4], rayRow[5], rayRow[6]);
   trace.steps.clear();
   for (int k = 0; k < steps; ++k) {
     const float* sample = &texels[static_cast<std::size_t>(k) * 4];

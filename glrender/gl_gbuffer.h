@@ -44,8 +44,8 @@ class GlGBuffer {
 
   // The pixel inspector's probe (scene/ssr_trace.h), after reflect(): window pixel (x, yGl)'s
   // march of `ray` (its mirror ray or indirect sample k) step by step, as ssr.frag's SSR_PROBE
-  // records it, one step per fragment of a strip read back; fills trace's steps, direction and
-  // weight. The frame's targets and bindings are left as they were.
+  // records it, one step per fragment of a strip read back; fills trace's steps, origin,
+  // direction and weight. The frame's targets and bindings are left as they were.
   void probeReflection(ProgramCache& programs, const Scene& scene, const RenderSettings& settings,
                        const mat4& clipFromWorld, int x, int yGl, int ray, SsrMarchTrace& trace);
 

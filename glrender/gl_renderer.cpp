@@ -247,10 +247,8 @@ class GlRenderer final : public Renderer {
     const std::size_t i = static_cast<std::size_t>(yTop) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
     trace.marched = out.triangleId[i] != kNoTriangle && out.gbuffer;
     if (!trace.marched) return trace;
-    const mat4 clipFromWorld =
-        clipFromView(scene.camera, static_cast<float>(width) / static_cast<float>(height)) * viewFromWorld(scene.camera);
-    setSsrRayOf(*out.gbuffer, out.depth[i], clipFromWorld, scene.camera.position, x, yTop, trace);  // the origin
-    trace.direction = probed_.direction;  // GL's own, as the probe marched it
+    trace.origin = probed_.origin;  // GL's own, as the probe marched them
+    trace.direction = probed_.direction;
     trace.weight = probed_.weight;
     trace.steps = std::move(probed_.steps);
     return trace;

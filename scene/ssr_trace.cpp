@@ -1,7 +1,6 @@
 #include "scene/ssr_trace.h"
 
 #include "scene/errors.h"
-#include "scene/renderer.h"
 #include "scene/settings.h"
 
 #include <algorithm>
@@ -44,22 +43,6 @@ void checkSsrRay(const RenderSettings& settings, int ray) {
 
 std::string ssrRayName(int ray) {
   return ray == kSsrMirrorRay ? "mirror ray" : "indirect sample " + std::to_string(ray);
-}
-
-void setSsrRayOf(const GBuffer& g, float depth, const mat4& clipFromWorld, const vec3& eye, int x, int yTop,
-                 SsrMarchTrace& trace) {
-  const std::size_t i = static_cast<std::size_t>(yTop) * static_cast<std::size_t>(g.width) + static_cast<std::size_t>(x);
-  if (!g.position.empty()) {
-    trace.origin = vec3(g.position[i]);
-  } else {
-    const double yGl = static_cast<double>(g.height - 1 - yTop);
-    const glm::dvec4 ndc((x + 0.5) / g.width * 2.0 - 1.0, (yGl + 0.5) / g.height * 2.0 - 1.0, 2.0 * depth - 1.0, 1.0);
-    const glm::dvec4 p = glm::inverse(glm::dmat4(clipFromWorld)) * ndc;
-    trace.origin = vec3(glm::dvec3(p) / p.w);
-  }
-  const vec3 n = vec3(g.normal[i]);
-  const vec3 wo = glm::normalize(eye - trace.origin);
-  trace.direction = glm::normalize((2.0f * glm::dot(n, wo)) * n - wo);
 }
 
 namespace {

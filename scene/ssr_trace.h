@@ -1,7 +1,8 @@
 // One pixel's march, step by step (docs/ssr.md, "One pixel's march"): its mirror ray or one of
-// its indirect light's rays, what each renderer's march did at every step, recorded by the march itself (softrender/ssr-inl.h on
-// the CPU, shaders/ssr.frag's SSR_PROBE on GL), so the pixel inspector and `trace` can show
-// both side by side and point at the first step where they part.
+// its indirect light's rays, what each renderer's march did at every step, recorded by the
+// march itself (softrender/ssr-inl.h on the CPU, shaders/ssr.frag's SSR_PROBE on GL), so the
+// pixel inspector and `trace` can show both side by side and point at the first step where
+// they part.
 #pragma once
 
 #include "scene/conventions.h"
@@ -44,7 +45,7 @@ constexpr int kSsrMirrorRay = -1;
 struct SsrMarchTrace {
   bool marched = false;   // the pixel shows a surface (its ray was marched)
   int ray = kSsrMirrorRay;  // the mirror ray, or indirect sample k
-  vec3 origin{0.0f};      // the G-buffer's position (or the one rebuilt from depth), world
+  vec3 origin{0.0f};      // the G-buffer's position (or the one rebuilt from depth), world (each renderer's own)
   vec3 direction{0.0f};   // the ray's direction, world, unit (each renderer's own)
   float weight = 1.0f;    // an indirect sample's weight (its pdf's: uniform 2 cos, cosine 1); 1 for the mirror ray
   std::vector<SsrMarchStep> steps;  // in order; the last one ends the march unless max_steps ran out
@@ -57,14 +58,6 @@ void checkSsrRay(const RenderSettings& settings, int ray);
 
 // The ray's name as trace and the pixel inspector print it: "mirror ray" or "indirect sample k".
 std::string ssrRayName(int ray);
-
-// Fills trace.origin and trace.direction for pixel (x, yTop) (top-left image coordinates) of a
-// frame: the G-buffer's stored position, or the one rebuilt from the pixel's window `depth`
-// with clipFromWorld's inverse, and the eye's mirror direction about the lighting normal, as the
-// pass computes them (for showing: the march itself reads them on each renderer).
-struct GBuffer;
-void setSsrRayOf(const GBuffer& g, float depth, const mat4& clipFromWorld, const vec3& eye, int x, int yTop,
-                 SsrMarchTrace& trace);
 
 // The first step where two traces differ: another kind, level or pixel, or a distance more than
 // `relativeTolerance` of itself apart; also where one has a step the other has not. None: the same.

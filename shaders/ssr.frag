@@ -375,7 +375,7 @@ uniform ivec2 probePixel;  // window column and row from the bottom
 uniform int probeRay;      // -1: the mirror ray; k >= 0: indirect sample k (traceSsrMarch's ray)
 
 // Fragment (k, 0) of the strip: step k's sample; (k, 1): its decision (zeros past the march's
-// end); (0, 2): the ray's direction and weight.
+// end); (0, 2): the ray's direction and weight, (1, 2) its origin.
 void main() {
   probeStep = int(gl_FragCoord.x);
   ivec2 pixel = probePixel;
@@ -390,8 +390,8 @@ void main() {
   vec3 r = safeNormalize((2.0 * dot3(nl, wo)) * nl - wo);
   float weight = 1.0;
   if (probeRay >= 0) r = hemisphere(nl, randomPair(uvec2(pixel), uint(probeRay)), weight);
-  if (gl_FragCoord.y >= 2.0) {  // the ray's row: no march (only fragment (0, 2) is read)
-    fragColour = vec4(r, weight);
+  if (gl_FragCoord.y >= 2.0) {  // the ray's row: no march
+    fragColour = gl_FragCoord.x < 1.0 ? vec4(r, weight) : vec4(posWorld, 1.0);
     return;
   }
   float steps;
