@@ -40,6 +40,7 @@ namespace {
 struct FramebufferTarget {
   Framebuffer& fb;
   float storedDepth(int px, int py) const { return fb.depth[fb.index(px, py)]; }
+  DepthFormat depthFormat() const { return fb.depthFormat; }
   void write(int px, int py, const vec4& colour, float depth, std::uint32_t triangleId) {
     writeFragment(fb, px, py, colour, depth, triangleId);
   }
@@ -52,6 +53,7 @@ struct GBufferTarget {
   Framebuffer& fb;
   GBuffer& g;
   float storedDepth(int px, int py) const { return fb.depth[fb.index(px, py)]; }
+  DepthFormat depthFormat() const { return fb.depthFormat; }
   void writeSurface(int px, int py, const GBufferTexelL<float>& s, float depth, std::uint32_t triangleId) {
     const std::size_t i = fb.index(px, py);
     fb.depth[i] = depth;
@@ -125,10 +127,13 @@ class CpuRenderer final : public Renderer {
         [&](const std::vector<ItemState>& passItems, int size) -> const Framebuffer& {
           RenderStats passStats;
           if (fast_) {
-            if (shadowTarget_.width != size) shadowTarget_ = fast_->allocateFramebuffer(size, size);
+            if (shadowTarget_.width != size) {
+              shadowTarget_ = fast_->allocateFramebuffer(size, size);
+              shadowTarget_.depthFormat = DepthFormat::Float32;  // makeShadowFramebuffer's
+            }
             fast_->draw(passItems, scene.output.background, shadowTarget_, passStats, true);
           } else {
-            shadowTarget_ = makeFramebuffer(size, size, scene.output.background);
+            shadowTarget_ = makeShadowFramebuffer(size, scene.output.background);
             drawTeachingItems(passItems, options_.threads, shadowTarget_, passStats);
           }
           return shadowTarget_;

@@ -4,6 +4,7 @@
 // over one band of rows. Templated on the number type T (float: the teaching pipeline;
 // double: the reference) and on the Target the fragments go to, which provides
 //   T storedDepth(int px, int py) const                   the depth buffer at the pixel
+//   DepthFormat depthFormat() const                       how it stores a depth (framebuffer.h)
 //   void write(int px, int py, const Vec4T<T>& colour, T depth, std::uint32_t triangleId)
 // (GL window coordinates, row 0 at the bottom). The teaching path's target is its RGBA8
 // framebuffer; the reference's a double sample buffer. A target with kWritesSurface (the
@@ -74,9 +75,11 @@ void drawClippedTriangle(const LoopItemT<T>& s, const ClipVertexT<T>& v0, const 
   const VaryingPlanesT<T> varyings =
       makeVaryingPlanes(window, v0, v1, v2, s.tangentLighting, s.shade.lightCount, setup);
   const UvPlanesT<T> uv{varyings.overW[kVaryingUv], varyings.overW[kVaryingUv + 1], varyings.oneOverW};
+  const DepthFormat depthFormat = target.depthFormat();
   rasterizeTriangle(setup, band.rowBegin, band.rowEnd, [&](int py, Span span) {
     for (int px = span.xBegin; px < span.xEnd; ++px) {
-      const T depth = storedDepthLanes<T>(planeAtLanes<T>(depthPlane, static_cast<T>(px), static_cast<T>(py)));
+      const T depth =
+          (depthAsStoredLanes<T>)(planeAtLanes<T>(depthPlane, static_cast<T>(px), static_cast<T>(py)), depthFormat);
       if (!(depth < target.storedDepth(px, py))) continue;  // GL_LESS, before shading
       FragmentT<T> fragment = interpolateFragment(varyings, px, py, depth);
       if (s.shade.needsQuadDifferences()) {

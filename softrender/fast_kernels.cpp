@@ -182,7 +182,7 @@ std::uint64_t Visibility(const TriangleSetup& setup, const std::array<WindowVert
     std::uint32_t* slotRow = slots + static_cast<std::size_t>(py - rowBegin) * width;
     for (int x = span.xBegin; x < span.xEnd; x += static_cast<int>(lanes)) {
       const std::size_t count = std::min(lanes, static_cast<std::size_t>(span.xEnd - x));
-      const LaneF depth = storedDepthLanes<LaneF>(planeAtLanes<LaneF>(plane, pixelColumnsF(x), pyF));
+      const LaneF depth = (depthAsStoredLanes<LaneF>)(planeAtLanes<LaneF>(plane, pixelColumnsF(x), pyF), fb.depthFormat);
       // GL_LESS against the stored depth; a vector past the row's end goes through a buffer.
       HWY_ALIGN float depthBuffer[kMaxLanes];
       HWY_ALIGN std::uint32_t slotBuffer[kMaxLanes];

@@ -16,6 +16,13 @@ namespace twr {
 // Window depth the depth buffer is cleared to (glClearDepth(1)).
 inline constexpr float kClearDepth = 1.0f;
 
+// What the depth buffer holds, as the GL attachment it stands for: the frame's
+// GL_DEPTH_COMPONENT24 (24-bit unorm: each depth rounded to a multiple of 1 / (2^24 - 1)) or
+// the shadow maps' GL_DEPTH_COMPONENT32F (the interpolated float itself). The difference
+// matters where depths are small: below 0.5 float keeps more bits than 24-bit unorm, which an
+// orthographic map's depths (linear in the distance, spread over [0, 1]) are full of.
+enum class DepthFormat { Unorm24, Float32 };
+
 struct Framebuffer {
   int width = 0;
   int height = 0;
@@ -23,6 +30,7 @@ struct Framebuffer {
   std::vector<float> depth;               // window depth, kClearDepth where nothing was drawn
   std::vector<std::uint32_t> triangleId;  // kNoTriangle where nothing was drawn
   std::vector<std::uint8_t> lineMask;     // 1 where a debug line was written
+  DepthFormat depthFormat = DepthFormat::Unorm24;  // how a fragment's depth is stored (and compared)
 
   // Element of GL window pixel (x, y): row y counts from the bottom, storage from the top.
   std::size_t index(int x, int y) const {

@@ -20,6 +20,7 @@
 #ifdef TWR_INTERPOLATE_INL_EMIT
 #undef TWR_INTERPOLATE_INL_EMIT
 
+#include "softrender/framebuffer.h"
 #include "softrender/lanes.h"
 
 #include <array>
@@ -122,6 +123,23 @@ TWR_LANE_INLINE L storedDepthLanes(const L& z) {
   // The reference (double) is the ground truth, not llvmpipe: its depth keeps every bit.
   if constexpr (std::is_same_v<S, double>) return select(isNaN(z), one, clamped);
   return select(isNaN(z), one, roundEvenOf(clamped * unormMax) / unormMax);
+}
+
+// The depth a GL_DEPTH_COMPONENT32F attachment (a shadow map) compares and stores: the window z
+// clamped to [0, 1] with every float bit kept. NaN becomes 1, which never passes GL_LESS (as
+// NaN fails it on llvmpipe).
+template <typename L>
+TWR_LANE_INLINE L storedFloatDepthLanes(const L& z) {
+  using S = ScalarOf<L>;
+  const L zero(S(0)), one(S(1));
+  return select(isNaN(z), one, minOf(maxOf(z, zero), one));
+}
+
+// The depth a target of `format` stores (framebuffer.h's DepthFormat): storedDepthLanes or
+// storedFloatDepthLanes.
+template <typename L>
+TWR_LANE_INLINE L depthAsStoredLanes(const L& z, DepthFormat format) {
+  return format == DepthFormat::Float32 ? storedFloatDepthLanes<L>(z) : storedDepthLanes<L>(z);
 }
 
 // Window depth at pixel (px, py): the depth plane with two fused multiply-adds, as stored

@@ -198,7 +198,7 @@ PixelTrace tracePixelVisits(const Scene& scene, const RenderSettings& requested,
     trace.shadowMaps = renderShadowMaps(
         scene, requested,
         [&](const std::vector<ItemState>& passItems, int size) -> const Framebuffer& {
-          shadowTarget = makeFramebuffer(size, size, scene.output.background);
+          shadowTarget = makeShadowFramebuffer(size, scene.output.background);
           RenderStats passStats;
           drawTeachingItems(passItems, 1, shadowTarget, passStats);
           return shadowTarget;

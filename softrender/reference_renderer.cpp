@@ -93,6 +93,7 @@ template <typename T>
 struct SampleBufferTarget {
   SampleTarget& target;
   T storedDepth(int px, int py) const { return static_cast<T>(target.depth[target.index(px, py)]); }
+  DepthFormat depthFormat() const { return DepthFormat::Float32; }  // the sample's own bits (double)
   void write(int px, int py, const Vec4T<T>& colour, T depth, std::uint32_t triangleId) {
     const std::size_t i = target.index(px, py);
     target.colour[i] = glm::dvec3(colour);
@@ -159,7 +160,7 @@ class ReferenceRenderer final : public Renderer {
     const ShadowMaps shadows = renderShadowMaps(
         scene, requested,
         [&](const std::vector<ItemState>& passItems, int size) -> const Framebuffer& {
-          shadowTarget = makeFramebuffer(size, size, scene.output.background);
+          shadowTarget = makeShadowFramebuffer(size, scene.output.background);
           RenderStats passStats;
           drawTeachingItems(passItems, options_.threads, shadowTarget, passStats);
           return shadowTarget;

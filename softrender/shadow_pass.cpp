@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstring>
+#include <stdexcept>
 
 namespace twr {
 
@@ -11,6 +12,12 @@ RenderSettings shadowPassSettings(const RenderSettings& frame) {
   s.frontFace = frame.frontFace;
   s.view = View::Depth;
   return s;
+}
+
+Framebuffer makeShadowFramebuffer(int size, vec4 background) {
+  Framebuffer fb = makeFramebuffer(size, size, background);
+  fb.depthFormat = DepthFormat::Float32;
+  return fb;
 }
 
 std::shared_ptr<ShadowMap> ShadowMapPool::acquire(std::size_t texels) {
@@ -64,6 +71,8 @@ ShadowMaps renderShadowMaps(const Scene& scene, const RenderSettings& settings, 
                                       passSettings, size, size));
       }
       const Framebuffer& fb = draw(items, size);
+      // A 24-bit map would part from GL's wherever its depths lie below 0.5 (framebuffer.h).
+      if (fb.depthFormat != DepthFormat::Float32) throw std::logic_error("shadow pass: the map's framebuffer stores 24-bit depth");
       // The framebuffer is stored top row first; the map holds rows bottom first.
       float* out = map->depth.data() + static_cast<std::size_t>(layer) * layerTexels;
       for (int y = 0; y < size; ++y) {

@@ -15,8 +15,13 @@
 namespace twr {
 
 // Draws `items` into a size x size framebuffer it clears first, with the teaching or the fast
-// traversal, and returns it (its depth becomes the layer; the callee keeps it).
+// traversal, and returns it (its depth becomes the layer; the callee keeps it). The
+// framebuffer stores DepthFormat::Float32, as GL's maps are GL_DEPTH_COMPONENT32F
+// (makeShadowFramebuffer); renderShadowMaps refuses any other.
 using DepthDraw = std::function<const Framebuffer&(const std::vector<ItemState>& items, int size)>;
+
+// A cleared size x size framebuffer for one layer of a map: makeFramebuffer's, storing float depth.
+Framebuffer makeShadowFramebuffer(int size, vec4 background);
 
 // The settings a shadow pass draws with: the frame's culling and winding, every frustum plane
 // on, no user clip planes (a plane cutting the view does not cut the light's), the depth view

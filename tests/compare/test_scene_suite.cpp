@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -46,8 +47,26 @@ struct SuiteCase {
   GBufferPosition position = GBufferPosition::Stored;  // a deferred frame's settings.gbuffer_position
   std::optional<SsrMarch> ssrMarch;  // settings.ssr.march instead of the scene's
   std::optional<int> ssrIndirect;    // settings.ssr.indirect_samples instead of the scene's
+  // Every shadowed light's bias ([constant, slope]) and PCF kernel instead of the scene's.
+  std::optional<vec2> shadowBias;
+  std::optional<int> shadowPcf;
+  bool ssrOff = false;               // settings.ssr.enabled false (a reflecting scene drawn forward)
+  bool againstForward = true;        // a deferred case: each renderer's frame against its forward frame too
   std::string name;
 };
+
+// Every scene with a shadowed light: the bias sweep below draws each of them
+// (SceneSuiteTable.EveryShadowedSceneIsSwept holds the list to the scene files).
+constexpr const char* kShadowedScenes[] = {"shadow_directional.json", "shadow_peter_panning.json",
+                                           "shadow_point_cube.json",  "shadow_spot.json",
+                                           "ssr_mirror_floor.json",   "ssr_cave.json"};
+
+// The biases a user tunes towards (docs/shadows.md): none at all, almost none, the default.
+struct BiasCase {
+  const char* name;
+  std::optional<vec2> bias;  // none: the scene's own
+};
+const BiasCase kSweptBiases[] = {{"bias_0", vec2(0.0f)}, {"bias_0.0005", vec2(0.0005f, 0.002f)}, {"bias_own", std::nullopt}};
 
 std::vector<SuiteCase> suiteCases() {
   std::vector<SuiteCase> cases;
@@ -188,6 +207,35 @@ std::vector<SuiteCase> suiteCases() {
       cases.push_back(c);
     }
   }
+  // Shadow decisions at any bias (docs/shadows.md, "Every tap on llvmpipe's bits"): every
+  // shadowed scene with no bias, almost none and its own, each PCF kernel, forward and
+  // deferred, at both sizes, held to the targets like every other case. A reflecting scene's
+  // forward frame draws no reflections; its deferred one is the scene's own frame.
+  for (const char* scene : kShadowedScenes) {
+    const bool reflects = std::string(scene).rfind("ssr_", 0) == 0;
+    for (const BiasCase& bias : kSweptBiases) {
+      for (const int pcf : {1, 3, 5}) {
+        for (const bool deferred : {false, true}) {
+          for (const int width : {640, 1280}) {
+            if (kQuickSuite && (width == 1280 || pcf == 3)) continue;
+            SuiteCase c;
+            c.scene = scene;
+            c.shadowBias = bias.bias;
+            c.shadowPcf = pcf;
+            c.deferred = deferred && !reflects;
+            c.ssrOff = reflects && !deferred;
+            c.againstForward = false;  // the rows' own deferred cases check that
+            c.width = width;
+            c.height = width == 640 ? 480 : 720;
+            c.name = stem(scene) + "_" + bias.name + "_pcf" + std::to_string(pcf) + (deferred ? "_deferred_" : "_forward_") +
+                     std::to_string(width) + "x" + std::to_string(c.height);
+            for (char& ch : c.name) ch = ch == '.' ? '_' : ch;
+            cases.push_back(c);
+          }
+        }
+      }
+    }
+  }
   for (const char* cull : {"none", "back", "front"}) {
     for (const char* front : {"ccw", "cw"}) {
       SuiteCase c;
@@ -226,6 +274,12 @@ TEST_P(SceneSuite, CpuMatchesLlvmpipeWithinTolerance) {
   if (!c.filter.empty()) {
     ASSERT_TRUE(parse(c.filter, scene.settings.textureFilter));
   }
+  for (Light& light : scene.lights) {
+    if (!light.shadow) continue;
+    if (c.shadowBias) light.shadow->bias = *c.shadowBias;
+    if (c.shadowPcf) light.shadow->pcf = *c.shadowPcf;
+  }
+  if (c.ssrOff) scene.settings.ssr.enabled = false;
   if (c.ssrMarch) scene.settings.ssr.march = *c.ssrMarch;
   if (c.ssrIndirect) scene.settings.ssr.indirectSamples = *c.ssrIndirect;
   if (c.deferred) {
@@ -339,7 +393,7 @@ TEST_P(SceneSuite, CpuMatchesLlvmpipeWithinTolerance) {
     forward.ssr.enabled = false;
     const std::pair<const char*, const RenderOutput*> sides[] = {{"cpu", &cpu}, {"gl", &gl}};
     for (const auto& [side, deferredOut] : sides) {
-      if (drawsSsr(scene.settings)) break;
+      if (drawsSsr(scene.settings) || !c.againstForward) break;
       const RenderOutput forwardOut = std::string(side) == "cpu" ? makeCpuRenderer()->render(scene, forward, width, height)
                                                                  : makeGlRenderer()->render(scene, forward, width, height);
       const CompareResult against = compareDetailed(*deferredOut, forwardOut, options);
@@ -385,6 +439,68 @@ TEST(SceneSuiteTable, EverySceneFileHasATolerance) {
     const bool listed = std::any_of(std::begin(suite::kSceneTolerances), std::end(suite::kSceneTolerances),
                                     [&](const suite::SceneTolerance& row) { return row.scene == name; });
     EXPECT_TRUE(listed) << name << " has no row in tests/compare/scene_tolerances.h";
+  }
+}
+
+// Every scene file with a shadowed light is in the bias sweep: a new one cannot skip it.
+TEST(SceneSuiteTable, EveryShadowedSceneIsSwept) {
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes")) {
+    if (entry.path().extension() != ".json") continue;
+    const Scene scene = loadSceneFile(entry.path().string());
+    const bool shadowed = std::any_of(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return l.shadow.has_value(); });
+    const std::string name = entry.path().filename().string();
+    const bool swept = std::any_of(std::begin(kShadowedScenes), std::end(kShadowedScenes),
+                                   [&](const char* s) { return name == s; });
+    EXPECT_EQ(shadowed, swept) << name << (shadowed ? " casts a shadow but is not in kShadowedScenes"
+                                                    : " is in kShadowedScenes but casts no shadow");
+  }
+}
+
+// A model nobody here made (Wuson, exported by MilkShape 3D, in Debian's assimp-testmodels) on
+// a floor under a directional light's map with almost no bias: acne everywhere, the same acne
+// on both renderers, forward and deferred, at both sizes.
+TEST(SceneSuiteRealModel, CharacterUnderADirectionalShadowAtSmallBias) {
+  const std::string model = "/usr/share/assimp/models/OBJ/WusonOBJ.obj";
+  if (!std::filesystem::exists(model)) {
+    GTEST_SKIP() << model << " is missing: install Debian's assimp-testmodels (scripts/install-deps.sh does)";
+  }
+  const std::string dir = std::string(TWINRASTER_TEST_OUT) + "/suite/real_model";
+  std::filesystem::create_directories(dir);
+  const std::string path = dir + "/wuson_shadow.json";
+  {
+    std::ofstream file(path);
+    file << R"({
+  "output": {"width": 640, "height": 480},
+  "camera": {"position": [2.2, 1.6, 2.8], "target": [0, 0.7, 0], "fov_deg": 45, "near": 0.1, "far": 30},
+  "ambient": [0.15, 0.15, 0.15],
+  "lights": [{"type": "directional", "direction": [-0.4, -1, -0.3], "diffuse": [1, 1, 1], "specular": [1, 1, 1],
+              "shadow": {"size": 2048, "bias": [0.0005, 0.002], "pcf": 3}}],
+  "materials": {"floor": {"kd": [0.7, 0.7, 0.7], "ks": [0.1, 0.1, 0.1], "shininess": 16}},
+  "nodes": [{"name": "floor", "material": "floor", "mesh": {"type": "plane", "size": [6, 6]}},
+            {"name": "wuson", "mesh": {"type": "obj", "path": ")" << model << R"("}}]
+})";
+  }
+  Scene scene = loadSceneFile(path);
+  for (const Pipeline pipeline : {Pipeline::Forward, Pipeline::Deferred}) {
+    for (const int width : {640, 1280}) {
+      const int height = width == 640 ? 480 : 720;
+      scene.settings.pipeline = pipeline;
+      const RenderOutput cpu = makeCpuRenderer()->render(scene, scene.settings, width, height);
+      const RenderOutput gl = makeGlRenderer()->render(scene, scene.settings, width, height);
+      const CompareResult result = compareDetailed(cpu, gl);
+      Thresholds limits = issueTargets(false);
+      limits.maxOver1Pct = 0.01;  // the suite rows' share (scene_tolerances.h)
+      const std::vector<ThresholdViolation> violations = checkThresholds(result.metrics, limits);
+      EXPECT_GT(result.metrics.coveredCpu, 0u);
+      if (violations.empty()) continue;
+      const std::string caseDir = dir + "/" + std::string(toString(pipeline)) + "_" + std::to_string(width);
+      const ArtifactPaths paths = writeCompareArtifacts(caseDir, cpu, gl, result, metricsToJson(result.metrics));
+      std::string message = "the model under a small bias exceeds the targets (" + std::string(toString(pipeline)) +
+                            ", " + std::to_string(width) + "x" + std::to_string(height) + "):\n";
+      for (const ThresholdViolation& v : violations) message += "  " + v.message + "\n";
+      for (const std::string& p : paths.all()) message += "  " + p + "\n";
+      ADD_FAILURE() << message;
+    }
   }
 }
 
