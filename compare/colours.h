@@ -19,6 +19,7 @@ inline constexpr Rgb8 kColourExcludedLine{128, 128, 128};  // grey: TBN line pix
 inline constexpr Rgb8 kColourSame{0, 0, 0};              // class map: both covered, no difference
 inline constexpr Rgb8 kColourDepth{255, 96, 0};          // class map: a different surface won
 inline constexpr Rgb8 kColourShading{255, 224, 0};       // class map: same surface, other colour
+inline constexpr Rgb8 kColourDecision{64, 160, 255};     // class map: same surface, a decision went the other way
 // Empty pixels (neither backend covered) are a checker of these, kCheckerCellPx square.
 inline constexpr Rgb8 kColourCheckerDark{40, 40, 40};
 inline constexpr Rgb8 kColourCheckerLight{64, 64, 64};

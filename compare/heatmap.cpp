@@ -157,7 +157,8 @@ Rgb8 heatMapColour(PixelClass pixelClass, int diffLevels, int x, int y, const He
     case PixelClass::ExcludedLine: return kColourExcludedLine;
     case PixelClass::Same:
     case PixelClass::Depth:
-    case PixelClass::Shading: return heatColour(diffLevels, ramp);
+    case PixelClass::Shading:
+    case PixelClass::Decision: return heatColour(diffLevels, ramp);
   }
   return kColourBlack;
 }
@@ -170,6 +171,7 @@ Rgb8 classMapColour(PixelClass pixelClass, int x, int y) {
     case PixelClass::CoverageGl: return kColourGlOnly;
     case PixelClass::Depth: return kColourDepth;
     case PixelClass::Shading: return kColourShading;
+    case PixelClass::Decision: return kColourDecision;
     case PixelClass::ExcludedLine: return kColourExcludedLine;
   }
   return kColourBlack;
@@ -206,6 +208,7 @@ Image makeClassMap(const PixelAnalysis& pixels, const ClassMapOptions& options) 
       {kColourGlOnly, false, "coverage: GL only"},
       {kColourDepth, false, "depth: other surface won"},
       {kColourShading, false, "shading: same surface"},
+      {kColourDecision, false, "decision: a tap, hit or step flipped"},
       {kColourExcludedLine, false, "TBN line (not compared)"},
       {kColourCheckerDark, true, "neither covered"},
   };

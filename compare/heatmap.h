@@ -8,7 +8,7 @@
 // Heat map pixels: both covered -> heatColour(diffLevels) (black for 0, inferno ramp above);
 // CPU only -> magenta; GL only -> cyan; TBN line -> grey; neither covered -> dark checker.
 // Class map pixels: same -> black; CPU only -> magenta; GL only -> cyan; depth -> orange;
-// shading -> yellow; TBN line -> grey; neither -> dark checker.
+// shading -> yellow; decision -> blue; TBN line -> grey; neither -> dark checker.
 #pragma once
 
 #include "compare/colours.h"

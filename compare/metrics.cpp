@@ -186,6 +186,7 @@ std::string_view toString(PixelClass pixelClass) {
     case PixelClass::Depth: return "depth";
     case PixelClass::Shading: return "shading";
     case PixelClass::ExcludedLine: return "excluded_line";
+    case PixelClass::Decision: return "decision";
   }
   return "unknown";
 }

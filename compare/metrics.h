@@ -54,6 +54,10 @@ enum class PixelClass : std::uint8_t {
   Depth,         // both covered, differs, a different surface won
   Shading,       // both covered, differs, the same surface
   ExcludedLine,  // a TBN debug line on either side
+  // Both covered, differs, the same surface, and a binary decision went the other way there (a
+  // shadow tap, an SSR hit, a parallax layer count, a mip level: compare/decisions.h). Only
+  // classifyDecisions gives it; compareDetailed calls such a pixel Shading.
+  Decision,
 };
 
 // Per-pixel results, width * height entries each, top row first. The GUI's pixel inspector
@@ -97,6 +101,7 @@ struct CompareMetrics {
   std::uint64_t classCoverage = 0;        // == coverageMismatch
   std::uint64_t classDepth = 0;
   std::uint64_t classShading = 0;
+  std::uint64_t classDecision = 0;        // classifyDecisions (compare/decisions.h); 0 before it
   CompareOptions options;                 // what the classification used
 
   bool hasMaxAbsDiffAt() const { return maxAbsDiffX >= 0; }
@@ -120,7 +125,7 @@ struct CompareResult {
 CompareResult compareDetailed(const RenderOutput& cpu, const RenderOutput& gl, const CompareOptions& options = {});
 CompareMetrics compare(const RenderOutput& cpu, const RenderOutput& gl, const CompareOptions& options = {});
 
-// "empty", "same", "coverage_cpu", "coverage_gl", "depth", "shading", "excluded_line".
+// "empty", "same", "coverage_cpu", "coverage_gl", "depth", "shading", "excluded_line", "decision".
 std::string_view toString(PixelClass pixelClass);
 
 }  // namespace twr

@@ -47,6 +47,7 @@ nlohmann::json metricsToJson(const CompareMetrics& m) {
   json["class_coverage"] = m.classCoverage;
   json["class_depth"] = m.classDepth;
   json["class_shading"] = m.classShading;
+  json["class_decision"] = m.classDecision;
   json["differ_min_levels"] = m.options.differMinLevels;
   json["depth_tolerance"] = m.options.depthTolerance;
   return json;

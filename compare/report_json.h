@@ -19,7 +19,7 @@ namespace twr {
 // max_abs_diff, max_abs_diff_at ([x, y] top-left origin, null when max_abs_diff is 0),
 // mean_abs_diff, rmse, psnr, over_1, over_3, over_12, over_1_pct, depth_available,
 // depth_max_diff, nan_pixels, triangle_ids_available, class_coverage, class_depth,
-// class_shading, differ_min_levels, depth_tolerance.
+// class_shading, class_decision, differ_min_levels, depth_tolerance.
 nlohmann::json metricsToJson(const CompareMetrics& metrics);
 
 // What the CLI adds about the run. Unset optionals and empty strings are left out.

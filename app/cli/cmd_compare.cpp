@@ -6,6 +6,7 @@
 #include "app/cli/common.h"
 #include "compare/artifacts.h"
 #include "compare/capture_faces.h"
+#include "compare/decisions.h"
 #include "compare/heatmap.h"
 #include "compare/metrics.h"
 #include "compare/pass_buffers.h"
@@ -123,7 +124,8 @@ void printSummary(const CompareMetrics& m, const nlohmann::json& json, const Art
               << " levels, " << m.backgroundOver1 << " over 1 level\n";
   }
   std::cout << "  differing pixels by cause: coverage " << m.classCoverage << ", depth " << m.classDepth
-            << ", shading " << m.classShading << "; excluded line pixels " << m.excludedLinePixels << "\n";
+            << ", shading " << m.classShading << ", decision " << m.classDecision << "; excluded line pixels "
+            << m.excludedLinePixels << "\n";
   std::cout << "  depth max diff " << std::setprecision(6) << m.depthMaxDiff << ", NaN pixels " << m.nanPixels
             << "\n";
   std::cout << std::setprecision(2) << "  time: cpu " << json.value("cpu_ms", 0.0) << " ms ("
@@ -339,7 +341,18 @@ void runCompare(CompareArgs& args) {
   // Under a sky box the pixels no triangle covers are compared too.
   CompareOptions options;
   options.compareBackground = drawsSky(scene, scene.settings);
-  const CompareResult result = compareDetailed(cpuOut, glOut, options);
+  CompareResult result = compareDetailed(cpuOut, glOut, options);
+  // Differing pixels of the same surface: which of them a decision parted (compare/decisions.h),
+  // from the decision views both renderers draw; none drawn when nothing differs.
+  std::vector<View> decisionViews;
+  if (result.metrics.classShading > 0) {
+    decisionViews = decisionViewsFor(scene, scene.settings);
+    if (!decisionViews.empty()) {
+      const DecisionViews a = renderDecisionViews(*cpu, scene, scene.settings, decisionViews, width, height);
+      const DecisionViews b = renderDecisionViews(*gl, scene, scene.settings, decisionViews, width, height);
+      classifyDecisions(result, a, b);
+    }
+  }
   Thresholds limits = args.limits;
   // The targets were measured against llvmpipe; a GPU rasterises with other precision and
   // filters textures differently (docs/gl-path.md), so there they would fail for no fault
@@ -403,6 +416,9 @@ void runCompare(CompareArgs& args) {
   const std::string isa = resolvedCpuIsaName(cpuOptions);
   mergeExtraKeys(json, {{"cpu_isa", isa.empty() ? nlohmann::json(nullptr) : nlohmann::json(isa)}});
   mergeExtraKeys(json, {{"thresholds", thresholdsToJson(limits, violations)}});
+  nlohmann::json decisionViewNames = nlohmann::json::array();
+  for (const View v : decisionViews) decisionViewNames.push_back(std::string(toString(v)));
+  mergeExtraKeys(json, {{"decision_views", decisionViewNames}});
   mergeExtraKeys(json, {{"gl_context", glContextString()},
                         {"targets", {{"requested", args.issueTargets},
                                      {"applied", args.issueTargets && targetsSkipped.empty()},

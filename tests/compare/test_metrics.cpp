@@ -336,7 +336,7 @@ TEST(CompareJson, HasEveryIssueKeyWithTheMetricValues) {
   const nlohmann::json j = metricsToJson(m);
   for (const char* key : {"width", "height", "covered_cpu", "covered_gl", "coverage_mismatch", "max_abs_diff",
                           "max_abs_diff_at", "mean_abs_diff", "rmse", "psnr", "over_1", "over_3", "over_12",
-                          "depth_max_diff", "nan_pixels", "class_coverage", "class_depth", "class_shading",
+                          "depth_max_diff", "nan_pixels", "class_coverage", "class_depth", "class_shading", "class_decision",
                           "excluded_line_pixels"}) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
