@@ -33,11 +33,45 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <optional>
 #include <stdexcept>
 
 namespace twr {
 namespace {
+
+// shadow.glsl's SHADOW_PROBE fields: the compared depth, the depth, the bias, the visibility,
+// the stored depth, the packed texel.
+constexpr int kShadowProbeFields = 6;
+constexpr std::uint32_t kShadowProbeUntested = 0xffffffffu;  // the light was not tested there
+
+float floatOfBits(std::uint32_t bits) {
+  float f = 0.0f;
+  std::memcpy(&f, &bits, sizeof f);
+  return f;
+}
+
+// The trace of light `light` from its probe's fields (`covered`: a triangle was drawn at the
+// pixel), the taps read from GL's own map.
+ShadowTapTrace shadowTapTraceFromProbe(int light, const std::array<std::uint32_t, kShadowProbeFields>& bits,
+                                       bool covered, const ShadowMap* map) {
+  constexpr std::uint32_t kTexelMask = 0xfffu, kLayerMask = 0x7u;  // 12 bits a coordinate, 3 the layer
+  ShadowTapTrace t;
+  t.light = light;
+  if (map) t.pcf = map->projection.pcf;
+  if (!covered || !map || bits[0] == kShadowProbeUntested) return t;
+  t.tested = true;
+  t.reference = floatOfBits(bits[0]);
+  t.depth = floatOfBits(bits[1]);
+  t.bias = floatOfBits(bits[2]);
+  t.visibility = floatOfBits(bits[3]);
+  const std::uint32_t packed = bits[5];
+  t.texel = glm::ivec3(static_cast<int>(packed & kTexelMask), static_cast<int>((packed >> 12) & kTexelMask),
+                       static_cast<int>((packed >> 24) & kLayerMask));
+  t.inside = ((packed >> 27) & 1u) != 0;
+  if (t.inside) t.taps = shadowTapsOf(*map, t.texel, t.reference);
+  return t;
+}
 
 // Everything that belongs to one GL context: GL objects die with their context.
 struct GlDevice {
@@ -254,7 +288,47 @@ class GlRenderer final : public Renderer {
     return trace;
   }
 
+  std::vector<ShadowTapTrace> traceShadowTaps(const Scene& scene, const RenderSettings& settings, int width,
+                                              int height, int x, int yTop) {
+    if (options_.frame != GlFrame::Full) throw InputError("GL: a shadow tap trace needs the full frame's attachments");
+    // The pixel's fragment shaded forward, as the CPU's trace replays it (a deferred frame's
+    // lighting pass runs the same test on the stored position: the same bits).
+    RenderSettings forward = settings;
+    forward.view = View::Shaded;
+    forward.pipeline = Pipeline::Forward;
+    forward.ssr.enabled = false;
+    forward.tbnLines.enabled = false;
+    struct Reset {
+      std::optional<GlShadowMaps::Probe>& probe;
+      bool& readsMaps;
+      ~Reset() {
+        probe.reset();
+        readsMaps = false;
+      }
+    } reset{shadowProbe_, probeReadsMaps_};
+    std::vector<ShadowTapTrace> traces;
+    ShadowMaps maps;
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+      if (!scene.lights[i].shadow) continue;
+      std::array<std::uint32_t, kShadowProbeFields> bits{};
+      bool covered = false;
+      for (int field = 0; field < kShadowProbeFields; ++field) {
+        shadowProbe_ = GlShadowMaps::Probe{static_cast<int>(i), field};
+        probeReadsMaps_ = maps.empty();  // the first draw reads GL's maps back, for the taps
+        RenderOutput out = renderPixel(scene, forward, width, height, x, yTop);
+        if (probeReadsMaps_) maps = std::move(out.shadowMaps);
+        covered = out.triangleId[0] != kNoTriangle;
+        for (std::size_t b = 0; b < 4; ++b) bits[static_cast<std::size_t>(field)] |= std::uint32_t{out.rgba[b]} << (8 * b);
+      }
+      const ShadowMap* map = i < maps.size() ? maps[i].get() : nullptr;
+      traces.push_back(shadowTapTraceFromProbe(static_cast<int>(i), bits, covered, map));
+    }
+    return traces;
+  }
+
  private:
+  std::optional<GlShadowMaps::Probe> shadowProbe_;  // traceShadowTaps' light and field
+  bool probeReadsMaps_ = false;                      // a pixel render that reads the maps back too
   std::optional<std::array<int, 3>> ssrProbe_;  // traceSsrMarch's pixel (GL window coordinates) and ray
   SsrMarchTrace probed_;                        // what the probe read back
 
@@ -294,7 +368,8 @@ class GlRenderer final : public Renderer {
     // full frame.
     const auto shadowStart = std::chrono::steady_clock::now();
     ShadowMaps shadowMaps = device.shadows.draw(device.programs, device.uploads, scene, drawSettings, items,
-                                                options_.frame == GlFrame::Full && !onlyPixel);
+                                                options_.frame == GlFrame::Full && (!onlyPixel || probeReadsMaps_));
+    device.shadows.setProbe(shadowProbe_);
     checkGlErrors("drawing the shadow maps");
     const double shadowMilliseconds =
         shadowMaps.empty() ? 0.0
@@ -527,6 +602,13 @@ RenderOutput renderGlPixel(Renderer& renderer, const Scene& scene, const RenderS
   auto* gl = dynamic_cast<GlRenderer*>(&renderer);
   if (!gl) throw InputError("renderGlPixel: the renderer '" + renderer.name() + "' is not the GL renderer");
   return gl->renderPixel(scene, settings, width, height, x, yTop);
+}
+
+std::vector<ShadowTapTrace> traceGlShadowTaps(Renderer& renderer, const Scene& scene, const RenderSettings& settings,
+                                              int width, int height, int x, int yTop) {
+  auto* gl = dynamic_cast<GlRenderer*>(&renderer);
+  if (!gl) throw InputError("traceGlShadowTaps: the renderer '" + renderer.name() + "' is not the GL renderer");
+  return gl->traceShadowTaps(scene, settings, width, height, x, yTop);
 }
 
 SsrMarchTrace traceGlSsrMarch(Renderer& renderer, const Scene& scene, const RenderSettings& settings, int width,

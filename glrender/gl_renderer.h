@@ -5,6 +5,7 @@
 #pragma once
 
 #include "scene/renderer.h"
+#include "scene/shadow_trace.h"
 #include "scene/ssr_trace.h"
 
 #include <memory>
@@ -116,6 +117,14 @@ struct GlContextProbe {
 // on every EGL device, and reports each; a missing library becomes one entry with `error`.
 // Sets llvmpipe's sampling mode for the process like a render would (options.fastSampling).
 std::vector<GlContextProbe> probeGlContexts(const GlOptions& options = {});
+
+// Pixel (x, yTop)'s shadow test on GL, tap by tap (scene/shadow_trace.h), one entry per light
+// of the scene with "shadow": the fragment drawn forward and shaded (whatever the view and the
+// pipeline; no reflections, no lines), phong.frag's SHADOW_PROBE variant reading the light's
+// test one field per one-pixel draw (shadow.glsl), the taps from GL's own map read back.
+// Throws InputError where renderGlPixel would.
+std::vector<ShadowTapTrace> traceGlShadowTaps(Renderer& renderer, const Scene& scene, const RenderSettings& settings,
+                                              int width, int height, int x, int yTop);
 
 // Pixel (x, yTop)'s march on GL, step by step (scene/ssr_trace.h): of its mirror ray, or with
 // `ray` k >= 0 of its indirect light's sample k. The frame render() draws, then ssr.frag's

@@ -426,6 +426,7 @@ SceneDrawStats drawScene(ProgramCache& programs, GlUploadCache& uploads, const S
     }
     if (frame == GlFrame::Lean) desc.defines.push_back("NO_TRIANGLE_ID");
     if (sceneHasShadows(scene)) desc.defines.push_back("HAS_SHADOWS");
+    if (shadows && shadows->probing()) desc.defines.push_back("SHADOW_PROBE");
     if (gbufferLighting) desc.defines.push_back("GBUFFER_PASS");
     if (gbufferLighting && storesGBufferPosition(settings)) desc.defines.push_back("GBUFFER_POSITION");
     const GLuint program = programs.get(desc);

@@ -93,6 +93,10 @@ ShadowMaps GlShadowMaps::draw(ProgramCache& programs, GlUploadCache& uploads, co
 }
 
 void GlShadowMaps::bind(GLuint program) const {
+  if (probe_) {
+    glUniform1i(uniformLocation(program, "shadowProbeLight"), probe_->light);
+    glUniform1i(uniformLocation(program, "shadowProbeField"), probe_->field);
+  }
   if (slotCount_ == 0) return;
   std::array<GLint, kMaxLights> slotOfLight{};
   for (std::size_t i = 0; i < slotOfLight.size(); ++i) slotOfLight[i] = slotOfLight_[i];

@@ -12,6 +12,7 @@
 #include "scene/shadow_map.h"
 
 #include <array>
+#include <optional>
 #include <vector>
 
 namespace twr {
@@ -27,10 +28,20 @@ class GlShadowMaps {
   ShadowMaps draw(ProgramCache& programs, GlUploadCache& uploads, const Scene& scene, const RenderSettings& settings,
                   const std::vector<DrawItem>& items, bool readBack);
   // Binds the maps of the last draw() to their units and sets phong.frag's shadow uniforms
-  // (shadowSlotOfLight[], shadows[], shadowMap0..3) on `program`.
+  // (shadowSlotOfLight[], shadows[], shadowMap0..3) on `program`, and the probe's.
   void bind(GLuint program) const;
 
+  // The pixel inspector's probe (shadow.glsl's SHADOW_PROBE): while set, the frame's programs
+  // are compiled with SHADOW_PROBE and write field `field` of light `light`'s test as the colour.
+  struct Probe {
+    int light = 0;
+    int field = 0;
+  };
+  void setProbe(const std::optional<Probe>& probe) { probe_ = probe; }
+  bool probing() const { return probe_.has_value(); }
+
  private:
+  std::optional<Probe> probe_;
   struct Slot {
     GlTexture texture;
     GlFramebuffer framebuffer;

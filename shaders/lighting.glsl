@@ -54,7 +54,7 @@ LightSum lightSum(vec3 posWorld, vec3 n, vec3 t, vec3 b, vec3 nl, vec3 kdAlbedo,
   LightSum result;
   result.sum = vec3(0.0);
 #ifdef HAS_SHADOWS
-  result.firstShadowTest = ShadowTest(1.0, 0.0, 0.0, 1.0, 0.0, 0.0);
+  result.firstShadowTest = ShadowTest(1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, vec2(0.0), 0.0);
   result.firstShadowCosine = 0.0;
   result.haveShadowTest = false;
 #endif
@@ -101,7 +101,7 @@ LightSum lightSum(vec3 posWorld, vec3 n, vec3 t, vec3 b, vec3 nl, vec3 kdAlbedo,
     // The light's shadow map (shadow.glsl), at the geometric normal's angle, in world space.
     // Tested only where it can matter: a point the light lights (diffuse or specular) and the
     // shadow views; elsewhere both terms are 0 and so is their product with it.
-#if defined(SHADOW_VIEW_SHADOW) || defined(SHADOW_VIEW_LIGHT_DEPTH)
+#if defined(SHADOW_VIEW_SHADOW) || defined(SHADOW_VIEW_LIGHT_DEPTH) || defined(SHADOW_PROBE)
     const bool shadowTestAlways = true;
 #else
     const bool shadowTestAlways = false;
@@ -111,7 +111,12 @@ LightSum lightSum(vec3 posWorld, vec3 n, vec3 t, vec3 b, vec3 nl, vec3 kdAlbedo,
       ShadowTest mapTest = shadowTest(slot, posWorld, n, safeNormalize(toLightWorld(lights[i], posWorld)));
       shadow = shadow * mapTest.visibility;
       mapOn = true;
-      if (!result.haveShadowTest) {
+#ifdef SHADOW_PROBE
+      bool keep = i == shadowProbeLight;  // the probed light's test, not the first's
+#else
+      bool keep = !result.haveShadowTest;
+#endif
+      if (keep) {
         result.firstShadowTest = mapTest;
         result.firstShadowCosine = dot3(n, safeNormalize(toLightWorld(lights[i], posWorld)));
         result.haveShadowTest = true;

@@ -17,7 +17,8 @@
 // ENVIRONMENT_REFLECT (with ENVIRONMENT_PREFILTERED), ENVIRONMENT_REFRACTION, FRESNEL_SCHLICK, ENVIRONMENT_DIFFUSE (with
 // ENVIRONMENT_IRRADIANCE or ENVIRONMENT_SH9).
 // Shadow maps (shaders/shadow.glsl, included before this file): HAS_SHADOWS; the views
-// SHADOW_VIEW_SHADOW and SHADOW_VIEW_LIGHT_DEPTH (with VIEW_SHADED).
+// SHADOW_VIEW_SHADOW and SHADOW_VIEW_LIGHT_DEPTH (with VIEW_SHADED); SHADOW_PROBE (with
+// VIEW_SHADED): the pixel inspector's probe of one light's test (shadow.glsl).
 // NO_TRIANGLE_ID: no triangle-id output, as an OpenGL user's shader has none (the lean
 // frame, glrender/gl_renderer.h; llvmpipe pays for gl_PrimitiveID even when no draw buffer
 // takes the output).
@@ -245,6 +246,9 @@ void main() {
 #else
   colour = dimmedColour(colour);
 #endif
+#endif
+#ifdef SHADOW_PROBE
+  colour = shadowProbeColour(lit.firstShadowTest, lit.haveShadowTest);  // shadow.glsl: one field's bits
 #endif
 #endif  // the forward lighting
 #ifdef GBUFFER_PASS

@@ -41,6 +41,9 @@ struct ShadowTest {
   float stored;      // the map's depth at the fragment's texel, 1 outside
   float inside;      // 1 inside the map, else 0
   float acneWindow;  // depth units: SHADOW_ACNE_TEXELS of the surface's own rise (at least a texel's)
+  float reference;   // what each tap compares with the map: depth - bias
+  vec2 texel;        // the fragment's own texel (the kernel's centre), 0 outside the map
+  float layer;       // its layer (a cube's face), 0 outside the map
 };
 
 // GL's cube face table with llvmpipe's tie rule (cubeCoordLanes in softrender/cube_sample-inl.h).
@@ -130,6 +133,9 @@ ShadowTest shadowTest(int slot, vec3 posWorld, vec3 n, vec3 l) {
   r.stored = inside ? stored : 1.0;
   r.inside = inside ? 1.0 : 0.0;
   r.acneWindow = (SHADOW_ACNE_TEXELS * max(rise, texelWorld)) * depthPerWorld;
+  r.reference = reference;
+  r.texel = vec2(x0, y0);
+  r.layer = float(layerRead);
   return r;
 }
 
@@ -148,4 +154,29 @@ vec4 shadowViewColour(ShadowTest test, float nDotL) {
 vec4 lightDepthColour(ShadowTest test) {
   return vec4(test.inside > 0.0 ? vec3(test.stored) : LIGHT_DEPTH_OUTSIDE, 1.0);
 }
+
+#ifdef SHADOW_PROBE
+// The pixel inspector's probe (scene/shadow_trace.h): the test of light shadowProbeLight at the
+// one pixel drawn, one field per draw, its 32 bits as the colour's four bytes (lowest first),
+// which RGBA8 keeps exactly. Field 0 the compared depth, 1 the depth, 2 the bias, 3 the
+// visibility, 4 the stored depth, 5 the texel: x | y << 12 | layer << 24 | inside << 27.
+// C++ reader: traceGlShadowTaps (glrender/gl_renderer.cpp).
+uniform int shadowProbeLight;
+uniform int shadowProbeField;
+
+vec4 shadowProbeColour(ShadowTest test, bool tested) {
+  uint bits = 0u;
+  if (shadowProbeField == 0) bits = floatBitsToUint(test.reference);
+  if (shadowProbeField == 1) bits = floatBitsToUint(test.depth);
+  if (shadowProbeField == 2) bits = floatBitsToUint(test.bias);
+  if (shadowProbeField == 3) bits = floatBitsToUint(test.visibility);
+  if (shadowProbeField == 4) bits = floatBitsToUint(test.stored);
+  if (shadowProbeField == 5) {
+    bits = uint(test.texel.x) | (uint(test.texel.y) << 12) | (uint(test.layer) << 24) | (test.inside > 0.0 ? 1u << 27 : 0u);
+  }
+  if (!tested) bits = 0xffffffffu;  // the light was not tested here (no map)
+  uvec4 bytes = uvec4(bits & 255u, (bits >> 8) & 255u, (bits >> 16) & 255u, bits >> 24);
+  return vec4(bytes) / 255.0;
+}
+#endif
 #endif

@@ -268,6 +268,34 @@ std::string skyWhere(const PixelTrace& tr) {
 
 }  // namespace
 
+std::vector<ShadowTapTrace> shadowTapTracesOf(const PixelTrace& trace, const Scene& scene) {
+  std::vector<ShadowTapTrace> out;
+  const TriangleVisit* shown = nullptr;  // the last shaded visit drew the pixel
+  for (const TriangleVisit& v : trace.visits) {
+    if (v.outcome == TraceOutcome::Shaded) shown = &v;
+  }
+  for (std::size_t i = 0; i < scene.lights.size() && i < static_cast<std::size_t>(kMaxLights); ++i) {
+    const ShadowMap* map = i < trace.shadowMaps.size() ? trace.shadowMaps[i].get() : nullptr;
+    if (!scene.lights[i].shadow || !map) continue;
+    ShadowTapTrace t;
+    t.light = static_cast<int>(i);
+    t.pcf = map->projection.pcf;
+    const LightTerms* terms = shown ? &shown->terms.lights[i] : nullptr;
+    if (terms && terms->shadowOn) {
+      t.tested = true;
+      t.inside = terms->shadowInside;
+      t.texel = glm::ivec3(terms->shadowTexel);
+      t.depth = terms->shadowDepth;
+      t.bias = terms->shadowBias;
+      t.reference = terms->shadowReference;
+      t.visibility = terms->shadowVisibility;
+      if (t.inside) t.taps = shadowTapsOf(*map, t.texel, t.reference);
+    }
+    out.push_back(std::move(t));
+  }
+  return out;
+}
+
 std::string formatPixelTrace(const PixelTrace& tr) {
   std::ostringstream o;
   o << "pixel (" << tr.x << ", " << tr.yTop << ") of " << tr.width << "x" << tr.height

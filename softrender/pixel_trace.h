@@ -10,6 +10,7 @@
 
 #include "scene/renderer.h"
 #include "scene/scene.h"
+#include "scene/shadow_trace.h"
 #include "softrender/clip.h"
 #include "softrender/interpolate.h"
 #include "softrender/setup.h"
@@ -97,6 +98,11 @@ PixelTrace tracePixel(const Scene& scene, const RenderSettings& settings, int wi
 // teaching traversal (shadow_pass.h).
 PixelTrace tracePixelVisits(const Scene& scene, const RenderSettings& settings, int width, int height, int x,
                             int yTop, const ShadowMaps* shadows = nullptr);
+
+// The pixel's shadow test tap by tap (scene/shadow_trace.h), one entry per light of `scene`
+// with a map, from the last shaded visit's test (the pixel's surface) and the trace's maps.
+// Empty without shadowed lights; an entry is not `tested` where no triangle was shaded.
+std::vector<ShadowTapTrace> shadowTapTracesOf(const PixelTrace& trace, const Scene& scene);
 
 // A readable multi-line report.
 std::string formatPixelTrace(const PixelTrace& trace);

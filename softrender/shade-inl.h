@@ -292,7 +292,7 @@ TWR_LANE_INLINE LightSumL<L> lightSumLanes(const FragmentL<L>* f, const ShadeUni
   const Vec3L<L>& nl = frame.nl;
   const bool emboss = Features::kHasHeightMap && u.surfaceDetail == SurfaceDetail::BumpEmboss;
   const bool selfShadowOn = Features::kHasHeightMap && u.selfShadow != SelfShadow::None;
-  LightSumL<L> out{Vec3L<L>(zero), ShadowTestL<L>{one, zero, zero, one, zero, zero}, zero, false};
+  LightSumL<L> out{Vec3L<L>(zero), ShadowTestL<L>{one, zero, zero, one, zero, zero, zero, zero, zero, zero}, zero, false};
   for (int i = 0; i < u.lightCount; ++i) {
     const LightUniformT<S>& light = u.lights[static_cast<std::size_t>(i)];
     const Vec3L<L> toLight = toLightLanes<L>(light, posWorld);
@@ -337,7 +337,7 @@ TWR_LANE_INLINE LightSumL<L> lightSumLanes(const FragmentL<L>* f, const ShadeUni
     L shadow = selfShadowValue;
     // The light's shadow map (shadow-inl.h): a runtime branch per light, never taken by a
     // light without one. Its angle is the geometric normal's, in world space.
-    ShadowTestL<L> mapTest{one, zero, zero, one, zero, zero};
+    ShadowTestL<L> mapTest{one, zero, zero, one, zero, zero, zero, zero, zero, zero};
     // Tested only where it can matter: a lane the light lights (diffuse or specular), the
     // shadow views and the trace; elsewhere both terms are 0 and so is their product with it.
     const bool mapOn = light.shadow.depth != nullptr &&
@@ -374,6 +374,9 @@ TWR_LANE_INLINE LightSumL<L> lightSumLanes(const FragmentL<L>* f, const ShadeUni
         lt.shadowDepth = mapTest.depth;
         lt.shadowBias = mapTest.bias;
         lt.shadowStored = mapTest.stored;
+        lt.shadowReference = mapTest.reference;
+        lt.shadowInside = mapTest.inside > zero;
+        lt.shadowTexel = decltype(lt.shadowTexel)(mapTest.texelX, mapTest.texelY, mapTest.layer);
         lt.diffuse = diffuse;
         lt.specular = specular;
       }

@@ -118,9 +118,13 @@ struct LightTermsT {
   T attenuation = T(0);  // If
   T selfShadow = T(1);   // 1 = lit, 0 = in the height field's shadow
   // Its shadow map's test (shadowOn: the light has one): visibility 1 = lit; the fragment's
-  // depth from the light, the bias and the map's depth at its texel.
+  // depth from the light, the bias and the map's depth at its texel; what every tap compares
+  // (depth - bias), whether the fragment lies inside the map, and its texel (x, y, layer).
   bool shadowOn = false;
   T shadowVisibility = T(1), shadowDepth = T(0), shadowBias = T(0), shadowStored = T(1);
+  T shadowReference = T(0);
+  bool shadowInside = false;
+  Vec3T<T> shadowTexel{T(0)};
   Vec3T<T> diffuse{T(0)}, specular{T(0)};
 };
 using LightTerms = LightTermsT<float>;

@@ -37,6 +37,9 @@ struct ShadowTestL {
   L stored;      // the map's depth at the fragment's own texel (1 outside the map)
   L inside;      // 1 where the fragment lies inside the map, else 0
   L acneWindow;  // depth units: kShadowAcneTexels of the surface's own rise (at least a texel's)
+  L reference;   // what each tap compares with the map: depth - bias
+  L texelX, texelY;  // the fragment's own texel (the kernel's centre), 0 outside the map
+  L layer;           // its layer (a cube's face), 0 outside the map
 };
 
 // The test at posWorld; n is the surface's unit normal and l the unit vector to the light, both
@@ -118,6 +121,10 @@ TWR_LANE_INLINE ShadowTestL<L> shadowTestLanes(const ShadowUniformT<ScalarOf<L>>
   r.stored = select(inside, stored, one);
   r.inside = select(inside, one, zero);
   r.acneWindow = (L(static_cast<S>(kShadowAcneTexels)) * maxOf(rise, texelWorld)) * depthPerWorld;
+  r.reference = reference;
+  r.texelX = x0;
+  r.texelY = y0;
+  r.layer = select(inside, layer, zero);
   return r;
 }
 

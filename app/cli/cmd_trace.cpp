@@ -1,6 +1,6 @@
 // `twinraster trace SCENE X Y`: the story of one pixel through the CPU pipeline (and, with
 // screen-space reflections, its mirror ray's or an indirect sample's march step by step on both
-// renderers).
+// renderers; with shadowed lights, each one's test tap by tap on both).
 // The replay of the stages is the teaching code (softrender/pixel_trace.cpp); the final
 // pixel it reports comes from a full render on --cpu-path / --cpu-isa (default fast, auto).
 // tracePixel() takes no renderer options and renders on the default fast path itself, so
@@ -91,6 +91,24 @@ void runTrace(const TraceArgs& args) {
       glMarchError = e.what();  // no usable GL here: the CPU's march alone, and why
     }
   }
+  // A shadowed light: the pixel's test tap by tap on both renderers.
+  const std::vector<ShadowTapTrace> cpuTaps = shadowTapTracesOf(trace, scene);
+  std::vector<ShadowTapTrace> glTaps;
+  std::string glTapsError;
+  if (!cpuTaps.empty()) {
+    try {
+      std::unique_ptr<Renderer> gl = makeGlRenderer(requestedGlOptions(args.gl));
+      glTaps = traceGlShadowTaps(*gl, scene, scene.settings, width, height, args.x, args.y);
+    } catch (const InputError& e) {
+      glTapsError = e.what();  // no usable GL here: the CPU's taps alone, and why
+    }
+  }
+  const auto glTapsOf = [&](const ShadowTapTrace& cpu) -> const ShadowTapTrace* {
+    for (const ShadowTapTrace& g : glTaps) {
+      if (g.light == cpu.light) return &g;
+    }
+    return nullptr;
+  };
   const std::string path = cpuPathName(cpuOptions);
   if (args.json) {
     nlohmann::json json = pixelTraceToJson(trace);
@@ -105,6 +123,21 @@ void runTrace(const TraceArgs& args) {
     } else {
       json["ssr_march"] = nullptr;
     }
+    if (cpuTaps.empty()) {
+      json["shadow_taps"] = nullptr;
+    } else {
+      json["shadow_taps"] = nlohmann::json::array();
+      for (const ShadowTapTrace& cpu : cpuTaps) {
+        const ShadowTapTrace* gl = glTapsOf(cpu);
+        const std::optional<std::size_t> parted = gl ? firstDifferingTap(cpu, *gl) : std::nullopt;
+        json["shadow_taps"].push_back(
+            {{"light", cpu.light},
+             {"cpu", shadowTapTraceToJson(cpu)},
+             {"gl", gl ? shadowTapTraceToJson(*gl) : nlohmann::json(nullptr)},
+             {"gl_error", glTapsError.empty() ? nlohmann::json(nullptr) : nlohmann::json(glTapsError)},
+             {"first_differing_tap", parted ? nlohmann::json(*parted + 1) : nlohmann::json(nullptr)}});
+      }
+    }
     std::cout << jsonText(json, 2) << "\n";
   } else {
     std::cout << formatPixelTrace(trace) << "final pixel rendered by the cpu path: " << path << "\n";
@@ -115,6 +148,11 @@ void runTrace(const TraceArgs& args) {
                 << ", thickness " << ssr.thickness << "):\n"
                 << formatSsrMarchTraces("cpu", *cpuMarch, "gl", glMarch ? &*glMarch : nullptr);
       if (!glMarchError.empty()) std::cout << "  gl: not traced: " << glMarchError << "\n";
+    }
+    for (const ShadowTapTrace& cpu : cpuTaps) {
+      std::cout << "\nshadow test of light " << cpu.light << ", tap by tap (PCF " << cpu.pcf << "):\n"
+                << formatShadowTapTraces("cpu", cpu, "gl", glTapsOf(cpu));
+      if (!glTapsError.empty()) std::cout << "  gl: not traced: " << glTapsError << "\n";
     }
   }
 }
@@ -127,7 +165,9 @@ const bool registered = registerCommand(40, [](CLI::App& app) {
       "positions and edge functions, barycentrics, interpolated varyings, every shading term, the depth test. "
       "The final pixel comes from a full render on --cpu-path and --cpu-isa. With screen-space reflections "
       "(settings.ssr), also the pixel's mirror-ray march (or, with --ssr-ray K, its indirect sample K's) step by "
-      "step on both renderers (GL's through ssr.frag's probe), and the first step where they part.");
+      "step on both renderers (GL's through ssr.frag's probe), and the first step where they part. With a shadowed "
+      "light, its test tap by tap on both renderers (GL's through phong.frag's probe): each PCF tap's texel, the "
+      "map's depth there, the fragment's compared depth, the outcome, and the first tap where they part.");
   addRenderOptions(*cmd, args->request);
   cmd->add_option("x", args->x, "Pixel column, 0 at the left edge of the image")->required();
   cmd->add_option("y", args->y, "Pixel row, 0 at the TOP edge of the image (as in the PNG files, not GL's bottom-left)")

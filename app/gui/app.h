@@ -67,6 +67,8 @@ struct PinState {
   std::string glError;
   std::optional<SsrMarchTrace> glMarch;  // the GL probe's march of its job's ray (frames with reflections)
   std::string glMarchError;
+  std::vector<ShadowTapTrace> glShadowTaps;  // the GL probe's shadow tests, tap by tap (shadowed lights)
+  std::string glShadowTapsError;
   std::uint64_t glAskedRevision = 0;  // the last probe job sent to the GL worker
   std::optional<PixelPos> glAskedPixel;
   int cpuAskedRay = kSsrMirrorRay;  // the ray of the last probe jobs
@@ -184,6 +186,7 @@ class GuiApp {
   void drawTraceSection(const PixelTrace& trace);
   void drawViewProbeSection();
   void drawSsrMarchSection();
+  void drawShadowTapsSection();
 
   GuiOptions options_;
   PrefsPaths paths_;

@@ -257,6 +257,8 @@ void GuiApp::takeGlFrames() {
       pin_.glError = frame.probe->error;
       pin_.glMarch = frame.probe->ssrMarch;
       pin_.glMarchError = frame.probe->ssrMarchError;
+      pin_.glShadowTaps = frame.probe->shadowTaps;
+      pin_.glShadowTapsError = frame.probe->shadowTapsError;
       pin_.glRevision = frame.revision;
     }
   }

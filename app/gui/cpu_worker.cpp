@@ -44,6 +44,7 @@ CpuProbe CpuWorker::probe(Renderer& renderer, const CpuJob& job, const RenderOut
     trace->triangleId = frameOutput->triangleId[i];
     trace->debugLine = frameOutput->lineMask[i] != 0;
     result.trace = trace;
+    result.shadowTaps = shadowTapTracesOf(*trace, *job.scene);
     // A frame with reflections: the pixel's march, step by step, from that frame's G-buffer.
     if (drawsSsr(job.settings)) {
       try {

@@ -7,6 +7,7 @@
 #include "app/gui/job_queue.h"
 #include "app/gui/pixel_probe.h"
 #include "scene/renderer.h"
+#include "scene/shadow_trace.h"
 #include "scene/ssr_trace.h"
 #include "softrender/cpu_renderer.h"
 #include "softrender/pixel_trace.h"
@@ -48,6 +49,8 @@ struct CpuProbe {
   // (softrender/ssr.h's traceSsrMarch), or why not.
   std::optional<SsrMarchTrace> ssrMarch;
   std::string ssrMarchError;
+  // Each shadowed light's test at the pixel tap by tap, from the trace (shadowTapTracesOf).
+  std::vector<ShadowTapTrace> shadowTaps;
 };
 
 struct CpuFrame {

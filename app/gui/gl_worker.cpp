@@ -48,6 +48,16 @@ GlProbe GlWorker::probe(Renderer& renderer, const GlJob& job) const {
       result.ssrMarchError = e.what();
     }
   }
+  // A shadowed light: its test tap by tap on GL (one pixel draw per field of the probe).
+  if (sceneHasShadows(*job.scene)) {
+    if (queue_.superseded()) return result;
+    try {
+      result.shadowTaps = traceGlShadowTaps(renderer, *job.scene, job.scene->settings, job.width, job.height,
+                                            result.pixel.x, result.pixel.yTop);
+    } catch (const std::exception& e) {
+      result.shadowTapsError = e.what();
+    }
+  }
   result.complete = true;
   return result;
 }

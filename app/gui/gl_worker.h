@@ -14,6 +14,7 @@
 #include "app/gui/pixel_probe.h"
 #include "glrender/gl_renderer.h"
 #include "scene/renderer.h"
+#include "scene/shadow_trace.h"
 #include "scene/ssr_trace.h"
 
 #include <chrono>
@@ -44,6 +45,9 @@ struct GlProbe {
   // (traceGlSsrMarch), or why not.
   std::optional<SsrMarchTrace> ssrMarch;
   std::string ssrMarchError;
+  // A shadowed light: its test at the pixel tap by tap on GL (traceGlShadowTaps), or why not.
+  std::vector<ShadowTapTrace> shadowTaps;
+  std::string shadowTapsError;
 };
 
 struct GlFrameResult {

@@ -5,6 +5,8 @@
 #include "app/gui/text_concat.h"
 #include "app/gui/debug_views.h"
 #include "app/gui/ui_widgets.h"
+#include "scene/shadow_map.h"
+#include "scene/shadow_trace.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -155,6 +157,7 @@ void GuiApp::drawInspectorPanel() {
   }
   drawViewProbeSection();
   if (drawsSsr(doc_.scene.settings)) drawSsrMarchSection();
+  if (sceneHasShadows(doc_.scene)) drawShadowTapsSection();
 }
 
 namespace {
@@ -271,6 +274,115 @@ void GuiApp::drawSsrMarchSection() {
     }
     if (monoFont_) ImGui::PopFont();
     ImGui::EndTable();
+  }
+}
+
+namespace {
+
+// One backend's tap as table cells: the texel read, the map's depth there, the outcome.
+void shadowTapCells(const ShadowTap* tap) {
+  ImGui::TableNextColumn();
+  if (!tap) {
+    ImGui::TextDisabled("-");
+    ImGui::TableNextColumn();
+    ImGui::TableNextColumn();
+    return;
+  }
+  ImGui::Text("%d,%d,%d", tap->texel.x, tap->texel.y, tap->texel.z);
+  ImGui::TableNextColumn();
+  ImGui::Text("%.9f", static_cast<double>(tap->stored));
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(tap->lit ? "lit" : "shadow");
+}
+
+const ShadowTapTrace* tapsOfLight(const std::vector<ShadowTapTrace>& traces, int light) {
+  for (const ShadowTapTrace& t : traces) {
+    if (t.light == light) return &t;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+// Each shadowed light's test at the pinned pixel, tap by tap, on both backends (docs/shadows.md,
+// "One pixel's taps"), the first tap where they part marked.
+void GuiApp::drawShadowTapsSection() {
+  const bool cpuCurrent = pin_.cpu && pin_.cpuRevision == doc_.revision;
+  const bool glCurrent = pin_.glRevision == doc_.revision;
+  std::string title = "Shadow taps at this pixel";
+  if (!cpuCurrent) title += " (CPU updating...)";
+  title += "###shadowtaps";
+  if (!ImGui::CollapsingHeader(title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) return;
+  hintText("Each PCF tap of the light's test: the map texel read (x, y, layer), the map's depth there and whether "
+           "the fragment's compared depth (depth - bias) lies at or in front of it. Both backends record their own "
+           "numbers (GL: phong.frag's probe) and read their own maps.");
+  if (!pin_.glShadowTapsError.empty()) errorText("GL: " + pin_.glShadowTapsError);
+  if (!cpuCurrent) return;
+  for (const ShadowTapTrace& cpu : pin_.cpu->shadowTaps) {
+    const ShadowTapTrace* gl = glCurrent ? tapsOfLight(pin_.glShadowTaps, cpu.light) : nullptr;
+    ImGui::PushID(cpu.light);
+    ImGui::Text("Light %d (PCF %d)", cpu.light, cpu.pcf);
+    if (!cpu.tested) {
+      hintText("Not tested: nothing is drawn here.");
+      ImGui::PopID();
+      continue;
+    }
+    if (monoFont_) ImGui::PushFont(monoFont_);
+    const auto fragment = [](const char* who, const ShadowTapTrace& t) {
+      ImGui::TextWrapped("%s: depth %.9f - bias %.9f = %.9f, texel %d, %d, %d, visibility %.4f", who,
+                         static_cast<double>(t.depth), static_cast<double>(t.bias), static_cast<double>(t.reference),
+                         t.texel.x, t.texel.y, t.texel.z, static_cast<double>(t.visibility));
+    };
+    fragment("CPU", cpu);
+    if (gl && gl->tested) fragment("GL ", *gl);
+    if (monoFont_) ImGui::PopFont();
+    if (!gl && pin_.glShadowTapsError.empty()) hintText("GL: waiting for the worker...");
+    if (!cpu.inside) {
+      hintText("Outside the map: lit, no tap read.");
+      ImGui::PopID();
+      continue;
+    }
+    const std::size_t rows = std::max(cpu.taps.size(), gl ? gl->taps.size() : 0);
+    std::size_t parted = rows;  // a plain index (rows = none): see formatSsrMarchTraces
+    if (gl) {
+      const std::optional<std::size_t> first = firstDifferingTap(cpu, *gl);
+      if (first) {
+        parted = *first;
+        warningText(concat("The backends part at tap ", parted + 1, "."));
+      } else {
+        ImGui::TextDisabled("Every tap alike on both backends.");
+      }
+    }
+    if (ImGui::BeginTable("##taps", 8, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_ScrollY,
+                          ImVec2(0.0f, ImGui::GetTextLineHeightWithSpacing() * std::min<float>(10.0f, float(rows) + 1.5f)))) {
+      ImGui::TableSetupScrollFreeze(0, 1);
+      ImGui::TableSetupColumn("tap", ImGuiTableColumnFlags_WidthStretch, 0.3f);
+      ImGui::TableSetupColumn("CPU texel", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+      ImGui::TableSetupColumn("stored", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+      ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch, 0.55f);
+      ImGui::TableSetupColumn("GL texel", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+      ImGui::TableSetupColumn("stored", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+      ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch, 0.55f);
+      ImGui::TableSetupColumn("dx,dy", ImGuiTableColumnFlags_WidthStretch, 0.4f);
+      ImGui::TableHeadersRow();
+      if (monoFont_) ImGui::PushFont(monoFont_);
+      for (std::size_t k = 0; k < rows; ++k) {
+        const ShadowTap* a = k < cpu.taps.size() ? &cpu.taps[k] : nullptr;
+        const ShadowTap* b = gl && k < gl->taps.size() ? &gl->taps[k] : nullptr;
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        if (parted == k) ImGui::TextColored(kWarningColour, "%zu", k + 1);
+        else ImGui::Text("%zu", k + 1);
+        shadowTapCells(a);
+        shadowTapCells(b);
+        ImGui::TableNextColumn();
+        const ShadowTap* any = a ? a : b;
+        if (any) ImGui::Text("%d,%d", any->dx, any->dy);
+      }
+      if (monoFont_) ImGui::PopFont();
+      ImGui::EndTable();
+    }
+    ImGui::PopID();
   }
 }
 

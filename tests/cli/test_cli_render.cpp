@@ -382,6 +382,39 @@ TEST(CliTrace, ShowsTheSsrMarchOnBothRenderers) {
   EXPECT_NE(bad.err.find("--ssr-ray: expected 'mirror' or an indirect sample's index"), std::string::npos) << bad.err;
 }
 
+TEST(CliTrace, ShowsEachShadowTapOnBothRenderers) {
+  const auto dir = testDir("cli_trace_shadow_taps");
+  const std::string scene = "\"" + kSource + "/assets/scenes/shadow_directional.json\"";
+  // A floor pixel in front of the cube, inside the light's map (PCF 3: nine taps).
+  const RunResult text = runCli("trace " + scene + " 80 100 --width 160 --height 120", dir);
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  EXPECT_NE(text.out.find("shadow test of light 0, tap by tap (PCF 3):"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("every tap alike on both"), std::string::npos) << text.out;
+  const RunResult json = runCli("trace " + scene + " 80 100 --width 160 --height 120 --json", dir);
+  ASSERT_EQ(json.exitCode, 0) << json.err;
+  const nlohmann::json j = nlohmann::json::parse(json.out);
+  ASSERT_TRUE(j["shadow_taps"].is_array()) << json.out;
+  ASSERT_EQ(j["shadow_taps"].size(), 1u);
+  const nlohmann::json& light = j["shadow_taps"][0];
+  EXPECT_EQ(light["light"], 0);
+  EXPECT_TRUE(light["first_differing_tap"].is_null());
+  EXPECT_TRUE(light["gl_error"].is_null());
+  const nlohmann::json& cpu = light["cpu"];
+  const nlohmann::json& gl = light["gl"];
+  ASSERT_TRUE(cpu["tested"].get<bool>() && cpu["inside"].get<bool>()) << json.out;
+  ASSERT_EQ(cpu["taps"].size(), 9u);
+  EXPECT_EQ(cpu["reference"], gl["reference"]);
+  EXPECT_EQ(cpu["texel"], gl["texel"]);
+  EXPECT_EQ(cpu["taps"], gl["taps"]);
+  for (const nlohmann::json& tap : cpu["taps"]) {
+    for (const char* key : {"dx", "dy", "texel", "stored", "lit"}) EXPECT_TRUE(tap.contains(key)) << key;
+  }
+  // A scene without a shadowed light has no taps to show.
+  const RunResult plain = runCli("trace \"" + kDefaultScene + "\" 80 60 --width 160 --height 120 --json", dir);
+  ASSERT_EQ(plain.exitCode, 0) << plain.err;
+  EXPECT_TRUE(nlohmann::json::parse(plain.out)["shadow_taps"].is_null());
+}
+
 TEST(CliTrace, ShowsAnIndirectSamplesMarchOnBothRenderers) {
   const auto dir = testDir("cli_trace_ssr_indirect");
   const std::string scene = "\"" + kSource + "/assets/scenes/ssr_cave.json\"";  // 4 cosine samples

@@ -139,6 +139,34 @@ TEST_P(FastPathSuite, SameImageAsTheTeachingPath) {
 // The per-target fixture for the tests below.
 HWY_BEFORE_TEST(FastPath);
 
+// Shadow maps with no bias at all, where a tap is decided in a depth's last bit: each kind of
+// map (the orthographic one at each kernel), the same maps (float depth, docs/shadows.md) and frames on both paths.
+TEST_P(FastPath, ShadowMapsAtZeroBias) {
+  expectTargetInUse(GetParam());
+  for (const char* file : {"shadow_directional.json", "shadow_point_cube.json", "shadow_spot.json"}) {
+    const bool directional = std::string(file) == "shadow_directional.json";
+    for (const int pcf : {1, 3, 5}) {
+      if (!directional && pcf != 3) continue;  // the kernel's loop is the same code for every map
+      Scene scene = loadSceneFile(kScenes + "/" + file);
+      for (Light& light : scene.lights) {
+        if (!light.shadow) continue;
+        light.shadow->bias = vec2(0.0f);
+        light.shadow->pcf = pcf;
+      }
+      const std::string what = std::string(file) + " bias 0 pcf " + std::to_string(pcf);
+      expectPathsAgree(scene, scene.settings, 160, 120, what);
+      const RenderOutput teachingOut = makeCpuRenderer(teaching())->render(scene, scene.settings, 160, 120);
+      const RenderOutput fastOut = makeCpuRenderer(fastSimd(2))->render(scene, scene.settings, 160, 120);
+      ASSERT_EQ(teachingOut.shadowMaps.size(), fastOut.shadowMaps.size()) << what;
+      for (std::size_t i = 0; i < teachingOut.shadowMaps.size(); ++i) {
+        if (!teachingOut.shadowMaps[i]) continue;
+        ASSERT_TRUE(fastOut.shadowMaps[i]) << what;
+        EXPECT_TRUE(sameBits(teachingOut.shadowMaps[i]->depth, fastOut.shadowMaps[i]->depth)) << what << ", light " << i;
+      }
+    }
+  }
+}
+
 // One filter per sampling path: level 0 picked or blended, one mip level by rint(lod), two
 // levels blended (the other two mipmapped filters combine the same paths). Every filter
 // against llvmpipe: tests/compare.
