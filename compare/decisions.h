@@ -39,11 +39,13 @@ DecisionViews renderDecisionViews(Renderer& renderer, const Scene& scene, const 
 
 // Whether some decision view differs at pixel i (top row first): one side covers it and the
 // other not, or a colour channel differs by more than kDecisionViewLevels. Throws InputError
-// when the two were drawn at other sizes or in other views.
+// when the two were drawn at other sizes or in other views, an image is missing or of another
+// size, or i lies outside them.
 bool decisionDiffersAt(const DecisionViews& cpu, const DecisionViews& gl, std::size_t i);
 
 // Moves every Shading pixel of `result` whose decision views differ to Decision, and its count
-// from classShading to classDecision. Returns how many moved.
+// from classShading to classDecision. Returns how many moved. Throws InputError as
+// decisionDiffersAt does, or when the views are not of the frame's size.
 std::uint64_t classifyDecisions(CompareResult& result, const DecisionViews& cpu, const DecisionViews& gl);
 
 }  // namespace twr

@@ -56,6 +56,8 @@ float floatOfBits(std::uint32_t bits) {
 ShadowTapTrace shadowTapTraceFromProbe(int light, const std::array<std::uint32_t, kShadowProbeFields>& bits,
                                        bool covered, const ShadowMap* map) {
   constexpr std::uint32_t kTexelMask = 0xfffu, kLayerMask = 0x7u;  // 12 bits a coordinate, 3 the layer
+  static_assert(kMaxShadowMapSize - 1 <= int(kTexelMask) && kCubeShadowLayers - 1 <= int(kLayerMask),
+                "shadow.glsl's probe packs a texel into 12 + 12 bits and its layer into 3");
   ShadowTapTrace t;
   t.light = light;
   if (map) t.pcf = map->projection.pcf;
@@ -65,6 +67,7 @@ ShadowTapTrace shadowTapTraceFromProbe(int light, const std::array<std::uint32_t
   t.depth = floatOfBits(bits[1]);
   t.bias = floatOfBits(bits[2]);
   t.visibility = floatOfBits(bits[3]);
+  t.stored = floatOfBits(bits[4]);
   const std::uint32_t packed = bits[5];
   t.texel = glm::ivec3(static_cast<int>(packed & kTexelMask), static_cast<int>((packed >> 12) & kTexelMask),
                        static_cast<int>((packed >> 24) & kLayerMask));

@@ -1,5 +1,7 @@
 #include "scene/shadow_trace.h"
 
+#include "scene/errors.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <sstream>
@@ -8,6 +10,17 @@ namespace twr {
 
 std::vector<ShadowTap> shadowTapsOf(const ShadowMap& map, glm::ivec3 centre, float reference) {
   const ShadowProjection& p = map.projection;
+  const std::size_t texels = static_cast<std::size_t>(p.size) * static_cast<std::size_t>(p.size) *
+                             static_cast<std::size_t>(std::max(p.layers, 0));
+  if (texels == 0 || map.depth.size() != texels) {
+    throw InputError("shadow taps: the map holds " + std::to_string(map.depth.size()) + " depths, expected " +
+                     std::to_string(texels) + " (drawn without read-back?)");
+  }
+  if (centre.x < 0 || centre.x >= p.size || centre.y < 0 || centre.y >= p.size || centre.z < 0 || centre.z >= p.layers) {
+    throw InputError("shadow taps: texel (" + std::to_string(centre.x) + ", " + std::to_string(centre.y) + ", " +
+                     std::to_string(centre.z) + ") is outside the " + std::to_string(p.size) + "^2 x " +
+                     std::to_string(p.layers) + " map");
+  }
   const int radius = p.pcf / 2, last = p.size - 1;
   std::vector<ShadowTap> taps;
   for (int dy = -radius; dy <= radius; ++dy) {
@@ -23,6 +36,28 @@ std::vector<ShadowTap> shadowTapsOf(const ShadowMap& map, glm::ivec3 centre, flo
     }
   }
   return taps;
+}
+
+bool tapsMatchTest(const ShadowTapTrace& t) {
+  if (t.taps.empty()) return true;
+  int lit = 0;
+  float centre = 1.0f;
+  for (const ShadowTap& tap : t.taps) {
+    lit += tap.lit ? 1 : 0;
+    if (tap.dx == 0 && tap.dy == 0) centre = tap.stored;
+  }
+  // The test's share: lit / taps in float, as both renderers divide.
+  const float share = static_cast<float>(lit) / static_cast<float>(t.taps.size());
+  return centre == t.stored && share == t.visibility;
+}
+
+std::string testsPartBeforeTaps(const std::string& nameA, const ShadowTapTrace& a, const std::string& nameB,
+                                const ShadowTapTrace& b) {
+  const auto state = [](const ShadowTapTrace& t) {
+    return !t.tested ? "not tested" : (t.inside ? "inside the map" : "outside the map");
+  };
+  if (a.tested == b.tested && a.inside == b.inside) return "";
+  return nameA + ": " + state(a) + ", " + nameB + ": " + state(b);
 }
 
 std::optional<std::size_t> firstDifferingTap(const ShadowTapTrace& a, const ShadowTapTrace& b) {
@@ -50,6 +85,7 @@ nlohmann::json shadowTapTraceToJson(const ShadowTapTrace& t) {
           {"texel", {t.texel.x, t.texel.y, t.texel.z}},
           {"depth", t.depth},         {"bias", t.bias},
           {"reference", t.reference}, {"visibility", t.visibility},
+          {"stored", t.stored},       {"taps_match_test", tapsMatchTest(t)},
           {"taps", taps}};
 }
 
@@ -76,16 +112,25 @@ std::string fragmentText(const ShadowTapTrace& t) {
 std::string formatShadowTapTraces(const std::string& nameA, const ShadowTapTrace& a, const std::string& nameB,
                                   const ShadowTapTrace* b) {
   std::ostringstream out;
-  if (!a.tested) {
-    out << "  not tested: nothing drawn at this pixel, or the light has no map\n";
-    return out.str();
+  for (const auto& [name, t] : {std::pair{&nameA, &a}, std::pair{&nameB, b}}) {
+    if (!t) continue;
+    if (!t->tested) {
+      out << "  " << *name << ": not tested (nothing drawn at this pixel, or the light has no map)\n";
+      continue;
+    }
+    out << "  " << *name << ": " << fragmentText(*t) << (t->inside ? "" : "; outside the map: lit, no tap read") << "\n";
+    if (!tapsMatchTest(*t)) {
+      out << "  " << *name << ": its taps read from the map disagree with its test's own stored depth or visibility\n";
+    }
   }
-  out << "  " << nameA << ": " << fragmentText(a) << "\n";
-  if (b && b->tested) out << "  " << nameB << ": " << fragmentText(*b) << "\n";
-  if (!a.inside) {
-    out << "  outside the map: lit, no tap read\n";
-    return out.str();
+  if (b) {
+    const std::string parted = testsPartBeforeTaps(nameA, a, nameB, *b);
+    if (!parted.empty()) {
+      out << "  the tests part before any tap: " << parted << "\n";
+      return out.str();
+    }
   }
+  if (!a.tested || !a.inside) return out.str();
   char line[400];
   std::snprintf(line, sizeof line, "    tap   dx  dy  %-44s  %s\n", (nameA + ": texel (x, y, layer), stored, outcome").c_str(),
                 b ? nameB.c_str() : "");

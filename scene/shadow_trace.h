@@ -35,19 +35,32 @@ struct ShadowTapTrace {
   float bias = 0.0f;      // depth units
   float reference = 0.0f; // what every tap compares: depth - bias
   float visibility = 1.0f;  // the test's result: the lit taps' share
+  float stored = 1.0f;      // the test's own read of the map at its texel (1 outside the map)
   std::vector<ShadowTap> taps;  // row by row (dy outer, dx inner), as the test's loops run
 };
 
 // The pcf x pcf taps around `centre` (x, y, layer) of `map`, each compared with `reference`,
-// exactly as the shading's test reads and compares them.
+// exactly as the shading's test reads and compares them. Throws InputError when the map holds
+// no depths (drawn without read-back) or `centre` lies outside it.
 std::vector<ShadowTap> shadowTapsOf(const ShadowMap& map, glm::ivec3 centre, float reference);
 
+// Whether the taps read from the map agree with what the test itself reported: the centre tap's
+// depth is the test's `stored`, and the lit taps' share its visibility. True without taps.
+bool tapsMatchTest(const ShadowTapTrace& trace);
+
+// Where two tests part before any tap ("cpu: not tested, gl: inside the map", ...): one was
+// tested or inside the map and the other not. Empty when both read their taps alike.
+std::string testsPartBeforeTaps(const std::string& nameA, const ShadowTapTrace& a, const std::string& nameB,
+                                const ShadowTapTrace& b);
+
 // The first tap where two traces differ: another texel, stored depth or outcome; also where one
-// has a tap the other has not. None: the same taps.
+// has a tap the other has not. None: the same taps (see testsPartBeforeTaps for tests that read
+// none).
 std::optional<std::size_t> firstDifferingTap(const ShadowTapTrace& a, const ShadowTapTrace& b);
 
 // {"light", "tested", "inside", "pcf", "texel": [x, y, layer], "depth", "bias", "reference",
-//  "visibility", "taps": [{"dx", "dy", "texel": [x, y, layer], "stored", "lit"}, ...]}
+//  "visibility", "stored", "taps_match_test", "taps": [{"dx", "dy", "texel": [x, y, layer],
+//  "stored", "lit"}, ...]}
 nlohmann::json shadowTapTraceToJson(const ShadowTapTrace& trace);
 
 // Tap by tap, `a` and `b` side by side under their names, the first tap where they part marked

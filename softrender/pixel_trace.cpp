@@ -289,6 +289,7 @@ std::vector<ShadowTapTrace> shadowTapTracesOf(const PixelTrace& trace, const Sce
       t.bias = terms->shadowBias;
       t.reference = terms->shadowReference;
       t.visibility = terms->shadowVisibility;
+      t.stored = terms->shadowStored;
       if (t.inside) t.taps = shadowTapsOf(*map, t.texel, t.reference);
     }
     out.push_back(std::move(t));

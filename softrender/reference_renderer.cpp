@@ -93,7 +93,8 @@ template <typename T>
 struct SampleBufferTarget {
   SampleTarget& target;
   T storedDepth(int px, int py) const { return static_cast<T>(target.depth[target.index(px, py)]); }
-  DepthFormat depthFormat() const { return DepthFormat::Float32; }  // the sample's own bits (double)
+  // Every bit of the double sample kept (storedDepthLanes rounds no double to 24 bits either).
+  DepthFormat depthFormat() const { return DepthFormat::Float32; }
   void write(int px, int py, const Vec4T<T>& colour, T depth, std::uint32_t triangleId) {
     const std::size_t i = target.index(px, py);
     target.colour[i] = glm::dvec3(colour);

@@ -129,12 +129,14 @@ void runTrace(const TraceArgs& args) {
       json["shadow_taps"] = nlohmann::json::array();
       for (const ShadowTapTrace& cpu : cpuTaps) {
         const ShadowTapTrace* gl = glTapsOf(cpu);
-        const std::optional<std::size_t> parted = gl ? firstDifferingTap(cpu, *gl) : std::nullopt;
+        const std::string before = gl ? testsPartBeforeTaps("cpu", cpu, "gl", *gl) : "";
+        const std::optional<std::size_t> parted = gl && before.empty() ? firstDifferingTap(cpu, *gl) : std::nullopt;
         json["shadow_taps"].push_back(
             {{"light", cpu.light},
              {"cpu", shadowTapTraceToJson(cpu)},
              {"gl", gl ? shadowTapTraceToJson(*gl) : nlohmann::json(nullptr)},
              {"gl_error", glTapsError.empty() ? nlohmann::json(nullptr) : nlohmann::json(glTapsError)},
+             {"parted_before_taps", before.empty() ? nlohmann::json(nullptr) : nlohmann::json(before)},
              {"first_differing_tap", parted ? nlohmann::json(*parted + 1) : nlohmann::json(nullptr)}});
       }
     }

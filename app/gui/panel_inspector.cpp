@@ -316,7 +316,10 @@ void GuiApp::drawShadowTapsSection() {
   hintText("Each PCF tap of the light's test: the map texel read (x, y, layer), the map's depth there and whether "
            "the fragment's compared depth (depth - bias) lies at or in front of it. Both backends record their own "
            "numbers (GL: phong.frag's probe) and read their own maps.");
-  if (!pin_.glShadowTapsError.empty()) errorText("GL: " + pin_.glShadowTapsError);
+  if (glCurrent && !pin_.glShadowTapsError.empty()) errorText("GL: " + pin_.glShadowTapsError);
+  // A GL probe cut short by an error in its views never reaches the taps.
+  const bool glStopped = glCurrent && !pin_.glError.empty() && pin_.glShadowTaps.empty();
+  if (glStopped) errorText("GL: not traced: " + pin_.glError);
   if (!cpuCurrent) return;
   for (const ShadowTapTrace& cpu : pin_.cpu->shadowTaps) {
     const ShadowTapTrace* gl = glCurrent ? tapsOfLight(pin_.glShadowTaps, cpu.light) : nullptr;
@@ -336,7 +339,11 @@ void GuiApp::drawShadowTapsSection() {
     fragment("CPU", cpu);
     if (gl && gl->tested) fragment("GL ", *gl);
     if (monoFont_) ImGui::PopFont();
-    if (!gl && pin_.glShadowTapsError.empty()) hintText("GL: waiting for the worker...");
+    if (!gl && pin_.glShadowTapsError.empty() && !glStopped) hintText("GL: waiting for the worker...");
+    if (gl) {
+      const std::string parted = testsPartBeforeTaps("CPU", cpu, "GL", *gl);
+      if (!parted.empty()) warningText("The tests part before any tap: " + parted + ".");
+    }
     if (!cpu.inside) {
       hintText("Outside the map: lit, no tap read.");
       ImGui::PopID();
@@ -344,7 +351,7 @@ void GuiApp::drawShadowTapsSection() {
     }
     const std::size_t rows = std::max(cpu.taps.size(), gl ? gl->taps.size() : 0);
     std::size_t parted = rows;  // a plain index (rows = none): see formatSsrMarchTraces
-    if (gl) {
+    if (gl && testsPartBeforeTaps("CPU", cpu, "GL", *gl).empty()) {
       const std::optional<std::size_t> first = firstDifferingTap(cpu, *gl);
       if (first) {
         parted = *first;

@@ -398,7 +398,11 @@ TEST(CliTrace, ShowsEachShadowTapOnBothRenderers) {
   const nlohmann::json& light = j["shadow_taps"][0];
   EXPECT_EQ(light["light"], 0);
   EXPECT_TRUE(light["first_differing_tap"].is_null());
-  EXPECT_TRUE(light["gl_error"].is_null());
+  EXPECT_TRUE(light["parted_before_taps"].is_null());
+  ASSERT_TRUE(light["gl_error"].is_null()) << light["gl_error"];
+  ASSERT_TRUE(light["gl"].is_object());
+  EXPECT_TRUE(light["cpu"]["taps_match_test"].get<bool>());
+  EXPECT_TRUE(light["gl"]["taps_match_test"].get<bool>());
   const nlohmann::json& cpu = light["cpu"];
   const nlohmann::json& gl = light["gl"];
   ASSERT_TRUE(cpu["tested"].get<bool>() && cpu["inside"].get<bool>()) << json.out;

@@ -78,6 +78,14 @@ TEST(Decisions, ViewsOfAnotherSizeAreRefused) {
   CompareResult result = compareDetailed(frame, frame);
   const RenderOutput small = makeSolidOutput(1, 1, 0, 0, 0);
   EXPECT_THROW(classifyDecisions(result, oneView(small), oneView(small)), InputError);
+  // A view without its image, or an image of another size, is refused before any pixel is read.
+  DecisionViews missing = oneView(frame);
+  missing.outputs.clear();
+  EXPECT_THROW(classifyDecisions(result, oneView(frame), missing), InputError);
+  DecisionViews shrunk = oneView(frame);
+  shrunk.outputs[0] = small;
+  EXPECT_THROW(classifyDecisions(result, oneView(frame), shrunk), InputError);
+  EXPECT_THROW(decisionDiffersAt(oneView(frame), oneView(frame), 4), InputError);
 }
 
 TEST(Decisions, TheViewsFollowWhatTheSceneTurnsOn) {

@@ -329,7 +329,7 @@ TEST_P(SceneSuite, CpuMatchesLlvmpipeWithinTolerance) {
 
   // Each light's shadow map, as each renderer drew it: window depth within the depth
   // tolerance the frame's classification uses, texel for texel (the diff images are written
-  // when one is not).
+  // when one is not), and in fact to the bit.
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     if (!scene.lights[i].shadow) continue;
     ASSERT_GT(cpu.shadowMaps.size(), i);
@@ -342,6 +342,8 @@ TEST_P(SceneSuite, CpuMatchesLlvmpipeWithinTolerance) {
                                                      a.projection.layers, kDefaultDepthTolerance);
     EXPECT_GT(std::count_if(a.depth.begin(), a.depth.end(), [](float z) { return z < 1.0f; }), 0)
         << "light " << i << "'s map holds no surface: the comparison would prove nothing";
+    // Both maps are float depth drawn on the same planes: the same bits (docs/shadows.md).
+    EXPECT_EQ(d.maxAbsDiff, 0.0) << "light " << i << "'s shadow map differs from GL's by " << d.maxAbsDiff;
     if (d.overTolerance > 0 || d.nonFinite > 0) {
       const std::string dir = std::string(TWINRASTER_TEST_OUT) + "/suite/" + c.name;
       std::filesystem::create_directories(dir);

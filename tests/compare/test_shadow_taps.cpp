@@ -36,6 +36,10 @@ void expectSameTaps(const ShadowTapTrace& cpu, const ShadowTapTrace& gl, const s
   EXPECT_EQ(cpu.bias, gl.bias);
   EXPECT_EQ(cpu.reference, gl.reference);
   EXPECT_EQ(cpu.visibility, gl.visibility);
+  EXPECT_EQ(cpu.stored, gl.stored);
+  EXPECT_TRUE(tapsMatchTest(cpu));  // the taps read from the map say what the test said
+  EXPECT_TRUE(tapsMatchTest(gl));
+  EXPECT_TRUE(testsPartBeforeTaps("cpu", cpu, "gl", gl).empty());
   ASSERT_EQ(cpu.taps.size(), gl.taps.size());
   EXPECT_FALSE(firstDifferingTap(cpu, gl).has_value());
 }
