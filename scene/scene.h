@@ -147,6 +147,9 @@ struct OutputDesc {
   // opaque images, 0 transparent ones; either way coverage comes from the triangle ids
   // (RenderOutput), never from alpha.
   vec4 background{0.05f, 0.05f, 0.08f, 1.0f};
+  // The scene is meant to draw nothing (a test of clipping or culling): no warning for an empty
+  // frame, and `compare --targets` passes it (compare/empty_frame.h).
+  bool expectEmpty = false;
 };
 
 struct Node {

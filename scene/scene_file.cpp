@@ -416,10 +416,11 @@ class SceneReader {
 
   void readOutput(const Json& j, const std::string& path) {
     requireObject(j, path);
-    checkKeys(j, path, {"width", "height", "background"}, "output");
+    checkKeys(j, path, {"width", "height", "background", "expect_empty"}, "output");
     if (const Json* v = find(j, "width")) scene_.output.width = readInt(*v, childPath(path, "width"), 1, kMaxImageSide);
     if (const Json* v = find(j, "height")) scene_.output.height = readInt(*v, childPath(path, "height"), 1, kMaxImageSide);
     if (const Json* v = find(j, "background")) scene_.output.background = readBackground(*v, childPath(path, "background"));
+    if (const Json* v = find(j, "expect_empty")) scene_.output.expectEmpty = readBool(*v, childPath(path, "expect_empty"));
     if (const std::string problem = renderSizeProblem(scene_.output.width, scene_.output.height); !problem.empty()) {
       fail(path, problem);
     }

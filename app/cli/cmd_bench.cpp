@@ -454,6 +454,7 @@ void runBench(BenchArgs args) {
   }
 
   const std::uint64_t covered = coveredPixels(cpuOut);
+  warnIfEmpty(scene, cpuOut, true);  // timing an empty frame measures the clipper, not the pipeline
   Json json;
   json["scene"] = args.request.scenePath;
   json["width"] = width;

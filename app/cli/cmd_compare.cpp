@@ -7,6 +7,7 @@
 #include "compare/artifacts.h"
 #include "compare/capture_faces.h"
 #include "compare/decisions.h"
+#include "compare/empty_frame.h"
 #include "compare/heatmap.h"
 #include "compare/metrics.h"
 #include "compare/pass_buffers.h"
@@ -376,6 +377,18 @@ void runCompare(CompareArgs& args) {
     fill(limits.maxCoverageMismatchPer10k, targets.maxCoverageMismatchPer10k);
   }
   std::vector<ThresholdViolation> violations = checkThresholds(result.metrics, limits);
+  // Two empty frames agree perfectly and prove nothing: said, and over the targets unless the
+  // scene expects it.
+  const std::string emptyReason = result.metrics.coveredEither() == 0 ? emptyFrameReason(scene, cpuOut) : "";
+  if (!emptyReason.empty() && !scene.output.expectEmpty) {
+    warnIfEmpty(scene, cpuOut, true);
+    if (args.issueTargets && llvmpipe) {
+      ThresholdViolation v;
+      v.key = "covered";
+      v.message = "covered: no pixel drawn by either renderer, and the scene does not set output.expect_empty";
+      violations.push_back(std::move(v));
+    }
+  }
   // A captured environment: each renderer drew its own faces; they meet the same limits.
   std::optional<CapturedFacesComparison> faces;
   if (cpuOut.capturedFaces && glOut.capturedFaces) {
@@ -419,6 +432,8 @@ void runCompare(CompareArgs& args) {
   nlohmann::json decisionViewNames = nlohmann::json::array();
   for (const View v : decisionViews) decisionViewNames.push_back(std::string(toString(v)));
   mergeExtraKeys(json, {{"decision_views", decisionViewNames}});
+  mergeExtraKeys(json, {{"empty_frame", emptyReason.empty() ? nlohmann::json(nullptr) : nlohmann::json(emptyReason)},
+                        {"expect_empty", scene.output.expectEmpty}});
   mergeExtraKeys(json, {{"gl_context", glContextString()},
                         {"targets", {{"requested", args.issueTargets},
                                      {"applied", args.issueTargets && targetsSkipped.empty()},

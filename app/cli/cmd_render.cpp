@@ -47,6 +47,7 @@ void runRender(const RenderArgs& args) {
   }
   const RenderOutput output = renderer->render(scene, scene.settings, width, height);
   savePng(args.outPath, imageFromOutput(output));
+  warnIfEmpty(scene, output, args.backend == "cpu");
   if (args.request.verbose) {
     const RenderStats& s = output.stats;
     std::cerr << rendererName << ": " << width << "x" << height << ", " << s.milliseconds << " ms, triangles in "

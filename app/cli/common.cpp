@@ -1,5 +1,6 @@
 #include "app/cli/common.h"
 
+#include "compare/empty_frame.h"
 #include "scene/errors.h"
 #include "scene/image.h"
 #include "scene/projection_checks.h"
@@ -125,6 +126,12 @@ void printSceneWarnings(const Scene& scene) {
               << ": llvmpipe's elliptical filter ignores the ratio, so every value above 1 draws the same "
                  "picture on both renderers (docs/textures.md, \"Anisotropy\")\n";
   }
+}
+
+void warnIfEmpty(const Scene& scene, const RenderOutput& frame, bool clipStats) {
+  if (scene.output.expectEmpty) return;
+  const std::string reason = emptyFrameReason(scene, frame, clipStats);
+  if (!reason.empty()) std::cerr << "warning: " << reason << " (output.expect_empty true says it is meant)\n";
 }
 
 Scene loadRequestedScene(const RenderRequest& request) {

@@ -36,6 +36,11 @@ std::vector<std::string> overrideArguments(const RenderRequest& request);
 // reads but neither renderer draws yet.
 void printSceneWarnings(const Scene& scene);
 Scene loadRequestedScene(const RenderRequest& request);
+
+// "warning: nothing was drawn: ..." on stderr when `frame` covers no pixel and the scene does
+// not set output.expect_empty (compare/empty_frame.h; `clipStats`: the frame is the CPU's, whose
+// statistics say what its clipper and culler removed).
+void warnIfEmpty(const Scene& scene, const RenderOutput& frame, bool clipStats);
 int requestedWidth(const RenderRequest& request, const Scene& scene);
 int requestedHeight(const RenderRequest& request, const Scene& scene);
 

@@ -126,6 +126,46 @@ TEST(CliHostile, RealWorldObjSample) {
   EXPECT_EQ(nlohmann::json::parse(r.out).at("nan_pixels"), 0);
 }
 
+// Models the default camera does not see (three of assimp-testmodels' OBJ files lie outside
+// the view or cover no pixel): compare says nothing was drawn, and why, and --targets fails;
+// a scene that says it expects an empty frame passes without the warning.
+TEST(CliHostile, AComparisonOfNothingFailsTheTargets) {
+  if (!fs::is_directory(kAssimpObj)) {
+    GTEST_SKIP() << kAssimpObj << " is missing: install Debian's assimp-testmodels (scripts/install-deps.sh does)";
+  }
+  const auto dir = testDir("cli_hostile_empty");
+  for (const char* name : {"regr01.obj", "regr_3429812.obj", "multiple_spaces.obj"}) {
+    SCOPED_TRACE(name);
+    // The scene's own defaults: back faces culled, the default camera.
+    const fs::path scene = dir / (fs::path(name).stem().string() + ".json");
+    writeText(scene, R"({"nodes": [{"name": "m", "mesh": {"type": "obj", "path": )" +
+                         nlohmann::json((kAssimpObj / name).string()).dump() + "}}]}");
+    const RunResult r = runCli("compare " + quoted(scene) + " --out-dir " + quoted(dir / "out") +
+                                   " --width 160 --height 120 --repeat 1 --targets --json",
+                               dir);
+    EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
+    expectContains(r.err, "warning: nothing was drawn: ");
+    expectContains(r.err, "the camera at (0, 1, 4) looks at (0, 0, 0)");
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j.at("covered_cpu"), 0);
+    EXPECT_TRUE(j.at("empty_frame").is_string());
+    const RunResult render = runCli("render " + quoted(scene) + " --backend cpu --width 160 --height 120 --out " +
+                                        quoted(dir / "empty.png"),
+                                    dir);
+    EXPECT_EQ(render.exitCode, 0) << render.err;
+    expectContains(render.err, "warning: nothing was drawn: ");
+  }
+  // The same scene with output.expect_empty: no warning, and the targets hold.
+  const fs::path meant = dir / "meant.json";
+  writeText(meant, R"({"output": {"expect_empty": true}, "nodes": [{"name": "m", "mesh": {"type": "obj", "path": )" +
+                       nlohmann::json((kAssimpObj / "regr01.obj").string()).dump() + "}}]}");
+  const RunResult r = runCli("compare " + quoted(meant) + " --out-dir " + quoted(dir / "out") +
+                                 " --width 160 --height 120 --repeat 1 --targets",
+                             dir);
+  EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_EQ(r.err.find("nothing was drawn"), std::string::npos) << r.err;
+}
+
 // Cameras beyond what float resolves (issue 22, classes 7-9): refused with exit 2 when no
 // faithful picture exists (a view narrower than one float step, a projection out of range),
 // drawn as OpenGL draws it with a "warning:" line when the picture is GL's but not what the
