@@ -52,12 +52,14 @@ std::string emptyFrameReason(const Scene& scene, const RenderOutput& frame, bool
     why = triangles(s.trianglesProduced) + " reached the rasterizer and none covers a pixel centre "
           "(too small or too thin at this size)";
   } else if (s.trianglesCulled >= s.trianglesIn) {
-    why = "all its " + triangles(s.trianglesIn) + " were culled (turned away under settings.cull, or of zero area)";
+    why = (s.trianglesIn == 1 ? "its one triangle was" : "all its " + triangles(s.trianglesIn) + " were") +
+          " culled (turned away under settings.cull, or of zero area)";
   } else if (s.trianglesCulled > 0) {
     why = "none of its " + triangles(s.trianglesIn) + " was drawn: " + std::to_string(s.trianglesCulled) +
           " were culled (turned away under settings.cull, or of zero area) and the rest lie outside the view";
   } else {
-    why = "all its " + triangles(s.trianglesIn) + " lie outside the view (clipped away)";
+    why = (s.trianglesIn == 1 ? "its one triangle lies" : "all its " + triangles(s.trianglesIn) + " lie") +
+          " outside the view (clipped away)";
   }
   return "nothing was drawn: " + why + "; " + whereText(scene);
 }
