@@ -57,7 +57,7 @@ SANITIZE_SKIP := $(SANITIZE_SKIP_TARGETS)|^CpuRenderer\.EveryViewOfEveryAssetSce
 # (hostile = fuzz/'s corpus replay and real-world models; the fuzz_* executables are built too,
 # for scripts/run-fuzzers.sh to reuse: FUZZ_BUILD_DIR=build-sanitize).
 SANITIZE_MODULES ?=
-SANITIZE_TARGETS := $(if $(SANITIZE_MODULES),fuzzers $(patsubst hostile,test_corpus_replay test_real_world_models,$(patsubst %,tests_%,$(filter-out hostile,$(SANITIZE_MODULES))) $(filter hostile,$(SANITIZE_MODULES))),all)
+SANITIZE_TARGETS := $(if $(SANITIZE_MODULES),fuzzers $(patsubst hostile,tests_hostile,$(patsubst %,tests_%_all,$(filter-out hostile,$(SANITIZE_MODULES))) $(filter hostile,$(SANITIZE_MODULES))),all)
 SANITIZE_LABELS := $(if $(SANITIZE_MODULES),-L '^($(subst $(eval) ,|,$(strip $(SANITIZE_MODULES))))$$')
 
 sanitize: deps

@@ -12,6 +12,7 @@
 #include "scene/scene_file.h"
 #include "softrender/cpu_renderer.h"
 #include "softrender/framebuffer.h"
+#include "tests/missing_dependency.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -123,7 +124,7 @@ std::size_t coveredPixels(const RenderOutput& output) {
 
 TEST(RealWorldModels, EveryAssimpObjRendersOrIsRefusedClearly) {
   if (!fs::is_directory(kModelRoot)) {
-    GTEST_SKIP() << kModelRoot << " is missing: install Debian's assimp-testmodels (scripts/install-deps.sh does)";
+    TWR_MISSING_DEPENDENCY("assimp-testmodels") << kModelRoot << " is missing: install Debian's assimp-testmodels (scripts/install-deps.sh does)";
   }
   const std::vector<fs::path> files = objFiles();
   ASSERT_FALSE(files.empty()) << "no .obj files under " << kModelRoot;

@@ -1,9 +1,12 @@
 #include "scene/environment_error.h"
 
+#include "scene/statistics.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <thread>
+#include <utility>
 
 namespace twr {
 
@@ -52,10 +55,7 @@ DiffuseLightComparison summarise(std::vector<double> errors, const std::vector<g
     }
   }
   c.rmse = std::sqrt(sumSquares / static_cast<double>(errors.size()));
-  const std::size_t rank =
-      std::min(errors.size() - 1, static_cast<std::size_t>(std::ceil(0.99 * static_cast<double>(errors.size()))) - 1);
-  std::nth_element(errors.begin(), errors.begin() + static_cast<std::ptrdiff_t>(rank), errors.end());
-  c.p99 = errors[rank];
+  c.p99 = quantileOf(std::move(errors), 0.99);
   return c;
 }
 
@@ -85,9 +85,7 @@ ParameterizationError measureParameterizationError(const CubeMap& cube, const Pa
     }
   }
   e.rmse = std::sqrt(sumSquares / static_cast<double>(count));
-  const std::size_t rank = std::min(count - 1, static_cast<std::size_t>(std::ceil(0.99 * static_cast<double>(count))) - 1);
-  std::nth_element(errors.begin(), errors.begin() + static_cast<std::ptrdiff_t>(rank), errors.end());
-  e.p99 = errors[rank];
+  e.p99 = quantileOf(std::move(errors), 0.99);
   return e;
 }
 

@@ -1,5 +1,7 @@
 #include "scene/image.h"
 
+#include "scene/work_counters.h"
+
 #include "scene/block_compression.h"
 #include "scene/dds.h"
 #include "scene/errors.h"
@@ -590,6 +592,7 @@ Image decodeImage(const std::uint8_t* bytes, std::size_t size, const std::string
   const std::uint8_t* decodeBytes = bmpPadded.empty() ? bytes : bmpPadded.data();
   const int decodeLength = bmpPadded.empty() ? length : static_cast<int>(bmpPadded.size());
   int decodedWidth = 0, decodedHeight = 0;
+  workCounters().imagesDecoded.fetch_add(1, std::memory_order_relaxed);
   std::unique_ptr<stbi_uc, void (*)(void*)> data(
       stbi_load_from_memory(decodeBytes, decodeLength, &decodedWidth, &decodedHeight, &channels, 4), stbi_image_free);
   if (!data) {
@@ -618,6 +621,7 @@ ImageF decodeHdrImage(const std::uint8_t* bytes, std::size_t size, const std::st
   const std::string problem = hdrDataProblem(bytes, size, width, height);
   if (!problem.empty()) throw InputError(nameForMessages + ": corrupt Radiance HDR image (" + problem + ")");
   int decodedWidth = 0, decodedHeight = 0;
+  workCounters().imagesDecoded.fetch_add(1, std::memory_order_relaxed);
   std::unique_ptr<float, void (*)(void*)> data(
       stbi_loadf_from_memory(bytes, length, &decodedWidth, &decodedHeight, &channels, 4), stbi_image_free);
   if (!data) throw InputError(nameForMessages + ": cannot decode the Radiance HDR image (" + stbReason() + ")");

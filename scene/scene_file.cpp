@@ -10,6 +10,7 @@
 #include "scene/obj_loader.h"
 #include "scene/primitives.h"
 #include "scene/read_file.h"
+#include "scene/work_counters.h"
 
 #include <nlohmann/json.hpp>
 
@@ -188,6 +189,7 @@ class JsonDocumentBuilder {
   }
 
   Json* place(Json&& value) {
+    workCounters().jsonValuesBuilt.fetch_add(1, std::memory_order_relaxed);
     if (frames_.empty()) {
       root_ = std::move(value);
       return &root_;
@@ -1127,6 +1129,7 @@ class SceneReader {
     checkTriangleBudget(plannedTriangleCount(desc), path);  // before building: a typo must not allocate gigabytes
     Mesh mesh;
     try {
+      workCounters().meshesBuilt.fetch_add(1, std::memory_order_relaxed);
       mesh = buildMesh(desc);
     } catch (const InputError& e) {
       fail(path, e.what());

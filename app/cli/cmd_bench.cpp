@@ -26,16 +26,14 @@
 #include "app/cli/commands.h"
 #include "scene/json_text.h"
 #include "app/cli/common.h"
+#include "compare/timing.h"
 #include "glrender/gl_renderer.h"
 #include "scene/errors.h"
 #include "scene/scene.h"
+#include "scene/statistics.h"
 #include "softrender/cpu_renderer.h"
 
 #include <nlohmann/json.hpp>
-
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -52,7 +50,6 @@
 #include <thread>
 #include <vector>
 
-extern char** environ;
 
 namespace twr::cli {
 namespace {
@@ -85,42 +82,18 @@ struct BenchArgs {
   bool preciseChild = false;  // internal: time GL in precise sampling only, print JSON (see --gl-precise)
 };
 
-// Summary of one backend's frame times, milliseconds.
-struct Timing {
-  std::vector<double> frames;
-  double median = 0.0, min = 0.0, max = 0.0;
-  double q1 = 0.0, q3 = 0.0;  // quartiles: the spread is q3 - q1 (interquartile range)
-  // Median CPU time all threads of the process used per frame: close to the wall time times
-  // the threads when they all work and nothing else runs; it stays put when other processes
-  // take the cores, which the wall time does not.
+// Summary of one backend's frame times (compare/timing.h), milliseconds, and the median CPU time
+// all threads of the process used per frame: close to the wall time times the threads when
+// they all work and nothing else runs; it stays put when other processes take the cores, which
+// the wall time does not.
+struct Timing : FrameTimes {
   double processMedian = 0.0;
 };
 
-// Linear interpolation between order statistics (the usual "type 7" quantile).
-double quantile(const std::vector<double>& sorted, double q) {
-  const double position = q * static_cast<double>(sorted.size() - 1);
-  const std::size_t below = static_cast<std::size_t>(position);
-  const std::size_t above = std::min(below + 1, sorted.size() - 1);
-  const double fraction = position - static_cast<double>(below);
-  return sorted[below] + (sorted[above] - sorted[below]) * fraction;
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return quantile(values, 0.5);
-}
-
 Timing summarise(std::vector<double> frames, std::vector<double> processMs) {
   Timing t;
-  std::sort(processMs.begin(), processMs.end());
-  t.processMedian = quantile(processMs, 0.5);
-  t.frames = frames;
-  std::sort(frames.begin(), frames.end());
-  t.min = frames.front();
-  t.max = frames.back();
-  t.median = quantile(frames, 0.5);
-  t.q1 = quantile(frames, 0.25);
-  t.q3 = quantile(frames, 0.75);
+  static_cast<FrameTimes&>(t) = summariseFrameTimes(std::move(frames));
+  t.processMedian = medianOf(std::move(processMs));
   return t;
 }
 
@@ -146,23 +119,17 @@ Timing timingFromJson(const Json& json, const std::string& prefix) {
   return t;
 }
 
-double processCpuMs() {
-  timespec now{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
-  return static_cast<double>(now.tv_sec) * 1e3 + static_cast<double>(now.tv_nsec) * 1e-6;
-}
-
 // One frame: its wall time, and the CPU time of the whole process meanwhile, milliseconds.
 struct FrameTime {
   double wallMs = 0.0, processMs = 0.0;
   double readbackMs = 0.0;  // of wallMs: the renderer's copy of finished buffers (RenderStats)
 };
 FrameTime renderTimed(Renderer& renderer, const Scene& scene, int width, int height, RenderOutput& out) {
-  const double processStart = processCpuMs();
+  const double processStart = processCpuMilliseconds();
   const auto start = Clock::now();
   out = renderer.render(scene, scene.settings, width, height);
   const double wall = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-  return {wall, processCpuMs() - processStart, out.stats.readbackMilliseconds};
+  return {wall, processCpuMilliseconds() - processStart, out.stats.readbackMilliseconds};
 }
 
 // Pixels a triangle covers (coveredAt). The lean GL frame reads back colour alone, so its
@@ -231,40 +198,20 @@ std::vector<std::string> childArguments(const BenchArgs& args, int width, int he
 
 // Runs /proc/self/exe with `arguments`, its stdout captured (stderr shared, so its progress
 // shows); returns the stdout text. Throws InputError when it cannot start or fails.
-std::string runSelf(const std::vector<std::string>& arguments) {
-  std::array<int, 2> pipeEnds{};
-  if (pipe(pipeEnds.data()) != 0) throw InputError("bench --gl-precise: cannot create a pipe for the child process");
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addclose(&actions, pipeEnds[0]);
-  posix_spawn_file_actions_adddup2(&actions, pipeEnds[1], STDOUT_FILENO);
-  posix_spawn_file_actions_addclose(&actions, pipeEnds[1]);
-  std::vector<char*> argv;
-  for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  pid_t child = 0;
-  const int spawned = posix_spawn(&child, "/proc/self/exe", &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  close(pipeEnds[1]);
-  if (spawned != 0) {
-    close(pipeEnds[0]);
-    throw InputError("bench --gl-precise: cannot start /proc/self/exe (error " + std::to_string(spawned) + ")");
+std::string runSelf(std::vector<std::string> arguments) {
+  ChildProcess child;
+  child.program = "/proc/self/exe";
+  child.argv = std::move(arguments);
+  child.captureStdout = true;
+  const ChildResult result = runChildProcess(child);
+  if (result.spawnError != 0) {
+    throw InputError("bench --gl-precise: cannot start /proc/self/exe (error " + std::to_string(result.spawnError) + ")");
   }
-  std::string text;
-  std::array<char, 4096> buffer{};
-  for (;;) {
-    const ssize_t n = read(pipeEnds[0], buffer.data(), buffer.size());
-    if (n <= 0) break;
-    text.append(buffer.data(), static_cast<std::size_t>(n));
-  }
-  close(pipeEnds[0]);
-  int status = 0;
-  waitpid(child, &status, 0);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+  if (result.exitCode != 0) {
     throw InputError("bench --gl-precise: the child process timing llvmpipe's precise sampling failed (status " +
-                     std::to_string(status) + ")");
+                     std::to_string(result.waitStatus) + ")");
   }
-  return text;
+  return result.stdoutText;
 }
 
 std::string fixed(double v, int digits) {
@@ -477,12 +424,12 @@ void runBench(BenchArgs args) {
   addTiming(json, "gl_lean", glLeanTiming);
   json["ratio_cpu_over_gl"] = cpuTiming.median / glTiming.median;
   json["ratio_cpu_over_gl_lean"] = cpuTiming.median / glLeanTiming.median;
-  json["gl_lean_readback_ms_median"] = median(glLeanReadbackMs);
+  json["gl_lean_readback_ms_median"] = medianOf(glLeanReadbackMs);
   // llvmpipe's frame without glReadPixels (the CPU pipeline has no such copy: it draws into
   // the output's buffers): the strictest comparison, drawing against drawing.
-  const double glDrawMedian = median(glDrawMs);
+  const double glDrawMedian = medianOf(glDrawMs);
   json["gl_draw_ms_median"] = glDrawMedian;
-  json["gl_readback_ms_median"] = median(glReadbackMs);
+  json["gl_readback_ms_median"] = medianOf(glReadbackMs);
   json["ratio_cpu_over_gl_draw"] = cpuTiming.median / glDrawMedian;
   json["cpu_ns_per_covered_pixel"] = covered > 0 ? cpuTiming.median * 1e6 / static_cast<double>(covered) : 0.0;
   json["gl_ns_per_covered_pixel"] = covered > 0 ? glTiming.median * 1e6 / static_cast<double>(covered) : 0.0;
@@ -499,7 +446,7 @@ void runBench(BenchArgs args) {
   if (args.allIsas) {
     Json perIsa = Json::array();
     for (const IsaRun& run : isaRuns) {
-      const double runMedian = median(run.ms);
+      const double runMedian = medianOf(run.ms);
       perIsa.push_back(Json{{"cpu_isa", std::string(toString(run.isa))},
                             {"cpu_ms_median", runMedian},
                             {"ratio_cpu_over_gl_lean", runMedian / glLeanTiming.median}});

@@ -17,6 +17,7 @@
 #include "glrender/gl_renderer.h"
 #include "raytrace/ssr_reference_report.h"
 #include "scene/errors.h"
+#include "scene/statistics.h"
 #include "scene/sky_view.h"
 #include "softrender/cpu_renderer.h"
 
@@ -93,12 +94,6 @@ void printReferenceSummary(const SsrReference& ref, const std::vector<SsrReferen
     std::cout << "\n";
   }
   std::cout << "wrote " << path << "\n";
-}
-
-double medianOf(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 // Renders `repeat` times and keeps the last output; returns the median wall time in ms.

@@ -3,8 +3,9 @@
 // writes DIR/report.html, DIR/results.csv and the height-field pictures (docs/report.md). Also registers the hidden `report-gl-child` subcommand the
 // sweeps run in child processes when a knob needs a fresh llvmpipe.
 #include "app/cli/commands.h"
-#include "app/cli/report_html.h"
-#include "app/cli/report_sweeps.h"
+#include "app/cli/common.h"
+#include "report/html.h"
+#include "report/sweeps.h"
 #include "scene/errors.h"
 #include "scene/image.h"
 
@@ -15,6 +16,13 @@
 
 namespace twr::cli {
 namespace {
+
+using report::ReportOptions;
+using report::ReportData;
+using report::runReportSweeps;
+using report::runGlChild;
+using report::writeReportHtml;
+using report::writeResultsCsv;
 
 struct ReportArgs {
   std::string outDir = "out/report";
@@ -62,8 +70,8 @@ void runReport(const ReportArgs& args) {
   namespace fs = std::filesystem;
   ReportOptions options;
   options.quick = args.quick;
-  options.gl = args.gl;
-  requestedGlOptions(args.gl);  // a bad combination exits 2 before any sweep runs
+  options.gl = requestedGlOptions(args.gl);  // a bad combination exits 2 before any sweep runs
+  options.glChildArguments = glRequestArguments(args.gl);
   options.assetsDir = findAssets(args.assetsDir);
   options.selfExecutable = "/proc/self/exe";
   std::error_code error;
@@ -120,7 +128,8 @@ const bool registered = registerCommand(60, [](CLI::App& app) {
   childCmd->add_option("--out", child->outPath)->required();
   addGlOptions(*childCmd, child->gl);
   childCmd->callback([child] {
-    runGlChild(child->scenePath, child->width, child->height, child->frames, child->fastSampling, child->gl,
+    runGlChild(child->scenePath, child->width, child->height, child->frames, child->fastSampling,
+               requestedGlOptions(child->gl),
                child->outPath);
   });
 });

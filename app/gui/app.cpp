@@ -1,5 +1,5 @@
 #include "app/gui/app.h"
-#include "app/gui/scene_picker.h"
+#include "gui/scene_picker.h"
 
 #include "compare/heatmap.h"
 #include "compare/side_by_side.h"
@@ -428,6 +428,7 @@ void GuiApp::frame(bool& finalFrame, bool present) {
     state["camera"] = {{"near", doc_.scene.camera.near}, {"far", doc_.scene.camera.far}};
     state["frames"] = ImGui::GetFrameCount();
     state["presented"] = presentedFrames_ + (present ? 1 : 0);
+    state["clock"] = glfwGetTime();  // seconds: the clock the redraw policy runs on
     state["settled"] = settled();
     // Every loaded map with its options, whether it is drawn, and its Texture object (a new
     // one after each option edit).

@@ -2,8 +2,8 @@
 // scene. Both render on workers (gl_worker.h, cpu_worker.h); this (the UI) thread only copies
 // the scene for them, takes their finished frames and uploads them as textures.
 #include "app/gui/app.h"
-#include "app/gui/text_concat.h"
-#include "app/gui/debug_views.h"
+#include "gui/text_concat.h"
+#include "gui/debug_views.h"
 
 #include "compare/heatmap.h"
 #include "compare/side_by_side.h"

@@ -1,6 +1,6 @@
 // twinraster-gui: the desktop app. See `twinraster-gui --help` and docs/gui.md.
 #include "app/gui/app.h"
-#include "app/gui/gui_options.h"
+#include "gui/gui_options.h"
 #include "scene/errors.h"
 
 #include <CLI/CLI.hpp>

@@ -2,8 +2,8 @@
 // debug view read back from both at that pixel, and the CPU pixel trace (which triangles
 // reach it, clipping, barycentrics, uv, T/B/N, the normal-map texel, each lighting term).
 #include "app/gui/app.h"
-#include "app/gui/text_concat.h"
-#include "app/gui/debug_views.h"
+#include "gui/text_concat.h"
+#include "gui/debug_views.h"
 #include "app/gui/ui_widgets.h"
 #include "scene/shadow_map.h"
 #include "scene/shadow_trace.h"

@@ -1,9 +1,9 @@
 // The Rendering tab: the CPU renderer's own choices (path and SIMD target), then every field
 // of RenderSettings, applied to both backends.
 #include "app/gui/app.h"
-#include "app/gui/debug_views.h"
+#include "gui/debug_views.h"
 #include "app/gui/ui_widgets.h"
-#include "app/gui/text_concat.h"
+#include "gui/text_concat.h"
 #include "scene/environment.h"
 #include "softrender/cpu_renderer.h"
 

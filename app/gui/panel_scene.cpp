@@ -1,9 +1,9 @@
 // The Scene tab: open a file, the node tree with transforms and live mesh parameters,
 // materials, lights, ambient and the output size.
 #include "app/gui/app.h"
-#include "app/gui/material_maps.h"
-#include "app/gui/scene_picker.h"
-#include "app/gui/text_concat.h"
+#include "gui/material_maps.h"
+#include "gui/scene_picker.h"
+#include "gui/text_concat.h"
 #include "app/gui/ui_widgets.h"
 
 #include "compare/capture_faces.h"

@@ -1,7 +1,7 @@
 // Stats: per-backend frame times (moving median) and pipeline counts, the GL context, and
 // the live diff metrics of the last frame pair both backends rendered from the same edit.
 #include "app/gui/app.h"
-#include "app/gui/text_concat.h"
+#include "gui/text_concat.h"
 #include "app/gui/ui_widgets.h"
 #include "glrender/gl_renderer.h"
 

@@ -1,8 +1,8 @@
 // The view panel: toolbar, the images in the chosen view mode, mouse camera control and
 // pixel pinning, and a status line about the frames on screen.
 #include "app/gui/app.h"
-#include "app/gui/text_concat.h"
-#include "app/gui/camera_control.h"
+#include "gui/text_concat.h"
+#include "gui/camera_control.h"
 #include "app/gui/ui_widgets.h"
 
 #include "compare/colours.h"

@@ -9,6 +9,9 @@
 
 #include <algorithm>
 #include <array>
+#include <fstream>
+#include <iterator>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -65,11 +68,23 @@ TEST(CliCpuOptions, ScalarAndAutoWorkOnEveryCommand) {
   }
 }
 
+// Each command says it ran the teaching path, and its picture is the fast path's to the bit.
 TEST(CliCpuOptions, TeachingPathWorksOnEveryCommand) {
   const auto dir = testDir("cli_cpu_options");
+  const std::map<std::string, std::string> says = {{"render", "cpu teaching)"},
+                                                   {"compare", " ms (teaching)"},
+                                                   {"trace", "rendered by the cpu path: teaching"},
+                                                   {"bench", "  cpu teaching "}};
   for (const Command& c : commands(dir)) {
     const RunResult r = runCli(c.args + " --cpu-path teaching", dir);
     EXPECT_EQ(r.exitCode, 0) << c.args << " --cpu-path teaching\n" << r.err;
+    EXPECT_NE(r.out.find(says.at(c.name)), std::string::npos) << c.name << " does not say '" << says.at(c.name)
+                                                               << "':\n" << r.out;
+    if (c.name != "render") continue;
+    const std::string teaching = readFile(dir / "cpu.png");
+    ASSERT_EQ(runCli(c.args, dir).exitCode, 0);
+    EXPECT_FALSE(teaching.empty());
+    EXPECT_EQ(readFile(dir / "cpu.png"), teaching) << "the teaching and fast paths drew different PNGs";
   }
 }
 

@@ -4,6 +4,7 @@
 // without --targets verdicts; bad combinations exit 2 naming what is missing.
 // Skips only when libEGL.so.1 is missing (CI installs it).
 #include "cli_run.h"
+#include "tests/missing_dependency.h"
 
 #include <dlfcn.h>
 
@@ -33,7 +34,7 @@ bool eglInstalled() {
 }
 
 #define SKIP_WITHOUT_EGL() \
-  if (!eglInstalled()) GTEST_SKIP() << "libEGL.so.1 is not installed here (Debian: libegl1, libegl-mesa0)"
+  if (!eglInstalled()) TWR_MISSING_DEPENDENCY("EGL") << "libEGL.so.1 is not installed here (Debian: libegl1, libegl-mesa0)"
 
 // compare's JSON without what legitimately differs between two runs or two contexts.
 nlohmann::json metricsOnly(nlohmann::json j) {

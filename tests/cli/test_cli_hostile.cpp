@@ -7,6 +7,7 @@
 
 #include "scene/image.h"
 #include "scene/scene_file.h"
+#include "tests/missing_dependency.h"
 
 #include <nlohmann/json.hpp>
 
@@ -102,7 +103,7 @@ TEST(CliHostile, NonUtf8SceneNameInJsonOutputs) {
 
 TEST(CliHostile, RealWorldObjSample) {
   if (!fs::is_directory(kAssimpObj)) {
-    GTEST_SKIP() << kAssimpObj << " is missing: install Debian's assimp-testmodels (scripts/install-deps.sh does)";
+    TWR_MISSING_DEPENDENCY("assimp-testmodels") << kAssimpObj << " is missing: install Debian's assimp-testmodels (scripts/install-deps.sh does)";
   }
   const auto dir = testDir("cli_hostile");
   // UTF-16, material names with spaces, Windows texture paths to JPEGs: rendered by both.
@@ -131,7 +132,7 @@ TEST(CliHostile, RealWorldObjSample) {
 // a scene that says it expects an empty frame passes without the warning.
 TEST(CliHostile, AComparisonOfNothingFailsTheTargets) {
   if (!fs::is_directory(kAssimpObj)) {
-    GTEST_SKIP() << kAssimpObj << " is missing: install Debian's assimp-testmodels (scripts/install-deps.sh does)";
+    TWR_MISSING_DEPENDENCY("assimp-testmodels") << kAssimpObj << " is missing: install Debian's assimp-testmodels (scripts/install-deps.sh does)";
   }
   const auto dir = testDir("cli_hostile_empty");
   for (const char* name : {"regr01.obj", "regr_3429812.obj", "multiple_spaces.obj"}) {

@@ -3,6 +3,7 @@
 #include "cli_run.h"
 
 #include "scene/image.h"
+#include "tests/missing_dependency.h"
 
 #include <nlohmann/json.hpp>
 
@@ -274,7 +275,7 @@ TEST(CliCompare, ReferenceRaytraceMeasuresBothFramesByClass) {
   if (r.exitCode == 2 && r.err.find("this build has no ray tracer") != std::string::npos) {
     // A build without Embree says so, and names the package.
     EXPECT_NE(r.err.find("libembree-dev"), std::string::npos) << r.err;
-    GTEST_SKIP() << r.err;
+    TWR_MISSING_DEPENDENCY("Embree") << r.err;
   }
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("reference: ray traced (Embree"), std::string::npos) << r.out;

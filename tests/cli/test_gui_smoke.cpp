@@ -4,6 +4,7 @@
 // binary is missing. The GUI binary sits next to the CLI (build/app/), so its path comes
 // from TWINRASTER_CLI at run time.
 #include "scene/image.h"
+#include "tests/missing_dependency.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -87,8 +88,8 @@ RunResult runGui(const std::string& args, bool underXvfb = true, const std::stri
 
 #define REQUIRE_GUI_AND_XVFB()                                                                        \
   do {                                                                                                \
-    if (!fs::exists(guiBinary())) GTEST_SKIP() << "twinraster-gui was not built (TWINRASTER_BUILD_GUI=OFF): " << guiBinary(); \
-    if (!haveXvfbRun()) GTEST_SKIP() << "xvfb-run is missing (Debian packages xvfb and xauth): no X server to open a window on"; \
+    if (!fs::exists(guiBinary())) TWR_MISSING_DEPENDENCY("twinraster-gui") << "it was not built (TWINRASTER_BUILD_GUI=OFF): " << guiBinary(); \
+    if (!haveXvfbRun()) TWR_MISSING_DEPENDENCY("xvfb-run") << "Debian packages xvfb and xauth: no X server to open a window on"; \
   } while (false)
 
 bool near(const std::uint8_t* p, Rgb c, int tolerance) {
@@ -281,7 +282,7 @@ TEST(GuiSmoke, SettingsPersistAndResetClearsThem) {
 }
 
 TEST(GuiSmoke, HelpAndBadOptionsNeedNoDisplay) {
-  if (!fs::exists(guiBinary())) GTEST_SKIP() << "twinraster-gui was not built (TWINRASTER_BUILD_GUI=OFF)";
+  if (!fs::exists(guiBinary())) TWR_MISSING_DEPENDENCY("twinraster-gui") << "it was not built (TWINRASTER_BUILD_GUI=OFF)";
   const RunResult help = runGui("--help", false);
   EXPECT_EQ(help.exitCode, 0);
   for (const char* option :
@@ -298,7 +299,7 @@ TEST(GuiSmoke, HelpAndBadOptionsNeedNoDisplay) {
 }
 
 TEST(GuiSmoke, NoDisplayIsACleanError) {
-  if (!fs::exists(guiBinary())) GTEST_SKIP() << "twinraster-gui was not built (TWINRASTER_BUILD_GUI=OFF)";
+  if (!fs::exists(guiBinary())) TWR_MISSING_DEPENDENCY("twinraster-gui") << "it was not built (TWINRASTER_BUILD_GUI=OFF)";
   const RunResult r = runGui("--frames 1", false, "env -u DISPLAY -u WAYLAND_DISPLAY ");
   EXPECT_EQ(r.exitCode, 2) << r.err;
   EXPECT_NE(r.err.find("display"), std::string::npos) << r.err;

@@ -15,6 +15,7 @@
 #include "scene/scene_file.h"
 #include "scene/sky_view.h"
 #include "softrender/cpu_renderer.h"
+#include "tests/missing_dependency.h"
 
 #include <gtest/gtest.h>
 
@@ -464,7 +465,7 @@ TEST(SceneSuiteTable, EveryShadowedSceneIsSwept) {
 TEST(SceneSuiteRealModel, CharacterUnderADirectionalShadowAtSmallBias) {
   const std::string model = "/usr/share/assimp/models/OBJ/WusonOBJ.obj";
   if (!std::filesystem::exists(model)) {
-    GTEST_SKIP() << model << " is missing: install Debian's assimp-testmodels (scripts/install-deps.sh does)";
+    TWR_MISSING_DEPENDENCY("assimp-testmodels") << model << " is missing: install Debian's assimp-testmodels (scripts/install-deps.sh does)";
   }
   const std::string dir = std::string(TWINRASTER_TEST_OUT) + "/suite/real_model";
   std::filesystem::create_directories(dir);

@@ -8,6 +8,7 @@
 #include "glrender/gl_renderer.h"
 #include "scene/errors.h"
 #include "scene/scene_file.h"
+#include "tests/missing_dependency.h"
 
 #include <gtest/gtest.h>
 
@@ -27,7 +28,7 @@ const std::string kScenes = std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes
 #define SKIP_WITHOUT_EGL()                                                          \
   do {                                                                              \
     const std::string problem = eglLibraryProblem();                                \
-    if (!problem.empty()) GTEST_SKIP() << "EGL is not installed here: " << problem; \
+    if (!problem.empty()) TWR_MISSING_DEPENDENCY("EGL") << problem; \
   } while (false)
 
 GlOptions eglOptions(int device = kEglSurfaceless) {

@@ -4,6 +4,7 @@
 #include "glrender/context_glfw.h"
 #include "glrender/gl_renderer.h"
 #include "scene/errors.h"
+#include "tests/missing_dependency.h"
 
 #include <gtest/gtest.h>
 
@@ -15,7 +16,7 @@ namespace {
 class GlWindow : public ::testing::TestWithParam<LineMode> {};
 
 TEST_P(GlWindow, MatchesHeadlessPixelForPixel) {
-  if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no display (run under xvfb-run)";
+  if (!std::getenv("DISPLAY")) TWR_MISSING_DEPENDENCY("a display (xvfb-run)") << "no DISPLAY: run under xvfb-run (Debian packages xvfb and xauth)";
   Scene scene = gltest::emptyScene();
   gltest::addNode(scene, makeSphere(1.0f, 8, 16), "sphere");
   scene.nodes[0].translate = vec3(0.0f, 0.0f, -3.0f);
@@ -45,7 +46,7 @@ INSTANTIATE_TEST_SUITE_P(BothLineModes, GlWindow, ::testing::Values(LineMode::Co
                          [](const auto& info) { return std::string(toString(info.param)); });
 
 TEST(GlWindowCore, ImmediateLinesInACoreWindowAreAnInputError) {
-  if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no display (run under xvfb-run)";
+  if (!std::getenv("DISPLAY")) TWR_MISSING_DEPENDENCY("a display (xvfb-run)") << "no DISPLAY: run under xvfb-run (Debian packages xvfb and xauth)";
   Scene scene = gltest::emptyScene();
   gltest::addNode(scene, gltest::quadAt(-2.0f, -1.0f, -1.0f, 1.0f, 1.0f), "quad");
   RenderSettings settings = scene.settings;

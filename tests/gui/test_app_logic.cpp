@@ -2,10 +2,10 @@
 // frames (issue 20, defect 2), panel sizes that recover after the window shrinks and grows
 // (defect 4), the hover line's rule for comparing two images (defect 5), and when an idle
 // loop draws the window (redraw_policy.h).
-#include "app/gui/frame_pairing.h"
-#include "app/gui/frame_timing.h"
-#include "app/gui/panel_sizing.h"
-#include "app/gui/redraw_policy.h"
+#include "gui/frame_pairing.h"
+#include "gui/frame_timing.h"
+#include "gui/panel_sizing.h"
+#include "gui/redraw_policy.h"
 
 #include <gtest/gtest.h>
 

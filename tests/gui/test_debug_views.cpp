@@ -1,8 +1,8 @@
 // The debug-view helpers a student reads the views with (issue 20, "what a student
 // misses"): empty pixels are not decoded as vectors, depth linearises to the eye distance,
 // every view has a legend; and the scene picker's lists.
-#include "app/gui/debug_views.h"
-#include "app/gui/scene_picker.h"
+#include "gui/debug_views.h"
+#include "gui/scene_picker.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-// The hand-over between the UI and a render worker (app/gui/job_queue.h): a newer job
+// The hand-over between the UI and a render worker (gui/job_queue.h): a newer job
 // replaces a waiting one, a running job learns it is superseded, results come out in order.
-#include "app/gui/job_queue.h"
+#include "gui/job_queue.h"
 
 #include <gtest/gtest.h>
 
@@ -39,8 +39,8 @@ TEST(JobQueue, StopWakesTheWorkerAndDropsTheWaitingJob) {
   JobQueue<int, int> queue;
   std::optional<int> seen = 7;
   std::thread worker([&] { seen = queue.next(); });
-  std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  queue.stop();
+  EXPECT_TRUE(queue.waitForWorker(std::chrono::milliseconds(60'000))) << "the worker never asked for a job";
+  queue.stop();  // wakes a worker blocked in next(), not one that has yet to ask
   worker.join();
   EXPECT_FALSE(seen);
   queue.submit(1);

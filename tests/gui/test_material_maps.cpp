@@ -6,9 +6,9 @@
 // And the height field's keys (issue 16): kept in the scene file's ranges, refused where it
 // refuses them, and every edit that outdates the horizon map says so, until a map built for
 // exactly the current keys is installed.
-#include "app/gui/debug_views.h"
-#include "app/gui/material_maps.h"
-#include "app/gui/scene_doc.h"
+#include "gui/debug_views.h"
+#include "gui/material_maps.h"
+#include "gui/scene_doc.h"
 #include "glrender/gl_renderer.h"
 #include "scene/errors.h"
 #include "softrender/cpu_renderer.h"

@@ -5,6 +5,7 @@
 
 #include "scene/errors.h"
 #include "scene/scene_file.h"
+#include "tests/missing_dependency.h"
 
 #include <gtest/gtest.h>
 
@@ -39,7 +40,7 @@ glm::dvec3 cornerOf(const Scene& scene, std::uint32_t id, std::size_t k) {
 }
 
 TEST(RayScene, HitsTheFloorAndTheCubeWithTheFramesIdsAndBarycentrics) {
-  if (!rayTracerAvailable()) GTEST_SKIP() << rayTracerDescription();
+  if (!rayTracerAvailable()) TWR_MISSING_DEPENDENCY("Embree") << rayTracerDescription();
   const Scene scene = floorAndCube();
   const RayScene rays(scene);
   const std::vector<DrawItem> items = flattenScene(scene);
@@ -73,7 +74,7 @@ TEST(RayScene, HitsTheFloorAndTheCubeWithTheFramesIdsAndBarycentrics) {
 }
 
 TEST(RayScene, MissesAwayFromTheSceneAndOutsideItsRange) {
-  if (!rayTracerAvailable()) GTEST_SKIP() << rayTracerDescription();
+  if (!rayTracerAvailable()) TWR_MISSING_DEPENDENCY("Embree") << rayTracerDescription();
   const RayScene rays(floorAndCube());
   EXPECT_FALSE(rays.intersect({0.0, 5.0, 0.0}, {0.0, 1.0, 0.0}, 0.0, 100.0).hit);   // up, into the sky
   EXPECT_FALSE(rays.intersect({0.0, 5.0, 0.0}, {0.0, -1.0, 0.0}, 0.0, 4.9).hit);    // ends above the floor

@@ -9,6 +9,7 @@
 #include "scene/scene_file.h"
 #include "softrender/cpu_renderer.h"
 #include "softrender/vertex.h"
+#include "tests/missing_dependency.h"
 
 #include <gtest/gtest.h>
 
@@ -53,7 +54,7 @@ std::uint64_t sum(const std::array<std::uint64_t, kSsrTruthCount>& counts) {
 }
 
 TEST(SsrReference, TracesEveryReflectingPixelAndLeavesTheRestAsTheLitFrameDrewThem) {
-  if (!rayTracerAvailable()) GTEST_SKIP() << rayTracerDescription();
+  if (!rayTracerAvailable()) TWR_MISSING_DEPENDENCY("Embree") << rayTracerDescription();
   const Scene scene = mirrorFloor();
   const RenderOutput base = baseOf(scene);
   const SsrReference ref = traceSsrReference(scene, scene.settings, base, RayScene(scene));
@@ -79,7 +80,7 @@ TEST(SsrReference, TracesEveryReflectingPixelAndLeavesTheRestAsTheLitFrameDrewTh
 }
 
 TEST(SsrReference, AMarchIsCloseWhereTheTruthIsVisibleAndBlindOffScreen) {
-  if (!rayTracerAvailable()) GTEST_SKIP() << rayTracerDescription();
+  if (!rayTracerAvailable()) TWR_MISSING_DEPENDENCY("Embree") << rayTracerDescription();
   const Scene scene = floorUnderCeiling();
   const RenderOutput base = baseOf(scene);
   const SsrReference ref = traceSsrReference(scene, scene.settings, base, RayScene(scene));
@@ -102,7 +103,7 @@ TEST(SsrReference, AMarchIsCloseWhereTheTruthIsVisibleAndBlindOffScreen) {
 }
 
 TEST(SsrReference, IndirectRaysUnderAnOpenSkyBringNothing) {
-  if (!rayTracerAvailable()) GTEST_SKIP() << rayTracerDescription();
+  if (!rayTracerAvailable()) TWR_MISSING_DEPENDENCY("Embree") << rayTracerDescription();
   Scene scene = floorUnderCeiling();
   scene.nodes.resize(1);  // the floor alone
   scene.settings.ssr.indirectSamples = 4;
@@ -120,7 +121,7 @@ TEST(SsrReference, IndirectRaysUnderAnOpenSkyBringNothing) {
 }
 
 TEST(SsrReference, IndirectLightUnderTheCeilingComesFromOffScreen) {
-  if (!rayTracerAvailable()) GTEST_SKIP() << rayTracerDescription();
+  if (!rayTracerAvailable()) TWR_MISSING_DEPENDENCY("Embree") << rayTracerDescription();
   Scene scene = floorUnderCeiling();
   Material& floor = scene.materials.at(0);
   ASSERT_EQ(floor.name, "mirror");
@@ -138,7 +139,7 @@ TEST(SsrReference, IndirectLightUnderTheCeilingComesFromOffScreen) {
 }
 
 TEST(SsrReference, AHitIsLitAsTheFrameLightsTheSameSurface) {
-  if (!rayTracerAvailable()) GTEST_SKIP() << rayTracerDescription();
+  if (!rayTracerAvailable()) TWR_MISSING_DEPENDENCY("Embree") << rayTracerDescription();
   // Rays from the eye through pixel centres: where the ray meets the triangle the frame shows
   // there, the hit shader's colour is the frame's, shadows and specular included.
   const Scene scene = mirrorFloor();
@@ -172,7 +173,7 @@ TEST(SsrReference, AHitIsLitAsTheFrameLightsTheSameSurface) {
 }
 
 TEST(SsrReference, RefusesWhatItCannotMeasure) {
-  if (!rayTracerAvailable()) GTEST_SKIP() << rayTracerDescription();
+  if (!rayTracerAvailable()) TWR_MISSING_DEPENDENCY("Embree") << rayTracerDescription();
   Scene scene = mirrorFloor();
   const RenderOutput base = baseOf(scene);
   const RayScene rays(scene);

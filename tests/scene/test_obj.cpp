@@ -4,6 +4,7 @@
 #include "scene/obj_loader.h"
 #include "scene/primitives.h"
 #include "scene/tangents.h"
+#include "tests/missing_dependency.h"
 
 #include <gtest/gtest.h>
 
@@ -355,7 +356,7 @@ TEST(HouseModel, GeometryWithTestTextures) {
 TEST(HouseModel, LoadsWithTheGeneratedBrickTextures) {
   const std::string textures = std::string(TWINRASTER_SOURCE_DIR) + "/assets/textures/";
   for (const char* name : {"bricks_diffuse.png", "bricks_normal.png", "bricks_specular.png"}) {
-    if (!fs::exists(textures + name)) GTEST_SKIP() << textures + name << " not generated yet (twinraster-assets)";
+    if (!fs::exists(textures + name)) TWR_MISSING_DEPENDENCY(textures + name) << "not generated yet (make assets)";
   }
   const ObjModel model = loadObj(kHouseObj);
   expectHouseGeometry(model);

@@ -11,6 +11,7 @@
 #include "scene/obj_loader.h"
 #include "scene/scene_file.h"
 #include "scene/texture.h"
+#include "tests/missing_dependency.h"
 
 #include <gtest/gtest.h>
 #include <stb_image_write.h>
@@ -356,7 +357,7 @@ TEST(ImageFormats, UnknownAndRefusedFormatsSayWhatIsRead) {
 bool haveImageMagick() { return std::system("convert -version > /dev/null 2>&1") == 0; }
 
 TEST(ImageFormats, FilesWrittenByImageMagickLoadAsThePngTheyCameFrom) {
-  if (!haveImageMagick()) GTEST_SKIP() << "ImageMagick's convert is not installed (apt-get install imagemagick)";
+  if (!haveImageMagick()) TWR_MISSING_DEPENDENCY("ImageMagick") << "its convert is not installed (apt-get install imagemagick)";
   const fs::path dir = caseDir();
   // A 8x4 gradient with every channel different, written as PNG by stb, converted by ImageMagick.
   Image source = makeImage(8, 4);
