@@ -63,6 +63,16 @@ double CompareMetrics::over1Pct() const {
   return bothCovered == 0 ? 0.0 : kPercent * static_cast<double>(over1) / static_cast<double>(bothCovered);
 }
 
+double CompareMetrics::excludedLinePct() const {
+  const double pixels = static_cast<double>(width) * static_cast<double>(height);
+  return pixels == 0.0 ? 0.0 : kPercent * static_cast<double>(excludedLinePixels) / pixels;
+}
+
+double CompareMetrics::lineMismatchPct() const {
+  return excludedLinePixels == 0 ? 0.0
+                                 : kPercent * static_cast<double>(lineMismatch) / static_cast<double>(excludedLinePixels);
+}
+
 double CompareMetrics::backgroundOver1Pct() const {
   return backgroundCompared == 0 ? 0.0
                                  : kPercent * static_cast<double>(backgroundOver1) / static_cast<double>(backgroundCompared);
@@ -94,7 +104,11 @@ CompareResult compareDetailed(const RenderOutput& cpu, const RenderOutput& gl, c
     const bool cpuDepthFinite = cpu.depth.empty() || std::isfinite(cpu.depth[i]);
     if (!cpuDepthFinite) ++m.nanPixels;  // counted everywhere, lines included: never acceptable
 
-    if (lineAt(cpu, i) || lineAt(gl, i)) {
+    const bool cpuLine = lineAt(cpu, i), glLine = lineAt(gl, i);
+    m.linePixelsCpu += cpuLine;
+    m.linePixelsGl += glLine;
+    m.lineMismatch += cpuLine != glLine;
+    if (cpuLine || glLine) {
       ++m.excludedLinePixels;
       pixels.pixelClass[i] = PixelClass::ExcludedLine;
       continue;

@@ -2,7 +2,8 @@
 //
 // Which pixels each number is over (see docs/compare.md for the full table):
 // - A pixel is "excluded" when either lineMask is 1 there (TBN debug lines); excluded pixels
-//   count only in excludedLinePixels and nanPixels, nowhere else.
+//   count only in excludedLinePixels, the line counts and nanPixels, nowhere else. How many
+//   are excluded, and where the two sides' lines part, have limits of their own (thresholds.h).
 // - A pixel is "covered" by a backend when a triangle was drawn there: its triangle id is not
 //   kNoTriangle (coveredAt; alpha > 0 for an output without ids, such as the analytic-sphere
 //   reference). Alpha is not coverage: the background has the scene's alpha, 1 by default.
@@ -76,6 +77,9 @@ struct CompareMetrics {
   int height = 0;
   std::uint64_t comparedPixels = 0;       // width * height - excludedLinePixels
   std::uint64_t excludedLinePixels = 0;   // lineMask set on either side
+  std::uint64_t linePixelsCpu = 0;        // pixels the CPU's lineMask marks
+  std::uint64_t linePixelsGl = 0;         // pixels GL's lineMask marks
+  std::uint64_t lineMismatch = 0;         // pixels exactly one side's lineMask marks
   std::uint64_t coveredCpu = 0;           // compared pixels the CPU covered (coveredAt)
   std::uint64_t coveredGl = 0;            // compared pixels GL covered
   std::uint64_t bothCovered = 0;          // compared pixels covered by both
@@ -112,6 +116,12 @@ struct CompareMetrics {
   // coverageMismatch per 10,000 pixels covered by either backend (0 when none is covered).
   double coverageMismatchPer10k() const;
   std::uint64_t coveredEither() const { return bothCovered + coverageMismatch; }
+  // excludedLinePixels as a percentage of the frame (0 for an empty frame): how much of it
+  // no other number looks at.
+  double excludedLinePct() const;
+  // lineMismatch as a percentage of excludedLinePixels (0 when no line is drawn): where the
+  // two renderers' debug lines part.
+  double lineMismatchPct() const;
 };
 
 struct CompareResult {

@@ -19,6 +19,11 @@ nlohmann::json metricsToJson(const CompareMetrics& m) {
   json["height"] = m.height;
   json["compared_pixels"] = m.comparedPixels;
   json["excluded_line_pixels"] = m.excludedLinePixels;
+  json["excluded_line_pct"] = m.excludedLinePct();
+  json["line_pixels_cpu"] = m.linePixelsCpu;
+  json["line_pixels_gl"] = m.linePixelsGl;
+  json["line_mismatch"] = m.lineMismatch;
+  json["line_mismatch_pct"] = m.lineMismatchPct();
   json["covered_cpu"] = m.coveredCpu;
   json["covered_gl"] = m.coveredGl;
   json["both_covered"] = m.bothCovered;

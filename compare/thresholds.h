@@ -26,6 +26,8 @@ struct Thresholds {
   std::optional<double> maxDepthMaxDiff;            // window depth units
   std::optional<double> maxNanPixels;               // pixels
   std::optional<double> maxClassDepth;              // pixels
+  std::optional<double> maxExcludedLinePct;         // debug-line pixels, % of the frame
+  std::optional<double> maxLineMismatchPct;         // line pixels only one side drew, % of line pixels
 };
 
 // One limit as written in JSON and, with '-' for '_', on the command line (--max-over-1-pct).
@@ -54,7 +56,8 @@ std::vector<ThresholdViolation> checkThresholds(const CompareMetrics& metrics, c
 
 // The targets of issue 5 for CPU versus llvmpipe in precise mode: over_1 <= 0.1 %,
 // max_abs_diff <= 3, nan_pixels = 0, and coverage_mismatch = 0, or at most 1 per 10,000
-// covered pixels when `trianglesClipped` (the scene clips triangles).
+// covered pixels when `trianglesClipped` (the scene clips triangles); and for the debug lines
+// left out of those, excluded_line_pct <= 10 % and line_mismatch_pct <= 15 %.
 Thresholds issueTargets(bool trianglesClipped);
 
 }  // namespace twr

@@ -1,6 +1,8 @@
 // The draw loop the teaching path and the reference renderer share (docs/pipeline.md): for
 // every draw item in submission order, every triangle of its mesh:
 //   clip -> fan -> setup (cull) -> raster -> interpolate -> depth test -> shade -> write
+// (the depth test is output_merge.h's depthTestLess; the teaching path's write is its
+// writeFragment)
 // over one band of rows. Templated on the number type T (float: the teaching pipeline;
 // double: the reference) and on the Target the fragments go to, which provides
 //   T storedDepth(int px, int py) const                   the depth buffer at the pixel
@@ -19,6 +21,7 @@
 #include "softrender/clip.h"
 #include "softrender/deferred.h"
 #include "softrender/interpolate.h"
+#include "softrender/output_merge.h"
 #include "softrender/raster.h"
 #include "softrender/setup.h"
 #include "softrender/shade.h"
@@ -80,7 +83,7 @@ void drawClippedTriangle(const LoopItemT<T>& s, const ClipVertexT<T>& v0, const 
     for (int px = span.xBegin; px < span.xEnd; ++px) {
       const T depth =
           (depthAsStoredLanes<T>)(planeAtLanes<T>(depthPlane, static_cast<T>(px), static_cast<T>(py)), depthFormat);
-      if (!(depth < target.storedDepth(px, py))) continue;  // GL_LESS, before shading
+      if (!depthTestLess(depth, target.storedDepth(px, py))) continue;  // stage 6, before shading
       FragmentT<T> fragment = interpolateFragment(varyings, px, py, depth);
       if (s.shade.needsQuadDifferences()) {
         // The pixel's 2x2 quad (even column and row): its uv differences give the LOD.

@@ -8,8 +8,12 @@
 
 namespace twr {
 
-// GL_LESS: the fragment passes when strictly nearer than what is stored.
-inline bool depthTestLess(float fragmentDepth, float storedDepth) { return fragmentDepth < storedDepth; }
+// GL_LESS: the fragment passes when strictly nearer than what is stored (float on the
+// teaching path, double in the reference; a NaN depth never passes).
+template <typename T>
+inline bool depthTestLess(T fragmentDepth, T storedDepth) {
+  return fragmentDepth < storedDepth;
+}
 
 // Writes a shaded triangle fragment at (x, y) (GL window coordinates, row 0 at the bottom).
 inline void writeFragment(Framebuffer& fb, int x, int y, vec4 colour, float depth, std::uint32_t triangleId) {

@@ -122,6 +122,11 @@ void printSummary(const CompareMetrics& m, const nlohmann::json& json, const Art
   std::cout << "  differing pixels by cause: coverage " << m.classCoverage << ", depth " << m.classDepth
             << ", shading " << m.classShading << ", decision " << m.classDecision << "; excluded line pixels "
             << m.excludedLinePixels << "\n";
+  if (m.excludedLinePixels > 0) {
+    std::cout << "  debug lines: " << m.excludedLinePixels << " pixels (" << std::setprecision(2) << m.excludedLinePct()
+              << "% of the frame), cpu " << m.linePixelsCpu << ", gl " << m.linePixelsGl << ", drawn by one only "
+              << m.lineMismatch << " (" << m.lineMismatchPct() << "%)\n" << std::setprecision(3);
+  }
   std::cout << "  depth max diff " << std::setprecision(6) << m.depthMaxDiff << ", NaN pixels " << m.nanPixels
             << "\n";
   std::cout << std::setprecision(2) << "  time: cpu " << json.value("cpu_ms", 0.0) << " ms ("
@@ -370,6 +375,8 @@ void runCompare(CompareArgs& args) {
     fill(limits.maxNanPixels, targets.maxNanPixels);
     fill(limits.maxCoverageMismatch, targets.maxCoverageMismatch);
     fill(limits.maxCoverageMismatchPer10k, targets.maxCoverageMismatchPer10k);
+    fill(limits.maxExcludedLinePct, targets.maxExcludedLinePct);
+    fill(limits.maxLineMismatchPct, targets.maxLineMismatchPct);
   }
   std::vector<ThresholdViolation> violations = checkThresholds(result.metrics, limits);
   // Two empty frames agree perfectly and prove nothing: said, and over the targets unless the
@@ -546,6 +553,8 @@ const bool registered = registerCommand(30, [](CLI::App& app) {
   limit("--max-depth-diff", t.maxDepthMaxDiff, "Largest window-depth difference");
   limit("--max-nan-pixels", t.maxNanPixels, "Most CPU pixels with NaN depth");
   limit("--max-depth-class", t.maxClassDepth, "Most pixels where a different surface won the depth test");
+  limit("--max-excluded-line-pct", t.maxExcludedLinePct, "Most TBN debug-line pixels (left out of the rest), % of the frame");
+  limit("--max-line-mismatch-pct", t.maxLineMismatchPct, "Most line pixels only one backend drew, % of line pixels");
   cmd->callback([args] { runCompare(*args); });
 });
 

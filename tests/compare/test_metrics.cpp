@@ -234,6 +234,45 @@ TEST(CompareMetrics, LinePixelsOnEitherSideAreExcludedFromEverything) {
   EXPECT_EQ(compare(cpu, noMask).excludedLinePixels, 1u);
 }
 
+// The excluded pixels are bounded and the two sides' lines compared: how much of the frame is
+// left out, and where only one renderer drew a line.
+TEST(CompareMetrics, LinePixelsAreCountedPerSideAndHeldToTheirOwnLimits) {
+  const RenderOutput base = makeSolidOutput(4, 5, 10, 10, 10);  // 20 pixels
+  RenderOutput cpu = base, gl = base;
+  for (const int x : {0, 1, 2}) cpu.lineMask[pixelIndex(cpu, x, 0)] = 1;
+  for (const int x : {1, 2, 3}) gl.lineMask[pixelIndex(gl, x, 0)] = 1;
+  const CompareMetrics m = compare(cpu, gl);
+  EXPECT_EQ(m.linePixelsCpu, 3u);
+  EXPECT_EQ(m.linePixelsGl, 3u);
+  EXPECT_EQ(m.excludedLinePixels, 4u);
+  EXPECT_EQ(m.lineMismatch, 2u);  // x = 0 (CPU only) and x = 3 (GL only)
+  EXPECT_DOUBLE_EQ(m.excludedLinePct(), 20.0);
+  EXPECT_DOUBLE_EQ(m.lineMismatchPct(), 50.0);
+
+  Thresholds limits;
+  limits.maxExcludedLinePct = 20.0;  // inclusive
+  limits.maxLineMismatchPct = 50.0;
+  EXPECT_TRUE(checkThresholds(m, limits).empty());
+  limits.maxExcludedLinePct = 19.0;
+  limits.maxLineMismatchPct = 49.0;
+  const std::vector<ThresholdViolation> v = checkThresholds(m, limits);
+  ASSERT_EQ(v.size(), 2u);
+  EXPECT_EQ(v[0].key, "max_excluded_line_pct");
+  EXPECT_EQ(v[1].key, "max_line_mismatch_pct");
+  EXPECT_NE(v[1].message.find("CPU 3, GL 3"), std::string::npos) << v[1].message;
+
+  const nlohmann::json j = metricsToJson(m);
+  EXPECT_EQ(j["line_pixels_cpu"], 3);
+  EXPECT_EQ(j["line_pixels_gl"], 3);
+  EXPECT_EQ(j["line_mismatch"], 2);
+  EXPECT_DOUBLE_EQ(j["line_mismatch_pct"].get<double>(), 50.0);
+  EXPECT_DOUBLE_EQ(j["excluded_line_pct"].get<double>(), 20.0);
+
+  const CompareMetrics none = compare(base, base);  // no lines: nothing left out, nothing parts
+  EXPECT_EQ(none.excludedLinePct(), 0.0);
+  EXPECT_EQ(none.lineMismatchPct(), 0.0);
+}
+
 TEST(CompareMetrics, NonFiniteCpuDepthIsCountedEverywhereAndNeverReachesAMetric) {
   RenderOutput cpu = makeSolidOutput(4, 1, 10, 10, 10);
   const RenderOutput gl = cpu;
@@ -323,6 +362,8 @@ TEST(CompareThresholds, IssueTargetsAndValidation) {
   EXPECT_EQ(clipped.maxOver1Pct, 0.1);
   EXPECT_EQ(clipped.maxAbsDiff, 3.0);
   EXPECT_EQ(clipped.maxNanPixels, 0.0);
+  EXPECT_EQ(clipped.maxExcludedLinePct, 10.0);
+  EXPECT_EQ(unclipped.maxLineMismatchPct, 15.0);
   EXPECT_TRUE(checkThresholds(compare(makeSolidOutput(2, 2, 1, 2, 3), makeSolidOutput(2, 2, 1, 2, 3)), clipped).empty());
 
   Thresholds negative;
