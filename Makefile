@@ -74,7 +74,8 @@ SANITIZE_SCENE_SUITE ?= all
 SANITIZE_SCENES := $(subst $(eval) ,|,$(strip $(basename $(notdir $(wildcard assets/scenes/*.json)))))
 SANITIZE_SUITE_CASES := ^Scenes/SceneSuite\.CpuMatchesLlvmpipeWithinTolerance/($(SANITIZE_SCENES))( |$$)
 SANITIZE_SUITE_SKIP := $(if $(filter scenes,$(SANITIZE_SCENE_SUITE)),|^Scenes/SceneSuite\.)
-SANITIZE_SUITE_WANTED := $(if $(filter scenes,$(SANITIZE_SCENE_SUITE)),$(if $(filter compare,$(SANITIZE_MODULES))$(if $(SANITIZE_MODULES),,all),yes))
+# The scene run is wanted with "scenes" when compare is among the modules (or all of them run).
+SANITIZE_SUITE_WANTED := $(and $(filter scenes,$(SANITIZE_SCENE_SUITE)),$(if $(SANITIZE_MODULES),$(filter compare,$(SANITIZE_MODULES)),all))
 
 sanitize: deps
 	@cmake --preset sanitize -DTWINRASTER_WERROR=$(WERROR) >/dev/null

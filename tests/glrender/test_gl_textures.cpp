@@ -208,8 +208,9 @@ int wrappedTexel(double c, int size, TextureWrap wrap) {
   return 0;
 }
 
-// Largest difference between tangent- and world-space lighting of a flat quad, 8-bit levels.
-constexpr int kLightingSpaceLevels = 2;
+// Largest difference between tangent- and world-space lighting of a flat quad, 8-bit levels:
+// measured 0 in every view on llvmpipe 22.3.6.
+constexpr int kLightingSpaceLevels = 0;
 
 // A GL renderer per test; the test is skipped when no GL context can be created (no OSMesa).
 class GlTextures : public ::testing::Test {
@@ -620,7 +621,7 @@ TEST_F(GlTextures, PermutationDefinesOnlyWhenTheMaterialNeedsThem) {
     EXPECT_NE(std::find(defines.begin(), defines.end(), define), defines.end()) << define;
   }
   // Every view compiles and draws the whole quad, and lights it the same in both spaces: the
-  // quad is flat, so its tangent frame is exact and the two spaces part by rounding alone.
+  // quad is flat, so its tangent frame is exact.
   for (const View view : kAllViews) {
     RenderSettings s = settings;
     s.view = view;
