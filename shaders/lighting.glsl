@@ -39,6 +39,42 @@ struct LightSum {
 #endif
 };
 
+// If = 1 / max(A_C + A_L d + A_Q d^2, MIN_ATTENUATION_DENOMINATOR), evaluated left to right as
+// (A_C + A_L d) + (A_Q d) d. C++: attenuationLanes.
+float attenuation(vec3 a, float d) {
+  return 1.0 / max(a.x + a.y * d + a.z * d * d, MIN_ATTENUATION_DENOMINATOR);
+}
+
+#ifdef HAS_SHADOWS
+// Light i's shadow map at this point (shadow.glsl), at the geometric normal's angle, in world
+// space; tested only where it can matter: a point the light lights (diffuse or specular) and
+// the shadow views, since elsewhere both terms are 0 and so is their product with it. Keeps the
+// first test (the probe: the probed light's) for the shadow views; true when it tested.
+// C++: the shadow step of lightSumLanes.
+bool shadowMapStep(int i, vec3 posWorld, vec3 n, bool lit, inout LightSum result, inout float shadow) {
+#if defined(SHADOW_VIEW_SHADOW) || defined(SHADOW_VIEW_LIGHT_DEPTH) || defined(SHADOW_PROBE)
+  const bool shadowTestAlways = true;
+#else
+  const bool shadowTestAlways = false;
+#endif
+  int slot = shadowSlotOfLight[i];
+  if (!(slot >= 0 && (shadowTestAlways || lit))) return false;
+  ShadowTest mapTest = shadowTest(slot, posWorld, n, safeNormalize(toLightWorld(lights[i], posWorld)));
+  shadow = shadow * mapTest.visibility;
+#ifdef SHADOW_PROBE
+  bool keep = i == shadowProbeLight;  // the probed light's test, not the first's
+#else
+  bool keep = !result.haveShadowTest;
+#endif
+  if (keep) {
+    result.firstShadowTest = mapTest;
+    result.firstShadowCosine = dot3(n, safeNormalize(toLightWorld(lights[i], posWorld)));
+    result.haveShadowTest = true;
+  }
+  return true;
+}
+#endif
+
 // n: the interpolated normal (the shadow maps' slope, world space); nl: the normal lighting
 // uses, in the lighting space; kdAlbedo, ksSpec: the diffuse and specular terms' first
 // products. Tangent-space lighting reads the vertex stage's light and eye vectors; a height
@@ -72,10 +108,8 @@ LightSum lightSum(vec3 posWorld, vec3 n, vec3 t, vec3 b, vec3 nl, vec3 kdAlbedo,
     float nDotL = dot3(nl, l);
     vec3 r = 2.0 * nDotL * nl - l;
     float rDotV = max(dot3(r, v), 0.0);
-    float attenuation = 1.0 / max(lights[i].attenuation.x + lights[i].attenuation.y * d +
-                                      lights[i].attenuation.z * d * d,
-                                  MIN_ATTENUATION_DENOMINATOR);
-    if (lights[i].spotAxis.w > 0.0) attenuation = attenuation * spotFactor(lights[i], toLightWorld(lights[i], posWorld));
+    float falloff = attenuation(lights[i].attenuation, d);
+    if (lights[i].spotAxis.w > 0.0) falloff = falloff * spotFactor(lights[i], toLightWorld(lights[i], posWorld));
     float diffuseFactor = max(nDotL, 0.0);
     float shadow = 1.0;
 #if defined(SURFACE_BUMP_EMBOSS) || defined(SELF_SHADOW)
@@ -98,38 +132,15 @@ LightSum lightSum(vec3 posWorld, vec3 n, vec3 t, vec3 b, vec3 nl, vec3 kdAlbedo,
 #endif
     bool mapOn = false;
 #ifdef HAS_SHADOWS
-    // The light's shadow map (shadow.glsl), at the geometric normal's angle, in world space.
-    // Tested only where it can matter: a point the light lights (diffuse or specular) and the
-    // shadow views; elsewhere both terms are 0 and so is their product with it.
-#if defined(SHADOW_VIEW_SHADOW) || defined(SHADOW_VIEW_LIGHT_DEPTH) || defined(SHADOW_PROBE)
-    const bool shadowTestAlways = true;
-#else
-    const bool shadowTestAlways = false;
-#endif
-    int slot = shadowSlotOfLight[i];
-    if (slot >= 0 && (shadowTestAlways || diffuseFactor > 0.0 || nDotL > 0.0)) {
-      ShadowTest mapTest = shadowTest(slot, posWorld, n, safeNormalize(toLightWorld(lights[i], posWorld)));
-      shadow = shadow * mapTest.visibility;
-      mapOn = true;
-#ifdef SHADOW_PROBE
-      bool keep = i == shadowProbeLight;  // the probed light's test, not the first's
-#else
-      bool keep = !result.haveShadowTest;
-#endif
-      if (keep) {
-        result.firstShadowTest = mapTest;
-        result.firstShadowCosine = dot3(n, safeNormalize(toLightWorld(lights[i], posWorld)));
-        result.haveShadowTest = true;
-      }
-    }
+    mapOn = shadowMapStep(i, posWorld, n, diffuseFactor > 0.0 || nDotL > 0.0, result, shadow);
 #endif
 #ifdef SELF_SHADOW
-    result.sum += ((diffuse + specular) * attenuation) * shadow;
+    result.sum += ((diffuse + specular) * falloff) * shadow;
 #else
     if (mapOn) {
-      result.sum += ((diffuse + specular) * attenuation) * shadow;
+      result.sum += ((diffuse + specular) * falloff) * shadow;
     } else {
-      result.sum += (diffuse + specular) * attenuation;
+      result.sum += (diffuse + specular) * falloff;
     }
 #endif
   }

@@ -1,6 +1,8 @@
 // Fragment stage of the shading contract (docs/shading.md). Its C++ twin is
-// shadeFragment<Features>() in softrender/shade.h: same inputs, names and order of
-// operations; main() here is that function's body.
+// shadeFragmentLanes() in softrender/shade-inl.h: same inputs, steps and order of operations.
+// main() is the tutorial's list of named steps (surface frame, material texels, unlit terms,
+// lights, environment, shadow views, output), each a function here and one there; the table of
+// twins is docs/shading.md's.
 // Permutation defines: HAS_DIFFUSE_MAP, HAS_NORMAL_MAP, HAS_SPECULAR_MAP, LIGHTING_TANGENT
 // (else world lighting space), and exactly one VIEW_<NAME> (VIEW_SHADED ... VIEW_EYE_TANGENT).
 // Texture conventions, each set only for a material that needs it (so every other scene
@@ -89,81 +91,63 @@ layout(location = 1) out uint fragTriangleId;
 #endif
 #endif
 
-void main() {
-  vec3 n = safeNormalize(nWorld);
-  vec3 t = safeNormalize(tWorld);
-  vec3 b = safeNormalize(bWorld);
+// A material map's texel at uvAt. After a uv shift the map is read with the fragment's own uv
+// differences, scaled by the map's uv transform (textureGrad). C++: sampleMapLanes.
+vec4 sampleMap(sampler2D map, vec2 uvAt, vec2 uvScale) {
+#ifdef PARALLAX_UV
+  return textureGrad(map, uvAt, uvDx * uvScale, uvDy * uvScale);
+#else
+  return texture(map, uvAt);
+#endif
+}
 
-  // Surface detail from the height map: the parallax methods move the uv every map is read at;
-  // bump_blinn makes the normal; the rest read the height at uv.
-  vec2 uvMaps = uv;
-  float detailHeight = 1.0;
-  float detailSteps = 0.0;
+// The fragment's view vector in the lighting space: the vertex stage's in tangent space.
+vec3 eyeVector() {
+#ifdef LIGHTING_TANGENT
+  return eyeDirTangent;
+#else
+  return eyePosWorld - posWorld;
+#endif
+}
+
+// What lighting reads of the surface at this fragment (C++: surfaceFrameLanes): the normalised
+// frame; the surface detail (the parallax methods move the uv every map is read at, bump_blinn
+// makes the normal, the rest read the height at uv); the normal map's decoded normal; and nl,
+// the normal lighting uses, in the lighting space.
+struct SurfaceFrame {
+  vec3 n;
+  vec3 t;
+  vec3 b;
+  SurfaceDetail detail;
+  vec3 mappedTangent;
+  vec3 nl;
+};
+
+SurfaceFrame surfaceFrame() {
+  SurfaceFrame s;
+  s.n = safeNormalize(nWorld);
+  s.t = safeNormalize(tWorld);
+  s.b = safeNormalize(bWorld);
+  s.detail = SurfaceDetail(uv, 1.0, 0.0, vec3(0.0, 0.0, 1.0));
 #ifdef HAS_HEIGHT_MAP
   uvDx = dFdx(uv);
   uvDy = dFdy(uv);
-  SurfaceDetail detail = SurfaceDetail(uv, 1.0, 0.0, vec3(0.0, 0.0, 1.0));
 #ifdef PARALLAX_UV
-#ifdef LIGHTING_TANGENT
-  vec3 eyeVec = eyeDirTangent;
-#else
-  vec3 eyeVec = eyePosWorld - posWorld;
-#endif
-  vec3 vT = tangentFromLighting(eyeVec, t, b, n);
-  detail = parallax(uv, vT);
+  vec3 vT = tangentFromLighting(eyeVector(), s.t, s.b, s.n);
+  s.detail = parallax(uv, vT);
 #else
 #ifdef SURFACE_BUMP_BLINN
-  detail.bumpTangent = bumpBlinn(uv);
+  s.detail.bumpTangent = bumpBlinn(uv);
 #endif
-  detail.height = heightAt(uv);
-#endif
-  uvMaps = detail.uv;
-  detailHeight = detail.height;
-  detailSteps = detail.steps;
-#endif
-
-  // Each map's own uv (the map's uv transform, an MTL's -s and -o).
-  vec2 uvDiffuse = uvMaps;
-  vec2 diffuseScale = vec2(1.0);
-#ifdef DIFFUSE_UV_TRANSFORM
-  uvDiffuse = uvMaps * diffuseUvScale + diffuseUvOffset;
-  diffuseScale = diffuseUvScale;
-#endif
-  vec2 uvNormal = uvMaps;
-  vec2 normalScale = vec2(1.0);
-#ifdef NORMAL_UV_TRANSFORM
-  uvNormal = uvMaps * normalUvScale + normalUvOffset;
-  normalScale = normalUvScale;
-#endif
-  vec2 uvSpecular = uvMaps;
-  vec2 specularScale = vec2(1.0);
-#ifdef SPECULAR_UV_TRANSFORM
-  uvSpecular = uvMaps * specularUvScale + specularUvOffset;
-  specularScale = specularUvScale;
-#endif
-
-  vec3 albedo = vec3(1.0);
-#ifdef HAS_DIFFUSE_MAP
-#ifdef PARALLAX_UV
-  albedo = textureGrad(diffuseMap, uvDiffuse, uvDx * diffuseScale, uvDy * diffuseScale).rgb;
-#else
-  albedo = texture(diffuseMap, uvDiffuse).rgb;
+  s.detail.height = heightAt(uv);
 #endif
 #endif
-  vec3 specScale = vec3(1.0);
-#ifdef HAS_SPECULAR_MAP
-#ifdef PARALLAX_UV
-  specScale = textureGrad(specularMap, uvSpecular, uvDx * specularScale, uvDy * specularScale).rgb;
-#else
-  specScale = texture(specularMap, uvSpecular).rgb;
-#endif
-#endif
-  vec3 mappedTangent = vec3(0.0, 0.0, 1.0);
+  s.mappedTangent = vec3(0.0, 0.0, 1.0);
 #ifdef HAS_NORMAL_MAP
-#ifdef PARALLAX_UV
-  vec4 normalTexel = textureGrad(normalMap, uvNormal, uvDx * normalScale, uvDy * normalScale);
+#ifdef NORMAL_UV_TRANSFORM
+  vec4 normalTexel = sampleMap(normalMap, s.detail.uv * normalUvScale + normalUvOffset, normalUvScale);
 #else
-  vec4 normalTexel = texture(normalMap, uvNormal);
+  vec4 normalTexel = sampleMap(normalMap, s.detail.uv, vec2(1.0));
 #endif
   vec3 encoded = normalTexel.rgb;
 #ifdef NORMAL_MAP_GREEN_DOWN
@@ -177,62 +161,95 @@ void main() {
 #ifdef NORMAL_MAP_STRENGTH
   tangentNormal.xy = tangentNormal.xy * normalStrength;
 #endif
-  mappedTangent = safeNormalize(tangentNormal);
+  s.mappedTangent = safeNormalize(tangentNormal);
 #endif
 #ifdef SURFACE_BUMP_BLINN
-  mappedTangent = detail.bumpTangent;
+  s.mappedTangent = s.detail.bumpTangent;
 #endif
-
-  vec3 nl = n;
+  s.nl = s.n;
 #if defined(LIGHTING_TANGENT)
-  nl = mappedTangent;
+  s.nl = s.mappedTangent;
 #elif defined(HAS_NORMAL_MAP) || defined(SURFACE_BUMP_BLINN)
-  nl = safeNormalize(t * mappedTangent.x + b * mappedTangent.y + n * mappedTangent.z);
+  s.nl = safeNormalize(s.t * s.mappedTangent.x + s.b * s.mappedTangent.y + s.n * s.mappedTangent.z);
 #endif
+  return s;
+}
 
-  vec4 colour = vec4(0.0);
-#if defined(VIEW_SHADED)
-  vec3 kdAlbedo = kd * albedo;   // diffuse's first product
-  vec3 ksSpec = ks * specScale;  // specular's first
-  // What no light scales first: the ambient term, then the environment's diffuse light, added
-  // as the lights' diffuse terms are (environment.glsl). The G-buffer pass stores this sum.
+// The material's own texels at the surface detail's uv (C++: materialTexelsLanes): the diffuse
+// map's albedo and the specular map's scale, 1 without the map, each map read at its own uv
+// (its uv transform, an MTL's -s and -o).
+struct MaterialTexels {
+  vec3 albedo;
+  vec3 specScale;
+};
+
+MaterialTexels materialTexels(vec2 uvMaps) {
+  MaterialTexels m = MaterialTexels(vec3(1.0), vec3(1.0));
+#ifdef HAS_DIFFUSE_MAP
+#ifdef DIFFUSE_UV_TRANSFORM
+  m.albedo = sampleMap(diffuseMap, uvMaps * diffuseUvScale + diffuseUvOffset, diffuseUvScale).rgb;
+#else
+  m.albedo = sampleMap(diffuseMap, uvMaps, vec2(1.0)).rgb;
+#endif
+#endif
+#ifdef HAS_SPECULAR_MAP
+#ifdef SPECULAR_UV_TRANSFORM
+  m.specScale = sampleMap(specularMap, uvMaps * specularUvScale + specularUvOffset, specularUvScale).rgb;
+#else
+  m.specScale = sampleMap(specularMap, uvMaps, vec2(1.0)).rgb;
+#endif
+#endif
+  return m;
+}
+
+// What no light scales, summed first (C++: unlitTermsLanes): the ambient term, then the
+// environment's diffuse light, added as the lights' diffuse terms are (environment.glsl). The
+// forward shading adds the lights to it; the G-buffer pass stores it.
+vec3 unlitTerms(SurfaceFrame s, vec3 albedo, vec3 kdAlbedo) {
   vec3 ambientTerm = ka * albedo * ambient;
   vec3 unlit = ambientTerm;
 #ifdef ENVIRONMENT_DIFFUSE
-  unlit = unlit + kdAlbedo * environmentDiffuse(nl, t, b, n);
+  unlit = unlit + kdAlbedo * environmentDiffuse(s.nl, s.t, s.b, s.n);
 #endif
-#if !defined(GBUFFER_PASS) || defined(GBUFFER_LIT_HERE)
-  LightSum lit = lightSum(posWorld, n, t, b, nl, kdAlbedo, ksSpec, shininess
+  return unlit;
+}
+
+// The frame's lights at this fragment (lighting.glsl's lightSum, C++: lightSumLanes).
+LightSum lightsAt(SurfaceFrame s, vec3 kdAlbedo, vec3 ksSpec) {
+  return lightSum(posWorld, s.n, s.t, s.b, s.nl, kdAlbedo, ksSpec, shininess
 #ifdef LIGHTING_TANGENT
-                          , lightDirTangent, eyeDirTangent
+                  , lightDirTangent, eyeDirTangent
 #endif
 #ifdef HAS_HEIGHT_MAP
-                          , detail, uv
+                  , s.detail, uv
 #endif
   );
-  colour = vec4(unlit + lit.sum, 1.0);
+}
+
+// The environment mixed into the Phong colour (environment.glsl), or one of its views; an
+// environment view on a surface that reads no reflection is dimmed to grey. C++: the
+// environment step of shadeFragmentLanes.
+vec4 environmentStep(SurfaceFrame s, vec4 colour) {
 #if defined(ENVIRONMENT_REFLECT) || defined(ENVIRONMENT_REFRACTION)
-  // The environment, mixed into the Phong colour (environment.glsl).
-#ifdef LIGHTING_TANGENT
-  vec3 eyeVecEnvironment = eyeDirTangent;
-#else
-  vec3 eyeVecEnvironment = eyePosWorld - posWorld;
-#endif
   vec3 reflectWorld;
   float reflectLod;
   vec3 reflected;
   float share;
-  colour = vec4(environmentMix(nl, eyeVecEnvironment, t, b, n, colour.rgb, reflectWorld, reflectLod, reflected, share),
+  colour = vec4(environmentMix(s.nl, eyeVector(), s.t, s.b, s.n, colour.rgb, reflectWorld, reflectLod, reflected, share),
                 1.0);
 #ifdef ENVIRONMENT_VIEW
   colour = environmentViewColour(reflectWorld, reflectLod);
 #endif
 #elif defined(ENVIRONMENT_VIEW)
-  // An environment view on a surface that reads no reflection: dimmed to grey.
   colour = dimmedColour(colour);
 #endif
+  return colour;
+}
+
+// The shadow views (shadow.glsl): the first shadowed light's test, or dimmed without one; the
+// pixel inspector's probe of its bits. C++: the shadow-view step of shadeFragmentLanes.
+vec4 shadowViewStep(LightSum lit, vec4 colour) {
 #if defined(SHADOW_VIEW_SHADOW) || defined(SHADOW_VIEW_LIGHT_DEPTH)
-  // The shadow views (shadow.glsl): the first shadowed light's test, or dimmed without one.
 #ifdef HAS_SHADOWS
   if (!lit.haveShadowTest) {
     colour = dimmedColour(colour);
@@ -250,20 +267,26 @@ void main() {
 #ifdef SHADOW_PROBE
   colour = shadowProbeColour(lit.firstShadowTest, lit.haveShadowTest);  // shadow.glsl: one field's bits
 #endif
-#endif  // the forward lighting
+  return colour;
+}
+
 #ifdef GBUFFER_PASS
-  // The G-buffer (C++ twin: gbufferFragmentLanes, softrender/deferred-inl.h). The lighting
-  // normal in world space: a tangent-space material's mapped normal through its TBN.
-  vec3 nlWorld = nl;
+// The G-buffer's targets for this fragment (C++: gbufferFragmentLanes, softrender/deferred-inl.h).
+// The lighting normal in world space: a tangent-space material's mapped normal through its TBN.
+// A material lit here stores its colour as emission; any other folds the environment's mix,
+// colour = phong + (C - phong) w, into the targets: albedo and specular scaled by (1 - w), the
+// emission (1 - w) unlit + w C. Refraction: w = 1.
+void gbufferFragment(SurfaceFrame s, vec3 kdAlbedo, vec3 ksSpec, vec3 unlit, vec4 colour) {
+  vec3 nlWorld = s.nl;
 #ifdef LIGHTING_TANGENT
 #if defined(HAS_NORMAL_MAP) || defined(SURFACE_BUMP_BLINN)
-  nlWorld = safeNormalize(t * mappedTangent.x + b * mappedTangent.y + n * mappedTangent.z);
+  nlWorld = safeNormalize(s.t * s.mappedTangent.x + s.b * s.mappedTangent.y + s.n * s.mappedTangent.z);
 #else
-  nlWorld = n;
+  nlWorld = s.n;
 #endif
 #endif
   gbufferNormal = vec4(nlWorld, shininess);
-  gbufferGeometric = vec4(n, 1.0);
+  gbufferGeometric = vec4(s.n, 1.0);
 #ifdef GBUFFER_POSITION
   gbufferPosition = vec4(posWorld, 1.0);
 #endif
@@ -272,28 +295,20 @@ void main() {
   gbufferSpecular = vec4(0.0, 0.0, 0.0, ssrReflect);
   gbufferEmission = vec4(clamp(colour.rgb, 0.0, 1.0), 1.0);
 #else
-  // The environment's mix, colour = phong + (C - phong) w, folded into the targets: albedo and
-  // specular scaled by (1 - w), the emission (1 - w) unlit + w C. Refraction: w = 1.
   float mixShare = 0.0;
   vec3 mixTarget = vec3(0.0);
 #if defined(ENVIRONMENT_REFLECT) || defined(ENVIRONMENT_REFRACTION)
-#ifdef LIGHTING_TANGENT
-  vec3 eyeVecSurface = eyeDirTangent;
-#else
-  vec3 eyeVecSurface = eyePosWorld - posWorld;
-#endif
-  vec3 reflectWorldSurface;
-  float reflectLodSurface;
-  vec3 reflectedSurface;
-  float shareSurface;
-  vec3 mixedSurface = environmentMix(nl, eyeVecSurface, t, b, n, vec3(0.0), reflectWorldSurface, reflectLodSurface,
-                                     reflectedSurface, shareSurface);
+  vec3 reflectWorld;
+  float reflectLod;
+  vec3 reflected;
+  float share;
+  vec3 mixed = environmentMix(s.nl, eyeVector(), s.t, s.b, s.n, vec3(0.0), reflectWorld, reflectLod, reflected, share);
 #ifdef ENVIRONMENT_REFRACTION
   mixShare = 1.0;
-  mixTarget = mixedSurface;
+  mixTarget = mixed;
 #else
-  mixShare = shareSurface;
-  mixTarget = reflectedSurface;
+  mixShare = share;
+  mixTarget = reflected;
 #endif
 #endif
   float keep = 1.0 - mixShare;
@@ -301,50 +316,47 @@ void main() {
   gbufferSpecular = vec4(ksSpec * keep, ssrReflect);
   gbufferEmission = vec4(unlit * keep + mixTarget * mixShare, 1.0);
 #endif
+}
 #endif
-#elif defined(VIEW_ALBEDO)
-  colour = vec4(albedo * kd, 1.0);
-#elif defined(VIEW_NORMAL)
-  colour = vectorAsColour(n);
-#elif defined(VIEW_TANGENT)
-  colour = vectorAsColour(t);
-#elif defined(VIEW_BITANGENT)
-  colour = vectorAsColour(b);
-#elif defined(VIEW_MAPPED_NORMAL)
-  colour = vectorAsColour(nl);
-#elif defined(VIEW_UV)
-  colour = vec4(uv.x - floor(uv.x), uv.y - floor(uv.y), 0.0, 1.0);
-#elif defined(VIEW_DEPTH)
-  float depth = clamp(gl_FragCoord.z, 0.0, 1.0);  // window depth, clamped to the depth range
-  colour = vec4(depth, depth, depth, 1.0);
-#elif defined(VIEW_LIGHT_TANGENT) || defined(VIEW_EYE_TANGENT)
-#ifdef VIEW_LIGHT_TANGENT
-  const bool kLight = true;
-#else
-  const bool kLight = false;
+
+// The shaded view (C++: shadeFragmentLanes' View::Shaded branch): unlit terms, the lights, the
+// environment and the shadow views; the G-buffer pass writes its targets instead.
+vec4 shadedColour(SurfaceFrame s, MaterialTexels m) {
+  vec3 kdAlbedo = kd * m.albedo;     // diffuse's first product
+  vec3 ksSpec = ks * m.specScale;    // specular's first
+  vec3 unlit = unlitTerms(s, m.albedo, kdAlbedo);
+  vec4 colour = vec4(0.0);
+#if !defined(GBUFFER_PASS) || defined(GBUFFER_LIT_HERE)
+  LightSum lit = lightsAt(s, kdAlbedo, ksSpec);
+  colour = vec4(unlit + lit.sum, 1.0);
+  colour = environmentStep(s, colour);
+  colour = shadowViewStep(lit, colour);
 #endif
-  vec3 dirTangent = vec3(0.0);  // no light: (0, 0, 0), shown as grey 0.5
-  if (!kLight || lightCount > 0) {
+#ifdef GBUFFER_PASS
+  gbufferFragment(s, kdAlbedo, ksSpec, unlit, colour);
+#endif
+  return colour;
+}
+
+// A tangent-space direction view: the first light's or the eye's direction in the fragment's
+// tangent frame; no light gives (0, 0, 0), shown as grey 0.5. C++: shadeFragmentLanes'
+// LightTangent and EyeTangent branch.
+vec4 tangentDirectionColour(SurfaceFrame s, bool toLight) {
+  vec3 dirTangent = vec3(0.0);
+  if (!toLight || lightCount > 0) {
 #ifdef LIGHTING_TANGENT
-    dirTangent = safeNormalize(kLight ? lightDirTangent[0] : eyeDirTangent);
+    dirTangent = safeNormalize(toLight ? lightDirTangent[0] : eyeDirTangent);
 #else
-    vec3 w = kLight ? toLightWorld(lights[0], posWorld) : eyePosWorld - posWorld;
-    dirTangent = safeNormalize(vec3(dot3(t, w), dot3(b, w), dot3(n, w)));
+    vec3 w = toLight ? toLightWorld(lights[0], posWorld) : eyePosWorld - posWorld;
+    dirTangent = safeNormalize(vec3(dot3(s.t, w), dot3(s.b, w), dot3(s.n, w)));
 #endif
   }
-  colour = vectorAsColour(dirTangent);
-#elif defined(VIEW_HEIGHT)
-  colour = vec4(detailHeight, detailHeight, detailHeight, 1.0);
-#elif defined(VIEW_PARALLAX_OFFSET)
-  colour = vec4(0.5 + (uvMaps.x - uv.x) * PARALLAX_OFFSET_VIEW_GAIN, 0.5 + (uvMaps.y - uv.y) * PARALLAX_OFFSET_VIEW_GAIN,
-                0.5, 1.0);
-#elif defined(VIEW_PARALLAX_STEPS)
-#ifdef HAS_HEIGHT_MAP
-  colour = heatColour(detailSteps / float(layerCap + refinementSteps));
-#else
-  colour = heatColour(0.0);
-#endif
-#elif defined(VIEW_SELF_SHADOW)
+  return vectorAsColour(dirTangent);
+}
+
+// The first light's self-shadowing factor as grey (1 without self-shadowing or lights).
+// C++: shadeFragmentLanes' SelfShadow branch.
+vec4 selfShadowColour(SurfaceFrame s) {
   float shadow = 1.0;
 #ifdef SELF_SHADOW
   if (lightCount > 0) {
@@ -353,14 +365,61 @@ void main() {
 #else
     vec3 lVec0 = toLightWorld(lights[0], posWorld);
 #endif
-    shadow = selfShadow(detail, tangentFromLighting(lVec0, t, b, n));
+    shadow = selfShadow(s.detail, tangentFromLighting(lVec0, s.t, s.b, s.n));
   }
 #endif
-  colour = vec4(shadow, shadow, shadow, 1.0);
+  return vec4(shadow, shadow, shadow, 1.0);
+}
+
+#ifndef VIEW_SHADED
+// The debug views (C++: shadeFragmentLanes' other branches, in the same order).
+vec4 debugViewColour(SurfaceFrame s, MaterialTexels m) {
+#if defined(VIEW_ALBEDO)
+  return vec4(m.albedo * kd, 1.0);
+#elif defined(VIEW_NORMAL)
+  return vectorAsColour(s.n);
+#elif defined(VIEW_TANGENT)
+  return vectorAsColour(s.t);
+#elif defined(VIEW_BITANGENT)
+  return vectorAsColour(s.b);
+#elif defined(VIEW_MAPPED_NORMAL)
+  return vectorAsColour(s.nl);
+#elif defined(VIEW_UV)
+  return vec4(uv.x - floor(uv.x), uv.y - floor(uv.y), 0.0, 1.0);
+#elif defined(VIEW_DEPTH)
+  float depth = clamp(gl_FragCoord.z, 0.0, 1.0);  // window depth, clamped to the depth range
+  return vec4(depth, depth, depth, 1.0);
+#elif defined(VIEW_LIGHT_TANGENT)
+  return tangentDirectionColour(s, true);
+#elif defined(VIEW_EYE_TANGENT)
+  return tangentDirectionColour(s, false);
+#elif defined(VIEW_HEIGHT)
+  return vec4(s.detail.height, s.detail.height, s.detail.height, 1.0);
+#elif defined(VIEW_PARALLAX_OFFSET)
+  return vec4(0.5 + (s.detail.uv.x - uv.x) * PARALLAX_OFFSET_VIEW_GAIN,
+              0.5 + (s.detail.uv.y - uv.y) * PARALLAX_OFFSET_VIEW_GAIN, 0.5, 1.0);
+#elif defined(VIEW_PARALLAX_STEPS)
+#ifdef HAS_HEIGHT_MAP
+  return heatColour(s.detail.steps / float(layerCap + refinementSteps));
+#else
+  return heatColour(0.0);
+#endif
+#elif defined(VIEW_SELF_SHADOW)
+  return selfShadowColour(s);
 #else
 #error "phong.frag: no VIEW_<NAME> defined"
 #endif
+}
+#endif
 
+void main() {
+  SurfaceFrame s = surfaceFrame();
+  MaterialTexels m = materialTexels(s.detail.uv);
+#ifdef VIEW_SHADED
+  vec4 colour = shadedColour(s, m);
+#else
+  vec4 colour = debugViewColour(s, m);
+#endif
 #ifndef GBUFFER_PASS
   fragColour = clamp(colour, 0.0, 1.0);
 #endif

@@ -190,6 +190,43 @@ Sample sampleAt(ScreenRay r, float j) {
   return s;
 }
 
+// The hiz cell a pixel falls in at a level of cellSize pixels (the last row and column reach
+// the viewport's edge: the level's size rounds down), its bounds in pixels, and the last
+// sample of the ray inside it. C++: the cell step of ssrScreenMarchLanes.
+struct Cell {
+  float x;
+  float y;
+  float left;
+  float bottom;
+  float right;
+  float top;
+  float last;
+};
+
+Cell cellOf(ScreenRay ray, vec2 pixel, float cellSize) {
+  Cell c;
+  float levelWidth = floor(viewportSize.x / cellSize);
+  float levelHeight = floor(viewportSize.y / cellSize);
+  c.x = min(floor(pixel.x / cellSize), levelWidth - 1.0);
+  c.y = min(floor(pixel.y / cellSize), levelHeight - 1.0);
+  c.left = c.x * cellSize;
+  c.bottom = c.y * cellSize;
+  c.right = c.x == levelWidth - 1.0 ? viewportSize.x : c.left + cellSize;
+  c.top = c.y == levelHeight - 1.0 ? viewportSize.y : c.bottom + cellSize;
+  bool rightward = ray.step.x > 0.0;
+  bool leftward = ray.step.x < 0.0;
+  bool upward = ray.step.y > 0.0;
+  bool downward = ray.step.y < 0.0;
+  float safeStepX = rightward || leftward ? ray.step.x : 1.0;
+  float safeStepY = upward || downward ? ray.step.y : 1.0;
+  float lastX = rightward ? (0.0 - floor((ray.origin.x - c.right) / safeStepX)) - 1.0
+                          : (leftward ? floor((c.left - ray.origin.x) / safeStepX) : ray.lastSample);
+  float lastY = upward ? (0.0 - floor((ray.origin.y - c.top) / safeStepY)) - 1.0
+                       : (downward ? floor((c.bottom - ray.origin.y) / safeStepY) : ray.lastSample);
+  c.last = min(min(lastX, lastY), ray.lastSample);
+  return c;
+}
+
 // hiz: the highest level the last march skipped a cell at (SsrMarchL::level).
 float levelReached = 0.0;
 
@@ -237,29 +274,12 @@ float screenMarch(vec3 origin, vec3 dir, out float steps, out ivec2 hitPixel) {
         cellSize = 2.0;
       }
     } else {
-      float levelWidth = floor(viewportSize.x / cellSize);
-      float levelHeight = floor(viewportSize.y / cellSize);
-      float cx = min(floor(sn.pixel.x / cellSize), levelWidth - 1.0);
-      float cy = min(floor(sn.pixel.y / cellSize), levelHeight - 1.0);
-      float left = cx * cellSize;
-      float bottom = cy * cellSize;
-      float right = cx == levelWidth - 1.0 ? viewportSize.x : left + cellSize;
-      float top = cy == levelHeight - 1.0 ? viewportSize.y : bottom + cellSize;
-      bool rightward = ray.step.x > 0.0;
-      bool leftward = ray.step.x < 0.0;
-      bool upward = ray.step.y > 0.0;
-      bool downward = ray.step.y < 0.0;
-      float safeStepX = rightward || leftward ? ray.step.x : 1.0;
-      float safeStepY = upward || downward ? ray.step.y : 1.0;
-      float lastX = rightward ? (0.0 - floor((ray.origin.x - right) / safeStepX)) - 1.0
-                              : (leftward ? floor((left - ray.origin.x) / safeStepX) : ray.lastSample);
-      float lastY = upward ? (0.0 - floor((ray.origin.y - top) / safeStepY)) - 1.0
-                           : (downward ? floor((bottom - ray.origin.y) / safeStepY) : ray.lastSample);
-      float last = min(min(lastX, lastY), ray.lastSample);
+      Cell c = cellOf(ray, sn.pixel, cellSize);
+      float last = c.last;
       Sample sl = sampleAt(ray, last);
-      bool fits = last >= n && sl.onScreen && sl.pixel.x >= left && sl.pixel.x < right && sl.pixel.y >= bottom &&
-                  sl.pixel.y < top;
-      float cellLeast = fits ? texelFetch(hizDistance, ivec2(int(cx), int(cy)), int(level)).r : 0.0;
+      bool fits = last >= n && sl.onScreen && sl.pixel.x >= c.left && sl.pixel.x < c.right && sl.pixel.y >= c.bottom &&
+                  sl.pixel.y < c.top;
+      float cellLeast = fits ? texelFetch(hizDistance, ivec2(int(c.x), int(c.y)), int(level)).r : 0.0;
       bool skip = fits && max(sn.w, sl.w) < cellLeast;
       record(skip ? 6.0 : 7.0, sn.pixel, max(sn.w, sl.w), fits ? cellLeast : 0.0, level, skip ? last : n);
       if (skip) {

@@ -9,6 +9,16 @@
 // Heights: red channel, 1 = top; the polygon lies at the top, depth = 1 - h in units of
 // heightScale (texture-space units).
 
+// The detail a height field gives one fragment (C++: SurfaceDetailL): the uv every map is read
+// at, the height there, the parallax march's steps and bump_blinn's normal. Declared for every
+// material: without a height map it holds the fragment's own uv, height 1 and no steps.
+struct SurfaceDetail {
+  vec2 uv;
+  float height;
+  float steps;
+  vec3 bumpTangent;
+};
+
 #ifdef HAS_HEIGHT_MAP
 uniform sampler2D heightMap;
 uniform float heightScale;  // texture-space units
@@ -44,13 +54,6 @@ vec3 tangentFromLighting(vec3 w, vec3 t, vec3 b, vec3 n) {
 float layerCount(vec3 dir) {
   return layersMin + (layersMax - layersMin) * (1.0 - abs(dir.z));
 }
-
-struct SurfaceDetail {
-  vec2 uv;
-  float height;
-  float steps;
-  vec3 bumpTangent;
-};
 
 vec3 bumpBlinn(vec2 uv0) {
   float du = heightTexel.x;

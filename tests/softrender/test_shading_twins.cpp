@@ -1,0 +1,182 @@
+// The GLSL in shaders/ and its C++ twins, held to docs/shading.md's table of twins: every GLSL
+// function has a row, every row names functions that exist on both sides, and no GLSL function
+// grows past what a reader takes in at once.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kMaxGlslFunctionLines = 80;  // signature to closing brace
+constexpr int kMaxPhongMainLines = 60;
+
+fs::path sourceDir() { return fs::path(TWINRASTER_SOURCE_DIR); }
+
+std::vector<std::string> linesOf(const fs::path& path) {
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+struct GlslFunction {
+  std::string file;  // relative to the source folder, "shaders/phong.frag"
+  std::string name;
+  int firstLine = 0;  // 1-based, the signature
+  int lineCount = 0;  // the longest of its definitions (a function defined per #ifdef branch)
+};
+
+// A definition starts at column 0 with "type name(" and runs to the brace that closes it.
+int definitionLength(const std::vector<std::string>& lines, std::size_t first) {
+  int depth = 0;
+  bool opened = false;
+  for (std::size_t i = first; i < lines.size(); ++i) {
+    for (char c : lines[i]) {
+      if (c == '{') {
+        ++depth;
+        opened = true;
+      } else if (c == '}') {
+        --depth;
+      }
+    }
+    if (opened && depth == 0) return static_cast<int>(i - first + 1);
+  }
+  return static_cast<int>(lines.size() - first);
+}
+
+std::vector<GlslFunction> glslFunctions() {
+  static const std::regex signature(R"(^([A-Za-z_]\w*)\s+([A-Za-z_]\w*)\s*\()");
+  static const std::set<std::string> notTypes = {"return", "else", "uniform", "in", "out", "layout", "struct", "const"};
+  std::vector<GlslFunction> functions;
+  std::vector<fs::path> files;
+  for (const fs::directory_entry& entry : fs::directory_iterator(sourceDir() / "shaders")) files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  for (const fs::path& path : files) {
+    const std::vector<std::string> lines = linesOf(path);
+    std::map<std::string, std::size_t> index;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      std::smatch m;
+      if (!std::regex_search(lines[i], m, signature) || notTypes.count(m[1].str())) continue;
+      const int length = definitionLength(lines, i);
+      const std::string name = m[2].str();
+      if (index.count(name)) {
+        GlslFunction& existing = functions[index[name]];
+        existing.lineCount = std::max(existing.lineCount, length);
+        continue;
+      }
+      index[name] = functions.size();
+      functions.push_back({"shaders/" + path.filename().string(), name, static_cast<int>(i + 1), length});
+    }
+  }
+  return functions;
+}
+
+struct TwinRow {
+  std::string glslFile, glslName, cppFile, cppName, note;
+  int docLine = 0;
+};
+
+// docs/shading.md's rows: | `shaders/FILE:function` | `softrender/FILE:function` | note |
+std::vector<TwinRow> twinRows() {
+  static const std::regex row(R"(^\|\s*`([^`:]+):(\w+)`\s*\|\s*`([^`:]+)(?::(\w+))?`\s*\|\s*(.*?)\s*\|\s*$)");
+  std::vector<TwinRow> rows;
+  const std::vector<std::string> lines = linesOf(sourceDir() / "docs" / "shading.md");
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    std::smatch m;
+    if (!std::regex_match(lines[i], m, row)) continue;
+    rows.push_back({m[1].str(), m[2].str(), m[3].str(), m[4].str(), m[5].str(), static_cast<int>(i + 1)});
+  }
+  return rows;
+}
+
+// A C++ definition: a line where the name follows a return type ("... Vec3L<L> nameLanes(") and
+// nothing marks a call (an assignment, a return, a member access, an open call before it); a
+// declaration ending in ';' does not count.
+bool definesFunction(const fs::path& path, const std::string& name) {
+  const std::regex definition("^[^=;(.\"]*[\\w>*&]\\s+" + name + "\\s*\\(");
+  for (const std::string& line : linesOf(path)) {
+    const std::size_t text = line.find_first_not_of(" \t");
+    if (text == std::string::npos || line.compare(text, 2, "//") == 0 || line.compare(text, 7, "return ") == 0) continue;
+    if (!std::regex_search(line, definition)) continue;
+    const std::size_t end = line.find_last_not_of(" \t");
+    if (line[end] != ';') return true;
+  }
+  return false;
+}
+
+TEST(ShadingTwins, TheShadersAndTheTableAreRead) {
+  // Guards the parsers: a table or a shader folder read as empty would pass every check below.
+  EXPECT_GE(glslFunctions().size(), 60u);
+  EXPECT_GE(twinRows().size(), 60u);
+}
+
+TEST(ShadingTwins, EveryGlslFunctionHasATwinListed) {
+  std::set<std::string> listed;
+  for (const TwinRow& row : twinRows()) listed.insert(row.glslFile + ":" + row.glslName);
+  for (const GlslFunction& f : glslFunctions()) {
+    EXPECT_TRUE(listed.count(f.file + ":" + f.name))
+        << f.file << ":" << f.firstLine << ": " << f.name
+        << " has no row in docs/shading.md's table of twins (GLSL file:function -> C++ file:function)";
+  }
+}
+
+TEST(ShadingTwins, EveryListedTwinExistsOnBothSides) {
+  std::set<std::string> glsl;
+  for (const GlslFunction& f : glslFunctions()) glsl.insert(f.file + ":" + f.name);
+  for (const TwinRow& row : twinRows()) {
+    const std::string where = "docs/shading.md:" + std::to_string(row.docLine) + ": ";
+    EXPECT_TRUE(glsl.count(row.glslFile + ":" + row.glslName))
+        << where << row.glslFile << " defines no GLSL function " << row.glslName;
+    const fs::path cpp = sourceDir() / row.cppFile;
+    if (!fs::exists(cpp)) {
+      ADD_FAILURE() << where << "no file " << row.cppFile;
+      continue;
+    }
+    if (row.cppName.empty()) {
+      // Only a GL-side probe has no C++ function; the row says so.
+      EXPECT_EQ(row.note.rfind("GL only", 0), 0u) << where << row.glslName << " names no C++ function";
+      continue;
+    }
+    EXPECT_TRUE(definesFunction(cpp, row.cppName))
+        << where << row.cppFile << " defines no function " << row.cppName << " (the twin of " << row.glslName << ")";
+  }
+}
+
+TEST(ShadingTwins, NoGlslFunctionIsLongerThanAReaderTakesIn) {
+  for (const GlslFunction& f : glslFunctions()) {
+    EXPECT_LE(f.lineCount, kMaxGlslFunctionLines) << f.file << ":" << f.firstLine << ": " << f.name << " is "
+                                                  << f.lineCount << " lines; split it into named steps";
+  }
+}
+
+TEST(ShadingTwins, PhongMainIsTheListOfNamedSteps) {
+  bool found = false;
+  for (const GlslFunction& f : glslFunctions()) {
+    if (f.file != "shaders/phong.frag" || f.name != "main") continue;
+    found = true;
+    EXPECT_LE(f.lineCount, kMaxPhongMainLines) << "shaders/phong.frag:" << f.firstLine << ": main() is " << f.lineCount
+                                               << " lines";
+  }
+  EXPECT_TRUE(found) << "shaders/phong.frag has no main()";
+}
+
+// The checks can fail: a renamed C++ twin is missed, and a function nobody listed is found.
+TEST(ShadingTwins, TheDefinitionCheckTellsADefinitionFromACall) {
+  const fs::path shade = sourceDir() / "softrender" / "shade-inl.h";
+  EXPECT_TRUE(definesFunction(shade, "surfaceFrameLanes"));
+  EXPECT_FALSE(definesFunction(shade, "surfaceFrameLanesRenamed"));
+  // Called there, defined in environment-inl.h.
+  EXPECT_FALSE(definesFunction(shade, "environmentDiffuseLanes"));
+}
+
+}  // namespace
