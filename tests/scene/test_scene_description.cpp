@@ -50,7 +50,7 @@ TEST(SceneDescription, TextListsTheTreeIndentedAndTheTotals) {
   ASSERT_NE(ball, std::string::npos) << text;
   ASSERT_NE(box, std::string::npos) << text;
   EXPECT_LT(ball, box) << text;
-  EXPECT_NE(text.find(std::to_string(2 * 8 * 3 + 12)), std::string::npos) << text;
+  EXPECT_NE(text.find("total: " + std::to_string(2 * 8 * 3 + 12) + " triangles"), std::string::npos) << text;
   EXPECT_NE(text.find("plain"), std::string::npos) << text;
 }
 
