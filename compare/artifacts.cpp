@@ -4,6 +4,7 @@
 #include "scene/errors.h"
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 
 namespace twr {
 

@@ -7,6 +7,7 @@
 #include "scene/environment.h"
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 
 namespace twr {
 

@@ -19,7 +19,7 @@
 #include "scene/image.h"
 #include "scene/renderer.h"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>  // declarations only: json.hpp costs 4 s per source that includes it
 
 #include <optional>
 #include <string>

@@ -6,6 +6,7 @@
 #include "compare/side_by_side.h"
 
 #include <algorithm>
+#include <nlohmann/json.hpp>
 
 namespace twr {
 

@@ -5,7 +5,7 @@
 #include "raytrace/ssr_reference.h"
 #include "scene/image.h"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>  // declarations only: json.hpp costs 4 s per source that includes it
 
 #include <string>
 #include <vector>

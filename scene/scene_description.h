@@ -4,7 +4,7 @@
 
 #include "scene/scene.h"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>  // declarations only: json.hpp costs 4 s per source that includes it
 
 #include <ostream>
 

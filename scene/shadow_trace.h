@@ -9,7 +9,7 @@
 #include "scene/conventions.h"
 #include "scene/shadow_map.h"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>  // declarations only: json.hpp costs 4 s per source that includes it
 
 #include <cstddef>
 #include <optional>

@@ -15,6 +15,7 @@
 #include "softrender/vertex.h"
 
 #include <cstdio>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 namespace twr {

@@ -16,7 +16,7 @@
 #include "softrender/setup.h"
 #include "softrender/shade.h"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>  // declarations only: json.hpp costs 4 s per source that includes it
 
 #include <array>
 #include <cstdint>

@@ -9,6 +9,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 #include <glad/gl.h>
+#include <nlohmann/json.hpp>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 

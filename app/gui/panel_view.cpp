@@ -11,6 +11,7 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include <nlohmann/json.hpp>
 
 #include <imgui_stdlib.h>
 

@@ -14,6 +14,7 @@
 #include "softrender/cpu_renderer.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <string>

@@ -9,6 +9,7 @@
 #include "synthetic_outputs.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 

@@ -7,6 +7,7 @@
 #include "synthetic_outputs.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <filesystem>

@@ -18,6 +18,7 @@
 #include "tests/missing_dependency.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <filesystem>

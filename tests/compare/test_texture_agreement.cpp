@@ -15,6 +15,7 @@
 #include "softrender/cpu_renderer.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cstring>
 #include <filesystem>

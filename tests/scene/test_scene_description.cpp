@@ -4,6 +4,7 @@
 #include "scene/scene_file.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <sstream>
 #include <string>

@@ -6,6 +6,7 @@
 #include "scene/ssr_trace_report.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <string>
