@@ -69,9 +69,17 @@ std::string allCpuIsaNames() {
   return names;
 }
 
+std::int64_t fastKernelTargets() {
+#ifdef TWR_KERNEL_TARGETS
+  return HWY_TARGETS & (TWR_KERNEL_TARGETS);
+#else
+  return HWY_TARGETS;
+#endif
+}
+
 bool cpuIsaCompiled(CpuIsa isa) {
   const std::int64_t target = highwayTargetOf(isa);
-  return target != 0 && (HWY_TARGETS & target) != 0;
+  return target != 0 && (fastKernelTargets() & target) != 0;
 }
 
 std::vector<CpuIsa> supportedCpuIsas() {
@@ -106,8 +114,13 @@ std::string cpuIsaUnsupportedReason(CpuIsa isa) {
   }
   const std::string name(toString(isa));
   if (!cpuIsaCompiled(isa)) {
+#ifdef TWR_KERNEL_TARGETS
+    return name + ": not compiled into this binary (built with the kernels for " + TWR_KERNEL_TARGET_NAMES +
+           " only, TWINRASTER_KERNEL_TARGETS; it runs " + runs + ")";
+#else
     return name + ": not compiled into this binary (built for " + (HWY_ARCH_X86 ? "x86-64" : HWY_ARCH_ARM ? "Arm" : "another architecture") +
            "; it runs " + runs + ")";
+#endif
   }
   return name + ": this CPU lacks it (it runs " + runs + ")";
 }

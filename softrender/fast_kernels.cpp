@@ -134,7 +134,12 @@ HWY_AFTER_NAMESPACE();
 #include "softrender/deferred-inl.h"
 #include "softrender/ssr-inl.h"
 
-#if defined(TWR_FAST_KERNEL_TARGETS) && (HWY_TARGET & (TWR_FAST_KERNEL_TARGETS))
+// TWR_KERNEL_TARGETS (CMake's TWINRASTER_KERNEL_TARGETS): the targets given kernels at all; by
+// default every one Highway compiles.
+#ifndef TWR_KERNEL_TARGETS
+#define TWR_KERNEL_TARGETS HWY_TARGETS
+#endif
+#if defined(TWR_FAST_KERNEL_TARGETS) && (HWY_TARGET & (TWR_FAST_KERNEL_TARGETS)) && (HWY_TARGET & (TWR_KERNEL_TARGETS))
 HWY_BEFORE_NAMESPACE();
 namespace twr {
 namespace HWY_NAMESPACE {
@@ -656,29 +661,38 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE && !defined(TWR_FAST_KERNEL_TARGETS)
 namespace twr {
 
+#if TWR_KERNEL_TARGETS == HWY_TARGETS
 HWY_EXPORT(GetKernels);
+#endif
 
 FastKernels fastKernelsFor(CpuIsa isa) {
   if (!cpuIsaSupported(isa)) throw InputError("cpu renderer: --cpu-isa " + cpuIsaUnsupportedReason(isa));
+#if TWR_KERNEL_TARGETS == HWY_TARGETS
   if (isa == CpuIsa::Auto) return HWY_DYNAMIC_DISPATCH(GetKernels)();
+#else
+  // Highway's dispatch table would hold its portable target, which has no kernels here: the
+  // best target with kernels, by name, with Highway's choice recorded as its dispatch does.
+  hwy::GetChosenTarget().Update(hwy::SupportedTargets());
+  isa = resolveCpuIsa(isa);
+#endif
   // A named target: its namespace's kernels directly (each exists when HWY_TARGETS has it).
   switch (highwayTargetOf(isa)) {
-#if HWY_TARGETS & HWY_AVX3
+#if HWY_TARGETS & TWR_KERNEL_TARGETS & HWY_AVX3
     case HWY_AVX3: return N_AVX3::GetKernels();
 #endif
-#if HWY_TARGETS & HWY_AVX2
+#if HWY_TARGETS & TWR_KERNEL_TARGETS & HWY_AVX2
     case HWY_AVX2: return N_AVX2::GetKernels();
 #endif
-#if HWY_TARGETS & HWY_SSE4
+#if HWY_TARGETS & TWR_KERNEL_TARGETS & HWY_SSE4
     case HWY_SSE4: return N_SSE4::GetKernels();
 #endif
-#if HWY_TARGETS & HWY_NEON
+#if HWY_TARGETS & TWR_KERNEL_TARGETS & HWY_NEON
     case HWY_NEON: return N_NEON::GetKernels();
 #endif
-#if HWY_TARGETS & HWY_EMU128
+#if HWY_TARGETS & TWR_KERNEL_TARGETS & HWY_EMU128
     case HWY_EMU128: return N_EMU128::GetKernels();
 #endif
-#if HWY_TARGETS & HWY_SCALAR
+#if HWY_TARGETS & TWR_KERNEL_TARGETS & HWY_SCALAR
     case HWY_SCALAR: return N_SCALAR::GetKernels();
 #endif
     default: break;

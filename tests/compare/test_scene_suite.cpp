@@ -16,6 +16,7 @@
 #include "scene/sky_view.h"
 #include "softrender/cpu_renderer.h"
 #include "tests/missing_dependency.h"
+#include "tests/sanitizers.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -32,11 +33,7 @@ namespace twr {
 namespace {
 
 // Sanitizer builds run a smaller matrix at half size: the same code paths, a fraction of the time.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kQuickSuite = true;
-#else
-constexpr bool kQuickSuite = false;
-#endif
+constexpr bool kQuickSuite = kUnderSanitizers;
 
 struct SuiteCase {
   std::string scene;
