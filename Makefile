@@ -73,9 +73,9 @@ SANITIZE_LABELS := $(if $(SANITIZE_MODULES),-L '^($(subst $(eval) ,|,$(strip $(S
 # library already unloaded, which no suppression can name).
 SANITIZE_NO_LEAKS := EglContext\.|EglSceneSuite\.|GlWindow\.|GlWindowCore\.
 # The same tracer crash now and then ends a command-line test's child that drew with OSMesa
-# ("Tracer caught signal 11", exit 134: once in a clean CI run here, in a bench that passes on
-# every other run); the sanitizer presets run a failed test once more (CMakePresets.json), so a
-# test passes only by passing, and a real report fails it twice.
+# ("Tracer caught signal 11", exit 134: once in a clean CI run here, in a bench test that passed
+# in the four other sanitizer runs of it); the sanitizer presets run a failed test once more
+# (CMakePresets.json), so a test passes only by passing, and a real report fails it twice.
 
 # SANITIZE_SCENE_SUITE=scenes runs compare's scene suite as each shipped scene once at its own
 # settings (CI: the sweeps over filters, sizes, biases and pipelines, 685 cases, take half an
