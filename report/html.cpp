@@ -1,5 +1,7 @@
 #include "report/html.h"
 
+#include "compare/page_style.h"
+
 #include "scene/errors.h"
 
 #include <algorithm>
@@ -23,19 +25,7 @@ constexpr double kPointRadius = 5.0;
 constexpr double kLogAxisRatio = 8.0;
 constexpr int kTargetTicks = 6;
 
-std::string escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+std::string escape(const std::string& text) { return escapeHtml(text); }
 
 std::string num(double value, int decimals) {
   if (!std::isfinite(value)) return value > 0 ? "inf" : (value < 0 ? "-inf" : "nan");
@@ -696,24 +686,11 @@ std::string heightFieldsHtml(const HeightFieldSection& section) {
   return s.str();
 }
 
-constexpr const char* kStyle = R"(body{font:15px/1.45 system-ui,-apple-system,"Segoe UI",sans-serif;color:#1d1d24;
-max-width:1080px;margin:24px auto;padding:0 18px}h1{font-size:26px;margin-bottom:4px}h2{font-size:20px;
-margin-top:38px;border-bottom:1px solid #ddd;padding-bottom:4px}.meta{color:#555;font-size:13px}
-.reading{background:#f3f6fb;border-left:4px solid #1f5fa8;padding:8px 12px;margin:10px 0}
-table{border-collapse:collapse;font-size:13px;margin:10px 0 4px}th,td{border:1px solid #d5d5dd;padding:3px 7px;
-text-align:right}th{background:#eef0f5}td:first-child,th:first-child{text-align:left}td:nth-child(-n+2){white-space:nowrap}td.cpu{color:#1f5fa8;
-text-align:left}td.gl{color:#c0392b;text-align:left}td.bad{background:#fbe3e0;font-weight:600}
-svg.chart{display:block;max-width:100%;height:auto}svg .tick{font-size:11px;fill:#444}svg .axis{font-size:13px;
-fill:#222}svg .label{font-size:11px}svg .legend{font-size:12px;fill:#222}dl{margin:4px 0}dt{font-weight:600}
-dd{margin:0 0 6px 16px}.small{font-size:13px;color:#444}ul.summary li{margin-bottom:6px})";
-
 }  // namespace
 
 void writeReportHtml(const std::string& path, const ReportData& data) {
   std::ostringstream s;
-  s << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>twinraster report: speed against "
-       "error</title>\n<style>"
-    << kStyle << "</style></head><body>\n";
+  s << pageHead("twinraster report: speed against error");
   s << "<h1>Speed against error</h1>\n<p class=\"meta\">Generated " << escape(data.generatedAt) << " in "
     << num(data.seconds, 0) << " s" << (data.quick ? " (--quick: smaller images, fewer points and frames)" : "")
     << ". " << escape(data.machine) << ".</p>\n";
