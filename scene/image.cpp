@@ -10,8 +10,15 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+// stb_image_write's zlib compressor: public (STBIWDEF) and exported by Debian's libstb, but
+// declared only inside the header's implementation part.
+extern "C" unsigned char* stbi_zlib_compress(unsigned char* data, int data_len, int* out_len, int quality);
+
 #include <algorithm>
 #include <climits>
+#include <cstdlib>
+#include <new>
+#include <stdexcept>
 #include <cstring>
 #include <filesystem>
 #include <memory>
@@ -661,6 +668,19 @@ void savePng(const std::string& path, const Image& image) {
       !stbi_write_png(path.c_str(), image.width, image.height, 4, image.rgba.data(), image.width * 4)) {
     throw InputError(path + ": cannot write PNG");
   }
+}
+
+std::vector<std::uint8_t> zlibCompress(const std::uint8_t* data, std::size_t size) {
+  if (size > static_cast<std::size_t>(INT_MAX)) throw std::length_error("zlibCompress: over 2 GiB");
+  // Level 8, stb's default for PNGs: the mid-point of its speed against size.
+  constexpr int kCompressionLevel = 8;
+  int length = 0;
+  unsigned char* packed = stbi_zlib_compress(const_cast<unsigned char*>(data), static_cast<int>(size), &length,
+                                             kCompressionLevel);
+  if (!packed) throw std::bad_alloc();
+  std::vector<std::uint8_t> out(packed, packed + length);
+  std::free(packed);  // Debian's libstb allocates with malloc (STBIW_MALLOC's default)
+  return out;
 }
 
 }  // namespace twr

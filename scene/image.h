@@ -72,4 +72,9 @@ ImageF loadHdrImage(const std::string& path);
 // Throws InputError when the file cannot be written.
 void savePng(const std::string& path, const Image& image);
 
+// `size` bytes as a zlib stream (RFC 1950: what a browser's DecompressionStream("deflate")
+// reads), with stb_image_write's compressor, the one its PNGs use. Throws std::length_error
+// over 2 GiB (stb's sizes are int).
+std::vector<std::uint8_t> zlibCompress(const std::uint8_t* data, std::size_t size);
+
 }  // namespace twr

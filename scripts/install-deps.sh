@@ -17,7 +17,12 @@ packages=(
   clang libclang-rt-14-dev   # libFuzzer and clang's sanitizers (scripts/run-fuzzers.sh)
   lld                        # LLVM's linker: the test executables link in a fifth of GNU ld's time
   assimp-testmodels          # real-world OBJ files for fuzz/test_real_world_models.cpp
+  chromium                   # the browser tests (tests/browser) drive Debian's chromium; no browser download
 )
+# Node.js runs the browser tests' Playwright; a machine that has a node of its own keeps it.
+if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+  packages+=(nodejs npm)
+fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -26,8 +31,21 @@ for p in "${packages[@]}"; do
   fi
 done
 
+# The browser tests' npm packages (playwright-core alone, pinned in tests/browser's lock file),
+# into tests/browser/node_modules: nothing is fetched at build or test time.
+install_browser_packages() {
+  local dir
+  dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/tests/browser"
+  if [ -d "$dir/node_modules/playwright-core" ]; then
+    return 0
+  fi
+  echo "install-deps: npm ci in $dir (playwright-core, for the browser tests)"
+  (cd "$dir" && PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm ci --no-audit --no-fund --loglevel=error)
+}
+
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all ${#packages[@]} packages present"
+  install_browser_packages
   exit 0
 fi
 
@@ -44,3 +62,4 @@ echo "install-deps: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 "${sudo_cmd[@]}" apt-get update -q
 "${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+install_browser_packages

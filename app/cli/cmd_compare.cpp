@@ -6,6 +6,7 @@
 #include "app/cli/common.h"
 #include "compare/artifacts.h"
 #include "compare/capture_faces.h"
+#include "compare/compare_page.h"
 #include "compare/decisions.h"
 #include "compare/empty_frame.h"
 #include "compare/heatmap.h"
@@ -39,6 +40,7 @@ struct CompareArgs {
   GlRequest gl;
   std::string outDir;
   bool json = false;
+  bool html = false;  // --html: DIR/index.html beside the images
   int repeat = 3;
   bool glFastSampling = false;
   bool issueTargets = false;
@@ -480,6 +482,8 @@ void runCompare(CompareArgs& args) {
   if (traced) savePng(referencePath, ssrReferenceMontage(*traced, sides));
   std::optional<CaptureArtifactPaths> facePaths;
   if (faces) facePaths = writeCaptureArtifacts(args.outDir, *cpuOut.capturedFaces, *glOut.capturedFaces, *faces);
+  std::optional<ComparePagePaths> page;
+  if (args.html) page = writeComparePage(args.outDir, cpuOut, glOut, result, json);
 
   if (args.json) {
     std::cout << jsonText(json, 2) << "\n";
@@ -488,6 +492,7 @@ void runCompare(CompareArgs& args) {
     if (faces) printCaptureSummary(*faces, cpuOut, glOut, *facePaths);
     if (!bufferRows.empty()) printBufferRows(bufferRows, args.outDir);
     if (traced) printReferenceSummary(*traced, sides, referencePath);
+    if (page) std::cout << "wrote " << page->page << " (open it in a browser; pixels.js beside it)\n";
   }
   if (!targetsSkipped.empty()) std::cerr << "twinraster: note: " << targetsSkipped << "\n";
   for (const ThresholdViolation& v : violations) std::cerr << "twinraster: threshold exceeded: " << v.message << "\n";
@@ -505,6 +510,11 @@ const bool registered = registerCommand(30, [](CLI::App& app) {
   addRenderOptions(*cmd, args->request);
   cmd->add_option("--out-dir,-o", args->outDir, "Folder for the images and metrics.json (created)")->required();
   cmd->add_flag("--json", args->json, "Print the metrics JSON object on stdout instead of the summary");
+  cmd->add_flag("--html", args->html,
+                "Also write DIR/index.html: both images with a split slider, flicker, the heat and class maps, "
+                "zoom, both renderers' RGBA, depth, triangle id and class under the pointer, the metrics with "
+                "their verdicts and a row per compared buffer (with pixels.js, page_heat.png and "
+                "page_classes.png beside it; works from file://, no network)");
   addCpuOptions(*cmd, args->cpu);
   addGlOptions(*cmd, args->gl);
   cmd->add_option("--repeat", args->repeat, "Renders per backend; cpu_ms and gl_ms are their median")
