@@ -32,7 +32,8 @@ padding:6px 10px;margin:8px 0;min-height:6em;white-space:pre}
 tr.open{cursor:pointer}tr.open:hover td{background:#f3f6fb}.buffer-images{display:flex;gap:8px;flex-wrap:wrap}
 .buffer-images figure{margin:0}.buffer-images img{max-width:340px;image-rendering:pixelated}
 img.thumb{width:160px;image-rendering:auto;display:block}th.sort{cursor:pointer;user-select:none}
-th.sort[aria-sort=ascending]::after{content:" \25B2"}th.sort[aria-sort=descending]::after{content:" \25BC"})";
+th.sort[aria-sort=ascending]::after{content:" \25B2"}th.sort[aria-sort=descending]::after{content:" \25BC"}
+td.l{text-align:left;white-space:normal;max-width:300px}th.l{text-align:left}.wrap{overflow-wrap:anywhere})";
 
 }  // namespace
 

@@ -90,6 +90,10 @@ ChildResult runChildProcess(const ChildProcess& child) {
     posix_spawn_file_actions_adddup2(&actions, pipeEnds[1], STDOUT_FILENO);
     posix_spawn_file_actions_addclose(&actions, pipeEnds[1]);
   }
+  if (!child.captureStdout && !child.stdoutPath.empty()) {
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, child.stdoutPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                     0644);
+  }
   if (!child.stderrPath.empty()) {
     posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, child.stderrPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
                                      0644);

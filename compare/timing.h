@@ -33,6 +33,7 @@ struct ChildProcess {
   std::vector<std::pair<std::string, std::string>> setVariables;  // then set (replacing)
   bool captureStdout = false;  // else the child writes to this process's stdout
   std::string stderrPath;      // a file for the child's stderr (truncated); empty: this stderr
+  std::string stdoutPath;      // without captureStdout: a file for its stdout (truncated); empty: this stdout
 };
 
 struct ChildResult {
