@@ -30,14 +30,29 @@ inline PairState pairState(const ShownRevisions& shown) {
   return shown.diff == shown.cpu ? PairState::SameEdit : PairState::SameEditNoDiff;
 }
 
+// Which image is behind when the two show different edits: the one with the older edit. The
+// CPU usually is (its worker catches up), but GL lags too while the UI thread skips its draws
+// (an orbit at the teaching path's pace, a throttled redraw).
+inline std::string catchingUpNote(const ShownRevisions& shown) {
+  return shown.cpu < shown.gl ? "the CPU is catching up" : "GL is catching up";
+}
+
+// The caption's words on which edit each image shows: "both images show edit N", or each
+// one's edit and which is catching up; empty while an image is missing.
+inline std::string revisionCaption(const ShownRevisions& shown) {
+  if (shown.cpu == 0 || shown.gl == 0) return "";
+  if (shown.cpu == shown.gl) return concat("both images show edit ", shown.cpu);
+  return concat("CPU shows edit ", shown.cpu, ", GL edit ", shown.gl, " (", catchingUpNote(shown), ")");
+}
+
 // What the hover line says in place of the diff when it cannot show one; empty for SameEdit.
 inline std::string pairNote(const ShownRevisions& shown) {
   switch (pairState(shown)) {
     case PairState::Missing:
       return "no diff: one image is missing";
     case PairState::DifferentEdits:
-      return concat("no diff: CPU shows edit ", shown.cpu, ", GL edit ", shown.gl,
-                    " (different edits; the CPU is catching up)");
+      return concat("no diff: CPU shows edit ", shown.cpu, ", GL edit ", shown.gl, " (different edits; ",
+                    catchingUpNote(shown), ")");
     case PairState::SameEditNoDiff:
       return concat("no diff yet for edit ", shown.cpu);
     case PairState::SameEdit:

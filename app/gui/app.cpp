@@ -1,4 +1,5 @@
 #include "app/gui/app.h"
+#include "app/gui/ui_widgets.h"
 #include "gui/scene_picker.h"
 
 #include "compare/heatmap.h"
@@ -402,6 +403,7 @@ void GuiApp::frame(bool& finalFrame, bool present) {
   holdTappedKeys();
   ImGui::NewFrame();
   probe_.beginFrame();
+  shownTooltip() = {};
   redraw_.beginFrame();  // the timed elements drawn below ask for their next redraw
   try {
     drawLayout();
@@ -510,6 +512,11 @@ void GuiApp::frame(bool& finalFrame, bool present) {
                                                                 : nlohmann::json(nullptr)}}
                                : nlohmann::json(nullptr);
     state["view"] = std::string(toString(doc_.scene.settings.view));
+    const ShownTooltip& tip = shownTooltip();
+    state["tooltip"] = tip.text.empty() ? nlohmann::json(nullptr)
+                                        : nlohmann::json{{"text", tip.text},
+                                                         {"rect", {tip.rect[0], tip.rect[1], tip.rect[2], tip.rect[3]}},
+                                                         {"alpha", tip.alpha}};
   }
   probe_.endFrame();
   interacting_ = dragMode_ != DragMode::None || ImGui::IsAnyItemActive();

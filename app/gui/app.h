@@ -175,6 +175,7 @@ class GuiApp {
   void drawCameraTab();
   void drawViewPanel();
   void drawViewToolbar();
+  void drawViewToolbarRows();
   void drawDiffLegend();
   void drawViewCaption();
   void drawViewMessages(ImVec2 regionMin, ImVec2 regionSize);
@@ -234,6 +235,7 @@ class GuiApp {
 
   int renderWidth_ = 0, renderHeight_ = 0;  // the size both backends render at
   ImVec2 imagePanelPixels_{0.0f, 0.0f};       // one image panel on screen, framebuffer pixels
+  int toolbarRows_ = 2;  // rows the view toolbar took last frame: more when a narrow window wraps it
 
   BackendFrame cpuFrame_, glFrame_;
   std::uint64_t cpuSubmitted_ = 0;  // revision of the last full CPU job

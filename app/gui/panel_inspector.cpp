@@ -30,8 +30,7 @@ void sampleCell(const std::optional<PixelSample>& sample, View view) {
   rgbaValue(sample->rgba.data(), false);
   // Only what was drawn is decoded: an empty pixel's background colour is not a vector.
   if (view != View::Shaded && view != View::Albedo) {
-    ImGui::SameLine();
-    ImGui::TextDisabled("(%s)", describeViewSample(view, *sample).c_str());
+    disabledTextWrapped("(%s)", describeViewSample(view, *sample).c_str());  // its own line: the column is narrow
   } else if (!sample->drawn) {
     ImGui::SameLine();
     ImGui::TextDisabled("(empty)");

@@ -86,6 +86,7 @@ void GuiApp::drawLayout() {
       ImGui::TableSetColumnIndex(0);
       if (ImGui::BeginChild("##stats")) drawGuarded("Stats", [this] { drawStatsPanel(); });
       ImGui::EndChild();
+      probe_.item("stats_panel");
       ImGui::TableSetColumnIndex(1);
       if (ImGui::BeginChild("##inspector")) drawGuarded("Inspector", [this] { drawInspectorPanel(); });
       ImGui::EndChild();

@@ -275,6 +275,8 @@ void GuiApp::drawRenderingTab() {
                        "step is Step, halved at every overshoot down to Step / 16. dda_screen: one pixel per step "
                        "along the ray's line on the screen. hiz: dda_screen's answer, skipping the cells of a "
                        "min-depth mip chain the ray passes wholly in front of.");
+  probe_.item("ssr_march");  // its last choice
+  if (probe_.enabled()) probe_.state()["ssr_march_disabled"] = !ssr.enabled && !isSsrView(settings.view);
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
   changed |= ImGui::SliderInt("Max steps", &ssr.maxSteps, 1, kMaxSsrSteps, "%d", ImGuiSliderFlags_Logarithmic |
                                                                                       ImGuiSliderFlags_AlwaysClamp);

@@ -276,7 +276,7 @@ void GuiApp::drawSceneTab() {
     const std::string defaultScene = findStartupScene("");
     const std::filesystem::path folder =
         defaultScene.empty() ? std::filesystem::path("assets/scenes") : std::filesystem::path(defaultScene).parent_path();
-    ImGui::TextDisabled("%s", folder.string().c_str());
+    disabledTextWrapped("%s", folder.string().c_str());
     for (const std::filesystem::path& file : sceneFilesIn(folder)) {
       if (ImGui::Selectable(file.filename().string().c_str(), file.string() == doc_.scene.sourcePath)) picked = file.string();
     }
@@ -297,7 +297,7 @@ void GuiApp::drawSceneTab() {
   }
   itemTooltip("The scene files in assets/scenes/ (each a lesson: docs/scene-format.md) and the last files opened.");
   if (!doc_.scene.sourcePath.empty()) {
-    ImGui::TextDisabled("%s", doc_.scene.sourcePath.c_str());
+    disabledTextWrapped("%s", doc_.scene.sourcePath.c_str());
     ImGui::SameLine();
     if (ImGui::SmallButton("Reload")) openScene(doc_.scene.sourcePath);
     itemTooltip("Read the file again, dropping every edit made here.");
@@ -325,7 +325,7 @@ void GuiApp::drawSceneTab() {
     if (env.capture) {
       changed |= drawEnvironmentCaptureControls(env);
     } else {
-      ImGui::TextDisabled("environment: %s, %dx%d per face, %d levels",
+      disabledTextWrapped("environment: %s, %dx%d per face, %d levels",
                           env.equirectPath.empty() ? "six cube faces" : "an equirect made into a cube",
                           env.cube ? env.cube->size() : 0, env.cube ? env.cube->size() : 0,
                           env.cube ? env.cube->levelCount() : 0);
@@ -374,7 +374,7 @@ void GuiApp::drawSceneTab() {
                 "the paraboloid's seam the z = 0 circle.");
     probe_.item("environment_parameterization");
     if (env.layers) {
-      ImGui::TextDisabled("read from a %s map: %d x %dx%d, %d levels", std::string(toString(env.parameterization)).c_str(),
+      disabledTextWrapped("read from a %s map: %d x %dx%d, %d levels", std::string(toString(env.parameterization)).c_str(),
                           env.layers->layers, env.layers->size(), env.layers->size(), env.layers->levelCount());
     }
     drawEnvironmentSourceImages(env);
@@ -444,7 +444,7 @@ void GuiApp::drawMeshEditor(int meshIndex) {
   MeshDesc& desc = doc_.scene.meshDescs[index];
   const MeshDesc before = desc;
   const int users = countNodesUsingMesh(doc_.scene.nodes, meshIndex);
-  ImGui::TextDisabled("mesh %d: %s, %zu triangles%s", meshIndex, std::string(toString(desc.type)).c_str(),
+  disabledTextWrapped("mesh %d: %s, %zu triangles%s", meshIndex, std::string(toString(desc.type)).c_str(),
                       doc_.scene.meshes[index].triangleCount(), users > 1 ? " (shared: edits change every user)" : "");
   bool edited = false;
   switch (desc.type) {
@@ -474,7 +474,7 @@ void GuiApp::drawMeshEditor(int meshIndex) {
       edited |= segmentsField("Sides", desc.sides, kMinRoundSegments);
       break;
     case MeshType::Obj:
-      ImGui::TextDisabled("%s", desc.path.c_str());
+      disabledTextWrapped("%s", desc.path.c_str());
       break;
     case MeshType::Triangles:
       ImGui::TextDisabled("%zu positions from the scene file", desc.positions.size());
@@ -699,7 +699,7 @@ void GuiApp::drawHeightFieldControls(std::size_t index) {
 bool GuiApp::drawEnvironmentCaptureControls(Environment& env) {
   bool changed = false;
   EnvironmentCapture& capture = *env.capture;
-  ImGui::TextDisabled("environment: captured from \"%s\", %dx%d per face, by each renderer every frame",
+  disabledTextWrapped("environment: captured from \"%s\", %dx%d per face, by each renderer every frame",
                       capture.node.c_str(), capture.size, capture.size);
   std::vector<std::string> names;
   const std::function<void(const Node&)> collect = [&](const Node& node) {

@@ -97,13 +97,14 @@ void GuiApp::drawStatsPanel() {
         "same; the diff below is what compares images.");
     ImGui::EndTable();
   }
-  ImGui::TextDisabled("Timings since %s; the first %zu frames after that are skipped.", cpuMs_.restartReason().c_str(),
+  disabledTextWrapped("Timings since %s; the first %zu frames after that are skipped.", cpuMs_.restartReason().c_str(),
                       cpuMs_.coldFrames());
   // The last context made is the GL worker's once it has drawn (the window's comes first).
-  ImGui::TextDisabled("UI %.0f redraws/s (ImGui's average over the last 60 redraws; fewer when idle). GL frames: "
+  disabledTextWrapped("UI %.0f redraws/s (ImGui's average over the last 60 redraws; fewer when idle). GL frames: "
                       "%s, %s, %s",
                       static_cast<double>(ImGui::GetIO().Framerate), glContextString().c_str(),
                       glVersionString().c_str(), glRendererString().c_str());
+  probe_.item("stats_gl_line");
 
   sectionTitle(diff_.result ? concat("Diff (CPU vs GL, both of edit ", diff_.revision, ')').c_str()
                             : "Diff (CPU vs GL, same edit)");
@@ -127,8 +128,9 @@ void GuiApp::drawStatsPanel() {
               "Largest per-pixel difference (max over RGB) where both covered, 0..255. Click 'inspect' to pin "
               "that pixel.");
     if (m.hasMaxAbsDiffAt()) {
-      ImGui::SameLine();
+      sameLineIfFits(ImGui::CalcTextSize("inspect").x + 2.0f * ImGui::GetStyle().FramePadding.x);  // else under the value
       if (ImGui::SmallButton("inspect")) pinPixel(PixelPos{m.maxAbsDiffX, m.maxAbsDiffY});
+      probe_.item("inspect_max_diff");
       itemTooltip("Pin the first pixel (top-left scan) with the largest difference in the inspector.");
     }
     metricRow("mean |diff|, RMSE", number(m.meanAbsDiff, "%.4f") + ", " + number(m.rmse, "%.4f") + " levels",

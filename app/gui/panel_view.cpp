@@ -38,8 +38,10 @@ constexpr float kLightGrabPoints = 10.0f;
 // Steps of the heat ramp drawn in the legend.
 constexpr int kLegendRampSteps = 64;
 // Rows of controls above the images (toolbar, resolution, the legend or caption), in
-// frame heights; fixed, so no widget or message changes the image area.
+// frame heights; fixed, so no widget or message changes the image area (only a window too
+// narrow for the toolbar's two rows adds the rows it wraps into).
 constexpr float kViewHeaderRows = 4.0f;
+constexpr int kToolbarRows = 2;
 
 const ImU32 kErrorBanner = IM_COL32(89, 20, 20, 255);  // opaque: tests/cli/test_gui_smoke looks for it
 const ImU32 kMessageBackground = IM_COL32(0, 0, 0, 200);
@@ -125,7 +127,8 @@ void GuiApp::drawViewPanel() {
   // (the diff legend, heat or class map), and messages and error banners are drawn over the
   // images: the "fit view" render size depends only on what the user sizes (the window,
   // the panels, the scale), so showing a message never re-renders both backends.
-  const float headerHeight = kViewHeaderRows * ImGui::GetFrameHeightWithSpacing();
+  const float headerHeight =
+      (kViewHeaderRows + static_cast<float>(std::max(0, toolbarRows_ - kToolbarRows))) * ImGui::GetFrameHeightWithSpacing();
   if (ImGui::BeginChild("##viewHeader", ImVec2(0.0f, headerHeight), false,
                         ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse)) {
     drawViewToolbar();
@@ -178,16 +181,6 @@ void GuiApp::drawViewMessages(ImVec2 regionMin, ImVec2 regionSize) {
     box(screenshotMessage_, kMessageBackground, IM_COL32(220, 220, 220, 255));
     redraw_.redrawAt(screenshotMessageTime_ + kMessageSeconds);  // to take it away
   }
-  // The lights hint stays as long as the lights are off screen: at the bottom, clear of
-  // the image tags at the top.
-  if (!lightsHint_.empty()) {
-    const ImVec2 size = ImGui::CalcTextSize(lightsHint_.c_str(), nullptr, false, wrap);
-    const ImVec2 min(regionMin.x + padding, regionMin.y + regionSize.y - size.y - 3.0f * padding);
-    draw->AddRectFilled(min, ImVec2(min.x + size.x + 2.0f * padding, min.y + size.y + 2.0f * padding),
-                        IM_COL32(0, 0, 0, 150), 3.0f);
-    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(min.x + padding, min.y + padding),
-                  IM_COL32(200, 200, 200, 255), lightsHint_.c_str(), nullptr, wrap);
-  }
   if (probe_.enabled()) {
     nlohmann::json& state = probe_.state();
     state["lights_hint"] = lightsHint_;
@@ -203,11 +196,12 @@ void GuiApp::drawViewCaption() {
   std::string text = std::to_string(renderWidth_) + " x " + std::to_string(renderHeight_) + " px per image";
   if (!renderBlocker_.empty()) {
     text += "; nothing renders: " + renderBlocker_;
-  } else if (shown.cpu != 0 && shown.gl != 0) {
-    text += shown.cpu == shown.gl
-                ? concat("; both images show edit ", shown.cpu)
-                : concat("; CPU shows edit ", shown.cpu, ", GL edit ", shown.gl, " (the CPU is catching up)");
+  } else if (const std::string revisions = revisionCaption(shown); !revisions.empty()) {
+    text += "; " + revisions;
   }
+  // Lights ticked but off screen: said here, not over the image it would hide (last frame's
+  // list: the images are drawn after this caption).
+  if (!lightsHint_.empty()) text += ". " + lightsHint_;
   if (doc_.scene.settings.view == View::Depth) {
     char depthText[128];
     if (prefs_.linearDepth && !linearDepthRange_.empty()) {
@@ -219,9 +213,19 @@ void GuiApp::drawViewCaption() {
     text += depthText;
   }
   hintText(text.c_str());
+  if (probe_.enabled()) probe_.state()["caption"] = text;
 }
 
 void GuiApp::drawViewToolbar() {
+  const float top = ImGui::GetCursorScreenPos().y;
+  drawViewToolbarRows();
+  // The rows it took (a narrow window wraps row 2): next frame's header makes room for them.
+  const float rowHeight = ImGui::GetFrameHeightWithSpacing();
+  toolbarRows_ = std::max(kToolbarRows, static_cast<int>(std::lround((ImGui::GetCursorScreenPos().y - top) / rowHeight)));
+  if (probe_.enabled()) probe_.state()["toolbar_rows"] = toolbarRows_;
+}
+
+void GuiApp::drawViewToolbarRows() {
   // Row 1: the view modes as one segmented control, the screenshot button on the right.
   for (ViewMode mode : kAllViewModes) {
     const bool selected = prefs_.viewMode == mode;
@@ -260,36 +264,40 @@ void GuiApp::drawViewToolbar() {
   }
   itemTooltip("Both backends always render at the same size: the scene's output size or the size of the image "
               "panel on screen, times the scale.");
-  ImGui::SameLine();
+  // Each item after the first goes on the line while it fits, else starts the next one.
+  sameLineIfFits(110.0f * uiScale_);
   ImGui::SetNextItemWidth(110.0f * uiScale_);
   ImGui::SliderFloat("##scale", &prefs_.resolutionScale, kMinResolutionScale, kMaxResolutionScale, "x %.3g",
                      ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
   itemTooltip("Resolution scale. Small scales make single pixels (and the fill rule) easy to see.");
-  ImGui::SameLine();
-  ImGui::TextDisabled("%d x %d px", renderWidth_, renderHeight_);
-  ImGui::SameLine();
+  const std::string sizeText = concat(renderWidth_, " x ", renderHeight_, " px");
+  sameLineIfFits(ImGui::CalcTextSize(sizeText.c_str()).x);
+  ImGui::TextDisabled("%s", sizeText.c_str());
+  sameLineIfFits(checkboxWidth("Checker bg"));
   if (ImGui::Checkbox("Checker bg", &prefs_.checkerBackground)) cpuTextureStale_ = glTextureStale_ = true;
+  probe_.item("checker_bg");
   itemTooltip("Show pixels no triangle covered as a checker, so coverage is visible against any background colour.");
-  ImGui::SameLine();
+  sameLineIfFits(checkboxWidth("Lights"));
   ImGui::Checkbox("Lights", &prefs_.showLights);
+  probe_.item("show_lights");
   itemTooltip("Mark each point light over the images (L0, L1, ...). Drag a marker to move the light parallel to "
               "the image at its own depth.");
 
   if (prefs_.viewMode == ViewMode::Flicker) {
-    ImGui::SameLine();
+    sameLineIfFits(120.0f * uiScale_);
     ImGui::SetNextItemWidth(120.0f * uiScale_);
     ImGui::SliderFloat("##flicker", &prefs_.flickerHz, kMinFlickerHz, kMaxFlickerHz, "%.2g Hz",
                        ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
     itemTooltip("Switches per second between the CPU and the GL image: the eye catches what moves.");
   } else if (prefs_.viewMode == ViewMode::Split) {
-    ImGui::SameLine();
+    sameLineIfFits(120.0f * uiScale_);
     ImGui::SetNextItemWidth(120.0f * uiScale_);
     ImGui::SliderFloat("##split", &prefs_.splitFraction, 0.0f, 1.0f, "divider %.2f", ImGuiSliderFlags_AlwaysClamp);
   } else if (prefs_.viewMode == ViewMode::Diff) {
-    ImGui::SameLine();
+    sameLineIfFits(checkboxWidth("Heat map"));
     if (ImGui::RadioButton("Heat map", !prefs_.diffShowClasses)) prefs_.diffShowClasses = false;
     probe_.item("diff_heat");
-    ImGui::SameLine();
+    sameLineIfFits(checkboxWidth("Class map"));
     if (ImGui::RadioButton("Class map", prefs_.diffShowClasses)) prefs_.diffShowClasses = true;
     probe_.item("diff_class");
   }
@@ -485,7 +493,7 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
   // is rounded down, so showing it late still tells the truth (the frame is at least that old).
   if (youngestAge) redraw_.redrawAt(glfwGetTime() + frameAgeTextLasts(*youngestAge));
 
-  // Lights ticked but not on screen get a hint (drawViewMessages): a marker nobody sees
+  // Lights ticked but not on screen get a hint (drawViewCaption): a marker nobody sees
   // does not say where the light went.
   lightsHint_.clear();
   if (prefs_.showLights && renderBlocker_.empty() && renderWidth_ > 0 && renderHeight_ > 0) {

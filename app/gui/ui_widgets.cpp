@@ -1,5 +1,6 @@
 #include "app/gui/ui_widgets.h"
 
+#include <cstdarg>
 #include <cstdio>
 
 namespace twr::gui {
@@ -18,14 +19,48 @@ void helpMarker(const char* text) {
   itemTooltip(text);
 }
 
+void sameLineIfFits(float width) {
+  const float lineEnd = ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + width;
+  const float right = ImGui::GetCursorScreenPos().x + ImGui::GetContentRegionAvail().x;  // the window's or the table cell's edge
+  if (lineEnd <= right) ImGui::SameLine();
+}
+
+float checkboxWidth(const char* label) {
+  return ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label).x;
+}
+
+void disabledTextWrapped(const char* format, ...) {
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+  va_list args;
+  va_start(args, format);
+  ImGui::TextWrappedV(format, args);
+  va_end(args);
+  ImGui::PopStyleColor();
+}
+
 void itemTooltip(const char* text) {
   // Disabled items too: their tooltip says why they are greyed.
   if (!ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) return;
+  ImGui::PushStyleVar(ImGuiStyleVar_Alpha, 1.0f);  // undoes BeginDisabled's dimming for the tooltip
   ImGui::BeginTooltip();
   ImGui::PushTextWrapPos(ImGui::GetFontSize() * 32.0f);
   ImGui::TextUnformatted(text);
   ImGui::PopTextWrapPos();
+  ShownTooltip& shown = shownTooltip();
+  shown.text = text;
+  const ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  shown.rect[0] = at.x;
+  shown.rect[1] = at.y;
+  shown.rect[2] = at.x + size.x;
+  shown.rect[3] = at.y + size.y;
+  shown.alpha = ImGui::GetStyle().Alpha;
   ImGui::EndTooltip();
+  ImGui::PopStyleVar();
+}
+
+ShownTooltip& shownTooltip() {
+  static ShownTooltip shown;
+  return shown;
 }
 
 ImU32 toImColour(Rgb8 colour, std::uint8_t alpha) { return IM_COL32(colour.r, colour.g, colour.b, alpha); }

@@ -16,8 +16,28 @@ namespace twr::gui {
 void sectionTitle(const char* title);
 // A "(?)" after the previous item that shows `text` on hover.
 void helpMarker(const char* text);
-// Tooltip on the previous item.
+// ImGui::SameLine() when an item `width` pixels wide still fits on this line; else nothing, so
+// the item starts the next line instead of being cut off at the window's edge.
+void sameLineIfFits(float width);
+// The width of a checkbox with `label`, box included.
+float checkboxWidth(const char* label);
+
+// ImGui::TextDisabled's colour, wrapped at the window's or table cell's edge instead of cut
+// off there (paths, the statistics line, decoded values in a narrow column).
+void disabledTextWrapped(const char* format, ...) IM_FMTARGS(1);
+
+// Tooltip on the previous item, opaque even over a disabled item (BeginDisabled dims the style's
+// alpha, and a tooltip drawn under it was see-through and unreadable).
 void itemTooltip(const char* text);
+
+// The tooltip itemTooltip drew this frame, for the test probe: its text, its window's
+// rectangle [x0, y0, x1, y1] and the style alpha its text was drawn with; text empty when none.
+struct ShownTooltip {
+  std::string text;
+  float rect[4] = {0, 0, 0, 0};
+  float alpha = 0.0f;
+};
+ShownTooltip& shownTooltip();
 
 // One radio button per value, on one line after the label (the first button at labelWidth
 // from the line start when it is > 0, so rows line up); values are named with toString().

@@ -115,6 +115,15 @@ TEST(FramePairing, OnlyImagesOfTheSameEditAreCompared) {
   EXPECT_NE(note.find("edit 9"), std::string::npos) << note;
 }
 
+// The caption named the CPU as the one catching up even when its image was the newer.
+TEST(FramePairing, TheCaptionNamesTheImageThatIsBehind) {
+  EXPECT_EQ(revisionCaption({100, 98, 0}), "CPU shows edit 100, GL edit 98 (GL is catching up)");
+  EXPECT_EQ(revisionCaption({98, 100, 0}), "CPU shows edit 98, GL edit 100 (the CPU is catching up)");
+  EXPECT_EQ(revisionCaption({7, 7, 7}), "both images show edit 7");
+  EXPECT_EQ(revisionCaption({0, 7, 0}), "");
+  EXPECT_NE(pairNote({100, 98, 0}).find("GL is catching up"), std::string::npos) << pairNote({100, 98, 0});
+}
+
 // An idle window is drawn only for an event, a worker's result or a timed change; after an
 // event it keeps drawing until ImGui has settled, by frames and by time.
 TEST(RedrawPolicy, DrawsOnlyWhenSomethingHappened) {

@@ -920,4 +920,107 @@ TEST(GuiScripted, AnIdleWindowIsDrawnOnlyWhenSomethingHappens) {
   EXPECT_EQ(app.quit(), 0) << app.err();
 }
 
+// A tooltip on a disabled control (the Rendering tab's March with SSR off) was drawn with the
+// disabled items' dimmed alpha: see-through and unreadable over the panel. Its text must be
+// drawn at full alpha and its brightest pixels (the text's) must be near white.
+TEST(GuiScripted, TooltipOfADisabledControlIsOpaque) {
+  REQUIRE_DISPLAY_AND_XDOTOOL();
+  if (!haveCommand("import") || !haveCommand("convert")) {
+    TWR_MISSING_DEPENDENCY("imagemagick") << "import and convert read the tooltip's pixels";
+  }
+  GuiProcess app(testName(), {kDefaultScene, "--reset"});
+  const std::string window = app.window();
+  app.waitSettled();
+  app.click("tab_rendering");
+  app.scrollTo("ssr_march");
+  json s = app.waitForItem("ssr_march");
+  ASSERT_TRUE(s.value("ssr_march_disabled", false)) << "the default scene has SSR off, so March is disabled";
+  const json r = s["items"]["ssr_march"];
+  app.moveTo(0.5f * (r[0].get<float>() + r[2].get<float>()), 0.5f * (r[1].get<float>() + r[3].get<float>()));
+  s = app.waitFor("the March tooltip", [](const json& st) {
+    return st.contains("tooltip") && st["tooltip"].is_object() &&
+           st["tooltip"]["text"].get<std::string>().find("linear_world") != std::string::npos;
+  });
+  s = app.waitFrames(3);  // drawn, at its final size
+  ASSERT_TRUE(s["tooltip"].is_object()) << s.dump(1);
+  EXPECT_FLOAT_EQ(s["tooltip"]["alpha"].get<float>(), 1.0f);
+  const json rect = s["tooltip"]["rect"];
+  const int x0 = static_cast<int>(rect[0].get<float>()), y0 = static_cast<int>(rect[1].get<float>());
+  const int w = static_cast<int>(rect[2].get<float>()) - x0, h = static_cast<int>(rect[3].get<float>()) - y0;
+  const fs::path shot = app.dir() / "tooltip.png";
+  ASSERT_EQ(std::system(("import -window " + window + " '" + shot.string() + "'").c_str()), 0);
+  // Text is white (ImGuiCol_Text ~ 1.0): its brightest pixel is above 0.85 at full alpha; dimmed
+  // by DisabledAlpha (0.6) over the dark panel it stays under 0.7.
+  const std::string brightest =
+      capture("convert '" + shot.string() + "' -crop " + std::to_string(w) + "x" + std::to_string(h) + "+" +
+              std::to_string(x0) + "+" + std::to_string(y0) + " -colorspace Gray -format '%[fx:maxima]' info:");
+  EXPECT_GT(std::strtod(brightest.c_str(), nullptr), 0.85) << "brightest tooltip pixel: " << brightest << " in " << shot;
+  EXPECT_EQ(app.quit(), 0) << app.err();
+}
+
+// True when rectangle `inner` [x0, y0, x1, y1] lies inside `outer` (to a pixel).
+bool insideRect(const json& inner, const json& outer) {
+  constexpr float kSlackPixels = 1.0f;
+  return inner[0].get<float>() >= outer[0].get<float>() - kSlackPixels &&
+         inner[1].get<float>() >= outer[1].get<float>() - kSlackPixels &&
+         inner[2].get<float>() <= outer[2].get<float>() + kSlackPixels &&
+         inner[3].get<float>() <= outer[3].get<float>() + kSlackPixels;
+}
+
+// At 800x500 the View toolbar's second row ran past the window's edge and "Checker bg" and
+// "Lights" were cut off; now the row wraps and the header makes room for the rows it takes.
+TEST(GuiScripted, ViewToolbarWrapsInANarrowWindowInsteadOfCuttingControls) {
+  REQUIRE_DISPLAY_AND_XDOTOOL();
+  GuiProcess app(testName(), {kDefaultScene, "--reset", "--window-size", "800", "500"});
+  app.window();
+  app.waitSettled();
+  json s = app.waitFor("the toolbar's checkboxes", [](const json& st) {
+    return st.contains("items") && st["items"].contains("checker_bg") && st["items"].contains("show_lights") &&
+           st["items"].contains("view_images");
+  });
+  s = app.waitFrames(3);  // the header sized for the rows the toolbar took
+  ASSERT_TRUE(s.contains("window") && s["items"].contains("show_lights")) << s.dump(1);
+  const json window = {0.0f, 0.0f, s["window"][0], s["window"][1]};
+  for (const char* item : {"checker_bg", "show_lights", "screenshot"}) {
+    EXPECT_TRUE(insideRect(s["items"][item], window)) << item << " " << s["items"][item].dump() << " in " << window.dump();
+    EXPECT_LE(s["items"][item][3].get<float>(), s["items"]["view_images"][1].get<float>())
+        << item << " overlaps the images";
+  }
+  EXPECT_GT(s.value("toolbar_rows", 0), 2) << "800 px is too narrow for one row of resolution controls";
+  EXPECT_EQ(app.quit(), 0) << app.err();
+}
+
+// The Stats panel's line "UI N redraws/s ... GL frames: context, version, renderer" ran past
+// the column and was cut; now it wraps inside it.
+TEST(GuiScripted, StatsLineWrapsInsideItsColumn) {
+  REQUIRE_DISPLAY_AND_XDOTOOL();
+  GuiProcess app(testName(), {kDefaultScene, "--reset"});
+  app.window();
+  app.waitSettled();
+  const json s = app.waitFor("the stats line", [](const json& st) {
+    return st.contains("items") && st["items"].contains("stats_gl_line") && st["items"].contains("stats_panel");
+  });
+  ASSERT_TRUE(s.contains("items") && s["items"].contains("stats_gl_line")) << s.dump(1);
+  const json& line = s["items"]["stats_gl_line"];
+  const json& column = s["items"]["stats_panel"];
+  // Across only: the column scrolls, so the line may lie below what is in view.
+  EXPECT_TRUE(insideRect(json{line[0], column[1], line[2], column[3]}, column))
+      << line.dump() << " sticks out of the stats column " << column.dump();
+  EXPECT_EQ(app.quit(), 0) << app.err();
+}
+
+// "Lights off screen" was drawn over the image from the first frame of the default scene (its
+// lights lie outside the view), hiding part of it; the hint now sits in the caption above.
+TEST(GuiScripted, LightsOffScreenHintIsInTheCaptionNotOverTheImage) {
+  REQUIRE_DISPLAY_AND_XDOTOOL();
+  GuiProcess app(testName(), {kDefaultScene, "--reset"});
+  app.window();
+  app.waitSettled();
+  const json s = app.waitFor("the lights hint in the caption", [](const json& st) {
+    return !st.value("lights_hint", "").empty() && st.value("caption", "").find("outside the image") != std::string::npos;
+  });
+  EXPECT_NE(s.value("caption", "").find(s.value("lights_hint", "?")), std::string::npos) << s.dump(1);
+  EXPECT_EQ(app.quit(), 0) << app.err();
+}
+
 }  // namespace
