@@ -14,6 +14,7 @@
 #include "glrender/gl_renderer.h"
 #include "scene/ssr_trace_report.h"
 #include "softrender/pixel_trace.h"
+#include "softrender/stage_pictures.h"
 #include "softrender/ssr.h"
 
 #include <algorithm>
@@ -33,6 +34,7 @@ struct TraceArgs {
   int y = 0;
   bool json = false;
   std::string ssrRay = "mirror";  // --ssr-ray: mirror, or an indirect sample's index
+  std::string stagesDir;          // --stages: the stage pictures' folder
 };
 
 // --ssr-ray's value: kSsrMirrorRay for "mirror", else a sample index (checked against the
@@ -78,6 +80,12 @@ void runTrace(const TraceArgs& args) {
   const CpuOptions tracePixelOwn;  // what tracePixel() renders with
   if (cpuOptions.path != tracePixelOwn.path || cpuOptions.isa != tracePixelOwn.isa) {
     takeFinalPixelFrom(cpuOptions, scene, width, height, trace);
+  }
+  if (!args.stagesDir.empty()) {
+    const RenderOutput frame = makeCpuRenderer(cpuOptions)->render(scene, scene.settings, width, height);
+    const std::vector<StagePicture> pictures = writeStagePictures(args.stagesDir, trace, frame);
+    std::cerr << "twinraster: wrote " << args.stagesDir << "/index.html and " << pictures.size()
+              << " stage pictures (" << pictures.front().file << " ... " << pictures.back().file << ")\n";
   }
   // A frame with reflections: the pixel's ray's march step by step on both renderers.
   std::optional<SsrMarchTrace> cpuMarch, glMarch;
@@ -179,6 +187,11 @@ const bool registered = registerCommand(40, [](CLI::App& app) {
   cmd->add_option("--ssr-ray", args->ssrRay,
                   "With screen-space reflections: the ray whose march is traced, mirror (the default) or K, the "
                   "pixel's indirect light sample K (0 .. settings.ssr.indirect_samples - 1)");
+  cmd->add_option("--stages", args->stagesDir,
+                  "Also draw the triangle that wrote the pixel at each stage into this folder (created): "
+                  "1_clip.svg (the clipped polygon and its fan at x/w, y/w), 2_raster.svg (the snapped corners over "
+                  "the pixel grid, the pixels it won), 3_interpolate.svg (screen against perspective weights), "
+                  "4_shade.svg (Phong's terms stacked per channel) and index.html with the trace's numbers");
   addCpuOptions(*cmd, args->cpu);
   addGlOptions(*cmd, args->gl);
   cmd->callback([args] { runTrace(*args); });

@@ -7,6 +7,7 @@
 #include "app/gui/ui_widgets.h"
 #include "scene/shadow_map.h"
 #include "scene/shadow_trace.h"
+#include "softrender/stage_pictures.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -41,12 +42,8 @@ void sampleCell(const std::optional<PixelSample>& sample, View view) {
 // The planes that cut a triangle, by name, and what was left.
 std::string clipText(const TriangleVisit& visit) {
   if (visit.planesCut == 0) return "none";
-  if (visit.planesCut & kClipNonFiniteBit) return "removed (non-finite clip position)";
-  std::string names;
-  for (int plane = 0; plane < kClipPlaneCount; ++plane) {
-    if (visit.planesCut & (1u << plane)) names += (names.empty() ? "" : ", ") + std::string(clipPlaneName(plane));
-  }
-  return names + " (" + std::to_string(visit.clippedPolygon.size()) + " vertices after)";
+  if (visit.planesCut & kClipNonFiniteBit) return clipPlaneNames(visit.planesCut);
+  return clipPlaneNames(visit.planesCut) + " (" + std::to_string(visit.clippedPolygon.size()) + " vertices after)";
 }
 
 std::string triangleText(std::uint32_t id) { return id == kNoTriangle ? "none" : std::to_string(id); }

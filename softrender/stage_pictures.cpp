@@ -1,0 +1,433 @@
+#include "softrender/stage_pictures.h"
+
+#include "scene/errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace twr {
+
+namespace {
+
+constexpr double kPicturePixels = 480.0;  // the drawing's longer side, SVG pixels
+constexpr double kMarginPixels = 28.0;    // around the drawing, for labels
+constexpr double kFixedOne = 256.0;       // setup's sub-pixel steps per pixel (8 bits)
+constexpr double kNdcViewLimit = 4.0;     // clip pictures show at most |x/w|, |y/w| <= 4
+const char* const kCpuBlue = "#1f5fa8";
+const char* const kCutRed = "#c0392b";
+
+std::string num(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+
+// Maps a world rectangle onto the picture, y up (GL's and NDC's convention) or down.
+struct Frame2d {
+  double x0 = 0, y0 = 0, x1 = 1, y1 = 1;  // world bounds
+  double scale = 1;
+  bool yUp = true;
+  double width() const { return (x1 - x0) * scale + 2 * kMarginPixels; }
+  double height() const { return (y1 - y0) * scale + 2 * kMarginPixels; }
+  double px(double x) const { return kMarginPixels + (x - x0) * scale; }
+  double py(double y) const { return kMarginPixels + (yUp ? (y1 - y) : (y - y0)) * scale; }
+};
+
+Frame2d frameAround(double x0, double y0, double x1, double y1, bool yUp) {
+  Frame2d f;
+  f.x0 = x0, f.y0 = y0, f.x1 = std::max(x1, x0 + 1e-6), f.y1 = std::max(y1, y0 + 1e-6);
+  f.scale = kPicturePixels / std::max(f.x1 - f.x0, f.y1 - f.y0);
+  f.yUp = yUp;
+  return f;
+}
+
+std::string svgOpen(double width, double height) {
+  return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + num(std::ceil(width)) + "\" height=\"" +
+         num(std::ceil(height)) + "\" viewBox=\"0 0 " + num(std::ceil(width)) + " " + num(std::ceil(height)) +
+         "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"#fff\"/>\n";
+}
+
+std::string polygonOf(const Frame2d& f, const std::vector<std::pair<double, double>>& points, const std::string& style) {
+  std::string s = "<polygon points=\"";
+  for (const auto& [x, y] : points) s += num(f.px(x)) + "," + num(f.py(y)) + " ";
+  return s + "\" " + style + "/>\n";
+}
+
+std::string textAt(double x, double y, const std::string& text, const std::string& style = "") {
+  return "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\" " + style + ">" + text + "</text>\n";
+}
+
+// The clipped polygon's vertices at x/w, y/w (every one has w > 0: the near plane kept them).
+std::vector<std::pair<double, double>> ndcOf(const std::vector<vec4>& clip) {
+  std::vector<std::pair<double, double>> points;
+  for (const vec4& p : clip) points.emplace_back(p.x / p.w, p.y / p.w);
+  return points;
+}
+
+std::string cutPlanesText(const TriangleVisit& visit) {
+  if (visit.planesCut == 0) return "no plane cut it";
+  if (visit.planesCut & kClipNonFiniteBit) return clipPlaneNames(visit.planesCut);
+  return "cut by " + clipPlaneNames(visit.planesCut);
+}
+
+std::pair<double, double> pixelNdc(const PixelTrace& trace) {
+  return {2.0 * (trace.x + 0.5) / trace.width - 1.0, 2.0 * (trace.yGl + 0.5) / trace.height - 1.0};
+}
+
+// The fan triangle's corners in window pixels, from setup's snapped 1/256 values (pixel
+// centres at whole steps: a corner at fixed X lies at X / 256 + 0.5).
+std::vector<std::pair<double, double>> snappedCorners(const TriangleVisit& visit) {
+  std::vector<std::pair<double, double>> corners;
+  for (int i = 0; i < 3; ++i) {
+    corners.emplace_back(visit.xFixed[i] / kFixedOne + 0.5, visit.yFixed[i] / kFixedOne + 0.5);
+  }
+  return corners;
+}
+
+struct PixelRange {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // inclusive, GL rows
+};
+
+// The pixels around the snapped corners, at most kStageGridPixels across, the traced one inside.
+PixelRange gridAround(const PixelTrace& trace, const std::vector<std::pair<double, double>>& corners) {
+  double minX = trace.x, maxX = trace.x, minY = trace.yGl, maxY = trace.yGl;
+  for (const auto& [x, y] : corners) {
+    minX = std::min(minX, x), maxX = std::max(maxX, x), minY = std::min(minY, y), maxY = std::max(maxY, y);
+  }
+  PixelRange r{static_cast<int>(std::floor(minX)) - 1, static_cast<int>(std::floor(minY)) - 1,
+               static_cast<int>(std::floor(maxX)) + 1, static_cast<int>(std::floor(maxY)) + 1};
+  const int half = kStageGridPixels / 2;
+  r.x0 = std::max({r.x0, trace.x - half, 0}), r.x1 = std::min({r.x1, trace.x + half, trace.width - 1});
+  r.y0 = std::max({r.y0, trace.yGl - half, 0}), r.y1 = std::min({r.y1, trace.yGl + half, trace.height - 1});
+  return r;
+}
+
+std::string pixelCells(const Frame2d& f, const PixelTrace& trace, const TriangleVisit& visit, const PixelRange& r,
+                       const std::vector<std::uint32_t>& ids) {
+  std::string s;
+  for (int y = r.y0; y <= r.y1; ++y) {
+    for (int x = r.x0; x <= r.x1; ++x) {
+      const std::size_t row = static_cast<std::size_t>(trace.height - 1 - y);  // the frame's rows run top first
+      const std::size_t i = row * static_cast<std::size_t>(trace.width) + static_cast<std::size_t>(x);
+      const bool won = i < ids.size() && ids[i] == visit.triangleId;
+      s += "<rect x=\"" + num(f.px(x)) + "\" y=\"" + num(f.py(y + 1)) + "\" width=\"" + num(f.scale) + "\" height=\"" +
+           num(f.scale) + "\" fill=\"" + (won ? "#cfe0f5" : "#fff") + "\" stroke=\"#ddd\"/>\n";
+      s += "<circle cx=\"" + num(f.px(x + 0.5)) + "\" cy=\"" + num(f.py(y + 0.5)) + "\" r=\"1.2\" fill=\"#999\"/>\n";
+    }
+  }
+  return s;
+}
+
+// Bars in a row, each value in [0, 1] of `full` height, labelled under.
+std::string barPair(double x, double baseY, double barWidth, double full, double a, double b, const std::string& label) {
+  std::string s;
+  s += "<rect x=\"" + num(x) + "\" y=\"" + num(baseY - a * full) + "\" width=\"" + num(barWidth) + "\" height=\"" +
+       num(a * full) + "\" fill=\"#9bb8dc\"/>\n";
+  s += "<rect x=\"" + num(x + barWidth + 2) + "\" y=\"" + num(baseY - b * full) + "\" width=\"" + num(barWidth) +
+       "\" height=\"" + num(b * full) + "\" fill=\"" + kCpuBlue + "\"/>\n";
+  s += textAt(x, baseY + 16, label);
+  return s;
+}
+
+struct Segment {
+  double value;
+  std::string colour, name;
+};
+
+std::vector<Segment> shadeSegments(const ShadeTerms& terms, int channel) {
+  std::vector<Segment> segments = {{terms.ambient[channel], "#bbbbbb", "ambient"}};
+  static const char* const kDiffuse[] = {"#e6a23c", "#d98b2b", "#c9781f", "#b96a17"};
+  static const char* const kSpecular[] = {"#7fb5e8", "#5c9edc", "#3f86cc", "#2a70b5"};
+  for (int i = 0; i < terms.lightCount; ++i) {
+    // What the light adds to the sum: its terms times its attenuation and both shadows (lightSum).
+    const auto& light = terms.lights[static_cast<std::size_t>(i)];
+    const double scale = double(light.attenuation) * light.selfShadow * light.shadowVisibility;
+    segments.push_back({light.diffuse[channel] * scale, kDiffuse[i % 4], "L" + std::to_string(i) + " diffuse"});
+    segments.push_back({light.specular[channel] * scale, kSpecular[i % 4], "L" + std::to_string(i) + " specular"});
+  }
+  return segments;
+}
+
+std::string stackedBar(double x, double baseY, double width, double unit, const std::vector<Segment>& segments) {
+  std::string s;
+  double top = baseY;
+  for (const Segment& segment : segments) {
+    const double h = std::max(0.0, segment.value) * unit;
+    top -= h;
+    s += "<rect x=\"" + num(x) + "\" y=\"" + num(top) + "\" width=\"" + num(width) + "\" height=\"" + num(h) +
+         "\" fill=\"" + segment.colour + "\"><title>" + segment.name + " " + num(segment.value) + "</title></rect>\n";
+  }
+  return s;
+}
+
+void writeText(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  if (!out) throw InputError(path.string() + ": cannot write");
+}
+
+std::string escapeText(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else if (c == '&') out += "&amp;";
+    else out += c;
+  }
+  return out;
+}
+
+std::string indexHtml(const PixelTrace& trace, const TriangleVisit& visit, const std::vector<StagePicture>& pictures) {
+  std::ostringstream s;
+  s << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Pixel (" << trace.x << ", "
+    << trace.yTop << ") through the pipeline</title>\n<style>body{font:15px/1.45 system-ui,sans-serif;max-width:1000px;"
+       "margin:24px auto;padding:0 18px;color:#1d1d24}figure{margin:18px 0}figcaption{color:#444;font-size:14px}"
+       "img{border:1px solid #ddd;max-width:100%}</style></head><body>\n";
+  s << "<h1>Pixel (" << trace.x << ", " << trace.yTop << ") through the pipeline</h1>\n<p>Triangle "
+    << visit.triangleId << " (" << escapeText(visit.nodeName) << ", triangle " << visit.triangleInMesh
+    << " of its mesh): " << toString(visit.outcome) << ". Every number is the pixel trace's (`twinraster trace "
+    << "--json`), on a " << trace.width << " x " << trace.height << " frame.</p>\n";
+  for (const StagePicture& p : pictures) {
+    s << "<figure><h2>" << p.title << "</h2><img src=\"" << p.file << "\" alt=\"" << p.title << "\"><figcaption>"
+      << escapeText(p.caption) << "</figcaption></figure>\n";
+  }
+  s << "</body></html>\n";
+  return s.str();
+}
+
+}  // namespace
+
+std::string clipPlaneNames(std::uint32_t planesCut) {
+  if (planesCut & kClipNonFiniteBit) return "removed (non-finite clip position)";
+  std::string names;
+  for (int plane = 0; plane < kClipPlaneCount; ++plane) {
+    if (planesCut & (1u << plane)) names += (names.empty() ? "" : ", ") + std::string(clipPlaneName(plane));
+  }
+  return names;
+}
+
+const TriangleVisit* stageVisitOf(const PixelTrace& trace) {
+  const TriangleVisit* written = nullptr;
+  const TriangleVisit* shaded = nullptr;
+  for (const TriangleVisit& visit : trace.visits) {
+    if (visit.outcome != TraceOutcome::Shaded) continue;
+    shaded = &visit;
+    if (visit.triangleId == trace.triangleId) written = &visit;
+  }
+  if (written) return written;
+  if (shaded) return shaded;
+  return trace.visits.empty() ? nullptr : &trace.visits.front();
+}
+
+namespace {
+
+using Points = std::vector<std::pair<double, double>>;
+
+// One view of the clip stage: the [-1, 1] square, the unclipped triangle, the polygon, its fan
+// (triangle i is v0, v_i, v_i+1; the one covering the pixel filled) and the pixel's centre.
+std::string clipDrawing(const Frame2d& f, const PixelTrace& trace, const TriangleVisit& visit, const Points& polygon,
+                        const Points& triangle, const std::string& title) {
+  std::string s = polygonOf(f, {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}, "fill=\"#f4f6fa\" stroke=\"#888\" stroke-dasharray=\"4 3\"");
+  if (triangle.size() == 3) s += polygonOf(f, triangle, "fill=\"none\" stroke=\"#aaa\" stroke-width=\"1.5\"");
+  if (polygon.size() >= 3) {
+    s += polygonOf(f, polygon, "fill=\"#e3ecf7\" stroke=\"" + std::string(kCpuBlue) + "\" stroke-width=\"2\"");
+    for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
+      const bool covering = static_cast<int>(i) == visit.fanTriangle;
+      s += polygonOf(f, {polygon[0], polygon[i], polygon[i + 1]},
+                     covering ? "fill=\"#9bb8dc\" stroke=\"#1f5fa8\"" : "fill=\"none\" stroke=\"#1f5fa8\" stroke-opacity=\"0.4\"");
+    }
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+      s += textAt(f.px(polygon[i].first) + 4, f.py(polygon[i].second) - 4, "v" + std::to_string(i), "fill=\"#1f5fa8\"");
+    }
+  }
+  const auto [px, py] = pixelNdc(trace);
+  s += "<circle cx=\"" + num(f.px(px)) + "\" cy=\"" + num(f.py(py)) + "\" r=\"4\" fill=\"" + kCutRed + "\"/>\n";
+  return s + textAt(6, 16, title, "fill=\"#444\"");
+}
+
+// A drawing in a box of its own at `left`, what falls outside it hidden.
+std::string panelAt(double left, const Frame2d& f, const std::string& drawing) {
+  return "<svg x=\"" + num(left) + "\" y=\"0\" width=\"" + num(f.width()) + "\" height=\"" + num(f.height()) +
+         "\" overflow=\"hidden\">" + drawing + "<rect width=\"100%\" height=\"100%\" fill=\"none\" stroke=\"#ddd\"/></svg>\n";
+}
+
+// The bounds of `points` (and `extra`), a tenth wider on each side, within the NDC view limit.
+Frame2d frameOfPoints(const std::vector<Points>& sets, double minSize) {
+  double x0 = 1e30, y0 = 1e30, x1 = -1e30, y1 = -1e30;
+  for (const Points& points : sets) {
+    for (const auto& [x, y] : points) x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+  }
+  const double pad = std::max({0.1 * (x1 - x0), 0.1 * (y1 - y0), minSize});
+  return frameAround(std::max(x0 - pad, -kNdcViewLimit), std::max(y0 - pad, -kNdcViewLimit),
+                     std::min(x1 + pad, kNdcViewLimit), std::min(y1 + pad, kNdcViewLimit), true);
+}
+
+}  // namespace
+
+std::string clipStageSvg(const PixelTrace& trace, const TriangleVisit& visit) {
+  const Points polygon = ndcOf(visit.clippedPolygon);
+  Points triangle;  // the vertices in front of the eye (w > 0)
+  for (const vec4& p : visit.posClip) {
+    if (p.w > 0.0f) triangle.emplace_back(p.x / p.w, p.y / p.w);
+  }
+  const Points square = {{-1, -1}, {1, 1}};
+  const Frame2d whole = frameOfPoints({square, polygon, triangle}, 0.05);
+  const auto [px, py] = pixelNdc(trace);
+  const Frame2d zoom = frameOfPoints({polygon.empty() ? triangle : polygon, {{px, py}}}, 1e-4);
+  std::string s = svgOpen(whole.width() + zoom.width(), std::max(whole.height(), zoom.height()));
+  s += panelAt(0, whole, clipDrawing(whole, trace, visit, polygon, triangle, "x/w, y/w: the view volume's [-1, 1] square"));
+  s += panelAt(whole.width(), zoom, clipDrawing(zoom, trace, visit, polygon, triangle, "zoomed to the polygon"));
+  return s + "</svg>\n";
+}
+
+std::string rasterStageSvg(const PixelTrace& trace, const TriangleVisit& visit,
+                           const std::vector<std::uint32_t>& triangleIds) {
+  const std::vector<std::pair<double, double>> corners = snappedCorners(visit);
+  const PixelRange r = gridAround(trace, corners);
+  const Frame2d f = frameAround(r.x0, r.y0, r.x1 + 1, r.y1 + 1, true);
+  std::string s = svgOpen(f.width(), f.height());
+  s += pixelCells(f, trace, visit, r, triangleIds);
+  s += "<clipPath id=\"grid\"><rect x=\"" + num(f.px(r.x0)) + "\" y=\"" + num(f.py(r.y1 + 1)) + "\" width=\"" +
+       num((r.x1 + 1 - r.x0) * f.scale) + "\" height=\"" + num((r.y1 + 1 - r.y0) * f.scale) + "\"/></clipPath>\n";
+  s += "<g clip-path=\"url(#grid)\">" +
+       polygonOf(f, corners, "fill=\"none\" stroke=\"" + std::string(kCpuBlue) + "\" stroke-width=\"2\"") + "</g>\n";
+  s += "<rect x=\"" + num(f.px(trace.x)) + "\" y=\"" + num(f.py(trace.yGl + 1)) + "\" width=\"" + num(f.scale) +
+       "\" height=\"" + num(f.scale) + "\" fill=\"none\" stroke=\"" + kCutRed + "\" stroke-width=\"2.5\"/>\n";
+  for (int i = 0; i < 3; ++i) {
+    const auto [x, y] = corners[static_cast<std::size_t>(i)];
+    if (x < r.x0 || x > r.x1 + 1 || y < r.y0 || y > r.y1 + 1) continue;
+    s += textAt(f.px(x) + 4, f.py(y) - 4, "c" + std::to_string(i), "fill=\"#1f5fa8\" font-weight=\"600\"");
+  }
+  return s + "</svg>\n";
+}
+
+std::string interpolateStageSvg(const TriangleVisit& visit) {
+  constexpr double kFull = 200, kBar = 28, kGap = 60, kBase = 240;
+  std::string s = svgOpen(3 * (2 * kBar + kGap) + 2 * kMarginPixels, kBase + 60);
+  for (int i = 0; i < 3; ++i) {
+    const double x = kMarginPixels + i * (2 * kBar + kGap);
+    s += barPair(x, kBase, kBar, kFull, visit.weights.screen[static_cast<std::size_t>(i)],
+                 visit.weights.perspective[static_cast<std::size_t>(i)], "corner " + std::to_string(i));
+  }
+  s += textAt(kMarginPixels, 18, "light: screen lambda_i");
+  s += textAt(kMarginPixels, 34, "dark: perspective p_i");
+  return s + "</svg>\n";
+}
+
+std::string shadeStageSvg(const TriangleVisit& visit) {
+  constexpr double kUnit = 220, kBar = 46, kGap = 40, kBase = 260;
+  const char* const names[] = {"R", "G", "B"};
+  std::string s = svgOpen(4 * (kBar + kGap) + 2 * kMarginPixels + 120, kBase + 50);
+  for (int c = 0; c < 3; ++c) {
+    const double x = kMarginPixels + c * (kBar + kGap);
+    s += stackedBar(x, kBase, kBar, kUnit, shadeSegments(visit.terms, c));
+    s += "<line x1=\"" + num(x - 4) + "\" x2=\"" + num(x + kBar + 4) + "\" y1=\"" +
+         num(kBase - std::clamp<double>(visit.terms.colour[c], 0, 2) * kUnit) + "\" y2=\"" +
+         num(kBase - std::clamp<double>(visit.terms.colour[c], 0, 2) * kUnit) + "\" stroke=\"#000\"/>\n";
+    s += textAt(x + kBar / 2 - 4, kBase + 16, names[c]);
+  }
+  const double x = kMarginPixels + 3 * (kBar + kGap);
+  char colour[64];
+  std::snprintf(colour, sizeof colour, "rgb(%d,%d,%d)", static_cast<int>(std::lround(std::clamp(visit.terms.colour.r, 0.0f, 1.0f) * 255)),
+                static_cast<int>(std::lround(std::clamp(visit.terms.colour.g, 0.0f, 1.0f) * 255)),
+                static_cast<int>(std::lround(std::clamp(visit.terms.colour.b, 0.0f, 1.0f) * 255)));
+  s += "<rect x=\"" + num(x) + "\" y=\"" + num(kBase - kUnit) + "\" width=\"" + num(kBar) + "\" height=\"" + num(kUnit) +
+       "\" fill=\"" + colour + "\" stroke=\"#888\"/>\n" + textAt(x, kBase + 16, "written");
+  s += "<line x1=\"" + num(kMarginPixels - 8) + "\" x2=\"" + num(x + kBar) + "\" y1=\"" + num(kBase - kUnit) + "\" y2=\"" +
+       num(kBase - kUnit) + "\" stroke=\"#bbb\" stroke-dasharray=\"3 3\"/>\n" + textAt(x + kBar + 6, kBase - kUnit + 4, "1.0");
+  return s + "</svg>\n";
+}
+
+namespace {
+
+std::string triple(double a, double b, double c) { return "(" + num(a) + ", " + num(b) + ", " + num(c) + ")"; }
+
+std::string clipCaption(const PixelTrace& trace, const TriangleVisit& visit) {
+  const auto [px, py] = pixelNdc(trace);
+  std::string text = "The vertex stage's clip positions divided by w: " + cutPlanesText(visit) + ", " +
+                     std::to_string(visit.clippedPolygon.size()) + " vertices after clipping (blue, v0 first).";
+  if (visit.fanTriangle >= 0) {
+    text += " The rasteriser draws the polygon as a fan from v0; fan triangle " + std::to_string(visit.fanTriangle) +
+            " (v0, v" + std::to_string(visit.fanTriangle) + ", v" + std::to_string(visit.fanTriangle + 1) +
+            ", filled) covers the pixel, the red dot at x/w, y/w = (" + num(px) + ", " + num(py) + ").";
+  }
+  return text + " Grey: the unclipped triangle, where all three vertices lie in front of the eye (w > 0). A side "
+                "plane only moves an edge onto the image's border, beyond which no pixel lies: switched off "
+                "(settings.clip), the clipper cuts at the guard band 16384 pixels out instead and the same pixels "
+                "are covered. The near and far planes decide which pixels are drawn.";
+}
+
+std::string rasterCaption(const TriangleVisit& visit) {
+  std::string corners;
+  for (int i = 0; i < 3; ++i) {
+    corners += (i ? ", c" : "c") + std::to_string(i) + " (" + std::to_string(visit.xFixed[i]) + ", " +
+               std::to_string(visit.yFixed[i]) + ")";
+  }
+  return "Setup snaps the fan triangle's corners to 1/256 pixel (GL window coordinates, pixel centres at whole "
+         "steps): " + corners + ". Edge functions at the pixel's centre: " +
+         triple(static_cast<double>(visit.edgeValue[0]), static_cast<double>(visit.edgeValue[1]),
+                static_cast<double>(visit.edgeValue[2])) +
+         ", all > 0 inside (a 0 counts only on a top or left edge, the fill rule). Blue cells: the pixels the "
+         "frame shows this triangle in (its triangle id, from every fan triangle of its clipped polygon); red: the "
+         "traced pixel.";
+}
+
+std::string interpolateCaption(const TriangleVisit& visit) {
+  const PixelWeights& w = visit.weights;
+  return "Screen barycentrics lambda = " + triple(w.screen[0], w.screen[1], w.screen[2]) +
+         " (the edge values normalised); perspective-correct weights p = " +
+         triple(w.perspective[0], w.perspective[1], w.perspective[2]) +
+         " (lambda_i / w_i, normalised), which the varyings use: uv = (" + num(w.uv.x) + ", " + num(w.uv.y) +
+         "), window depth " + num(w.depth) + ". Depth alone is interpolated with lambda (it is linear on the screen).";
+}
+
+std::string shadeCaption(const TriangleVisit& visit) {
+  const ShadeTerms& t = visit.terms;
+  std::string text = "Phong's terms per channel, stacked: ambient (grey), then each light's diffuse (orange) and "
+                     "specular (blue) times its attenuation and shadows, as the light loop sums them. Ambient " +
+                     triple(t.ambient.r, t.ambient.g, t.ambient.b);
+  for (int i = 0; i < t.lightCount; ++i) {
+    const auto& light = t.lights[static_cast<std::size_t>(i)];
+    text += "; L" + std::to_string(i) + " diffuse " + triple(light.diffuse.r, light.diffuse.g, light.diffuse.b) +
+            ", specular " + triple(light.specular.r, light.specular.g, light.specular.b) + " (N.L " +
+            num(light.nDotL) + ", attenuation " + num(light.attenuation) + ", shadow " +
+            num(double(light.selfShadow) * light.shadowVisibility) + ")";
+  }
+  text += ". Colour written " + triple(t.colour.r, t.colour.g, t.colour.b) + " (black lines)";
+  if (t.environmentOn) text += ", mixed with the environment (share " + num(t.environmentShare) + ")";
+  return text + ".";
+}
+
+}  // namespace
+
+std::vector<StagePicture> writeStagePictures(const std::string& dir, const PixelTrace& trace,
+                                             const RenderOutput& frame) {
+  const TriangleVisit* visit = stageVisitOf(trace);
+  if (!visit) {
+    throw InputError("trace --stages: no triangle reaches pixel (" + std::to_string(trace.x) + ", " +
+                     std::to_string(trace.yTop) + "); pick a pixel on a surface");
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (!std::filesystem::is_directory(dir)) throw InputError(dir + ": cannot create the folder");
+  const std::filesystem::path folder(dir);
+  std::vector<StagePicture> pictures = {
+      {"1_clip.svg", "Clip and divide", clipCaption(trace, *visit)},
+      {"2_raster.svg", "Setup and raster", rasterCaption(*visit)},
+      {"3_interpolate.svg", "Interpolate", interpolateCaption(*visit)},
+      {"4_shade.svg", "Shade", shadeCaption(*visit)},
+  };
+  writeText(folder / pictures[0].file, clipStageSvg(trace, *visit));
+  writeText(folder / pictures[1].file, rasterStageSvg(trace, *visit, frame.triangleId));
+  writeText(folder / pictures[2].file, interpolateStageSvg(*visit));
+  writeText(folder / pictures[3].file, shadeStageSvg(*visit));
+  if (visit->outcome != TraceOutcome::Shaded) pictures[3].caption = "Not shaded: " + std::string(toString(visit->outcome)) + ".";
+  writeText(folder / "index.html", indexHtml(trace, *visit, pictures));
+  return pictures;
+}
+
+}  // namespace twr
