@@ -1,4 +1,5 @@
 #include "softrender/clip.h"
+#include "softrender/clip_steps.h"
 
 #include <cmath>
 #include <utility>
@@ -46,8 +47,10 @@ bool planeActive(int plane, const ClipConfig& config) {
 
 // Cuts `in` by one plane into `out` (Sutherland-Hodgman: keep inside vertices, add a vertex
 // where an edge crosses the plane).
+// `step`, when given, records the distances and every vertex the plane makes (clip_steps.h).
 template <typename T>
-void clipPolygonByPlane(const ClipPolygonT<T>& in, int plane, const ClipConfig& config, ClipPolygonT<T>& out) {
+void clipPolygonByPlane(const ClipPolygonT<T>& in, int plane, const ClipConfig& config, ClipPolygonT<T>& out,
+                        ClipStep* step = nullptr) {
   std::array<T, kMaxClipVertices> distance{};
   for (int i = 0; i < in.count; ++i) distance[static_cast<std::size_t>(i)] = clipDistanceTo(in.v[static_cast<std::size_t>(i)], plane, config);
   out.count = 0;
@@ -70,10 +73,19 @@ void clipPolygonByPlane(const ClipPolygonT<T>& in, int plane, const ClipConfig& 
       const ClipVertexT<T>& farther = currentNearer ? following : current;
       const T dNearer = currentNearer ? dCurrent : dNext;
       const T dFarther = currentNearer ? dNext : dCurrent;
-      out.v[static_cast<std::size_t>(out.count++)] = interpolateClipVertex(nearer, farther, dNearer / (dNearer - dFarther));
+      const T t = dNearer / (dNearer - dFarther);
+      out.v[static_cast<std::size_t>(out.count++)] = interpolateClipVertex(nearer, farther, t);
+      if (step) step->cuts.push_back({currentNearer ? i : next, currentNearer ? next : i, static_cast<float>(t), out.count - 1});
     }
   }
   if (out.count < 3) out.count = 0;
+  if (step) {
+    for (int i = 0; i < in.count; ++i) {
+      step->before.push_back(vec4(in.v[static_cast<std::size_t>(i)].posClip));
+      step->distances.push_back(static_cast<float>(distance[static_cast<std::size_t>(i)]));
+    }
+    for (int i = 0; i < out.count; ++i) step->after.push_back(vec4(out.v[static_cast<std::size_t>(i)].posClip));
+  }
 }
 
 template <typename T>
@@ -124,9 +136,13 @@ ClipVertexT<T> interpolateClipVertex(const ClipVertexT<T>& from, const ClipVerte
   return r;
 }
 
+namespace {
+
+// clipTriangle, and with `steps` each plane's pass recorded (clipTriangleSteps).
 template <typename T>
-std::uint32_t clipTriangle(const ClipVertexT<T>& a, const ClipVertexT<T>& b, const ClipVertexT<T>& c,
-                           const ClipConfig& config, ClipPolygonT<T>& out, ClipPolygonT<T>& scratch) {
+std::uint32_t clipTriangleRecorded(const ClipVertexT<T>& a, const ClipVertexT<T>& b, const ClipVertexT<T>& c,
+                                   const ClipConfig& config, ClipPolygonT<T>& out, ClipPolygonT<T>& scratch,
+                                   std::vector<ClipStep>* steps) {
   if (!clipVertexUsable(a, config) || !clipVertexUsable(b, config) || !clipVertexUsable(c, config)) {
     out.count = 0;
     return kClipNonFiniteBit;
@@ -147,7 +163,13 @@ std::uint32_t clipTriangle(const ClipVertexT<T>& a, const ClipVertexT<T>& b, con
   ClipPolygonT<T>* next = &scratch;
   for (int plane = 0; plane < kClipPlaneCount; ++plane) {
     if ((straddled & (1u << plane)) == 0) continue;
-    clipPolygonByPlane(*current, plane, config, *next);
+    ClipStep* step = nullptr;
+    if (steps) {
+      steps->push_back(ClipStep{});
+      steps->back().plane = plane;
+      step = &steps->back();
+    }
+    clipPolygonByPlane(*current, plane, config, *next, step);
     cut |= 1u << plane;
     std::swap(current, next);
     if (current->count == 0) break;
@@ -167,6 +189,24 @@ std::uint32_t clipTriangle(const ClipVertexT<T>& a, const ClipVertexT<T>& b, con
     for (int i = 0; i < current->count; ++i) out.v[static_cast<std::size_t>(i)] = current->v[static_cast<std::size_t>(i)];
   }
   return cut;
+}
+
+}  // namespace
+
+template <typename T>
+std::uint32_t clipTriangle(const ClipVertexT<T>& a, const ClipVertexT<T>& b, const ClipVertexT<T>& c,
+                           const ClipConfig& config, ClipPolygonT<T>& out, ClipPolygonT<T>& scratch) {
+  return clipTriangleRecorded(a, b, c, config, out, scratch, static_cast<std::vector<ClipStep>*>(nullptr));
+}
+
+std::vector<ClipStep> clipTriangleSteps(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
+                                        const ClipConfig& config) {
+  std::vector<ClipStep> steps;
+  ClipPolygon out, scratch;
+  clipTriangleRecorded(a, b, c, config, out, scratch, &steps);
+  // A removed polygon (a cut vertex at w <= 0) leaves nothing, whatever the last plane left.
+  if (out.count == 0 && !steps.empty()) steps.back().after.clear();
+  return steps;
 }
 
 template <typename T>

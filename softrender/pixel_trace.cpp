@@ -59,6 +59,7 @@ void traceTriangle(const DrawItem& item, std::size_t t, const VertexUniforms& ve
   }
   ClipPolygon polygon, scratch;
   visit.planesCut = clipTriangle(v[0], v[1], v[2], clipConfig, polygon, scratch);
+  visit.clipSteps = clipTriangleSteps(v[0], v[1], v[2], clipConfig);
   for (int i = 0; i < polygon.count; ++i) visit.clippedPolygon.push_back(polygon.v[static_cast<std::size_t>(i)].posClip);
 
   const bool tangentLighting = vertexUniforms.tangentLighting;
@@ -323,6 +324,12 @@ std::string formatPixelTrace(const PixelTrace& tr) {
       o << "  v" << k << " posModel " << fmt(v.posModel[k]) << " -> posClip " << fmt(v.posClip[k]) << "\n";
     }
     o << "  clip planes that cut it: " << planeList(v.planesCut) << "\n";
+    for (const ClipStep& step : v.clipSteps) {
+      o << "    " << clipPlaneName(step.plane) << ": " << step.before.size() << " -> " << step.after.size()
+        << " vertices";
+      for (const ClipCut& cut : step.cuts) o << "; cut edge (" << cut.nearer << ", " << cut.farther << ") at t " << cut.t;
+      o << "\n";
+    }
     if (v.planesCut != 0) {
       o << "  clipped polygon (" << v.clippedPolygon.size() << " vertices):";
       for (const vec4& p : v.clippedPolygon) o << " " << fmt(p);
@@ -425,6 +432,15 @@ nlohmann::json pixelTraceToJson(const PixelTrace& tr) {
     json poly = json::array();
     for (const vec4& p : v.clippedPolygon) poly.push_back(toJson(p));
     jv["clipped_polygon"] = poly;
+    json steps = json::array();
+    for (const ClipStep& step : v.clipSteps) {
+      json after = json::array(), cuts = json::array();
+      for (const vec4& p : step.after) after.push_back(toJson(p));
+      for (const ClipCut& cut : step.cuts) cuts.push_back({{"edge", {cut.nearer, cut.farther}}, {"t", cut.t}});
+      steps.push_back({{"plane", clipPlaneName(step.plane)}, {"distances", step.distances}, {"polygon", after},
+                       {"new_vertices", cuts}});
+    }
+    jv["clip_steps"] = steps;
     jv["fan_triangle"] = v.fanTriangle;
     jv["fan_corners"] = {v.fanCorners[0], v.fanCorners[1], v.fanCorners[2]};
     json window = json::array(), snapped = json::array();

@@ -12,6 +12,7 @@
 #include "scene/scene.h"
 #include "scene/shadow_trace.h"
 #include "softrender/clip.h"
+#include "softrender/clip_steps.h"
 #include "softrender/interpolate.h"
 #include "softrender/setup.h"
 #include "softrender/shade.h"
@@ -42,6 +43,7 @@ struct TriangleVisit {
   std::array<vec4, 3> posClip{};       // vertex stage output
   std::uint32_t planesCut = 0;         // mask, see clip.h
   std::vector<vec4> clippedPolygon;    // posClip of each vertex after clipping
+  std::vector<ClipStep> clipSteps;     // the clipper's passes, one per plane that cut it (clip_steps.h)
   int fanTriangle = -1;                // i: fan triangle (0, i, i+1) that covers the pixel
   std::array<int, 3> fanCorners{};     // ... its polygon vertices in llvmpipe's setup order
   std::array<WindowVertex, 3> window{};

@@ -37,10 +37,10 @@ struct Frame2d {
   double py(double y) const { return kMarginPixels + (yUp ? (y1 - y) : (y - y0)) * scale; }
 };
 
-Frame2d frameAround(double x0, double y0, double x1, double y1, bool yUp) {
+Frame2d frameAround(double x0, double y0, double x1, double y1, bool yUp, double size = kPicturePixels) {
   Frame2d f;
   f.x0 = x0, f.y0 = y0, f.x1 = std::max(x1, x0 + 1e-6), f.y1 = std::max(y1, y0 + 1e-6);
-  f.scale = kPicturePixels / std::max(f.x1 - f.x0, f.y1 - f.y0);
+  f.scale = size / std::max(f.x1 - f.x0, f.y1 - f.y0);
   f.yUp = yUp;
   return f;
 }
@@ -266,6 +266,55 @@ Frame2d frameOfPoints(const std::vector<Points>& sets, double minSize) {
                      std::min(x1 + pad, kNdcViewLimit), std::min(y1 + pad, kNdcViewLimit), true);
 }
 
+constexpr double kStepPanelPixels = 190.0;  // one clip step's drawing, SVG pixels
+constexpr int kStepPanelsPerRow = 4;
+
+// The axes a plane is a line in: (x, w) for right, left and the rest, (y, w) for top and
+// bottom, (z, w) for near and far; the plane is then coordinate = +/- w.
+int axisOf(int plane) {
+  if (plane == kClipPlaneTop || plane == kClipPlaneBottom) return 1;
+  if (plane == kClipPlaneNear || plane == kClipPlaneFar) return 2;
+  return 0;
+}
+
+// One pass of the clipper in the plane's own axes: the polygon before (grey), what it left
+// (blue), the plane's line and each vertex it made with its t.
+std::string clipStepDrawing(const ClipStep& step) {
+  const int axis = axisOf(step.plane);
+  const auto project = [axis](const std::vector<vec4>& polygon) {
+    Points points;
+    for (const vec4& p : polygon) points.emplace_back(p[axis], p.w);
+    return points;
+  };
+  const Points before = project(step.before), after = project(step.after);
+  double lo = 1e30, hi = -1e30;
+  for (const auto& [a, w] : before) lo = std::min({lo, a, w}), hi = std::max({hi, a, w});
+  const double pad = 0.1 * std::max(hi - lo, 1e-6);
+  Frame2d f = frameAround(lo - pad, lo - pad, hi + pad, hi + pad, true, kStepPanelPixels);
+  const bool plus = step.plane == kClipPlaneRight || step.plane == kClipPlaneTop || step.plane == kClipPlaneFar;
+  const double sign = plus ? 1.0 : -1.0;  // the plane: coordinate = sign * w (side, near and far planes)
+  std::string s;
+  if (step.plane <= kClipPlaneFar) {
+    s += "<line x1=\"" + num(f.px(sign * (lo - pad))) + "\" y1=\"" + num(f.py(lo - pad)) + "\" x2=\"" +
+         num(f.px(sign * (hi + pad))) + "\" y2=\"" + num(f.py(hi + pad)) + "\" stroke=\"" + kCutRed +
+         "\" stroke-dasharray=\"5 3\"/>\n";
+  }
+  if (before.size() >= 3) s += polygonOf(f, before, "fill=\"none\" stroke=\"#999\" stroke-width=\"1.5\"");
+  if (after.size() >= 3) s += polygonOf(f, after, "fill=\"#cfe0f5\" fill-opacity=\"0.8\" stroke=\"#1f5fa8\"");
+  for (const ClipCut& cut : step.cuts) {
+    if (cut.index < 0 || static_cast<std::size_t>(cut.index) >= after.size()) continue;  // the polygon was removed
+    const auto [a, w] = after[static_cast<std::size_t>(cut.index)];
+    s += "<circle cx=\"" + num(f.px(a)) + "\" cy=\"" + num(f.py(w)) + "\" r=\"3.5\" fill=\"" + kCutRed + "\"/>\n" +
+         textAt(f.px(a) + 5, f.py(w) - 4, "t " + num(cut.t), "fill=\"#c0392b\"");
+  }
+  const char* const axisNames[] = {"x", "y", "z"};
+  s += textAt(6, 16, std::string(clipPlaneName(step.plane)) + ": " + std::to_string(step.before.size()) + " -> " +
+                         std::to_string(step.after.size()) + " vertices",
+              "font-weight=\"600\"");
+  s += textAt(6, f.height() - 6, std::string("horizontal ") + axisNames[axis] + ", vertical w", "fill=\"#666\"");
+  return panelAt(0, f, s);
+}
+
 }  // namespace
 
 std::string clipStageSvg(const PixelTrace& trace, const TriangleVisit& visit) {
@@ -278,9 +327,18 @@ std::string clipStageSvg(const PixelTrace& trace, const TriangleVisit& visit) {
   const Frame2d whole = frameOfPoints({square, polygon, triangle}, 0.05);
   const auto [px, py] = pixelNdc(trace);
   const Frame2d zoom = frameOfPoints({polygon.empty() ? triangle : polygon, {{px, py}}}, 1e-4);
-  std::string s = svgOpen(whole.width() + zoom.width(), std::max(whole.height(), zoom.height()));
+  // Below the two views, the clipper's passes in order, kStepPanelsPerRow to a row.
+  const double top = std::max(whole.height(), zoom.height());
+  const double step = kStepPanelPixels + 2 * kMarginPixels;
+  const int rows = (static_cast<int>(visit.clipSteps.size()) + kStepPanelsPerRow - 1) / kStepPanelsPerRow;
+  std::string s = svgOpen(std::max(whole.width() + zoom.width(), kStepPanelsPerRow * step), top + rows * step);
   s += panelAt(0, whole, clipDrawing(whole, trace, visit, polygon, triangle, "x/w, y/w: the view volume's [-1, 1] square"));
   s += panelAt(whole.width(), zoom, clipDrawing(zoom, trace, visit, polygon, triangle, "zoomed to the polygon"));
+  for (std::size_t i = 0; i < visit.clipSteps.size(); ++i) {
+    const double x = static_cast<double>(i % kStepPanelsPerRow) * step;
+    const double y = top + static_cast<double>(i / kStepPanelsPerRow) * step;
+    s += "<g transform=\"translate(" + num(x) + "," + num(y) + ")\">" + clipStepDrawing(visit.clipSteps[i]) + "</g>\n";
+  }
   return s + "</svg>\n";
 }
 
@@ -354,6 +412,12 @@ std::string clipCaption(const PixelTrace& trace, const TriangleVisit& visit) {
     text += " The rasteriser draws the polygon as a fan from v0; fan triangle " + std::to_string(visit.fanTriangle) +
             " (v0, v" + std::to_string(visit.fanTriangle) + ", v" + std::to_string(visit.fanTriangle + 1) +
             ", filled) covers the pixel, the red dot at x/w, y/w = (" + num(px) + ", " + num(py) + ").";
+  }
+  if (!visit.clipSteps.empty()) {
+    text += " Below, the clipper's passes in its order, each in the two axes its plane is a line in (x = +/-w, "
+            "y = +/-w, z = +/-w, dashed red): the polygon before it in grey, what it left in blue, the vertices it "
+            "made in red with t along the edge from the endpoint nearer the plane. A plane the triangle straddled "
+            "may find nothing left outside it after the earlier cuts (n -> n).";
   }
   return text + " Grey: the unclipped triangle, where all three vertices lie in front of the eye (w > 0). A side "
                 "plane only moves an edge onto the image's border, beyond which no pixel lies: switched off "

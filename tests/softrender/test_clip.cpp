@@ -1,9 +1,11 @@
 // Homogeneous clipping: hand-checked polygons, planes, attributes and vertex bounds.
 #include "softrender/clip.h"
+#include "softrender/clip_steps.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 
 namespace twr {
 namespace {
@@ -228,6 +230,52 @@ TEST(Clip, GuardBandWithHugeWLeavesEveryCutVertexFinite) {
     EXPECT_GT(p.w, 0.0f) << i;
     EXPECT_LE(std::fabs(p.x), config.guardBandX * p.w * 1.0001f) << i;
   }
+}
+
+// clipTriangleSteps replays clipTriangle's passes: one step per plane of the returned mask, in
+// plane order, each cutting the polygon the last one left, the last leaving clipTriangle's
+// polygon bit for bit; each vertex a plane made lies on the edge it names, at its t.
+TEST(ClipSteps, ReplayTheClippersPassesPlaneByPlane) {
+  const float r = 2.6f / std::sqrt(2.0f);
+  const std::array<std::array<ClipVertex, 3>, 3> triangles = {{
+      {at({-r, r, 0, 1}), at({0, -r, r, 1}), at({r, 0, -r, 1})},          // all six frustum planes
+      {at({0.2f, 0.1f, 0.5f, 1}), at({3, 0.2f, 0.4f, 1}), at({0.1f, 2, -3, 1})},  // right, top, near
+      {at({-0.5f, -0.5f, 0, 1}), at({0.5f, -0.5f, 0, 1}), at({0, 0.5f, 0, 1})},   // inside: no step
+  }};
+  for (const auto& t : triangles) {
+    ClipPolygon out, scratch;
+    const std::uint32_t mask = clipTriangle(t[0], t[1], t[2], allPlanes(), out, scratch);
+    const std::vector<ClipStep> steps = clipTriangleSteps(t[0], t[1], t[2], allPlanes());
+    std::uint32_t planes = 0;
+    int previous = -1;
+    std::vector<vec4> polygon = {t[0].posClip, t[1].posClip, t[2].posClip};
+    for (const ClipStep& step : steps) {
+      EXPECT_GT(step.plane, previous);
+      previous = step.plane;
+      planes |= 1u << step.plane;
+      EXPECT_EQ(step.before, polygon) << clipPlaneName(step.plane);
+      EXPECT_EQ(step.distances.size(), step.before.size());
+      for (const ClipCut& cut : step.cuts) {
+        EXPECT_GE(cut.t, 0.0f);
+        EXPECT_LE(cut.t, 1.0f);
+        const vec4 from = step.before[static_cast<std::size_t>(cut.nearer)];
+        const vec4 to = step.before[static_cast<std::size_t>(cut.farther)];
+        expectNear(step.after[static_cast<std::size_t>(cut.index)], from + cut.t * (to - from));
+        // The nearer endpoint and the farther one lie on either side of the plane.
+        EXPECT_NE(step.distances[static_cast<std::size_t>(cut.nearer)] >= 0.0f,
+                  step.distances[static_cast<std::size_t>(cut.farther)] >= 0.0f);
+      }
+      polygon = step.after;
+    }
+    EXPECT_EQ(planes, mask);
+    ASSERT_EQ(polygon.size(), static_cast<std::size_t>(out.count));
+    for (int i = 0; i < out.count; ++i) {
+      const vec4 expected = out.v[static_cast<std::size_t>(i)].posClip;
+      EXPECT_EQ(std::memcmp(&polygon[static_cast<std::size_t>(i)], &expected, sizeof(vec4)), 0) << "vertex " << i;
+    }
+  }
+  EXPECT_TRUE(clipTriangleSteps(triangles[2][0], triangles[2][1], triangles[2][2], allPlanes()).empty());
+  EXPECT_EQ(clipTriangleSteps(triangles[0][0], triangles[0][1], triangles[0][2], allPlanes()).size(), 6u);
 }
 
 }  // namespace
