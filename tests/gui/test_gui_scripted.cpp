@@ -307,8 +307,9 @@ std::string testName() {
 }
 
 // Runs twinraster-gui with `arguments` (shell words) and its stderr captured; the exit code.
+// A folder per test: ctest runs these tests at once, and a shared err.txt mixed their messages.
 int runGui(const std::string& arguments, std::string& err) {
-  const fs::path dir = fs::path(TWINRASTER_TEST_OUT) / "gui_scripted" / "command_line";
+  const fs::path dir = fs::path(TWINRASTER_TEST_OUT) / "gui_scripted" / ("command_line_" + testName());
   fs::create_directories(dir);
   const std::string command = "XDG_CONFIG_HOME=\"" + (dir / "config").string() + "\" \"" + TWINRASTER_GUI + "\" " +
                               arguments + " >/dev/null 2>\"" + (dir / "err.txt").string() + "\"";
