@@ -209,6 +209,7 @@ Json settingsJson(const RenderSettings& s) {
                   {"sample_distribution", std::string(toString(s.ssr.sampleDistribution))},
                   {"reflect_strength", clean(s.ssr.reflectStrength)}};
   j["tangent_transform"] = std::string(toString(s.tangentTransform));
+  j["interpolation"] = std::string(toString(s.interpolation));
   j["texture_filter"] = std::string(toString(s.textureFilter));
   j["tbn_lines"] = Json{{"enabled", s.tbnLines.enabled}, {"length", clean(s.tbnLines.length)},
                         {"mode", std::string(toString(s.tbnLines.mode))}};
@@ -484,7 +485,8 @@ void printSceneDescription(std::ostream& out, const Scene& scene) {
       << (drawsDeferred(s) ? " (drawn deferred, position " + std::string(toString(s.gbufferPosition)) + ")" : "")
       << ", lighting_space "
       << toString(s.lightingSpace) << ", tangent_transform "
-      << toString(s.tangentTransform) << ", texture_filter " << toString(s.textureFilter) << "\n"
+      << toString(s.tangentTransform) << ", texture_filter " << toString(s.textureFilter) << ", interpolation "
+      << toString(s.interpolation) << "\n"
       << "  ssr " << (s.ssr.enabled ? "on, " + std::string(toString(s.ssr.march)) + ", max_steps " +
                                           std::to_string(s.ssr.maxSteps) + ", step " + num(s.ssr.step) +
                                           ", thickness " + num(s.ssr.thickness) + ", reflect_strength " +

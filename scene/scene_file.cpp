@@ -962,7 +962,7 @@ class SceneReader {
     requireObject(j, path);
     checkKeys(j, path,
               {"cull", "front_face", "clip", "user_clip_planes", "view", "lighting_space", "tangent_transform",
-               "texture_filter", "anisotropy", "tbn_lines", "pipeline", "gbuffer_position", "ssr"},
+               "interpolation", "texture_filter", "anisotropy", "tbn_lines", "pipeline", "gbuffer_position", "ssr"},
               "settings");
     RenderSettings& s = scene_.settings;
     if (const Json* v = find(j, "cull")) s.cull = readEnum<CullMode>(*v, childPath(path, "cull"));
@@ -981,6 +981,7 @@ class SceneReader {
     if (const Json* v = find(j, "tangent_transform")) {
       s.tangentTransform = readEnum<TangentTransform>(*v, childPath(path, "tangent_transform"));
     }
+    if (const Json* v = find(j, "interpolation")) s.interpolation = readEnum<Interpolation>(*v, childPath(path, "interpolation"));
     if (const Json* v = find(j, "texture_filter")) s.textureFilter = readEnum<TextureFilter>(*v, childPath(path, "texture_filter"));
     if (const Json* v = find(j, "anisotropy")) {
       const std::string at = childPath(path, "anisotropy");

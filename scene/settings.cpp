@@ -70,6 +70,8 @@ constexpr NameTable<SurfaceDetail, 8> kSurfaceDetail{{{SurfaceDetail::NormalMap,
                                                      {SurfaceDetail::ParallaxOcclusion, "parallax_occlusion"}}};
 constexpr NameTable<SelfShadow, 3> kSelfShadow{
     {{SelfShadow::None, "none"}, {SelfShadow::HeightMarch, "height_march"}, {SelfShadow::HorizonMap, "horizon_map"}}};
+constexpr NameTable<Interpolation, 2> kInterpolation{
+    {{Interpolation::Perspective, "perspective"}, {Interpolation::Affine, "affine"}}};
 constexpr NameTable<Fresnel, 2> kFresnel{{{Fresnel::None, "none"}, {Fresnel::Schlick, "schlick"}}};
 constexpr NameTable<EnvironmentSpecular, 3> kEnvironmentSpecular{{{EnvironmentSpecular::None, "none"},
                                                                   {EnvironmentSpecular::Mirror, "mirror"},
@@ -132,6 +134,7 @@ std::string_view toString(FrontFace v) { return nameOf(kFront, v); }
 std::string_view toString(View v) { return nameOf(kView, v); }
 std::string_view toString(LightingSpace v) { return nameOf(kSpace, v); }
 std::string_view toString(Pipeline v) { return nameOf(kPipeline, v); }
+std::string_view toString(Interpolation v) { return nameOf(kInterpolation, v); }
 std::string_view toString(GBufferPosition v) { return nameOf(kGBufferPosition, v); }
 std::string_view toString(SsrMarch v) { return nameOf(kSsrMarch, v); }
 std::string_view toString(SampleDistribution v) { return nameOf(kSampleDistribution, v); }
@@ -149,6 +152,7 @@ bool parse(std::string_view s, FrontFace& out) { return valueOf(kFront, s, out);
 bool parse(std::string_view s, View& out) { return valueOf(kView, s, out); }
 bool parse(std::string_view s, LightingSpace& out) { return valueOf(kSpace, s, out); }
 bool parse(std::string_view s, Pipeline& out) { return valueOf(kPipeline, s, out); }
+bool parse(std::string_view s, Interpolation& out) { return valueOf(kInterpolation, s, out); }
 bool parse(std::string_view s, GBufferPosition& out) { return valueOf(kGBufferPosition, s, out); }
 bool parse(std::string_view s, SsrMarch& out) { return valueOf(kSsrMarch, s, out); }
 bool parse(std::string_view s, SampleDistribution& out) { return valueOf(kSampleDistribution, s, out); }

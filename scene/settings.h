@@ -73,6 +73,12 @@ enum class Fresnel { None, Schlick };
 enum class EnvironmentSpecular { None, Mirror, Prefiltered };
 enum class EnvironmentDiffuse { None, IrradianceMap, Sh9 };
 enum class LightingSpace { World, Tangent };
+// How the rasterizer spreads each varying over a triangle (docs/pipeline.md, "Interpolation"):
+// perspective (GLSL's default, smooth): a / w and 1 / w are linear on the screen and divided
+// per pixel, so a texture stays put on a receding floor; affine (GLSL's noperspective): the
+// varying itself is linear on the screen, as early consoles drew it, and textures swim. Depth
+// is z / w, linear on the screen either way.
+enum class Interpolation { Perspective, Affine };
 // How a shaded frame is lit (docs/deferred.md): forward (every fragment lit as it is drawn) or
 // deferred (a G-buffer pass writes each pixel's surface, then one lighting pass per pixel).
 enum class Pipeline { Forward, Deferred };
@@ -170,6 +176,7 @@ struct RenderSettings {
   Pipeline pipeline = Pipeline::Forward;
   GBufferPosition gbufferPosition = GBufferPosition::Stored;  // read by a deferred frame only
   TangentTransform tangentTransform = TangentTransform::Model;
+  Interpolation interpolation = Interpolation::Perspective;
   TextureFilter textureFilter = TextureFilter::Bilinear;
   float anisotropy = 1.0f;  // GL_TEXTURE_MAX_ANISOTROPY, in [1, kMaxTextureAnisotropy]
   TbnLines tbnLines;
@@ -198,6 +205,7 @@ std::string_view toString(CullMode v);
 std::string_view toString(FrontFace v);
 std::string_view toString(View v);
 std::string_view toString(LightingSpace v);
+std::string_view toString(Interpolation v);
 std::string_view toString(Pipeline v);
 std::string_view toString(GBufferPosition v);
 std::string_view toString(SsrMarch v);
@@ -216,6 +224,7 @@ bool parse(std::string_view s, CullMode& out);
 bool parse(std::string_view s, FrontFace& out);
 bool parse(std::string_view s, View& out);
 bool parse(std::string_view s, LightingSpace& out);
+bool parse(std::string_view s, Interpolation& out);
 bool parse(std::string_view s, Pipeline& out);
 bool parse(std::string_view s, GBufferPosition& out);
 bool parse(std::string_view s, SsrMarch& out);

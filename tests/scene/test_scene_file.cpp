@@ -216,6 +216,8 @@ TEST(SceneFileErrors, BadEnumValue) {
                  {"inline.json: settings.tbn_lines.mode: expected one of core|immediate"});
   expectContains(parseError(R"({"nodes": [], "settings": {"gbuffer_position": "view"}})"),
                  {"inline.json: settings.gbuffer_position: expected one of stored|depth, got \"view\""});
+  expectContains(parseError(R"({"nodes": [], "settings": {"interpolation": "linear"}})"),
+                 {"inline.json: settings.interpolation: expected one of perspective|affine, got \"linear\""});
 }
 
 TEST(SceneFile, SsrSettingsAndMaterialKeys) {
@@ -456,6 +458,7 @@ TEST(SceneFile, DefaultsForEveryKeyButNodes) {
   EXPECT_EQ(s.view, View::Shaded);
   EXPECT_EQ(s.lightingSpace, LightingSpace::World);
   EXPECT_EQ(s.tangentTransform, TangentTransform::Model);
+  EXPECT_EQ(s.interpolation, Interpolation::Perspective);
   EXPECT_EQ(s.textureFilter, TextureFilter::Bilinear);
   EXPECT_FALSE(s.tbnLines.enabled);
   EXPECT_FLOAT_EQ(s.tbnLines.length, 0.1f);
@@ -491,7 +494,7 @@ TEST(SceneFile, EveryKeyIsRead) {
                  "clip": {"left": false, "right": false, "bottom": false, "top": false, "near": false, "far": false},
                  "user_clip_planes": [[1, 0, 0, 0.5], [0, -1, 0, 2]], "view": "eye_tangent",
                  "lighting_space": "tangent", "tangent_transform": "inverse_transpose",
-                 "texture_filter": "nearest", "tbn_lines": {"enabled": true, "length": 0.25, "mode": "immediate"}}
+                 "interpolation": "affine", "texture_filter": "nearest", "tbn_lines": {"enabled": true, "length": 0.25, "mode": "immediate"}}
   })",
                                  kInline, kDataDir);
   EXPECT_EQ(scene.output.width, 320);
@@ -545,6 +548,7 @@ TEST(SceneFile, EveryKeyIsRead) {
   EXPECT_EQ(s.view, View::EyeTangent);
   EXPECT_EQ(s.lightingSpace, LightingSpace::Tangent);
   EXPECT_EQ(s.tangentTransform, TangentTransform::InverseTranspose);
+  EXPECT_EQ(s.interpolation, Interpolation::Affine);
   EXPECT_EQ(s.textureFilter, TextureFilter::Nearest);
   EXPECT_TRUE(s.tbnLines.enabled);
   EXPECT_FLOAT_EQ(s.tbnLines.length, 0.25f);
