@@ -6,9 +6,11 @@
 
 namespace twr {
 
-ClipConfig makeClipConfig(const ClipSwitches& frustum, int userPlaneCount, int viewportWidth, int viewportHeight) {
+ClipConfig makeClipConfig(const ClipSwitches& frustum, int userPlaneCount, int viewportWidth, int viewportHeight,
+                          Interpolation varyings) {
   ClipConfig config;
   config.frustum = frustum;
+  config.varyings = varyings;
   // Window x = (x_ndc + 1) W / 2 stays in [-G, W + G] when |x_ndc| <= 1 + 2 G / W.
   config.guardBandX = 1.0f + 2.0f * kGuardBandPixels / static_cast<float>(viewportWidth > 0 ? viewportWidth : 1);
   config.guardBandY = 1.0f + 2.0f * kGuardBandPixels / static_cast<float>(viewportHeight > 0 ? viewportHeight : 1);
@@ -45,6 +47,14 @@ bool planeActive(int plane, const ClipConfig& config) {
 }
 
 
+// Where along the edge from `from` to `to` the cut vertex, t along it in clip space, takes its
+// varyings: at t itself, or for affine varyings at its place on the screen.
+template <typename T>
+T varyingsT(const ClipVertexT<T>& from, const ClipVertexT<T>& to, T t, const ClipConfig& config) {
+  if (config.varyings == Interpolation::Perspective) return t;
+  return screenLinearT(from.posClip, to.posClip, from.posClip + t * (to.posClip - from.posClip), t);
+}
+
 // Cuts `in` by one plane into `out` (Sutherland-Hodgman: keep inside vertices, add a vertex
 // where an edge crosses the plane).
 // `step`, when given, records the distances and every vertex the plane makes (clip_steps.h).
@@ -74,8 +84,12 @@ void clipPolygonByPlane(const ClipPolygonT<T>& in, int plane, const ClipConfig& 
       const T dNearer = currentNearer ? dCurrent : dNext;
       const T dFarther = currentNearer ? dNext : dCurrent;
       const T t = dNearer / (dNearer - dFarther);
-      out.v[static_cast<std::size_t>(out.count++)] = interpolateClipVertex(nearer, farther, t);
-      if (step) step->cuts.push_back({currentNearer ? i : next, currentNearer ? next : i, static_cast<float>(t), out.count - 1});
+      const T tVaryings = varyingsT(nearer, farther, t, config);
+      out.v[static_cast<std::size_t>(out.count++)] = interpolateClipVertex(nearer, farther, t, tVaryings);
+      if (step) {
+        step->cuts.push_back({currentNearer ? i : next, currentNearer ? next : i, static_cast<float>(t), out.count - 1,
+                              static_cast<float>(tVaryings)});
+      }
     }
   }
   if (out.count < 3) out.count = 0;
@@ -117,10 +131,37 @@ std::uint32_t outcode(const ClipVertexT<T>& vertex, const ClipConfig& config) {
 }
 
 template <typename T>
+T screenLinearT(const Vec4T<T>& from, const Vec4T<T>& to, const Vec4T<T>& cut, std::type_identity_t<T> t) {
+  // Mesa tries x where the clip x differ, else y. An edge an earlier side plane made lies on
+  // x = w, so both ends have NDC x 1 and Mesa divides 0 by 0 (llvmpipe then draws the fan
+  // black, docs/pipeline.md); here an axis whose NDC ends are equal is passed over instead.
+  const auto alongAxis = [&](T fromC, T toC, T cutC, T& out) {
+    if (fromC == toC) return false;
+    const T fromNdc = fromC / from.w, toNdc = toC / to.w, cutNdc = cutC / cut.w;
+    if (toNdc == fromNdc) return false;
+    out = (cutNdc - fromNdc) / (toNdc - fromNdc);
+    return true;
+  };
+  T onScreen = t;
+  if (alongAxis(from.x, to.x, cut.x, onScreen) || alongAxis(from.y, to.y, cut.y, onScreen)) return onScreen;
+  return t;
+}
+
+template <typename T>
 ClipVertexT<T> interpolateClipVertex(const ClipVertexT<T>& from, const ClipVertexT<T>& to, std::type_identity_t<T> t) {
+  return interpolateClipVertex(from, to, t, t);
+}
+
+template <typename T>
+ClipVertexT<T> interpolateClipVertex(const ClipVertexT<T>& from, const ClipVertexT<T>& to, std::type_identity_t<T> t,
+                                     std::type_identity_t<T> tVaryings) {
   ClipVertexT<T> r;
   r.fromClipper = true;
   r.posClip = from.posClip + t * (to.posClip - from.posClip);
+  for (std::size_t j = 0; j < r.clipDistance.size(); ++j) {
+    r.clipDistance[j] = from.clipDistance[j] + t * (to.clipDistance[j] - from.clipDistance[j]);
+  }
+  t = tVaryings;
   r.posWorld = from.posWorld + t * (to.posWorld - from.posWorld);
   r.nWorld = from.nWorld + t * (to.nWorld - from.nWorld);
   r.tWorld = from.tWorld + t * (to.tWorld - from.tWorld);
@@ -130,9 +171,6 @@ ClipVertexT<T> interpolateClipVertex(const ClipVertexT<T>& from, const ClipVerte
     r.lightDirTangent[i] = from.lightDirTangent[i] + t * (to.lightDirTangent[i] - from.lightDirTangent[i]);
   }
   r.eyeDirTangent = from.eyeDirTangent + t * (to.eyeDirTangent - from.eyeDirTangent);
-  for (std::size_t j = 0; j < r.clipDistance.size(); ++j) {
-    r.clipDistance[j] = from.clipDistance[j] + t * (to.clipDistance[j] - from.clipDistance[j]);
-  }
   return r;
 }
 
@@ -241,6 +279,8 @@ bool clipSegment(ClipVertexT<T>& a, ClipVertexT<T>& b, const ClipConfig& config,
   template T clipDistanceTo<T>(const ClipVertexT<T>&, int, const ClipConfig&);                                \
   template std::uint32_t outcode<T>(const ClipVertexT<T>&, const ClipConfig&);                                \
   template ClipVertexT<T> interpolateClipVertex<T>(const ClipVertexT<T>&, const ClipVertexT<T>&, T);          \
+  template ClipVertexT<T> interpolateClipVertex<T>(const ClipVertexT<T>&, const ClipVertexT<T>&, T, T);       \
+  template T screenLinearT<T>(const Vec4T<T>&, const Vec4T<T>&, const Vec4T<T>&, T);                          \
   template std::uint32_t clipTriangle<T>(const ClipVertexT<T>&, const ClipVertexT<T>&, const ClipVertexT<T>&, \
                                          const ClipConfig&, ClipPolygonT<T>&, ClipPolygonT<T>&);              \
   template bool clipSegment<T>(ClipVertexT<T>&, ClipVertexT<T>&, const ClipConfig&, std::uint32_t&);

@@ -48,13 +48,18 @@ struct ClipConfig {
   float guardBandX = 1.0f;  // |x| <= guardBandX * w when left/right is off (NDC units, >= 1)
   float guardBandY = 1.0f;  // |y| <= guardBandY * w when bottom/top is off
   int userPlaneCount = 0;   // clipDistance[0, userPlaneCount) are tested
+  // Affine: a cut vertex takes its varyings at the edge's screen-space parameter
+  // (screenLinearT), so they stay linear on the screen across the whole original triangle, as
+  // GLSL's noperspective requires; the position and clip distances always use clip space's t.
+  Interpolation varyings = Interpolation::Perspective;
 };
 
 // Guard band in pixels beyond each side of the viewport when a side plane is switched off.
 // Bounds window coordinates to [-kGuardBandPixels, size + kGuardBandPixels].
 inline constexpr float kGuardBandPixels = 16384.0f;
 
-ClipConfig makeClipConfig(const ClipSwitches& frustum, int userPlaneCount, int viewportWidth, int viewportHeight);
+ClipConfig makeClipConfig(const ClipSwitches& frustum, int userPlaneCount, int viewportWidth, int viewportHeight,
+                          Interpolation varyings = Interpolation::Perspective);
 
 // A convex polygon in clip space; vertex i is v[i] for i in [0, count).
 template <typename T>
@@ -89,6 +94,17 @@ std::uint32_t outcode(const ClipVertexT<T>& vertex, const ClipConfig& config);
 // snapped positions equal llvmpipe's.
 template <typename T>
 ClipVertexT<T> interpolateClipVertex(const ClipVertexT<T>& from, const ClipVertexT<T>& to, std::type_identity_t<T> t);
+// The same with the varyings (not the position or the clip distances) taken at tVaryings.
+template <typename T>
+ClipVertexT<T> interpolateClipVertex(const ClipVertexT<T>& from, const ClipVertexT<T>& to, std::type_identity_t<T> t,
+                                     std::type_identity_t<T> tVaryings);
+
+// Where the cut point `cut` (from + t (to - from) in clip space) lies along the edge on the
+// screen: (cut - from) / (to - from) in NDC x, or in y where the edge's clip x are equal, each
+// coordinate divided by its w; t itself where both are equal (the edge is a point on the
+// screen, so its varyings cannot matter). Mesa's draw clipper takes noperspective varyings at it.
+template <typename T>
+T screenLinearT(const Vec4T<T>& from, const Vec4T<T>& to, const Vec4T<T>& cut, std::type_identity_t<T> t);
 
 // Largest magnitude (inclusive) of a clip-space coordinate or user clip distance the clipper
 // accepts, clip-space units. Beyond it the guard-band distance (g w, g up to 32769) or the

@@ -18,6 +18,9 @@ struct ClipCut {
   int nearer = 0, farther = 0;
   float t = 0.0f;
   int index = 0;  // its place in the polygon after the plane
+  // Where along the edge its varyings were taken: t, or with affine varyings its place on the
+  // screen (clip.h, screenLinearT).
+  float tVaryings = 0.0f;
 };
 
 struct ClipStep {

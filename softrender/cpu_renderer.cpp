@@ -84,6 +84,7 @@ std::vector<LoopItemT<float>> teachingLoopItems(const std::vector<ItemState>& it
     d.frontFace = s.frontFace;
     d.viewport = s.viewport;
     d.tangentLighting = s.tangentLighting;
+    d.interpolation = s.interpolation;
   }
   return loopItems;
 }

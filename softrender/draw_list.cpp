@@ -14,11 +14,12 @@ ItemState makeItemState(const DrawItem& item, const mat4& clipFromWorld, const S
   s.vertexUniforms = makeVertexUniforms(item.worldFromModel, clipFromWorld, scene, settings);
   s.shade = makeShadeUniforms(*item.material, scene, settings);
   s.shaderKey = shaderKeyFor(s.shade, settings);
-  s.clip = makeClipConfig(settings.clip, s.vertexUniforms.userClipPlaneCount, width, height);
+  s.clip = makeClipConfig(settings.clip, s.vertexUniforms.userClipPlaneCount, width, height, settings.interpolation);
   s.cull = settings.cull;
   s.frontFace = settings.frontFace;
   s.viewport = Viewport{width, height};
   s.tangentLighting = s.vertexUniforms.tangentLighting;
+  s.interpolation = settings.interpolation;
   return s;
 }
 

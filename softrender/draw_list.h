@@ -21,6 +21,7 @@ struct ItemState {
   FrontFace frontFace = FrontFace::Ccw;
   Viewport viewport;
   bool tangentLighting = false;
+  Interpolation interpolation = Interpolation::Perspective;  // how varyings spread (interpolate.h)
 };
 
 ItemState makeItemState(const DrawItem& item, const mat4& clipFromWorld, const Scene& scene,

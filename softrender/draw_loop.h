@@ -48,6 +48,7 @@ struct LoopItemT {
   FrontFace frontFace = FrontFace::Ccw;
   Viewport viewport;
   bool tangentLighting = false;
+  Interpolation interpolation = Interpolation::Perspective;  // how varyings spread (interpolate.h)
 };
 
 // The rows [rowBegin, rowEnd) one worker draws (exclusive end). Every band sees every triangle
@@ -76,7 +77,7 @@ void drawClippedTriangle(const LoopItemT<T>& s, const ClipVertexT<T>& v0, const 
   if (setup.y1 < band.rowBegin || setup.y0 >= band.rowEnd) return;
   const AttributePlaneT<T> depthPlane = makeDepthPlane(window, setup);
   const VaryingPlanesT<T> varyings =
-      makeVaryingPlanes(window, v0, v1, v2, s.tangentLighting, s.shade.lightCount, setup);
+      makeVaryingPlanes(window, v0, v1, v2, s.tangentLighting, s.shade.lightCount, setup, s.interpolation);
   const UvPlanesT<T> uv{varyings.overW[kVaryingUv], varyings.overW[kVaryingUv + 1], varyings.oneOverW};
   const DepthFormat depthFormat = target.depthFormat();
   rasterizeTriangle(setup, band.rowBegin, band.rowEnd, [&](int py, Span span) {

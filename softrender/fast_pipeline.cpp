@@ -278,7 +278,8 @@ std::uint64_t FastPipeline::drawBin(const std::vector<ItemState>& items, int bin
       passed += kernels_.visibility(setup, window, slot, rowBegin, rowEnd, fb, scratch.slots.data(), depth, covered);
       if (!covered || depthOnly) continue;  // no pixel holds this slot, or nothing is shaded
       BinTriangle& t = scratch.triangles.emplace_back();
-      t.varyings = makeVaryingPlanes<float>(window, r.varyings, varyingCount(s.tangentLighting, s.shade.lightCount), setup);
+      t.varyings = makeVaryingPlanes<float>(window, r.varyings, varyingCount(s.tangentLighting, s.shade.lightCount), setup,
+                                            s.interpolation);
       t.depth = depth;
       t.triangleId = r.triangleId;
       t.item = r.item;

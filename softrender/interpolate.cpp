@@ -63,21 +63,23 @@ struct PlaneSetup {
 
 template <typename T>
 VaryingPlanesT<T> makeVaryingPlanes(const std::array<WindowVertexT<T>, 3>& window,
-                                    const std::array<const T*, 3>& varyings, int count, const TriangleSetup& setup) {
+                                    const std::array<const T*, 3>& varyings, int count, const TriangleSetup& setup,
+                                    Interpolation mode) {
   const PlaneSetup<T> planes(window, setup);
   const std::size_t c0 = PlaneSetup<T>::corner(setup, 0), c1 = PlaneSetup<T>::corner(setup, 1),
                     c2 = PlaneSetup<T>::corner(setup, 2);
   VaryingPlanesT<T> out;
   out.count = count;
-  // Perspective-correct: the planes of a/w and of 1/w, divided per pixel.
-  out.oneOverW = planes.planeOf(window[c0].invW, window[c1].invW, window[c2].invW);
+  // The planes of a/w and of 1/w, divided per pixel (affine: w is 1 at every corner).
+  const auto invW = [&](std::size_t c) { return attributeInvW(window[c], mode); };
+  out.oneOverW = planes.planeOf(invW(c0), invW(c1), invW(c2));
   bool finite = true;
   const auto isFinitePlane = [](const AttributePlaneT<T>& p) {
     return std::isfinite(p.atOrigin) && std::isfinite(p.dx) && std::isfinite(p.dy);
   };
   finite = isFinitePlane(out.oneOverW);
   for (int k = 0; k < count; ++k) {
-    const auto overW = [&](std::size_t c) { return varyings[c][k] * window[c].invW; };
+    const auto overW = [&](std::size_t c) { return varyings[c][k] * invW(c); };
     AttributePlaneT<T>& plane = out.overW[static_cast<std::size_t>(k)];
     plane = planes.planeOf(overW(c0), overW(c1), overW(c2));
     finite = finite && isFinitePlane(plane);
@@ -91,9 +93,10 @@ VaryingPlanesT<T> makeVaryingPlanes(const std::array<WindowVertexT<T>, 3>& windo
 
 template <typename T>
 UvPlanesT<T> makeUvPlanes(const std::array<WindowVertexT<T>, 3>& window, const std::array<Vec2T<T>, 3>& uv,
-                          const TriangleSetup& setup) {
+                          const TriangleSetup& setup, Interpolation mode) {
   const std::array<std::array<T, 2>, 3> floats{{{uv[0].x, uv[0].y}, {uv[1].x, uv[1].y}, {uv[2].x, uv[2].y}}};
-  const VaryingPlanesT<T> planes = makeVaryingPlanes<T>(window, {floats[0].data(), floats[1].data(), floats[2].data()}, 2, setup);
+  const VaryingPlanesT<T> planes =
+      makeVaryingPlanes<T>(window, {floats[0].data(), floats[1].data(), floats[2].data()}, 2, setup, mode);
   return UvPlanesT<T>{planes.overW[0], planes.overW[1], planes.oneOverW};
 }
 
@@ -105,16 +108,17 @@ AttributePlaneT<T> makeDepthPlane(const std::array<WindowVertexT<T>, 3>& window,
 
 template <typename T>
 InterpolationSetupT<T> makeInterpolationSetup(const std::array<WindowVertexT<T>, 3>& window,
-                                              const std::array<Vec2T<T>, 3>& uv, const TriangleSetup& setup) {
+                                              const std::array<Vec2T<T>, 3>& uv, const TriangleSetup& setup,
+                                              Interpolation mode) {
   InterpolationSetupT<T> out;
-  out.uv = makeUvPlanes(window, uv, setup);
+  out.uv = makeUvPlanes(window, uv, setup, mode);
   out.depth = makeDepthPlane(window, setup);
   std::array<double, 3> x{}, y{};
   for (std::size_t i = 0; i < 3; ++i) {
     x[i] = window[i].x;
     y[i] = window[i].y;
     out.zWindow[i] = window[i].z;
-    out.invW[i] = window[i].invW;
+    out.invW[i] = attributeInvW(window[i], mode);
   }
   if (!barycentricPlanes(x, y, out)) {
     // A triangle can keep a snapped area while its float positions are collinear; the snapped
@@ -136,19 +140,22 @@ InterpolationSetupT<T> makeInterpolationSetup(const std::array<WindowVertexT<T>,
 // The two pipelines: float (matches GL) and double (the reference).
 template InterpolationSetupT<float> makeInterpolationSetup<float>(const std::array<WindowVertexT<float>, 3>&,
                                                                   const std::array<Vec2T<float>, 3>&,
-                                                                  const TriangleSetup&);
+                                                                  const TriangleSetup&, Interpolation);
 template InterpolationSetupT<double> makeInterpolationSetup<double>(const std::array<WindowVertexT<double>, 3>&,
                                                                     const std::array<Vec2T<double>, 3>&,
-                                                                    const TriangleSetup&);
+                                                                    const TriangleSetup&, Interpolation);
 template UvPlanesT<float> makeUvPlanes<float>(const std::array<WindowVertexT<float>, 3>&,
-                                              const std::array<Vec2T<float>, 3>&, const TriangleSetup&);
+                                              const std::array<Vec2T<float>, 3>&, const TriangleSetup&,
+                                              Interpolation);
 template UvPlanesT<double> makeUvPlanes<double>(const std::array<WindowVertexT<double>, 3>&,
-                                                const std::array<Vec2T<double>, 3>&, const TriangleSetup&);
+                                                const std::array<Vec2T<double>, 3>&, const TriangleSetup&,
+                                                Interpolation);
 template VaryingPlanesT<float> makeVaryingPlanes<float>(const std::array<WindowVertexT<float>, 3>&,
-                                                        const std::array<const float*, 3>&, int, const TriangleSetup&);
+                                                        const std::array<const float*, 3>&, int, const TriangleSetup&,
+                                                        Interpolation);
 template VaryingPlanesT<double> makeVaryingPlanes<double>(const std::array<WindowVertexT<double>, 3>&,
                                                           const std::array<const double*, 3>&, int,
-                                                          const TriangleSetup&);
+                                                          const TriangleSetup&, Interpolation);
 template AttributePlaneT<float> makeDepthPlane<float>(const std::array<WindowVertexT<float>, 3>&, const TriangleSetup&);
 template AttributePlaneT<double> makeDepthPlane<double>(const std::array<WindowVertexT<double>, 3>&,
                                                         const TriangleSetup&);

@@ -11,6 +11,10 @@
 //   z_win     = the window z plane (no 1/w), stored as llvmpipe's 24-bit depth buffer holds it
 // with one rounding per operation and the two fused multiply-adds llvmpipe's JIT code emits on
 // a CPU with FMA (every x86-64 CPU since 2013, every AArch64 one).
+// Affine interpolation (settings.interpolation, GLSL's noperspective) weighs every corner with
+// 1 in place of 1/w: the plane of a/w is then a's own plane and 1/w the constant 1, so the
+// divide changes nothing and the varying is linear on the screen, as llvmpipe draws it (the
+// clipper gives a cut vertex its varyings at the edge's screen-space t to match, clip.h).
 //
 // The screen-space barycentrics of the pixel centre and the perspective weights
 //   lambda_i  = screen-space barycentric of the pixel centre (px + 0.5, py + 0.5)
@@ -33,6 +37,13 @@
 #include <array>
 
 namespace twr {
+
+// The 1/w a corner's varyings are weighted by: its own 1/w_clip (perspective-correct) or 1 at
+// every corner (affine).
+template <typename T>
+T attributeInvW(const WindowVertexT<T>& corner, Interpolation mode) {
+  return mode == Interpolation::Affine ? T(1) : corner.invW;
+}
 
 // One attribute as a plane over pixel indices: a(px, py) = fma(dy, py, fma(dx, px, atOrigin))
 // (the pixel-centre offset folded into atOrigin).
@@ -97,7 +108,7 @@ template <typename T>
 struct InterpolationSetupT {
   std::array<double, 3> atOrigin{}, dx{}, dy{};
   std::array<T, 3> zWindow{};  // window depth of each corner
-  std::array<T, 3> invW{};     // 1 / w_clip of each corner
+  std::array<T, 3> invW{};     // each corner's attributeInvW (1 / w_clip, or 1 when affine)
   UvPlanesT<T> uv;             // the texture coordinate, as llvmpipe interpolates it
   // Window depth as llvmpipe interpolates it: its position.z plane, set up like uv's (no 1/w),
   // left non-finite where the float corners are collinear (llvmpipe's fragments then fail the
@@ -109,29 +120,32 @@ using InterpolationSetup = InterpolationSetupT<float>;
 // Corner i of `window` and of `uv` is vertex i of the triangle (before setup's reordering).
 template <typename T = float>
 InterpolationSetupT<T> makeInterpolationSetup(const std::array<WindowVertexT<T>, 3>& window,
-                                              const std::array<Vec2T<T>, 3>& uv, const TriangleSetup& setup);
+                                              const std::array<Vec2T<T>, 3>& uv, const TriangleSetup& setup,
+                                              Interpolation mode = Interpolation::Perspective);
 
 // The uv planes alone (part of makeInterpolationSetup), made as makeVaryingPlanes makes them.
 template <typename T>
 UvPlanesT<T> makeUvPlanes(const std::array<WindowVertexT<T>, 3>& window, const std::array<Vec2T<T>, 3>& uv,
-                          const TriangleSetup& setup);
+                          const TriangleSetup& setup, Interpolation mode = Interpolation::Perspective);
 
 // The planes of the first `count` varyings (the layout above) of vertices 0, 1, 2, whose floats
 // start at varyings[0], [1], [2] (corner i of `window` is vertex i, before setup's reordering).
 template <typename T>
 VaryingPlanesT<T> makeVaryingPlanes(const std::array<WindowVertexT<T>, 3>& window,
-                                    const std::array<const T*, 3>& varyings, int count, const TriangleSetup& setup);
+                                    const std::array<const T*, 3>& varyings, int count, const TriangleSetup& setup,
+                                    Interpolation mode = Interpolation::Perspective);
 // The same from the clip vertices (storeVaryings of each).
 template <typename T>
 VaryingPlanesT<T> makeVaryingPlanes(const std::array<WindowVertexT<T>, 3>& window, const ClipVertexT<T>& v0,
                                     const ClipVertexT<T>& v1, const ClipVertexT<T>& v2, bool tangentLighting,
-                                    int lightCount, const TriangleSetup& setup) {
+                                    int lightCount, const TriangleSetup& setup,
+                                    Interpolation mode = Interpolation::Perspective) {
   std::array<std::array<T, kMaxVaryings>, 3> floats{};
   const int count = varyingCount(tangentLighting, lightCount);
   storeVaryings(v0, tangentLighting, lightCount, floats[0].data());
   storeVaryings(v1, tangentLighting, lightCount, floats[1].data());
   storeVaryings(v2, tangentLighting, lightCount, floats[2].data());
-  return makeVaryingPlanes<T>(window, {floats[0].data(), floats[1].data(), floats[2].data()}, count, setup);
+  return makeVaryingPlanes<T>(window, {floats[0].data(), floats[1].data(), floats[2].data()}, count, setup, mode);
 }
 
 // The window depth plane alone (part of makeInterpolationSetup): all the visibility pass needs.

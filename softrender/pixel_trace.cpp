@@ -80,9 +80,11 @@ void traceTriangle(const DrawItem& item, std::size_t t, const VertexUniforms& ve
     visit.yFixed = setup.yFixed;
     for (std::size_t e = 0; e < 3; ++e) visit.edgeValue[e] = setup.edges[e].at(x, yGl);
     visit.frontFacing = setup.frontFacing;
-    const InterpolationSetup interpolation = makeInterpolationSetup(window, {a.uv, b.uv, c.uv}, setup);
+    const InterpolationSetup interpolation =
+        makeInterpolationSetup(window, {a.uv, b.uv, c.uv}, setup, settings.interpolation);
     visit.weights = pixelWeights(interpolation, x, yGl);
-    const VaryingPlanes varyings = makeVaryingPlanes(window, a, b, c, tangentLighting, shadeUniforms.lightCount, setup);
+    const VaryingPlanes varyings =
+        makeVaryingPlanes(window, a, b, c, tangentLighting, shadeUniforms.lightCount, setup, settings.interpolation);
     visit.fragment = interpolateFragment(varyings, x, yGl, visit.weights.depth);
     visit.varyings = varyings;
     if (shadeUniforms.needsQuadDifferences()) {
@@ -185,6 +187,7 @@ PixelTrace tracePixelVisits(const Scene& scene, const RenderSettings& requested,
   trace.height = height;
   trace.view = requested.view;
   trace.lightingSpace = settings.lightingSpace;
+  trace.interpolation = settings.interpolation;
 
   const Viewport viewport{width, height};
   const mat4 clipFromWorld = clipFromWorldFor(scene.camera, width, height);
@@ -212,7 +215,8 @@ PixelTrace tracePixelVisits(const Scene& scene, const RenderSettings& requested,
     ShadeUniforms shadeUniforms = makeShadeUniforms(*item.material, scene, settings);
     setShadowUniforms(shadeUniforms, trace.shadowMaps);
     const ShaderKey key = shaderKeyFor(shadeUniforms, settings);
-    const ClipConfig clipConfig = makeClipConfig(settings.clip, vertexUniforms.userClipPlaneCount, width, height);
+    const ClipConfig clipConfig =
+        makeClipConfig(settings.clip, vertexUniforms.userClipPlaneCount, width, height, settings.interpolation);
     for (std::size_t t = 0; t < item.mesh->triangleCount(); ++t) {
       traceTriangle(item, t, vertexUniforms, shadeUniforms, key, clipConfig, settings, viewport, x, trace.yGl, depth,
                     trace.visits);
@@ -304,7 +308,11 @@ std::string formatPixelTrace(const PixelTrace& tr) {
   o << "pixel (" << tr.x << ", " << tr.yTop << ") of " << tr.width << "x" << tr.height
     << " (x from the left, y from the top as in the image; GL window row " << tr.yGl << ", centre ("
     << tr.x + 0.5 << ", " << tr.yGl + 0.5 << "))\n";
-  o << "view " << toString(tr.view) << ", lighting space " << toString(tr.lightingSpace) << "\n";
+  o << "view " << toString(tr.view) << ", lighting space " << toString(tr.lightingSpace) << ", interpolation "
+    << toString(tr.interpolation)
+    << (tr.interpolation == Interpolation::Affine ? " (every corner's 1/w taken as 1: varyings linear on the screen)"
+                                                  : "")
+    << "\n";
   o << "final: rgba (" << int(tr.rgba[0]) << ", " << int(tr.rgba[1]) << ", " << int(tr.rgba[2]) << ", "
     << int(tr.rgba[3]) << "), depth " << fmt(tr.depth) << ", triangle "
     << (tr.triangleId == kNoTriangle ? std::string("none (background)") : std::to_string(tr.triangleId))
@@ -327,7 +335,10 @@ std::string formatPixelTrace(const PixelTrace& tr) {
     for (const ClipStep& step : v.clipSteps) {
       o << "    " << clipPlaneName(step.plane) << ": " << step.before.size() << " -> " << step.after.size()
         << " vertices";
-      for (const ClipCut& cut : step.cuts) o << "; cut edge (" << cut.nearer << ", " << cut.farther << ") at t " << cut.t;
+      for (const ClipCut& cut : step.cuts) {
+        o << "; cut edge (" << cut.nearer << ", " << cut.farther << ") at t " << cut.t;
+        if (tr.interpolation == Interpolation::Affine) o << ", varyings at its screen t " << cut.tVaryings + 0.0f;
+      }
       o << "\n";
     }
     if (v.planesCut != 0) {
@@ -411,6 +422,7 @@ nlohmann::json pixelTraceToJson(const PixelTrace& tr) {
   j["height"] = tr.height;
   j["view"] = std::string(toString(tr.view));
   j["lighting_space"] = std::string(toString(tr.lightingSpace));
+  j["interpolation"] = std::string(toString(tr.interpolation));
   j["final"] = {{"rgba", {tr.rgba[0], tr.rgba[1], tr.rgba[2], tr.rgba[3]}},
                 {"depth", tr.depth},
                 {"triangle", tr.triangleId == kNoTriangle ? json(nullptr) : json(tr.triangleId)},
@@ -436,7 +448,9 @@ nlohmann::json pixelTraceToJson(const PixelTrace& tr) {
     for (const ClipStep& step : v.clipSteps) {
       json after = json::array(), cuts = json::array();
       for (const vec4& p : step.after) after.push_back(toJson(p));
-      for (const ClipCut& cut : step.cuts) cuts.push_back({{"edge", {cut.nearer, cut.farther}}, {"t", cut.t}});
+      for (const ClipCut& cut : step.cuts) {
+        cuts.push_back({{"edge", {cut.nearer, cut.farther}}, {"t", cut.t}, {"t_varyings", cut.tVaryings}});
+      }
       steps.push_back({{"plane", clipPlaneName(step.plane)}, {"distances", step.distances}, {"polygon", after},
                        {"new_vertices", cuts}});
     }

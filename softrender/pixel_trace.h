@@ -70,6 +70,7 @@ struct PixelTrace {
   int width = 0, height = 0;
   View view = View::Shaded;
   LightingSpace lightingSpace = LightingSpace::World;
+  Interpolation interpolation = Interpolation::Perspective;
   std::vector<TriangleVisit> visits;
   // What the renderer wrote to the pixel.
   std::array<std::uint8_t, 4> rgba{};

@@ -188,11 +188,13 @@ class ReferenceRenderer final : public Renderer {
         s.shade = makeShadeUniforms<T>(*items[k].material, scene, settings);
         setShadowUniforms(s.shade, shadows);
         s.shaderKey = shaderKeyFor(s.shade, settings);
-        s.clip = makeClipConfig(settings.clip, vertexUniforms.userClipPlaneCount, width, height);
+        s.clip = makeClipConfig(settings.clip, vertexUniforms.userClipPlaneCount, width, height,
+                                 settings.interpolation);
         s.cull = settings.cull;
         s.frontFace = settings.frontFace;
         s.viewport = viewport;
         s.tangentLighting = vertexUniforms.tangentLighting;
+        s.interpolation = settings.interpolation;
       }
       target.colour.assign(pixelCount, background);
       target.depth.assign(pixelCount, static_cast<double>(kClearDepth));

@@ -235,6 +235,58 @@ TEST(Clip, GuardBandWithHugeWLeavesEveryCutVertexFinite) {
 // clipTriangleSteps replays clipTriangle's passes: one step per plane of the returned mask, in
 // plane order, each cutting the polygon the last one left, the last leaving clipTriangle's
 // polygon bit for bit; each vertex a plane made lies on the edge it names, at its t.
+// Affine (noperspective) varyings stay linear on the screen across the whole original triangle:
+// every vertex the clipper makes carries the uv that screen-space barycentrics over the original
+// corners give at its NDC position, while the perspective cut carries clip space's uv (the two
+// differ here because the corners' w differ by 4x).
+TEST(Clip, AffineCutVerticesKeepTheOriginalTrianglesScreenLinearVaryings) {
+  const ClipVertex a = at({-3.0f, -0.5f, 0, 1}, {0, 0}), b = at({2.0f, -0.5f, 0, 4}, {1, 0}),
+                   c = at({0.0f, 3.5f, 0, 2}, {0, 1});
+  const auto ndc = [](const vec4& p) { return vec2(p.x / p.w, p.y / p.w); };
+  const vec2 pa = ndc(a.posClip), pb = ndc(b.posClip), pc = ndc(c.posClip);
+  const auto screenLinearUv = [&](vec2 p) {
+    const float area = (pb.x - pa.x) * (pc.y - pa.y) - (pb.y - pa.y) * (pc.x - pa.x);
+    const float lb = ((p.x - pa.x) * (pc.y - pa.y) - (p.y - pa.y) * (pc.x - pa.x)) / area;
+    const float lc = ((pb.x - pa.x) * (p.y - pa.y) - (pb.y - pa.y) * (p.x - pa.x)) / area;
+    return (1 - lb - lc) * a.uv + lb * b.uv + lc * c.uv;
+  };
+  ClipPolygon affine, perspective, scratch;
+  const ClipConfig affineConfig = makeClipConfig(ClipSwitches{}, 0, 100, 100, Interpolation::Affine);
+  ASSERT_NE(clipTriangle(a, b, c, affineConfig, affine, scratch), 0u);
+  ASSERT_NE(clipTriangle(a, b, c, allPlanes(), perspective, scratch), 0u);
+  ASSERT_EQ(affine.count, perspective.count);
+  int cut = 0;
+  float largestPerspectiveError = 0.0f;
+  for (int i = 0; i < affine.count; ++i) {
+    const ClipVertex& v = affine.v[static_cast<std::size_t>(i)];
+    EXPECT_EQ(v.posClip, perspective.v[static_cast<std::size_t>(i)].posClip) << "the polygon does not move";
+    if (!v.fromClipper) continue;
+    ++cut;
+    const vec2 expected = screenLinearUv(ndc(v.posClip));
+    EXPECT_NEAR(v.uv.x, expected.x, 1e-5f) << i;
+    EXPECT_NEAR(v.uv.y, expected.y, 1e-5f) << i;
+    const vec2 other = perspective.v[static_cast<std::size_t>(i)].uv;
+    const float error = std::fabs(other.x - expected.x) + std::fabs(other.y - expected.y);
+    largestPerspectiveError = std::fmax(largestPerspectiveError, error);
+  }
+  EXPECT_GE(cut, 2);
+  EXPECT_GT(largestPerspectiveError, 0.05f) << "the perspective cut takes clip space's t";
+}
+
+TEST(Clip, ScreenLinearTFallsBackToYThenToClipSpacesT) {
+  const vec4 from{1, 0, 0, 1}, to{1, 4, 0, 2};  // equal x: the parameter comes from y / w
+  const vec4 cut = from + 0.5f * (to - from);    // (1, 2, 0, 1.5): NDC y 4/3 between 0 and 2
+  EXPECT_FLOAT_EQ(screenLinearT(from, to, cut, 0.5f), (2.0f / 1.5f) / 2.0f);
+  EXPECT_FLOAT_EQ(screenLinearT(from, from, from, 0.25f), 0.25f);
+  // On the right plane (x = w) both ends have NDC x 1 though their clip x differ: y again,
+  // where Mesa's clipper would divide 0 by 0.
+  const vec4 onRight{2, 4, 0, 2};
+  const vec4 cutOnRight = from + 0.5f * (onRight - from);  // (1.5, 2, 0, 1.5)
+  const float t = screenLinearT(from, onRight, cutOnRight, 0.5f);
+  EXPECT_TRUE(std::isfinite(t));
+  EXPECT_FLOAT_EQ(t, (2.0f / 1.5f) / 2.0f);
+}
+
 TEST(ClipSteps, ReplayTheClippersPassesPlaneByPlane) {
   const float r = 2.6f / std::sqrt(2.0f);
   const std::array<std::array<ClipVertex, 3>, 3> triangles = {{

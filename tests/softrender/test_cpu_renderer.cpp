@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -195,6 +196,31 @@ TEST(CpuRenderer, SidePlanesOffStillFillTheScreenOnce) {
   const RenderOutput out = render(scene, s);
   expectConsistentBuffers(out);
   EXPECT_EQ(coveredCount(out), static_cast<std::size_t>(64 * 48));
+}
+
+// Affine interpolation moves what the floor of the default scene shows (its checker and normal
+// map swim towards the far edge) but not where it is: the same pixels covered by the same
+// triangles at the same depths, since depth is z / w, linear on the screen either way.
+TEST(CpuRenderer, AffineInterpolationMovesTheFloorsTextureNotItsCoverage) {
+  const Scene scene = loadSceneFile(std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes/default.json");
+  RenderSettings affine = scene.settings;
+  affine.interpolation = Interpolation::Affine;
+  const RenderOutput a = render(scene, scene.settings, 160, 100);
+  const RenderOutput b = render(scene, affine, 160, 100);
+  EXPECT_EQ(a.triangleId, b.triangleId);
+  EXPECT_EQ(a.depth, b.depth);
+  std::size_t covered = 0, moved = 0;
+  constexpr int kVisibleLevels = 24;  // of 255: a change anyone sees side by side
+  for (std::size_t i = 0; i < a.triangleId.size(); ++i) {
+    if (a.triangleId[i] == kNoTriangle) continue;
+    ++covered;
+    int largest = 0;
+    for (std::size_t c = 0; c < 3; ++c) largest = std::max(largest, std::abs(a.rgba[4 * i + c] - b.rgba[4 * i + c]));
+    moved += largest > kVisibleLevels ? 1 : 0;
+  }
+  ASSERT_GT(covered, 0u);
+  EXPECT_GT(static_cast<double>(moved) / static_cast<double>(covered), 0.05)
+      << moved << " of " << covered << " covered pixels changed by more than " << kVisibleLevels << " levels";
 }
 
 TEST(CpuRenderer, LightAtTheSurface) {

@@ -76,6 +76,40 @@ TEST(Interpolate, VaryingsArePerspectiveCorrect) {
   EXPECT_NEAR(f.depth, 0.5f, 1e-6f);
 }
 
+// The same triangle with affine interpolation: the varying is linear on the screen (halfway
+// between the corners reads halfway between their values), the 1/w plane is exactly 1, so the
+// divide changes no bit, and the depth is the same z plane as perspective's.
+TEST(Interpolate, AffineVaryingsAreLinearOnTheScreen) {
+  const std::array<WindowVertex, 3> window{win(0.5f, 0.5f, 0.0f, 1.0f), win(10.5f, 0.5f, 1.0f, 0.5f),
+                                           win(0.5f, 10.5f, 0.0f, 1.0f)};
+  const TriangleSetup setup = triangleSetupFor(window);
+  const std::array<vec2, 3> uvs{vec2(0, 0), vec2(3, 0), vec2(0, 3)};
+  const InterpolationSetup perspective = makeInterpolationSetup(window, uvs, setup);
+  const InterpolationSetup affine = makeInterpolationSetup(window, uvs, setup, Interpolation::Affine);
+  const PixelWeights w = pixelWeights(affine, 5, 0);
+  EXPECT_NEAR(w.perspective[0], 0.5f, 1e-6f);  // the weights applied are the screen's
+  EXPECT_NEAR(w.perspective[1], 0.5f, 1e-6f);
+  EXPECT_EQ(w.depth, pixelWeights(perspective, 5, 0).depth);
+  ClipVertex v0, v1, v2;
+  v0.uv = uvs[0];
+  v1.uv = uvs[1];
+  v2.uv = uvs[2];
+  v1.posWorld = vec3(3, 0, 0);
+  const VaryingPlanes planes = makeVaryingPlanes(window, v0, v1, v2, false, 0, setup, Interpolation::Affine);
+  EXPECT_EQ(planes.oneOverW.atOrigin, 1.0f);
+  EXPECT_EQ(planes.oneOverW.dx, 0.0f);
+  EXPECT_EQ(planes.oneOverW.dy, 0.0f);
+  const Fragment f = interpolateFragment(planes, 5, 0, w.depth);
+  EXPECT_NEAR(f.uv.x, 1.5f, 1e-5f);  // 3 * 1/2, where perspective reads 1
+  EXPECT_NEAR(f.posWorld.x, 1.5f, 1e-5f);
+  // Bit for bit the plane's own value: no multiply by a w that is not 1.
+  const AttributePlaneT<float>& u = planes.overW[kVaryingUv];
+  EXPECT_EQ(f.uv.x, std::fma(u.dy, 0.0f, std::fma(u.dx, 5.0f, u.atOrigin)));
+  // And the uv the sampler's LOD is taken from comes from the same affine planes.
+  EXPECT_EQ(affine.uv.oneOverW.atOrigin, 1.0f);
+  EXPECT_NEAR(w.uv.x, 1.5f, 1e-5f);
+}
+
 TEST(Interpolate, DepthIsClampedToTheDepthRange) {
   // Window depths outside [0, 1] (near/far planes off, GL depth clamp) clamp per pixel.
   const InterpolationSetup s = setupFor({win(0.5f, 0.5f, -0.5f, 1), win(10.5f, 0.5f, 1.5f, 1), win(0.5f, 10.5f, -0.5f, 1)});
