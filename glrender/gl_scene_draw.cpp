@@ -352,6 +352,7 @@ std::vector<std::string> phongDefines(const Material& material, const RenderSett
   if (use.normalMap && hasUvTransform(material.normalMap)) defines.push_back("NORMAL_UV_TRANSFORM");
   if (hasUvTransform(material.specularMap)) defines.push_back("SPECULAR_UV_TRANSFORM");
   if (settings.lightingSpace == LightingSpace::Tangent) defines.push_back("LIGHTING_TANGENT");
+  if (settings.interpolation == Interpolation::Affine) defines.push_back("AFFINE_INTERPOLATION");
   if (use.heightMap) {
     defines.push_back("HAS_HEIGHT_MAP");
     if (use.method != SurfaceDetail::NormalMap) {

@@ -5,6 +5,15 @@
 // The prelude before this file defines MAX_LIGHTS, MAX_CLIP_PLANES, MIN_LENGTH_SQUARED and
 // MIN_ATTENUATION_DENOMINATOR from the C++ constants (glrender/gl_program.cpp).
 
+// How a triangle's varyings are interpolated (settings.interpolation, docs/pipeline.md):
+// AFFINE_INTERPOLATION spreads them linearly on the screen (noperspective, the C++ side's 1/w
+// taken as 1 at every corner), else perspective-correctly. Both stages qualify alike.
+#ifdef AFFINE_INTERPOLATION
+#define VARYING noperspective
+#else
+#define VARYING smooth
+#endif
+
 // The dot product summed in the C++ twins' order, (x x' + y y') + z z' (glm::dot, dot3 in
 // softrender/lane_math-inl.h). GLSL's dot() leaves the order to the compiler, and llvmpipe's
 // sums it another way: directions one ulp apart that part a screen-space march now and then.

@@ -4,7 +4,8 @@
 // lights, environment, shadow views, output), each a function here and one there; the table of
 // twins is docs/shading.md's.
 // Permutation defines: HAS_DIFFUSE_MAP, HAS_NORMAL_MAP, HAS_SPECULAR_MAP, LIGHTING_TANGENT
-// (else world lighting space), and exactly one VIEW_<NAME> (VIEW_SHADED ... VIEW_EYE_TANGENT).
+// (else world lighting space), AFFINE_INTERPOLATION (common.glsl's VARYING), and exactly one
+// VIEW_<NAME> (VIEW_SHADED ... VIEW_EYE_TANGENT).
 // Texture conventions, each set only for a material that needs it (so every other scene
 // compiles the program it always did): NORMAL_MAP_GREEN_DOWN (a Direct3D-style normal map:
 // green flipped), NORMAL_MAP_XY (a two-channel normal map, BC5: z rebuilt from x and y),
@@ -29,14 +30,14 @@
 // position to a sixth. The frame's lights and the light
 // loop are shaders/lighting.glsl's, included before this file.
 
-in vec3 posWorld;
-in vec3 nWorld;
-in vec3 tWorld;
-in vec3 bWorld;
-in vec2 uv;
+VARYING in vec3 posWorld;
+VARYING in vec3 nWorld;
+VARYING in vec3 tWorld;
+VARYING in vec3 bWorld;
+VARYING in vec2 uv;
 #ifdef LIGHTING_TANGENT
-in vec3 lightDirTangent[MAX_LIGHTS];
-in vec3 eyeDirTangent;
+VARYING in vec3 lightDirTangent[MAX_LIGHTS];
+VARYING in vec3 eyeDirTangent;
 #endif
 
 uniform vec3 ka;  // material reflectances

@@ -22,14 +22,14 @@ uniform int userClipPlaneCount;                // in [0, MAX_CLIP_PLANES]
 uniform vec4 frustumClipPlane;  // clip space: keeps dot(plane, gl_Position) >= 0
 uniform int firstUserClipSlot;  // 0, or 1 when slot 0 holds frustumClipPlane
 
-out vec3 posWorld;
-out vec3 nWorld;
-out vec3 tWorld;
-out vec3 bWorld;
-out vec2 uv;
+VARYING out vec3 posWorld;
+VARYING out vec3 nWorld;
+VARYING out vec3 tWorld;
+VARYING out vec3 bWorld;
+VARYING out vec2 uv;
 #ifdef LIGHTING_TANGENT
-out vec3 lightDirTangent[MAX_LIGHTS];
-out vec3 eyeDirTangent;
+VARYING out vec3 lightDirTangent[MAX_LIGHTS];
+VARYING out vec3 eyeDirTangent;
 #endif
 
 out float gl_ClipDistance[MAX_CLIP_PLANES];
