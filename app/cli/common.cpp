@@ -70,6 +70,10 @@ void addRenderOptions(CLI::App& cmd, RenderRequest& request) {
   cmd.add_option("--tangent-transform", request.tangentTransform,
                  "Override settings.tangent_transform: model|inverse_transpose")
       ->check(kNonEmpty);
+  cmd.add_option("--interpolation", request.interpolation,
+                 "Override settings.interpolation: perspective (perspective-correct, GLSL's default) or affine "
+                 "(linear on the screen, GLSL's noperspective: textures swim on a receding floor)")
+      ->check(kNonEmpty);
   cmd.add_option("--filter", request.textureFilter,
                  "Override settings.texture_filter: nearest|bilinear|trilinear|nearest_mipmap_nearest|"
                  "linear_mipmap_nearest|nearest_mipmap_linear")
@@ -88,7 +92,7 @@ void addRenderOptions(CLI::App& cmd, RenderRequest& request) {
 }
 
 std::vector<std::string> overrideArguments(const RenderRequest& r) {
-  const std::array<std::pair<const char*, const std::string*>, 10> named = {{
+  const std::array<std::pair<const char*, const std::string*>, 11> named = {{
       {"--view", &r.view},
       {"--pipeline", &r.pipeline},
       {"--gbuffer-position", &r.gbufferPosition},
@@ -96,6 +100,7 @@ std::vector<std::string> overrideArguments(const RenderRequest& r) {
       {"--front-face", &r.frontFace},
       {"--lighting-space", &r.lightingSpace},
       {"--tangent-transform", &r.tangentTransform},
+      {"--interpolation", &r.interpolation},
       {"--filter", &r.textureFilter},
       {"--ssr", &r.ssr},
       {"--ssr-march", &r.ssrMarch},
@@ -144,6 +149,7 @@ Scene loadRequestedScene(const RenderRequest& request) {
   applyOverride(request.pipeline, "--pipeline", s.pipeline, "forward|deferred");
   applyOverride(request.gbufferPosition, "--gbuffer-position", s.gbufferPosition, "stored|depth");
   applyOverride(request.tangentTransform, "--tangent-transform", s.tangentTransform, "model|inverse_transpose");
+  applyOverride(request.interpolation, "--interpolation", s.interpolation, "perspective|affine");
   applyOverride(request.textureFilter, "--filter", s.textureFilter,
                 "nearest|bilinear|trilinear|nearest_mipmap_nearest|linear_mipmap_nearest|nearest_mipmap_linear");
   if (!request.ssr.empty()) s.ssr.enabled = request.ssr == "on";

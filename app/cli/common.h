@@ -18,6 +18,7 @@ struct RenderRequest {
   std::optional<int> width, height;  // default: the scene's output size
   std::string view;                   // default: the scene's settings.view
   std::string cull, frontFace, lightingSpace, tangentTransform, textureFilter, pipeline, gbufferPosition;  // optional overrides
+  std::string interpolation;  // optional override of settings.interpolation
   // settings.ssr overrides: --ssr on|off, --ssr-march, --ssr-max-steps, --ssr-thickness.
   std::string ssr, ssrMarch;
   std::optional<int> ssrMaxSteps;

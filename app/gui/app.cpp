@@ -488,6 +488,7 @@ void GuiApp::frame(bool& finalFrame, bool present) {
     state["horizon_last_build"] = horizonLastBuild_;
     state["anisotropy"] = doc_.scene.settings.anisotropy;
     state["pipeline"] = std::string(toString(doc_.scene.settings.pipeline));
+    state["interpolation"] = std::string(toString(doc_.scene.settings.interpolation));
     state["gbuffer_position"] = std::string(toString(doc_.scene.settings.gbufferPosition));
     const SsrSettings& ssr = doc_.scene.settings.ssr;
     state["ssr"] = {{"enabled", ssr.enabled},       {"march", std::string(toString(ssr.march))},

@@ -25,6 +25,7 @@ constexpr GBufferPosition kGBufferPositions[] = {GBufferPosition::Stored, GBuffe
 // The marches drawn so far (dda_screen and hiz are named by the format, not drawn yet).
 constexpr SsrMarch kSsrMarches[] = {SsrMarch::LinearWorld, SsrMarch::AdaptiveWorld, SsrMarch::DdaScreen, SsrMarch::Hiz};
 constexpr float kSsrStepDragSpeed = 0.005f;  // world units per dragged point
+constexpr Interpolation kInterpolations[] = {Interpolation::Perspective, Interpolation::Affine};
 constexpr TangentTransform kTangentTransforms[] = {TangentTransform::Model, TangentTransform::InverseTranspose};
 constexpr const TextureFilter (&kTextureFilters)[6] = kAllTextureFilters;
 constexpr LineMode kLineModes[] = {LineMode::Core, LineMode::Immediate};
@@ -168,6 +169,12 @@ void GuiApp::drawRenderingTab() {
   changed |= enumRadio("Front face", settings.frontFace, kFrontFaces, labelWidth,
                        "Which winding on screen counts as front-facing: counter-clockwise (GL's default) or "
                        "clockwise (glFrontFace).");
+  changed |= enumRadio("Interpolation", settings.interpolation, kInterpolations, labelWidth,
+                       "How every varying spreads over a triangle. perspective: a/w and 1/w are linear on the "
+                       "screen and divided per pixel, so a texture stays put. affine: the varying itself is linear "
+                       "on the screen (GLSL's noperspective), and textures swim and bend on a receding floor "
+                       "(docs/pipeline.md).");
+  probe_.item("interpolation_affine");  // enumRadio's last button
 
   sectionTitle("Clipping");
   ImGui::TextUnformatted("Frustum planes");

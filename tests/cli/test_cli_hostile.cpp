@@ -67,7 +67,8 @@ TEST(CliHostile, EmptyOverrideValuesAreRefused) {
   const fs::path dir = fs::path(TWINRASTER_TEST_OUT) / "cli_hostile_empty_overrides";
   fs::create_directories(dir);
   const std::string scene = quoted(fs::path(TWINRASTER_SOURCE_DIR) / "assets/scenes/default.json");
-  for (const char* option : {"--view", "--cull", "--front-face", "--lighting-space", "--tangent-transform", "--filter"}) {
+  for (const char* option : {"--view", "--cull", "--front-face", "--lighting-space", "--tangent-transform", "--interpolation",
+                             "--filter"}) {
     const fs::path png = dir / "empty.png";
     fs::remove(png);
     const RunResult r = runCli("render " + scene + " " + option + " \"\" --out " + quoted(png), dir);

@@ -31,7 +31,7 @@ TEST(CliInfo, TextListingOfTheDefaultScene) {
   expectContains(r.out, "[1] position (-4, 3, -1)");
   expectContains(r.out, "camera: position (0.3, 1.7, 4.4), target (0, 0.5, 0), fov_deg 50");
   expectContains(r.out, "output: 640x480");
-  expectContains(r.out, "view shaded, pipeline forward, lighting_space world, tangent_transform model, texture_filter bilinear");
+  expectContains(r.out, "view shaded, pipeline forward, lighting_space world, tangent_transform model, texture_filter bilinear, interpolation perspective");
 }
 
 TEST(CliInfo, ObjPartsShowAsAChildTree) {

@@ -447,6 +447,63 @@ TEST(CliTrace, ShowsAnIndirectSamplesMarchOnBothRenderers) {
       << past.err;
 }
 
+// --interpolation affine on compare (the default scene and a real model, within the targets),
+// trace (the weights it applies are the screen's) and render (a bad value is refused by name).
+TEST(CliCompare, AffineInterpolationOnBothRenderersWithinTheTargets) {
+  const auto dir = testDir("cli_compare_affine");
+  for (const char* scene : {"default.json", "obj_model.json"}) {
+    const RunResult r = runCli("compare \"" + kSource + "/assets/scenes/" + scene + "\" --out-dir \"" +
+                                   (dir / scene).string() +
+                                   "\" --width 160 --height 120 --repeat 1 --interpolation affine --targets --json",
+                               dir);
+    EXPECT_EQ(r.exitCode, 0) << scene << ": " << r.err << r.out;
+  }
+  const RunResult trace =
+      runCli("trace \"" + kDefaultScene + "\" 80 110 --width 160 --height 120 --interpolation affine --json", dir);
+  ASSERT_EQ(trace.exitCode, 0) << trace.err;
+  const nlohmann::json j = nlohmann::json::parse(trace.out);
+  EXPECT_EQ(j["interpolation"], "affine");
+  ASSERT_FALSE(j["triangles"].empty()) << trace.out;
+  const nlohmann::json& visit = j["triangles"].back();
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(visit["perspective_weights"][i].get<double>(), visit["barycentrics"][i].get<double>(), 1e-6) << i;
+  }
+  EXPECT_NE(visit["window_xyz_invw"][0][3].get<double>(), 1.0) << "the window corner keeps its own 1/w";
+  const RunResult bad = runCli("render \"" + kDefaultScene + "\" -o \"" + (dir / "x.png").string() +
+                                   "\" --interpolation linear",
+                               dir);
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("--interpolation: expected one of perspective|affine, got 'linear'"), std::string::npos)
+      << bad.err;
+}
+
+// Mesa's draw clipper takes a cut vertex's noperspective varyings at a screen t it finds from
+// NDC x where the edge's clip x differ; an edge a side plane made has NDC x 1 at both ends, so
+// on uv_wrap's floor (cut by the right plane, then the bottom plane) it divides 0 by 0 and
+// llvmpipe fills those fans with NaN's colour, black. The CPU passes over that axis and draws
+// the floor's bricks. This test shows the defect; when it fails, Mesa is fixed and the scene
+// suite's affine cases can take these scenes back.
+TEST(CliCompare, AffineOnLlvmpipeLeavesNaNFansWhereACutEdgeLiesOnASidePlane) {
+  const auto dir = testDir("cli_compare_affine_nan");
+  const RunResult r = runCli("compare \"" + kSource + "/assets/scenes/uv_wrap.json\" --out-dir \"" +
+                                 (dir / "out").string() + "\" --repeat 1 --interpolation affine --targets",
+                             dir);
+  ASSERT_NE(r.exitCode, 2) << r.err;
+  EXPECT_EQ(r.exitCode, 1) << "llvmpipe's affine uv_wrap agrees with the CPU's: " << r.out << r.err;
+  const auto blackShare = [](const Image& image) {
+    std::size_t black = 0;
+    for (int y = 0; y < image.height; ++y) {
+      for (int x = 0; x < image.width; ++x) {
+        const std::uint8_t* p = image.pixel(x, y);
+        black += p[0] == 0 && p[1] == 0 && p[2] == 0 ? 1u : 0u;
+      }
+    }
+    return static_cast<double>(black) / (static_cast<double>(image.width) * image.height);
+  };
+  EXPECT_GT(blackShare(loadPng((dir / "out" / "gl.png").string())), 0.3) << "GL's NaN fans";
+  EXPECT_EQ(blackShare(loadPng((dir / "out" / "cpu.png").string())), 0.0) << "the CPU draws every fan";
+}
+
 TEST(CliTrace, TellsTheStoryOfACoveredPixel) {
   const auto dir = testDir("cli_trace");
   // (80, 119) of a 160x120 image is on the floor in front of the camera.

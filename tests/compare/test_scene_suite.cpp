@@ -26,7 +26,9 @@
 #include <fstream>
 #include <optional>
 #include <ostream>
+#include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace twr {
@@ -50,6 +52,7 @@ struct SuiteCase {
   std::optional<vec2> shadowBias;
   std::optional<int> shadowPcf;
   bool ssrOff = false;               // settings.ssr.enabled false (a reflecting scene drawn forward)
+  std::optional<Interpolation> interpolation;  // settings.interpolation instead of the scene's
   bool againstForward = true;        // a deferred case: each renderer's frame against its forward frame too
   std::string name;
 };
@@ -235,6 +238,39 @@ std::vector<SuiteCase> suiteCases() {
       }
     }
   }
+  // Every scene with affine interpolation (GLSL's noperspective): llvmpipe's linear planes
+  // against the CPU's planes with every 1/w taken as 1; the default scene with nearest texels
+  // too, which flip a whole texel on one ULP of uv. Not the scenes where a later plane cuts an
+  // edge an earlier side plane made: there Mesa's draw clipper divides 0 by 0 for the cut
+  // vertex's screen t and llvmpipe fills those fans with NaN's colour, black or white
+  // (docs/pipeline.md; CliCompare.AffineOnLlvmpipe... shows it, and fails once Mesa is fixed).
+  const std::set<std::string_view> llvmpipeAffineNaN = {
+      "inside_near.json", "uv_wrap.json", "filter_nearest.json", "stability_w_zero.json",
+      "height_grazing_mirrored.json", "env_mirror_sphere.json", "env_sphere_map.json", "env_dual_paraboloid.json",
+      "env_diffuse_light.json", "env_diffuse_light_sphere.json", "env_diffuse_light_dual_paraboloid.json",
+      "env_glossy.json", "env_glossy_sphere.json", "env_glossy_dual_paraboloid.json", "env_capture.json",
+      "env_capture_glossy.json", "light_directional.json", "light_directional_tangent.json",
+      "shadow_directional.json", "shadow_point_cube.json", "shadow_peter_panning.json", "shadow_spot.json",
+      "ssr_mirror_floor.json", "ssr_cave.json"};
+  for (const suite::SceneTolerance& row : suite::kSceneTolerances) {
+    if (kQuickSuite) break;
+    if (llvmpipeAffineNaN.count(row.scene) != 0) continue;
+    SuiteCase c;
+    c.scene = std::string(row.scene);
+    c.interpolation = Interpolation::Affine;
+    c.name = stem(c.scene) + "_affine";
+    cases.push_back(c);
+  }
+  {
+    SuiteCase c;
+    c.scene = "default.json";
+    c.interpolation = Interpolation::Affine;
+    c.filter = "nearest";
+    c.width = 1280;
+    c.height = 720;
+    c.name = "default_affine_nearest_1280x720";
+    cases.push_back(c);
+  }
   for (const char* cull : {"none", "back", "front"}) {
     for (const char* front : {"ccw", "cw"}) {
       SuiteCase c;
@@ -279,6 +315,7 @@ TEST_P(SceneSuite, CpuMatchesLlvmpipeWithinTolerance) {
     if (c.shadowPcf) light.shadow->pcf = *c.shadowPcf;
   }
   if (c.ssrOff) scene.settings.ssr.enabled = false;
+  if (c.interpolation) scene.settings.interpolation = *c.interpolation;
   if (c.ssrMarch) scene.settings.ssr.march = *c.ssrMarch;
   if (c.ssrIndirect) scene.settings.ssr.indirectSamples = *c.ssrIndirect;
   if (c.deferred) {

@@ -598,6 +598,26 @@ TEST(GuiScripted, TextureOptionEditsRedrawBothBackends) {
   EXPECT_EQ(app.quit(), 0) << app.err();
 }
 
+// The Interpolation switch in the Rendering tab: affine redraws both backends, which still agree
+// within the targets (that the picture changes is CpuRenderer.AffineInterpolation...'s).
+TEST(GuiScripted, AffineInterpolationRedrawsBothBackendsWithinTheTargets) {
+  REQUIRE_DISPLAY_AND_XDOTOOL();
+  GuiProcess app(testName(), {kDefaultScene, "--reset", "--view-mode", "side"});
+  app.window();
+  json s = app.waitSettled();
+  ASSERT_EQ(s["interpolation"], "perspective") << s.dump(1);
+  const long editBefore = s["edit"].get<long>();
+  app.click("tab_rendering");
+  app.click("interpolation_affine");
+  s = app.waitFor("affine, drawn by both backends and diffed", [&](const json& st) {
+    return st["interpolation"] == "affine" && st.value("settled", false) && st["diff_edit"] == st["edit"] &&
+           st["edit"].get<long>() > editBefore && st.contains("diff");
+  });
+  EXPECT_LE(s["diff"]["max_abs_diff"].get<int>(), 3) << s.dump(1);
+  EXPECT_FALSE(s.contains("panel_faults")) << s.dump(1);
+  EXPECT_EQ(app.quit(), 0) << app.err();
+}
+
 // Issue 17: the environment's keys are live controls. On the mirror-sphere scene the chrome
 // material's reflectivity is typed, fresnel switched to schlick, refraction turned on, and the
 // sky box turned off; after each edit both backends draw it and agree within the targets (the
