@@ -39,21 +39,6 @@ td.l{text-align:left;white-space:normal;max-width:300px}th.l{text-align:left}.wr
 
 std::string_view pageStyleSheet() { return kStyle; }
 
-std::string escapeHtml(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
 std::string pageHead(std::string_view title) {
   std::string s = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>";
   s += escapeHtml(title);

@@ -3,6 +3,8 @@
 // The pages are self-contained: the style goes inline, nothing is fetched from a network.
 #pragma once
 
+#include "scene/html_text.h"  // escapeHtml
+
 #include <string>
 #include <string_view>
 
@@ -10,9 +12,6 @@ namespace twr {
 
 // The stylesheet, for a <style> element.
 std::string_view pageStyleSheet();
-
-// `text` with &, <, > and " escaped, for element text and quoted attribute values.
-std::string escapeHtml(std::string_view text);
 
 // The page's head up to and including <body>: charset, title (escaped) and the stylesheet.
 std::string pageHead(std::string_view title);

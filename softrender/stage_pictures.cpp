@@ -1,6 +1,7 @@
 #include "softrender/stage_pictures.h"
 
 #include "scene/errors.h"
+#include "scene/html_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -170,17 +171,6 @@ void writeText(const std::filesystem::path& path, const std::string& text) {
   if (!out) throw InputError(path.string() + ": cannot write");
 }
 
-std::string escapeText(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else out += c;
-  }
-  return out;
-}
-
 std::string indexHtml(const PixelTrace& trace, const TriangleVisit& visit, const std::vector<StagePicture>& pictures) {
   std::ostringstream s;
   s << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Pixel (" << trace.x << ", "
@@ -188,12 +178,12 @@ std::string indexHtml(const PixelTrace& trace, const TriangleVisit& visit, const
        "margin:24px auto;padding:0 18px;color:#1d1d24}figure{margin:18px 0}figcaption{color:#444;font-size:14px}"
        "img{border:1px solid #ddd;max-width:100%}</style></head><body>\n";
   s << "<h1>Pixel (" << trace.x << ", " << trace.yTop << ") through the pipeline</h1>\n<p>Triangle "
-    << visit.triangleId << " (" << escapeText(visit.nodeName) << ", triangle " << visit.triangleInMesh
+    << visit.triangleId << " (" << escapeHtml(visit.nodeName) << ", triangle " << visit.triangleInMesh
     << " of its mesh): " << toString(visit.outcome) << ". Every number is the pixel trace's (`twinraster trace "
     << "--json`), on a " << trace.width << " x " << trace.height << " frame.</p>\n";
   for (const StagePicture& p : pictures) {
     s << "<figure><h2>" << p.title << "</h2><img src=\"" << p.file << "\" alt=\"" << p.title << "\"><figcaption>"
-      << escapeText(p.caption) << "</figcaption></figure>\n";
+      << escapeHtml(p.caption) << "</figcaption></figure>\n";
   }
   s << "</body></html>\n";
   return s.str();

@@ -8,33 +8,18 @@
 // is missing (the gtest wrapper decides whether that skips or fails).
 import fs from 'node:fs';
 import path from 'node:path';
+import { collectErrors, launchChromium, makeChecks } from './browser_check.mjs';
 
 const [dir, tracePath, screenshot] = process.argv.slice(2);
-const chromiumPath = process.env.TWINRASTER_CHROMIUM || '/usr/bin/chromium';
-let chromium;
-try {
-  ({ chromium } = await import('playwright-core'));
-} catch (err) {
-  console.log('missing: playwright-core (npm ci in tests/browser; scripts/install-deps.sh does it): ' + err.message);
-  process.exit(77);
-}
-if (!fs.existsSync(chromiumPath)) {
-  console.log('missing: ' + chromiumPath + ' (Debian package chromium)');
-  process.exit(77);
-}
 
 const metrics = JSON.parse(fs.readFileSync(path.join(dir, 'metrics.json'), 'utf8'));
 const trace = JSON.parse(fs.readFileSync(tracePath, 'utf8'));
-const failures = [];
-const check = (ok, what) => { if (!ok) failures.push(what); console.log((ok ? 'ok   ' : 'FAIL ') + what); };
+const { check, exitStatus } = makeChecks();
 
-const browser = await chromium.launch({ executablePath: chromiumPath, headless: true, args: ['--no-sandbox'] });
+const browser = await launchChromium();
 try {
   const page = await browser.newPage({ viewport: { width: 1280, height: 1000 } });
-  const errors = [];
-  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
-  page.on('pageerror', (e) => errors.push(String(e)));
-  page.on('requestfailed', (r) => errors.push('request failed: ' + r.url()));
+  const errors = collectErrors(page);
   await page.goto('file://' + path.resolve(dir, 'index.html'));
   await page.waitForSelector('body[data-pixels=ready]', { timeout: 30000 });
 
@@ -112,4 +97,4 @@ try {
 } finally {
   await browser.close();
 }
-process.exit(failures.length === 0 ? 0 : 1);
+process.exit(exitStatus());

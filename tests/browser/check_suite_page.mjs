@@ -8,32 +8,17 @@
 // is missing (the gtest wrapper decides whether that skips or fails).
 import fs from 'node:fs';
 import path from 'node:path';
+import { collectErrors, launchChromium, makeChecks } from './browser_check.mjs';
 
 const [dir, screenshot] = process.argv.slice(2);
-const chromiumPath = process.env.TWINRASTER_CHROMIUM || '/usr/bin/chromium';
-let chromium;
-try {
-  ({ chromium } = await import('playwright-core'));
-} catch (err) {
-  console.log('missing: playwright-core (npm ci in tests/browser; scripts/install-deps.sh does it): ' + err.message);
-  process.exit(77);
-}
-if (!fs.existsSync(chromiumPath)) {
-  console.log('missing: ' + chromiumPath + ' (Debian package chromium)');
-  process.exit(77);
-}
 
 const suite = JSON.parse(fs.readFileSync(path.join(dir, 'suite.json'), 'utf8'));
-const failures = [];
-const check = (ok, what) => { if (!ok) failures.push(what); console.log((ok ? 'ok   ' : 'FAIL ') + what); };
+const { check, exitStatus } = makeChecks();
 
-const browser = await chromium.launch({ executablePath: chromiumPath, headless: true, args: ['--no-sandbox'] });
+const browser = await launchChromium();
 try {
   const page = await browser.newPage({ viewport: { width: 1280, height: 900 } });
-  const errors = [];
-  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
-  page.on('pageerror', (e) => errors.push(String(e)));
-  page.on('requestfailed', (r) => errors.push('request failed: ' + r.url()));
+  const errors = collectErrors(page);
   await page.goto('file://' + path.resolve(dir, 'index.html'));
 
   // A row per scene, in suite.json's order, with its verdict.
@@ -84,4 +69,4 @@ try {
 } finally {
   await browser.close();
 }
-process.exit(failures.length === 0 ? 0 : 1);
+process.exit(exitStatus());
