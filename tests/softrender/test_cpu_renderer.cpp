@@ -198,7 +198,7 @@ TEST(CpuRenderer, SidePlanesOffStillFillTheScreenOnce) {
   EXPECT_EQ(coveredCount(out), static_cast<std::size_t>(64 * 48));
 }
 
-// Affine interpolation moves what the floor of the default scene shows (its checker and normal
+// Affine interpolation moves what the floor of the default scene shows (its bricks and normal
 // map swim towards the far edge) but not where it is: the same pixels covered by the same
 // triangles at the same depths, since depth is z / w, linear on the screen either way.
 TEST(CpuRenderer, AffineInterpolationMovesTheFloorsTextureNotItsCoverage) {
