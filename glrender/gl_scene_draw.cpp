@@ -85,7 +85,8 @@ void bindEnvironment(GlUploadCache& uploads, const Environment& environment) {
   }
 }
 
-// An environment view's defines (environment_map.glsl), none for other views.
+// An environment, shadow or Phong-term view's defines (environment_map.glsl, shadow.glsl,
+// phong.frag), none for other views.
 std::vector<std::string> environmentViewDefines(View view) {
   switch (view) {
     case View::ReflectDir: return {"ENVIRONMENT_VIEW", "ENVIRONMENT_VIEW_REFLECT_DIR"};
@@ -93,6 +94,9 @@ std::vector<std::string> environmentViewDefines(View view) {
     case View::EnvLod: return {"ENVIRONMENT_VIEW", "ENVIRONMENT_VIEW_LOD"};
     case View::Shadow: return {"SHADOW_VIEW_SHADOW"};
     case View::LightDepth: return {"SHADOW_VIEW_LIGHT_DEPTH"};
+    case View::Ambient: return {"PHONG_TERM_VIEW", "PHONG_TERM_VIEW_AMBIENT"};
+    case View::Diffuse: return {"PHONG_TERM_VIEW", "PHONG_TERM_VIEW_DIFFUSE"};
+    case View::Specular: return {"PHONG_TERM_VIEW", "PHONG_TERM_VIEW_SPECULAR"};
     default: return {};
   }
 }
@@ -132,10 +136,11 @@ void checkIndices(const Mesh& mesh, const std::string& nodeName) {
 
 std::string viewDefine(View view) {
   // mip_level is drawn as albedo of stand-in textures (scene/mip_level_view.h).
-  // The environment views are the shaded program with ENVIRONMENT_VIEW (environmentViewDefines).
-  std::string name(toString(view == View::MipLevel                                ? View::Albedo
-                            : isEnvironmentView(view) || isShadowView(view) || isSsrView(view) ? View::Shaded
-                                                                            : view));
+  // The environment, shadow and term views are the shaded program with their defines
+  // (environmentViewDefines).
+  std::string name(toString(view == View::MipLevel                       ? View::Albedo
+                            : isShadedView(view) || isSsrView(view) ? View::Shaded
+                                                                     : view));
   std::transform(name.begin(), name.end(), name.begin(),
                  [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
   return "VIEW_" + name;

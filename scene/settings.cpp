@@ -13,7 +13,7 @@ using NameTable = std::array<std::pair<E, std::string_view>, N>;
 
 constexpr NameTable<CullMode, 3> kCull{{{CullMode::None, "none"}, {CullMode::Back, "back"}, {CullMode::Front, "front"}}};
 constexpr NameTable<FrontFace, 2> kFront{{{FrontFace::Ccw, "ccw"}, {FrontFace::Cw, "cw"}}};
-constexpr NameTable<View, 24> kView{{{View::Shaded, "shaded"},
+constexpr NameTable<View, 27> kView{{{View::Shaded, "shaded"},
                                      {View::Albedo, "albedo"},
                                      {View::Normal, "normal"},
                                      {View::Tangent, "tangent"},
@@ -36,7 +36,10 @@ constexpr NameTable<View, 24> kView{{{View::Shaded, "shaded"},
                                      {View::SsrHit, "ssr_hit"},
                                      {View::SsrSteps, "ssr_steps"},
                                      {View::SsrUv, "ssr_uv"},
-                                     {View::HizLevel, "hiz_level"}}};
+                                     {View::HizLevel, "hiz_level"},
+                                     {View::Ambient, "ambient"},
+                                     {View::Diffuse, "diffuse"},
+                                     {View::Specular, "specular"}}};
 constexpr NameTable<LightingSpace, 2> kSpace{{{LightingSpace::World, "world"}, {LightingSpace::Tangent, "tangent"}}};
 constexpr NameTable<Pipeline, 2> kPipeline{{{Pipeline::Forward, "forward"}, {Pipeline::Deferred, "deferred"}}};
 constexpr NameTable<GBufferPosition, 2> kGBufferPosition{

@@ -14,10 +14,11 @@ enum class FrontFace { Ccw, Cw };
 // MipLevel: which mip level the sampler reads, as colours (scene/mip_level_view.h); both
 // renderers draw it as the albedo of a stand-in texture, so no shader has a case for it.
 // Height, ParallaxOffset, ParallaxSteps, SelfShadow: the height-field views (docs/parallax.md).
+// Ambient, Diffuse, Specular: Phong's terms one at a time (isPhongTermView).
 enum class View {
   Shaded, Albedo, Normal, Tangent, Bitangent, MappedNormal, Uv, Depth, LightTangent, EyeTangent, MipLevel,
   Height, ParallaxOffset, ParallaxSteps, SelfShadow, ReflectDir, EnvFace, EnvLod, Shadow, LightDepth,
-  SsrHit, SsrSteps, SsrUv, HizLevel
+  SsrHit, SsrSteps, SsrUv, HizLevel, Ambient, Diffuse, Specular
 };
 // Whether the view shows a height-field quantity (drawn only where a material has a height map).
 constexpr bool isHeightView(View v) {
@@ -43,8 +44,16 @@ constexpr bool isShadowView(View v) { return v == View::Shadow || v == View::Lig
 constexpr bool isSsrView(View v) {
   return v == View::SsrHit || v == View::SsrSteps || v == View::SsrUv || v == View::HizLevel;
 }
+// Whether the view shows one of Phong's terms alone (docs/shading.md): ambient (ka albedo Ia),
+// diffuse or specular, each summed over the lights with their attenuation and shadows, in place
+// of the colour; no environment and no sky. Drawn by the shaded permutation like the shadow views.
+constexpr bool isPhongTermView(View v) { return v == View::Ambient || v == View::Diffuse || v == View::Specular; }
 // Whether the view is drawn by the shaded permutation (the lights, the environment, the sky).
-constexpr bool isShadedView(View v) { return v == View::Shaded || isEnvironmentView(v) || isShadowView(v); }
+constexpr bool isShadedView(View v) {
+  return v == View::Shaded || isEnvironmentView(v) || isShadowView(v) || isPhongTermView(v);
+}
+// Whether the view draws the sky box behind the surfaces (the shaded and environment views).
+constexpr bool viewDrawsSky(View v) { return isShadedView(v) && !isShadowView(v) && !isPhongTermView(v); }
 
 // How a material's surface detail is drawn (docs/parallax.md). NormalMap: the normal map alone
 // (today's behaviour). The others read the height map: two bump methods that change the lighting
@@ -251,7 +260,8 @@ inline constexpr View kAllViews[] = {View::Shaded, View::Albedo, View::Normal, V
                                      View::MappedNormal, View::Uv, View::Depth, View::LightTangent,
                                      View::EyeTangent, View::MipLevel, View::Height, View::ParallaxOffset,
                                      View::ParallaxSteps, View::SelfShadow, View::ReflectDir, View::EnvFace,
-                                     View::EnvLod, View::Shadow, View::LightDepth};
+                                     View::EnvLod, View::Shadow, View::LightDepth, View::Ambient, View::Diffuse,
+                                     View::Specular};
 // The reflection pass's views (isSsrView), drawn over the whole frame, never one fragment alone.
 inline constexpr View kSsrViews[] = {View::SsrHit, View::SsrSteps, View::SsrUv, View::HizLevel};
 

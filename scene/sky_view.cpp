@@ -7,13 +7,13 @@
 namespace twr {
 
 bool drawsSky(const Scene& scene, const RenderSettings& settings) {
-  return scene.environment && scene.environment->background && scene.environment->cube && isShadedView(settings.view) && !isShadowView(settings.view);
+  return scene.environment && scene.environment->background && scene.environment->cube && viewDrawsSky(settings.view);
 }
 
 template <typename T>
 SkyUniformsT<T> makeSkyUniforms(const Scene& scene, int width, int height, View view) {
   SkyUniformsT<T> sky;
-  if (!scene.environment || !scene.environment->background || !scene.environment->cube || !isShadedView(view) || isShadowView(view)) return sky;
+  if (!scene.environment || !scene.environment->background || !scene.environment->cube || !viewDrawsSky(view)) return sky;
   sky.view = view;
   sky.cube = scene.environment->cube.get();
   sky.layers = scene.environment->layers.get();

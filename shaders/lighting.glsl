@@ -37,6 +37,10 @@ struct LightSum {
   float firstShadowCosine;
   bool haveShadowTest;
 #endif
+#ifdef PHONG_TERM_VIEW
+  vec3 diffuseSum;   // sum_i diffuse If shadow, the diffuse view's value
+  vec3 specularSum;  // sum_i specular If shadow, the specular view's
+#endif
 };
 
 // If = 1 / max(A_C + A_L d + A_Q d^2, MIN_ATTENUATION_DENOMINATOR), evaluated left to right as
@@ -94,6 +98,10 @@ LightSum lightSum(vec3 posWorld, vec3 n, vec3 t, vec3 b, vec3 nl, vec3 kdAlbedo,
   result.firstShadowCosine = 0.0;
   result.haveShadowTest = false;
 #endif
+#ifdef PHONG_TERM_VIEW
+  result.diffuseSum = vec3(0.0);
+  result.specularSum = vec3(0.0);
+#endif
   for (int i = 0; i < lightCount; ++i) {
 #ifdef LIGHTING_TANGENT
     vec3 lVec = lightDirs[i];
@@ -142,6 +150,10 @@ LightSum lightSum(vec3 posWorld, vec3 n, vec3 t, vec3 b, vec3 nl, vec3 kdAlbedo,
     } else {
       result.sum += (diffuse + specular) * falloff;
     }
+#endif
+#ifdef PHONG_TERM_VIEW
+    result.diffuseSum += (diffuse * falloff) * shadow;
+    result.specularSum += (specular * falloff) * shadow;
 #endif
   }
   return result;

@@ -25,6 +25,8 @@
 // NO_TRIANGLE_ID: no triangle-id output, as an OpenGL user's shader has none (the lean
 // frame, glrender/gl_renderer.h; llvmpipe pays for gl_PrimitiveID even when no draw buffer
 // takes the output).
+// Phong's terms alone (with VIEW_SHADED): PHONG_TERM_VIEW and one of PHONG_TERM_VIEW_AMBIENT,
+// PHONG_TERM_VIEW_DIFFUSE, PHONG_TERM_VIEW_SPECULAR.
 // GBUFFER_PASS (with VIEW_SHADED): the deferred pipeline's G-buffer pass, the surface written
 // to five targets instead of the colour (docs/deferred.md); GBUFFER_POSITION: and the world
 // position to a sixth. The frame's lights and the light
@@ -320,6 +322,20 @@ void gbufferFragment(SurfaceFrame s, vec3 kdAlbedo, vec3 ksSpec, vec3 unlit, vec
 }
 #endif
 
+#ifdef PHONG_TERM_VIEW
+// A Phong-term view's colour (C++: phongTermColourLanes): the ambient term, or the lights'
+// diffuse or specular terms summed (lighting.glsl), alpha 1.
+vec4 phongTermColour(vec3 ambientTerm, LightSum lit) {
+#if defined(PHONG_TERM_VIEW_AMBIENT)
+  return vec4(ambientTerm, 1.0);
+#elif defined(PHONG_TERM_VIEW_DIFFUSE)
+  return vec4(lit.diffuseSum, 1.0);
+#else
+  return vec4(lit.specularSum, 1.0);
+#endif
+}
+#endif
+
 // The shaded view (C++: shadeFragmentLanes' View::Shaded branch): unlit terms, the lights, the
 // environment and the shadow views; the G-buffer pass writes its targets instead.
 vec4 shadedColour(SurfaceFrame s, MaterialTexels m) {
@@ -332,6 +348,9 @@ vec4 shadedColour(SurfaceFrame s, MaterialTexels m) {
   colour = vec4(unlit + lit.sum, 1.0);
   colour = environmentStep(s, colour);
   colour = shadowViewStep(lit, colour);
+#ifdef PHONG_TERM_VIEW
+  colour = phongTermColour(ka * m.albedo * ambient, lit);  // unlitTerms' ambient term
+#endif
 #endif
 #ifdef GBUFFER_PASS
   gbufferFragment(s, kdAlbedo, ksSpec, unlit, colour);

@@ -278,6 +278,9 @@ struct LightSumL {
   ShadowTestL<L> firstShadowTest;  // the first shadowed light's test, for the shadow views
   L firstShadowCosine;
   bool haveShadowTest;
+  // The Phong-term views' sums (isPhongTermView), each term as `sum` weighs it: kept only
+  // in those views, a uniform branch per light.
+  Vec3L<L> diffuseSum, specularSum;
 };
 template <typename Features, typename L, typename Maps, typename Shininess, typename Terms>
 TWR_LANE_INLINE LightSumL<L> lightSumLanes(const FragmentL<L>* f, const ShadeUniformsT<ScalarOf<L>>& u, const Maps& maps,
@@ -292,7 +295,9 @@ TWR_LANE_INLINE LightSumL<L> lightSumLanes(const FragmentL<L>* f, const ShadeUni
   const Vec3L<L>& nl = frame.nl;
   const bool emboss = Features::kHasHeightMap && u.surfaceDetail == SurfaceDetail::BumpEmboss;
   const bool selfShadowOn = Features::kHasHeightMap && u.selfShadow != SelfShadow::None;
-  LightSumL<L> out{Vec3L<L>(zero), ShadowTestL<L>{one, zero, zero, one, zero, zero, zero, zero, zero, zero}, zero, false};
+  const bool termSums = isPhongTermView(u.shadedView);
+  LightSumL<L> out{Vec3L<L>(zero), ShadowTestL<L>{one, zero, zero, one, zero, zero, zero, zero, zero, zero}, zero, false,
+                   Vec3L<L>(zero), Vec3L<L>(zero)};
   for (int i = 0; i < u.lightCount; ++i) {
     const LightUniformT<S>& light = u.lights[static_cast<std::size_t>(i)];
     const Vec3L<L> toLight = toLightLanes<L>(light, posWorld);
@@ -356,6 +361,10 @@ TWR_LANE_INLINE LightSumL<L> lightSumLanes(const FragmentL<L>* f, const ShadeUni
     } else {
       out.sum += (diffuse + specular) * attenuation;
     }
+    if (termSums) {
+      out.diffuseSum += (diffuse * attenuation) * shadow;
+      out.specularSum += (specular * attenuation) * shadow;
+    }
     if constexpr (kTrace) {
       if (terms) {
         auto& lt = terms->lights[static_cast<std::size_t>(i)];
@@ -406,6 +415,16 @@ TWR_LANE_INLINE UnlitTermsL<L> unlitTermsLanes(const ShadeUniformsT<ScalarOf<L>>
     out.unlit = out.unlit + kdAlbedo * out.environmentDiffuse;
   }
   return out;
+}
+
+// A Phong-term view's colour (isPhongTermView): the ambient term, or the lights' diffuse or
+// specular terms summed, alpha 1. GLSL: phong.frag's phongTermColour.
+template <typename L>
+TWR_LANE_INLINE Vec4L<L> phongTermColourLanes(View view, const Vec3L<L>& ambientTerm, const LightSumL<L>& lit) {
+  const L one(ScalarOf<L>(1));
+  if (view == View::Ambient) return Vec4L<L>(ambientTerm, one);
+  if (view == View::Diffuse) return Vec4L<L>(lit.diffuseSum, one);
+  return Vec4L<L>(lit.specularSum, one);
 }
 
 // Shades one fragment per lane with the permutation `Features` (shade.h's ShaderFeatures).
@@ -468,6 +487,8 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
     if constexpr (kTrace) {
       if (terms) {
         terms->ambient = ambient;
+        terms->diffuseSum = lit.diffuseSum;
+        terms->specularSum = lit.specularSum;
         terms->lightCount = u.lightCount;
       }
     }
@@ -502,7 +523,9 @@ TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUn
         }
       }
     }
-    if (isShadowView(u.shadedView)) {
+    if (isPhongTermView(u.shadedView)) {
+      colour = (phongTermColourLanes<L>)(u.shadedView, ambient, lit);
+    } else if (isShadowView(u.shadedView)) {
       // The shadow views (shadow-inl.h): the first shadowed light's test, or dimmed without one.
       if (!lit.haveShadowTest) {
         colour = (dimmedColourLanes<L>)(colour);

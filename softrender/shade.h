@@ -86,8 +86,8 @@ struct ShadeUniformsT {
   // (it adds a few reads per fragment, not a loop, and doubling every kernel doubles the
   // fast path's build); environment.cube is null when the material does not use one.
   EnvironmentUniformsT<T> environment;
-  // Shaded, or the environment view the shaded permutation draws instead of the colour
-  // (isEnvironmentView; environment_view-inl.h): a runtime branch, not more kernels.
+  // Shaded, or the environment, shadow or Phong-term view the shaded permutation draws instead
+  // of the colour (isShadedView; environment_view-inl.h): a runtime branch, not more kernels.
   View shadedView = View::Shaded;
   Vec3T<T> ambient{T(0)};  // Ia
   std::array<LightUniformT<T>, kMaxLights> lights{};
@@ -139,6 +139,9 @@ struct ShadeTermsT {
   T height = T(1);                     // the height there (1 without a height map)
   T parallaxSteps = T(0);              // layers marched
   Vec3T<T> ambient{T(0)};              // ka albedo Ia
+  // The lights' diffuse and specular terms summed with their If and shadows: the Phong-term
+  // views' values (0 in any other view, where the light loop does not keep them).
+  Vec3T<T> diffuseSum{T(0)}, specularSum{T(0)};
   std::array<LightTermsT<T>, kMaxLights> lights{};
   // The environment (when the material uses one): the directions read in world space (0 when
   // not read), what each gave, the reflected share and the Phong colour it was mixed into.
@@ -241,7 +244,10 @@ inline ShaderKey canonicalShaderKey(ShaderKey key) {
     case View::SsrSteps:
     case View::SsrUv:
     case View::HizLevel:
-      // The environment and shadow views share the shaded permutation; the reflection views
+    case View::Ambient:
+    case View::Diffuse:
+    case View::Specular:
+      // The environment, shadow and Phong-term views share the shaded permutation; the reflection views
       // draw a shaded frame the reflection pass then writes over.
       key.view = View::Shaded;
       break;
@@ -350,6 +356,9 @@ void withShaderFeatures(const ShaderKey& keyIn, Body&& body) {
     case View::SsrSteps:
     case View::SsrUv:
     case View::HizLevel:
+    case View::Ambient:  // the term in place of the colour (isPhongTermView)
+    case View::Diffuse:
+    case View::Specular:
       withAll.template operator()<View::Shaded>();
       break;
   }

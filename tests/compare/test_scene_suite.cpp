@@ -73,6 +73,14 @@ const BiasCase kSweptBiases[] = {{"bias_0", vec2(0.0f)}, {"bias_0.0005", vec2(0.
 std::vector<SuiteCase> suiteCases() {
   std::vector<SuiteCase> cases;
   auto stem = [](const std::string& scene) { return scene.substr(0, scene.find('.')); };
+  auto viewCase = [&stem](const char* scene, View view) {
+    SuiteCase c;
+    c.scene = scene;
+    c.view = view;
+    c.overrideView = true;
+    c.name = stem(scene) + "_view_" + std::string(toString(view));
+    return c;
+  };
   for (const suite::SceneTolerance& row : suite::kSceneTolerances) {
     SuiteCase c;
     c.scene = std::string(row.scene);
@@ -83,12 +91,7 @@ std::vector<SuiteCase> suiteCases() {
     for (View view : kAllViews) {
       if (view == View::Shaded) continue;
       if (kQuickSuite && std::string(scene) != "default.json") continue;
-      SuiteCase c;
-      c.scene = scene;
-      c.view = view;
-      c.overrideView = true;
-      c.name = stem(scene) + "_view_" + std::string(toString(view));
-      cases.push_back(c);
+      cases.push_back(viewCase(scene, view));
     }
   }
   // Every scene again with every other filter (most scenes' own is bilinear): texel choice,
@@ -201,12 +204,15 @@ std::vector<SuiteCase> suiteCases() {
   // The shadow views on the shadowed scenes (the default scene shows them dimmed: no shadow).
   for (const char* scene : {"shadow_directional.json", "shadow_point_cube.json", "shadow_spot.json"}) {
     for (View view : {View::Shadow, View::LightDepth}) {
-      SuiteCase c;
-      c.scene = scene;
-      c.view = view;
-      c.overrideView = true;
-      c.name = stem(scene) + "_view_" + std::string(toString(view));
-      cases.push_back(c);
+      cases.push_back(viewCase(scene, view));
+    }
+  }
+  // Phong's terms one at a time on a real model (an OBJ with its MTL's maps), under a shadow map
+  // and with several lights (default.json and tangent_space.json have them among kAllViews above).
+  for (const char* scene : {"obj_model.json", "shadow_directional.json", "many_lights.json"}) {
+    for (View view : {View::Ambient, View::Diffuse, View::Specular}) {
+      if (kQuickSuite && std::string(scene) == "many_lights.json") continue;
+      cases.push_back(viewCase(scene, view));
     }
   }
   // Shadow decisions at any bias (docs/shadows.md, "Every tap on llvmpipe's bits"): every

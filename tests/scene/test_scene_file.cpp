@@ -208,7 +208,7 @@ TEST(SceneFileErrors, TriangleBudgetRefusedBeforeBuilding) {
 TEST(SceneFileErrors, BadEnumValue) {
   expectContains(parseError(R"({"nodes": [], "settings": {"view": "shiny"}})"),
                  {"inline.json: settings.view: expected one of shaded|albedo|normal|tangent|bitangent|mapped_normal|"
-                  "uv|depth|light_tangent|eye_tangent|mip_level|height|parallax_offset|parallax_steps|self_shadow|reflect_dir|env_face|env_lod|shadow|light_depth|ssr_hit|ssr_steps|ssr_uv|hiz_level, got "
+                  "uv|depth|light_tangent|eye_tangent|mip_level|height|parallax_offset|parallax_steps|self_shadow|reflect_dir|env_face|env_lod|shadow|light_depth|ssr_hit|ssr_steps|ssr_uv|hiz_level|ambient|diffuse|specular, got "
                   "\"shiny\""});
   expectContains(parseError(R"({"nodes": [], "settings": {"cull": "sideways"}})"),
                  {"inline.json: settings.cull: expected one of none|back|front, got \"sideways\""});

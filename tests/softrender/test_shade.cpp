@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace twr {
@@ -212,6 +213,37 @@ TEST(Shade, DiffuseAndSpecularMapsScaleTheirTerms) {
   EXPECT_NEAR(c.r, 0.6f, kEps);
   EXPECT_NEAR(c.g, 0.25f, kEps);
   EXPECT_NEAR(c.b, 0.12f, kEps);
+}
+
+TEST(Shade, PhongTermViewsShowEachTermAloneSummedOverTheLights) {
+  // Two lights: head-on at (0,0,2) with If 1/3 (PhongHeadOnByHand) and at (2,0,2) unattenuated
+  // (PhongAtFortyFiveDegreesByHand). ambient 0.2 * 0.5 = 0.1; diffuse 0.5 / 3 + 0.5 / sqrt2;
+  // specular 0.25 / 3 + 0.25 / 16; shaded = their sum, clamped.
+  ShadeUniforms u = uniformsWithLight({0, 0, 2}, {1, 0.5f, 0.25f});
+  u.lightCount = 2;
+  u.lights[1] = u.lights[0];
+  u.lights[1].vectorWorld = vec4(2, 0, 2, 1);
+  u.lights[1].attenuation = vec3(1, 0, 0);
+  const float s = 1.0f / std::sqrt(2.0f);
+  const float ambient = 0.1f, diffuse = 0.5f / 3.0f + 0.5f * s, specular = 0.25f / 3.0f + 0.25f / 16.0f;
+  ShaderKey key;
+  const auto viewColour = [&](View v) {
+    u.shadedView = v;
+    key.view = v;
+    return shadeFragmentDynamic(key, surfaceFragment(), u, nullptr);
+  };
+  EXPECT_NEAR(viewColour(View::Ambient).g, ambient, kEps);
+  EXPECT_NEAR(viewColour(View::Diffuse).g, diffuse, kEps);
+  EXPECT_NEAR(viewColour(View::Specular).g, specular, kEps);
+  EXPECT_EQ(viewColour(View::Specular).a, 1.0f);
+  EXPECT_NEAR(viewColour(View::Shaded).g, std::min(ambient + diffuse + specular, 1.0f), kEps);
+  // The trace keeps the sums the views show.
+  ShadeTerms terms;
+  u.shadedView = View::Diffuse;
+  shadeFragment<PlainShaded>(surfaceFragment(), u, &terms);
+  EXPECT_NEAR(terms.diffuseSum.b, diffuse, kEps);
+  EXPECT_NEAR(terms.specularSum.b, specular, kEps);
+  EXPECT_NEAR(terms.colour.b, diffuse, kEps);
 }
 
 TEST(Shade, DebugViews) {
