@@ -92,6 +92,15 @@ const char* viewLegend(View view) {
     case View::HizLevel:
       return "The highest Hi-Z level each pixel's mirror ray skipped a cell at, as a heat map from 0 (dark blue: "
              "pixel by pixel) to the chain's top (dark red). Black under the other marches.";
+    case View::Ambient:
+      return "The ambient term alone, ka times albedo times the scene's ambient Ia (docs/shading.md): what a "
+             "surface shows with every light off. No environment and no sky.";
+    case View::Diffuse:
+      return "The diffuse term alone, kd albedo max(N.L, 0) Id summed over the lights, each with its "
+             "attenuation and shadow: Lambert's light, the same from every viewpoint. No environment and no sky.";
+    case View::Specular:
+      return "The specular term alone, ks specScale pow(R.V, shininess) Is summed over the lights, each with its "
+             "attenuation and shadow: the highlights, which move with the eye. No environment and no sky.";
   }
   return "";
 }

@@ -397,6 +397,10 @@ std::string formatPixelTrace(const PixelTrace& tr) {
         o << "  environment diffuse light (" << toString(v.environmentDiffuse) << ") at Nl " << fmt(s.environmentDiffuse)
           << ", times kd*albedo added\n";
       }
+      if (isPhongTermView(tr.view)) {
+        o << "  summed over the lights with If and shadow (the " << toString(tr.view) << " view): diffuse "
+          << fmt(s.diffuseSum) << " specular " << fmt(s.specularSum) << "\n";
+      }
       if (s.environmentOn) {
         o << "  environment: Phong colour " << fmt(s.phongColour) << ", reflect (world) " << fmt(s.reflectWorld)
           << " read " << fmt(s.environmentReflected)
@@ -511,6 +515,10 @@ nlohmann::json pixelTraceToJson(const PixelTrace& tr) {
         }
       }
       js["lights"] = lights;
+      if (isPhongTermView(tr.view)) {
+        js["diffuse_sum"] = toJson(s.diffuseSum);
+        js["specular_sum"] = toJson(s.specularSum);
+      }
       if (s.environmentDiffuseOn) {
         js["environment_diffuse"] = {{"kind", std::string(toString(v.environmentDiffuse))},
                                      {"light", toJson(s.environmentDiffuse)}};

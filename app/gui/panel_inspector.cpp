@@ -480,13 +480,17 @@ void GuiApp::drawTraceSection(const PixelTrace& trace) {
                     formatVec(s.mappedTangent).c_str());
         ImGui::Text("Nl (lighting) %s", formatVec(s.nl).c_str());
         ImGui::Text("albedo %s  spec scale %s", formatVec(s.albedo).c_str(), formatVec(s.specScale).c_str());
-        if (trace.view == View::Shaded) {
+        if (isShadedView(trace.view)) {
           ImGui::Text("ambient ka*albedo*Ia %s", formatVec(s.ambient).c_str());
           for (int l = 0; l < s.lightCount; ++l) {
             const LightTerms& t = s.lights[static_cast<std::size_t>(l)];
             ImGui::Text("light %d: d %.3f  N.L %.4f  R.V %.4f  If %.4f", l, static_cast<double>(t.distance),
                         static_cast<double>(t.nDotL), static_cast<double>(t.rDotV), static_cast<double>(t.attenuation));
             ImGui::Text("  diffuse %s  specular %s", formatVec(t.diffuse).c_str(), formatVec(t.specular).c_str());
+          }
+          if (isPhongTermView(trace.view)) {
+            ImGui::Text("summed with If and shadow: diffuse %s  specular %s", formatVec(s.diffuseSum).c_str(),
+                        formatVec(s.specularSum).c_str());
           }
         }
         ImGui::Text("colour %s", formatVec(s.colour).c_str());
