@@ -19,6 +19,7 @@
 #include "gui/prefs.h"
 #include "gui/redraw_policy.h"
 #include "gui/scene_doc.h"
+#include "gui/stage_explorer.h"
 #include "app/gui/test_probe.h"
 #include "compare/metrics.h"
 #include "compare/pass_buffers.h"
@@ -185,6 +186,11 @@ class GuiApp {
   void drawStatsPanel();
   void drawInspectorPanel();
   void drawTraceSection(const PixelTrace& trace);
+  void drawStageExplorerSection();
+  // The explorer's view of the pinned pixel's triangle at the shown stage; none while the
+  // trace is missing or of an older edit, or when no triangle reaches the pixel.
+  std::optional<ExplorerView> explorerView() const;
+  void drawExplorerOverlay(ImDrawList* draw, const ExplorerView& view, ImVec2 imageMin, ImVec2 imageMax) const;
   void drawViewProbeSection();
   void drawSsrMarchSection();
   void drawShadowTapsSection();
@@ -253,6 +259,10 @@ class GuiApp {
   std::uint64_t timingsFromRevision_ = 0;  // CPU frames of older edits (another scene) are not timed
   DiffState diff_;
   PinState pin_;
+  // The stage explorer: the stage shown, and whether its section is open (its overlay is drawn
+  // over the images only then).
+  ExplorerStage explorerStage_ = ExplorerStage::Vertex;
+  bool explorerOpen_ = false;
   // The ray the inspector's SSR march follows: the mirror ray or indirect sample k (kept across
   // pinned pixels; the mirror ray while the settings have no sample k, as in an SSR view).
   int ssrTraceRay_ = kSsrMirrorRay;

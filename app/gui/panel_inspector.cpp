@@ -149,6 +149,7 @@ void GuiApp::drawInspectorPanel() {
   } else if (!pin_.cpu->traceError.empty()) {
     errorText("CPU trace: " + pin_.cpu->traceError);
   } else if (pin_.cpu->trace) {
+    drawStageExplorerSection();
     drawTraceSection(*pin_.cpu->trace);
   }
   drawViewProbeSection();

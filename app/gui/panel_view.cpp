@@ -534,6 +534,17 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
     }
   }
 
+  // The stage explorer's overlay, in every image, under the pinned pixel's marker.
+  if (explorerOpen_ && pin_.pixel && renderWidth_ > 0 && renderHeight_ > 0) {
+    if (const std::optional<ExplorerView> view = explorerView()) {
+      for (const Rect& slot : slots) {
+        const Rect rect = fitRect(slot, renderWidth_, renderHeight_);
+        draw->PushClipRect(rect.min, rect.max, true);
+        drawExplorerOverlay(draw, *view, rect.min, rect.max);
+        draw->PopClipRect();
+      }
+    }
+  }
   // The pinned pixel, in every image.
   if (pin_.pixel && renderWidth_ > 0 && renderHeight_ > 0) {
     for (const Rect& slot : slots) {

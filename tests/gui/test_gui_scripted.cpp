@@ -1044,4 +1044,166 @@ TEST(GuiScripted, LightsOffScreenHintIsInTheCaptionNotOverTheImage) {
   EXPECT_EQ(app.quit(), 0) << app.err();
 }
 
+// The stage explorer on a triangle the near plane and side planes both cut: inside_near.json at
+// pixel (600, 50) of the 640 x 480 render, triangle 3 of the cube around the camera (cut by
+// right, top, bottom and near). What the window shows is held to `twinraster trace --json`.
+const std::string kInsideNearScene = std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes/inside_near.json";
+constexpr int kExplorerX = 600, kExplorerY = 50;
+
+// The CLI's trace of the explorer's pixel: the shaded visit that wrote it.
+json explorerTraceVisit(int width, int height) {
+  const std::string text = capture("\"" + std::string(TWINRASTER_CLI) + "\" trace \"" + kInsideNearScene + "\" " +
+                                   std::to_string(kExplorerX) + " " + std::to_string(kExplorerY) + " --width " +
+                                   std::to_string(width) + " --height " + std::to_string(height) + " --json 2>/dev/null");
+  json visit;
+  try {
+    const json trace = json::parse(text);
+    for (const json& t : trace["triangles"]) {
+      if (t["outcome"] == "shaded") visit = t;
+    }
+  } catch (const json::exception& e) {
+    ADD_FAILURE() << "trace --json did not parse: " << e.what() << "\n" << text;
+  }
+  return visit;
+}
+
+std::string sixDigits(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+
+bool anyLineHas(const json& explorer, const std::string& text) {
+  for (const json& line : explorer["lines"]) {
+    if (line.get<std::string>().find(text) != std::string::npos) return true;
+  }
+  return false;
+}
+
+// Starts the app pinned on the explorer's pixel and waits for the explorer to show.
+json openExplorer(GuiProcess& app) {
+  app.window();
+  app.waitSettled();
+  return app.waitFor("the stage explorer", [](const json& s) { return s.contains("explorer") && s.contains("render"); });
+}
+
+// Shows `stage` with its button and returns what the explorer then shows.
+json explorerStage(GuiProcess& app, const std::string& stage) {
+  app.click("explorer_stage_" + stage);
+  const json s = app.waitFor("the explorer at " + stage, [&](const json& st) {
+    return st.contains("explorer") && st["explorer"]["stage"] == stage;
+  });
+  return s.value("explorer", json::object());
+}
+
+std::vector<std::string> guiArgs() {
+  return {kInsideNearScene, "--reset", "--window-size", "1400", "900", "--pin",
+          std::to_string(kExplorerX) + "," + std::to_string(kExplorerY)};
+}
+
+// The app pinned on the explorer's pixel, showing the explorer, and the CLI's trace of that
+// pixel at the app's render size.
+struct ExplorerSession {
+  GuiProcess app{testName(), guiArgs()};
+  json state = openExplorer(app);
+  int width = state.contains("render") ? state["render"][0].get<int>() : 0;
+  int height = state.contains("render") ? state["render"][1].get<int>() : 0;
+  json visit = explorerTraceVisit(width, height);
+};
+
+TEST(GuiScripted, StageExplorerStepsEveryStageWithNextAndPrevious) {
+  REQUIRE_DISPLAY_AND_XDOTOOL();
+  GuiProcess app(testName(), guiArgs());
+  const json first = openExplorer(app);
+  EXPECT_EQ(first["explorer"]["stage"], "vertex") << first["explorer"].dump(1);
+  for (const char* stage : {"clip", "divide", "setup", "raster", "interpolate", "shade"}) {
+    app.click("explorer_next");
+    const json s = app.waitFor(std::string("next to ") + stage, [&](const json& st) { return st["explorer"]["stage"] == stage; });
+    EXPECT_FALSE(s["explorer"]["lines"].empty()) << stage;
+  }
+  app.click("explorer_next");  // held at the last stage
+  EXPECT_EQ(app.waitFrames(2)["explorer"]["stage"], "shade");
+  app.click("explorer_previous");
+  app.waitFor("back to interpolate", [](const json& st) { return st["explorer"]["stage"] == "interpolate"; });
+  EXPECT_EQ(app.quit(), 0) << app.err();
+}
+
+TEST(GuiScripted, StageExplorerClipShowsTheTracesPlanesAndIntersections) {
+  REQUIRE_DISPLAY_AND_XDOTOOL();
+  ExplorerSession session;
+  ASSERT_FALSE(session.visit.is_null());
+  std::vector<std::string> planes;
+  for (const json& step : session.visit["clip_steps"]) planes.push_back(step["plane"].get<std::string>());
+  ASSERT_NE(std::find(planes.begin(), planes.end(), "near"), planes.end()) << "the scene no longer has the near cut";
+  ASSERT_NE(std::find(planes.begin(), planes.end(), "right"), planes.end()) << "the scene no longer has the side cut";
+  const json clip = explorerStage(session.app, "clip");
+  for (const json& step : session.visit["clip_steps"]) {
+    EXPECT_TRUE(anyLineHas(clip, step["plane"].get<std::string>() + ": ")) << step["plane"] << clip.dump(1);
+    for (const json& cut : step["new_vertices"]) {
+      EXPECT_TRUE(anyLineHas(clip, " at t " + sixDigits(cut["t"].get<double>()))) << cut.dump() << clip.dump(1);
+    }
+  }
+  EXPECT_EQ(clip["overlay"]["polygon"].size(), session.visit["clipped_polygon"].size());
+  EXPECT_EQ(clip["overlay"]["triangle"].size(), 3u) << "every corner lies in front of the eye";
+  EXPECT_EQ(session.app.quit(), 0) << session.app.err();
+}
+
+// The point is inside the triangle (either winding, edges included).
+bool insideTriangle(const json& t, double x, double y) {
+  const auto side = [&](const json& a, const json& b) {
+    return (b[0].get<double>() - a[0].get<double>()) * (y - a[1].get<double>()) -
+           (b[1].get<double>() - a[1].get<double>()) * (x - a[0].get<double>());
+  };
+  const double d0 = side(t[0], t[1]), d1 = side(t[1], t[2]), d2 = side(t[2], t[0]);
+  return (d0 >= 0 && d1 >= 0 && d2 >= 0) || (d0 <= 0 && d1 <= 0 && d2 <= 0);
+}
+
+TEST(GuiScripted, StageExplorerOverlayDrawsTheTracedFanOnTheImage) {
+  REQUIRE_DISPLAY_AND_XDOTOOL();
+  ExplorerSession session;
+  ASSERT_FALSE(session.visit.is_null());
+  const json divide = explorerStage(session.app, "divide");
+  const json& overlay = divide["overlay"];
+  ASSERT_EQ(overlay["fan"].size(), session.visit["clipped_polygon"].size() - 2);
+  // The trace's fan triangle i is (0, i, i + 1), the overlay's fan[i - 1].
+  ASSERT_EQ(overlay["fan_triangle"].get<int>(), session.visit["fan_triangle"].get<int>() - 1);
+  const json& covering = overlay["fan"][overlay["fan_triangle"].get<std::size_t>()];
+  EXPECT_TRUE(insideTriangle(covering, kExplorerX + 0.5, kExplorerY + 0.5)) << covering.dump();
+  // Each corner setup received (window x, y; GL rows) is a corner of the covering fan triangle.
+  for (const json& corner : session.visit["window_xyz_invw"]) {
+    const double x = corner[0].get<double>(), y = session.height - corner[1].get<double>();
+    bool found = false;
+    for (const json& p : covering) found = found || (std::abs(p[0].get<double>() - x) < 1e-3 && std::abs(p[1].get<double>() - y) < 1e-3);
+    EXPECT_TRUE(found) << corner.dump() << " not among " << covering.dump();
+  }
+  EXPECT_EQ(session.app.quit(), 0) << session.app.err();
+}
+
+TEST(GuiScripted, StageExplorerSetupRasterAndShadeShowTheTracesNumbers) {
+  REQUIRE_DISPLAY_AND_XDOTOOL();
+  ExplorerSession session;
+  ASSERT_FALSE(session.visit.is_null());
+  const json setup = explorerStage(session.app, "setup");
+  const json& snapped = setup["overlay"]["snapped"];
+  ASSERT_EQ(snapped.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const json& fixed = session.visit["snapped_fixed_8"][i];
+    EXPECT_DOUBLE_EQ(snapped[i][0].get<double>(), fixed[0].get<double>() / 256.0 + 0.5);
+    EXPECT_DOUBLE_EQ(snapped[i][1].get<double>(), session.height - (fixed[1].get<double>() / 256.0 + 0.5));
+    EXPECT_TRUE(anyLineHas(setup, "E " + std::to_string(session.visit["edge_values"][i].get<long long>()))) << setup.dump(1);
+  }
+  const json& box = setup["overlay"]["bounding_box"];
+  EXPECT_TRUE(box[0].get<int>() <= kExplorerX && kExplorerX <= box[2].get<int>() && box[1].get<int>() <= kExplorerY &&
+              kExplorerY <= box[3].get<int>())
+      << box.dump();
+  const json raster = explorerStage(session.app, "raster");
+  EXPECT_GT(raster["overlay"]["covered"].get<int>(), 0) << raster.dump(1);
+  const json interpolate = explorerStage(session.app, "interpolate");
+  EXPECT_TRUE(anyLineHas(interpolate, "screen barycentrics (" + sixDigits(session.visit["barycentrics"][0].get<double>())))
+      << interpolate.dump(1);
+  const json shade = explorerStage(session.app, "shade");
+  EXPECT_TRUE(anyLineHas(shade, "colour (" + sixDigits(session.visit["shading"]["colour"][0].get<double>()))) << shade.dump(1);
+  EXPECT_EQ(session.app.quit(), 0) << session.app.err();
+}
+
 }  // namespace
