@@ -106,13 +106,25 @@ std::vector<std::array<int, 2>> coveredOf(const std::array<int, 4>& box, const T
   return covered;
 }
 
+// The frustum planes a clip position lies outside of (-w <= x, y, z <= w inside), " outside
+// right, near" or "" inside.
+std::string outsideText(const vec4& p) {
+  const std::pair<bool, const char*> sides[] = {{p.x > p.w, "right"}, {p.x < -p.w, "left"}, {p.y > p.w, "top"},
+                                                {p.y < -p.w, "bottom"}, {p.z < -p.w, "near"}, {p.z > p.w, "far"}};
+  std::string text;
+  for (const auto& [outside, name] : sides) {
+    if (outside) text += (text.empty() ? " outside " : ", ") + std::string(name);
+  }
+  return text;
+}
+
 void vertexLines(const TriangleVisit& visit, std::vector<std::string>& lines) {
   lines.push_back("triangle " + std::to_string(visit.triangleId) + " of '" + visit.nodeName + "' (" +
                   std::to_string(visit.triangleInMesh) + " in its mesh): the vertex stage's clip positions");
   bool behind = false;
   for (std::size_t i = 0; i < 3; ++i) {
     lines.push_back("v" + std::to_string(i) + " model " + vec(visit.posModel[i], 3) + " -> clip " +
-                    vec(visit.posClip[i], 4));
+                    vec(visit.posClip[i], 4) + outsideText(visit.posClip[i]));
     behind = behind || !(visit.posClip[i].w > 0.0f);
   }
   if (behind) lines.push_back("a corner with w <= 0 is behind the eye: it has no place on the image until the near plane cuts it");
@@ -125,6 +137,9 @@ void clipLines(const TriangleVisit& visit, std::vector<std::string>& lines) {
   for (const ClipStep& step : visit.clipSteps) {
     lines.push_back(std::string(clipPlaneName(step.plane)) + ": " + std::to_string(step.before.size()) +
                     " vertices in, " + std::to_string(step.after.size()) + " out");
+    if (step.cuts.empty() && !step.after.empty()) {
+      lines.push_back("  made no vertex: a corner lay outside it, but an earlier plane had already cut that part away");
+    }
     for (const ClipCut& cut : step.cuts) {
       std::string line = "  new vertex " + std::to_string(cut.index) + " on edge " + std::to_string(cut.nearer) + "-" +
                          std::to_string(cut.farther) + " at t " + num(cut.t);

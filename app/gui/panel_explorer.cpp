@@ -98,6 +98,7 @@ void GuiApp::drawStageExplorerSection() {
   hintText(stageHint(view->stage));
   if (monoFont_) ImGui::PushFont(monoFont_);
   for (const std::string& line : view->lines) ImGui::TextWrapped("%s", line.c_str());
+  probe_.item("explorer_last_line");  // where the section ends (the docs' pictures crop to it)
   if (monoFont_) ImGui::PopFont();
   if (probe_.enabled()) probe_.state()["explorer"] = explorerViewToJson(*view);
 }
