@@ -51,10 +51,17 @@ std::vector<ImagePoint> triangleOf(const PixelTrace& trace, const TriangleVisit&
   return points;
 }
 
-std::vector<ImagePoint> polygonOf(const PixelTrace& trace, const TriangleVisit& visit) {
+// A polygon's vertices on the image, those in front of the eye (w > 0): a pass before the
+// near plane's may still hold a corner behind it.
+std::vector<ImagePoint> polygonOf(const PixelTrace& trace, const TriangleVisit& visit, const std::vector<vec4>& clip) {
   std::vector<ImagePoint> points;
-  for (const vec4& p : visit.clippedPolygon) points.push_back(imageOfClip(p, isInputCorner(p, visit), trace));
+  for (const vec4& p : clip) {
+    if (p.w > 0.0f) points.push_back(imageOfClip(p, isInputCorner(p, visit), trace));
+  }
   return points;
+}
+std::vector<ImagePoint> polygonOf(const PixelTrace& trace, const TriangleVisit& visit) {
+  return polygonOf(trace, visit, visit.clippedPolygon);
 }
 
 std::vector<std::array<ImagePoint, 3>> fanOf(const std::vector<ImagePoint>& polygon) {
@@ -130,13 +137,15 @@ void vertexLines(const TriangleVisit& visit, std::vector<std::string>& lines) {
   if (behind) lines.push_back("a corner with w <= 0 is behind the eye: it has no place on the image until the near plane cuts it");
 }
 
-void clipLines(const TriangleVisit& visit, std::vector<std::string>& lines) {
+// Each pass's lines; the chosen pass's marked "> ".
+void clipLines(const TriangleVisit& visit, int pass, std::vector<std::string>& lines) {
   if (visit.clipSteps.empty()) {
     lines.push_back("no plane cut it: every corner is inside the frustum (or the triangle was rejected whole)");
   }
-  for (const ClipStep& step : visit.clipSteps) {
-    lines.push_back(std::string(clipPlaneName(step.plane)) + ": " + std::to_string(step.before.size()) +
-                    " vertices in, " + std::to_string(step.after.size()) + " out");
+  for (std::size_t k = 0; k < visit.clipSteps.size(); ++k) {
+    const ClipStep& step = visit.clipSteps[k];
+    lines.push_back(std::string(static_cast<int>(k) == pass ? "> " : "") + clipPlaneName(step.plane) + ": " +
+                    std::to_string(step.before.size()) + " vertices in, " + std::to_string(step.after.size()) + " out");
     if (step.cuts.empty() && !step.after.empty()) {
       lines.push_back("  made no vertex: a corner lay outside it, but an earlier plane had already cut that part away");
     }
@@ -259,9 +268,11 @@ ExplorerStage previousStage(ExplorerStage stage) {
 }
 
 ExplorerView explorerViewOf(const PixelTrace& trace, const TriangleVisit& visit, ExplorerStage stage,
-                            const std::vector<std::uint32_t>* triangleIds) {
+                            const std::vector<std::uint32_t>* triangleIds, int clipPass) {
   ExplorerView view;
   view.stage = stage;
+  view.clipPasses = static_cast<int>(visit.clipSteps.size());
+  view.clipPass = clipPass >= 0 && clipPass < view.clipPasses ? clipPass : -1;
   view.title = titleOf(stage);
   ExplorerOverlay& o = view.overlay;
   o.pixelCentre = {trace.x + 0.5, trace.yTop + 0.5};
@@ -275,8 +286,14 @@ ExplorerView explorerViewOf(const PixelTrace& trace, const TriangleVisit& visit,
       break;
     case ExplorerStage::Clip:
       o.triangle = triangleOf(trace, visit);
-      o.polygon = polygonOf(trace, visit);
-      clipLines(visit, view.lines);
+      if (view.clipPass >= 0) {
+        const ClipStep& step = visit.clipSteps[static_cast<std::size_t>(view.clipPass)];
+        o.polygonBefore = polygonOf(trace, visit, step.before);
+        o.polygon = polygonOf(trace, visit, step.after);
+      } else {
+        o.polygon = polygonOf(trace, visit);
+      }
+      clipLines(visit, view.clipPass, view.lines);
       break;
     case ExplorerStage::Divide:
       o.polygon = polygonOf(trace, visit);
@@ -312,13 +329,15 @@ nlohmann::json explorerViewToJson(const ExplorerView& view) {
   for (const auto& t : o.fan) fan.push_back(points({t[0], t[1], t[2]}));
   json overlay = {{"triangle", points(o.triangle)},
                   {"polygon", points(o.polygon)},
+                  {"polygon_before", points(o.polygonBefore)},
                   {"fan", fan},
                   {"fan_triangle", o.fanTriangle},
                   {"snapped", points(o.snapped)},
                   {"covered", o.covered.size()},
                   {"pixel_centre", {o.pixelCentre.x, o.pixelCentre.y}}};
   if (o.boundingBox) overlay["bounding_box"] = *o.boundingBox;
-  return {{"stage", toString(view.stage)}, {"title", view.title}, {"lines", view.lines}, {"overlay", overlay}};
+  return {{"stage", toString(view.stage)}, {"title", view.title},   {"clip_pass", view.clipPass},
+          {"clip_passes", view.clipPasses},  {"lines", view.lines}, {"overlay", overlay}};
 }
 
 }  // namespace twr::gui

@@ -40,6 +40,9 @@ struct ExplorerOverlay {
   // behind the eye has no place on the image); all three: its outline is drawn.
   std::vector<ImagePoint> triangle;
   std::vector<ImagePoint> polygon;                // the clipped polygon (Clip and after)
+  // At the Clip stage with one pass chosen: the polygon that plane cut, `polygon` being what it
+  // left (vertices with w <= 0 have no place on the image and are left out of both).
+  std::vector<ImagePoint> polygonBefore;
   std::vector<std::array<ImagePoint, 3>> fan;     // its fan (0, i, i + 1) (Divide and after)
   int fanTriangle = -1;  // fan[fanTriangle] covers the pixel (the trace's fan triangle i is fan[i - 1])
   std::vector<ImagePoint> snapped;                // its corners as setup snapped them (Setup and after)
@@ -53,6 +56,8 @@ struct ExplorerOverlay {
 
 struct ExplorerView {
   ExplorerStage stage = ExplorerStage::Vertex;
+  int clipPass = -1;    // the clipper's pass shown at the Clip stage, -1: all of them
+  int clipPasses = 0;   // how many passes the clipper made
   std::string title;
   std::vector<std::string> lines;  // the stage's numbers, as the trace holds them
   ExplorerOverlay overlay;
@@ -60,11 +65,14 @@ struct ExplorerView {
 
 // The stage's lines and overlay for `visit`, one of `trace`'s visits. `triangleIds`: the
 // frame's ids (RenderOutput::triangleId, top row first, trace.width x trace.height), or null.
+// `clipPass`: at the Clip stage, the clipper's pass k (visit.clipSteps[k]) to draw before and
+// after, its lines marked; -1 (or a pass the triangle does not have): the final polygon.
 ExplorerView explorerViewOf(const PixelTrace& trace, const TriangleVisit& visit, ExplorerStage stage,
-                            const std::vector<std::uint32_t>* triangleIds);
+                            const std::vector<std::uint32_t>* triangleIds, int clipPass = -1);
 
 // The view as the scripted tests read it from the app's test state: {"stage", "title",
-// "lines", "overlay": {"triangle": [[x, y], ...], "polygon", "fan", "fan_triangle", "snapped",
+// "clip_pass", "clip_passes", "lines", "overlay": {"triangle": [[x, y], ...], "polygon",
+// "polygon_before", "fan", "fan_triangle", "snapped",
 // "bounding_box": [x0, y0, x1, y1], "covered" (a count), "pixel_centre"}}.
 nlohmann::json explorerViewToJson(const ExplorerView& view);
 

@@ -187,6 +187,7 @@ class GuiApp {
   void drawInspectorPanel();
   void drawTraceSection(const PixelTrace& trace);
   void drawStageExplorerSection();
+  void drawClipPassButtons();
   // The explorer's view of the pinned pixel's triangle at the shown stage; none while the
   // trace is missing or of an older edit, or when no triangle reaches the pixel.
   std::optional<ExplorerView> explorerView() const;
@@ -262,6 +263,7 @@ class GuiApp {
   // The stage explorer: the stage shown, and whether its section is open (its overlay is drawn
   // over the images only then).
   ExplorerStage explorerStage_ = ExplorerStage::Vertex;
+  int explorerClipPass_ = -1;  // the clipper's pass the Clip stage draws, -1: the final polygon
   bool explorerOpen_ = false;
   // The ray the inspector's SSR march follows: the mirror ray or indirect sample k (kept across
   // pinned pixels; the mirror ray while the settings have no sample k, as in an SSR view).

@@ -60,7 +60,7 @@ std::optional<ExplorerView> GuiApp::explorerView() const {
   const RenderOutput* frame = cpuFrame_.output.get();
   const bool idsUsable = frame && cpuFrame_.revision == doc_.revision && frame->width == trace.width &&
                          frame->height == trace.height;
-  return explorerViewOf(trace, *visit, explorerStage_, idsUsable ? &frame->triangleId : nullptr);
+  return explorerViewOf(trace, *visit, explorerStage_, idsUsable ? &frame->triangleId : nullptr, explorerClipPass_);
 }
 
 void GuiApp::drawStageExplorerSection() {
@@ -93,6 +93,7 @@ void GuiApp::drawStageExplorerSection() {
     if (shown) ImGui::PopStyleColor();
     probe_.item(concat("explorer_stage_", toString(stage)).c_str());
   }
+  if (explorerStage_ == ExplorerStage::Clip) drawClipPassButtons();
   const std::optional<ExplorerView> view = explorerView();
   if (!view) return;
   hintText(stageHint(view->stage));
@@ -101,6 +102,25 @@ void GuiApp::drawStageExplorerSection() {
   probe_.item("explorer_last_line");  // where the section ends (the docs' pictures crop to it)
   if (monoFont_) ImGui::PopFont();
   if (probe_.enabled()) probe_.state()["explorer"] = explorerViewToJson(*view);
+}
+
+// The Clip stage's pass picker: all passes (the final polygon) or one plane's before and after.
+void GuiApp::drawClipPassButtons() {
+  const std::optional<ExplorerView> view = explorerView();
+  if (!view || view->clipPasses == 0) return;
+  if (ImGui::SmallButton("< Pass")) explorerClipPass_ = view->clipPass < 0 ? view->clipPasses - 1 : view->clipPass - 1;
+  probe_.item("explorer_pass_previous");
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Pass >")) explorerClipPass_ = view->clipPass + 1 >= view->clipPasses ? -1 : view->clipPass + 1;
+  probe_.item("explorer_pass_next");
+  ImGui::SameLine();
+  if (view->clipPass < 0) {
+    ImGui::Text("all %d passes: the polygon the last one left", view->clipPasses);
+  } else {
+    ImGui::Text("pass %d of %d: grey before the plane, cyan what it left", view->clipPass + 1, view->clipPasses);
+    hintText("A side plane cuts at the image's edge, so what it removes lies off the image; `twinraster trace "
+             "--stages` draws each pass in clip space, where it shows.");
+  }
 }
 
 void GuiApp::drawExplorerOverlay(ImDrawList* draw, const ExplorerView& view, ImVec2 imageMin, ImVec2 imageMax) const {
@@ -137,6 +157,7 @@ void GuiApp::drawExplorerOverlay(ImDrawList* draw, const ExplorerView& view, ImV
     if (static_cast<int>(k) == o.fanTriangle) draw->AddTriangleFilled(at(t[0]), at(t[1]), at(t[2]), colourOf(90, 200, 255, 70));
     draw->AddTriangle(at(t[0]), at(t[1]), at(t[2]), colourOf(90, 200, 255, 160), 1.0f);
   }
+  outline(o.polygonBefore, colourOf(170, 170, 170, 220), thick);
   if (o.triangle.size() == 3) outline(o.triangle, colourOf(255, 220, 60), thick);
   else for (const ImagePoint& p : o.triangle) draw->AddCircleFilled(at(p), 3.0f * uiScale_, colourOf(255, 220, 60));
   outline(o.polygon, colourOf(90, 220, 255), thick);

@@ -1145,6 +1145,15 @@ TEST(GuiScripted, StageExplorerClipShowsTheTracesPlanesAndIntersections) {
   }
   EXPECT_EQ(clip["overlay"]["polygon"].size(), session.visit["clipped_polygon"].size());
   EXPECT_EQ(clip["overlay"]["triangle"].size(), 3u) << "every corner lies in front of the eye";
+  // The first pass alone: the triangle before the plane, what the plane left after it.
+  session.app.click("explorer_pass_next");
+  const json first = session.app.waitFor("the first pass", [](const json& st) {
+    return st.contains("explorer") && st["explorer"]["clip_pass"] == 0;
+  })["explorer"];
+  const json& step = session.visit["clip_steps"][0];
+  EXPECT_EQ(first["overlay"]["polygon_before"].size(), 3u) << first.dump(1);
+  EXPECT_EQ(first["overlay"]["polygon"].size(), step["polygon"].size()) << first.dump(1);
+  EXPECT_TRUE(anyLineHas(first, "> " + step["plane"].get<std::string>() + ": ")) << first.dump(1);
   EXPECT_EQ(session.app.quit(), 0) << session.app.err();
 }
 

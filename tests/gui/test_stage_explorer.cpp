@@ -86,6 +86,28 @@ TEST(StageExplorer, ClipAndDivideDrawThePolygonTheClipperLeft) {
   }
 }
 
+TEST(StageExplorer, OneClipPassDrawsThePolygonBeforeAndAfterItsPlane) {
+  const Traced& t = traced();
+  const TriangleVisit& visit = *stageVisitOf(t.trace);
+  ASSERT_GE(visit.clipSteps.size(), 2u);
+  for (int pass = 0; pass < static_cast<int>(visit.clipSteps.size()); ++pass) {
+    const ClipStep& step = visit.clipSteps[static_cast<std::size_t>(pass)];
+    const ExplorerView view = explorerViewOf(t.trace, visit, ExplorerStage::Clip, nullptr, pass);
+    EXPECT_EQ(view.clipPass, pass);
+    const auto inFront = [](const std::vector<vec4>& polygon) {
+      return static_cast<std::size_t>(std::count_if(polygon.begin(), polygon.end(), [](const vec4& p) { return p.w > 0.0f; }));
+    };
+    EXPECT_EQ(view.overlay.polygonBefore.size(), inFront(step.before));
+    EXPECT_EQ(view.overlay.polygon.size(), inFront(step.after));
+    EXPECT_TRUE(anyLineHas(view, std::string("> ") + clipPlaneName(step.plane) + ": "));
+  }
+  // A pass the triangle does not have shows them all.
+  const ExplorerView all = explorerViewOf(t.trace, visit, ExplorerStage::Clip, nullptr, 99);
+  EXPECT_EQ(all.clipPass, -1);
+  EXPECT_TRUE(all.overlay.polygonBefore.empty());
+  EXPECT_EQ(all.overlay.polygon.size(), visit.clippedPolygon.size());
+}
+
 TEST(StageExplorer, SetupAndRasterShowTheSnappedCornersBoxAndPixelsWon) {
   const Traced& t = traced();
   const TriangleVisit& visit = *stageVisitOf(t.trace);
