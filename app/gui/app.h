@@ -189,8 +189,9 @@ class GuiApp {
   void drawStageExplorerSection();
   void drawClipPassButtons();
   // The explorer's view of the pinned pixel's triangle at the shown stage; none while the
-  // trace is missing or of an older edit, or when no triangle reaches the pixel.
-  std::optional<ExplorerView> explorerView() const;
+  // trace is missing or of an older edit, or when no triangle reaches the pixel. `glSide`:
+  // the pixels won are GL's frame's (its triangle ids), else the CPU's.
+  std::optional<ExplorerView> explorerView(bool glSide = false) const;
   void drawExplorerOverlay(ImDrawList* draw, const ExplorerView& view, ImVec2 imageMin, ImVec2 imageMax) const;
   void drawViewProbeSection();
   void drawSsrMarchSection();

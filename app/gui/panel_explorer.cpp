@@ -52,14 +52,15 @@ ImU32 colourOf(int r, int g, int b, int a = 255) { return IM_COL32(r, g, b, a); 
 
 }  // namespace
 
-std::optional<ExplorerView> GuiApp::explorerView() const {
+std::optional<ExplorerView> GuiApp::explorerView(bool glSide) const {
   if (!pin_.cpu || !pin_.cpu->trace || pin_.cpuRevision != doc_.revision) return std::nullopt;
   const PixelTrace& trace = *pin_.cpu->trace;
   const TriangleVisit* visit = stageVisitOf(trace);
   if (!visit) return std::nullopt;
-  const RenderOutput* frame = cpuFrame_.output.get();
-  const bool idsUsable = frame && cpuFrame_.revision == doc_.revision && frame->width == trace.width &&
-                         frame->height == trace.height;
+  const BackendFrame& backend = glSide ? glFrame_ : cpuFrame_;
+  const RenderOutput* frame = backend.output.get();
+  const bool idsUsable = frame && backend.revision == doc_.revision && frame->width == trace.width &&
+                         frame->height == trace.height && frame->triangleId.size() == frame->rgba.size() / 4;
   return explorerViewOf(trace, *visit, explorerStage_, idsUsable ? &frame->triangleId : nullptr, explorerClipPass_);
 }
 
@@ -101,7 +102,11 @@ void GuiApp::drawStageExplorerSection() {
   for (const std::string& line : view->lines) ImGui::TextWrapped("%s", line.c_str());
   probe_.item("explorer_last_line");  // where the section ends (the docs' pictures crop to it)
   if (monoFont_) ImGui::PopFont();
-  if (probe_.enabled()) probe_.state()["explorer"] = explorerViewToJson(*view);
+  if (probe_.enabled()) {
+    nlohmann::json& state = probe_.state()["explorer"];
+    state = explorerViewToJson(*view);
+    if (const std::optional<ExplorerView> gl = explorerView(true)) state["overlay"]["covered_gl"] = gl->overlay.covered.size();
+  }
 }
 
 // The Clip stage's pass picker: all passes (the final polygon) or one plane's before and after.

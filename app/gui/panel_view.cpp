@@ -536,13 +536,16 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
 
   // The stage explorer's overlay, in every image, under the pinned pixel's marker.
   if (explorerOpen_ && pin_.pixel && renderWidth_ > 0 && renderHeight_ > 0) {
-    if (const std::optional<ExplorerView> view = explorerView()) {
-      for (const Rect& slot : slots) {
-        const Rect rect = fitRect(slot, renderWidth_, renderHeight_);
-        draw->PushClipRect(rect.min, rect.max, true);
-        drawExplorerOverlay(draw, *view, rect.min, rect.max);
-        draw->PopClipRect();
-      }
+    for (std::size_t k = 0; k < slots.size(); ++k) {
+      // Each image marks the pixels its own frame gave the triangle (GL's through its ids):
+      // side by side the CPU's then GL's, GL alone GL's, the mixed modes the CPU's.
+      const bool glSide = prefs_.viewMode == ViewMode::Gl || (prefs_.viewMode == ViewMode::SideBySide && k == 1);
+      const std::optional<ExplorerView> view = explorerView(glSide);
+      if (!view) continue;
+      const Rect rect = fitRect(slots[k], renderWidth_, renderHeight_);
+      draw->PushClipRect(rect.min, rect.max, true);
+      drawExplorerOverlay(draw, *view, rect.min, rect.max);
+      draw->PopClipRect();
     }
   }
   // The pinned pixel, in every image.

@@ -1207,6 +1207,8 @@ TEST(GuiScripted, StageExplorerSetupRasterAndShadeShowTheTracesNumbers) {
       << box.dump();
   const json raster = explorerStage(session.app, "raster");
   EXPECT_GT(raster["overlay"]["covered"].get<int>(), 0) << raster.dump(1);
+  // GL's image marks the pixels GL's frame gave the triangle: the same ones on this scene.
+  EXPECT_EQ(raster["overlay"].value("covered_gl", -1), raster["overlay"]["covered"].get<int>()) << raster.dump(1);
   const json interpolate = explorerStage(session.app, "interpolate");
   EXPECT_TRUE(anyLineHas(interpolate, "screen barycentrics (" + sixDigits(session.visit["barycentrics"][0].get<double>())))
       << interpolate.dump(1);
