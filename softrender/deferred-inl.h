@@ -117,7 +117,7 @@ TWR_LANE_INLINE Vec3L<L> worldFromWindowLanes(const Mat4T<ScalarOf<L>>& m, const
 // g.posWorld (its stored position, or worldFromWindowLanes's) lit by the frame's lights with the forward shading's own loop (world space, no
 // height field), added to the emission and clamped as the forward colour is.
 struct NoMaps {};
-using DeferredLightingFeatures = ShaderFeatures<false, false, false, LightingSpace::World, View::Shaded, false>;
+using DeferredLightingFeatures = ShaderFeatures<false, false, false, LightingSpace::World, false>;
 template <typename L>
 TWR_LANE_INLINE Vec4L<L> deferredLightingLanes(const GBufferTexelL<L>& g, const ShadeUniformsT<ScalarOf<L>>& u) {
   using S = ScalarOf<L>;

@@ -131,9 +131,8 @@ void drawItem(const LoopItemT<T>& s, const RowBand& band, Target& target, Render
 // the shader permutation (withShaderFeatures), so nothing per pixel is dispatched.
 template <typename T, typename Target>
 void drawBand(const std::vector<LoopItemT<T>>& items, const RowBand& band, Target& target, RenderStats& stats) {
-  constexpr bool kSurface = requires { Target::kWritesSurface; };
   for (const LoopItemT<T>& s : items) {
-    withShaderFeatures<kSurface>(s.shaderKey, [&]<typename Features>() { drawItem<Features>(s, band, target, stats); });
+    withShaderFeatures(s.shaderKey, [&]<typename Features>() { drawItem<Features>(s, band, target, stats); });
   }
 }
 

@@ -329,13 +329,12 @@ HWY_INLINE FragmentL<LaneF> SegmentFragment(const Segment& s, const ItemState& i
       if (item.shade.heightMap) setFineUvDifferencesLanes<LaneF>(uv, quadColumns, quadRow, px, py, fragment);
     }
   }
-  if constexpr (Features::kView == View::Shaded) {
-    // A material that reads the environment: its directions' quad differences (shade-inl.h).
-    if (item.shade.environment.cube) {
-      const LaneF quadColumns = floorOf(px * LaneF(0.5f)) * LaneF(2.0f);
-      const LaneF quadRow(static_cast<float>(s.py - (s.py & 1)));
-      setEnvironmentDifferencesLanes<Features, LaneF>(planes, px, py, quadColumns, quadRow, item.shade, maps, fragment);
-    }
+  // A material that reads the environment, in a view that shows it: its directions' quad
+  // differences (shade-inl.h).
+  if (isShadedView(item.shade.view) && item.shade.environment.cube) {
+    const LaneF quadColumns = floorOf(px * LaneF(0.5f)) * LaneF(2.0f);
+    const LaneF quadRow(static_cast<float>(s.py - (s.py & 1)));
+    setEnvironmentDifferencesLanes<Features, LaneF>(planes, px, py, quadColumns, quadRow, item.shade, maps, fragment);
   }
   (void)df;
   return fragment;
@@ -382,8 +381,8 @@ void SurfaceSegment(const Segment& s, const ItemState& item, const ItemMaps& map
 
 using SegmentKernel = void (*)(const Segment&, const ItemState&, const ItemMaps&, std::uint32_t*);
 
-// The kernel of a shader permutation: withShaderFeatures (shade.h) instantiates each view only
-// for the features it reads, so the kernels number what the teaching path's permutations do.
+// The kernel of a shader permutation (withShaderFeatures, shade.h): one per combination of
+// maps and lighting space, the view a branch inside it, as on the teaching path.
 SegmentKernel kernelFor(const ShaderKey& key) {
   SegmentKernel kernel = nullptr;
   withShaderFeatures(key, [&]<typename Features>() { kernel = &ShadeSegment<Features>; });
@@ -392,7 +391,7 @@ SegmentKernel kernelFor(const ShaderKey& key) {
 using SurfaceKernel = void (*)(const Segment&, const ItemState&, const ItemMaps&, float (*)[kMaxLanes]);
 SurfaceKernel surfaceKernelFor(const ShaderKey& key) {
   SurfaceKernel kernel = nullptr;
-  withShaderFeatures<true>(key, [&]<typename Features>() { kernel = &SurfaceSegment<Features>; });
+  withShaderFeatures(key, [&]<typename Features>() { kernel = &SurfaceSegment<Features>; });
   return kernel;
 }
 

@@ -282,6 +282,60 @@ struct LightSumL {
   // in those views, a uniform branch per light.
   Vec3L<L> diffuseSum, specularSum;
 };
+// One light's shadow map (shadow-inl.h): tested only where it can matter (`wanted`: a lane the
+// light lights, the shadow views, the trace), its visibility multiplied into `shadow`, the
+// first light's test kept for the shadow views. Its angle is the geometric normal's, in world
+// space. Returns whether it tested. GLSL: lighting.glsl's shadowMapStep.
+template <typename L>
+TWR_LANE_INLINE bool shadowMapStepLanes(const LightUniformT<ScalarOf<L>>& light, const Vec3L<L>& posWorld,
+                                        const Vec3L<L>& n, const Vec3L<L>& toLight, bool wanted, LightSumL<L>& out,
+                                        L& shadow, ShadowTestL<L>& mapTest) {
+  if (light.shadow.depth == nullptr || !wanted) return false;  // no map, or no lane it can matter to
+  mapTest = (shadowTestLanes<L>)(light.shadow, posWorld, n, safeNormalize3<L>(toLight));
+  shadow = shadow * mapTest.visibility;
+  if (!out.haveShadowTest) {
+    out.firstShadowTest = mapTest;
+    out.firstShadowCosine = dot3<L>(n, safeNormalize3<L>(toLight));
+    out.haveShadowTest = true;
+  }
+  return true;
+}
+
+// One light's intermediate values, as the pixel trace shows them (scalar lanes only).
+template <typename L>
+struct LightStepL {
+  Vec3L<L> lVec, vVec;
+  L d;
+  Vec3L<L> l, v, r;
+  L nDotL, rDotV, attenuation, selfShadow;
+  bool mapOn;
+  ShadowTestL<L> mapTest;
+  Vec3L<L> diffuse, specular;
+};
+template <typename L, typename LightTerms>
+TWR_LANE_INLINE void traceLightStep(LightTerms& lt, const LightStepL<L>& s) {
+  lt.lVec = s.lVec;
+  lt.vVec = s.vVec;
+  lt.distance = s.d;
+  lt.l = s.l;
+  lt.v = s.v;
+  lt.r = s.r;
+  lt.nDotL = s.nDotL;
+  lt.rDotV = s.rDotV;
+  lt.attenuation = s.attenuation;
+  lt.selfShadow = s.selfShadow;
+  lt.shadowOn = s.mapOn;
+  lt.shadowVisibility = s.mapTest.visibility;
+  lt.shadowDepth = s.mapTest.depth;
+  lt.shadowBias = s.mapTest.bias;
+  lt.shadowStored = s.mapTest.stored;
+  lt.shadowReference = s.mapTest.reference;
+  lt.shadowInside = s.mapTest.inside > L(ScalarOf<L>(0));
+  lt.shadowTexel = decltype(lt.shadowTexel)(s.mapTest.texelX, s.mapTest.texelY, s.mapTest.layer);
+  lt.diffuse = s.diffuse;
+  lt.specular = s.specular;
+}
+
 template <typename Features, typename L, typename Maps, typename Shininess, typename Terms>
 TWR_LANE_INLINE LightSumL<L> lightSumLanes(const FragmentL<L>* f, const ShadeUniformsT<ScalarOf<L>>& u, const Maps& maps,
                                            const Vec3L<L>& posWorld, const SurfaceFrameL<L>& frame,
@@ -295,20 +349,15 @@ TWR_LANE_INLINE LightSumL<L> lightSumLanes(const FragmentL<L>* f, const ShadeUni
   const Vec3L<L>& nl = frame.nl;
   const bool emboss = Features::kHasHeightMap && u.surfaceDetail == SurfaceDetail::BumpEmboss;
   const bool selfShadowOn = Features::kHasHeightMap && u.selfShadow != SelfShadow::None;
-  const bool termSums = isPhongTermView(u.shadedView);
+  const bool termSums = isPhongTermView(u.view);
   LightSumL<L> out{Vec3L<L>(zero), ShadowTestL<L>{one, zero, zero, one, zero, zero, zero, zero, zero, zero}, zero, false,
                    Vec3L<L>(zero), Vec3L<L>(zero)};
   for (int i = 0; i < u.lightCount; ++i) {
     const LightUniformT<S>& light = u.lights[static_cast<std::size_t>(i)];
     const Vec3L<L> toLight = toLightLanes<L>(light, posWorld);
-    Vec3L<L> lVec, vVec;
-    if constexpr (kTangentSpace) {
-      lVec = f->lightDirTangent[static_cast<std::size_t>(i)];
-      vVec = f->eyeDirTangent;
-    } else {
-      lVec = toLight;
-      vVec = Vec3L<L>(u.eyePosWorld) - posWorld;
-    }
+    // Tangent space reads the vertex stage's vectors (never the deferred pass, whose f is null).
+    const Vec3L<L> lVec = kTangentSpace ? f->lightDirTangent[static_cast<std::size_t>(i)] : toLight;
+    const Vec3L<L> vVec = kTangentSpace ? f->eyeDirTangent : Vec3L<L>(u.eyePosWorld) - posWorld;
     const L d = lengthOf<L>(toLight);
     const Vec3L<L> l = safeNormalize3<L>(lVec);
     const Vec3L<L> v = safeNormalize3<L>(vVec);
@@ -340,22 +389,12 @@ TWR_LANE_INLINE LightSumL<L> lightSumLanes(const FragmentL<L>* f, const ShadeUni
       specular = select3<L>(lit, (ksSpec * specularPowLanes<L>(rDotV, shininess)) * Vec3L<L>(light.specular), specular);
     }
     L shadow = selfShadowValue;
-    // The light's shadow map (shadow-inl.h): a runtime branch per light, never taken by a
-    // light without one. Its angle is the geometric normal's, in world space.
     ShadowTestL<L> mapTest{one, zero, zero, one, zero, zero, zero, zero, zero, zero};
-    // Tested only where it can matter: a lane the light lights (diffuse or specular), the
-    // shadow views and the trace; elsewhere both terms are 0 and so is their product with it.
+    // A runtime branch per light, never taken by a light without a map (nor its lanes' mask read).
     const bool mapOn = light.shadow.depth != nullptr &&
-                       (kTrace || isShadowView(u.shadedView) || anyOf((diffuseFactor > zero) | lit));
-    if (mapOn) {
-      mapTest = (shadowTestLanes<L>)(light.shadow, posWorld, n, safeNormalize3<L>(toLight));
-      shadow = shadow * mapTest.visibility;
-      if (!out.haveShadowTest) {
-        out.firstShadowTest = mapTest;
-        out.firstShadowCosine = dot3<L>(n, safeNormalize3<L>(toLight));
-        out.haveShadowTest = true;
-      }
-    }
+                       (shadowMapStepLanes<L>)(light, posWorld, n, toLight,
+                                               kTrace || isShadowView(u.view) || anyOf((diffuseFactor > zero) | lit), out,
+                                               shadow, mapTest);
     if (selfShadowOn || mapOn) {
       out.sum += ((diffuse + specular) * attenuation) * shadow;
     } else {
@@ -367,27 +406,8 @@ TWR_LANE_INLINE LightSumL<L> lightSumLanes(const FragmentL<L>* f, const ShadeUni
     }
     if constexpr (kTrace) {
       if (terms) {
-        auto& lt = terms->lights[static_cast<std::size_t>(i)];
-        lt.lVec = lVec;
-        lt.vVec = vVec;
-        lt.distance = d;
-        lt.l = l;
-        lt.v = v;
-        lt.r = r;
-        lt.nDotL = nDotL;
-        lt.rDotV = rDotV;
-        lt.attenuation = attenuation;
-        lt.selfShadow = selfShadowValue;
-        lt.shadowOn = mapOn;
-        lt.shadowVisibility = mapTest.visibility;
-        lt.shadowDepth = mapTest.depth;
-        lt.shadowBias = mapTest.bias;
-        lt.shadowStored = mapTest.stored;
-        lt.shadowReference = mapTest.reference;
-        lt.shadowInside = mapTest.inside > zero;
-        lt.shadowTexel = decltype(lt.shadowTexel)(mapTest.texelX, mapTest.texelY, mapTest.layer);
-        lt.diffuse = diffuse;
-        lt.specular = specular;
+        traceLightStep<L>(terms->lights[static_cast<std::size_t>(i)],
+                          {lVec, vVec, d, l, v, r, nDotL, rDotV, attenuation, selfShadowValue, mapOn, mapTest, diffuse, specular});
       }
     }
   }
@@ -427,158 +447,184 @@ TWR_LANE_INLINE Vec4L<L> phongTermColourLanes(View view, const Vec3L<L>& ambient
   return Vec4L<L>(lit.specularSum, one);
 }
 
-// Shades one fragment per lane with the permutation `Features` (shade.h's ShaderFeatures).
-// `maps` holds the material's textures as the lane type reads them (members diffuse, normal,
-// specular: pointers to views, see texture_sample-inl.h); `terms`, when not null, receives
-// every intermediate value (the pixel trace; scalar lanes only, nullptr_t otherwise).
-template <typename Features, typename L, typename Maps, typename Terms>
-TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u, const Maps& maps,
-                                   Terms* terms) {
+// The pixel trace's surface terms (scalar lanes only): the frame and the material's texels.
+template <typename L, typename Terms>
+TWR_LANE_INLINE void traceSurfaceTerms(Terms* terms, const SurfaceFrameL<L>& frame, const MaterialTexelsL<L>& texels) {
+  if constexpr (!std::is_same_v<Terms, std::nullptr_t>) {
+    if (!terms) return;
+    terms->n = frame.n;
+    terms->t = frame.t;
+    terms->b = frame.b;
+    terms->albedo = texels.albedo;
+    terms->specScale = texels.specScale;
+    terms->normalTexel = frame.normalTexel;
+    terms->mappedTangent = frame.mappedTangent;
+    terms->nl = frame.nl;
+    terms->uvShifted = frame.detail.uv;
+    terms->height = frame.detail.height;
+    terms->parallaxSteps = frame.detail.steps;
+  }
+}
+
+// The environment mixed into the Phong colour, or one of its views; an environment view on a
+// surface that reads no reflection is dimmed to grey. GLSL: phong.frag's environmentStep.
+template <typename Features, typename L, typename Terms>
+TWR_LANE_INLINE Vec4L<L> environmentStepLanes(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u,
+                                              const SurfaceFrameL<L>& frame, Vec4L<L> colour, Terms* terms) {
   using S = ScalarOf<L>;
-  constexpr bool kTrace = !std::is_same_v<Terms, std::nullptr_t>;
   constexpr bool kTangentSpace = Features::kSpace == LightingSpace::Tangent;
-  const L zero(S(0)), one(S(1));
-  const bool wantHeight = kTrace || Features::kView == View::Height || u.selfShadow == SelfShadow::HeightMarch;
-  const SurfaceFrameL<L> frame = (surfaceFrameLanes<Features, L>)(f, u, maps, wantHeight);
-  const Vec3L<L>& n = frame.n;
-  const Vec3L<L>& t = frame.t;
-  const Vec3L<L>& b = frame.b;
-  const SurfaceDetailL<L>& detail = frame.detail;
-  const Vec3L<L>& nl = frame.nl;
-  const Vec3L<L>& mappedTangent = frame.mappedTangent;
-  const Vec4L<L>& normalTexel = frame.normalTexel;
-  const bool selfShadowOn = Features::kHasHeightMap && u.selfShadow != SelfShadow::None;
-
-  const MaterialTexelsL<L> texels = (materialTexelsLanes<Features, L>)(f, u, maps, detail);
-  const Vec3L<L>& albedo = texels.albedo;
-  const Vec3L<L>& specScale = texels.specScale;
-
-  if constexpr (kTrace) {
+  if (!(u.environment.cube && u.environment.readsDirections())) {
+    return isEnvironmentView(u.view) ? (dimmedColourLanes<L>)(colour) : colour;
+  }
+  const Vec3L<L> eyeVec = kTangentSpace ? f.eyeDirTangent : Vec3L<L>(u.eyePosWorld) - f.posWorld;
+  const Vec3L<L> phong(colour.x, colour.y, colour.z);
+  const EnvironmentDirectionsL<L> directions =
+      (environmentDirectionsLanes<L>)(u.environment, frame.nl, eyeVec, frame.t, frame.b, frame.n, kTangentSpace);
+  const EnvironmentTermsL<L> env = (environmentLanes<L>)(u.environment, directions, f, phong);
+  colour = Vec4L<L>(env.colour, L(S(1)));
+  if (isEnvironmentView(u.view)) {
+    const EnvironmentParameterization kind =
+        u.environment.layers ? u.environment.layers->kind : EnvironmentParameterization::Cube;
+    const int levels = u.environment.prefiltered
+                           ? u.environment.specularCube->levelCount()
+                           : (u.environment.layers ? u.environment.layers->levelCount() : u.environment.cube->levelCount());
+    colour = (environmentViewColourLanes<L>)(u.view, kind, env.reflectWorld, (clampedLodLanes<L>)(env.reflectLod, levels));
+  }
+  if constexpr (!std::is_same_v<Terms, std::nullptr_t>) {
     if (terms) {
-      terms->n = n;
-      terms->t = t;
-      terms->b = b;
-      terms->albedo = albedo;
-      terms->specScale = specScale;
-      terms->normalTexel = normalTexel;
-      terms->mappedTangent = mappedTangent;
-      terms->nl = nl;
-      terms->uvShifted = detail.uv;
-      terms->height = detail.height;
-      terms->parallaxSteps = detail.steps;
+      terms->environmentOn = true;
+      terms->reflectWorld = env.reflectWorld;
+      terms->refractWorld = env.refractWorld;
+      terms->environmentReflected = env.reflected;
+      terms->environmentTransmitted = env.transmitted;
+      terms->environmentShare = env.share;
+      terms->environmentReflectLod = env.reflectLod;
+      terms->environmentPrefiltered = u.environment.prefiltered;
+      terms->totalInternalReflection = env.totalInternal;
+      terms->phongColour = phong;
     }
   }
+  return colour;
+}
 
-  Vec4L<L> colour(zero);
-  if constexpr (Features::kView == View::Shaded) {
-    const Vec3L<L> kdAlbedo = Vec3L<L>(u.kd) * albedo;   // u.kd * albedo, diffuse's first product
-    const Vec3L<L> ksSpec = Vec3L<L>(u.ks) * specScale;  // u.ks * specScale, specular's first
-    const UnlitTermsL<L> unlitTerms = (unlitTermsLanes<Features, L>)(u, frame, albedo, kdAlbedo);
-    const Vec3L<L>& ambient = unlitTerms.ambient;
-    const Vec3L<L>& unlit = unlitTerms.unlit;
-    if constexpr (kTrace) {
-      if (terms && u.environment.cube) {
+// The shadow views (shadow-inl.h): the first shadowed light's test, or dimmed without one.
+// GLSL: phong.frag's shadowViewStep.
+template <typename L>
+TWR_LANE_INLINE Vec4L<L> shadowViewStepLanes(View view, const LightSumL<L>& lit, const Vec4L<L>& colour) {
+  if (!isShadowView(view)) return colour;
+  if (!lit.haveShadowTest) return (dimmedColourLanes<L>)(colour);
+  if (view == View::Shadow) return (shadowViewColourLanes<L>)(lit.firstShadowTest, lit.firstShadowCosine);
+  return (lightDepthColourLanes<L>)(lit.firstShadowTest);
+}
+
+// The shaded view: the unlit terms, the lights, the environment, then the shadow or Phong-term
+// view in place of the colour. GLSL: phong.frag's shadedColour.
+template <typename Features, typename L, typename Maps, typename Terms>
+TWR_LANE_INLINE Vec4L<L> shadedColourLanes(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u, const Maps& maps,
+                                           const SurfaceFrameL<L>& frame, const MaterialTexelsL<L>& texels,
+                                           Terms* terms) {
+  using S = ScalarOf<L>;
+  const Vec3L<L> kdAlbedo = Vec3L<L>(u.kd) * texels.albedo;     // u.kd * albedo, diffuse's first product
+  const Vec3L<L> ksSpec = Vec3L<L>(u.ks) * texels.specScale;    // u.ks * specScale, specular's first
+  const UnlitTermsL<L> unlitTerms = (unlitTermsLanes<Features, L>)(u, frame, texels.albedo, kdAlbedo);
+  const LightSumL<L> lit = (lightSumLanes<Features, L>)(&f, u, maps, f.posWorld, frame, kdAlbedo, ksSpec, u.shininess, terms);
+  Vec4L<L> colour(unlitTerms.unlit + lit.sum, L(S(1)));
+  if constexpr (!std::is_same_v<Terms, std::nullptr_t>) {
+    if (terms) {
+      if (u.environment.cube) {
         terms->environmentDiffuseOn = u.environment.diffuse != EnvironmentDiffuse::None;
         terms->environmentDiffuse = unlitTerms.environmentDiffuse;
       }
+      terms->ambient = unlitTerms.ambient;
+      terms->diffuseSum = lit.diffuseSum;
+      terms->specularSum = lit.specularSum;
+      terms->lightCount = u.lightCount;
     }
-    const LightSumL<L> lit = (lightSumLanes<Features, L>)(&f, u, maps, f.posWorld, frame, kdAlbedo, ksSpec, u.shininess, terms);
-    colour = Vec4L<L>(unlit + lit.sum, one);
-    if constexpr (kTrace) {
-      if (terms) {
-        terms->ambient = ambient;
-        terms->diffuseSum = lit.diffuseSum;
-        terms->specularSum = lit.specularSum;
-        terms->lightCount = u.lightCount;
-      }
-    }
-    if (u.environment.cube && u.environment.readsDirections()) {
-      const Vec3L<L> eyeVec = kTangentSpace ? f.eyeDirTangent : Vec3L<L>(u.eyePosWorld) - f.posWorld;
-      const Vec3L<L> phong(colour.x, colour.y, colour.z);
-      const EnvironmentDirectionsL<L> directions =
-          (environmentDirectionsLanes<L>)(u.environment, nl, eyeVec, t, b, n, kTangentSpace);
-      const EnvironmentTermsL<L> env = (environmentLanes<L>)(u.environment, directions, f, phong);
-      colour = Vec4L<L>(env.colour, one);
-      if (isEnvironmentView(u.shadedView)) {
-        const EnvironmentParameterization kind =
-            u.environment.layers ? u.environment.layers->kind : EnvironmentParameterization::Cube;
-        const int levels = u.environment.prefiltered
-                               ? u.environment.specularCube->levelCount()
-                               : (u.environment.layers ? u.environment.layers->levelCount() : u.environment.cube->levelCount());
-        colour = (environmentViewColourLanes<L>)(u.shadedView, kind, env.reflectWorld,
-                                                 (clampedLodLanes<L>)(env.reflectLod, levels));
-      }
-      if constexpr (kTrace) {
-        if (terms) {
-          terms->environmentOn = true;
-          terms->reflectWorld = env.reflectWorld;
-          terms->refractWorld = env.refractWorld;
-          terms->environmentReflected = env.reflected;
-          terms->environmentTransmitted = env.transmitted;
-          terms->environmentShare = env.share;
-          terms->environmentReflectLod = env.reflectLod;
-          terms->environmentPrefiltered = u.environment.prefiltered;
-          terms->totalInternalReflection = env.totalInternal;
-          terms->phongColour = phong;
-        }
-      }
-    }
-    if (isPhongTermView(u.shadedView)) {
-      colour = (phongTermColourLanes<L>)(u.shadedView, ambient, lit);
-    } else if (isShadowView(u.shadedView)) {
-      // The shadow views (shadow-inl.h): the first shadowed light's test, or dimmed without one.
-      if (!lit.haveShadowTest) {
-        colour = (dimmedColourLanes<L>)(colour);
-      } else if (u.shadedView == View::Shadow) {
-        colour = (shadowViewColourLanes<L>)(lit.firstShadowTest, lit.firstShadowCosine);
-      } else {
-        colour = (lightDepthColourLanes<L>)(lit.firstShadowTest);
-      }
-    } else if (u.shadedView != View::Shaded && !(u.environment.cube && u.environment.readsDirections())) {
-      colour = (dimmedColourLanes<L>)(colour);
-    }
-  } else if constexpr (Features::kView == View::Albedo) {
-    colour = Vec4L<L>(albedo * Vec3L<L>(u.kd), one);
-  } else if constexpr (Features::kView == View::Normal) {
-    colour = vectorAsColourLanes<L>(n);
-  } else if constexpr (Features::kView == View::Tangent) {
-    colour = vectorAsColourLanes<L>(t);
-  } else if constexpr (Features::kView == View::Bitangent) {
-    colour = vectorAsColourLanes<L>(b);
-  } else if constexpr (Features::kView == View::MappedNormal) {
-    colour = vectorAsColourLanes<L>(nl);
-  } else if constexpr (Features::kView == View::Uv) {
-    colour = Vec4L<L>(f.uv.x - floorOf(f.uv.x), f.uv.y - floorOf(f.uv.y), zero, one);
-  } else if constexpr (Features::kView == View::Depth) {
-    colour = Vec4L<L>(f.depth, f.depth, f.depth, one);
-  } else if constexpr (Features::kView == View::LightTangent || Features::kView == View::EyeTangent) {
-    constexpr bool kLight = Features::kView == View::LightTangent;
-    Vec3L<L> dirTangent(zero);  // no light: (0, 0, 0), shown as grey 0.5
-    if (!kLight || u.lightCount > 0) {
-      if constexpr (kTangentSpace) {
-        dirTangent = safeNormalize3<L>(kLight ? f.lightDirTangent[0] : f.eyeDirTangent);
-      } else {
-        const Vec3L<L> w = kLight ? toLightLanes<L>(u.lights[0], f.posWorld) : Vec3L<L>(u.eyePosWorld) - f.posWorld;
-        dirTangent = safeNormalize3<L>(Vec3L<L>(dot3<L>(t, w), dot3<L>(b, w), dot3<L>(n, w)));
-      }
-    }
-    colour = vectorAsColourLanes<L>(dirTangent);
-  } else if constexpr (Features::kView == View::Height) {
-    colour = Vec4L<L>(detail.height, detail.height, detail.height, one);
-  } else if constexpr (Features::kView == View::ParallaxOffset) {
-    const L gain(static_cast<S>(kParallaxOffsetViewGain)), half(S(0.5));
-    colour = Vec4L<L>(half + (detail.uv.x - f.uv.x) * gain, half + (detail.uv.y - f.uv.y) * gain, half, one);
-  } else if constexpr (Features::kView == View::ParallaxSteps) {
-    const L most(static_cast<S>(u.layerCap + u.refinementSteps));
-    colour = heatColourLanes<L>(detail.steps / most);
-  } else if constexpr (Features::kView == View::SelfShadow) {
-    L shadow = one;
-    if (selfShadowOn && u.lightCount > 0) {
-      const Vec3L<L> lVec = kTangentSpace ? f.lightDirTangent[0] : toLightLanes<L>(u.lights[0], f.posWorld);
-      shadow = selfShadowLanes<L>(maps, u, f, detail, tangentFromLightingLanes<L>(lVec, t, b, n, kTangentSpace));
-    }
-    colour = Vec4L<L>(shadow, shadow, shadow, one);
   }
+  colour = (environmentStepLanes<Features, L>)(f, u, frame, colour, terms);
+  colour = (shadowViewStepLanes<L>)(u.view, lit, colour);
+  if (isPhongTermView(u.view)) colour = (phongTermColourLanes<L>)(u.view, unlitTerms.ambient, lit);
+  return colour;
+}
+
+// A tangent-space direction view: the first light's or the eye's direction in the fragment's
+// tangent frame; no light gives (0, 0, 0), shown as grey 0.5. GLSL: phong.frag's
+// tangentDirectionColour.
+template <typename Features, typename L>
+TWR_LANE_INLINE Vec4L<L> tangentDirectionColourLanes(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u,
+                                                     const SurfaceFrameL<L>& s, bool toLight) {
+  using S = ScalarOf<L>;
+  Vec3L<L> dirTangent(L(S(0)));
+  if (!toLight || u.lightCount > 0) {
+    if constexpr (Features::kSpace == LightingSpace::Tangent) {
+      dirTangent = safeNormalize3<L>(toLight ? f.lightDirTangent[0] : f.eyeDirTangent);
+    } else {
+      const Vec3L<L> w = toLight ? toLightLanes<L>(u.lights[0], f.posWorld) : Vec3L<L>(u.eyePosWorld) - f.posWorld;
+      dirTangent = safeNormalize3<L>(Vec3L<L>(dot3<L>(s.t, w), dot3<L>(s.b, w), dot3<L>(s.n, w)));
+    }
+  }
+  return vectorAsColourLanes<L>(dirTangent);
+}
+
+// The first light's self-shadowing factor as grey (1 without self-shadowing or lights).
+// GLSL: phong.frag's selfShadowColour.
+template <typename Features, typename L, typename Maps>
+TWR_LANE_INLINE Vec4L<L> selfShadowColourLanes(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u,
+                                               const Maps& maps, const SurfaceFrameL<L>& s) {
+  using S = ScalarOf<L>;
+  constexpr bool kTangentSpace = Features::kSpace == LightingSpace::Tangent;
+  L shadow(S(1));
+  if (Features::kHasHeightMap && u.selfShadow != SelfShadow::None && u.lightCount > 0) {
+    const Vec3L<L> lVec0 = kTangentSpace ? f.lightDirTangent[0] : toLightLanes<L>(u.lights[0], f.posWorld);
+    shadow = selfShadowLanes<L>(maps, u, f, s.detail, tangentFromLightingLanes<L>(lVec0, s.t, s.b, s.n, kTangentSpace));
+  }
+  return Vec4L<L>(shadow, shadow, shadow, L(S(1)));
+}
+
+// The debug views, one value of the surface as a colour (docs/shading.md); a branch on
+// the view, the same for every lane. GLSL: phong.frag's debugViewColour, in the same order.
+template <typename Features, typename L, typename Maps>
+TWR_LANE_INLINE Vec4L<L> debugViewColourLanes(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u,
+                                              const Maps& maps, const SurfaceFrameL<L>& s,
+                                              const MaterialTexelsL<L>& m) {
+  using S = ScalarOf<L>;
+  const L zero(S(0)), one(S(1)), half(S(0.5));
+  switch (u.view) {
+    case View::Albedo: return Vec4L<L>(m.albedo * Vec3L<L>(u.kd), one);
+    case View::Normal: return vectorAsColourLanes<L>(s.n);
+    case View::Tangent: return vectorAsColourLanes<L>(s.t);
+    case View::Bitangent: return vectorAsColourLanes<L>(s.b);
+    case View::MappedNormal: return vectorAsColourLanes<L>(s.nl);
+    case View::Uv: return Vec4L<L>(f.uv.x - floorOf(f.uv.x), f.uv.y - floorOf(f.uv.y), zero, one);
+    case View::Depth: return Vec4L<L>(f.depth, f.depth, f.depth, one);
+    case View::LightTangent: return (tangentDirectionColourLanes<Features, L>)(f, u, s, true);
+    case View::EyeTangent: return (tangentDirectionColourLanes<Features, L>)(f, u, s, false);
+    case View::Height: return Vec4L<L>(s.detail.height, s.detail.height, s.detail.height, one);
+    case View::ParallaxOffset: {
+      const L gain(static_cast<S>(kParallaxOffsetViewGain));
+      return Vec4L<L>(half + (s.detail.uv.x - f.uv.x) * gain, half + (s.detail.uv.y - f.uv.y) * gain, half, one);
+    }
+    case View::ParallaxSteps: return heatColourLanes<L>(s.detail.steps / L(static_cast<S>(u.layerCap + u.refinementSteps)));
+    case View::SelfShadow: return (selfShadowColourLanes<Features, L>)(f, u, maps, s);
+    default: return Vec4L<L>(zero, zero, zero, one);  // fragmentViewOf leaves no other view here
+  }
+}
+
+// Shades one fragment per lane with the permutation `Features` (shade.h's ShaderFeatures) in
+// the view u.view. `maps` holds the material's textures as the lane type reads them (members
+// diffuse, normal, specular: pointers to views, see texture_sample-inl.h); `terms`, when not
+// null, receives every intermediate value (the pixel trace; scalar lanes only, nullptr_t
+// otherwise). GLSL: phong.frag's main.
+template <typename Features, typename L, typename Maps, typename Terms>
+TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u, const Maps& maps,
+                                            Terms* terms) {
+  constexpr bool kTrace = !std::is_same_v<Terms, std::nullptr_t>;
+  const bool wantHeight = kTrace || u.view == View::Height || u.selfShadow == SelfShadow::HeightMarch;
+  const SurfaceFrameL<L> frame = (surfaceFrameLanes<Features, L>)(f, u, maps, wantHeight);
+  const MaterialTexelsL<L> texels = (materialTexelsLanes<Features, L>)(f, u, maps, frame.detail);
+  traceSurfaceTerms<L>(terms, frame, texels);
+  Vec4L<L> colour = isShadedView(u.view) ? (shadedColourLanes<Features, L>)(f, u, maps, frame, texels, terms)
+                                         : (debugViewColourLanes<Features, L>)(f, u, maps, frame, texels);
   colour = clampUnit4<L>(colour);
   if constexpr (kTrace) {
     if (terms) terms->colour = colour;

@@ -76,7 +76,7 @@ ShadeUniformsT<T> makeShadeUniforms(const Material& material, const Scene& scene
     lu.spotCosRange = static_cast<T>(spot.cone.y);
   }
   u.eyePosWorld = Vec3T<T>(scene.camera.position);
-  u.shadedView = isShadedView(settings.view) ? settings.view : View::Shaded;
+  u.view = fragmentViewOf(settings.view);
   // The environment: read only when the scene has one and the material mixes it in.
   if (materialReadsEnvironment(material, scene)) {
     EnvironmentUniformsT<T>& e = u.environment;

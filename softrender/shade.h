@@ -86,9 +86,10 @@ struct ShadeUniformsT {
   // (it adds a few reads per fragment, not a loop, and doubling every kernel doubles the
   // fast path's build); environment.cube is null when the material does not use one.
   EnvironmentUniformsT<T> environment;
-  // Shaded, or the environment, shadow or Phong-term view the shaded permutation draws instead
-  // of the colour (isShadedView; environment_view-inl.h): a runtime branch, not more kernels.
-  View shadedView = View::Shaded;
+  // The view this draw's fragments show (fragmentViewOf): the shaded colour, the environment,
+  // shadow or Phong-term value in its place, or a debug view. A runtime branch, not a kernel:
+  // every view is drawn by the permutation of the material's features.
+  View view = View::Shaded;
   Vec3T<T> ambient{T(0)};  // Ia
   std::array<LightUniformT<T>, kMaxLights> lights{};
   int lightCount = 0;  // in [0, kMaxLights]
@@ -169,18 +170,28 @@ Vec4T<T> vectorAsColour(Vec3T<T> v) {
   return Vec4T<T>((v + T(1)) * T(0.5), T(1));
 }
 
-// The compile-time feature set of one shader permutation.
+// The compile-time feature set of one shader permutation: what changes the hot loop (the maps
+// it reads, the lighting space). The view is not one (ShadeUniformsT::view): a debug view
+// costs a branch per fragment, not a kernel per view.
 // HeightMap: the material's surface detail reads its height map (surface_detail-inl.h); the
 // method itself is a uniform (one branch per draw item), as each adds a loop, not a variant.
-template <bool DiffuseMap, bool NormalMap, bool SpecularMap, LightingSpace Space, View ViewMode, bool HeightMap = false>
+template <bool DiffuseMap, bool NormalMap, bool SpecularMap, LightingSpace Space, bool HeightMap = false>
 struct ShaderFeatures {
   static constexpr bool kHasHeightMap = HeightMap;
   static constexpr bool kHasDiffuseMap = DiffuseMap;
   static constexpr bool kHasNormalMap = NormalMap;
   static constexpr bool kHasSpecularMap = SpecularMap;
   static constexpr LightingSpace kSpace = Space;
-  static constexpr View kView = ViewMode;
 };
+
+// The view a fragment shows for the frame's view: the reflection views draw a shaded frame the
+// reflection pass then writes over (isSsrView); mip_level draws as albedo, its maps swapped for
+// coloured levels (scene/mip_level_view.h).
+constexpr View fragmentViewOf(View v) {
+  if (isSsrView(v)) return View::Shaded;
+  if (v == View::MipLevel) return View::Albedo;
+  return v;
+}
 
 // The material's maps as the scalar lanes read them (null where the uniforms have none).
 struct TextureMaps {
@@ -211,7 +222,7 @@ Vec4T<T> shadeFragment(const FragmentT<T>& f, const ShadeUniformsT<T>& u, std::t
 template <typename Features, typename T>
 void setEnvironmentDifferences(const VaryingPlanesT<T>& planes, int px, int py, const ShadeUniformsT<T>& u,
                                FragmentT<T>& f) {
-  if constexpr (Features::kView == View::Shaded) {
+  if (isShadedView(u.view)) {
     if (!u.environment.cube) return;
     setEnvironmentDifferencesLanes<Features, T>(
         planes, static_cast<T>(px), static_cast<T>(py), static_cast<T>(px & ~1), static_cast<T>(py & ~1), u,
@@ -219,7 +230,8 @@ void setEnvironmentDifferences(const VaryingPlanesT<T>& planes, int px, int py, 
   }
 }
 
-// Which permutation a draw item needs (runtime values of the template parameters).
+// Which permutation a draw item needs (runtime values of the template parameters), and the
+// view, which decides what the permutation needs to read.
 struct ShaderKey {
   bool diffuseMap = false, normalMap = false, specularMap = false, heightMap = false;
   LightingSpace space = LightingSpace::World;
@@ -228,29 +240,22 @@ struct ShaderKey {
 
 // The key with the features its view does not read cleared, so equal pictures share one
 // permutation: albedo reads the diffuse map; mapped_normal the normal map; shaded everything;
-// the height views and a parallax method (which moves every map's uv) the height map.
+// the height views and a parallax method (which moves every map's uv) the height map. A view
+// that reads no lighting-space vector draws the same in both spaces: world's permutation.
 constexpr bool viewReadsHeightMap(View v) {
   return isShadedView(v) || isSsrView(v) || v == View::Albedo || v == View::MappedNormal || isHeightView(v);
 }
+constexpr bool viewReadsLightingSpace(View v) {
+  return v == View::Shaded || v == View::MappedNormal || v == View::LightTangent || v == View::EyeTangent;
+}
 inline ShaderKey canonicalShaderKey(ShaderKey key) {
+  if (isShadedView(key.view) || isSsrView(key.view)) {
+    // The environment, shadow and Phong-term views read what the shaded view reads; the
+    // reflection views draw a shaded frame the reflection pass then writes over.
+    key.view = View::Shaded;
+  }
   switch (key.view) {
-    case View::Shaded:
-    case View::ReflectDir:
-    case View::EnvFace:
-    case View::EnvLod:
-    case View::Shadow:
-    case View::LightDepth:
-    case View::SsrHit:
-    case View::SsrSteps:
-    case View::SsrUv:
-    case View::HizLevel:
-    case View::Ambient:
-    case View::Diffuse:
-    case View::Specular:
-      // The environment, shadow and Phong-term views share the shaded permutation; the reflection views
-      // draw a shaded frame the reflection pass then writes over.
-      key.view = View::Shaded;
-      break;
+    case View::Shaded: break;
     case View::Albedo:
     case View::MipLevel:
       key.normalMap = key.specularMap = false;
@@ -264,6 +269,7 @@ inline ShaderKey canonicalShaderKey(ShaderKey key) {
       break;
     default: key.diffuseMap = key.normalMap = key.specularMap = key.heightMap = false; break;
   }
+  if (!key.heightMap && !viewReadsLightingSpace(key.view)) key.space = LightingSpace::World;
   return key;
 }
 
@@ -280,88 +286,33 @@ ShaderKey shaderKeyFor(const ShadeUniformsT<T>& uniforms, const RenderSettings& 
 }
 
 // Calls body.template operator()<ShaderFeatures<...>>() for the permutation `key` names: the
-// one runtime branch per draw item, so nothing per pixel is dispatched at run time. A debug
-// view is instantiated only for the features it reads (canonicalShaderKey clears the others).
-// kShadedOnly: the shaded permutations alone (the deferred pipeline's G-buffer pass, which
-// runs for the shaded view only), so a caller that needs no other view compiles no other.
-template <bool kShadedOnly = false, typename Body>
+// one runtime branch per draw item, so nothing per pixel is dispatched at run time. The
+// features a view does not read are off (canonicalShaderKey), so a debug view runs the
+// permutation of fewer maps: 2^5 permutations in all, whatever the view.
+template <typename Body>
 void withShaderFeatures(const ShaderKey& keyIn, Body&& body) {
   const ShaderKey key = canonicalShaderKey(keyIn);
-  constexpr LightingSpace kWorld = LightingSpace::World, kTangent = LightingSpace::Tangent;
-  auto withSpace = [&]<bool D, bool N, bool S, View V, bool H>() {
-    // Views that read no lighting-space vector draw the same in both spaces: one permutation.
-    constexpr bool kSpaceFree = !H && V != View::Shaded && V != View::MappedNormal && V != View::LightTangent &&
-                                V != View::EyeTangent;
-    if constexpr (kSpaceFree) {
-      body.template operator()<ShaderFeatures<D, N, S, kWorld, V, H>>();
-    } else if (key.space == kTangent) {
-      body.template operator()<ShaderFeatures<D, N, S, kTangent, V, H>>();
+  auto withSpace = [&]<bool D, bool N, bool S, bool H>() {
+    if (key.space == LightingSpace::Tangent) {
+      body.template operator()<ShaderFeatures<D, N, S, LightingSpace::Tangent, H>>();
     } else {
-      body.template operator()<ShaderFeatures<D, N, S, kWorld, V, H>>();
+      body.template operator()<ShaderFeatures<D, N, S, LightingSpace::World, H>>();
     }
   };
-  // Each level branches only where the view reads that feature (else it is off, compiled out).
-  auto withHeight = [&]<bool D, bool N, bool S, View V>() {
-    if constexpr (viewReadsHeightMap(V)) {
-      if (key.heightMap) return withSpace.template operator()<D, N, S, V, true>();
-    }
-    withSpace.template operator()<D, N, S, V, false>();
+  auto withHeight = [&]<bool D, bool N, bool S>() {
+    if (key.heightMap) return withSpace.template operator()<D, N, S, true>();
+    withSpace.template operator()<D, N, S, false>();
   };
-  auto withDiffuse = [&]<bool N, bool S, View V>() {
-    if constexpr (V == View::Shaded || V == View::Albedo) {
-      if (key.diffuseMap) return withHeight.template operator()<true, N, S, V>();
-    }
-    withHeight.template operator()<false, N, S, V>();
+  auto withDiffuse = [&]<bool N, bool S>() {
+    if (key.diffuseMap) return withHeight.template operator()<true, N, S>();
+    withHeight.template operator()<false, N, S>();
   };
-  auto withNormal = [&]<bool S, View V>() {
-    if constexpr (V == View::Shaded || V == View::MappedNormal) {
-      if (key.normalMap) return withDiffuse.template operator()<true, S, V>();
-    }
-    withDiffuse.template operator()<false, S, V>();
+  auto withNormal = [&]<bool S>() {
+    if (key.normalMap) return withDiffuse.template operator()<true, S>();
+    withDiffuse.template operator()<false, S>();
   };
-  auto withAll = [&]<View V>() {
-    if constexpr (V == View::Shaded) {
-      if (key.specularMap) return withNormal.template operator()<true, V>();
-    }
-    withNormal.template operator()<false, V>();
-  };
-  if constexpr (kShadedOnly) {
-    withAll.template operator()<View::Shaded>();
-    return;
-  }
-  switch (key.view) {
-    case View::Shaded: withAll.template operator()<View::Shaded>(); break;
-    case View::Albedo:
-    case View::MipLevel:  // drawn as albedo (scene/mip_level_view.h)
-      withAll.template operator()<View::Albedo>();
-      break;
-    case View::Normal: withAll.template operator()<View::Normal>(); break;
-    case View::Tangent: withAll.template operator()<View::Tangent>(); break;
-    case View::Bitangent: withAll.template operator()<View::Bitangent>(); break;
-    case View::MappedNormal: withAll.template operator()<View::MappedNormal>(); break;
-    case View::Uv: withAll.template operator()<View::Uv>(); break;
-    case View::Depth: withAll.template operator()<View::Depth>(); break;
-    case View::LightTangent: withAll.template operator()<View::LightTangent>(); break;
-    case View::EyeTangent: withAll.template operator()<View::EyeTangent>(); break;
-    case View::Height: withAll.template operator()<View::Height>(); break;
-    case View::ParallaxOffset: withAll.template operator()<View::ParallaxOffset>(); break;
-    case View::ParallaxSteps: withAll.template operator()<View::ParallaxSteps>(); break;
-    case View::SelfShadow: withAll.template operator()<View::SelfShadow>(); break;
-    case View::ReflectDir:
-    case View::EnvFace:
-    case View::EnvLod:  // drawn by the shaded permutation (ShadeUniformsT::shadedView)
-    case View::Shadow:
-    case View::LightDepth:
-    case View::SsrHit:  // a shaded frame the reflection pass writes over (isSsrView)
-    case View::SsrSteps:
-    case View::SsrUv:
-    case View::HizLevel:
-    case View::Ambient:  // the term in place of the colour (isPhongTermView)
-    case View::Diffuse:
-    case View::Specular:
-      withAll.template operator()<View::Shaded>();
-      break;
-  }
+  if (key.specularMap) return withNormal.template operator()<true>();
+  withNormal.template operator()<false>();
 }
 
 // Shades with the permutation `key` names (one runtime dispatch; for single fragments such

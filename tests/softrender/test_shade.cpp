@@ -12,7 +12,7 @@ namespace {
 
 constexpr float kEps = 1e-5f;
 
-using PlainShaded = ShaderFeatures<false, false, false, LightingSpace::World, View::Shaded>;
+using PlainShaded = ShaderFeatures<false, false, false, LightingSpace::World>;
 
 // Surface at the origin facing +z, eye on +z.
 Fragment surfaceFragment() {
@@ -168,6 +168,7 @@ TEST(Shade, DegenerateFrameNeverMakesNaN) {
       key.normalMap = true;
       key.space = space;
       key.view = view;
+      u.view = fragmentViewOf(view);
       const vec4 c = shadeFragmentDynamic(key, f, u, nullptr);
       for (int i = 0; i < 4; ++i) EXPECT_TRUE(std::isfinite(c[i])) << toString(view);
     }
@@ -182,11 +183,11 @@ TEST(Shade, NormalMapTiltsTheNormalAlongTheTangentFrame) {
   ShadeUniforms u = uniformsWithLight({0, 0, 2}, {1, 0, 0});
   u.normalMap = &map;
   ShadeTerms terms;
-  shadeFragment<ShaderFeatures<false, true, false, LightingSpace::World, View::Shaded>>(surfaceFragment(), u, &terms);
+  shadeFragment<ShaderFeatures<false, true, false, LightingSpace::World>>(surfaceFragment(), u, &terms);
   EXPECT_NEAR(terms.nl.x, 1.0f, 1e-4f);
   EXPECT_NEAR(terms.lights[0].nDotL, terms.nl.z, kEps);
   // Tangent lighting space: Nl is the mapped vector itself.
-  shadeFragment<ShaderFeatures<false, true, false, LightingSpace::Tangent, View::Shaded>>(surfaceFragment(), u, &terms);
+  shadeFragment<ShaderFeatures<false, true, false, LightingSpace::Tangent>>(surfaceFragment(), u, &terms);
   EXPECT_NEAR(terms.nl.x, terms.mappedTangent.x, kEps);
   EXPECT_NEAR(terms.mappedTangent.x, 1.0f, 1e-4f);
 }
@@ -196,7 +197,7 @@ TEST(Shade, TangentSpaceUsesTheInterpolatedDirections) {
   f.lightDirTangent[0] = vec3(0, 0, 3);  // straight above in tangent space
   f.eyeDirTangent = vec3(0, 0, 7);
   ShadeUniforms u = uniformsWithLight({0, 0, 2}, {1, 0, 0});  // d = 2 from posWorld, If = 1
-  const vec4 c = shadeFragment<ShaderFeatures<false, false, false, LightingSpace::Tangent, View::Shaded>>(f, u, nullptr);
+  const vec4 c = shadeFragment<ShaderFeatures<false, false, false, LightingSpace::Tangent>>(f, u, nullptr);
   EXPECT_NEAR(c.r, 0.1f + 0.5f + 0.25f, kEps);
 }
 
@@ -208,7 +209,7 @@ TEST(Shade, DiffuseAndSpecularMapsScaleTheirTerms) {
   ShadeUniforms u = uniformsWithLight({0, 0, 2}, {1, 0, 0});
   u.diffuseMap = &albedo;
   u.specularMap = &spec;
-  const vec4 c = shadeFragment<ShaderFeatures<true, false, true, LightingSpace::World, View::Shaded>>(surfaceFragment(), u, nullptr);
+  const vec4 c = shadeFragment<ShaderFeatures<true, false, true, LightingSpace::World>>(surfaceFragment(), u, nullptr);
   // r: 0.2*1*0.5 + 0.5*1 + 0.25*0 = 0.6; g: 0 + 0 + 0.25*1 = 0.25; b: 0.2*0.2*0.5 + 0.5*0.2 = 0.12.
   EXPECT_NEAR(c.r, 0.6f, kEps);
   EXPECT_NEAR(c.g, 0.25f, kEps);
@@ -228,7 +229,7 @@ TEST(Shade, PhongTermViewsShowEachTermAloneSummedOverTheLights) {
   const float ambient = 0.1f, diffuse = 0.5f / 3.0f + 0.5f * s, specular = 0.25f / 3.0f + 0.25f / 16.0f;
   ShaderKey key;
   const auto viewColour = [&](View v) {
-    u.shadedView = v;
+    u.view = v;
     key.view = v;
     return shadeFragmentDynamic(key, surfaceFragment(), u, nullptr);
   };
@@ -239,7 +240,7 @@ TEST(Shade, PhongTermViewsShowEachTermAloneSummedOverTheLights) {
   EXPECT_NEAR(viewColour(View::Shaded).g, std::min(ambient + diffuse + specular, 1.0f), kEps);
   // The trace keeps the sums the views show.
   ShadeTerms terms;
-  u.shadedView = View::Diffuse;
+  u.view = View::Diffuse;
   shadeFragment<PlainShaded>(surfaceFragment(), u, &terms);
   EXPECT_NEAR(terms.diffuseSum.b, diffuse, kEps);
   EXPECT_NEAR(terms.specularSum.b, specular, kEps);
@@ -247,13 +248,14 @@ TEST(Shade, PhongTermViewsShowEachTermAloneSummedOverTheLights) {
 }
 
 TEST(Shade, DebugViews) {
-  const ShadeUniforms u = uniformsWithLight({0, 3, 0}, {1, 0, 0});
+  ShadeUniforms u = uniformsWithLight({0, 3, 0}, {1, 0, 0});
   Fragment f = surfaceFragment();
   f.uv = vec2(2.25f, -0.25f);
   f.depth = 0.3f;
   auto view = [&](View v) {
     ShaderKey key;
     key.view = v;
+    u.view = v;
     return shadeFragmentDynamic(key, f, u, nullptr);
   };
   EXPECT_EQ(view(View::Normal), vec4(0.5f, 0.5f, 1.0f, 1.0f));
@@ -272,6 +274,7 @@ TEST(Shade, DebugViews) {
   EXPECT_NEAR(eye.b, 1.0f, kEps);
   ShadeUniforms dark = u;
   dark.lightCount = 0;
+  dark.view = View::LightTangent;
   ShaderKey key;
   key.view = View::LightTangent;
   EXPECT_EQ(shadeFragmentDynamic(key, f, dark, nullptr), vec4(0.5f, 0.5f, 0.5f, 1.0f));
