@@ -9,6 +9,55 @@
 
 namespace twr {
 
+// One light as the shading reads it: its vector (w 1 for a point light, 0 for a directional
+// one), colours, attenuation and spot cone.
+template <typename T>
+LightUniformT<T> lightUniformOf(const Light& light) {
+  LightUniformT<T> lu{};
+  lu.vectorWorld = Vec4T<T>(lightVectorWorld(light));
+  lu.diffuse = Vec3T<T>(light.diffuse);
+  lu.specular = Vec3T<T>(light.specular);
+  lu.attenuation = Vec3T<T>(attenuationUsed(light));
+  const SpotUniform spot = spotUniformOf(light);
+  lu.spot = spot.axis.w > 0.0f;
+  lu.spotAxis = Vec3T<T>(vec3(spot.axis));
+  lu.spotCosOuter = static_cast<T>(spot.cone.x);
+  lu.spotCosRange = static_cast<T>(spot.cone.y);
+  return lu;
+}
+
+// The environment as a material that reads it sees it: its maps, what it reflects or
+// refracts, and its diffuse light.
+template <typename T>
+EnvironmentUniformsT<T> environmentUniformsOf(const Material& material, const Environment& env) {
+  EnvironmentUniformsT<T> e{};
+  e.cube = env.cube.get();
+  e.layers = env.layers.get();
+  e.intensity = static_cast<T>(env.intensity);
+  const EnvironmentSpecular specular = environmentSpecularOf(material, env);
+  e.reflects = specular != EnvironmentSpecular::None;
+  if (specular == EnvironmentSpecular::Prefiltered) {
+    // The LOD from the shininess, in double, rounded once: GL receives the same float.
+    e.prefiltered = true;
+    e.specularCube = env.specular.get();
+    e.specularLayers = env.specularLayers.get();
+    e.specularLod = static_cast<T>(static_cast<float>(specularLodFromShininess(*env.specular, material.shininess)));
+  }
+  e.refraction = material.refractionIndex > 0.0f;
+  e.schlick = material.fresnel == Fresnel::Schlick;
+  e.reflectivity = static_cast<T>(material.reflectivity);
+  e.eta = static_cast<T>(e.refraction ? material.refractionIndex : 1.0f);
+  // The diffuse light as prefiltered at load (prefilterEnvironmentLight).
+  e.diffuse = environmentDiffuseOf(material, env);
+  if (e.diffuse == EnvironmentDiffuse::IrradianceMap) {
+    e.irradiance = env.irradiance.get();
+    e.irradianceLayers = env.irradianceLayers.get();
+  } else if (e.diffuse == EnvironmentDiffuse::Sh9) {
+    for (std::size_t i = 0; i < 9; ++i) e.sh9[i] = Vec3T<T>(env.sh9->c[i]);
+  }
+  return e;
+}
+
 template <typename T>
 ShadeUniformsT<T> makeShadeUniforms(const Material& material, const Scene& scene, const RenderSettings& settings) {
   ShadeUniformsT<T> u;
@@ -63,49 +112,12 @@ ShadeUniformsT<T> makeShadeUniforms(const Material& material, const Scene& scene
   u.ambient = Vec3T<T>(scene.ambient);
   u.lightCount = std::min(static_cast<int>(scene.lights.size()), kMaxLights);
   for (int i = 0; i < u.lightCount; ++i) {
-    const Light& light = scene.lights[static_cast<std::size_t>(i)];
-    LightUniformT<T>& lu = u.lights[static_cast<std::size_t>(i)];
-    lu.vectorWorld = Vec4T<T>(lightVectorWorld(light));
-    lu.diffuse = Vec3T<T>(light.diffuse);
-    lu.specular = Vec3T<T>(light.specular);
-    lu.attenuation = Vec3T<T>(attenuationUsed(light));
-    const SpotUniform spot = spotUniformOf(light);
-    lu.spot = spot.axis.w > 0.0f;
-    lu.spotAxis = Vec3T<T>(vec3(spot.axis));
-    lu.spotCosOuter = static_cast<T>(spot.cone.x);
-    lu.spotCosRange = static_cast<T>(spot.cone.y);
+    u.lights[static_cast<std::size_t>(i)] = lightUniformOf<T>(scene.lights[static_cast<std::size_t>(i)]);
   }
   u.eyePosWorld = Vec3T<T>(scene.camera.position);
   u.view = fragmentViewOf(settings.view);
   // The environment: read only when the scene has one and the material mixes it in.
-  if (materialReadsEnvironment(material, scene)) {
-    EnvironmentUniformsT<T>& e = u.environment;
-    e.cube = scene.environment->cube.get();
-    e.layers = scene.environment->layers.get();
-    e.intensity = static_cast<T>(scene.environment->intensity);
-    const Environment& env = *scene.environment;
-    const EnvironmentSpecular specular = environmentSpecularOf(material, env);
-    e.reflects = specular != EnvironmentSpecular::None;
-    if (specular == EnvironmentSpecular::Prefiltered) {
-      // The LOD from the shininess, in double, rounded once: GL receives the same float.
-      e.prefiltered = true;
-      e.specularCube = env.specular.get();
-      e.specularLayers = env.specularLayers.get();
-      e.specularLod = static_cast<T>(static_cast<float>(specularLodFromShininess(*env.specular, material.shininess)));
-    }
-    e.refraction = material.refractionIndex > 0.0f;
-    e.schlick = material.fresnel == Fresnel::Schlick;
-    e.reflectivity = static_cast<T>(material.reflectivity);
-    e.eta = static_cast<T>(e.refraction ? material.refractionIndex : 1.0f);
-    // The diffuse light as prefiltered at load (prefilterEnvironmentLight).
-    e.diffuse = environmentDiffuseOf(material, env);
-    if (e.diffuse == EnvironmentDiffuse::IrradianceMap) {
-      e.irradiance = env.irradiance.get();
-      e.irradianceLayers = env.irradianceLayers.get();
-    } else if (e.diffuse == EnvironmentDiffuse::Sh9) {
-      for (std::size_t i = 0; i < 9; ++i) e.sh9[i] = Vec3T<T>(env.sh9->c[i]);
-    }
-  }
+  if (materialReadsEnvironment(material, scene)) u.environment = environmentUniformsOf<T>(material, *scene.environment);
   return u;
 }
 

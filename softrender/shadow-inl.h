@@ -44,58 +44,71 @@ struct ShadowTestL {
 
 // The test at posWorld; n is the surface's unit normal and l the unit vector to the light, both
 // in world space (the slope term's angle).
+// Where a point lies in a shadow map: (s, t) in [0, 1), its depth z, the layer; one texel's
+// width in world units and the map's depth units per world unit there; whether it lies in
+// front of a spot light (a spot map's points behind the light are outside it).
 template <typename L>
-TWR_LANE_INLINE ShadowTestL<L> shadowTestLanes(const ShadowUniformT<ScalarOf<L>>& u, const Vec3L<L>& posWorld,
-                                               const Vec3L<L>& n, const Vec3L<L>& l) {
+struct ShadowMapPointL {
+  L s, t, z, layer, texelWorld, depthPerWorld;
+  MaskOf<L> inFront;
+};
+template <typename L>
+TWR_LANE_INLINE ShadowMapPointL<L> shadowMapPointLanes(const ShadowUniformT<ScalarOf<L>>& u, const Vec3L<L>& posWorld) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), half(S(0.5));
-  const L cosTheta = maxOf(dot3<L>(n, l), L(static_cast<S>(kMinShadowCosine)));
-  const L sinTheta = sqrtOf(maxOf(one - cosTheta * cosTheta, zero));
-  const L tanTheta = minOf(sinTheta / cosTheta, L(static_cast<S>(kMaxShadowSlopeTangent)));
-
-  // Where the fragment lies in the map: (s, t) in [0, 1), its depth z, the layer; one texel's
-  // width in world units and the map's depth units per world unit there.
-  L s, t, z, layer, texelWorld, depthPerWorld;
-  MaskOf<L> inFront = one > zero;  // all true; a spot map's points behind the light are outside it
+  ShadowMapPointL<L> p{zero, zero, zero, zero, zero, zero, one > zero};  // inFront: all true
   if (u.kind == ShadowKind::Orthographic || u.kind == ShadowKind::Perspective) {
     const Mat4T<S>& m = u.clipFromWorld;  // columns summed from the left (orthographic: w = 1, vertex.h's transformPoint)
     const L x = ((L(m[0][0]) * posWorld.x + L(m[1][0]) * posWorld.y) + L(m[2][0]) * posWorld.z) + L(m[3][0]);
     const L y = ((L(m[0][1]) * posWorld.x + L(m[1][1]) * posWorld.y) + L(m[2][1]) * posWorld.z) + L(m[3][1]);
     if (u.kind == ShadowKind::Orthographic) {
       const L zc = ((L(m[0][2]) * posWorld.x + L(m[1][2]) * posWorld.y) + L(m[2][2]) * posWorld.z) + L(m[3][2]);
-      s = x * half + half;
-      t = y * half + half;
-      z = zc * half + half;
-      texelWorld = L(u.texelWorld);
-      depthPerWorld = L(u.depthPerWorld);
+      p.s = x * half + half;
+      p.t = y * half + half;
+      p.z = zc * half + half;
+      p.texelWorld = L(u.texelWorld);
+      p.depthPerWorld = L(u.depthPerWorld);
     } else {
       // Spot: w is the distance along the cone's axis, m; the depth as a cube face's at m.
       const L w = ((L(m[0][3]) * posWorld.x + L(m[1][3]) * posWorld.y) + L(m[2][3]) * posWorld.z) + L(m[3][3]);
-      inFront = w > zero;
-      const L safeW = select(inFront, w, one);
-      s = (x / safeW) * half + half;
-      t = (y / safeW) * half + half;
-      z = half * ((L(u.depthB) - L(u.depthA) * safeW) / safeW) + half;
-      texelWorld = L(u.texelWorld) * safeW;
-      depthPerWorld = L(u.depthPerWorld) / (safeW * safeW);
+      p.inFront = w > zero;
+      const L safeW = select(p.inFront, w, one);
+      p.s = (x / safeW) * half + half;
+      p.t = (y / safeW) * half + half;
+      p.z = half * ((L(u.depthB) - L(u.depthA) * safeW) / safeW) + half;
+      p.texelWorld = L(u.texelWorld) * safeW;
+      p.depthPerWorld = L(u.depthPerWorld) / (safeW * safeW);
     }
-    layer = zero;
-  } else {
-    const Vec3L<L> d = posWorld - Vec3L<L>(u.lightPosWorld);
-    const CubeCoordL<L> c = (cubeCoordLanes<L>)(d);
-    const L ma = maxOf(absOf(d.z), maxOf(absOf(d.x), absOf(d.y)));
-    s = c.s;
-    t = c.t;
-    z = half * ((L(u.depthB) - L(u.depthA) * ma) / ma) + half;
-    layer = c.face;
-    texelWorld = L(u.texelWorld) * ma;
-    depthPerWorld = L(u.depthPerWorld) / (ma * ma);
+    return p;
   }
+  const Vec3L<L> d = posWorld - Vec3L<L>(u.lightPosWorld);
+  const CubeCoordL<L> c = (cubeCoordLanes<L>)(d);
+  const L ma = maxOf(absOf(d.z), maxOf(absOf(d.x), absOf(d.y)));
+  p.s = c.s;
+  p.t = c.t;
+  p.z = half * ((L(u.depthB) - L(u.depthA) * ma) / ma) + half;
+  p.layer = c.face;
+  p.texelWorld = L(u.texelWorld) * ma;
+  p.depthPerWorld = L(u.depthPerWorld) / (ma * ma);
+  return p;
+}
+
+template <typename L>
+TWR_LANE_INLINE ShadowTestL<L> shadowTestLanes(const ShadowUniformT<ScalarOf<L>>& u, const Vec3L<L>& posWorld,
+                                               const Vec3L<L>& n, const Vec3L<L>& l) {
+  using S = ScalarOf<L>;
+  const L zero(S(0)), one(S(1));
+  const L cosTheta = maxOf(dot3<L>(n, l), L(static_cast<S>(kMinShadowCosine)));
+  const L sinTheta = sqrtOf(maxOf(one - cosTheta * cosTheta, zero));
+  const L tanTheta = minOf(sinTheta / cosTheta, L(static_cast<S>(kMaxShadowSlopeTangent)));
+
+  const ShadowMapPointL<L> p = (shadowMapPointLanes<L>)(u, posWorld);
+  const L &s = p.s, &t = p.t, &z = p.z, &layer = p.layer, &texelWorld = p.texelWorld, &depthPerWorld = p.depthPerWorld;
   // bias = (constant + slope tan(theta) texel (1 + pcf / 2)) depth units per world unit
   const L reach(static_cast<S>(1 + u.pcf / 2));
   const L rise = tanTheta * texelWorld;  // the surface's rise across one texel, world units
   const L bias = (L(u.biasConstant) + (L(u.biasSlope) * rise) * reach) * depthPerWorld;
-  const auto inside = inFront & (s >= zero) & (s < one) & (t >= zero) & (t < one) & (z <= one) & isFinite(z);
+  const auto inside = p.inFront & (s >= zero) & (s < one) & (t >= zero) & (t < one) & (z <= one) & isFinite(z);
   const L size = L(u.size), last = size - one;
   // Out-of-map lanes read texel 0 (and count as lit below).
   const L x0 = select(inside, floorOf(s * size), zero);

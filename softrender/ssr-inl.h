@@ -108,6 +108,14 @@ inline void ssrRecordStep(std::vector<SsrMarchStep>* log, SsrStepKind kind, S pi
   step.kind = kind;
   log->push_back(step);
 }
+// The same where `where` holds, for any lane type: a vector of pixels records nothing.
+template <typename L, typename Mask>
+TWR_LANE_INLINE void ssrRecordWhere(std::vector<SsrMarchStep>* log, const Mask& where, SsrStepKind kind, L pixelX,
+                                    L pixelY, L rayDistance, L surfaceDistance, L level, L along) {
+  if constexpr (std::is_floating_point_v<L>) {
+    if (where) ssrRecordStep<L>(log, kind, pixelX, pixelY, rayDistance, surfaceDistance, level, along);
+  }
+}
 
 // One march's outcome per lane.
 template <typename L>
@@ -250,6 +258,41 @@ TWR_LANE_INLINE SsrSampleL<L> ssrSampleLanes(const SsrUniformsT<ScalarOf<L>>& u,
   return s;
 }
 
+// The cell of side cellSize holding pixel (px, py), its pixel bounds [left, right) x [bottom,
+// top) (a level's last column or row also holds the odd one the halving dropped), and the last
+// sample of the ray inside it, axis by axis: x0 + stepX j < right moving right, >= left moving
+// left. GLSL: ssr.frag's cellOf (levelWidth kept for the cell's index).
+template <typename L>
+struct SsrCellL {
+  L x, y, left, bottom, right, top, last, levelWidth;
+};
+template <typename L>
+TWR_LANE_INLINE SsrCellL<L> ssrCellOfLanes(const SsrUniformsT<ScalarOf<L>>& u, const SsrScreenRayL<L>& ray, L px, L py,
+                                           L cellSize) {
+  using S = ScalarOf<L>;
+  const L zero(S(0)), one(S(1));
+  const L width(u.viewportSize.x), height(u.viewportSize.y);
+  SsrCellL<L> c;
+  c.levelWidth = floorOf(width / cellSize);
+  const L levelHeight = floorOf(height / cellSize);
+  c.x = minOf(floorOf(px / cellSize), c.levelWidth - one);
+  c.y = minOf(floorOf(py / cellSize), levelHeight - one);
+  c.left = c.x * cellSize;
+  c.bottom = c.y * cellSize;
+  c.right = select(c.x == c.levelWidth - one, width, c.left + cellSize);
+  c.top = select(c.y == levelHeight - one, height, c.bottom + cellSize);
+  const MaskOf<L> rightward = ray.stepX > zero, leftward = ray.stepX < zero;
+  const MaskOf<L> upward = ray.stepY > zero, downward = ray.stepY < zero;
+  const L safeStepX = select(rightward | leftward, ray.stepX, one);
+  const L safeStepY = select(upward | downward, ray.stepY, one);
+  const L lastX = select(rightward, (zero - floorOf((ray.x0 - c.right) / safeStepX)) - one,
+                         select(leftward, floorOf((c.left - ray.x0) / safeStepX), ray.lastSample));
+  const L lastY = select(upward, (zero - floorOf((ray.y0 - c.top) / safeStepY)) - one,
+                         select(downward, floorOf((c.bottom - ray.y0) / safeStepY), ray.lastSample));
+  c.last = minOf(minOf(lastX, lastY), ray.lastSample);
+  return c;
+}
+
 // The screen marches (ssr.frag's screenMarch): dda_screen with u.hizLevels 0, hiz above.
 // dda_screen takes the ray's samples one pixel at a time: a sample in front of its pixel's
 // surface (or over a pixel where nothing was drawn) moves on; at the first one that is not, the ray between the sample before and this
@@ -269,8 +312,7 @@ TWR_LANE_INLINE SsrMarchL<L> ssrScreenMarchLanes(const SsrUniformsT<ScalarOf<L>>
                                                  std::vector<SsrMarchStep>* log = nullptr) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), two(S(2)), half(S(0.5));
-  const L width(u.viewportSize.x), height(u.viewportSize.y), thickness(u.thickness);
-  const L topLevel(static_cast<S>(u.hizLevels));
+  const L thickness(u.thickness), topLevel(static_cast<S>(u.hizLevels));
   const SsrScreenRayL<L> ray = (ssrScreenRayLanes<L>)(u, origin, dir);
   SsrMarchL<L> m{select(active, (ssrResultLane<L>)(SsrResult::Miss), (ssrResultLane<L>)(SsrResult::NotMarched)),
                  zero, zero, zero, zero, zero};
@@ -287,13 +329,9 @@ TWR_LANE_INLINE SsrMarchL<L> ssrScreenMarchLanes(const SsrUniformsT<ScalarOf<L>>
     const MaskOf<L> ended = live & (n > ray.lastSample);
     m.result = select(ended, (ssrResultLane<L>)(SsrResult::Miss), m.result);
     live = live & !ended;
-    if constexpr (std::is_floating_point_v<L>) {
-      if (ended) ssrRecordStep<L>(log, SsrStepKind::Ended, zero, zero, zero, zero, zero, n);
-    }
+    (ssrRecordWhere<L>)(log, ended, SsrStepKind::Ended, zero, zero, zero, zero, zero, n);
     const SsrSampleL<L> sn = (ssrSampleLanes<L>)(u, ray, n);
-    if constexpr (std::is_floating_point_v<L>) {
-      if (live && !sn.onScreen) ssrRecordStep<L>(log, SsrStepKind::OffScreen, zero, zero, sn.w, zero, zero, n);
-    }
+    (ssrRecordWhere<L>)(log, live & !sn.onScreen, SsrStepKind::OffScreen, zero, zero, sn.w, zero, zero, n);
     m.result = select(live & !sn.onScreen, (ssrResultLane<L>)(SsrResult::OffScreen), m.result);
     live = live & sn.onScreen;
     const MaskOf<L> atPixel = live & (level == zero);
@@ -313,51 +351,31 @@ TWR_LANE_INLINE SsrMarchL<L> ssrScreenMarchLanes(const SsrUniformsT<ScalarOf<L>>
         m.hitY = select(hit, sn.pixelY, m.hitY);
         m.result = select(hit, (ssrResultLane<L>)(SsrResult::Hit), select(crossed, (ssrResultLane<L>)(SsrResult::Behind), m.result));
         live = live & !crossed;
-        if constexpr (std::is_floating_point_v<L>) {
-          ssrRecordStep<L>(log, hit ? SsrStepKind::Hit : SsrStepKind::Behind, sn.pixelX, sn.pixelY, sn.w, surfaceN, zero, n);
-        }
+        (ssrRecordWhere<L>)(log, hit, SsrStepKind::Hit, sn.pixelX, sn.pixelY, sn.w, surfaceN, zero, n);
+        (ssrRecordWhere<L>)(log, crossed & !hit, SsrStepKind::Behind, sn.pixelX, sn.pixelY, sn.w, surfaceN, zero, n);
       }
-      if constexpr (std::is_floating_point_v<L>) {
-        if (inFront) ssrRecordStep<L>(log, SsrStepKind::InFront, sn.pixelX, sn.pixelY, sn.w, surfaceN, zero, n);
-      }
+      (ssrRecordWhere<L>)(log, inFront, SsrStepKind::InFront, sn.pixelX, sn.pixelY, sn.w, surfaceN, zero, n);
       j = select(inFront, n, j);
       const MaskOf<L> up = inFront & (topLevel > zero) & !(n < blockedUntil);
       level = select(up, one, level);
       cellSize = select(up, two, cellSize);
     }
     if (anyOf(atCell)) {
-      // The cell holding sample n, its pixel bounds [left, right) x [bottom, top): a level's
-      // last column (row) also holds the odd one the halving dropped.
-      const L levelWidth = floorOf(width / cellSize), levelHeight = floorOf(height / cellSize);
-      const L cx = minOf(floorOf(sn.pixelX / cellSize), levelWidth - one);
-      const L cy = minOf(floorOf(sn.pixelY / cellSize), levelHeight - one);
-      const L left = cx * cellSize, bottom = cy * cellSize;
-      const L right = select(cx == levelWidth - one, width, left + cellSize);
-      const L top = select(cy == levelHeight - one, height, bottom + cellSize);
-      // The last sample still in the cell, axis by axis: x0 + stepX j < right moving right,
-      // >= left moving left.
-      const MaskOf<L> rightward = ray.stepX > zero, leftward = ray.stepX < zero;
-      const MaskOf<L> upward = ray.stepY > zero, downward = ray.stepY < zero;
-      const L safeStepX = select(rightward | leftward, ray.stepX, one);
-      const L safeStepY = select(upward | downward, ray.stepY, one);
-      const L lastX = select(rightward, (zero - floorOf((ray.x0 - right) / safeStepX)) - one,
-                             select(leftward, floorOf((left - ray.x0) / safeStepX), ray.lastSample));
-      const L lastY = select(upward, (zero - floorOf((ray.y0 - top) / safeStepY)) - one,
-                             select(downward, floorOf((bottom - ray.y0) / safeStepY), ray.lastSample));
-      const L last = minOf(minOf(lastX, lastY), ray.lastSample);
+      // The cell holding sample n, its pixel bounds and the ray's last sample inside it.
+      const SsrCellL<L> c = (ssrCellOfLanes<L>)(u, ray, sn.pixelX, sn.pixelY, cellSize);
+      const L& last = c.last;
       // Rounding may put the computed last sample a pixel out: then the cell is not used.
       const SsrSampleL<L> sl = (ssrSampleLanes<L>)(u, ray, last);
-      const MaskOf<L> fits = atCell & (last >= n) & sl.onScreen & (sl.pixelX >= left) & (sl.pixelX < right) &
-                             (sl.pixelY >= bottom) & (sl.pixelY < top);
-      const L cellIndex = lookupLanes(u.hizOffset.data(), select(atCell, level, zero)) + cy * levelWidth + cx;
+      const MaskOf<L> fits = atCell & (last >= n) & sl.onScreen & (sl.pixelX >= c.left) & (sl.pixelX < c.right) &
+                             (sl.pixelY >= c.bottom) & (sl.pixelY < c.top);
+      const L cellIndex = lookupLanes(u.hizOffset.data(), select(atCell, level, zero)) + c.y * c.levelWidth + c.x;
       const L cellLeast = lookupLanes(u.hizCells, select(fits, cellIndex, zero));
       const MaskOf<L> skip = fits & (maxOf(sn.w, sl.w) < cellLeast);
       const MaskOf<L> down = atCell & !skip;
       const MaskOf<L> climb = skip & (level < topLevel);
-      if constexpr (std::is_floating_point_v<L>) {
-        ssrRecordStep<L>(log, skip ? SsrStepKind::CellSkipped : SsrStepKind::CellDescend, sn.pixelX, sn.pixelY,
-                         maxOf(sn.w, sl.w), fits ? cellLeast : zero, level, skip ? last : n);
-      }
+      const L cellRecorded = select(fits, cellLeast, zero);
+      (ssrRecordWhere<L>)(log, skip, SsrStepKind::CellSkipped, sn.pixelX, sn.pixelY, maxOf(sn.w, sl.w), cellRecorded, level, last);
+      (ssrRecordWhere<L>)(log, down, SsrStepKind::CellDescend, sn.pixelX, sn.pixelY, maxOf(sn.w, sl.w), cellRecorded, level, n);
       j = select(skip, last, j);
       m.level = select(skip, maxOf(m.level, level), m.level);
       blockedUntil = select(fits & !skip & (level == one), last, blockedUntil);

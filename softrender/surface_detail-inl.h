@@ -148,6 +148,49 @@ TWR_LANE_OUTLINE Vec3L<L> bumpBlinnLanes(const View& heightMap, const ShadeUnifo
   return safeNormalize3<L>(Vec3L<L>(zero - s * dhDu, zero - s * dhDv, one));
 }
 
+// The steep methods' march: from the fragment's uv, one layer of depth a step along deltaUv
+// until the ray is below the height field (or u.layerCap steps). Ends with the ray's uv and
+// depth, the field's depth there, the layer before (the last uv where the ray was still above)
+// and the steps each lane took; h0 is the height at the fragment's uv.
+template <typename L>
+struct LayerMarchL {
+  Vec2L<L> uvC, prevUv;
+  L depthC, surfaceDepth, prevSurfaceDepth, steps;
+};
+template <typename L, typename View, SamplerCase kCase>
+TWR_LANE_INLINE LayerMarchL<L> layerMarchLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
+                                               const HeightReadsL<L>& reads, const FragmentL<L>& f, L h0,
+                                               const Vec2L<L>& deltaUv, L layerDepth) {
+  using S = ScalarOf<L>;
+  const L zero(S(0)), one(S(1));
+  Vec2L<L> uvC = f.uv;
+  L depthC = zero;             // the ray's depth, in units of heightScale
+  L surfaceDepth = one - h0;   // the height field's depth at uvC
+  L steps = zero;
+  Vec2L<L> prevUv = uvC;
+  L prevSurfaceDepth = surfaceDepth;
+  // The next layer is read where the ray would be had every lane kept marching: in a lane
+  // still marching that is uvC - deltaUv (the same subtractions, the same bits); a lane that
+  // stopped ignores it. So a read never waits for the one before: the CPU overlaps the reads
+  // of consecutive layers, and only the loop's exit depends on what they return.
+  Vec2L<L> uvNext = uvC;
+  L depthNext = depthC;
+  for (int i = 0; i < u.layerCap; ++i) {
+    const auto above = depthC < surfaceDepth;
+    if (!anyOf(above)) break;
+    uvNext = Vec2L<L>(uvNext.x - deltaUv.x, uvNext.y - deltaUv.y);
+    depthNext = depthNext + layerDepth;
+    const L surfaceNext = one - heightAtLanes<L, View, kCase>(heightMap, u, reads, uvNext, f);
+    prevUv = Vec2L<L>(select(above, uvC.x, prevUv.x), select(above, uvC.y, prevUv.y));
+    prevSurfaceDepth = select(above, surfaceDepth, prevSurfaceDepth);
+    uvC = Vec2L<L>(select(above, uvNext.x, uvC.x), select(above, uvNext.y, uvC.y));
+    depthC = select(above, depthNext, depthC);
+    surfaceDepth = select(above, surfaceNext, surfaceDepth);
+    steps = select(above, steps + one, steps);
+  }
+  return {uvC, prevUv, depthC, surfaceDepth, prevSurfaceDepth, steps};
+}
+
 // The parallax family: where the view ray through the fragment meets the height field, as uv.
 // vT: the eye direction in tangent space, normalised. wantHeight: read the height at the
 // shifted uv for the marching methods (a height march, the height view, the pixel trace); left
@@ -179,32 +222,11 @@ TWR_LANE_INLINE SurfaceDetailL<L> parallaxCaseLanes(const View& heightMap, const
     const L layerDepth = one / layers;
     const L shiftPerLayer = scale / layers;
     const Vec2L<L> deltaUv(vT.x / vz * shiftPerLayer, vT.y / vz * shiftPerLayer);
-    Vec2L<L> uvC = f.uv;
-    L depthC = zero;             // the ray's depth, in units of heightScale
-    L surfaceDepth = one - h0;   // the height field's depth at uvC
-    L steps = zero;
-    // The layer before: the last uv where the ray was still above, and the field's depth there.
-    Vec2L<L> prevUv = uvC;
-    L prevSurfaceDepth = surfaceDepth;
-    // The next layer is read where the ray would be had every lane kept marching: in a lane
-    // still marching that is uvC - deltaUv (the same subtractions, the same bits); a lane that
-    // stopped ignores it. So a read never waits for the one before: the CPU overlaps the reads
-    // of consecutive layers, and only the loop's exit depends on what they return.
-    Vec2L<L> uvNext = uvC;
-    L depthNext = depthC;
-    for (int i = 0; i < u.layerCap; ++i) {
-      const auto above = depthC < surfaceDepth;
-      if (!anyOf(above)) break;
-      uvNext = Vec2L<L>(uvNext.x - deltaUv.x, uvNext.y - deltaUv.y);
-      depthNext = depthNext + layerDepth;
-      const L surfaceNext = one - heightAtLanes<L, View, kCase>(heightMap, u, reads, uvNext, f);
-      prevUv = Vec2L<L>(select(above, uvC.x, prevUv.x), select(above, uvC.y, prevUv.y));
-      prevSurfaceDepth = select(above, surfaceDepth, prevSurfaceDepth);
-      uvC = Vec2L<L>(select(above, uvNext.x, uvC.x), select(above, uvNext.y, uvC.y));
-      depthC = select(above, depthNext, depthC);
-      surfaceDepth = select(above, surfaceNext, surfaceDepth);
-      steps = select(above, steps + one, steps);
-    }
+    LayerMarchL<L> m = (layerMarchLanes<L, View, kCase>)(heightMap, u, reads, f, h0, deltaUv, layerDepth);
+    Vec2L<L>& uvC = m.uvC;
+    L& depthC = m.depthC;
+    L& surfaceDepth = m.surfaceDepth;
+    L& steps = m.steps;
     if (u.surfaceDetail == SurfaceDetail::Relief) {
       // Policarpo et al.: binary search in the last layer, starting half a layer back.
       Vec2L<L> du = deltaUv;
@@ -224,10 +246,10 @@ TWR_LANE_INLINE SurfaceDetailL<L> parallaxCaseLanes(const View& heightMap, const
       // before is the one the march read (no second read; with no step taken, after = 0 and
       // the weight is 0).
       const L after = surfaceDepth - depthC;
-      const L before = prevSurfaceDepth - depthC + layerDepth;
+      const L before = m.prevSurfaceDepth - depthC + layerDepth;
       const L denominator = after - before;
       const L weight = select(absOf(denominator) > zero, after / denominator, zero);
-      uvC = Vec2L<L>(prevUv.x * weight + uvC.x * (one - weight), prevUv.y * weight + uvC.y * (one - weight));
+      uvC = Vec2L<L>(m.prevUv.x * weight + uvC.x * (one - weight), m.prevUv.y * weight + uvC.y * (one - weight));
     }
     r.uv = uvC;
     r.steps = steps;

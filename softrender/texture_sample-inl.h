@@ -335,16 +335,18 @@ TWR_LANE_INLINE Texel sampleTextureLanes(const View& texture, const Vec2L<L>& uv
 // no bound, and past it a pixel reads millions of texels).
 inline constexpr float kMaxEwaHalfExtent = 1024.0f;
 
-// The ellipse filter on one level for the lanes in `lanes` (the others compute nothing:
-// their box is empty). width0, height0: level 0's size.
-template <typename L, typename View>
-TWR_LANE_OUTLINE Vec4L<L> sampleEwaLevelLanes(const View& texture, int level, const Vec2L<L>& uv,
-                                              const Vec2L<L>& dUvDx, const Vec2L<L>& dUvDy, const MaskOf<L>& lanes) {
+// The ellipse of one level's footprint (Heckbert's EWA as llvmpipe computes it): the form
+// A u^2 + B u v + C v^2 = F scaled so that F is the weight table's last entry, the sample point
+// in texels of the level (centres at integers) and the box of texels [u0, u1] x [v0, v1] it
+// reads; a lane not in `lanes`, or whose box is not finite, gets an empty box (last < first).
+template <typename L>
+struct EwaEllipseL {
+  L aScaled, bScaled, cScaled, ddq, texU, texV, u0, v0, u1, v1;
+};
+template <typename L>
+TWR_LANE_INLINE EwaEllipseL<L> ewaEllipseLanes(const Vec2L<L>& uv, const Vec2L<L>& dUvDx, const Vec2L<L>& dUvDy,
+                                               L width0, L height0, ScalarOf<L> scaling, const MaskOf<L>& lanes) {
   using S = ScalarOf<L>;
-  const TextureWrap wrap = texWrap(texture);
-  const int width = texLevelWidth(texture, level), height = texLevelHeight(texture, level);
-  const S scaling = S(1) / static_cast<S>(1 << level);  // level 0 texels to this level's
-  const L width0(static_cast<S>(texLevelWidth(texture, 0))), height0(static_cast<S>(texLevelHeight(texture, 0)));
   const L one(S(1)), zero(S(0));
   // The differences in this level's texels: (ux, vx) along a pixel step in x, (uy, vy) in y.
   const L ux = dUvDx.x * width0 * L(scaling), uy = dUvDy.x * width0 * L(scaling);
@@ -359,23 +361,44 @@ TWR_LANE_OUTLINE Vec4L<L> sampleEwaLevelLanes(const View& texture, int level, co
   L boxU = L(S(2)) / d * sqrtOf(d * c * f);
   L boxV = L(S(2)) / d * sqrtOf(a * d * f);
   const L formScale = L(static_cast<S>(kEwaWeightCount - 1)) / f;
-  const L aScaled = a * formScale, bScaled = b * formScale, cScaled = c * formScale;
-  const L ddq = aScaled * L(S(2));
+  EwaEllipseL<L> e;
+  e.aScaled = a * formScale;
+  e.bScaled = b * formScale;
+  e.cScaled = c * formScale;
+  e.ddq = e.aScaled * L(S(2));
   // The sample point in texels of this level, texel centres at integers.
-  const L texU = uv.x * (width0 * L(scaling)) + L(S(-0.5));
-  const L texV = uv.y * (height0 * L(scaling)) + L(S(-0.5));
+  e.texU = uv.x * (width0 * L(scaling)) + L(S(-0.5));
+  e.texV = uv.y * (height0 * L(scaling)) + L(S(-0.5));
   // Texel indices stay exact in float (and the loops finite) below 2^22 texels; a lane beyond
   // that, or with a non-finite box, reads nothing and falls back to bilinear.
   const L limit(static_cast<S>(kMaxEwaHalfExtent)), farthest(S(4194304));
   const auto finiteU = isFinite(boxU), finiteV = isFinite(boxV);  // named: masks combine with &, never &&
-  const auto nearU = absOf(texU) < farthest, nearV = absOf(texV) < farthest;
+  const auto nearU = absOf(e.texU) < farthest, nearV = absOf(e.texV) < farthest;
   const auto usable = lanes & finiteU & finiteV & nearU & nearV;
   boxU = select(usable, minOf(boxU, limit), zero);
   boxV = select(usable, minOf(boxV, limit), zero);
   // An unused lane's box is empty: last < first.
-  const L u0 = select(usable, floorOf(texU - boxU), zero), v0 = select(usable, floorOf(texV - boxV), zero);
-  const L u1 = select(usable, zero - floorOf(zero - (texU + boxU)), zero - one);  // ceil
-  const L v1 = select(usable, zero - floorOf(zero - (texV + boxV)), zero - one);
+  e.u0 = select(usable, floorOf(e.texU - boxU), zero);
+  e.v0 = select(usable, floorOf(e.texV - boxV), zero);
+  e.u1 = select(usable, zero - floorOf(zero - (e.texU + boxU)), zero - one);  // ceil
+  e.v1 = select(usable, zero - floorOf(zero - (e.texV + boxV)), zero - one);
+  return e;
+}
+
+// The ellipse filter on one level for the lanes in `lanes` (the others compute nothing:
+// their box is empty). width0, height0: level 0's size.
+template <typename L, typename View>
+TWR_LANE_OUTLINE Vec4L<L> sampleEwaLevelLanes(const View& texture, int level, const Vec2L<L>& uv,
+                                              const Vec2L<L>& dUvDx, const Vec2L<L>& dUvDy, const MaskOf<L>& lanes) {
+  using S = ScalarOf<L>;
+  const TextureWrap wrap = texWrap(texture);
+  const int width = texLevelWidth(texture, level), height = texLevelHeight(texture, level);
+  const S scaling = S(1) / static_cast<S>(1 << level);  // level 0 texels to this level's
+  const L width0(static_cast<S>(texLevelWidth(texture, 0))), height0(static_cast<S>(texLevelHeight(texture, 0)));
+  const L one(S(1)), zero(S(0));
+  const EwaEllipseL<L> e = (ewaEllipseLanes<L>)(uv, dUvDx, dUvDy, width0, height0, scaling, lanes);
+  const L &aScaled = e.aScaled, &bScaled = e.bScaled, &cScaled = e.cScaled, &ddq = e.ddq;
+  const L &texU = e.texU, &texV = e.texV, &u0 = e.u0, &v0 = e.v0, &u1 = e.u1, &v1 = e.v1;
   // q = A U^2 + B U V + C V^2 at each texel, stepped along u with dq and ddq.
   const L uStart = u0 - texU;
   const L dqBase = (uStart * L(S(2)) + one) * aScaled;

@@ -18,6 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr int kMaxGlslFunctionLines = 80;  // signature to closing brace
+constexpr int kMaxCppFunctionLines = 80;   // template line (if any) to closing brace
 constexpr int kMaxPhongMainLines = 60;
 
 fs::path sourceDir() { return fs::path(TWINRASTER_SOURCE_DIR); }
@@ -114,6 +115,62 @@ bool definesFunction(const fs::path& path, const std::string& name) {
   return false;
 }
 
+struct CppFunction {
+  std::string file;   // relative to the source folder
+  std::string name;
+  int firstLine = 0;  // 1-based: the template line, or the signature without one
+  int lineCount = 0;
+};
+
+// The functions defined at column 0 of one C++ file: a line that names a function after its
+// return type and opens a body before any ';' (a declaration, a using, a call at namespace
+// scope do not count). Members and lambdas, which are indented, belong to what holds them.
+std::vector<CppFunction> cppFunctionsOf(const fs::path& path, const std::string& shownAs) {
+  static const std::regex signature(R"(^(?:[A-Za-z_][\w:<>,]*[\s*&]+)+\(?([A-Za-z_]\w*)\)?\s*\()");
+  static const std::set<std::string> notFunctions = {"if", "for", "while", "switch", "return", "sizeof"};
+  std::vector<CppFunction> functions;
+  const std::vector<std::string> lines = linesOf(path);
+  const auto notASignature = [](const std::string& line) {
+    if (line.empty() || line[0] == '#' || line[0] == '/' || line[0] == ' ' || line[0] == '}') return true;
+    for (const char* word : {"template", "struct", "using", "namespace", "class", "enum"}) {
+      if (line.rfind(word, 0) == 0) return true;
+    }
+    return false;
+  };
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    std::smatch m;
+    if (notASignature(lines[i]) || !std::regex_search(lines[i], m, signature) || notFunctions.count(m[1].str())) continue;
+    std::size_t end = i;  // the declaration's last line: a ';' before any '{' is no definition
+    while (end < lines.size() && lines[end].find('{') == std::string::npos && lines[end].find(';') == std::string::npos) {
+      ++end;
+    }
+    if (end == lines.size() || lines[end].find('{') == std::string::npos) continue;
+    const bool templated = i > 0 && lines[i - 1].rfind("template", 0) == 0;
+    const int length = definitionLength(lines, i);
+    functions.push_back({shownAs, m[1].str(), static_cast<int>(templated ? i : i + 1), length + (templated ? 1 : 0)});
+    i += static_cast<std::size_t>(length) - 1;
+  }
+  return functions;
+}
+
+// The shading sources: every softrender/*-inl.h (the one C++ source of the shaders' steps),
+// shade.h and shade.cpp.
+std::vector<CppFunction> cppShadingFunctions() {
+  std::vector<fs::path> files;
+  for (const fs::directory_entry& entry : fs::directory_iterator(sourceDir() / "softrender")) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() > 6 && name.compare(name.size() - 6, 6, "-inl.h") == 0) files.push_back(entry.path());
+  }
+  files.push_back(sourceDir() / "softrender" / "shade.h");
+  files.push_back(sourceDir() / "softrender" / "shade.cpp");
+  std::sort(files.begin(), files.end());
+  std::vector<CppFunction> functions;
+  for (const fs::path& path : files) {
+    for (CppFunction& f : cppFunctionsOf(path, "softrender/" + path.filename().string())) functions.push_back(f);
+  }
+  return functions;
+}
+
 TEST(ShadingTwins, TheShadersAndTheTableAreRead) {
   // Guards the parsers: a table or a shader folder read as empty would pass every check below.
   EXPECT_GE(glslFunctions().size(), 60u);
@@ -159,6 +216,15 @@ TEST(ShadingTwins, NoGlslFunctionIsLongerThanAReaderTakesIn) {
   }
 }
 
+TEST(ShadingTwins, NoCppShadingFunctionIsLongerThanAReaderTakesIn) {
+  const std::vector<CppFunction> functions = cppShadingFunctions();
+  EXPECT_GE(functions.size(), 150u);  // the scanner found the sources' functions at all
+  for (const CppFunction& f : functions) {
+    EXPECT_LE(f.lineCount, kMaxCppFunctionLines) << f.file << ":" << f.firstLine << ": " << f.name << " is "
+                                                 << f.lineCount << " lines; split it into named steps";
+  }
+}
+
 TEST(ShadingTwins, PhongMainIsTheListOfNamedSteps) {
   bool found = false;
   for (const GlslFunction& f : glslFunctions()) {
@@ -177,6 +243,29 @@ TEST(ShadingTwins, TheDefinitionCheckTellsADefinitionFromACall) {
   EXPECT_FALSE(definesFunction(shade, "surfaceFrameLanesRenamed"));
   // Called there, defined in environment-inl.h.
   EXPECT_FALSE(definesFunction(shade, "environmentDiffuseLanes"));
+}
+
+// The length check counts a definition from its template line to its closing brace, skips
+// declarations and members, and so finds a function grown too long.
+TEST(ShadingTwins, TheCppLengthCheckFindsAFunctionGrownTooLong) {
+  const fs::path path = fs::temp_directory_path() / "twinraster_twin_length_check-inl.h";
+  {
+    std::ofstream out(path);
+    out << "template <typename L>\nTWR_LANE_INLINE Vec3L<L> declaredOnly(const L& x);\n";
+    out << "struct Holder {\n  int member() {\n    return 1;\n  }\n};\n";
+    out << "template <typename L>\nTWR_LANE_INLINE Vec3L<L> grownLanes(const L& x,\n                                  const L& y) {\n";
+    for (int i = 0; i < 85; ++i) out << "  step(" << i << ");\n";
+    out << "}\ninline int shortOne() { return 0; }\n";
+  }
+  const std::vector<CppFunction> functions = cppFunctionsOf(path, "test");
+  fs::remove(path);
+  ASSERT_EQ(functions.size(), 2u);
+  EXPECT_EQ(functions[0].name, "grownLanes");
+  EXPECT_EQ(functions[0].firstLine, 8);
+  EXPECT_EQ(functions[0].lineCount, 2 + 1 + 85 + 1);  // template, two signature lines, body, brace
+  EXPECT_GT(functions[0].lineCount, kMaxCppFunctionLines);
+  EXPECT_EQ(functions[1].name, "shortOne");
+  EXPECT_EQ(functions[1].lineCount, 1);
 }
 
 }  // namespace
