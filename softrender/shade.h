@@ -172,7 +172,8 @@ Vec4T<T> vectorAsColour(Vec3T<T> v) {
 
 // The compile-time feature set of one shader permutation: what changes the hot loop (the maps
 // it reads, the lighting space). The view is not one (ShadeUniformsT::view): a debug view
-// costs a branch per fragment, not a kernel per view.
+// costs a branch per vector of fragments, not a kernel per view (and the varyings a kernel of
+// its own would have dropped: docs/performance.md, "Debug views at run time").
 // HeightMap: the material's surface detail reads its height map (surface_detail-inl.h); the
 // method itself is a uniform (one branch per draw item), as each adds a loop, not a variant.
 template <bool DiffuseMap, bool NormalMap, bool SpecularMap, LightingSpace Space, bool HeightMap = false>
@@ -242,9 +243,6 @@ struct ShaderKey {
 // permutation: albedo reads the diffuse map; mapped_normal the normal map; shaded everything;
 // the height views and a parallax method (which moves every map's uv) the height map. A view
 // that reads no lighting-space vector draws the same in both spaces: world's permutation.
-constexpr bool viewReadsHeightMap(View v) {
-  return isShadedView(v) || isSsrView(v) || v == View::Albedo || v == View::MappedNormal || isHeightView(v);
-}
 constexpr bool viewReadsLightingSpace(View v) {
   return v == View::Shaded || v == View::MappedNormal || v == View::LightTangent || v == View::EyeTangent;
 }
