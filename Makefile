@@ -71,7 +71,11 @@ SANITIZE_LABELS := $(if $(SANITIZE_MODULES),-L '^($(subst $(eval) ,|,$(strip $(S
 # EGL (LeakSanitizer's tracer crashes, signal 11, stopping the threads Mesa's EGL platform
 # leaves at exit) and the windowed tests (the GLX driver's allocations are reported from a
 # library already unloaded, which no suppression can name).
-SANITIZE_NO_LEAKS := EglContext\.|EglSceneSuite\.|GlWindow\.|GlWindowCore\.
+# The same crash at the exit of one scene-suite case, shadow_peter_panning (its image passes):
+# in 2 of 4 runs of the 51 cases here, both tries, on 41c9eb8 as on later heads; run under
+# ASan + UBSan alone like the tests above until its cause is found.
+SANITIZE_TRACER_CRASH := ^Scenes/SceneSuite\.CpuMatchesLlvmpipeWithinTolerance/shadow_peter_panning( |$$)
+SANITIZE_NO_LEAKS := EglContext\.|EglSceneSuite\.|GlWindow\.|GlWindowCore\.|$(SANITIZE_TRACER_CRASH)
 # The same tracer crash now and then ends a command-line test's child that drew with OSMesa
 # ("Tracer caught signal 11", exit 134: once in a clean CI run here, in a bench test that passed
 # in the four other sanitizer runs of it); the sanitizer presets run a failed test once more
@@ -92,7 +96,7 @@ sanitize: deps
 	@cmake --build --preset sanitize -j $(JOBS) $(addprefix --target ,$(SANITIZE_TARGETS))
 	@ctest --preset sanitize -E '$(SANITIZE_SKIP)|$(SANITIZE_NO_LEAKS)$(SANITIZE_SUITE_SKIP)' $(SANITIZE_LABELS)
 	@ctest --preset sanitize-no-leaks -R '$(SANITIZE_NO_LEAKS)' -E '$(SANITIZE_SKIP)' $(SANITIZE_LABELS)
-	$(if $(SANITIZE_SUITE_WANTED),@ctest --preset sanitize -R '$(SANITIZE_SUITE_CASES)')
+	$(if $(SANITIZE_SUITE_WANTED),@ctest --preset sanitize -R '$(SANITIZE_SUITE_CASES)' -E '$(SANITIZE_NO_LEAKS)')
 
 # The CPU libraries and their GL-free tests for aarch64 (cross compiler + qemu-user).
 cross-aarch64:
