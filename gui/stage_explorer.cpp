@@ -1,11 +1,15 @@
 #include "gui/stage_explorer.h"
 
 #include "softrender/clip.h"
+#include "softrender/interpolate.h"
+#include "softrender/raster.h"
 #include "softrender/setup.h"
+#include "softrender/stage_pictures.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iterator>
 
@@ -14,6 +18,10 @@ namespace twr::gui {
 namespace {
 
 constexpr double kFixedOne = 256.0;  // setup's sub-pixel steps per pixel (8 bits)
+// The frame's arrows at Shade, in world units per unit of the fragment's clip w (its depth in
+// front of the eye), so they keep one size on the image: about 33 px at 480 rows and a
+// 60-degree field of view.
+constexpr float kFrameArrowPerDepth = 0.08f;
 
 std::string num(double v) {
   char text[32];
@@ -83,15 +91,109 @@ std::vector<ImagePoint> snappedOf(const PixelTrace& trace, const TriangleVisit& 
   return points;
 }
 
-// Setup run again on the trace's snapped corners: its box and edge functions.
+// Setup run again on the covering fan triangle's window corners, as the trace ran it (its
+// corner order, box and edge functions; culling is decided after, so none here).
 std::optional<TriangleSetup> setupOf(const PixelTrace& trace, const TriangleVisit& visit) {
   if (visit.fanTriangle < 0) return std::nullopt;
   TriangleSetup setup;
-  if (setupSnappedTriangle(visit.xFixed, visit.yFixed, CullMode::None, FrontFace::Ccw,
-                           Viewport{trace.width, trace.height}, setup) != SetupResult::Ready) {
+  if (setupTriangle(visit.window, CullMode::None, FrontFace::Ccw, Viewport{trace.width, trace.height}, setup) !=
+      SetupResult::Ready) {
     return std::nullopt;
   }
   return setup;
+}
+
+// The rasterizer's visit order: every row span, in the order rasterizeTriangle hands them out
+// (GL rows from the bottom), as {x begin, x end, y from the top}.
+std::vector<std::array<int, 3>> visitRunsOf(const TriangleSetup& setup, const PixelTrace& trace) {
+  std::vector<std::array<int, 3>> runs;
+  rasterizeTriangle(setup, 0, trace.height,
+                    [&](int py, Span span) { runs.push_back({span.xBegin, span.xEnd, trace.height - 1 - py}); });
+  return runs;
+}
+
+int pixelCount(const std::vector<std::array<int, 3>>& runs) {
+  int count = 0;
+  for (const auto& run : runs) count += run[1] - run[0];
+  return count;
+}
+
+// The runs visited by step `step` (0: the first pixel), the last one cut after that step's pixel.
+std::vector<std::array<int, 3>> runsUpTo(const std::vector<std::array<int, 3>>& runs, int step) {
+  std::vector<std::array<int, 3>> visited;
+  int left = step + 1;
+  for (const auto& run : runs) {
+    if (left <= 0) break;
+    const int taken = std::min(left, run[1] - run[0]);
+    visited.push_back({run[0], run[0] + taken, run[2]});
+    left -= taken;
+  }
+  return visited;
+}
+
+// The covering fan triangle's weights at every pixel it covers, from the pipeline's own
+// interpolation setup and pixelWeights (the weights do not depend on the uv, left zero).
+ExplorerWeightMap weightMapOf(const PixelTrace& trace, const TriangleVisit& visit, const TriangleSetup& setup,
+                              bool perspective) {
+  ExplorerWeightMap map;
+  if (setup.x0 > setup.x1 || setup.y0 > setup.y1) return map;
+  const InterpolationSetup interpolation =
+      makeInterpolationSetup(visit.window, {vec2(0.0f), vec2(0.0f), vec2(0.0f)}, setup, trace.interpolation);
+  map.x0 = setup.x0;
+  map.y0 = trace.height - 1 - setup.y1;
+  map.width = setup.x1 - setup.x0 + 1;
+  map.height = setup.y1 - setup.y0 + 1;
+  const std::size_t size = static_cast<std::size_t>(map.width) * static_cast<std::size_t>(map.height);
+  map.weights.assign(size, {0.0f, 0.0f, 0.0f});
+  map.covered.assign(size, 0);
+  rasterizeTriangle(setup, 0, trace.height, [&](int py, Span span) {
+    const std::size_t row = static_cast<std::size_t>(trace.height - 1 - py - map.y0) * static_cast<std::size_t>(map.width);
+    for (int px = span.xBegin; px < span.xEnd; ++px) {
+      const PixelWeights w = pixelWeights(interpolation, px, py);
+      const std::size_t at = row + static_cast<std::size_t>(px - map.x0);
+      map.weights[at] = perspective ? w.perspective : w.screen;
+      map.covered[at] = 1;
+    }
+  });
+  return map;
+}
+
+// The window corners of the covering fan triangle on the image, weight i's corner i.
+std::vector<ImagePoint> weightCornersOf(const PixelTrace& trace, const TriangleVisit& visit) {
+  std::vector<ImagePoint> corners;
+  for (const WindowVertex& w : visit.window) corners.push_back(imageOf(w.x, w.y, trace));
+  return corners;
+}
+
+// A world-space point through the camera, the divide and the viewport.
+std::optional<ImagePoint> imageOfWorld(const vec3& p, const PixelTrace& trace) {
+  const vec4 clip = trace.clipFromWorld * vec4(p, 1.0f);
+  if (!(clip.w > 0.0f)) return std::nullopt;
+  return imageOfClip(clip, false, trace);
+}
+
+// T, B and N as the shading normalised them, and the normal it lit with: in world lighting
+// space that normal itself, in tangent space its components along T, B and N (the frame that
+// carried the light and eye into tangent space at the corners).
+std::vector<ExplorerFrameArrow> frameArrowsOf(const PixelTrace& trace, const TriangleVisit& visit) {
+  std::vector<ExplorerFrameArrow> arrows;
+  if (visit.outcome != TraceOutcome::Shaded) return arrows;
+  const vec3 p = visit.fragment.posWorld;
+  const vec4 clip = trace.clipFromWorld * vec4(p, 1.0f);
+  const std::optional<ImagePoint> from = imageOfWorld(p, trace);
+  if (!from) return arrows;
+  const ShadeTerms& s = visit.terms;
+  const vec3 lit = trace.lightingSpace == LightingSpace::World ? s.nl : s.t * s.nl.x + s.b * s.nl.y + s.n * s.nl.z;
+  const float length = kFrameArrowPerDepth * clip.w;
+  const std::pair<char, vec3> axes[] = {{'T', s.t}, {'B', s.b}, {'N', s.n}, {'L', lit}};
+  for (const auto& [axis, direction] : axes) {
+    const float norm = glm::length(direction);
+    if (!(norm > 0.0f)) continue;
+    if (const std::optional<ImagePoint> to = imageOfWorld(p + direction * (length / norm), trace)) {
+      arrows.push_back({axis, *from, *to});
+    }
+  }
+  return arrows;
 }
 
 std::array<int, 4> boxOf(const TriangleSetup& s, const PixelTrace& trace) {
@@ -195,7 +297,8 @@ void setupLines(const TriangleVisit& visit, const std::optional<TriangleSetup>& 
   }
 }
 
-void rasterLines(const TriangleVisit& visit, const ExplorerOverlay& overlay, std::vector<std::string>& lines) {
+void rasterLines(const TriangleVisit& visit, const ExplorerView& view, int tracedStep, std::vector<std::string>& lines) {
+  const ExplorerOverlay& overlay = view.overlay;
   const bool inside = visit.edgeValue[0] > 0 && visit.edgeValue[1] > 0 && visit.edgeValue[2] > 0;
   lines.push_back("the pixel is inside when E > 0 on all three edges (a pixel exactly on an edge goes to its owner): " +
                   std::string(inside ? "inside" : "outside"));
@@ -205,12 +308,27 @@ void rasterLines(const TriangleVisit& visit, const ExplorerOverlay& overlay, std
     lines.push_back("won " + std::to_string(overlay.covered.size()) + " of the " + std::to_string(boxPixels) +
                     " pixels of its box in the frame (its triangle id)");
   }
+  lines.push_back("visit order of fan triangle " + std::to_string(visit.fanTriangle) + ": " +
+                  std::to_string(view.rasterSteps) + " pixels covered, row by row from the bottom of the image (GL's rows), each row's span left to "
+                  "right; the traced pixel is step " + std::to_string(tracedStep));
+  if (view.rasterStep >= 0 && overlay.visitPixel && !overlay.visitedRuns.empty()) {
+    const auto& run = overlay.visitedRuns.back();
+    lines.push_back("> step " + std::to_string(view.rasterStep) + " of " + std::to_string(view.rasterSteps) +
+                    ": pixel (" + std::to_string((*overlay.visitPixel)[0]) + ", " +
+                    std::to_string((*overlay.visitPixel)[1]) + "), in row " + std::to_string(run[2]) +
+                    "'s span from x " + std::to_string(run[0]));
+  }
 }
 
-void interpolateLines(const TriangleVisit& visit, std::vector<std::string>& lines) {
+void interpolateLines(const TriangleVisit& visit, const ExplorerView& view, std::vector<std::string>& lines) {
   const PixelWeights& w = visit.weights;
   lines.push_back("screen barycentrics " + vec(w.screen, 3));
   lines.push_back("perspective weights " + vec(w.perspective, 3));
+  const auto& map = view.overlay.weightMap;
+  const long long covered = std::count(map.covered.begin(), map.covered.end(), std::uint8_t{1});
+  lines.push_back(std::string("map: the ") + (view.perspectiveMap ? "perspective weights" : "screen barycentrics") +
+                  " at each of the " + std::to_string(covered) +
+                  " pixels the fan triangle covers, corner 0 red, 1 green, 2 blue");
   lines.push_back("depth " + num(w.depth) + " against " + num(visit.depthBefore) + " stored: " +
                   toString(visit.outcome));
   lines.push_back("uv " + vec(visit.fragment.uv, 2) + ", posWorld " + vec(visit.fragment.posWorld, 3));
@@ -222,7 +340,11 @@ void shadeLines(const TriangleVisit& visit, std::vector<std::string>& lines) {
     return;
   }
   const ShadeTerms& s = visit.terms;
+  lines.push_back("T " + vec(s.t, 3) + ", B " + vec(s.b, 3) + " (world)");
   lines.push_back("N " + vec(s.n, 3) + ", Nl " + vec(s.nl, 3));
+  if (s.normalTexel != vec4(0.0f)) {
+    lines.push_back("normal-map texel " + vec(s.normalTexel, 3) + " -> tangent-space normal " + vec(s.mappedTangent, 3));
+  }
   lines.push_back("albedo " + vec(s.albedo, 3) + ", ambient " + vec(s.ambient, 3));
   for (int l = 0; l < s.lightCount; ++l) {
     const LightTerms& t = s.lights[static_cast<std::size_t>(l)];
@@ -230,6 +352,29 @@ void shadeLines(const TriangleVisit& visit, std::vector<std::string>& lines) {
                     num(t.attenuation) + ", diffuse " + vec(t.diffuse, 3) + ", specular " + vec(t.specular, 3));
   }
   lines.push_back("colour " + vec(s.colour, 4));
+}
+
+// Raster: the box, the pixels won in the frame, and the visit order up to the chosen step.
+void rasterStage(const PixelTrace& trace, const TriangleVisit& visit, const std::optional<TriangleSetup>& setup,
+                 const std::array<int, 4>& box, const std::vector<std::uint32_t>* triangleIds,
+                 const ExplorerChoices& choices, ExplorerView& view) {
+  ExplorerOverlay& o = view.overlay;
+  o.fan = fanOf(polygonOf(trace, visit));
+  o.fanTriangle = fanIndexOf(visit);
+  int tracedStep = -1;
+  if (setup) {
+    o.boundingBox = box;
+    if (triangleIds) o.covered = coveredOf(box, visit, trace, *triangleIds);
+    const std::vector<std::array<int, 3>> runs = visitRunsOf(*setup, trace);
+    view.rasterSteps = pixelCount(runs);
+    if (choices.rasterStep >= 0 && view.rasterSteps > 0) {
+      view.rasterStep = std::min(choices.rasterStep, view.rasterSteps - 1);
+      o.visitedRuns = runsUpTo(runs, view.rasterStep);
+      o.visitPixel = std::array<int, 2>{o.visitedRuns.back()[1] - 1, o.visitedRuns.back()[2]};
+    }
+    tracedStep = visitStepOf(trace, visit);
+  }
+  rasterLines(visit, view, tracedStep, view.lines);
 }
 
 }  // namespace
@@ -269,10 +414,18 @@ ExplorerStage previousStage(ExplorerStage stage) {
 
 ExplorerView explorerViewOf(const PixelTrace& trace, const TriangleVisit& visit, ExplorerStage stage,
                             const std::vector<std::uint32_t>* triangleIds, int clipPass) {
+  ExplorerChoices choices;
+  choices.clipPass = clipPass;
+  return explorerViewOf(trace, visit, stage, triangleIds, choices);
+}
+
+ExplorerView explorerViewOf(const PixelTrace& trace, const TriangleVisit& visit, ExplorerStage stage,
+                            const std::vector<std::uint32_t>* triangleIds, const ExplorerChoices& choices) {
   ExplorerView view;
   view.stage = stage;
   view.clipPasses = static_cast<int>(visit.clipSteps.size());
-  view.clipPass = clipPass >= 0 && clipPass < view.clipPasses ? clipPass : -1;
+  view.clipPass = choices.clipPass >= 0 && choices.clipPass < view.clipPasses ? choices.clipPass : -1;
+  view.perspectiveMap = choices.perspectiveMap;
   view.title = titleOf(stage);
   ExplorerOverlay& o = view.overlay;
   o.pixelCentre = {trace.x + 0.5, trace.yTop + 0.5};
@@ -302,19 +455,100 @@ ExplorerView explorerViewOf(const PixelTrace& trace, const TriangleVisit& visit,
       divideLines(trace, visit, view.lines);
       break;
     case ExplorerStage::Setup:
-    case ExplorerStage::Raster:
       o.fan = fanOf(polygonOf(trace, visit));
       o.fanTriangle = fanIndexOf(visit);
       if (setup) o.boundingBox = box;
-      if (stage == ExplorerStage::Raster && setup && triangleIds) o.covered = coveredOf(box, visit, trace, *triangleIds);
-      if (stage == ExplorerStage::Setup) setupLines(visit, setup, box, view.lines);
-      else rasterLines(visit, o, view.lines);
+      setupLines(visit, setup, box, view.lines);
       break;
-    case ExplorerStage::Interpolate: interpolateLines(visit, view.lines); break;
-    case ExplorerStage::Shade: shadeLines(visit, view.lines); break;
+    case ExplorerStage::Raster: rasterStage(trace, visit, setup, box, triangleIds, choices, view); break;
+    case ExplorerStage::Interpolate:
+      if (setup) {
+        o.weightCorners = weightCornersOf(trace, visit);
+        o.weightMap = weightMapOf(trace, visit, *setup, choices.perspectiveMap);
+      }
+      interpolateLines(visit, view, view.lines);
+      break;
+    case ExplorerStage::Shade:
+      o.frameArrows = frameArrowsOf(trace, visit);
+      shadeLines(visit, view.lines);
+      break;
   }
   if (stageAfterDivide && visit.fanTriangle >= 0) o.snapped = snappedOf(trace, visit);
   return view;
+}
+
+std::optional<std::array<int, 2>> visitPixelOf(const PixelTrace& trace, const TriangleVisit& visit, int step) {
+  const std::optional<TriangleSetup> setup = setupOf(trace, visit);
+  if (!setup || step < 0) return std::nullopt;
+  for (const auto& run : visitRunsOf(*setup, trace)) {
+    if (step < run[1] - run[0]) return std::array<int, 2>{run[0] + step, run[2]};
+    step -= run[1] - run[0];
+  }
+  return std::nullopt;
+}
+
+int visitStepOf(const PixelTrace& trace, const TriangleVisit& visit) {
+  const std::optional<TriangleSetup> setup = setupOf(trace, visit);
+  if (!setup) return -1;
+  int before = 0;
+  for (const auto& run : visitRunsOf(*setup, trace)) {
+    if (run[2] == trace.yTop && trace.x >= run[0] && trace.x < run[1]) return before + trace.x - run[0];
+    before += run[1] - run[0];
+  }
+  return -1;
+}
+
+const TriangleVisit* explorerVisitOf(const PixelTrace& trace, int index) {
+  if (index >= 0 && index < static_cast<int>(trace.visits.size())) return &trace.visits[static_cast<std::size_t>(index)];
+  return stageVisitOf(trace);
+}
+
+std::string visitChoiceText(const PixelTrace& trace, int index) {
+  const TriangleVisit* visit = explorerVisitOf(trace, index);
+  if (!visit) return "no triangle reaches the pixel";
+  const std::size_t k = static_cast<std::size_t>(visit - trace.visits.data());
+  return "triangle " + std::to_string(k + 1) + " of " + std::to_string(trace.visits.size()) +
+         " reaching the pixel (id " + std::to_string(visit->triangleId) + "): " + toString(visit->outcome);
+}
+
+int spanStepFrom(const PixelTrace& trace, const TriangleVisit& visit, int step, int direction) {
+  const std::optional<TriangleSetup> setup = setupOf(trace, visit);
+  if (!setup) return -1;
+  std::vector<int> starts;
+  int count = 0;
+  for (const auto& run : visitRunsOf(*setup, trace)) {
+    starts.push_back(count);
+    count += run[1] - run[0];
+  }
+  if (starts.empty()) return -1;
+  if (step < 0) return 0;
+  // The span holding the step: the last one starting at or before it.
+  const auto holding = std::upper_bound(starts.begin(), starts.end(), step) - 1;
+  const auto index = std::clamp<std::ptrdiff_t>(holding - starts.begin() + direction, 0,
+                                                static_cast<std::ptrdiff_t>(starts.size()) - 1);
+  return starts[static_cast<std::size_t>(index)];
+}
+
+std::optional<std::array<float, 3>> weightsAt(const ExplorerWeightMap& map, int x, int yTop) {
+  if (x < map.x0 || yTop < map.y0 || x >= map.x0 + map.width || yTop >= map.y0 + map.height) return std::nullopt;
+  const std::size_t at = static_cast<std::size_t>(yTop - map.y0) * static_cast<std::size_t>(map.width) +
+                         static_cast<std::size_t>(x - map.x0);
+  if (!map.covered[at]) return std::nullopt;
+  return map.weights[at];
+}
+
+Image weightMapImage(const ExplorerWeightMap& map) {
+  Image image;
+  image.width = map.width;
+  image.height = map.height;
+  image.rgba.assign(map.weights.size() * 4, 0);
+  const auto byte = [](float w) { return static_cast<std::uint8_t>(std::lround(std::clamp(w, 0.0f, 1.0f) * 255.0f)); };
+  for (std::size_t i = 0; i < map.weights.size(); ++i) {
+    if (!map.covered[i]) continue;
+    for (std::size_t c = 0; c < 3; ++c) image.rgba[4 * i + c] = byte(map.weights[i][c]);
+    image.rgba[4 * i + 3] = 255;
+  }
+  return image;
 }
 
 nlohmann::json explorerViewToJson(const ExplorerView& view) {
@@ -336,8 +570,31 @@ nlohmann::json explorerViewToJson(const ExplorerView& view) {
                   {"covered", o.covered.size()},
                   {"pixel_centre", {o.pixelCentre.x, o.pixelCentre.y}}};
   if (o.boundingBox) overlay["bounding_box"] = *o.boundingBox;
-  return {{"stage", toString(view.stage)}, {"title", view.title},   {"clip_pass", view.clipPass},
-          {"clip_passes", view.clipPasses},  {"lines", view.lines}, {"overlay", overlay}};
+  int visited = 0;
+  for (const auto& run : o.visitedRuns) visited += run[1] - run[0];
+  overlay["visited"] = visited;
+  if (o.visitPixel) overlay["visit_pixel"] = *o.visitPixel;
+  overlay["weight_corners"] = points(o.weightCorners);
+  if (!o.weightMap.covered.empty()) {
+    const auto& map = o.weightMap;
+    json weightMap = {{"box", {map.x0, map.y0, map.width, map.height}},
+                      {"covered", std::count(map.covered.begin(), map.covered.end(), std::uint8_t{1})}};
+    if (const std::optional<std::array<float, 3>> w = weightsAt(map, static_cast<int>(o.pixelCentre.x),
+                                                                   static_cast<int>(o.pixelCentre.y))) {
+      weightMap["at_pixel"] = *w;
+    }
+    overlay["weight_map"] = weightMap;
+  }
+  json frame = json::object();
+  for (const ExplorerFrameArrow& a : o.frameArrows) {
+    frame[std::string(1, a.axis)] = {{a.from.x, a.from.y}, {a.to.x, a.to.y}};
+  }
+  overlay["frame"] = frame;
+  return {{"stage", toString(view.stage)},  {"title", view.title},
+          {"clip_pass", view.clipPass},     {"clip_passes", view.clipPasses},
+          {"raster_step", view.rasterStep}, {"raster_steps", view.rasterSteps},
+          {"weights", view.perspectiveMap ? "perspective" : "screen"},
+          {"lines", view.lines},            {"overlay", overlay}};
 }
 
 }  // namespace twr::gui

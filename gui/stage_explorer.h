@@ -5,6 +5,7 @@
 // never a formula of the UI's. No drawing here: the app draws the overlay, tests read it.
 #pragma once
 
+#include "scene/image.h"
 #include "softrender/pixel_trace.h"
 
 #include <nlohmann/json_fwd.hpp>
@@ -34,6 +35,23 @@ struct ImagePoint {
   double x = 0.0, y = 0.0;
 };
 
+// Interpolate's map: one fan triangle's weights at every pixel it covers.
+struct ExplorerWeightMap {
+  int x0 = 0, y0 = 0, width = 0, height = 0;  // setup's box, top-left pixels; row y0 first
+  std::vector<std::array<float, 3>> weights;  // width x height; the weights where covered
+  std::vector<std::uint8_t> covered;          // 1 where the fan triangle covers the pixel
+};
+// The weights at pixel (x, yTop) of the image; none where the triangle does not cover it.
+std::optional<std::array<float, 3>> weightsAt(const ExplorerWeightMap& map, int x, int yTop);
+// The map as a picture of its box: weight i in channel i (corner 0 red, 1 green, 2 blue),
+// transparent where the triangle does not cover the pixel.
+Image weightMapImage(const ExplorerWeightMap& map);
+
+struct ExplorerFrameArrow {
+  char axis = 'N';  // 'T', 'B', 'N' or 'L' (the normal the lighting used)
+  ImagePoint from, to;
+};
+
 // What the stage draws over the images; empty parts are not drawn.
 struct ExplorerOverlay {
   // The input triangle's corners through the divide and viewport, where w > 0 (a corner
@@ -51,17 +69,46 @@ struct ExplorerOverlay {
   // The pixels the triangle won in the frame (its id in the frame's triangle ids), top-left
   // coordinates, inside the bounding box (Raster).
   std::vector<std::array<int, 2>> covered;
+  // Raster with a step of the visit order chosen: the pixels the rasterizer had visited by then,
+  // in its order, as runs along a row {x begin, x end (exclusive), y from the top}, and the
+  // pixel of that step (the last run's last pixel).
+  std::vector<std::array<int, 3>> visitedRuns;
+  std::optional<std::array<int, 2>> visitPixel;
+  // Interpolate: the covering fan triangle's corners in the order its weights are listed
+  // (corner i is weight i: red, green, blue), and the map of those weights over its pixels.
+  std::vector<ImagePoint> weightCorners;
+  ExplorerWeightMap weightMap;
+  // Shade: the surface frame at the fragment, T, B, N and the normal lighting used (its
+  // direction in world space), each an arrow from the fragment's position on the image.
+  std::vector<ExplorerFrameArrow> frameArrows;
   ImagePoint pixelCentre;  // the traced pixel's centre
+};
+
+// What the reader chose beside the stage.
+struct ExplorerChoices {
+  int clipPass = -1;    // the clipper's pass the Clip stage draws, -1: the final polygon
+  int rasterStep = -1;  // the Raster stage's step of the visit order (0: the first pixel), -1: none
+  bool perspectiveMap = false;  // Interpolate maps the perspective weights, else the screen barycentrics
 };
 
 struct ExplorerView {
   ExplorerStage stage = ExplorerStage::Vertex;
   int clipPass = -1;    // the clipper's pass shown at the Clip stage, -1: all of them
   int clipPasses = 0;   // how many passes the clipper made
+  int rasterStep = -1;  // the visit order's step shown at the Raster stage, -1: none
+  int rasterSteps = 0;  // how many pixels the rasterizer visits (covers) for the fan triangle
+  bool perspectiveMap = false;
   std::string title;
   std::vector<std::string> lines;  // the stage's numbers, as the trace holds them
   ExplorerOverlay overlay;
 };
+
+// The visit the explorer follows: the trace's visit `index` (its triangles in draw order) where
+// there is one, else the pictures' (stageVisitOf: the one that wrote the pixel); null when no
+// triangle reaches the pixel.
+const TriangleVisit* explorerVisitOf(const PixelTrace& trace, int index);
+// "triangle 2 of 3 reaching the pixel: failed the depth test" for the visit `explorerVisitOf` gives.
+std::string visitChoiceText(const PixelTrace& trace, int index);
 
 // The stage's lines and overlay for `visit`, one of `trace`'s visits. `triangleIds`: the
 // frame's ids (RenderOutput::triangleId, top row first, trace.width x trace.height), or null.
@@ -69,11 +116,26 @@ struct ExplorerView {
 // after, its lines marked; -1 (or a pass the triangle does not have): the final polygon.
 ExplorerView explorerViewOf(const PixelTrace& trace, const TriangleVisit& visit, ExplorerStage stage,
                             const std::vector<std::uint32_t>* triangleIds, int clipPass = -1);
+// The same with every choice: `choices.rasterStep` past the last pixel shows the last one.
+ExplorerView explorerViewOf(const PixelTrace& trace, const TriangleVisit& visit, ExplorerStage stage,
+                            const std::vector<std::uint32_t>* triangleIds, const ExplorerChoices& choices);
+
+// The pixel the rasterizer visits at `step` of the fan triangle that covers the traced pixel
+// (rows from the bottom in GL's order, each row's span left to right), top-left coordinates;
+// none past the end. The step of the traced pixel itself is visitStepOf.
+std::optional<std::array<int, 2>> visitPixelOf(const PixelTrace& trace, const TriangleVisit& visit, int step);
+int visitStepOf(const PixelTrace& trace, const TriangleVisit& visit);  // -1: not covered
+// Stepping the visit order a span at a time: the first pixel of the span after (direction +1)
+// or before (-1) the one holding `step`, the ends held; from no step (-1), the first span.
+int spanStepFrom(const PixelTrace& trace, const TriangleVisit& visit, int step, int direction);
 
 // The view as the scripted tests read it from the app's test state: {"stage", "title",
 // "clip_pass", "clip_passes", "lines", "overlay": {"triangle": [[x, y], ...], "polygon",
 // "polygon_before", "fan", "fan_triangle", "snapped",
-// "bounding_box": [x0, y0, x1, y1], "covered" (a count), "pixel_centre"}}.
+// "bounding_box": [x0, y0, x1, y1], "covered" (a count), "pixel_centre", "visited" (a count),
+// "visit_pixel": [x, y], "weight_corners", "weight_map": {"box": [x0, y0, width, height],
+// "covered" (a count), "at_pixel": [w0, w1, w2]}, "frame": {"T": [[x, y], [x, y]], ...}},
+// "raster_step", "raster_steps", "weights": "screen" or "perspective"}.
 nlohmann::json explorerViewToJson(const ExplorerView& view);
 
 }  // namespace twr::gui

@@ -191,6 +191,7 @@ PixelTrace tracePixelVisits(const Scene& scene, const RenderSettings& requested,
 
   const Viewport viewport{width, height};
   const mat4 clipFromWorld = clipFromWorldFor(scene.camera, width, height);
+  trace.clipFromWorld = clipFromWorld;
   float depth = kClearDepth;
   std::vector<DrawItem> items = flattenScene(scene);
   for (const DrawItem& item : items) validateIndices(item);

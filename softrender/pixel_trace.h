@@ -71,6 +71,7 @@ struct PixelTrace {
   View view = View::Shaded;
   LightingSpace lightingSpace = LightingSpace::World;
   Interpolation interpolation = Interpolation::Perspective;
+  mat4 clipFromWorld{1.0f};  // the camera's projection times view (the vertex stage's)
   std::vector<TriangleVisit> visits;
   // What the renderer wrote to the pixel.
   std::array<std::uint8_t, 4> rgba{};

@@ -188,11 +188,15 @@ class GuiApp {
   void drawTraceSection(const PixelTrace& trace);
   void drawStageExplorerSection();
   void drawClipPassButtons();
+  void drawVisitOrderControls(const ExplorerView& view);
+  void drawWeightMapChoice();
+  void drawVisitChoice();
   // The explorer's view of the pinned pixel's triangle at the shown stage; none while the
   // trace is missing or of an older edit, or when no triangle reaches the pixel. `glSide`:
   // the pixels won are GL's frame's (its triangle ids), else the CPU's.
   std::optional<ExplorerView> explorerView(bool glSide = false) const;
   void drawExplorerOverlay(ImDrawList* draw, const ExplorerView& view, ImVec2 imageMin, ImVec2 imageMax) const;
+  void drawWeightMap(ImDrawList* draw, const ExplorerView& view, ImVec2 imageMin, ImVec2 imageMax) const;
   void drawViewProbeSection();
   void drawSsrMarchSection();
   void drawShadowTapsSection();
@@ -265,7 +269,25 @@ class GuiApp {
   // over the images only then).
   ExplorerStage explorerStage_ = ExplorerStage::Vertex;
   int explorerClipPass_ = -1;  // the clipper's pass the Clip stage draws, -1: the final polygon
+  int explorerVisit_ = -1;  // the trace's visit followed (a triangle under the pixel), -1: the one that wrote it
+  int explorerRasterStep_ = -1;  // the Raster stage's step of the visit order, -1: none shown
+  bool explorerPerspectiveMap_ = false;  // Interpolate maps the perspective weights, else the screen ones
   bool explorerOpen_ = false;
+  // What an explorer view was made from: the Interpolate stage maps every pixel of its
+  // triangle, too much to redo for each image each frame, so the views are kept until it changes.
+  struct ExplorerKey {
+    const void* trace = nullptr;
+    const void* frame = nullptr;
+    std::uint64_t revision = 0, frameRevision = 0;
+    ExplorerStage stage = ExplorerStage::Vertex;
+    int visit = -1, clipPass = -1, rasterStep = -1;
+    bool perspectiveMap = false;
+    bool operator==(const ExplorerKey&) const = default;
+  };
+  mutable std::optional<std::pair<ExplorerKey, ExplorerView>> explorerViews_[2];  // the CPU's image, GL's
+  mutable ImageTexture explorerWeightTexture_;
+  using WeightMapKey = std::tuple<const void*, const void*, std::uint64_t, bool>;  // trace, visit, revision, perspective
+  mutable std::optional<WeightMapKey> explorerWeightKey_;  // the map the texture holds
   // The ray the inspector's SSR march follows: the mirror ray or indirect sample k (kept across
   // pinned pixels; the mirror ray while the settings have no sample k, as in an SSR view).
   int ssrTraceRay_ = kSsrMirrorRay;

@@ -197,6 +197,7 @@ ShownRevisions GuiApp::shownRevisions() const {
 
 void GuiApp::pinPixel(std::optional<PixelPos> pixel) {
   pin_ = PinState{};
+  explorerVisit_ = -1;  // the new pixel's explorer follows the triangle that wrote it
   if (pixel) pinWarning_.clear();
   pin_.pixel = pixel;
 }

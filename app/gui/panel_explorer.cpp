@@ -32,13 +32,17 @@ const char* stageHint(ExplorerStage stage) {
     case ExplorerStage::Raster:
       return "Every pixel centre in the box is tested: inside when all three E > 0. A pixel exactly on an edge two "
              "triangles share goes to the one for which it is a left or bottom edge (the fill rule), so it is drawn "
-             "once. Green: the pixels this triangle won in the frame.";
+             "once. Green: the pixels this triangle won in the frame. Step through the order the rasterizer visits "
+             "them in: row by row from the bottom (GL's rows), each row's span left to right.";
     case ExplorerStage::Interpolate:
       return "Screen barycentrics are each E over twice the area; the perspective weights divide each by its "
-             "corner's w and sum to 1 again (softrender/interpolate.h), so textures do not swim.";
+             "corner's w and sum to 1 again (softrender/interpolate.h), so textures do not swim. The map colours each "
+             "pixel of the fan triangle by its three weights (corner c0 red, c1 green, c2 blue): the screen ones "
+             "are linear on the image; in the perspective ones the nearer corner's colour reaches further.";
     case ExplorerStage::Shade:
       return "Phong at the pixel (shaders/phong.frag, softrender/shade-inl.h): ambient plus each light's diffuse "
-             "and specular, with its attenuation If.";
+             "and specular, with its attenuation If. Arrows at the fragment: T red, B green, N blue, the frame the "
+             "normal map is read in, and Nl (white), the normal the lighting used.";
   }
   return "";
 }
@@ -55,13 +59,24 @@ ImU32 colourOf(int r, int g, int b, int a = 255) { return IM_COL32(r, g, b, a); 
 std::optional<ExplorerView> GuiApp::explorerView(bool glSide) const {
   if (!pin_.cpu || !pin_.cpu->trace || pin_.cpuRevision != doc_.revision) return std::nullopt;
   const PixelTrace& trace = *pin_.cpu->trace;
-  const TriangleVisit* visit = stageVisitOf(trace);
+  const TriangleVisit* visit = explorerVisitOf(trace, explorerVisit_);
   if (!visit) return std::nullopt;
   const BackendFrame& backend = glSide ? glFrame_ : cpuFrame_;
   const RenderOutput* frame = backend.output.get();
   const bool idsUsable = frame && backend.revision == doc_.revision && frame->width == trace.width &&
                          frame->height == trace.height && frame->triangleId.size() == frame->rgba.size() / 4;
-  return explorerViewOf(trace, *visit, explorerStage_, idsUsable ? &frame->triangleId : nullptr, explorerClipPass_);
+  const ExplorerKey key{&trace,         idsUsable ? frame : nullptr, doc_.revision,     backend.revision,
+                        explorerStage_, explorerVisit_,              explorerClipPass_, explorerRasterStep_,
+                        explorerPerspectiveMap_};
+  auto& kept = explorerViews_[glSide ? 1 : 0];
+  if (!kept || kept->first != key) {
+    ExplorerChoices choices;
+    choices.clipPass = explorerClipPass_;
+    choices.rasterStep = explorerRasterStep_;
+    choices.perspectiveMap = explorerPerspectiveMap_;
+    kept.emplace(key, explorerViewOf(trace, *visit, explorerStage_, idsUsable ? &frame->triangleId : nullptr, choices));
+  }
+  return kept->second;
 }
 
 void GuiApp::drawStageExplorerSection() {
@@ -72,10 +87,11 @@ void GuiApp::drawStageExplorerSection() {
     hintText("Waiting for the CPU trace of this edit...");
     return;
   }
-  if (!stageVisitOf(*pin_.cpu->trace)) {
+  if (!explorerVisitOf(*pin_.cpu->trace, explorerVisit_)) {
     hintText("No triangle reaches this pixel: nothing to step through.");
     return;
   }
+  drawVisitChoice();
   if (ImGui::SmallButton("< Previous")) explorerStage_ = previousStage(explorerStage_);
   probe_.item("explorer_previous");
   ImGui::SameLine();
@@ -95,8 +111,10 @@ void GuiApp::drawStageExplorerSection() {
     probe_.item(concat("explorer_stage_", toString(stage)).c_str());
   }
   if (explorerStage_ == ExplorerStage::Clip) drawClipPassButtons();
+  if (explorerStage_ == ExplorerStage::Interpolate) drawWeightMapChoice();
   const std::optional<ExplorerView> view = explorerView();
   if (!view) return;
+  if (view->stage == ExplorerStage::Raster) drawVisitOrderControls(*view);
   hintText(stageHint(view->stage));
   if (monoFont_) ImGui::PushFont(monoFont_);
   for (const std::string& line : view->lines) ImGui::TextWrapped("%s", line.c_str());
@@ -105,6 +123,7 @@ void GuiApp::drawStageExplorerSection() {
   if (probe_.enabled()) {
     nlohmann::json& state = probe_.state()["explorer"];
     state = explorerViewToJson(*view);
+    state["visit"] = visitChoiceText(*pin_.cpu->trace, explorerVisit_);
     if (const std::optional<ExplorerView> gl = explorerView(true)) state["overlay"]["covered_gl"] = gl->overlay.covered.size();
   }
 }
@@ -128,6 +147,83 @@ void GuiApp::drawClipPassButtons() {
   }
 }
 
+// The Raster stage's visit order: a slider over the pixels in the order the rasterizer visits
+// them, and buttons that step a pixel or a span at a time.
+void GuiApp::drawVisitOrderControls(const ExplorerView& view) {
+  if (view.rasterSteps == 0) return;
+  const PixelTrace& trace = *pin_.cpu->trace;
+  const TriangleVisit& visit = *explorerVisitOf(trace, explorerVisit_);
+  const int shown = view.rasterStep;
+  if (ImGui::SmallButton("< Span")) explorerRasterStep_ = spanStepFrom(trace, visit, shown, -1);
+  probe_.item("explorer_span_previous");
+  ImGui::SameLine();
+  if (ImGui::SmallButton("< Pixel")) explorerRasterStep_ = std::max(shown - 1, 0);
+  probe_.item("explorer_pixel_previous");
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Pixel >")) explorerRasterStep_ = std::min(shown + 1, view.rasterSteps - 1);
+  probe_.item("explorer_pixel_next");
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Span >")) explorerRasterStep_ = spanStepFrom(trace, visit, shown, +1);
+  probe_.item("explorer_span_next");
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Traced")) explorerRasterStep_ = visitStepOf(trace, visit);
+  probe_.item("explorer_step_traced");
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Off")) explorerRasterStep_ = -1;
+  probe_.item("explorer_step_off");
+  int step = std::max(shown, 0);
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  if (ImGui::SliderInt("##visit", &step, 0, view.rasterSteps - 1, shown < 0 ? "visit order: off" : "step %d")) {
+    explorerRasterStep_ = step;
+  }
+  probe_.item("explorer_visit_slider");
+  hintText("Purple: the pixels visited so far, in the rasterizer's order; white: the pixel of this step.");
+}
+
+// Which of the triangles reaching the pixel the explorer follows (the one that wrote it first):
+// a hidden triangle, culled or behind another, is stepped through the same way.
+void GuiApp::drawVisitChoice() {
+  const PixelTrace& trace = *pin_.cpu->trace;
+  const int count = static_cast<int>(trace.visits.size());
+  if (count > 1) {
+    const TriangleVisit* shown = explorerVisitOf(trace, explorerVisit_);
+    const int index = static_cast<int>(shown - trace.visits.data());
+    if (ImGui::SmallButton("< Triangle")) explorerVisit_ = std::max(index - 1, 0);
+    probe_.item("explorer_visit_previous");
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Triangle >")) explorerVisit_ = std::min(index + 1, count - 1);
+    probe_.item("explorer_visit_next");
+    ImGui::SameLine();
+  }
+  ImGui::TextWrapped("%s", visitChoiceText(trace, explorerVisit_).c_str());
+}
+
+// The Interpolate stage's map: the screen barycentrics or the perspective weights.
+void GuiApp::drawWeightMapChoice() {
+  if (ImGui::RadioButton("Screen barycentrics", !explorerPerspectiveMap_)) explorerPerspectiveMap_ = false;
+  probe_.item("explorer_weights_screen");
+  ImGui::SameLine();
+  if (ImGui::RadioButton("Perspective weights", explorerPerspectiveMap_)) explorerPerspectiveMap_ = true;
+  probe_.item("explorer_weights_perspective");
+}
+
+// The weight map's texture is uploaded once per view and drawn on every image.
+void GuiApp::drawWeightMap(ImDrawList* draw, const ExplorerView& view, ImVec2 imageMin, ImVec2 imageMax) const {
+  const ExplorerWeightMap& map = view.overlay.weightMap;
+  if (map.covered.empty()) return;
+  const WeightMapKey key{&*pin_.cpu->trace, explorerVisitOf(*pin_.cpu->trace, explorerVisit_), doc_.revision,
+                         view.perspectiveMap};
+  if (explorerWeightKey_ != key) {
+    explorerWeightTexture_.upload(weightMapImage(map));
+    explorerWeightKey_ = key;
+  }
+  const float sx = (imageMax.x - imageMin.x) / static_cast<float>(renderWidth_);
+  const float sy = (imageMax.y - imageMin.y) / static_cast<float>(renderHeight_);
+  const ImVec2 from(imageMin.x + static_cast<float>(map.x0) * sx, imageMin.y + static_cast<float>(map.y0) * sy);
+  const ImVec2 to(from.x + static_cast<float>(map.width) * sx, from.y + static_cast<float>(map.height) * sy);
+  draw->AddImage(explorerWeightTexture_.id(), from, to, ImVec2(0, 0), ImVec2(1, 1), IM_COL32(255, 255, 255, 235));
+}
+
 void GuiApp::drawExplorerOverlay(ImDrawList* draw, const ExplorerView& view, ImVec2 imageMin, ImVec2 imageMax) const {
   const float sx = (imageMax.x - imageMin.x) / static_cast<float>(renderWidth_);
   const float sy = (imageMax.y - imageMin.y) / static_cast<float>(renderHeight_);
@@ -142,6 +238,7 @@ void GuiApp::drawExplorerOverlay(ImDrawList* draw, const ExplorerView& view, ImV
     for (const ImVec2& p : screen) draw->AddCircleFilled(p, 2.5f * uiScale_, colour);
   };
   const ExplorerOverlay& o = view.overlay;
+  drawWeightMap(draw, view, imageMin, imageMax);
   // The pixels won, one rectangle per run along a row.
   for (std::size_t i = 0; i < o.covered.size();) {
     std::size_t end = i + 1;
@@ -171,6 +268,37 @@ void GuiApp::drawExplorerOverlay(ImDrawList* draw, const ExplorerView& view, ImV
     draw->AddText(ImVec2(p.x + 4.0f, p.y - 14.0f * uiScale_), colourOf(90, 220, 255), concat('p', k).c_str());
   }
   outline(o.snapped, colourOf(255, 150, 50), thick);
+  // The visit order so far, and the pixel of the step.
+  for (const auto& run : o.visitedRuns) {
+    draw->AddRectFilled(at({static_cast<double>(run[0]), static_cast<double>(run[2])}),
+                        at({static_cast<double>(run[1]), static_cast<double>(run[2] + 1)}), colourOf(200, 90, 255, 120));
+  }
+  if (o.visitPixel) {
+    const ImagePoint p{static_cast<double>((*o.visitPixel)[0]), static_cast<double>((*o.visitPixel)[1])};
+    draw->AddRect(at(p), at({p.x + 1.0, p.y + 1.0}), colourOf(255, 255, 255), 0.0f, 0, thick);
+  }
+  // The weight map's corners, each in its weight's colour.
+  const ImU32 cornerColours[] = {colourOf(255, 70, 70), colourOf(70, 255, 70), colourOf(90, 140, 255)};
+  for (std::size_t i = 0; i < o.weightCorners.size() && i < 3; ++i) {
+    const ImVec2 p = at(o.weightCorners[i]);
+    draw->AddCircleFilled(p, 4.0f * uiScale_, cornerColours[i]);
+    draw->AddText(ImVec2(p.x + 5.0f, p.y - 14.0f * uiScale_), cornerColours[i], concat('c', i).c_str());
+  }
+  // The surface frame at the fragment: T red, B green, N blue (as the TBN debug lines), the lit normal white.
+  for (const ExplorerFrameArrow& a : o.frameArrows) {
+    const ImU32 colour = a.axis == 'T'   ? colourOf(255, 80, 80)
+                         : a.axis == 'B' ? colourOf(80, 255, 80)
+                         : a.axis == 'N' ? colourOf(90, 140, 255)
+                                         : colourOf(255, 255, 255);
+    // Nl thin over the others, its label below the tip: it lies on N where no map bends it.
+    const bool lit = a.axis == 'L';
+    const ImVec2 from = at(a.from), to = at(a.to);
+    draw->AddLine(from, to, colour, (lit ? 1.0f : 2.5f) * uiScale_);
+    if (lit) draw->AddCircle(to, 4.0f * uiScale_, colour, 0, 1.0f * uiScale_);
+    else draw->AddCircleFilled(to, 3.0f * uiScale_, colour);
+    const char axis[2] = {a.axis, '\0'};
+    draw->AddText(ImVec2(to.x + 5.0f * uiScale_, to.y + (lit ? 2.0f : -15.0f) * uiScale_), colour, lit ? "Nl" : axis);
+  }
 }
 
 }  // namespace twr::gui

@@ -1217,4 +1217,53 @@ TEST(GuiScripted, StageExplorerSetupRasterAndShadeShowTheTracesNumbers) {
   EXPECT_EQ(session.app.quit(), 0) << session.app.err();
 }
 
+// The raster's visit order stepped with the buttons, the Interpolate stage's two maps and the
+// Shade stage's frame, each held to `twinraster trace --json` at the pixel.
+TEST(GuiScripted, StageExplorerVisitOrderWeightMapsAndFrameFollowTheTrace) {
+  REQUIRE_DISPLAY_AND_XDOTOOL();
+  ExplorerSession session;
+  ASSERT_FALSE(session.visit.is_null());
+  GuiProcess& app = session.app;
+  const json raster = explorerStage(app, "raster");
+  EXPECT_EQ(raster["raster_step"], -1) << "no step until one is asked for";
+  const int steps = raster["raster_steps"].get<int>();
+  EXPECT_GT(steps, 0) << raster.dump(1);
+  EXPECT_TRUE(anyLineHas(raster, "visit order of fan triangle " + std::to_string(session.visit["fan_triangle"].get<int>()) +
+                                     ": " + std::to_string(steps) + " pixels"))
+      << raster.dump(1);
+  const auto stepShown = [&](const std::string& button, const std::string& what, const std::function<bool(const json&)>& done) {
+    app.click(button);
+    return app.waitFor(what, [&](const json& st) { return st.contains("explorer") && done(st["explorer"]); })["explorer"];
+  };
+  const json first = stepShown("explorer_pixel_next", "the first step", [](const json& e) { return e["raster_step"] == 0; });
+  const int firstRow = first["overlay"]["visit_pixel"][1].get<int>();
+  EXPECT_LE(firstRow, first["overlay"]["bounding_box"][3].get<int>());
+  EXPECT_GE(firstRow, kExplorerY) << "the bottom rows come first";
+  EXPECT_EQ(first["overlay"]["visited"], 1);
+  const json next = stepShown("explorer_span_next", "the next span", [](const json& e) { return e["raster_step"].get<int>() > 0; });
+  EXPECT_EQ(next["overlay"]["visit_pixel"][1].get<int>(), firstRow - 1) << "one row up";
+  const json traced = stepShown("explorer_step_traced", "the traced pixel's step", [&](const json& e) {
+    return e["overlay"].contains("visit_pixel") && e["overlay"]["visit_pixel"] == json::array({kExplorerX, kExplorerY});
+  });
+  EXPECT_EQ(traced["overlay"]["visited"].get<int>(), traced["raster_step"].get<int>() + 1);
+  // Interpolate: the map's weights at the pixel are the trace's, screen then perspective.
+  const json screen = explorerStage(app, "interpolate");
+  ASSERT_TRUE(screen["overlay"].contains("weight_map")) << screen.dump(1);
+  EXPECT_EQ(screen["overlay"]["weight_map"]["covered"].get<int>(), steps);
+  EXPECT_EQ(screen["overlay"]["weight_map"]["at_pixel"], session.visit["barycentrics"]) << screen.dump(1);
+  const json perspective = stepShown("explorer_weights_perspective", "the perspective map",
+                                     [](const json& e) { return e["weights"] == "perspective"; });
+  EXPECT_EQ(perspective["overlay"]["weight_map"]["at_pixel"], session.visit["perspective_weights"]);
+  // Shade: the frame's arrows start at the fragment, the pixel's centre.
+  const json shade = explorerStage(app, "shade");
+  const json& frame = shade["overlay"]["frame"];
+  for (const char* axis : {"N", "L"}) {
+    ASSERT_TRUE(frame.contains(axis)) << shade.dump(1);
+    EXPECT_NEAR(frame[axis][0][0].get<double>(), kExplorerX + 0.5, 0.05) << axis;
+    EXPECT_NEAR(frame[axis][0][1].get<double>(), kExplorerY + 0.5, 0.05) << axis;
+  }
+  EXPECT_TRUE(anyLineHas(shade, "N (" + sixDigits(session.visit["shading"]["N"][0].get<double>()))) << shade.dump(1);
+  EXPECT_EQ(app.quit(), 0) << app.err();
+}
+
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include "scene/scene_file.h"
 #include "softrender/cpu_renderer.h"
+#include "softrender/raster.h"
 #include "softrender/stage_pictures.h"
 
 #include <gtest/gtest.h>
@@ -126,6 +127,145 @@ TEST(StageExplorer, SetupAndRasterShowTheSnappedCornersBoxAndPixelsWon) {
   for (const auto& p : raster.overlay.covered) {
     EXPECT_EQ(t.frame.triangleId[static_cast<std::size_t>(p[1]) * kWidth + static_cast<std::size_t>(p[0])], visit.triangleId);
   }
+}
+
+TEST(StageExplorer, FollowsAnyTriangleReachingThePixelAndTheOneThatWroteItFirst) {
+  const Traced& t = traced();
+  ASSERT_FALSE(t.trace.visits.empty());
+  EXPECT_EQ(explorerVisitOf(t.trace, -1), stageVisitOf(t.trace));
+  EXPECT_EQ(explorerVisitOf(t.trace, 0), &t.trace.visits[0]);
+  EXPECT_EQ(explorerVisitOf(t.trace, static_cast<int>(t.trace.visits.size())), stageVisitOf(t.trace)) << "past the end";
+  const std::string text = visitChoiceText(t.trace, 0);
+  EXPECT_NE(text.find("triangle 1 of " + std::to_string(t.trace.visits.size()) + " reaching the pixel (id " +
+                      std::to_string(t.trace.visits[0].triangleId) + "): " + toString(t.trace.visits[0].outcome)),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(explorerVisitOf(PixelTrace{}, 0), nullptr);
+  EXPECT_EQ(visitChoiceText(PixelTrace{}, -1), "no triangle reaches the pixel");
+}
+
+TEST(StageExplorer, VisitOrderStepsThroughTheRasterizersSpansFromTheBottomRow) {
+  const Traced& t = traced();
+  const TriangleVisit& visit = *stageVisitOf(t.trace);
+  ExplorerChoices choices;
+  const ExplorerView off = explorerViewOf(t.trace, visit, ExplorerStage::Raster, nullptr, choices);
+  EXPECT_EQ(off.rasterStep, -1);
+  EXPECT_TRUE(off.overlay.visitedRuns.empty());
+  EXPECT_FALSE(off.overlay.visitPixel);
+  // Every pixel of the box whose centre the three edge functions pass is one step.
+  TriangleSetup setup;
+  ASSERT_EQ(setupTriangle(visit.window, CullMode::None, FrontFace::Ccw, Viewport{kWidth, kHeight}, setup),
+            SetupResult::Ready);
+  EXPECT_EQ(setup.xFixed, visit.xFixed) << "the explorer's setup is the trace's";
+  int inside = 0;
+  for (int py = setup.y0; py <= setup.y1; ++py) {
+    for (int px = setup.x0; px <= setup.x1; ++px) inside += coversPixel(setup, px, py) ? 1 : 0;
+  }
+  ASSERT_GT(inside, 1);
+  EXPECT_EQ(off.rasterSteps, inside);
+  // The first step is the leftmost covered pixel of the lowest row with any (GL's row py from
+  // the bottom; the box's lowest rows may hold none).
+  int lowest = setup.y0;
+  while (coveredSpan(setup, lowest).xBegin >= coveredSpan(setup, lowest).xEnd) ++lowest;
+  choices.rasterStep = 0;
+  const ExplorerView first = explorerViewOf(t.trace, visit, ExplorerStage::Raster, nullptr, choices);
+  ASSERT_TRUE(first.overlay.visitPixel);
+  EXPECT_EQ((*first.overlay.visitPixel)[1], kHeight - 1 - lowest);
+  EXPECT_EQ((*first.overlay.visitPixel)[0], coveredSpan(setup, lowest).xBegin);
+  // The traced pixel's step shows the traced pixel, with every pixel before it visited.
+  const int traced = visitStepOf(t.trace, visit);
+  ASSERT_GE(traced, 0);
+  choices.rasterStep = traced;
+  const ExplorerView atTraced = explorerViewOf(t.trace, visit, ExplorerStage::Raster, nullptr, choices);
+  EXPECT_EQ(atTraced.overlay.visitPixel, (std::array<int, 2>{kX, kY}));
+  EXPECT_EQ(visitPixelOf(t.trace, visit, traced), (std::array<int, 2>{kX, kY}));
+  int visited = 0;
+  for (const auto& run : atTraced.overlay.visitedRuns) {
+    visited += run[1] - run[0];
+    EXPECT_GE(run[2], kY) << "rows below the pixel come first";
+  }
+  EXPECT_EQ(visited, traced + 1);
+  EXPECT_TRUE(anyLineHas(atTraced, "> step " + std::to_string(traced) + " of "));
+  // Past the end holds the last pixel.
+  choices.rasterStep = inside + 10;
+  EXPECT_EQ(explorerViewOf(t.trace, visit, ExplorerStage::Raster, nullptr, choices).rasterStep, inside - 1);
+  EXPECT_FALSE(visitPixelOf(t.trace, visit, inside));
+}
+
+TEST(StageExplorer, SpanStepsGoToTheFirstPixelOfTheNextOrPreviousSpan) {
+  const Traced& t = traced();
+  const TriangleVisit& visit = *stageVisitOf(t.trace);
+  ExplorerChoices choices;
+  choices.rasterStep = 0;
+  EXPECT_EQ(spanStepFrom(t.trace, visit, -1, +1), 0);
+  const int second = spanStepFrom(t.trace, visit, 0, +1);
+  ASSERT_GT(second, 0);
+  choices.rasterStep = second - 1;
+  const ExplorerView endOfFirst = explorerViewOf(t.trace, visit, ExplorerStage::Raster, nullptr, choices);
+  EXPECT_EQ(endOfFirst.overlay.visitedRuns.size(), 1u) << "the first span ends just before the second starts";
+  EXPECT_EQ(spanStepFrom(t.trace, visit, second - 1, +1), second);
+  EXPECT_EQ(spanStepFrom(t.trace, visit, second, -1), 0);
+  EXPECT_EQ(spanStepFrom(t.trace, visit, 0, -1), 0) << "held at the first span";
+  const int last = explorerViewOf(t.trace, visit, ExplorerStage::Raster, nullptr, choices).rasterSteps - 1;
+  const int lastSpan = spanStepFrom(t.trace, visit, last, 0);
+  EXPECT_EQ(spanStepFrom(t.trace, visit, last, +1), lastSpan) << "held at the last span";
+}
+
+TEST(StageExplorer, WeightMapHoldsThePipelinesWeightsAtEveryCoveredPixel) {
+  const Traced& t = traced();
+  const TriangleVisit& visit = *stageVisitOf(t.trace);
+  ExplorerChoices choices;
+  const ExplorerView screen = explorerViewOf(t.trace, visit, ExplorerStage::Interpolate, nullptr, choices);
+  choices.perspectiveMap = true;
+  const ExplorerView perspective = explorerViewOf(t.trace, visit, ExplorerStage::Interpolate, nullptr, choices);
+  const ExplorerWeightMap& s = screen.overlay.weightMap;
+  const ExplorerWeightMap& p = perspective.overlay.weightMap;
+  // At the traced pixel, bit for bit the trace's own weights.
+  EXPECT_EQ(weightsAt(s, kX, kY), visit.weights.screen);
+  EXPECT_EQ(weightsAt(p, kX, kY), visit.weights.perspective);
+  ASSERT_EQ(screen.overlay.weightCorners.size(), 3u);
+  const int steps = explorerViewOf(t.trace, visit, ExplorerStage::Raster, nullptr, ExplorerChoices{}).rasterSteps;
+  EXPECT_EQ(std::count(s.covered.begin(), s.covered.end(), std::uint8_t{1}), steps);
+  // Each sums to 1; the corners' depths differ, so perspective moves the weights somewhere.
+  float largestShift = 0.0f;
+  for (std::size_t i = 0; i < s.weights.size(); ++i) {
+    if (!s.covered[i]) continue;
+    EXPECT_NEAR(s.weights[i][0] + s.weights[i][1] + s.weights[i][2], 1.0f, 1e-5f);
+    EXPECT_NEAR(p.weights[i][0] + p.weights[i][1] + p.weights[i][2], 1.0f, 1e-5f);
+    for (std::size_t c = 0; c < 3; ++c) largestShift = std::max(largestShift, std::abs(s.weights[i][c] - p.weights[i][c]));
+  }
+  EXPECT_GT(largestShift, 0.05f);
+  // The picture: opaque where covered, the weights in its channels, clear elsewhere.
+  const Image image = weightMapImage(s);
+  ASSERT_EQ(image.width, s.width);
+  const std::uint8_t* at = image.pixel(kX - s.x0, kY - s.y0);
+  EXPECT_EQ(at[3], 255);
+  EXPECT_EQ(at[0], static_cast<std::uint8_t>(std::lround(visit.weights.screen[0] * 255.0f)));
+  const auto hole = std::find(s.covered.begin(), s.covered.end(), std::uint8_t{0});
+  if (hole != s.covered.end()) {
+    EXPECT_EQ(image.rgba[4 * static_cast<std::size_t>(hole - s.covered.begin()) + 3], 0);
+  }
+  EXPECT_TRUE(anyLineHas(perspective, "map: the perspective weights"));
+  EXPECT_FALSE(weightsAt(s, s.x0 - 1, kY)) << "outside the box";
+}
+
+TEST(StageExplorer, ShadeDrawsTheSurfaceFrameFromTheFragment) {
+  const Traced& t = traced();
+  const TriangleVisit& visit = *stageVisitOf(t.trace);
+  ASSERT_EQ(visit.outcome, TraceOutcome::Shaded);
+  const ExplorerView shade = explorerViewOf(t.trace, visit, ExplorerStage::Shade, nullptr);
+  std::string axes;
+  for (const ExplorerFrameArrow& a : shade.overlay.frameArrows) {
+    axes += a.axis;
+    // From the fragment, which is the traced pixel's centre, to a tip some pixels away.
+    EXPECT_NEAR(a.from.x, kX + 0.5, 0.05) << a.axis;
+    EXPECT_NEAR(a.from.y, kY + 0.5, 0.05) << a.axis;
+    EXPECT_GT(std::hypot(a.to.x - a.from.x, a.to.y - a.from.y), 1.0) << a.axis;
+  }
+  EXPECT_NE(axes.find('N'), std::string::npos) << axes;
+  EXPECT_NE(axes.find('L'), std::string::npos) << axes;
+  EXPECT_TRUE(anyLineHas(shade, "T ("));
+  EXPECT_TRUE(explorerViewOf(t.trace, visit, ExplorerStage::Raster, nullptr).overlay.frameArrows.empty());
 }
 
 }  // namespace
