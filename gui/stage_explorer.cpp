@@ -196,6 +196,98 @@ std::vector<ExplorerFrameArrow> frameArrowsOf(const PixelTrace& trace, const Tri
   return arrows;
 }
 
+// NDC past this is left off the plot's bounds (a corner just in front of the eye lands hundreds
+// of units out); NDC units.
+constexpr double kNdcPlotReach = 3.0;
+constexpr double kPlotMargin = 0.1;  // of the plot's extent, on each side
+
+PlotPoint plotPointOf(const vec4& p, ClipPlotAxes axes) {
+  switch (axes) {
+    case ClipPlotAxes::XW: return {p.x, p.w};
+    case ClipPlotAxes::YW: return {p.y, p.w};
+    case ClipPlotAxes::ZW: return {p.z, p.w};
+    case ClipPlotAxes::Ndc: break;
+  }
+  return {static_cast<double>(p.x) / p.w, static_cast<double>(p.y) / p.w};
+}
+
+// A polygon on the plot; in NDC a vertex with w <= 0 has no place and is counted off it.
+std::vector<PlotPoint> plotPointsOf(const std::vector<vec4>& polygon, ClipPlotAxes axes, int& offPlot) {
+  std::vector<PlotPoint> points;
+  for (const vec4& p : polygon) {
+    if (axes == ClipPlotAxes::Ndc && !(p.w > 0.0f)) {
+      ++offPlot;
+      continue;
+    }
+    points.push_back(plotPointOf(p, axes));
+  }
+  return points;
+}
+
+// Every point and the origin (NDC: the frustum's square, within kNdcPlotReach), with a margin.
+std::array<double, 4> plotBoundsOf(const ClipPlot& plot) {
+  const bool ndc = plot.axes == ClipPlotAxes::Ndc;
+  std::array<double, 4> b = ndc ? std::array<double, 4>{-1.0, -1.0, 1.0, 1.0} : std::array<double, 4>{0.0, 0.0, 0.0, 0.0};
+  for (const auto* list : {&plot.before, &plot.after}) {
+    for (const PlotPoint& p : *list) {
+      b = {std::min(b[0], p[0]), std::min(b[1], p[1]), std::max(b[2], p[0]), std::max(b[3], p[1])};
+    }
+  }
+  if (ndc) {
+    for (double& v : b) v = std::clamp(v, -kNdcPlotReach, kNdcPlotReach);
+  }
+  const double margin = kPlotMargin * std::max({b[2] - b[0], b[3] - b[1], 1e-3});
+  return {b[0] - margin, b[1] - margin, b[2] + margin, b[3] + margin};
+}
+
+// The frustum planes that are lines on the plot: a = -w and a = w through the origin, across
+// the bounds (and w = kMinClipW when that plane cut); in NDC the square's sides.
+std::vector<ClipPlotLine> planeLinesOf(const ClipPlot& plot, int cuttingPlane) {
+  std::vector<ClipPlotLine> lines;
+  const auto add = [&](int plane, std::string name, PlotPoint from, PlotPoint to) {
+    lines.push_back({std::string(clipPlaneName(plane)) + ": " + name, from, to, plane == cuttingPlane});
+  };
+  const std::array<double, 4>& b = plot.bounds;
+  if (plot.axes == ClipPlotAxes::Ndc) {
+    add(kClipPlaneRight, "x/w = 1", {1.0, -1.0}, {1.0, 1.0});
+    add(kClipPlaneLeft, "x/w = -1", {-1.0, -1.0}, {-1.0, 1.0});
+    add(kClipPlaneTop, "y/w = 1", {-1.0, 1.0}, {1.0, 1.0});
+    add(kClipPlaneBottom, "y/w = -1", {-1.0, -1.0}, {1.0, -1.0});
+    return lines;
+  }
+  const int negative = plot.axes == ClipPlotAxes::XW ? kClipPlaneLeft : plot.axes == ClipPlotAxes::YW ? kClipPlaneBottom : kClipPlaneNear;
+  const int positive = plot.axes == ClipPlotAxes::XW ? kClipPlaneRight : plot.axes == ClipPlotAxes::YW ? kClipPlaneTop : kClipPlaneFar;
+  const double reach = std::max({std::abs(b[0]), std::abs(b[1]), std::abs(b[2]), std::abs(b[3])});
+  add(positive, plot.horizontal + " = w", {-reach, -reach}, {reach, reach});
+  add(negative, plot.horizontal + " = -w", {reach, -reach}, {-reach, reach});
+  if (cuttingPlane == kClipPlaneMinW) add(kClipPlaneMinW, "w = " + num(kMinClipW), {b[0], kMinClipW}, {b[2], kMinClipW});
+  return lines;
+}
+
+// The pass `pass` (or, -1, the triangle and the final polygon) on the plot `axes`.
+ClipPlot clipPlotOf(const TriangleVisit& visit, int pass, ClipPlotAxes axes) {
+  ClipPlot plot;
+  plot.axes = axes;
+  const bool ndc = axes == ClipPlotAxes::Ndc;
+  plot.horizontal = ndc ? "x/w" : axes == ClipPlotAxes::XW ? "x" : axes == ClipPlotAxes::YW ? "y" : "z";
+  plot.vertical = ndc ? "y/w" : "w";
+  const ClipStep* step = pass >= 0 ? &visit.clipSteps[static_cast<std::size_t>(pass)] : nullptr;
+  plot.before = plotPointsOf(step ? step->before : std::vector<vec4>(visit.posClip.begin(), visit.posClip.end()), axes,
+                             plot.offPlot);
+  plot.after = plotPointsOf(step ? step->after : visit.clippedPolygon, axes, plot.offPlot);
+  if (step) {
+    for (const ClipCut& cut : step->cuts) {
+      const vec4& p = step->after[static_cast<std::size_t>(cut.index)];
+      if (ndc && !(p.w > 0.0f)) continue;
+      plot.cuts.push_back(plotPointOf(p, axes));
+      plot.cutTs.push_back(cut.t);
+    }
+  }
+  plot.bounds = plotBoundsOf(plot);
+  plot.planes = planeLinesOf(plot, step ? step->plane : -1);
+  return plot;
+}
+
 std::array<int, 4> boxOf(const TriangleSetup& s, const PixelTrace& trace) {
   return {s.x0, trace.height - 1 - s.y1, s.x1, trace.height - 1 - s.y0};  // GL rows to top-left rows
 }
@@ -392,6 +484,16 @@ const char* toString(ExplorerStage stage) {
   return "";
 }
 
+const char* toString(ClipPlotAxes axes) {
+  switch (axes) {
+    case ClipPlotAxes::XW: return "x-w";
+    case ClipPlotAxes::YW: return "y-w";
+    case ClipPlotAxes::ZW: return "z-w";
+    case ClipPlotAxes::Ndc: return "ndc";
+  }
+  return "";
+}
+
 const char* titleOf(ExplorerStage stage) {
   switch (stage) {
     case ExplorerStage::Vertex: return "Vertex";
@@ -447,6 +549,7 @@ ExplorerView explorerViewOf(const PixelTrace& trace, const TriangleVisit& visit,
         o.polygon = polygonOf(trace, visit);
       }
       clipLines(visit, view.clipPass, view.lines);
+      view.clipPlot = clipPlotOf(visit, view.clipPass, choices.clipAxes);
       break;
     case ExplorerStage::Divide:
       o.polygon = polygonOf(trace, visit);
@@ -590,11 +693,22 @@ nlohmann::json explorerViewToJson(const ExplorerView& view) {
     frame[std::string(1, a.axis)] = {{a.from.x, a.from.y}, {a.to.x, a.to.y}};
   }
   overlay["frame"] = frame;
-  return {{"stage", toString(view.stage)},  {"title", view.title},
-          {"clip_pass", view.clipPass},     {"clip_passes", view.clipPasses},
-          {"raster_step", view.rasterStep}, {"raster_steps", view.rasterSteps},
-          {"weights", view.perspectiveMap ? "perspective" : "screen"},
-          {"lines", view.lines},            {"overlay", overlay}};
+  json result = {{"stage", toString(view.stage)},  {"title", view.title},
+                 {"clip_pass", view.clipPass},     {"clip_passes", view.clipPasses},
+                 {"raster_step", view.rasterStep}, {"raster_steps", view.rasterSteps},
+                 {"weights", view.perspectiveMap ? "perspective" : "screen"},
+                 {"lines", view.lines},            {"overlay", overlay}};
+  if (view.clipPlot) {
+    const ClipPlot& plot = *view.clipPlot;
+    json planes = json::array();
+    for (const ClipPlotLine& line : plot.planes) {
+      planes.push_back({{"name", line.name}, {"from", line.from}, {"to", line.to}, {"cutting", line.cutting}});
+    }
+    result["clip_plot"] = {{"axes", toString(plot.axes)}, {"before", plot.before}, {"after", plot.after},
+                           {"cuts", plot.cuts},           {"cut_t", plot.cutTs},   {"planes", planes},
+                           {"bounds", plot.bounds},       {"off_plot", plot.offPlot}};
+  }
+  return result;
 }
 
 }  // namespace twr::gui

@@ -52,6 +52,32 @@ struct ExplorerFrameArrow {
   ImagePoint from, to;
 };
 
+// The Clip stage's plot of a pass: one clip coordinate against w, where a side plane is a line
+// through the origin (x = w, x = -w) and the clipper's cut is where an edge crosses it; or
+// x/w against y/w (NDC), where the frustum is the square [-1, 1]^2 (vertices in front of the
+// eye only).
+enum class ClipPlotAxes { XW, YW, ZW, Ndc };
+inline constexpr ClipPlotAxes kClipPlotAxes[] = {ClipPlotAxes::XW, ClipPlotAxes::YW, ClipPlotAxes::ZW, ClipPlotAxes::Ndc};
+const char* toString(ClipPlotAxes axes);  // "x-w", "y-w", "z-w", "ndc"
+
+using PlotPoint = std::array<double, 2>;  // horizontal, vertical (up)
+struct ClipPlotLine {
+  std::string name;  // the plane, "right: x = w"
+  PlotPoint from, to;
+  bool cutting = false;  // the plane of the pass shown
+};
+struct ClipPlot {
+  ClipPlotAxes axes = ClipPlotAxes::XW;
+  std::string horizontal, vertical;       // the axes' names: "x" and "w", or "x/w" and "y/w"
+  std::vector<PlotPoint> before, after;   // the polygon the pass cut and what it left (all passes:
+                                          // the triangle and the final polygon)
+  std::vector<PlotPoint> cuts;            // the vertices the pass made
+  std::vector<float> cutTs;               // ... and each one's t along its edge
+  std::vector<ClipPlotLine> planes;       // the frustum planes that are lines in this plot
+  std::array<double, 4> bounds{};         // what to show: min h, min v, max h, max v
+  int offPlot = 0;                        // vertices left out: NDC of those with w <= 0, or past the bounds
+};
+
 // What the stage draws over the images; empty parts are not drawn.
 struct ExplorerOverlay {
   // The input triangle's corners through the divide and viewport, where w > 0 (a corner
@@ -89,6 +115,7 @@ struct ExplorerChoices {
   int clipPass = -1;    // the clipper's pass the Clip stage draws, -1: the final polygon
   int rasterStep = -1;  // the Raster stage's step of the visit order (0: the first pixel), -1: none
   bool perspectiveMap = false;  // Interpolate maps the perspective weights, else the screen barycentrics
+  ClipPlotAxes clipAxes = ClipPlotAxes::XW;  // the Clip stage's plot
 };
 
 struct ExplorerView {
@@ -96,6 +123,7 @@ struct ExplorerView {
   int clipPass = -1;    // the clipper's pass shown at the Clip stage, -1: all of them
   int clipPasses = 0;   // how many passes the clipper made
   int rasterStep = -1;  // the visit order's step shown at the Raster stage, -1: none
+  std::optional<ClipPlot> clipPlot;  // the Clip stage's plot of the pass shown
   int rasterSteps = 0;  // how many pixels the rasterizer visits (covers) for the fan triangle
   bool perspectiveMap = false;
   std::string title;
@@ -135,7 +163,9 @@ int spanStepFrom(const PixelTrace& trace, const TriangleVisit& visit, int step, 
 // "bounding_box": [x0, y0, x1, y1], "covered" (a count), "pixel_centre", "visited" (a count),
 // "visit_pixel": [x, y], "weight_corners", "weight_map": {"box": [x0, y0, width, height],
 // "covered" (a count), "at_pixel": [w0, w1, w2]}, "frame": {"T": [[x, y], [x, y]], ...}},
-// "raster_step", "raster_steps", "weights": "screen" or "perspective"}.
+// "raster_step", "raster_steps", "weights": "screen" or "perspective", "clip_plot" (the Clip
+// stage): {"axes", "before", "after", "cuts", "cut_t", "planes": [{"name", "from", "to",
+// "cutting"}], "bounds", "off_plot"}}.
 nlohmann::json explorerViewToJson(const ExplorerView& view);
 
 }  // namespace twr::gui

@@ -191,6 +191,7 @@ class GuiApp {
   void drawVisitOrderControls(const ExplorerView& view);
   void drawWeightMapChoice();
   void drawVisitChoice();
+  void drawClipPlot(const ExplorerView& view);
   // The explorer's view of the pinned pixel's triangle at the shown stage; none while the
   // trace is missing or of an older edit, or when no triangle reaches the pixel. `glSide`:
   // the pixels won are GL's frame's (its triangle ids), else the CPU's.
@@ -272,6 +273,7 @@ class GuiApp {
   int explorerVisit_ = -1;  // the trace's visit followed (a triangle under the pixel), -1: the one that wrote it
   int explorerRasterStep_ = -1;  // the Raster stage's step of the visit order, -1: none shown
   bool explorerPerspectiveMap_ = false;  // Interpolate maps the perspective weights, else the screen ones
+  ClipPlotAxes explorerClipAxes_ = ClipPlotAxes::XW;  // the Clip stage's plot
   bool explorerOpen_ = false;
   // What an explorer view was made from: the Interpolate stage maps every pixel of its
   // triangle, too much to redo for each image each frame, so the views are kept until it changes.
@@ -282,6 +284,7 @@ class GuiApp {
     ExplorerStage stage = ExplorerStage::Vertex;
     int visit = -1, clipPass = -1, rasterStep = -1;
     bool perspectiveMap = false;
+    ClipPlotAxes clipAxes = ClipPlotAxes::XW;
     bool operator==(const ExplorerKey&) const = default;
   };
   mutable std::optional<std::pair<ExplorerKey, ExplorerView>> explorerViews_[2];  // the CPU's image, GL's

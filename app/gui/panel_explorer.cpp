@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cstdio>
 #include <iterator>
 
 namespace twr::gui {
@@ -67,13 +69,14 @@ std::optional<ExplorerView> GuiApp::explorerView(bool glSide) const {
                          frame->height == trace.height && frame->triangleId.size() == frame->rgba.size() / 4;
   const ExplorerKey key{&trace,         idsUsable ? frame : nullptr, doc_.revision,     backend.revision,
                         explorerStage_, explorerVisit_,              explorerClipPass_, explorerRasterStep_,
-                        explorerPerspectiveMap_};
+                        explorerPerspectiveMap_, explorerClipAxes_};
   auto& kept = explorerViews_[glSide ? 1 : 0];
   if (!kept || kept->first != key) {
     ExplorerChoices choices;
     choices.clipPass = explorerClipPass_;
     choices.rasterStep = explorerRasterStep_;
     choices.perspectiveMap = explorerPerspectiveMap_;
+    choices.clipAxes = explorerClipAxes_;
     kept.emplace(key, explorerViewOf(trace, *visit, explorerStage_, idsUsable ? &frame->triangleId : nullptr, choices));
   }
   return kept->second;
@@ -115,6 +118,7 @@ void GuiApp::drawStageExplorerSection() {
   const std::optional<ExplorerView> view = explorerView();
   if (!view) return;
   if (view->stage == ExplorerStage::Raster) drawVisitOrderControls(*view);
+  if (view->stage == ExplorerStage::Clip) drawClipPlot(*view);
   hintText(stageHint(view->stage));
   if (monoFont_) ImGui::PushFont(monoFont_);
   for (const std::string& line : view->lines) ImGui::TextWrapped("%s", line.c_str());
@@ -142,9 +146,76 @@ void GuiApp::drawClipPassButtons() {
     ImGui::Text("all %d passes: the polygon the last one left", view->clipPasses);
   } else {
     ImGui::Text("pass %d of %d: grey before the plane, cyan what it left", view->clipPass + 1, view->clipPasses);
-    hintText("A side plane cuts at the image's edge, so what it removes lies off the image; `twinraster trace "
-             "--stages` draws each pass in clip space, where it shows.");
+    hintText("A side plane cuts at the image's edge, so what it removes lies off the image; the plot below draws "
+             "the pass in clip space, where it shows (as `twinraster trace --stages` does).");
   }
+}
+
+// The Clip stage's plot of the pass shown: x, y or z against w, where the two planes of that
+// axis are the diagonals through the origin and a cut lies where an edge crosses one, or NDC
+// with the frustum's square. One unit is as long across as up, so the diagonals stay at 45
+// degrees.
+void GuiApp::drawClipPlot(const ExplorerView& view) {
+  for (const ClipPlotAxes axes : kClipPlotAxes) {
+    if (axes != kClipPlotAxes[0]) ImGui::SameLine();
+    const char* label = axes == ClipPlotAxes::XW   ? "x against w"
+                        : axes == ClipPlotAxes::YW ? "y against w"
+                        : axes == ClipPlotAxes::ZW ? "z against w"
+                                                   : "NDC";
+    if (ImGui::RadioButton(label, explorerClipAxes_ == axes)) explorerClipAxes_ = axes;
+    probe_.item(concat("explorer_axes_", toString(axes)).c_str());
+  }
+  if (!view.clipPlot) return;
+  const ClipPlot& plot = *view.clipPlot;
+  const float width = ImGui::GetContentRegionAvail().x;
+  const ImVec2 size(width, std::min(0.6f * width, 260.0f * uiScale_));
+  const ImVec2 corner = ImGui::GetCursorScreenPos();
+  ImGui::Dummy(size);
+  probe_.item("explorer_clip_plot");
+  const ImVec2 end(corner.x + size.x, corner.y + size.y);
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->AddRectFilled(corner, end, colourOf(18, 20, 26));
+  draw->PushClipRect(corner, end, true);
+  const auto& b = plot.bounds;
+  const double scale = std::min(size.x / (b[2] - b[0]), size.y / (b[3] - b[1]));
+  const double midH = 0.5 * (b[0] + b[2]), midV = 0.5 * (b[1] + b[3]);
+  const auto at = [&](const PlotPoint& p) {
+    return ImVec2(corner.x + 0.5f * size.x + static_cast<float>((p[0] - midH) * scale),
+                  corner.y + 0.5f * size.y - static_cast<float>((p[1] - midV) * scale));
+  };
+  const ImU32 axisColour = colourOf(110, 110, 120);
+  draw->AddLine(at({b[0], 0.0}), at({b[2], 0.0}), axisColour);
+  draw->AddLine(at({0.0, b[1]}), at({0.0, b[3]}), axisColour);
+  draw->AddText(ImVec2(end.x - 40.0f * uiScale_, at({0.0, 0.0}).y + 2.0f), axisColour, plot.horizontal.c_str());
+  draw->AddText(ImVec2(at({0.0, 0.0}).x + 4.0f, corner.y + 2.0f), axisColour, plot.vertical.c_str());
+  for (const ClipPlotLine& line : plot.planes) {
+    const ImU32 colour = line.cutting ? colourOf(255, 220, 60) : colourOf(200, 120, 60, 170);
+    draw->AddLine(at(line.from), at(line.to), colour, (line.cutting ? 2.0f : 1.0f) * uiScale_);
+    // The name near the top of a diagonal, at the middle of a side of the NDC square.
+    const double along = plot.axes == ClipPlotAxes::Ndc ? 0.5 : 0.85;
+    const ImVec2 tip = at({line.from[0] + along * (line.to[0] - line.from[0]), line.from[1] + along * (line.to[1] - line.from[1])});
+    const ImVec2 label(std::clamp(tip.x + 4.0f, corner.x + 2.0f, end.x - 110.0f * uiScale_),
+                       std::clamp(tip.y, corner.y + 2.0f, end.y - 16.0f * uiScale_));
+    draw->AddText(label, colour, line.name.c_str());
+  }
+  const auto polygon = [&](const std::vector<PlotPoint>& points, ImU32 colour) {
+    std::vector<ImVec2> screen;
+    for (const PlotPoint& p : points) screen.push_back(at(p));
+    if (screen.size() >= 2) draw->AddPolyline(screen.data(), static_cast<int>(screen.size()), colour, ImDrawFlags_Closed, 1.5f * uiScale_);
+    for (const ImVec2& p : screen) draw->AddCircleFilled(p, 2.5f * uiScale_, colour);
+  };
+  polygon(plot.before, colourOf(170, 170, 170, 220));
+  polygon(plot.after, colourOf(90, 220, 255));
+  for (std::size_t k = 0; k < plot.cuts.size(); ++k) {
+    const ImVec2 p = at(plot.cuts[k]);
+    draw->AddCircle(p, 5.0f * uiScale_, colourOf(255, 255, 255), 0, 1.5f * uiScale_);
+    char label[32];
+    std::snprintf(label, sizeof label, "t %.3g", plot.cutTs[k]);
+    // One line below the other: a pass's two cuts can lie close together on the plot.
+    draw->AddText(ImVec2(p.x + 7.0f, p.y + (2.0f + 15.0f * static_cast<float>(k)) * uiScale_), colourOf(255, 255, 255), label);
+  }
+  draw->PopClipRect();
+  if (plot.offPlot > 0) hintText(concat(plot.offPlot, " vertices behind the eye (w <= 0) have no NDC: left out.").c_str());
 }
 
 // The Raster stage's visit order: a slider over the pixels in the order the rasterizer visits

@@ -1154,6 +1154,18 @@ TEST(GuiScripted, StageExplorerClipShowsTheTracesPlanesAndIntersections) {
   EXPECT_EQ(first["overlay"]["polygon_before"].size(), 3u) << first.dump(1);
   EXPECT_EQ(first["overlay"]["polygon"].size(), step["polygon"].size()) << first.dump(1);
   EXPECT_TRUE(anyLineHas(first, "> " + step["plane"].get<std::string>() + ": ")) << first.dump(1);
+  // The pass in clip space: z against w holds the trace's positions after it, each (z, w).
+  session.app.click("explorer_axes_z-w");
+  const json plot = session.app.waitFor("the z-w plot", [](const json& st) {
+    return st.contains("explorer") && st["explorer"].contains("clip_plot") && st["explorer"]["clip_plot"]["axes"] == "z-w";
+  })["explorer"]["clip_plot"];
+  ASSERT_EQ(plot["after"].size(), step["polygon"].size()) << plot.dump(1);
+  for (std::size_t k = 0; k < plot["after"].size(); ++k) {
+    EXPECT_EQ(plot["after"][k][0], step["polygon"][k][2]) << k;
+    EXPECT_EQ(plot["after"][k][1], step["polygon"][k][3]) << k;
+  }
+  ASSERT_EQ(plot["cut_t"].size(), step["new_vertices"].size());
+  for (std::size_t k = 0; k < plot["cut_t"].size(); ++k) EXPECT_EQ(plot["cut_t"][k], step["new_vertices"][k]["t"]);
   EXPECT_EQ(session.app.quit(), 0) << session.app.err();
 }
 

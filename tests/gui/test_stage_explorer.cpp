@@ -109,6 +109,61 @@ TEST(StageExplorer, OneClipPassDrawsThePolygonBeforeAndAfterItsPlane) {
   EXPECT_EQ(all.overlay.polygon.size(), visit.clippedPolygon.size());
 }
 
+TEST(StageExplorer, ClipPlotDrawsEachPassInClipSpaceWhereItsPlaneIsADiagonal) {
+  const Traced& t = traced();
+  const TriangleVisit& visit = *stageVisitOf(t.trace);
+  for (int pass = 0; pass < static_cast<int>(visit.clipSteps.size()); ++pass) {
+    const ClipStep& step = visit.clipSteps[static_cast<std::size_t>(pass)];
+    for (const ClipPlotAxes axes : kClipPlotAxes) {
+      ExplorerChoices choices;
+      choices.clipPass = pass;
+      choices.clipAxes = axes;
+      const ExplorerView view = explorerViewOf(t.trace, visit, ExplorerStage::Clip, nullptr, choices);
+      ASSERT_TRUE(view.clipPlot) << toString(axes);
+      const ClipPlot& plot = *view.clipPlot;
+      EXPECT_EQ(plot.axes, axes);
+      const bool ndc = axes == ClipPlotAxes::Ndc;
+      // The pass's own clip positions, one coordinate against w, or at x/w, y/w.
+      std::size_t shown = 0;
+      for (const vec4& p : step.after) {
+        if (ndc && !(p.w > 0.0f)) continue;
+        ASSERT_LT(shown, plot.after.size());
+        const PlotPoint& q = plot.after[shown++];
+        const double h = axes == ClipPlotAxes::XW ? p.x : axes == ClipPlotAxes::YW ? p.y : axes == ClipPlotAxes::ZW ? p.z
+                                                                                                   : double(p.x) / p.w;
+        EXPECT_EQ(q[0], h) << toString(axes);
+        EXPECT_EQ(q[1], ndc ? double(p.y) / p.w : double(p.w)) << toString(axes);
+      }
+      EXPECT_EQ(shown, plot.after.size());
+      EXPECT_EQ(plot.cuts.size() + static_cast<std::size_t>(std::count_if(step.cuts.begin(), step.cuts.end(), [&](const ClipCut& c) {
+                  return ndc && !(step.after[static_cast<std::size_t>(c.index)].w > 0.0f);
+                })),
+                step.cuts.size());
+      // Every vertex the pass made lies on its plane, which is marked, where that plane is a line here.
+      const auto cutting = std::find_if(plot.planes.begin(), plot.planes.end(), [](const ClipPlotLine& l) { return l.cutting; });
+      if (cutting == plot.planes.end()) continue;
+      EXPECT_NE(cutting->name.find(clipPlaneName(step.plane)), std::string::npos) << cutting->name;
+      for (const PlotPoint& c : plot.cuts) {
+        const double cross = (cutting->to[0] - cutting->from[0]) * (c[1] - cutting->from[1]) -
+                             (cutting->to[1] - cutting->from[1]) * (c[0] - cutting->from[0]);
+        const double length = std::hypot(cutting->to[0] - cutting->from[0], cutting->to[1] - cutting->from[1]);
+        EXPECT_NEAR(cross / length, 0.0, 1e-5) << cutting->name;
+      }
+    }
+  }
+  // The side planes are diagonals in x against w: right is x = w.
+  ExplorerChoices choices;
+  const ExplorerView all = explorerViewOf(t.trace, visit, ExplorerStage::Clip, nullptr, choices);
+  ASSERT_TRUE(all.clipPlot);
+  EXPECT_EQ(all.clipPlot->before.size(), 3u) << "all passes: the triangle, then the final polygon";
+  EXPECT_EQ(all.clipPlot->after.size(), visit.clippedPolygon.size());
+  const ClipPlotLine& right = all.clipPlot->planes[0];
+  EXPECT_EQ(right.name, "right: x = w");
+  EXPECT_EQ(right.from[0], right.from[1]);
+  EXPECT_EQ(right.to[0], right.to[1]);
+  EXPECT_FALSE(explorerViewOf(t.trace, visit, ExplorerStage::Divide, nullptr).clipPlot);
+}
+
 TEST(StageExplorer, SetupAndRasterShowTheSnappedCornersBoxAndPixelsWon) {
   const Traced& t = traced();
   const TriangleVisit& visit = *stageVisitOf(t.trace);
