@@ -288,6 +288,161 @@ ClipPlot clipPlotOf(const TriangleVisit& visit, int pass, ClipPlotAxes axes) {
   return plot;
 }
 
+// Pixels whose centre lies this close to a shared edge are drawn for the fill rule; pixels.
+constexpr double kSharedEdgeReach = 2.0;
+
+// A triangle across an edge of the covering fan triangle: its window corners, and the two
+// corners of the fan triangle (its setup inputs, 0..2) the edge joins.
+struct EdgeCandidate {
+  std::string with;
+  std::array<WindowVertex, 3> window{};
+  std::array<int, 2> mine{};
+};
+
+// The other fan triangles of a polygon that share an edge with the covering one.
+std::vector<EdgeCandidate> fanCandidatesOf(const PixelTrace& trace, const TriangleVisit& visit) {
+  std::vector<EdgeCandidate> candidates;
+  const int count = static_cast<int>(visit.clippedPolygon.size());
+  const Viewport viewport{trace.width, trace.height};
+  for (int k = 0; k + 3 <= count; ++k) {
+    if (k + 1 == visit.fanTriangle) continue;
+    const std::array<int, 3> corners = fanTriangleCorners(k, true);
+    EdgeCandidate c;
+    int shared = 0;
+    for (int i = 0; i < 3; ++i) {
+      const vec4& p = visit.clippedPolygon[static_cast<std::size_t>(corners[static_cast<std::size_t>(i)])];
+      c.window[static_cast<std::size_t>(i)] = windowFromClip(p, viewport, isInputCorner(p, visit));
+      for (int m = 0; m < 3; ++m) {
+        if (visit.fanCorners[static_cast<std::size_t>(m)] == corners[static_cast<std::size_t>(i)] && shared < 2) {
+          c.mine[static_cast<std::size_t>(shared++)] = m;
+        }
+      }
+    }
+    if (shared != 2) continue;
+    c.with = "fan triangle " + std::to_string(k + 1) + " of the same clipped polygon";
+    candidates.push_back(c);
+  }
+  return candidates;
+}
+
+bool insideFrustum(const std::array<vec4, 3>& corners) {
+  return std::all_of(corners.begin(), corners.end(), [](const vec4& p) {
+    return p.w > 0.0f && std::abs(p.x) <= p.w && std::abs(p.y) <= p.w && std::abs(p.z) <= p.w;
+  });
+}
+
+// The mesh's triangles across the edges of an unclipped triangle, where those are unclipped too.
+std::vector<EdgeCandidate> meshCandidatesOf(const PixelTrace& trace, const TriangleVisit& visit) {
+  std::vector<EdgeCandidate> candidates;
+  if (visit.planesCut != 0 || visit.fanTriangle < 0) return candidates;
+  const Viewport viewport{trace.width, trace.height};
+  for (const EdgeNeighbour& n : visit.neighbours) {
+    if (!insideFrustum(n.posClip)) continue;
+    EdgeCandidate c;
+    for (std::size_t i = 0; i < 3; ++i) c.window[i] = windowFromClip(n.posClip[i], viewport, true);
+    c.mine = n.sharedCorners;  // an unclipped triangle's setup inputs are its corners in order
+    c.with = "triangle " + std::to_string(n.triangleId) + " of the mesh";
+    candidates.push_back(c);
+  }
+  return candidates;
+}
+
+// Setup's edge between inputs a and b (its corners are reordered clockwise).
+const EdgeFunction& edgeBetween(const TriangleSetup& setup, int a, int b) {
+  for (std::size_t i = 0; i < 3; ++i) {
+    const int from = setup.corner[i], to = setup.corner[(i + 1) % 3];
+    if ((from == a && to == b) || (from == b && to == a)) return setup.edges[i];
+  }
+  return setup.edges[0];
+}
+
+// A snapped corner of input `k` on the image, GL window pixels (centres at + 0.5).
+std::array<double, 2> snappedWindowOf(const TriangleSetup& setup, int k) {
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (setup.corner[i] == k) return {setup.xFixed[i] / kFixedOne + 0.5, setup.yFixed[i] / kFixedOne + 0.5};
+  }
+  return {0.0, 0.0};
+}
+
+// Distance of point p from segment a-b and whether p lies beside it (not past either end).
+bool besideSegment(const std::array<double, 2>& p, const std::array<double, 2>& a, const std::array<double, 2>& b,
+                   double reach) {
+  const double dx = b[0] - a[0], dy = b[1] - a[1];
+  const double lengthSquared = dx * dx + dy * dy;
+  if (!(lengthSquared > 0.0)) return false;
+  const double along = ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / lengthSquared;
+  const double across = std::abs((p[0] - a[0]) * dy - (p[1] - a[1]) * dx) / std::sqrt(lengthSquared);
+  return along >= 0.0 && along <= 1.0 && across <= reach;
+}
+
+// Who covers each pixel near the shared edge, both triangles set up by the pipeline.
+ExplorerSharedEdge sharedEdgeFrom(const PixelTrace& trace, const TriangleSetup& mine, const EdgeCandidate& c,
+                                  const TriangleSetup& theirs) {
+  ExplorerSharedEdge e;
+  e.with = c.with;
+  const std::array<double, 2> a = snappedWindowOf(mine, c.mine[0]), b = snappedWindowOf(mine, c.mine[1]);
+  e.from = imageOf(a[0], a[1], trace);
+  e.to = imageOf(b[0], b[1], trace);
+  const EdgeFunction& edge = edgeBetween(mine, c.mine[0], c.mine[1]);
+  e.thisOwns = edge.ownsPixelsOnIt;
+  const int x0 = std::max(0, static_cast<int>(std::floor(std::min(a[0], b[0]) - kSharedEdgeReach)));
+  const int x1 = std::min(trace.width - 1, static_cast<int>(std::ceil(std::max(a[0], b[0]) + kSharedEdgeReach)));
+  const int y0 = std::max(0, static_cast<int>(std::floor(std::min(a[1], b[1]) - kSharedEdgeReach)));
+  const int y1 = std::min(trace.height - 1, static_cast<int>(std::ceil(std::max(a[1], b[1]) + kSharedEdgeReach)));
+  for (int py = y0; py <= y1; ++py) {
+    for (int px = x0; px <= x1; ++px) {
+      if (!besideSegment({px + 0.5, py + 0.5}, a, b, kSharedEdgeReach)) continue;
+      const std::array<int, 2> pixel{px, trace.height - 1 - py};
+      const bool byMine = coversPixel(mine, px, py), byTheirs = coversPixel(theirs, px, py);
+      if (byMine) e.mine.push_back(pixel);
+      if (byTheirs) e.theirs.push_back(pixel);
+      if (byMine && byTheirs) ++e.both;
+      if (edge.at(px, py) - (edge.ownsPixelsOnIt ? 1 : 0) == 0) e.onEdge.push_back(pixel);
+    }
+  }
+  return e;
+}
+
+// The shared edge nearest the traced pixel, of the fan's neighbours or the mesh's.
+std::optional<ExplorerSharedEdge> sharedEdgeOf(const PixelTrace& trace, const TriangleVisit& visit,
+                                               const TriangleSetup& mine) {
+  std::vector<EdgeCandidate> candidates = fanCandidatesOf(trace, visit);
+  if (candidates.empty()) candidates = meshCandidatesOf(trace, visit);
+  const std::array<double, 2> pixel{trace.x + 0.5, trace.yGl + 0.5};
+  std::optional<ExplorerSharedEdge> nearest;
+  double nearestDistance = 0.0;
+  for (const EdgeCandidate& c : candidates) {
+    TriangleSetup theirs;
+    if (setupTriangle(c.window, CullMode::None, FrontFace::Ccw, Viewport{trace.width, trace.height}, theirs) !=
+        SetupResult::Ready) {
+      continue;
+    }
+    const std::array<double, 2> a = snappedWindowOf(mine, c.mine[0]), b = snappedWindowOf(mine, c.mine[1]);
+    const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
+    const double distance = std::abs((pixel[0] - a[0]) * (b[1] - a[1]) - (pixel[1] - a[1]) * (b[0] - a[0])) / length;
+    if (nearest && distance >= nearestDistance) continue;
+    nearest = sharedEdgeFrom(trace, mine, c, theirs);
+    nearestDistance = distance;
+  }
+  return nearest;
+}
+
+void sharedEdgeLines(const std::optional<ExplorerSharedEdge>& e, std::vector<std::string>& lines) {
+  if (!e) {
+    lines.push_back("fill rule: no neighbour across an edge to show it on (not a clipped polygon's fan, and no "
+                    "unclipped triangle of the mesh shares an edge)");
+    return;
+  }
+  lines.push_back("fill rule at the edge shared with " + e->with + ": within " + num(kSharedEdgeReach) +
+                  " px of it this triangle covers " + std::to_string(e->mine.size()) + " pixels, the other " +
+                  std::to_string(e->theirs.size()) + ", both " + std::to_string(e->both));
+  const std::string owner = e->thisOwns ? "this triangle (the edge is its left or bottom edge)"
+                                        : "the other (the edge is this one's right or top edge)";
+  lines.push_back(e->onEdge.empty()
+                      ? "no pixel centre lies exactly on it, so the rule decides none here; one that did would go to " + owner
+                      : std::to_string(e->onEdge.size()) + " pixel centres lie exactly on it (outlined): they go to " + owner);
+}
+
 std::array<int, 4> boxOf(const TriangleSetup& s, const PixelTrace& trace) {
   return {s.x0, trace.height - 1 - s.y1, s.x1, trace.height - 1 - s.y0};  // GL rows to top-left rows
 }
@@ -465,8 +620,10 @@ void rasterStage(const PixelTrace& trace, const TriangleVisit& visit, const std:
       o.visitPixel = std::array<int, 2>{o.visitedRuns.back()[1] - 1, o.visitedRuns.back()[2]};
     }
     tracedStep = visitStepOf(trace, visit);
+    o.sharedEdge = sharedEdgeOf(trace, visit, *setup);
   }
   rasterLines(visit, view, tracedStep, view.lines);
+  sharedEdgeLines(o.sharedEdge, view.lines);
 }
 
 }  // namespace
@@ -687,6 +844,17 @@ nlohmann::json explorerViewToJson(const ExplorerView& view) {
       weightMap["at_pixel"] = *w;
     }
     overlay["weight_map"] = weightMap;
+  }
+  if (o.sharedEdge) {
+    const ExplorerSharedEdge& e = *o.sharedEdge;
+    overlay["shared_edge"] = {{"with", e.with},
+                              {"from", {e.from.x, e.from.y}},
+                              {"to", {e.to.x, e.to.y}},
+                              {"this_owns", e.thisOwns},
+                              {"mine", e.mine.size()},
+                              {"theirs", e.theirs.size()},
+                              {"on_edge", e.onEdge.size()},
+                              {"both", e.both}};
   }
   json frame = json::object();
   for (const ExplorerFrameArrow& a : o.frameArrows) {

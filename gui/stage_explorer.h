@@ -47,6 +47,18 @@ std::optional<std::array<float, 3>> weightsAt(const ExplorerWeightMap& map, int 
 // transparent where the triangle does not cover the pixel.
 Image weightMapImage(const ExplorerWeightMap& map);
 
+// The fill rule at an edge the covering fan triangle shares with a neighbour: the next fan
+// triangle of its clipped polygon, or (unclipped) the mesh's triangle across that edge, the
+// one nearest the pixel. Both are set up by the pipeline; the pixels near the edge each covers.
+struct ExplorerSharedEdge {
+  std::string with;             // "fan triangle 2 of the same polygon", "triangle 1506 of the mesh"
+  ImagePoint from, to;          // the edge on the image (snapped corners)
+  bool thisOwns = false;        // the traced triangle takes the pixel centres exactly on it
+  std::vector<std::array<int, 2>> mine, theirs;  // pixels within reach of the edge each covers (top-left)
+  std::vector<std::array<int, 2>> onEdge;        // pixel centres exactly on the edge
+  int both = 0;                                  // pixels both cover (the rule leaves none)
+};
+
 struct ExplorerFrameArrow {
   char axis = 'N';  // 'T', 'B', 'N' or 'L' (the normal the lighting used)
   ImagePoint from, to;
@@ -95,6 +107,7 @@ struct ExplorerOverlay {
   // The pixels the triangle won in the frame (its id in the frame's triangle ids), top-left
   // coordinates, inside the bounding box (Raster).
   std::vector<std::array<int, 2>> covered;
+  std::optional<ExplorerSharedEdge> sharedEdge;  // Raster: the fill rule where it shares an edge
   // Raster with a step of the visit order chosen: the pixels the rasterizer had visited by then,
   // in its order, as runs along a row {x begin, x end (exclusive), y from the top}, and the
   // pixel of that step (the last run's last pixel).
@@ -163,6 +176,7 @@ int spanStepFrom(const PixelTrace& trace, const TriangleVisit& visit, int step, 
 // "bounding_box": [x0, y0, x1, y1], "covered" (a count), "pixel_centre", "visited" (a count),
 // "visit_pixel": [x, y], "weight_corners", "weight_map": {"box": [x0, y0, width, height],
 // "covered" (a count), "at_pixel": [w0, w1, w2]}, "frame": {"T": [[x, y], [x, y]], ...}},
+// "shared_edge": {"with", "from", "to", "this_owns", "mine", "theirs", "on_edge", "both"} (counts),
 // "raster_step", "raster_steps", "weights": "screen" or "perspective", "clip_plot" (the Clip
 // stage): {"axes", "before", "after", "cuts", "cut_t", "planes": [{"name", "from", "to",
 // "cutting"}], "bounds", "off_plot"}}.

@@ -39,6 +39,41 @@ std::array<WindowVertex, 3> windowTriangle(const ClipVertex& a, const ClipVertex
   return {windowFromClip(a, viewport), windowFromClip(b, viewport), windowFromClip(c, viewport)};
 }
 
+// The triangles of the mesh that share an edge with triangle t (two corners at equal model
+// positions, so seams with split vertices count), the first one found per edge.
+std::vector<EdgeNeighbour> edgeNeighboursOf(const Mesh& mesh, std::size_t t, const VertexUniforms& vertexUniforms,
+                                            std::uint32_t firstTriangleId) {
+  const auto positionOf = [&](std::size_t triangle, std::size_t k) -> const vec3& {
+    return mesh.vertices[mesh.indices[3 * triangle + k]].posModel;
+  };
+  std::vector<EdgeNeighbour> neighbours;
+  std::array<bool, 3> found{};  // edge (k, k + 1) has its neighbour
+  for (std::size_t other = 0; other < mesh.triangleCount() && neighbours.size() < 3; ++other) {
+    if (other == t) continue;
+    std::array<int, 2> shared{};
+    int count = 0;
+    for (int k = 0; k < 3 && count < 3; ++k) {
+      for (std::size_t j = 0; j < 3; ++j) {
+        if (positionOf(t, static_cast<std::size_t>(k)) == positionOf(other, j)) {
+          if (count < 2) shared[static_cast<std::size_t>(count)] = k;
+          ++count;
+          break;
+        }
+      }
+    }
+    if (count != 2) continue;  // a corner only, or the same three corners (a degenerate copy)
+    const std::size_t edge = (shared[0] == 0 && shared[1] == 2) ? 2 : static_cast<std::size_t>(shared[0]);
+    if (found[edge]) continue;
+    found[edge] = true;
+    EdgeNeighbour n;
+    n.triangleId = firstTriangleId + static_cast<std::uint32_t>(other);
+    n.sharedCorners = shared;
+    for (std::size_t j = 0; j < 3; ++j) n.posClip[j] = runVertexStage(mesh.vertices[mesh.indices[3 * other + j]], vertexUniforms).posClip;
+    neighbours.push_back(n);
+  }
+  return neighbours;
+}
+
 // Replays one triangle of a draw item for pixel (x, yGl); appends a visit when the triangle
 // reaches the pixel and updates `depth` as the depth buffer would be.
 void traceTriangle(const DrawItem& item, std::size_t t, const VertexUniforms& vertexUniforms,
@@ -112,6 +147,7 @@ void traceTriangle(const DrawItem& item, std::size_t t, const VertexUniforms& ve
       shadeFragmentDynamic(key, visit.fragment, shadeUniforms, &visit.terms);
       depth = visit.weights.depth;
     }
+    visit.neighbours = edgeNeighboursOf(mesh, t, vertexUniforms, item.firstTriangleId);
     visits.push_back(std::move(visit));
     return;  // the fill rule gives a pixel to exactly one fan triangle
   }

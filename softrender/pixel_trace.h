@@ -35,12 +35,22 @@ enum class TraceOutcome {
 };
 const char* toString(TraceOutcome outcome);
 
+// A triangle of the same mesh that shares an edge with a traced one: two of its corners lie
+// at the model positions of two of the traced triangle's (the fill rule's picture shows who
+// owns the pixels along that edge).
+struct EdgeNeighbour {
+  std::uint32_t triangleId = 0;
+  std::array<vec4, 3> posClip{};      // its vertex stage output
+  std::array<int, 2> sharedCorners{};  // the traced triangle's corners the edge joins
+};
+
 struct TriangleVisit {
   std::uint32_t triangleId = 0;  // global id (as in RenderOutput::triangleId)
   std::string nodeName;
   std::size_t triangleInMesh = 0;
   std::array<vec3, 3> posModel{};
   std::array<vec4, 3> posClip{};       // vertex stage output
+  std::vector<EdgeNeighbour> neighbours;  // up to one per edge
   std::uint32_t planesCut = 0;         // mask, see clip.h
   std::vector<vec4> clippedPolygon;    // posClip of each vertex after clipping
   std::vector<ClipStep> clipSteps;     // the clipper's passes, one per plane that cut it (clip_steps.h)

@@ -35,7 +35,8 @@ const char* stageHint(ExplorerStage stage) {
       return "Every pixel centre in the box is tested: inside when all three E > 0. A pixel exactly on an edge two "
              "triangles share goes to the one for which it is a left or bottom edge (the fill rule), so it is drawn "
              "once. Green: the pixels this triangle won in the frame. Step through the order the rasterizer visits "
-             "them in: row by row from the bottom (GL's rows), each row's span left to right.";
+             "them in: row by row from the bottom (GL's rows), each row's span left to right. Along the edge it "
+             "shares with a neighbour: blue its pixels, orange the neighbour's, outlined the centres exactly on it.";
     case ExplorerStage::Interpolate:
       return "Screen barycentrics are each E over twice the area; the perspective weights divide each by its "
              "corner's w and sum to 1 again (softrender/interpolate.h), so textures do not swim. The map colours each "
@@ -339,6 +340,22 @@ void GuiApp::drawExplorerOverlay(ImDrawList* draw, const ExplorerView& view, ImV
     draw->AddText(ImVec2(p.x + 4.0f, p.y - 14.0f * uiScale_), colourOf(90, 220, 255), concat('p', k).c_str());
   }
   outline(o.snapped, colourOf(255, 150, 50), thick);
+  // The fill rule along a shared edge: each side's pixels in its own colour, the centres on it outlined.
+  if (o.sharedEdge) {
+    const ExplorerSharedEdge& e = *o.sharedEdge;
+    const auto cells = [&](const std::vector<std::array<int, 2>>& pixels, ImU32 colour, bool filled) {
+      for (const auto& p : pixels) {
+        const ImVec2 from = at({static_cast<double>(p[0]), static_cast<double>(p[1])});
+        const ImVec2 to = at({static_cast<double>(p[0] + 1), static_cast<double>(p[1] + 1)});
+        if (filled) draw->AddRectFilled(from, to, colour);
+        else draw->AddRect(from, to, colour, 0.0f, 0, thick);
+      }
+    };
+    cells(e.mine, colourOf(70, 140, 255, 150), true);
+    cells(e.theirs, colourOf(255, 150, 40, 150), true);
+    cells(e.onEdge, colourOf(255, 255, 255), false);
+    draw->AddLine(at(e.from), at(e.to), colourOf(255, 255, 255, 200), 1.0f * uiScale_);
+  }
   // The visit order so far, and the pixel of the step.
   for (const auto& run : o.visitedRuns) {
     draw->AddRectFilled(at({static_cast<double>(run[0]), static_cast<double>(run[2])}),

@@ -30,6 +30,7 @@ inline constexpr SceneTolerance kSceneTolerances[] = {
     {"sphere_fine.json"},
     {"culling.json"},
     {"inside_near.json"},
+    {"fill_rule.json"},
     {"user_clip.json"},
     {"nonuniform_scale.json"},
     {"mirrored_uvs.json"},

@@ -278,6 +278,27 @@ class GuiProcess {
     }
     ADD_FAILURE() << "could not scroll " << item << " into the window";
   }
+  // Scrolls the inspector (the mouse wheel over it, under `item`'s column near the bottom of
+  // what the screen shows) until `item` lies on the screen: a window taller than Xvfb's screen
+  // has rows no pointer reaches.
+  void scrollInspectorTo(const std::string& item) {
+    std::istringstream geometry(capture("xdotool getdisplaygeometry 2>/dev/null"));
+    float screenWidth = 0.0f, screenHeight = 0.0f;
+    geometry >> screenWidth >> screenHeight;
+    for (int attempt = 0; attempt < 60; ++attempt) {
+      const json s = waitForItem(item);
+      if (!s.contains("items") || !s["items"].contains(item) || !s.contains("window")) return;
+      const float shown = screenHeight > 0.0f ? std::min(s["window"][1].get<float>(), screenHeight) : s["window"][1].get<float>();
+      const json& r = s["items"][item];
+      const float top = r[1].get<float>(), bottom = r[3].get<float>();
+      if (top >= 24.0f && bottom <= shown - 24.0f) return;
+      moveTo(0.5f * (r[0].get<float>() + r[2].get<float>()), shown - 40.0f);
+      waitFrames(1);
+      xdotool(bottom > shown - 24.0f ? "click 5" : "click 4");  // wheel down, up
+      waitFrames(3);
+    }
+    ADD_FAILURE() << "could not scroll " << item << " onto the screen";
+  }
   // Opens a combo box and picks one of its entries (each entry is a widget of its own).
   void pick(const std::string& combo, const std::string& entry) {
     scrollTo(combo);
@@ -1155,6 +1176,7 @@ TEST(GuiScripted, StageExplorerClipShowsTheTracesPlanesAndIntersections) {
   EXPECT_EQ(first["overlay"]["polygon"].size(), step["polygon"].size()) << first.dump(1);
   EXPECT_TRUE(anyLineHas(first, "> " + step["plane"].get<std::string>() + ": ")) << first.dump(1);
   // The pass in clip space: z against w holds the trace's positions after it, each (z, w).
+  session.app.scrollInspectorTo("explorer_axes_z-w");
   session.app.click("explorer_axes_z-w");
   const json plot = session.app.waitFor("the z-w plot", [](const json& st) {
     return st.contains("explorer") && st["explorer"].contains("clip_plot") && st["explorer"]["clip_plot"]["axes"] == "z-w";
@@ -1240,6 +1262,12 @@ TEST(GuiScripted, StageExplorerVisitOrderWeightMapsAndFrameFollowTheTrace) {
   EXPECT_EQ(raster["raster_step"], -1) << "no step until one is asked for";
   const int steps = raster["raster_steps"].get<int>();
   EXPECT_GT(steps, 0) << raster.dump(1);
+  // The fill rule along the edge the two fan triangles share: each pixel near it drawn once.
+  const json& shared = raster["overlay"]["shared_edge"];
+  EXPECT_GT(shared.value("mine", 0), 0) << raster.dump(1);
+  EXPECT_GT(shared.value("theirs", 0), 0) << raster.dump(1);
+  EXPECT_EQ(shared.value("both", -1), 0) << raster.dump(1);
+  EXPECT_TRUE(anyLineHas(raster, "fill rule at the edge shared with fan triangle")) << raster.dump(1);
   EXPECT_TRUE(anyLineHas(raster, "visit order of fan triangle " + std::to_string(session.visit["fan_triangle"].get<int>()) +
                                      ": " + std::to_string(steps) + " pixels"))
       << raster.dump(1);

@@ -323,5 +323,57 @@ TEST(StageExplorer, ShadeDrawsTheSurfaceFrameFromTheFragment) {
   EXPECT_TRUE(explorerViewOf(t.trace, visit, ExplorerStage::Raster, nullptr).overlay.frameArrows.empty());
 }
 
+TEST(StageExplorer, FillRuleAlongAnEdgeTheFanTrianglesShare) {
+  const Traced& t = traced();
+  const TriangleVisit& visit = *stageVisitOf(t.trace);
+  ASSERT_GE(visit.clippedPolygon.size(), 4u) << "the scene no longer clips it into a fan of two or more";
+  const ExplorerView raster = explorerViewOf(t.trace, visit, ExplorerStage::Raster, nullptr);
+  ASSERT_TRUE(raster.overlay.sharedEdge);
+  const ExplorerSharedEdge& e = *raster.overlay.sharedEdge;
+  EXPECT_NE(e.with.find("fan triangle"), std::string::npos) << e.with;
+  EXPECT_FALSE(e.mine.empty());
+  EXPECT_FALSE(e.theirs.empty());
+  EXPECT_EQ(e.both, 0) << "no pixel drawn twice";
+  EXPECT_TRUE(anyLineHas(raster, "fill rule at the edge shared with " + e.with));
+  EXPECT_TRUE(explorerViewOf(t.trace, visit, ExplorerStage::Setup, nullptr).overlay.sharedEdge == std::nullopt);
+}
+
+// Two triangles of a square whose diagonal runs through pixel centres: 64 x 64 pixels, a
+// 90-degree field of view one unit from the square, so a world x of (2k + 1) / 64 - 1 lands on
+// pixel centre k + 0.5; the diagonal joins the centres of pixels 8 and 40 on both axes.
+TEST(StageExplorer, FillRuleGivesEachPixelCentreOnASharedMeshEdgeToOneTriangle) {
+  constexpr const char* kScene = R"({
+    "output": {"width": 64, "height": 64},
+    "camera": {"position": [0, 0, 1], "target": [0, 0, 0], "fov_deg": 90, "near": 0.1, "far": 10},
+    "materials": {"matte": {"kd": [0.8, 0.8, 0.8]}},
+    "nodes": [{"name": "square", "material": "matte", "mesh": {"type": "triangles", "positions": [
+      [-0.734375, -0.734375, 0], [0.265625, -0.734375, 0], [0.265625, 0.265625, 0],
+      [-0.734375, -0.734375, 0], [0.265625, 0.265625, 0], [-0.734375, 0.265625, 0]]}}]
+  })";
+  const Scene scene = parseScene(kScene, "diagonal.json", ".");
+  constexpr int kSize = 64;
+  for (const auto& [x, yGl] : {std::pair{25, 20}, std::pair{20, 25}}) {  // below the diagonal, then above it
+    const PixelTrace trace = tracePixel(scene, scene.settings, kSize, kSize, x, kSize - 1 - yGl);
+    const TriangleVisit* visit = stageVisitOf(trace);
+    ASSERT_NE(visit, nullptr);
+    ASSERT_EQ(visit->neighbours.size(), 1u) << "the square's triangles share one edge";
+    const ExplorerView raster = explorerViewOf(trace, *visit, ExplorerStage::Raster, nullptr);
+    ASSERT_TRUE(raster.overlay.sharedEdge);
+    const ExplorerSharedEdge& e = *raster.overlay.sharedEdge;
+    EXPECT_NE(e.with.find("of the mesh"), std::string::npos) << e.with;
+    EXPECT_EQ(e.onEdge.size(), 33u) << "pixel centres 8.5 .. 40.5 on the diagonal";
+    EXPECT_EQ(e.both, 0);
+    // Each centre on the edge goes to exactly one of the two: the triangle whose edge owns it
+    // (the two ends are the square's corners, which its outer edges decide).
+    const auto& owner = e.thisOwns ? e.mine : e.theirs;
+    const auto& other = e.thisOwns ? e.theirs : e.mine;
+    for (const auto& p : e.onEdge) {
+      if (p[0] == 8 || p[0] == 40) continue;
+      EXPECT_NE(std::find(owner.begin(), owner.end(), p), owner.end()) << p[0] << ", " << p[1];
+      EXPECT_EQ(std::find(other.begin(), other.end(), p), other.end()) << p[0] << ", " << p[1];
+    }
+  }
+}
+
 }  // namespace
 }  // namespace twr::gui
