@@ -332,6 +332,114 @@ std::string clipStageSvg(const PixelTrace& trace, const TriangleVisit& visit) {
   return s + "</svg>\n";
 }
 
+std::string vertexStageSvg(const PixelTrace& trace, const TriangleVisit& visit) {
+  Points triangle;  // the corners in front of the eye (w > 0)
+  for (const vec4& p : visit.posClip) {
+    if (p.w > 0.0f) triangle.emplace_back(p.x / p.w, p.y / p.w);
+  }
+  const Frame2d f = frameOfPoints({{{-1, -1}, {1, 1}}, triangle}, 0.05);
+  constexpr double kLine = 18.0;  // SVG pixels per text line
+  const double tableTop = f.height() + 8.0;
+  std::string s = svgOpen(std::max(f.width(), 760.0), tableTop + 4 * kLine + kMarginPixels);
+  s += panelAt(0, f, clipDrawing(f, trace, visit, {}, triangle, "the corners at x/w, y/w (w > 0)"));
+  for (std::size_t i = 0; i < triangle.size(); ++i) {
+    s += textAt(f.px(triangle[i].first) + 4, f.py(triangle[i].second) + 14, "c" + std::to_string(i), "fill=\"#666\"");
+  }
+  for (std::size_t i = 0; i < 3; ++i) {
+    const vec3& m = visit.posModel[i];
+    const vec4& c = visit.posClip[i];
+    std::string outside;
+    const std::pair<bool, const char*> planes[] = {{c.x > c.w, "right"}, {c.x < -c.w, "left"}, {c.y > c.w, "top"},
+                                                   {c.y < -c.w, "bottom"}, {c.z < -c.w, "near"}, {c.z > c.w, "far"}};
+    for (const auto& [out, name] : planes) {
+      if (out) outside += (outside.empty() ? "; outside " : ", ") + std::string(name);
+    }
+    s += textAt(kMarginPixels, tableTop + static_cast<double>(i + 1) * kLine,
+                "v" + std::to_string(i) + " (" + num(m.x) + ", " + num(m.y) + ", " + num(m.z) + ") -> clip (" +
+                    num(c.x) + ", " + num(c.y) + ", " + num(c.z) + ", " + num(c.w) + ")" + outside);
+  }
+  return s + "</svg>\n";
+}
+
+std::string divideStageSvg(const PixelTrace& trace, const TriangleVisit& visit) {
+  const Viewport viewport{trace.width, trace.height};
+  Points polygon;
+  for (const vec4& p : visit.clippedPolygon) {
+    const bool input = std::find(visit.posClip.begin(), visit.posClip.end(), p) != visit.posClip.end();
+    const WindowVertex w = windowFromClip(p, viewport, input);
+    polygon.emplace_back(w.x, w.y);
+  }
+  const double w = trace.width, h = trace.height;
+  const double pad = 0.08 * std::max(w, h);
+  const Frame2d f = frameAround(-pad, -pad, w + pad, h + pad, true);
+  std::string drawing;
+  if (polygon.size() >= 3) {
+    drawing += polygonOf(f, polygon, "fill=\"#e3ecf7\" stroke=\"" + std::string(kCpuBlue) + "\" stroke-width=\"2\"");
+    for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
+      const bool covering = static_cast<int>(i) == visit.fanTriangle;
+      drawing += polygonOf(f, {polygon[0], polygon[i], polygon[i + 1]},
+                           covering ? "fill=\"#9bb8dc\" stroke=\"#1f5fa8\"" : "fill=\"none\" stroke=\"#1f5fa8\" stroke-opacity=\"0.4\"");
+    }
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+      drawing += textAt(f.px(polygon[i].first) + 4, f.py(polygon[i].second) - 4, "v" + std::to_string(i), "fill=\"#1f5fa8\"");
+    }
+  }
+  constexpr double kLine = 18.0;  // SVG pixels per text line
+  std::string s = svgOpen(std::max(f.width(), 520.0), f.height() + (static_cast<double>(polygon.size()) + 1) * kLine);
+  s += polygonOf(f, {{0, 0}, {w, 0}, {w, h}, {0, h}}, "fill=\"#f4f6fa\" stroke=\"#888\" stroke-dasharray=\"4 3\"");
+  s += "<svg x=\"0\" y=\"0\" width=\"" + num(f.width()) + "\" height=\"" + num(f.height()) + "\" overflow=\"hidden\">" +
+       drawing + "</svg>\n";
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    s += textAt(kMarginPixels, f.height() + static_cast<double>(i + 1) * kLine,
+                "v" + std::to_string(i) + " window (" + num(polygon[i].first) + ", " + num(polygon[i].second) + ")");
+  }
+  s += "<circle cx=\"" + num(f.px(trace.x + 0.5)) + "\" cy=\"" + num(f.py(trace.yGl + 0.5)) + "\" r=\"4\" fill=\"" + kCutRed + "\"/>\n";
+  s += textAt(6, 16, "window pixels, y up from the image's bottom edge: the " + std::to_string(trace.width) + " x " +
+                         std::to_string(trace.height) + " image dashed", "fill=\"#444\"");
+  return s + "</svg>\n";
+}
+
+std::string setupStageSvg(const PixelTrace& trace, const TriangleVisit& visit) {
+  const std::vector<std::pair<double, double>> corners = snappedCorners(visit);
+  const PixelRange r = gridAround(trace, corners);
+  const Frame2d f = frameAround(r.x0, r.y0, r.x1 + 1, r.y1 + 1, true);
+  constexpr double kLine = 18.0;  // SVG pixels per text line
+  std::string s = svgOpen(std::max(f.width(), 560.0), f.height() + 5 * kLine);
+  s += pixelCells(f, trace, visit, r, {});
+  TriangleSetup setup;
+  const bool ready = setupSnappedTriangle(visit.xFixed, visit.yFixed, CullMode::None, FrontFace::Ccw,
+                                          Viewport{trace.width, trace.height}, setup) == SetupResult::Ready;
+  std::string inside = polygonOf(f, corners, "fill=\"none\" stroke=\"" + std::string(kCpuBlue) + "\" stroke-width=\"2\"");
+  if (ready) {
+    inside += "<rect x=\"" + num(f.px(setup.x0)) + "\" y=\"" + num(f.py(setup.y1 + 1)) + "\" width=\"" +
+              num((setup.x1 + 1 - setup.x0) * f.scale) + "\" height=\"" + num((setup.y1 + 1 - setup.y0) * f.scale) +
+              "\" fill=\"none\" stroke=\"#888\" stroke-width=\"1.5\" stroke-dasharray=\"6 3\"/>\n";
+    for (std::size_t i = 0; i < 3; ++i) {  // edge i runs from corner i to corner i + 1
+      const auto& [ax, ay] = corners[i];
+      const auto& [bx, by] = corners[(i + 1) % 3];
+      inside += textAt(f.px(0.5 * (ax + bx)) + 4, f.py(0.5 * (ay + by)) + 4, "E" + std::to_string(i), "fill=\"#c0392b\"");
+      s += textAt(kMarginPixels, f.height() + static_cast<double>(i + 1) * kLine,
+                  "E" + std::to_string(i) + " (c" + std::to_string(i) + " to c" + std::to_string((i + 1) % 3) + "): " +
+                      (setup.edges[i].ownsPixelsOnIt ? "a left or bottom edge: owns its centres"
+                                                     : "a right or top edge: leaves them to its neighbour") +
+                      "; E at the pixel " + std::to_string(visit.edgeValue[i]));
+    }
+    s += textAt(kMarginPixels, f.height() + 4 * kLine, "dashed: the box, x " + std::to_string(setup.x0) + ".." + std::to_string(setup.x1) + ", y " +
+                                             std::to_string(setup.y0) + ".." + std::to_string(setup.y1) + " (GL rows)");
+  }
+  s += "<clipPath id=\"grid\"><rect x=\"" + num(f.px(r.x0)) + "\" y=\"" + num(f.py(r.y1 + 1)) + "\" width=\"" +
+       num((r.x1 + 1 - r.x0) * f.scale) + "\" height=\"" + num((r.y1 + 1 - r.y0) * f.scale) + "\"/></clipPath>\n";
+  s += "<g clip-path=\"url(#grid)\">" + inside + "</g>\n";
+  s += "<rect x=\"" + num(f.px(trace.x)) + "\" y=\"" + num(f.py(trace.yGl + 1)) + "\" width=\"" + num(f.scale) +
+       "\" height=\"" + num(f.scale) + "\" fill=\"none\" stroke=\"" + kCutRed + "\" stroke-width=\"2.5\"/>\n";
+  for (int i = 0; i < 3; ++i) {
+    const auto [x, y] = corners[static_cast<std::size_t>(i)];
+    if (x < r.x0 || x > r.x1 + 1 || y < r.y0 || y > r.y1 + 1) continue;
+    s += textAt(f.px(x) + 4, f.py(y) - 4, "c" + std::to_string(i), "fill=\"#1f5fa8\" font-weight=\"600\"");
+  }
+  return s + "</svg>\n";
+}
+
 std::string rasterStageSvg(const PixelTrace& trace, const TriangleVisit& visit,
                            const std::vector<std::uint32_t>& triangleIds) {
   const std::vector<std::pair<double, double>> corners = snappedCorners(visit);
@@ -430,6 +538,35 @@ std::string rasterCaption(const TriangleVisit& visit) {
          "traced pixel.";
 }
 
+std::string vertexCaption(const TriangleVisit& visit) {
+  const bool behind = std::any_of(visit.posClip.begin(), visit.posClip.end(), [](const vec4& p) { return !(p.w > 0.0f); });
+  return "The vertex stage takes each corner from model space to clip space, clip = P V M p; a corner is inside "
+         "the view volume when -w <= x, y, z <= w, and the list gives the planes it lies outside of (" +
+         cutPlanesText(visit) + "). The drawing divides by w to show where the corners land against the [-1, 1] "
+         "square" + (behind ? "; a corner with w <= 0 lies behind the eye, has no place there and is left out." : ".");
+}
+
+std::string divideCaption(const PixelTrace& trace, const TriangleVisit& visit) {
+  std::string text = "The divide (x/w, y/w, z/w) and the viewport, window = (ndc + 1) / 2 * size: the clipped "
+                     "polygon's " + std::to_string(visit.clippedPolygon.size()) + " vertices in window pixels, GL's "
+                     "rows counting up from the image's bottom edge. ";
+  if (visit.fanTriangle >= 0) {
+    text += "Fan triangle " + std::to_string(visit.fanTriangle) + " (filled) covers the pixel (red, window " +
+            num(trace.x + 0.5) + ", " + num(trace.yGl + 0.5) + ").";
+  }
+  return text;
+}
+
+std::string setupCaption(const TriangleVisit& visit) {
+  return "Setup snaps the fan triangle's corners to 1/256 pixel (c0, c1, c2, clockwise once setup has ordered them), "
+         "bounds the pixels to test with the dashed box, and makes one edge function per edge, E = c + stepX x + "
+         "stepY y, positive inside. At the pixel (red): E = " +
+         triple(static_cast<double>(visit.edgeValue[0]), static_cast<double>(visit.edgeValue[1]),
+                static_cast<double>(visit.edgeValue[2])) +
+         ". An edge that owns its centres is a left or bottom edge: a pixel centre exactly on an edge two "
+         "triangles share goes to the one whose edge owns it (the fill rule).";
+}
+
 std::string interpolateCaption(const TriangleVisit& visit) {
   const PixelWeights& w = visit.weights;
   return "Screen barycentrics lambda = " + triple(w.screen[0], w.screen[1], w.screen[2]) +
@@ -469,17 +606,25 @@ std::vector<StagePicture> writeStagePictures(const std::string& dir, const Pixel
   std::filesystem::create_directories(dir, ec);
   if (!std::filesystem::is_directory(dir)) throw InputError(dir + ": cannot create the folder");
   const std::filesystem::path folder(dir);
+  // One per stage, in the pipeline's order (the numbers keep the names earlier versions wrote).
   std::vector<StagePicture> pictures = {
-      {"1_clip.svg", "Clip and divide", clipCaption(trace, *visit)},
-      {"2_raster.svg", "Setup and raster", rasterCaption(*visit)},
+      {"0_vertex.svg", "Vertex", vertexCaption(*visit)},
+      {"1_clip.svg", "Clip", clipCaption(trace, *visit)},
+      {"1_divide.svg", "Divide and viewport", divideCaption(trace, *visit)},
+      {"2_setup.svg", "Setup", setupCaption(*visit)},
+      {"2_raster.svg", "Raster", rasterCaption(*visit)},
       {"3_interpolate.svg", "Interpolate", interpolateCaption(*visit)},
       {"4_shade.svg", "Shade", shadeCaption(*visit)},
   };
-  writeText(folder / pictures[0].file, clipStageSvg(trace, *visit));
-  writeText(folder / pictures[1].file, rasterStageSvg(trace, *visit, frame.triangleId));
-  writeText(folder / pictures[2].file, interpolateStageSvg(*visit));
-  writeText(folder / pictures[3].file, shadeStageSvg(*visit));
-  if (visit->outcome != TraceOutcome::Shaded) pictures[3].caption = "Not shaded: " + std::string(toString(visit->outcome)) + ".";
+  const std::string svgs[] = {vertexStageSvg(trace, *visit),
+                              clipStageSvg(trace, *visit),
+                              divideStageSvg(trace, *visit),
+                              setupStageSvg(trace, *visit),
+                              rasterStageSvg(trace, *visit, frame.triangleId),
+                              interpolateStageSvg(*visit),
+                              shadeStageSvg(*visit)};
+  for (std::size_t i = 0; i < pictures.size(); ++i) writeText(folder / pictures[i].file, svgs[i]);
+  if (visit->outcome != TraceOutcome::Shaded) pictures.back().caption = "Not shaded: " + std::string(toString(visit->outcome)) + ".";
   writeText(folder / "index.html", indexHtml(trace, *visit, pictures));
   return pictures;
 }

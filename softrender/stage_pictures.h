@@ -28,6 +28,18 @@ const TriangleVisit* stageVisitOf(const PixelTrace& trace);
 // filled, and the pixel's centre.
 std::string clipStageSvg(const PixelTrace& trace, const TriangleVisit& visit);
 
+// Vertex: each corner's model and clip positions, the frustum planes it lies outside of, and
+// the corners in front of the eye (w > 0) at x/w, y/w against the [-1, 1] square.
+std::string vertexStageSvg(const PixelTrace& trace, const TriangleVisit& visit);
+
+// Divide and viewport: the clipped polygon in window pixels (GL's, y up) over the image's
+// rectangle, its fan with the covering triangle filled, and the pixel's centre.
+std::string divideStageSvg(const PixelTrace& trace, const TriangleVisit& visit);
+
+// Setup: the fan triangle's snapped corners over the pixel grid, setup's bounding box, and
+// each edge function's edge named with whether it owns the pixel centres on it.
+std::string setupStageSvg(const PixelTrace& trace, const TriangleVisit& visit);
+
 // Setup and raster: the fan triangle's snapped corners (1/256 pixel, as setup holds them)
 // over the pixel grid around it, the pixels whose id in `triangleIds` (the frame's, top row
 // first) is the triangle's, and the traced pixel outlined. At most kStageGridPixels across.
@@ -48,7 +60,8 @@ struct StagePicture {
   std::string caption;  // what it shows, with the trace's numbers
 };
 
-// Writes the four pictures and DIR/index.html (DIR created). Throws InputError when the folder
+// Writes one picture per stage (0_vertex, 1_clip, 1_divide, 2_setup, 2_raster, 3_interpolate,
+// 4_shade .svg) and DIR/index.html listing them in the pipeline's order (DIR created). Throws InputError when the folder
 // cannot be written or no triangle reaches the pixel.
 std::vector<StagePicture> writeStagePictures(const std::string& dir, const PixelTrace& trace,
                                              const RenderOutput& frame);

@@ -188,10 +188,12 @@ const bool registered = registerCommand(40, [](CLI::App& app) {
                   "With screen-space reflections: the ray whose march is traced, mirror (the default) or K, the "
                   "pixel's indirect light sample K (0 .. settings.ssr.indirect_samples - 1)");
   cmd->add_option("--stages", args->stagesDir,
-                  "Also draw the triangle that wrote the pixel at each stage into this folder (created): "
-                  "1_clip.svg (the clipped polygon and its fan at x/w, y/w), 2_raster.svg (the snapped corners over "
-                  "the pixel grid, the pixels it won), 3_interpolate.svg (screen against perspective weights), "
-                  "4_shade.svg (Phong's terms stacked per channel) and index.html with the trace's numbers");
+                  "Also draw the triangle that wrote the pixel at each stage into this folder (created), one SVG "
+                  "per stage: 0_vertex.svg (its corners' clip positions), 1_clip.svg (the clipped polygon and its "
+                  "fan at x/w, y/w, each pass of the clipper), 1_divide.svg (the polygon in window pixels), "
+                  "2_setup.svg (the snapped corners, the box, the edges' fill rule), 2_raster.svg (the pixels it "
+                  "won), 3_interpolate.svg (screen against perspective weights), 4_shade.svg (Phong's terms stacked "
+                  "per channel), and index.html with the trace's numbers");
   addCpuOptions(*cmd, args->cpu);
   addGlOptions(*cmd, args->gl);
   cmd->callback([args] { runTrace(*args); });

@@ -28,11 +28,26 @@ TEST(CliTraceStages, WritesAPicturePerStageForATriangleTheNearAndSidePlanesCut) 
     nearAndSide = has("near") && (has("left") || has("right"));
   }
   EXPECT_TRUE(nearAndSide) << trace["triangles"].dump();
-  expectContains(r.err, "wrote " + (dir / "stages").string() + "/index.html and 4 stage pictures");
-  for (const char* file : {"index.html", "1_clip.svg", "2_raster.svg", "3_interpolate.svg", "4_shade.svg"}) {
-    EXPECT_TRUE(std::filesystem::exists(dir / "stages" / file)) << file;
-  }
+  expectContains(r.err, "wrote " + (dir / "stages").string() + "/index.html and 7 stage pictures");
+  // One per stage, listed in the pipeline's order.
+  const char* const files[] = {"0_vertex.svg", "1_clip.svg",        "1_divide.svg", "2_setup.svg",
+                               "2_raster.svg", "3_interpolate.svg", "4_shade.svg"};
   const std::string index = readFile(dir / "stages" / "index.html");
+  std::size_t previous = 0;
+  for (const char* file : files) {
+    ASSERT_TRUE(std::filesystem::exists(dir / "stages" / file)) << file;
+    const std::string svg = readFile(dir / "stages" / file);
+    EXPECT_EQ(svg.rfind("<svg ", 0), 0u) << file;
+    EXPECT_NE(svg.find("</svg>"), std::string::npos) << file;
+    const std::size_t at = index.find(std::string("<img src=\"") + file + "\"");
+    ASSERT_NE(at, std::string::npos) << file;
+    EXPECT_GE(at, previous) << file << " out of the pipeline's order";
+    previous = at;
+  }
+  // The numbers drawn are the trace's: the clip positions, the window positions, the fill rule.
+  const std::string vertex = readFile(dir / "stages" / "0_vertex.svg");
+  expectContains(vertex, "outside");
+  expectContains(readFile(dir / "stages" / "2_setup.svg"), "owns its centres");
   expectContains(index, "Triangle " + std::to_string(trace["final"]["triangle"].get<int>()) + " (");
   expectContains(index, "<img src=\"2_raster.svg\"");
   expectContains(index, "cut by right, top, bottom, near");

@@ -106,7 +106,7 @@ TEST(StagePictures, ShadeBarsStackEachLightsShareOfTheColour) {
   EXPECT_NE(svg.find("fill=\"rgb(115,115,115)\""), std::string::npos);
 }
 
-TEST(StagePictures, WritesFourPicturesAndAnIndexForAClippedFloorTriangle) {
+TEST(StagePictures, WritesOnePicturePerStageAndAnIndexForAClippedFloorTriangle) {
   const Scene scene = loadSceneFile(std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes/default.json");
   const int width = 64, height = 48;
   const PixelTrace trace = tracePixel(scene, scene.settings, width, height, 32, 46);
@@ -117,14 +117,41 @@ TEST(StagePictures, WritesFourPicturesAndAnIndexForAClippedFloorTriangle) {
   const std::filesystem::path dir = std::filesystem::path(testing::TempDir()) / "stage_pictures";
   std::filesystem::remove_all(dir);
   const std::vector<StagePicture> pictures = writeStagePictures(dir.string(), trace, frame);
-  ASSERT_EQ(pictures.size(), 4u);
-  for (const StagePicture& p : pictures) EXPECT_TRUE(std::filesystem::exists(dir / p.file)) << p.file;
+  ASSERT_EQ(pictures.size(), 7u);
+  const char* const titles[] = {"Vertex", "Clip", "Divide and viewport", "Setup", "Raster", "Interpolate", "Shade"};
+  for (std::size_t i = 0; i < pictures.size(); ++i) {
+    EXPECT_EQ(pictures[i].title, titles[i]);
+    EXPECT_TRUE(std::filesystem::exists(dir / pictures[i].file)) << pictures[i].file;
+  }
   std::ifstream in(dir / "index.html");
   std::stringstream index;
   index << in.rdbuf();
   EXPECT_NE(index.str().find("Pixel (32, 46) through the pipeline"), std::string::npos);
   EXPECT_NE(index.str().find("cut by "), std::string::npos);
-  EXPECT_EQ(count(index.str(), "<img src="), 4u);
+  EXPECT_EQ(count(index.str(), "<img src="), 7u);
+}
+
+// The new stages' drawings carry the trace's own numbers.
+TEST(StagePictures, VertexDivideAndSetupDrawTheTracesPositionsAndEdges) {
+  const Scene scene = loadSceneFile(std::string(TWINRASTER_SOURCE_DIR) + "/assets/scenes/default.json");
+  const int width = 64, height = 48;
+  const PixelTrace trace = tracePixel(scene, scene.settings, width, height, 32, 46);
+  const TriangleVisit& visit = *stageVisitOf(trace);
+  const auto six = [](double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", v);
+    return std::string(text);
+  };
+  const std::string vertex = vertexStageSvg(trace, visit);
+  for (const vec4& c : visit.posClip) EXPECT_NE(vertex.find("-> clip (" + six(c.x) + ", " + six(c.y)), std::string::npos);
+  const std::string divide = divideStageSvg(trace, visit);
+  const WindowVertex w = windowFromClip(visit.clippedPolygon[0], Viewport{width, height},
+                                        std::find(visit.posClip.begin(), visit.posClip.end(), visit.clippedPolygon[0]) !=
+                                            visit.posClip.end());
+  EXPECT_NE(divide.find("v0 window (" + six(w.x) + ", " + six(w.y) + ")"), std::string::npos) << divide;
+  const std::string setup = setupStageSvg(trace, visit);
+  EXPECT_EQ(count(setup, ": owns its centres") + count(setup, ": leaves them to its neighbour"), 3u) << setup;
+  EXPECT_GE(count(setup, ": owns its centres"), 1u) << "a triangle has a left or bottom edge";
 }
 
 TEST(StagePictures, APixelNoTriangleReachesIsBadInput) {
