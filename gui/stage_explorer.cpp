@@ -242,30 +242,71 @@ std::array<double, 4> plotBoundsOf(const ClipPlot& plot) {
 
 // The frustum planes that are lines on the plot: a = -w and a = w through the origin, across
 // the bounds (and w = kMinClipW when that plane cut); in NDC the square's sides.
-std::vector<ClipPlotLine> planeLinesOf(const ClipPlot& plot, int cuttingPlane) {
-  std::vector<ClipPlotLine> lines;
-  const auto add = [&](int plane, std::string name, PlotPoint from, PlotPoint to) {
-    lines.push_back({std::string(clipPlaneName(plane)) + ": " + name, from, to, plane == cuttingPlane});
-  };
-  const std::array<double, 4>& b = plot.bounds;
-  if (plot.axes == ClipPlotAxes::Ndc) {
-    add(kClipPlaneRight, "x/w = 1", {1.0, -1.0}, {1.0, 1.0});
-    add(kClipPlaneLeft, "x/w = -1", {-1.0, -1.0}, {-1.0, 1.0});
-    add(kClipPlaneTop, "y/w = 1", {-1.0, 1.0}, {1.0, 1.0});
-    add(kClipPlaneBottom, "y/w = -1", {-1.0, -1.0}, {1.0, -1.0});
-    return lines;
+// Where a frustum plane cuts: coordinate = factor * w, the factor 1 when the plane is on and the
+// guard band's when a side plane is off; none for near and far switched off.
+std::optional<double> planeFactorOf(int plane, const ClipConfig& clip) {
+  const ClipSwitches& on = clip.frustum;
+  switch (plane) {
+    case kClipPlaneRight: return on.right ? 1.0 : clip.guardBandX;
+    case kClipPlaneLeft: return on.left ? -1.0 : -clip.guardBandX;
+    case kClipPlaneTop: return on.top ? 1.0 : clip.guardBandY;
+    case kClipPlaneBottom: return on.bottom ? -1.0 : -clip.guardBandY;
+    case kClipPlaneFar: return on.far ? std::optional<double>(1.0) : std::nullopt;
+    case kClipPlaneNear: return on.near ? std::optional<double>(-1.0) : std::nullopt;
+    default: return std::nullopt;
   }
-  const int negative = plot.axes == ClipPlotAxes::XW ? kClipPlaneLeft : plot.axes == ClipPlotAxes::YW ? kClipPlaneBottom : kClipPlaneNear;
-  const int positive = plot.axes == ClipPlotAxes::XW ? kClipPlaneRight : plot.axes == ClipPlotAxes::YW ? kClipPlaneTop : kClipPlaneFar;
-  const double reach = std::max({std::abs(b[0]), std::abs(b[1]), std::abs(b[2]), std::abs(b[3])});
-  add(positive, plot.horizontal + " = w", {-reach, -reach}, {reach, reach});
-  add(negative, plot.horizontal + " = -w", {reach, -reach}, {-reach, reach});
-  if (cuttingPlane == kClipPlaneMinW) add(kClipPlaneMinW, "w = " + num(kMinClipW), {b[0], kMinClipW}, {b[2], kMinClipW});
+}
+
+bool planeIsOn(int plane, const ClipConfig& clip) {
+  const ClipSwitches& on = clip.frustum;
+  const bool switches[] = {on.right, on.left, on.top, on.bottom, on.near, on.far};
+  return plane >= 0 && plane <= kClipPlaneFar ? switches[plane] : true;
+}
+
+// The frustum planes that are lines on the plot: a = factor * w through the origin, across the
+// bounds (and w = kMinClipW when near is off); in NDC the square's sides (or the guard band's).
+std::vector<ClipPlotLine> planeLinesOf(const ClipPlot& plot, int cuttingPlane, const ClipConfig& clip) {
+  std::vector<ClipPlotLine> lines;
+  const std::array<double, 4>& b = plot.bounds;
+  const bool ndc = plot.axes == ClipPlotAxes::Ndc;
+  const auto add = [&](int plane, const std::string& coordinate) {
+    const std::optional<double> factor = planeFactorOf(plane, clip);
+    if (!factor) return;
+    const std::string off = planeIsOn(plane, clip) ? "" : " (off: the guard band)";
+    if (ndc) {  // x/w = factor across y/w in [-1, 1], or y/w = factor across x/w
+      const bool vertical = coordinate == "x";
+      const PlotPoint from = vertical ? PlotPoint{*factor, -1.0} : PlotPoint{-1.0, *factor};
+      const PlotPoint to = vertical ? PlotPoint{*factor, 1.0} : PlotPoint{1.0, *factor};
+      lines.push_back({std::string(clipPlaneName(plane)) + off + ": " + coordinate + "/w = " + num(*factor), from, to,
+                       plane == cuttingPlane});
+      return;
+    }
+    const double reach = std::max({std::abs(b[0]), std::abs(b[1]), std::abs(b[2]), std::abs(b[3])});
+    const std::string name = *factor == 1.0 ? "w" : *factor == -1.0 ? "-w" : num(*factor) + " w";
+    lines.push_back({std::string(clipPlaneName(plane)) + off + ": " + coordinate + " = " + name,
+                     {-reach * *factor, -reach}, {reach * *factor, reach}, plane == cuttingPlane});
+  };
+  if (ndc || plot.axes == ClipPlotAxes::XW) {
+    add(kClipPlaneRight, "x");
+    add(kClipPlaneLeft, "x");
+  }
+  if (ndc || plot.axes == ClipPlotAxes::YW) {
+    add(kClipPlaneTop, "y");
+    add(kClipPlaneBottom, "y");
+  }
+  if (plot.axes == ClipPlotAxes::ZW) {
+    add(kClipPlaneFar, "z");
+    add(kClipPlaneNear, "z");
+  }
+  if (!ndc && !clip.frustum.near) {
+    lines.push_back({std::string(clipPlaneName(kClipPlaneMinW)) + ": w = " + num(kMinClipW) + " (near is off)",
+                     {b[0], kMinClipW}, {b[2], kMinClipW}, cuttingPlane == kClipPlaneMinW});
+  }
   return lines;
 }
 
 // The pass `pass` (or, -1, the triangle and the final polygon) on the plot `axes`.
-ClipPlot clipPlotOf(const TriangleVisit& visit, int pass, ClipPlotAxes axes) {
+ClipPlot clipPlotOf(const PixelTrace& trace, const TriangleVisit& visit, int pass, ClipPlotAxes axes) {
   ClipPlot plot;
   plot.axes = axes;
   const bool ndc = axes == ClipPlotAxes::Ndc;
@@ -274,7 +315,8 @@ ClipPlot clipPlotOf(const TriangleVisit& visit, int pass, ClipPlotAxes axes) {
   const ClipStep* step = pass >= 0 ? &visit.clipSteps[static_cast<std::size_t>(pass)] : nullptr;
   plot.before = plotPointsOf(step ? step->before : std::vector<vec4>(visit.posClip.begin(), visit.posClip.end()), axes,
                              plot.offPlot);
-  plot.after = plotPointsOf(step ? step->after : visit.clippedPolygon, axes, plot.offPlot);
+  int afterOff = 0;  // counted in `before` already: a pass only adds vertices on its plane
+  plot.after = plotPointsOf(step ? step->after : visit.clippedPolygon, axes, afterOff);
   if (step) {
     for (const ClipCut& cut : step->cuts) {
       const vec4& p = step->after[static_cast<std::size_t>(cut.index)];
@@ -284,7 +326,7 @@ ClipPlot clipPlotOf(const TriangleVisit& visit, int pass, ClipPlotAxes axes) {
     }
   }
   plot.bounds = plotBoundsOf(plot);
-  plot.planes = planeLinesOf(plot, step ? step->plane : -1);
+  plot.planes = planeLinesOf(plot, step ? step->plane : -1, trace.clip);
   return plot;
 }
 
@@ -389,8 +431,17 @@ ExplorerSharedEdge sharedEdgeFrom(const PixelTrace& trace, const TriangleSetup& 
   const int x1 = std::min(trace.width - 1, static_cast<int>(std::ceil(std::max(a[0], b[0]) + kSharedEdgeReach)));
   const int y0 = std::max(0, static_cast<int>(std::floor(std::min(a[1], b[1]) - kSharedEdgeReach)));
   const int y1 = std::min(trace.height - 1, static_cast<int>(std::ceil(std::max(a[1], b[1]) + kSharedEdgeReach)));
+  const double dx = b[0] - a[0], dy = b[1] - a[1];
+  const double halfWidth = std::abs(dy) > 0.0 ? kSharedEdgeReach * std::hypot(dx, dy) / std::abs(dy) : 0.0;
   for (int py = y0; py <= y1; ++py) {
-    for (int px = x0; px <= x1; ++px) {
+    // The row's pixels within reach of the line (all of the rectangle's for a horizontal edge).
+    int rowX0 = x0, rowX1 = x1;
+    if (std::abs(dy) > 0.0) {
+      const double crossing = a[0] + (py + 0.5 - a[1]) * dx / dy;  // the line's x at the row's centres
+      rowX0 = std::max(x0, static_cast<int>(std::floor(crossing - halfWidth)) - 1);
+      rowX1 = std::min(x1, static_cast<int>(std::ceil(crossing + halfWidth)) + 1);
+    }
+    for (int px = rowX0; px <= rowX1; ++px) {
       if (!besideSegment({px + 0.5, py + 0.5}, a, b, kSharedEdgeReach)) continue;
       const std::array<int, 2> pixel{px, trace.height - 1 - py};
       const bool byMine = coversPixel(mine, px, py), byTheirs = coversPixel(theirs, px, py);
@@ -555,6 +606,10 @@ void rasterLines(const TriangleVisit& visit, const ExplorerView& view, int trace
     lines.push_back("won " + std::to_string(overlay.covered.size()) + " of the " + std::to_string(boxPixels) +
                     " pixels of its box in the frame (its triangle id)");
   }
+  if (visit.fanTriangle < 0) {
+    lines.push_back("no fan triangle covers the pixel after clipping, so there is no visit order to step");
+    return;
+  }
   lines.push_back("visit order of fan triangle " + std::to_string(visit.fanTriangle) + ": " +
                   std::to_string(view.rasterSteps) + " pixels covered, row by row from the bottom of the image (GL's rows), each row's span left to "
                   "right; the traced pixel is step " + std::to_string(tracedStep));
@@ -706,7 +761,7 @@ ExplorerView explorerViewOf(const PixelTrace& trace, const TriangleVisit& visit,
         o.polygon = polygonOf(trace, visit);
       }
       clipLines(visit, view.clipPass, view.lines);
-      view.clipPlot = clipPlotOf(visit, view.clipPass, choices.clipAxes);
+      view.clipPlot = clipPlotOf(trace, visit, view.clipPass, choices.clipAxes);
       break;
     case ExplorerStage::Divide:
       o.polygon = polygonOf(trace, visit);

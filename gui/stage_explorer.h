@@ -87,7 +87,7 @@ struct ClipPlot {
   std::vector<float> cutTs;               // ... and each one's t along its edge
   std::vector<ClipPlotLine> planes;       // the frustum planes that are lines in this plot
   std::array<double, 4> bounds{};         // what to show: min h, min v, max h, max v
-  int offPlot = 0;                        // vertices left out: NDC of those with w <= 0, or past the bounds
+  int offPlot = 0;                        // NDC: the vertices of `before` left out (w <= 0)
 };
 
 // What the stage draws over the images; empty parts are not drawn.

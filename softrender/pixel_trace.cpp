@@ -62,6 +62,8 @@ std::vector<EdgeNeighbour> edgeNeighboursOf(const Mesh& mesh, std::size_t t, con
       }
     }
     if (count != 2) continue;  // a corner only, or the same three corners (a degenerate copy)
+    const vec3 &p0 = positionOf(other, 0), &p1 = positionOf(other, 1), &p2 = positionOf(other, 2);
+    if (p0 == p1 || p1 == p2 || p2 == p0) continue;  // no area: no edge to share
     const std::size_t edge = (shared[0] == 0 && shared[1] == 2) ? 2 : static_cast<std::size_t>(shared[0]);
     if (found[edge]) continue;
     found[edge] = true;
@@ -147,7 +149,9 @@ void traceTriangle(const DrawItem& item, std::size_t t, const VertexUniforms& ve
       shadeFragmentDynamic(key, visit.fragment, shadeUniforms, &visit.terms);
       depth = visit.weights.depth;
     }
-    visit.neighbours = edgeNeighboursOf(mesh, t, vertexUniforms, item.firstTriangleId);
+    // The explorer shows a clipped triangle's fill rule on its own fan, so only an unclipped
+    // one needs the mesh searched.
+    if (visit.planesCut == 0) visit.neighbours = edgeNeighboursOf(mesh, t, vertexUniforms, item.firstTriangleId);
     visits.push_back(std::move(visit));
     return;  // the fill rule gives a pixel to exactly one fan triangle
   }
@@ -228,6 +232,7 @@ PixelTrace tracePixelVisits(const Scene& scene, const RenderSettings& requested,
   const Viewport viewport{width, height};
   const mat4 clipFromWorld = clipFromWorldFor(scene.camera, width, height);
   trace.clipFromWorld = clipFromWorld;
+  trace.clip = makeClipConfig(settings.clip, 0, width, height, settings.interpolation);
   float depth = kClearDepth;
   std::vector<DrawItem> items = flattenScene(scene);
   for (const DrawItem& item : items) validateIndices(item);

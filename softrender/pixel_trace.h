@@ -82,6 +82,7 @@ struct PixelTrace {
   LightingSpace lightingSpace = LightingSpace::World;
   Interpolation interpolation = Interpolation::Perspective;
   mat4 clipFromWorld{1.0f};  // the camera's projection times view (the vertex stage's)
+  ClipConfig clip;           // the frustum planes on, and the guard bands of those off (no user planes)
   std::vector<TriangleVisit> visits;
   // What the renderer wrote to the pixel.
   std::array<std::uint8_t, 4> rgba{};

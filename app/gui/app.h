@@ -195,7 +195,7 @@ class GuiApp {
   // The explorer's view of the pinned pixel's triangle at the shown stage; none while the
   // trace is missing or of an older edit, or when no triangle reaches the pixel. `glSide`:
   // the pixels won are GL's frame's (its triangle ids), else the CPU's.
-  std::optional<ExplorerView> explorerView(bool glSide = false) const;
+  std::shared_ptr<const ExplorerView> explorerView(bool glSide = false) const;
   void drawExplorerOverlay(ImDrawList* draw, const ExplorerView& view, ImVec2 imageMin, ImVec2 imageMax) const;
   void drawWeightMap(ImDrawList* draw, const ExplorerView& view, ImVec2 imageMin, ImVec2 imageMax) const;
   void drawViewProbeSection();
@@ -278,8 +278,8 @@ class GuiApp {
   // What an explorer view was made from: the Interpolate stage maps every pixel of its
   // triangle, too much to redo for each image each frame, so the views are kept until it changes.
   struct ExplorerKey {
-    const void* trace = nullptr;
-    const void* frame = nullptr;
+    std::shared_ptr<const PixelTrace> trace;  // held, so no later trace can take its address
+    std::shared_ptr<const RenderOutput> frame;
     std::uint64_t revision = 0, frameRevision = 0;
     ExplorerStage stage = ExplorerStage::Vertex;
     int visit = -1, clipPass = -1, rasterStep = -1;
@@ -287,9 +287,9 @@ class GuiApp {
     ClipPlotAxes clipAxes = ClipPlotAxes::XW;
     bool operator==(const ExplorerKey&) const = default;
   };
-  mutable std::optional<std::pair<ExplorerKey, ExplorerView>> explorerViews_[2];  // the CPU's image, GL's
+  mutable std::optional<std::pair<ExplorerKey, std::shared_ptr<const ExplorerView>>> explorerViews_[2];  // CPU's, GL's
   mutable ImageTexture explorerWeightTexture_;
-  using WeightMapKey = std::tuple<const void*, const void*, std::uint64_t, bool>;  // trace, visit, revision, perspective
+  using WeightMapKey = std::tuple<std::shared_ptr<const PixelTrace>, int, bool>;  // trace, visit, perspective
   mutable std::optional<WeightMapKey> explorerWeightKey_;  // the map the texture holds
   // The ray the inspector's SSR march follows: the mirror ray or indirect sample k (kept across
   // pinned pixels; the mirror ray while the settings have no sample k, as in an SSR view).

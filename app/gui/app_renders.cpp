@@ -197,7 +197,8 @@ ShownRevisions GuiApp::shownRevisions() const {
 
 void GuiApp::pinPixel(std::optional<PixelPos> pixel) {
   pin_ = PinState{};
-  explorerVisit_ = -1;  // the new pixel's explorer follows the triangle that wrote it
+  explorerVisit_ = -1;  // the new pixel's explorer follows the triangle that wrote it, its order not stepped
+  explorerRasterStep_ = -1;
   if (pixel) pinWarning_.clear();
   pin_.pixel = pixel;
 }

@@ -59,26 +59,29 @@ ImU32 colourOf(int r, int g, int b, int a = 255) { return IM_COL32(r, g, b, a); 
 
 }  // namespace
 
-std::optional<ExplorerView> GuiApp::explorerView(bool glSide) const {
-  if (!pin_.cpu || !pin_.cpu->trace || pin_.cpuRevision != doc_.revision) return std::nullopt;
+std::shared_ptr<const ExplorerView> GuiApp::explorerView(bool glSide) const {
+  if (!pin_.cpu || !pin_.cpu->trace || pin_.cpuRevision != doc_.revision) return nullptr;
   const PixelTrace& trace = *pin_.cpu->trace;
   const TriangleVisit* visit = explorerVisitOf(trace, explorerVisit_);
-  if (!visit) return std::nullopt;
+  if (!visit) return nullptr;
   const BackendFrame& backend = glSide ? glFrame_ : cpuFrame_;
   const RenderOutput* frame = backend.output.get();
   const bool idsUsable = frame && backend.revision == doc_.revision && frame->width == trace.width &&
                          frame->height == trace.height && frame->triangleId.size() == frame->rgba.size() / 4;
-  const ExplorerKey key{&trace,         idsUsable ? frame : nullptr, doc_.revision,     backend.revision,
-                        explorerStage_, explorerVisit_,              explorerClipPass_, explorerRasterStep_,
+  const ExplorerKey key{pin_.cpu->trace,  idsUsable ? backend.output : nullptr,
+                        doc_.revision,    backend.revision,
+                        explorerStage_,   explorerVisit_,
+                        explorerClipPass_, explorerRasterStep_,
                         explorerPerspectiveMap_, explorerClipAxes_};
   auto& kept = explorerViews_[glSide ? 1 : 0];
-  if (!kept || kept->first != key) {
+  if (!kept || !(kept->first == key)) {
     ExplorerChoices choices;
     choices.clipPass = explorerClipPass_;
     choices.rasterStep = explorerRasterStep_;
     choices.perspectiveMap = explorerPerspectiveMap_;
     choices.clipAxes = explorerClipAxes_;
-    kept.emplace(key, explorerViewOf(trace, *visit, explorerStage_, idsUsable ? &frame->triangleId : nullptr, choices));
+    kept.emplace(key, std::make_shared<const ExplorerView>(
+                          explorerViewOf(trace, *visit, explorerStage_, idsUsable ? &frame->triangleId : nullptr, choices)));
   }
   return kept->second;
 }
@@ -116,7 +119,7 @@ void GuiApp::drawStageExplorerSection() {
   }
   if (explorerStage_ == ExplorerStage::Clip) drawClipPassButtons();
   if (explorerStage_ == ExplorerStage::Interpolate) drawWeightMapChoice();
-  const std::optional<ExplorerView> view = explorerView();
+  const std::shared_ptr<const ExplorerView> view = explorerView();
   if (!view) return;
   if (view->stage == ExplorerStage::Raster) drawVisitOrderControls(*view);
   if (view->stage == ExplorerStage::Clip) drawClipPlot(*view);
@@ -129,13 +132,13 @@ void GuiApp::drawStageExplorerSection() {
     nlohmann::json& state = probe_.state()["explorer"];
     state = explorerViewToJson(*view);
     state["visit"] = visitChoiceText(*pin_.cpu->trace, explorerVisit_);
-    if (const std::optional<ExplorerView> gl = explorerView(true)) state["overlay"]["covered_gl"] = gl->overlay.covered.size();
+    if (const std::shared_ptr<const ExplorerView> gl = explorerView(true)) state["overlay"]["covered_gl"] = gl->overlay.covered.size();
   }
 }
 
 // The Clip stage's pass picker: all passes (the final polygon) or one plane's before and after.
 void GuiApp::drawClipPassButtons() {
-  const std::optional<ExplorerView> view = explorerView();
+  const std::shared_ptr<const ExplorerView> view = explorerView();
   if (!view || view->clipPasses == 0) return;
   if (ImGui::SmallButton("< Pass")) explorerClipPass_ = view->clipPass < 0 ? view->clipPasses - 1 : view->clipPass - 1;
   probe_.item("explorer_pass_previous");
@@ -195,8 +198,9 @@ void GuiApp::drawClipPlot(const ExplorerView& view) {
     // The name near the top of a diagonal, at the middle of a side of the NDC square.
     const double along = plot.axes == ClipPlotAxes::Ndc ? 0.5 : 0.85;
     const ImVec2 tip = at({line.from[0] + along * (line.to[0] - line.from[0]), line.from[1] + along * (line.to[1] - line.from[1])});
-    const ImVec2 label(std::clamp(tip.x + 4.0f, corner.x + 2.0f, end.x - 110.0f * uiScale_),
-                       std::clamp(tip.y, corner.y + 2.0f, end.y - 16.0f * uiScale_));
+    // Kept inside the plot (a narrow plot keeps the left and top edges first).
+    const ImVec2 label(std::max(corner.x + 2.0f, std::min(tip.x + 4.0f, end.x - 110.0f * uiScale_)),
+                       std::max(corner.y + 2.0f, std::min(tip.y, end.y - 16.0f * uiScale_)));
     draw->AddText(label, colour, line.name.c_str());
   }
   const auto polygon = [&](const std::vector<PlotPoint>& points, ImU32 colour) {
@@ -283,8 +287,7 @@ void GuiApp::drawWeightMapChoice() {
 void GuiApp::drawWeightMap(ImDrawList* draw, const ExplorerView& view, ImVec2 imageMin, ImVec2 imageMax) const {
   const ExplorerWeightMap& map = view.overlay.weightMap;
   if (map.covered.empty()) return;
-  const WeightMapKey key{&*pin_.cpu->trace, explorerVisitOf(*pin_.cpu->trace, explorerVisit_), doc_.revision,
-                         view.perspectiveMap};
+  const WeightMapKey key{pin_.cpu->trace, explorerVisit_, view.perspectiveMap};
   if (explorerWeightKey_ != key) {
     explorerWeightTexture_.upload(weightMapImage(map));
     explorerWeightKey_ = key;

@@ -540,7 +540,7 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
       // Each image marks the pixels its own frame gave the triangle (GL's through its ids):
       // side by side the CPU's then GL's, GL alone GL's, the mixed modes the CPU's.
       const bool glSide = prefs_.viewMode == ViewMode::Gl || (prefs_.viewMode == ViewMode::SideBySide && k == 1);
-      const std::optional<ExplorerView> view = explorerView(glSide);
+      const std::shared_ptr<const ExplorerView> view = explorerView(glSide);
       if (!view) continue;
       const Rect rect = fitRect(slots[k], renderWidth_, renderHeight_);
       draw->PushClipRect(rect.min, rect.max, true);

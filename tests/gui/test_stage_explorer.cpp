@@ -164,6 +164,32 @@ TEST(StageExplorer, ClipPlotDrawsEachPassInClipSpaceWhereItsPlaneIsADiagonal) {
   EXPECT_FALSE(explorerViewOf(t.trace, visit, ExplorerStage::Divide, nullptr).clipPlot);
 }
 
+TEST(StageExplorer, ClipPlotDrawsASidePlaneSwitchedOffAtItsGuardBand) {
+  const Traced& t = traced();
+  RenderSettings settings = t.scene.settings;
+  settings.clip.right = false;
+  settings.clip.near = false;
+  const PixelTrace trace = tracePixel(t.scene, settings, kWidth, kHeight, kX, kY);
+  const TriangleVisit* visit = stageVisitOf(trace);
+  ASSERT_NE(visit, nullptr);
+  ASSERT_GT(trace.clip.guardBandX, 1.0f);
+  ExplorerChoices choices;
+  const ExplorerView view = explorerViewOf(trace, *visit, ExplorerStage::Clip, nullptr, choices);
+  ASSERT_TRUE(view.clipPlot);
+  const auto right = std::find_if(view.clipPlot->planes.begin(), view.clipPlot->planes.end(),
+                                  [](const ClipPlotLine& l) { return l.name.rfind("right", 0) == 0; });
+  ASSERT_NE(right, view.clipPlot->planes.end());
+  EXPECT_NE(right->name.find("(off: the guard band)"), std::string::npos) << right->name;
+  EXPECT_NEAR(right->to[0] / right->to[1], trace.clip.guardBandX, 1e-3) << "x = g w";
+  // z against w: near off, so no near line, and the clipper's w >= kMinClipW plane instead.
+  choices.clipAxes = ClipPlotAxes::ZW;
+  const ExplorerView zw = explorerViewOf(trace, *visit, ExplorerStage::Clip, nullptr, choices);
+  std::string names;
+  for (const ClipPlotLine& l : zw.clipPlot->planes) names += l.name + "; ";
+  EXPECT_EQ(names.find("near: "), std::string::npos) << names;
+  EXPECT_NE(names.find("(near is off)"), std::string::npos) << names;
+}
+
 TEST(StageExplorer, SetupAndRasterShowTheSnappedCornersBoxAndPixelsWon) {
   const Traced& t = traced();
   const TriangleVisit& visit = *stageVisitOf(t.trace);
