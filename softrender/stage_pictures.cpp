@@ -334,8 +334,12 @@ std::string clipStageSvg(const PixelTrace& trace, const TriangleVisit& visit) {
 
 std::string vertexStageSvg(const PixelTrace& trace, const TriangleVisit& visit) {
   Points triangle;  // the corners in front of the eye (w > 0)
-  for (const vec4& p : visit.posClip) {
-    if (p.w > 0.0f) triangle.emplace_back(p.x / p.w, p.y / p.w);
+  std::vector<std::size_t> corner;  // ... and which vertex each one is
+  for (std::size_t k = 0; k < 3; ++k) {
+    const vec4& p = visit.posClip[k];
+    if (!(p.w > 0.0f)) continue;
+    triangle.emplace_back(p.x / p.w, p.y / p.w);
+    corner.push_back(k);
   }
   const Frame2d f = frameOfPoints({{{-1, -1}, {1, 1}}, triangle}, 0.05);
   constexpr double kLine = 18.0;  // SVG pixels per text line
@@ -343,7 +347,7 @@ std::string vertexStageSvg(const PixelTrace& trace, const TriangleVisit& visit) 
   std::string s = svgOpen(std::max(f.width(), 760.0), tableTop + 4 * kLine + kMarginPixels);
   s += panelAt(0, f, clipDrawing(f, trace, visit, {}, triangle, "the corners at x/w, y/w (w > 0)"));
   for (std::size_t i = 0; i < triangle.size(); ++i) {
-    s += textAt(f.px(triangle[i].first) + 4, f.py(triangle[i].second) + 14, "c" + std::to_string(i), "fill=\"#666\"");
+    s += textAt(f.px(triangle[i].first) + 4, f.py(triangle[i].second) + 14, "v" + std::to_string(corner[i]), "fill=\"#666\"");
   }
   for (std::size_t i = 0; i < 3; ++i) {
     const vec3& m = visit.posModel[i];
