@@ -706,6 +706,40 @@ const char* toString(ClipPlotAxes axes) {
   return "";
 }
 
+const char* stageHintOf(ExplorerStage stage) {
+  switch (stage) {
+    case ExplorerStage::Vertex:
+      return "The vertex stage (shaders/phong.vert, softrender/vertex.cpp) takes each corner from model space to "
+             "clip space, clip = P V M p. Dots: the corners in front of the eye (w > 0) on the image.";
+    case ExplorerStage::Clip:
+      return "Sutherland-Hodgman (softrender/clip.cpp), one plane after another: each keeps the part of the polygon "
+             "inside it and makes a vertex where an edge crosses it, at t along that edge. Yellow: the triangle; "
+             "cyan: the polygon the last plane left.";
+    case ExplorerStage::Divide:
+      return "The divide (x/w, y/w, z/w: NDC) and the viewport, window = (ndc + 1) / 2 * size (softrender/setup.cpp). "
+             "The polygon goes on as a fan from its first vertex; the fan triangle that covers the pixel is filled.";
+    case ExplorerStage::Setup:
+      return "Setup snaps the corners to 1/256 pixel (orange), orders them clockwise and makes three edge functions "
+             "E = c + stepX x + stepY y, positive inside; the box (grey) bounds the pixels to test.";
+    case ExplorerStage::Raster:
+      return "Every pixel centre in the box is tested: inside when all three E > 0. A pixel exactly on an edge two "
+             "triangles share goes to the one for which it is a left or bottom edge (the fill rule), so it is drawn "
+             "once. Green: the pixels this triangle won in the frame. Step through the order the rasterizer visits "
+             "them in: row by row from the bottom (GL's rows), each row's span left to right. Along the edge it "
+             "shares with a neighbour: blue its pixels, orange the neighbour's, outlined the centres exactly on it.";
+    case ExplorerStage::Interpolate:
+      return "Screen barycentrics are each E over twice the area; the perspective weights divide each by its "
+             "corner's w and sum to 1 again (softrender/interpolate.h), so textures do not swim. The map colours each "
+             "pixel of the fan triangle by its three weights (corner c0 red, c1 green, c2 blue): the screen ones "
+             "are linear on the image; in the perspective ones the nearer corner's colour reaches further.";
+    case ExplorerStage::Shade:
+      return "Phong at the pixel (shaders/phong.frag, softrender/shade-inl.h): ambient plus each light's diffuse "
+             "and specular, with its attenuation If. Arrows at the fragment: T red, B green, N blue, the frame the "
+             "normal map is read in, and Nl (white), the normal the lighting used.";
+  }
+  return "";
+}
+
 const char* titleOf(ExplorerStage stage) {
   switch (stage) {
     case ExplorerStage::Vertex: return "Vertex";

@@ -25,6 +25,8 @@ inline constexpr ExplorerStage kExplorerStages[] = {ExplorerStage::Vertex,      
                                                     ExplorerStage::Shade};
 const char* toString(ExplorerStage stage);  // "vertex", "clip", ... (the probe's and the tests' names)
 const char* titleOf(ExplorerStage stage);   // "Vertex", "Clip", "Divide and viewport", ...
+// What the stage does and what its drawing's colours mean, for the student reading its numbers.
+const char* stageHintOf(ExplorerStage stage);
 // The stage after and before, the ends held.
 ExplorerStage nextStage(ExplorerStage stage);
 ExplorerStage previousStage(ExplorerStage stage);

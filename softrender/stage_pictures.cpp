@@ -217,23 +217,30 @@ namespace {
 
 using Points = std::vector<std::pair<double, double>>;
 
+// A clipped polygon, its fan from v0 (fan triangle `covering`, v0 v_i v_i+1, filled) and its
+// vertices named; nothing for fewer than three vertices.
+std::string fanDrawing(const Frame2d& f, const Points& polygon, int covering) {
+  std::string s;
+  if (polygon.size() < 3) return s;
+  s += polygonOf(f, polygon, "fill=\"#e3ecf7\" stroke=\"" + std::string(kCpuBlue) + "\" stroke-width=\"2\"");
+  for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
+    s += polygonOf(f, {polygon[0], polygon[i], polygon[i + 1]},
+                   static_cast<int>(i) == covering ? "fill=\"#9bb8dc\" stroke=\"#1f5fa8\""
+                                                   : "fill=\"none\" stroke=\"#1f5fa8\" stroke-opacity=\"0.4\"");
+  }
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    s += textAt(f.px(polygon[i].first) + 4, f.py(polygon[i].second) - 4, "v" + std::to_string(i), "fill=\"#1f5fa8\"");
+  }
+  return s;
+}
+
 // One view of the clip stage: the [-1, 1] square, the unclipped triangle, the polygon, its fan
 // (triangle i is v0, v_i, v_i+1; the one covering the pixel filled) and the pixel's centre.
 std::string clipDrawing(const Frame2d& f, const PixelTrace& trace, const TriangleVisit& visit, const Points& polygon,
                         const Points& triangle, const std::string& title) {
   std::string s = polygonOf(f, {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}, "fill=\"#f4f6fa\" stroke=\"#888\" stroke-dasharray=\"4 3\"");
   if (triangle.size() == 3) s += polygonOf(f, triangle, "fill=\"none\" stroke=\"#aaa\" stroke-width=\"1.5\"");
-  if (polygon.size() >= 3) {
-    s += polygonOf(f, polygon, "fill=\"#e3ecf7\" stroke=\"" + std::string(kCpuBlue) + "\" stroke-width=\"2\"");
-    for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
-      const bool covering = static_cast<int>(i) == visit.fanTriangle;
-      s += polygonOf(f, {polygon[0], polygon[i], polygon[i + 1]},
-                     covering ? "fill=\"#9bb8dc\" stroke=\"#1f5fa8\"" : "fill=\"none\" stroke=\"#1f5fa8\" stroke-opacity=\"0.4\"");
-    }
-    for (std::size_t i = 0; i < polygon.size(); ++i) {
-      s += textAt(f.px(polygon[i].first) + 4, f.py(polygon[i].second) - 4, "v" + std::to_string(i), "fill=\"#1f5fa8\"");
-    }
-  }
+  s += fanDrawing(f, polygon, visit.fanTriangle);
   const auto [px, py] = pixelNdc(trace);
   s += "<circle cx=\"" + num(f.px(px)) + "\" cy=\"" + num(f.py(py)) + "\" r=\"4\" fill=\"" + kCutRed + "\"/>\n";
   return s + textAt(6, 16, title, "fill=\"#444\"");
@@ -376,18 +383,7 @@ std::string divideStageSvg(const PixelTrace& trace, const TriangleVisit& visit) 
   const double w = trace.width, h = trace.height;
   const double pad = 0.08 * std::max(w, h);
   const Frame2d f = frameAround(-pad, -pad, w + pad, h + pad, true);
-  std::string drawing;
-  if (polygon.size() >= 3) {
-    drawing += polygonOf(f, polygon, "fill=\"#e3ecf7\" stroke=\"" + std::string(kCpuBlue) + "\" stroke-width=\"2\"");
-    for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
-      const bool covering = static_cast<int>(i) == visit.fanTriangle;
-      drawing += polygonOf(f, {polygon[0], polygon[i], polygon[i + 1]},
-                           covering ? "fill=\"#9bb8dc\" stroke=\"#1f5fa8\"" : "fill=\"none\" stroke=\"#1f5fa8\" stroke-opacity=\"0.4\"");
-    }
-    for (std::size_t i = 0; i < polygon.size(); ++i) {
-      drawing += textAt(f.px(polygon[i].first) + 4, f.py(polygon[i].second) - 4, "v" + std::to_string(i), "fill=\"#1f5fa8\"");
-    }
-  }
+  const std::string drawing = fanDrawing(f, polygon, visit.fanTriangle);
   constexpr double kLine = 18.0;  // SVG pixels per text line
   std::string s = svgOpen(std::max(f.width(), 520.0), f.height() + (static_cast<double>(polygon.size()) + 1) * kLine);
   s += polygonOf(f, {{0, 0}, {w, 0}, {w, h}, {0, h}}, "fill=\"#f4f6fa\" stroke=\"#888\" stroke-dasharray=\"4 3\"");

@@ -52,6 +52,15 @@ TEST(StageExplorer, StepsHoldAtBothEnds) {
   }
 }
 
+TEST(StageExplorer, EveryStageSaysWhatItDoesAndNamesItsSource) {
+  for (const ExplorerStage stage : kExplorerStages) {
+    const std::string hint = stageHintOf(stage);
+    EXPECT_GT(hint.size(), 40u) << toString(stage);
+  }
+  EXPECT_NE(std::string(stageHintOf(ExplorerStage::Clip)).find("softrender/clip.cpp"), std::string::npos);
+  EXPECT_NE(std::string(stageHintOf(ExplorerStage::Raster)).find("fill rule"), std::string::npos);
+}
+
 TEST(StageExplorer, EveryStageOfACutTriangleHasLinesAndThePixel) {
   const Traced& t = traced();
   const TriangleVisit* visit = stageVisitOf(t.trace);
