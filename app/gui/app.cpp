@@ -1,6 +1,7 @@
 #include "app/gui/app.h"
 #include "app/gui/ui_widgets.h"
 #include "gui/scene_picker.h"
+#include "gui/view_screenshot.h"
 
 #include "compare/heatmap.h"
 #include "compare/side_by_side.h"
@@ -61,30 +62,6 @@ extern "C" void requestQuit(int) { gQuitRequested = 1; }
 bool fileExists(const char* path) {
   std::error_code code;
   return std::filesystem::is_regular_file(path, code);
-}
-
-std::string timestamp() {
-  const std::time_t now = std::time(nullptr);
-  std::tm local{};
-  localtime_r(&now, &local);
-  char buffer[32];
-  std::strftime(buffer, sizeof buffer, "%Y%m%d-%H%M%S", &local);
-  return buffer;
-}
-
-// A split-view image: CPU columns left of the divider, GL columns from it on, and a white
-// one-pixel divider column, as on screen.
-Image composeSplit(const Image& cpu, const Image& gl, float fraction) {
-  Image out = cpu;
-  const int splitX = std::clamp(static_cast<int>(std::lround(fraction * static_cast<float>(cpu.width))), 0, cpu.width);
-  for (int y = 0; y < out.height; ++y) {
-    for (int x = splitX; x < out.width; ++x) std::memcpy(out.pixel(x, y), gl.pixel(x, y), 4);
-    if (splitX < out.width) {
-      std::uint8_t* divider = out.pixel(splitX, y);
-      divider[0] = divider[1] = divider[2] = divider[3] = 255;
-    }
-  }
-  return out;
 }
 
 }  // namespace
@@ -593,8 +570,7 @@ int GuiApp::run() {
     }
     if (present && windowShotRequested_) {
       windowShotRequested_ = false;
-      const std::filesystem::path dir = prefs_.screenshotDir.empty() ? "." : prefs_.screenshotDir;
-      const std::string path = (dir / ("twinraster-" + timestamp() + "-window.png")).string();
+      const std::string path = screenshotStem(prefs_.screenshotDir, std::time(nullptr)) + "-window.png";
       try {
         saveWindowScreenshot(path);
         showScreenshotMessage("Saved the window as " + path);
@@ -635,23 +611,17 @@ void GuiApp::showScreenshotMessage(std::string message) {
 void GuiApp::saveWindowScreenshot(const std::string& path) {
   int width = 0, height = 0;
   glfwGetFramebufferSize(window_->window(), &width, &height);
-  Image image = makeImage(width, height);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
   glReadBuffer(GL_BACK);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  std::vector<std::uint8_t> bottomFirst(image.rgba.size());
+  std::vector<std::uint8_t> bottomFirst(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
   glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bottomFirst.data());
-  const std::size_t rowBytes = static_cast<std::size_t>(width) * 4;
-  for (int y = 0; y < height; ++y) {
-    std::memcpy(image.pixel(0, y), bottomFirst.data() + static_cast<std::size_t>(height - 1 - y) * rowBytes, rowBytes);
-  }
-  for (std::size_t i = 3; i < image.rgba.size(); i += 4) image.rgba[i] = 255;  // the window is opaque
   const std::filesystem::path parent = std::filesystem::path(path).parent_path();
   if (!parent.empty()) {
     std::error_code code;
     std::filesystem::create_directories(parent, code);
   }
-  savePng(path, image);
+  savePng(path, imageFromBottomRows(width, height, bottomFirst));
 }
 
 void GuiApp::saveViewScreenshots() {
@@ -661,40 +631,11 @@ void GuiApp::saveViewScreenshots() {
     return;
   }
   try {
-    const BackgroundMode background = prefs_.checkerBackground ? BackgroundMode::Checker : BackgroundMode::RendererColour;
-    const std::filesystem::path dir = prefs_.screenshotDir.empty() ? "." : prefs_.screenshotDir;
     std::error_code code;
-    std::filesystem::create_directories(dir, code);
-    const std::string stem = (dir / ("twinraster-" + timestamp())).string();
-    ViewMode shown = prefs_.viewMode;
-    if (shown == ViewMode::Flicker) {
-      const double phase = (glfwGetTime() - flickerStart_) * prefs_.flickerHz;
-      shown = static_cast<long long>(std::floor(phase)) % 2 == 0 ? ViewMode::Cpu : ViewMode::Gl;
-    }
-    Image view;
-    if (shown == ViewMode::Cpu) {
-      view = viewImage(*cpu, background);
-    } else if (shown == ViewMode::Gl) {
-      view = viewImage(*gl, background);
-    } else if (shown == ViewMode::SideBySide) {
-      SideBySideOptions sideOptions;
-      sideOptions.background = background;
-      view = makeSideBySide(*cpu, *gl, sideOptions);
-    } else if (shown == ViewMode::Split) {
-      if (cpu->width != gl->width || cpu->height != gl->height) {
-        throw InputError("the CPU frame is still being rendered at the new size; try again in a moment");
-      }
-      view = composeSplit(viewImage(*cpu, background), viewImage(*gl, background), prefs_.splitFraction);
-    } else {  // the diff
-      if (!diff_.result) throw InputError("no diff yet: the CPU frame is still being rendered");
-      if (prefs_.diffShowClasses) {
-        view = makeClassMap(diff_.result->pixels);
-      } else {
-        HeatMapOptions heatOptions;
-        heatOptions.ramp = HeatRamp{prefs_.heatMaxLevels, prefs_.heatScale};
-        view = makeHeatMap(diff_.result->pixels, heatOptions);
-      }
-    }
+    std::filesystem::create_directories(prefs_.screenshotDir.empty() ? "." : prefs_.screenshotDir, code);
+    const std::string stem = screenshotStem(prefs_.screenshotDir, std::time(nullptr));
+    const ViewMode shown = shownViewMode(prefs_.viewMode, glfwGetTime() - flickerStart_, prefs_.flickerHz);
+    const Image view = viewScreenshotOf(*cpu, *gl, shown, prefs_, diff_.result);
     const std::string viewPath = stem + "-" + std::string(toString(prefs_.viewMode)) + ".png";
     savePng(viewPath, view);
     savePng(stem + "-cpu.png", rawImage(*cpu));

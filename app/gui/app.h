@@ -19,6 +19,7 @@
 #include "gui/prefs.h"
 #include "gui/redraw_policy.h"
 #include "gui/scene_doc.h"
+#include "gui/explorer_cache.h"
 #include "gui/stage_explorer.h"
 #include "app/gui/test_probe.h"
 #include "compare/metrics.h"
@@ -275,19 +276,7 @@ class GuiApp {
   bool explorerPerspectiveMap_ = false;  // Interpolate maps the perspective weights, else the screen ones
   ClipPlotAxes explorerClipAxes_ = ClipPlotAxes::XW;  // the Clip stage's plot
   bool explorerOpen_ = false;
-  // What an explorer view was made from: the Interpolate stage maps every pixel of its
-  // triangle, too much to redo for each image each frame, so the views are kept until it changes.
-  struct ExplorerKey {
-    std::shared_ptr<const PixelTrace> trace;  // held, so no later trace can take its address
-    std::shared_ptr<const RenderOutput> frame;
-    std::uint64_t revision = 0, frameRevision = 0;
-    ExplorerStage stage = ExplorerStage::Vertex;
-    int visit = -1, clipPass = -1, rasterStep = -1;
-    bool perspectiveMap = false;
-    ClipPlotAxes clipAxes = ClipPlotAxes::XW;
-    bool operator==(const ExplorerKey&) const = default;
-  };
-  mutable std::optional<std::pair<ExplorerKey, std::shared_ptr<const ExplorerView>>> explorerViews_[2];  // CPU's, GL's
+  mutable ExplorerViewCache explorerViews_[2];  // CPU's, GL's (gui/explorer_cache.h)
   mutable ImageTexture explorerWeightTexture_;
   using WeightMapKey = std::tuple<std::shared_ptr<const PixelTrace>, int, bool>;  // trace, visit, perspective
   mutable std::optional<WeightMapKey> explorerWeightKey_;  // the map the texture holds

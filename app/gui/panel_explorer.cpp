@@ -25,30 +25,13 @@ ImU32 colourOf(int r, int g, int b, int a = 255) { return IM_COL32(r, g, b, a); 
 }  // namespace
 
 std::shared_ptr<const ExplorerView> GuiApp::explorerView(bool glSide) const {
-  if (!pin_.cpu || !pin_.cpu->trace || pin_.cpuRevision != doc_.revision) return nullptr;
-  const PixelTrace& trace = *pin_.cpu->trace;
-  const TriangleVisit* visit = explorerVisitOf(trace, explorerVisit_);
-  if (!visit) return nullptr;
+  if (!pin_.cpu || pin_.cpuRevision != doc_.revision) return nullptr;
   const BackendFrame& backend = glSide ? glFrame_ : cpuFrame_;
-  const RenderOutput* frame = backend.output.get();
-  const bool idsUsable = frame && backend.revision == doc_.revision && frame->width == trace.width &&
-                         frame->height == trace.height && frame->triangleId.size() == frame->rgba.size() / 4;
-  const ExplorerKey key{pin_.cpu->trace,  idsUsable ? backend.output : nullptr,
-                        doc_.revision,    backend.revision,
-                        explorerStage_,   explorerVisit_,
-                        explorerClipPass_, explorerRasterStep_,
-                        explorerPerspectiveMap_, explorerClipAxes_};
-  auto& kept = explorerViews_[glSide ? 1 : 0];
-  if (!kept || !(kept->first == key)) {
-    ExplorerChoices choices;
-    choices.clipPass = explorerClipPass_;
-    choices.rasterStep = explorerRasterStep_;
-    choices.perspectiveMap = explorerPerspectiveMap_;
-    choices.clipAxes = explorerClipAxes_;
-    kept.emplace(key, std::make_shared<const ExplorerView>(
-                          explorerViewOf(trace, *visit, explorerStage_, idsUsable ? &frame->triangleId : nullptr, choices)));
-  }
-  return kept->second;
+  const ExplorerPosition position{explorerStage_, explorerVisit_,
+                                  ExplorerChoices{explorerClipPass_, explorerRasterStep_, explorerPerspectiveMap_,
+                                                  explorerClipAxes_}};
+  return explorerViews_[glSide ? 1 : 0].viewOf(pin_.cpu->trace, doc_.revision, backend.output, backend.revision,
+                                               position);
 }
 
 void GuiApp::drawStageExplorerSection() {

@@ -3,6 +3,7 @@
 #include "app/gui/app.h"
 #include "gui/text_concat.h"
 #include "gui/camera_control.h"
+#include "gui/view_layout.h"
 #include "app/gui/ui_widgets.h"
 
 #include "compare/colours.h"
@@ -50,30 +51,11 @@ const ImU32 kMarkerColour = IM_COL32(255, 230, 40, 255);
 const ImU32 kMarkerShadow = IM_COL32(0, 0, 0, 200);
 const ImU32 kLabelBackground = IM_COL32(0, 0, 0, 170);
 
-struct Rect {
-  ImVec2 min{0.0f, 0.0f}, max{0.0f, 0.0f};
-  float width() const { return max.x - min.x; }
-  float height() const { return max.y - min.y; }
-  bool contains(ImVec2 p) const { return p.x >= min.x && p.x < max.x && p.y >= min.y && p.y < max.y; }
-};
-
-// The largest rect of aspect imageWidth:imageHeight centred in the slot.
-Rect fitRect(const Rect& slot, int imageWidth, int imageHeight) {
-  if (imageWidth < 1 || imageHeight < 1 || slot.width() <= 0.0f || slot.height() <= 0.0f) return Rect{slot.min, slot.min};
-  const float scale = std::min(slot.width() / static_cast<float>(imageWidth), slot.height() / static_cast<float>(imageHeight));
-  const float width = scale * static_cast<float>(imageWidth), height = scale * static_cast<float>(imageHeight);
-  const ImVec2 min(std::floor(slot.min.x + 0.5f * (slot.width() - width)),
-                   std::floor(slot.min.y + 0.5f * (slot.height() - height)));
-  return Rect{min, ImVec2(min.x + width, min.y + height)};
-}
-
-// The slots images go in for a mode: two for side by side, one otherwise.
+using Rect = ScreenRect;
+ImVec2 im(ScreenPoint p) { return ImVec2(p.x, p.y); }
+ScreenPoint pt(ImVec2 p) { return ScreenPoint{p.x, p.y}; }
 std::vector<Rect> slotsFor(ViewMode mode, ImVec2 regionMin, ImVec2 regionSize) {
-  if (mode != ViewMode::SideBySide) return {Rect{regionMin, ImVec2(regionMin.x + regionSize.x, regionMin.y + regionSize.y)}};
-  const float half = std::max(1.0f, 0.5f * (regionSize.x - kSideGapPoints));
-  return {Rect{regionMin, ImVec2(regionMin.x + half, regionMin.y + regionSize.y)},
-          Rect{ImVec2(regionMin.x + half + kSideGapPoints, regionMin.y),
-               ImVec2(regionMin.x + 2.0f * half + kSideGapPoints, regionMin.y + regionSize.y)}};
+  return slotsFor(mode, pt(regionMin), pt(regionSize), kSideGapPoints);
 }
 
 void drawTexture(ImDrawList* draw, const ImageTexture& texture, const Rect& rect, float u0 = 0.0f, float u1 = 1.0f) {
@@ -104,20 +86,6 @@ void drawCentredMessage(ImDrawList* draw, const Rect& rect, const std::string& t
   const ImVec2 size = ImGui::CalcTextSize(text.c_str(), nullptr, false, wrap);
   const ImVec2 at(rect.min.x + 0.5f * (rect.width() - size.x), rect.min.y + 0.5f * (rect.height() - size.y));
   draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), at, colour, text.c_str(), nullptr, wrap);
-}
-
-// Where a world point lands on an image rect, or nothing behind the camera or for a camera
-// that validateCamera rejects.
-std::optional<ImVec2> projectToRect(const Camera& camera, const vec3& posWorld, const Rect& rect, int width, int height) {
-  // The camera may have been edited into an invalid one earlier in this frame (a field still
-  // being typed): no projection then, rather than an exception.
-  if (width < 1 || height < 1 || !validateCamera(camera).empty()) return std::nullopt;
-  const mat4 clipFromWorld =
-      clipFromView(camera, static_cast<float>(width) / static_cast<float>(height)) * viewFromWorld(camera);
-  const vec4 posClip = clipFromWorld * vec4(posWorld, 1.0f);
-  if (!(posClip.w > 0.0f)) return std::nullopt;
-  const float xNdc = posClip.x / posClip.w, yNdc = posClip.y / posClip.w;
-  return ImVec2(rect.min.x + (0.5f * xNdc + 0.5f) * rect.width(), rect.min.y + (0.5f - 0.5f * yNdc) * rect.height());
 }
 
 }  // namespace
@@ -500,7 +468,7 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
     std::string behind, outside;
     for (std::size_t i = 0; i < doc_.scene.lights.size(); ++i) {
       if (doc_.scene.lights[i].type == LightType::Directional) continue;  // no position to mark
-      const std::optional<ImVec2> at =
+      const std::optional<ScreenPoint> at =
           projectToRect(doc_.scene.camera, doc_.scene.lights[i].posWorld, image, renderWidth_, renderHeight_);
       std::string& list = !at ? behind : outside;
       if (at && image.contains(*at)) continue;
@@ -516,16 +484,16 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
   if (prefs_.showLights && renderBlocker_.empty() && renderWidth_ > 0 && renderHeight_ > 0) {
     for (const Rect& slot : slots) {
       const Rect rect = fitRect(slot, renderWidth_, renderHeight_);
-      draw->PushClipRect(rect.min, rect.max, true);
+      draw->PushClipRect(im(rect.min), im(rect.max), true);
       for (std::size_t i = 0; i < doc_.scene.lights.size(); ++i) {
         const Light& light = doc_.scene.lights[i];
         if (light.type == LightType::Directional) continue;  // no position to mark
-        const std::optional<ImVec2> at = projectToRect(doc_.scene.camera, light.posWorld, rect, renderWidth_, renderHeight_);
+        const std::optional<ScreenPoint> at = projectToRect(doc_.scene.camera, light.posWorld, rect, renderWidth_, renderHeight_);
         if (!at) continue;
         const vec3 colour = glm::clamp(light.diffuse, 0.0f, 1.0f) * 255.0f;
         const float radius = kLightMarkerPoints * uiScale_;
-        draw->AddCircleFilled(*at, radius + 1.5f, IM_COL32(0, 0, 0, 220));
-        draw->AddCircleFilled(*at, radius, IM_COL32(static_cast<int>(colour.r), static_cast<int>(colour.g),
+        draw->AddCircleFilled(im(*at), radius + 1.5f, IM_COL32(0, 0, 0, 220));
+        draw->AddCircleFilled(im(*at), radius, IM_COL32(static_cast<int>(colour.r), static_cast<int>(colour.g),
                                                     static_cast<int>(colour.b), 255));
         const std::string name = concat('L', i);
         draw->AddText(ImVec2(at->x + radius + 3.0f, at->y - radius - 3.0f), IM_COL32(255, 255, 255, 230), name.c_str());
@@ -543,8 +511,8 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
       const std::shared_ptr<const ExplorerView> view = explorerView(glSide);
       if (!view) continue;
       const Rect rect = fitRect(slots[k], renderWidth_, renderHeight_);
-      draw->PushClipRect(rect.min, rect.max, true);
-      drawExplorerOverlay(draw, *view, rect.min, rect.max);
+      draw->PushClipRect(im(rect.min), im(rect.max), true);
+      drawExplorerOverlay(draw, *view, im(rect.min), im(rect.max));
       draw->PopClipRect();
     }
   }
@@ -568,19 +536,7 @@ void GuiApp::drawImages(ImVec2 regionMin, ImVec2 regionSize) {
 void GuiApp::handleImageMouse(ImVec2 regionMin, ImVec2 regionSize) {
   ImGuiIO& io = ImGui::GetIO();
   const std::vector<Rect> slots = slotsFor(prefs_.viewMode, regionMin, regionSize);
-  const auto pixelAt = [&](ImVec2 point) -> std::optional<PixelPos> {
-    for (const Rect& slot : slots) {
-      const Rect rect = fitRect(slot, renderWidth_, renderHeight_);
-      if (!rect.contains(point)) continue;
-      PixelPos pixel;
-      pixel.x = std::clamp(static_cast<int>((point.x - rect.min.x) / rect.width() * static_cast<float>(renderWidth_)), 0,
-                           renderWidth_ - 1);
-      pixel.yTop = std::clamp(static_cast<int>((point.y - rect.min.y) / rect.height() * static_cast<float>(renderHeight_)),
-                              0, renderHeight_ - 1);
-      return pixel;
-    }
-    return std::nullopt;
-  };
+  const auto pixelUnder = [&](ImVec2 point) { return pixelAt(slots, pt(point), renderWidth_, renderHeight_); };
   const Rect image = fitRect(slots.front(), renderWidth_, renderHeight_);
   const float dividerX = image.min.x + prefs_.splitFraction * image.width();
   // The light whose marker is within grab distance of a point, if any.
@@ -590,7 +546,7 @@ void GuiApp::handleImageMouse(ImVec2 regionMin, ImVec2 regionSize) {
       const Rect rect = fitRect(slot, renderWidth_, renderHeight_);
       for (std::size_t i = 0; i < doc_.scene.lights.size(); ++i) {
         if (doc_.scene.lights[i].type == LightType::Directional) continue;
-        const std::optional<ImVec2> at =
+        const std::optional<ScreenPoint> at =
             projectToRect(doc_.scene.camera, doc_.scene.lights[i].posWorld, rect, renderWidth_, renderHeight_);
         if (!at || !rect.contains(*at)) continue;
         const float dx = at->x - point.x, dy = at->y - point.y;
@@ -609,7 +565,7 @@ void GuiApp::handleImageMouse(ImVec2 regionMin, ImVec2 regionSize) {
                          ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                              ImGuiButtonFlags_MouseButtonMiddle);
   const bool hovered = ImGui::IsItemHovered();
-  hovered_ = hovered ? pixelAt(io.MousePos) : std::nullopt;
+  hovered_ = hovered ? pixelUnder(io.MousePos) : std::nullopt;
   if (hovered && (nearDivider(io.MousePos) || dragMode_ == DragMode::Divider)) {
     ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
   } else if (hovered && (dragMode_ == DragMode::Light || (dragMode_ == DragMode::None && lightAt(io.MousePos) >= 0))) {
@@ -651,7 +607,7 @@ void GuiApp::handleImageMouse(ImVec2 regionMin, ImVec2 regionSize) {
     }
   }
   if (ImGui::IsItemDeactivated()) {
-    if (!dragged_ && dragMode_ == DragMode::Orbit) pinPixel(pixelAt(pressPos_));
+    if (!dragged_ && dragMode_ == DragMode::Orbit) pinPixel(pixelUnder(pressPos_));
     dragMode_ = DragMode::None;
   }
   if (hovered && io.MouseWheel != 0.0f) {

@@ -2,6 +2,7 @@
 // and side planes cut it, and every stage shows the trace's numbers and the pipeline's own
 // positions for them.
 #include "gui/stage_explorer.h"
+#include "gui/explorer_cache.h"
 
 #include "scene/scene_file.h"
 #include "softrender/cpu_renderer.h"
@@ -408,6 +409,38 @@ TEST(StageExplorer, FillRuleGivesEachPixelCentreOnASharedMeshEdgeToOneTriangle) 
       EXPECT_EQ(std::find(other.begin(), other.end(), p), other.end()) << p[0] << ", " << p[1];
     }
   }
+}
+
+TEST(ExplorerViewCache, KeepsAViewUntilWhatItWasMadeFromChanges) {
+  const auto trace = std::make_shared<const PixelTrace>(traced().trace);
+  const auto frame = std::make_shared<const RenderOutput>(traced().frame);
+  ExplorerViewCache cache;
+  ExplorerPosition position;
+  position.stage = ExplorerStage::Interpolate;
+  const auto first = cache.viewOf(trace, 7, frame, 7, position);
+  ASSERT_TRUE(first);
+  EXPECT_EQ(first->stage, ExplorerStage::Interpolate);
+  EXPECT_EQ(cache.viewOf(trace, 7, frame, 7, position), first);  // the same object, not rebuilt
+  EXPECT_EQ(cache.viewsMade(), 1);
+  position.choices.perspectiveMap = true;
+  const auto perspective = cache.viewOf(trace, 7, frame, 7, position);
+  EXPECT_NE(perspective, first);
+  EXPECT_TRUE(perspective->perspectiveMap);
+  // A frame of another edit: rebuilt, and its triangle ids are not used for this trace.
+  EXPECT_NE(cache.viewOf(trace, 7, frame, 8, position), perspective);
+  EXPECT_EQ(cache.viewsMade(), 3);
+  // A new trace of the same pixel at a reused address cannot be mistaken for the old one.
+  const auto again = std::make_shared<const PixelTrace>(traced().trace);
+  EXPECT_NE(cache.viewOf(again, 7, frame, 8, position), nullptr);
+  EXPECT_EQ(cache.viewsMade(), 4);
+}
+
+TEST(ExplorerViewCache, NoViewWithoutATraceOrAVisit) {
+  ExplorerViewCache cache;
+  EXPECT_EQ(cache.viewOf(nullptr, 1, nullptr, 1, ExplorerPosition{}), nullptr);
+  PixelTrace empty;
+  EXPECT_EQ(cache.viewOf(std::make_shared<const PixelTrace>(empty), 1, nullptr, 1, ExplorerPosition{}), nullptr);
+  EXPECT_EQ(cache.viewsMade(), 0);
 }
 
 }  // namespace
