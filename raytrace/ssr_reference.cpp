@@ -223,7 +223,7 @@ SsrReference traceSsrReference(const Scene& scene, const RenderSettings& setting
   ref.mirror.assign(pixels, SsrTruth::None);
   ref.indirectOnly.assign(pixels, 0);
   ref.indirectSamples = samples;
-  SsrUniformsT<double> hemisphere;  // ssrHemisphereLanes reads the distribution only
+  SsrUniformsT<double> hemisphere;  // hemisphere reads the distribution only
   hemisphere.distribution = settings.ssr.sampleDistribution;
   const double strength = settings.ssr.reflectStrength;
 
@@ -265,7 +265,7 @@ SsrReference traceSsrReference(const Scene& scene, const RenderSettings& setting
           for (int k = 0; k < samples; ++k) {
             const vec2 xi = ssrRandomPairOf(static_cast<std::uint32_t>(x), yGl, static_cast<std::uint32_t>(k));
             double weight = 0.0;
-            const glm::dvec3 dir = ssrHemisphereLanes<double>(hemisphere, n, glm::dvec2(xi), weight);
+            const glm::dvec3 dir = lanes::hemisphere<double>(hemisphere, n, glm::dvec2(xi), weight);
             const TracedRay s = tracer.trace(p, dir);
             ++indirectCount[static_cast<std::size_t>(s.truth)];
             sum += s.light * weight;

@@ -1,7 +1,7 @@
 // The deferred pipeline's lighting pass (docs/deferred.md): one fragment per pixel of a
 // full-screen triangle (sky.vert's), the G-buffer read with texelFetch, the world position read
 // from its target (GBUFFER_POSITION) or rebuilt from the depth, lit by the frame's lights with lighting.glsl's loop. C++ twin:
-// deferredLightingLanes and worldFromWindowLanes in softrender/deferred-inl.h, in the same
+// deferredLighting and worldFromWindow in softrender/deferred-inl.h, in the same
 // order of operations. Included after common.glsl, shadow.glsl and lighting.glsl.
 
 uniform sampler2D gbufferDepth;      // window depth, 1 where nothing was drawn

@@ -7,7 +7,7 @@
 // ENVIRONMENT_REFRACTION (refraction_index given), FRESNEL_SCHLICK, ENVIRONMENT_DIFFUSE with
 // ENVIRONMENT_IRRADIANCE or ENVIRONMENT_SH9 (environment_diffuse). Each read is texture():
 // its LOD from the direction's quad differences, which the C++ twin computes from the quad's
-// other pixels (setEnvironmentDifferencesLanes).
+// other pixels (setEnvironmentDifferences).
 #ifdef HAS_ENVIRONMENT
 uniform float environmentIntensity;  // scales every read
 uniform float reflectivity;          // [0, 1]

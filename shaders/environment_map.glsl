@@ -1,5 +1,5 @@
 // How the environment is read in a direction: the GLSL twin of softrender/layer_sample-inl.h
-// (mapCoordLanes, sampleEnvironmentLanes), the same operations in the same order
+// (environmentCoord, sampleEnvironment), the same operations in the same order
 // (docs/environment.md). The cube is read as is; a sphere or dual-paraboloid map, built from
 // it at load, is a 2D array texture read at the direction's coordinate (scene/environment.h):
 //   sphere:           m = 2 sqrt(rx^2 + ry^2 + (rz + 1)^2),   (u, v) = (rx, ry) / m + 1/2

@@ -1,6 +1,6 @@
 // The frame's lights (docs/shading.md) and the light loop that lights one surface point:
 // shared by the forward shading (phong.frag) and the deferred pipeline's lighting pass
-// (deferred_lighting.frag). C++ twin: lightSumLanes in softrender/shade-inl.h, the same order
+// (deferred_lighting.frag). C++ twin: lightSum in softrender/shade-inl.h, the same order
 // of operations. Included after shadow.glsl (and surface_detail.glsl for a height field).
 
 struct LightUniform {
@@ -23,7 +23,7 @@ vec3 toLightWorld(LightUniform light, vec3 p) {
 
 // A spot light's cone at a point: smoothstep(cos outer, cos inner, cos angle), written out (the
 // builtin's precision is the driver's), the angle between the cone's axis and the way from the
-// light to the point. C++ twin: spotFactorLanes (softrender/shade-inl.h).
+// light to the point. C++ twin: spotFactor (softrender/shade-inl.h).
 float spotFactor(LightUniform light, vec3 toLight) {
   float cosAngle = 0.0 - dot3(light.spotAxis.xyz, safeNormalize(toLight));
   float x = clamp((cosAngle - light.spotCone.x) / light.spotCone.y, 0.0, 1.0);
@@ -44,7 +44,7 @@ struct LightSum {
 };
 
 // If = 1 / max(A_C + A_L d + A_Q d^2, MIN_ATTENUATION_DENOMINATOR), evaluated left to right as
-// (A_C + A_L d) + (A_Q d) d. C++: attenuationLanes.
+// (A_C + A_L d) + (A_Q d) d. C++: attenuation.
 float attenuation(vec3 a, float d) {
   return 1.0 / max(a.x + a.y * d + a.z * d * d, MIN_ATTENUATION_DENOMINATOR);
 }
@@ -54,7 +54,7 @@ float attenuation(vec3 a, float d) {
 // space; tested only where it can matter: a point the light lights (diffuse or specular) and
 // the shadow views, since elsewhere both terms are 0 and so is their product with it. Keeps the
 // first test (the probe: the probed light's) for the shadow views; true when it tested.
-// C++: the shadow step of lightSumLanes.
+// C++: the shadow step of lightSum.
 bool shadowMapStep(int i, vec3 posWorld, vec3 n, bool lit, inout LightSum result, inout float shadow) {
 #if defined(SHADOW_VIEW_SHADOW) || defined(SHADOW_VIEW_LIGHT_DEPTH) || defined(SHADOW_PROBE)
   const bool shadowTestAlways = true;

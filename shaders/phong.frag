@@ -1,5 +1,5 @@
 // Fragment stage of the shading contract (docs/shading.md). Its C++ twin is
-// shadeFragmentLanes() in softrender/shade-inl.h: same inputs, steps and order of operations.
+// shadeFragment() in softrender/shade-inl.h: same inputs, steps and order of operations.
 // main() is the tutorial's list of named steps (surface frame, material texels, unlit terms,
 // lights, environment, shadow views, output), each a function here and one there; the table of
 // twins is docs/shading.md's.
@@ -95,7 +95,7 @@ layout(location = 1) out uint fragTriangleId;
 #endif
 
 // A material map's texel at uvAt. After a uv shift the map is read with the fragment's own uv
-// differences, scaled by the map's uv transform (textureGrad). C++: sampleMapLanes.
+// differences, scaled by the map's uv transform (textureGrad). C++: sampleMap.
 vec4 sampleMap(sampler2D map, vec2 uvAt, vec2 uvScale) {
 #ifdef PARALLAX_UV
   return textureGrad(map, uvAt, uvDx * uvScale, uvDy * uvScale);
@@ -113,7 +113,7 @@ vec3 eyeVector() {
 #endif
 }
 
-// What lighting reads of the surface at this fragment (C++: surfaceFrameLanes): the normalised
+// What lighting reads of the surface at this fragment (C++: surfaceFrame): the normalised
 // frame; the surface detail (the parallax methods move the uv every map is read at, bump_blinn
 // makes the normal, the rest read the height at uv); the normal map's decoded normal; and nl,
 // the normal lighting uses, in the lighting space.
@@ -178,7 +178,7 @@ SurfaceFrame surfaceFrame() {
   return s;
 }
 
-// The material's own texels at the surface detail's uv (C++: materialTexelsLanes): the diffuse
+// The material's own texels at the surface detail's uv (C++: materialTexels): the diffuse
 // map's albedo and the specular map's scale, 1 without the map, each map read at its own uv
 // (its uv transform, an MTL's -s and -o).
 struct MaterialTexels {
@@ -205,7 +205,7 @@ MaterialTexels materialTexels(vec2 uvMaps) {
   return m;
 }
 
-// What no light scales, summed first (C++: unlitTermsLanes): the ambient term, then the
+// What no light scales, summed first (C++: unlitTerms): the ambient term, then the
 // environment's diffuse light, added as the lights' diffuse terms are (environment.glsl). The
 // forward shading adds the lights to it; the G-buffer pass stores it.
 vec3 unlitTerms(SurfaceFrame s, vec3 albedo, vec3 kdAlbedo) {
@@ -217,7 +217,7 @@ vec3 unlitTerms(SurfaceFrame s, vec3 albedo, vec3 kdAlbedo) {
   return unlit;
 }
 
-// The frame's lights at this fragment (lighting.glsl's lightSum, C++: lightSumLanes).
+// The frame's lights at this fragment (lighting.glsl's lightSum, C++: lightSum).
 LightSum lightsAt(SurfaceFrame s, vec3 kdAlbedo, vec3 ksSpec) {
   return lightSum(posWorld, s.n, s.t, s.b, s.nl, kdAlbedo, ksSpec, shininess
 #ifdef LIGHTING_TANGENT
@@ -231,7 +231,7 @@ LightSum lightsAt(SurfaceFrame s, vec3 kdAlbedo, vec3 ksSpec) {
 
 // The environment mixed into the Phong colour (environment.glsl), or one of its views; an
 // environment view on a surface that reads no reflection is dimmed to grey. C++: the
-// environment step of shadeFragmentLanes.
+// environment step of shadeFragment.
 vec4 environmentStep(SurfaceFrame s, vec4 colour) {
 #if defined(ENVIRONMENT_REFLECT) || defined(ENVIRONMENT_REFRACTION)
   vec3 reflectWorld;
@@ -250,7 +250,7 @@ vec4 environmentStep(SurfaceFrame s, vec4 colour) {
 }
 
 // The shadow views (shadow.glsl): the first shadowed light's test, or dimmed without one; the
-// pixel inspector's probe of its bits. C++: the shadow-view step of shadeFragmentLanes.
+// pixel inspector's probe of its bits. C++: the shadow-view step of shadeFragment.
 vec4 shadowViewStep(LightSum lit, vec4 colour) {
 #if defined(SHADOW_VIEW_SHADOW) || defined(SHADOW_VIEW_LIGHT_DEPTH)
 #ifdef HAS_SHADOWS
@@ -274,7 +274,7 @@ vec4 shadowViewStep(LightSum lit, vec4 colour) {
 }
 
 #ifdef GBUFFER_PASS
-// The G-buffer's targets for this fragment (C++: gbufferFragmentLanes, softrender/deferred-inl.h).
+// The G-buffer's targets for this fragment (C++: gbufferFragment, softrender/deferred-inl.h).
 // The lighting normal in world space: a tangent-space material's mapped normal through its TBN.
 // A material lit here stores its colour as emission; any other folds the environment's mix,
 // colour = phong + (C - phong) w, into the targets: albedo and specular scaled by (1 - w), the
@@ -323,7 +323,7 @@ void gbufferFragment(SurfaceFrame s, vec3 kdAlbedo, vec3 ksSpec, vec3 unlit, vec
 #endif
 
 #ifdef PHONG_TERM_VIEW
-// A Phong-term view's colour (C++: phongTermColourLanes): the ambient term, or the lights'
+// A Phong-term view's colour (C++: phongTermColour): the ambient term, or the lights'
 // diffuse or specular terms summed (lighting.glsl), alpha 1.
 vec4 phongTermColour(vec3 ambientTerm, LightSum lit) {
 #if defined(PHONG_TERM_VIEW_AMBIENT)
@@ -336,7 +336,7 @@ vec4 phongTermColour(vec3 ambientTerm, LightSum lit) {
 }
 #endif
 
-// The shaded view (C++: shadeFragmentLanes' View::Shaded branch): unlit terms, the lights, the
+// The shaded view (C++: shadeFragment' View::Shaded branch): unlit terms, the lights, the
 // environment and the shadow views; the G-buffer pass writes its targets instead.
 vec4 shadedColour(SurfaceFrame s, MaterialTexels m) {
   vec3 kdAlbedo = kd * m.albedo;     // diffuse's first product
@@ -359,7 +359,7 @@ vec4 shadedColour(SurfaceFrame s, MaterialTexels m) {
 }
 
 // A tangent-space direction view: the first light's or the eye's direction in the fragment's
-// tangent frame; no light gives (0, 0, 0), shown as grey 0.5. C++: shadeFragmentLanes'
+// tangent frame; no light gives (0, 0, 0), shown as grey 0.5. C++: shadeFragment'
 // LightTangent and EyeTangent branch.
 vec4 tangentDirectionColour(SurfaceFrame s, bool toLight) {
   vec3 dirTangent = vec3(0.0);
@@ -375,7 +375,7 @@ vec4 tangentDirectionColour(SurfaceFrame s, bool toLight) {
 }
 
 // The first light's self-shadowing factor as grey (1 without self-shadowing or lights).
-// C++: shadeFragmentLanes' SelfShadow branch.
+// C++: shadeFragment' SelfShadow branch.
 vec4 selfShadowColour(SurfaceFrame s) {
   float shadow = 1.0;
 #ifdef SELF_SHADOW
@@ -392,7 +392,7 @@ vec4 selfShadowColour(SurfaceFrame s) {
 }
 
 #ifndef VIEW_SHADED
-// The debug views (C++: shadeFragmentLanes' other branches, in the same order).
+// The debug views (C++: shadeFragment' other branches, in the same order).
 vec4 debugViewColour(SurfaceFrame s, MaterialTexels m) {
 #if defined(VIEW_ALBEDO)
   return vec4(m.albedo * kd, 1.0);

@@ -46,7 +46,7 @@ struct ShadowTest {
   float layer;       // its layer (a cube's face), 0 outside the map
 };
 
-// GL's cube face table with llvmpipe's tie rule (cubeCoordLanes in softrender/cube_sample-inl.h).
+// GL's cube face table with llvmpipe's tie rule (cubeCoord in softrender/cube_sample-inl.h).
 void shadowCubeCoord(vec3 r, out float face, out float s, out float t) {
   float ax = abs(r.x), ay = abs(r.y), az = abs(r.z);
   bool onZ = az >= max(ax, ay);

@@ -1,6 +1,6 @@
 // The sky box: the environment in the pixel's view direction, its LOD from the direction's
 // quad differences (texture(), environment_map.glsl's environmentRead). C++ twin:
-// skyDirectionLanes and skyColourLanes in softrender/sky-inl.h, the same operations in order.
+// skyDirection and skyColour in softrender/sky-inl.h, the same operations in order.
 uniform float environmentIntensity;
 uniform vec3 skyForward;   // the camera's -Z axis in world space
 uniform vec3 skyRight;     // its +X axis times tan(fov / 2) * aspect

@@ -75,7 +75,7 @@ vec3 worldFromWindow(vec2 fragCoord, float depth) {
 #endif
 
 // Where a world point lands: its clip w, its window position, whether that is on the screen,
-// and its pixel (ssrScreenOfLanes).
+// and its pixel (screenOf).
 struct Screen {
   float w;
   vec2 window;
@@ -98,12 +98,12 @@ Screen screenOf(vec3 p) {
   return s;
 }
 
-// The march (ssrMarchLanes): the result, the steps, the hit pixel.
+// The march (march): the result, the steps, the hit pixel.
 float march(vec3 origin, vec3 dir, out float steps, out ivec2 hitPixel) {
   float result = SSR_MISS;
   steps = 0.0;
   hitPixel = ivec2(0, 0);
-  // Distances along the ray in plain adds, each point origin + dir t (ssrMarchLanes: a
+  // Distances along the ray in plain adds, each point origin + dir t (march: a
   // multiply-add fused here and not in C++ must not drift from step to step).
   float tCur = 0.0;
   float stepLength = marchStep;
@@ -140,7 +140,7 @@ float march(vec3 origin, vec3 dir, out float steps, out ivec2 hitPixel) {
   return result;
 }
 
-// The screen marches' ray as a line on the screen (ssrScreenRayLanes): sample j at
+// The screen marches' ray as a line on the screen (screenRay): sample j at
 // (x0, y0) + step j, one pixel a step along the major axis, its eye distance 1 / (k0 + stepK j).
 struct ScreenRay {
   vec2 origin;      // window position, pixels
@@ -174,7 +174,7 @@ ScreenRay screenRay(vec3 origin, vec3 dir) {
   return r;
 }
 
-// Sample j of a screen ray (ssrSampleLanes).
+// Sample j of a screen ray (sampleAt).
 struct Sample {
   float w;
   vec2 pixel;  // 0 off the screen
@@ -192,7 +192,7 @@ Sample sampleAt(ScreenRay r, float j) {
 
 // The hiz cell a pixel falls in at a level of cellSize pixels (the last row and column reach
 // the viewport's edge: the level's size rounds down), its bounds in pixels, and the last
-// sample of the ray inside it. C++: the cell step of ssrScreenMarchLanes.
+// sample of the ray inside it. C++: the cell step of screenMarch.
 struct Cell {
   float x;
   float y;
@@ -230,7 +230,7 @@ Cell cellOf(ScreenRay ray, vec2 pixel, float cellSize) {
 // hiz: the highest level the last march skipped a cell at (SsrMarchL::level).
 float levelReached = 0.0;
 
-// dda_screen (hizLevels 0) and hiz (ssrScreenMarchLanes): the result, the steps, the hit pixel.
+// dda_screen (hizLevels 0) and hiz (screenMarch): the result, the steps, the hit pixel.
 float screenMarch(vec3 origin, vec3 dir, out float steps, out ivec2 hitPixel) {
   steps = 0.0;
   hitPixel = ivec2(0, 0);
@@ -313,7 +313,7 @@ vec2 randomPair(uvec2 pixel, uint k) {
   return vec2(float(seed >> 8u) * unit, float(second >> 8u) * unit);
 }
 
-// The cosine and sine of a turn in [0, 1) (ssrCircleLanes): the quadrant, then Taylor series.
+// The cosine and sine of a turn in [0, 1) (circle): the quadrant, then Taylor series.
 vec2 circle(float turn) {
   float q4 = turn * 4.0;
   float quadrant = floor(q4);
@@ -326,7 +326,7 @@ vec2 circle(float turn) {
   return vec2(c, s);
 }
 
-// A direction over the hemisphere of n in Duff et al.'s basis, and its weight (ssrHemisphereLanes).
+// A direction over the hemisphere of n in Duff et al.'s basis, and its weight (hemisphere).
 vec3 hemisphere(vec3 n, vec2 xi, out float weight) {
   float sign_ = n.z >= 0.0 ? 1.0 : -1.0;
   float a = -1.0 / (sign_ + n.z);
@@ -348,13 +348,13 @@ vec3 hemisphere(vec3 n, vec2 xi, out float weight) {
   return safeNormalize(b1 * (r * turn.x) + b2 * (r * turn.y) + n * z);
 }
 
-// The march the settings name (ssrMarchOfLanes).
+// The march the settings name (marchOf).
 float marchOf(vec3 origin, vec3 dir, out float steps, out ivec2 hitPixel) {
   levelReached = 0.0;
   return marchKind == 2 ? screenMarch(origin, dir, steps, hitPixel) : march(origin, dir, steps, hitPixel);
 }
 
-// Indirect diffuse light (ssrIndirectLanes): (1 / N) sum weight lit(hit), and the samples that hit.
+// Indirect diffuse light (indirect): (1 / N) sum weight lit(hit), and the samples that hit.
 vec3 indirect(vec3 nl, vec3 posWorld, uvec2 pixel, out float hits) {
   vec3 sum = vec3(0.0);
   hits = 0.0;
@@ -370,7 +370,7 @@ vec3 indirect(vec3 nl, vec3 posWorld, uvec2 pixel, out float hits) {
   return sum * indirectScale;
 }
 
-// A debug view's colour for a march (ssrViewColourLanes): debugView 1 ssr_hit, 2 ssr_steps,
+// A debug view's colour for a march (viewColour): debugView 1 ssr_hit, 2 ssr_steps,
 // 3 ssr_uv, 4 hiz_level.
 vec3 viewColour(float result, float steps, ivec2 hitPixel) {
   bool hit = result == SSR_HIT;

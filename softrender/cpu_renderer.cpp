@@ -54,7 +54,7 @@ struct GBufferTarget {
   GBuffer& g;
   float storedDepth(int px, int py) const { return fb.depth[fb.index(px, py)]; }
   DepthFormat depthFormat() const { return fb.depthFormat; }
-  void writeSurface(int px, int py, const GBufferTexelL<float>& s, float depth, std::uint32_t triangleId) {
+  void writeSurface(int px, int py, const lanes::GBufferTexelL<float>& s, float depth, std::uint32_t triangleId) {
     const std::size_t i = fb.index(px, py);
     fb.depth[i] = depth;
     fb.triangleId[i] = triangleId;

@@ -11,7 +11,7 @@
 //             split in thirds over the other three, and the sum ((w00 t00 + w10 t10) + w01 t01)
 //             + w11 t11 is taken instead of the lerps
 //   levels    level floor(lod) and the next, blended as fma(f, c1 - c0, c0), the LOD explicit
-//             (textureLod) or from the direction's quad differences (texture(), cubeLodLanes);
+//             (textureLod) or from the direction's quad differences (texture(), cubeLod);
 //             the wrap mode plays no part (llvmpipe ignores it for cubes).
 // One known difference: llvmpipe takes the weighted sum for all 8 pixels of a SIMD vector (4x2
 // pixels) when one of them needs it, which can move the others by one float ULP.
@@ -52,7 +52,7 @@ struct CubeCoordL {
 
 // GL's table (scene/environment.h) per lane, with llvmpipe's tie rule and order of operations.
 template <typename L>
-TWR_LANE_INLINE CubeCoordL<L> cubeCoordLanes(const Vec3L<L>& r) {
+TWR_LANE_INLINE CubeCoordL<L> cubeCoord(const Vec3L<L>& r) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), half(S(0.5));
   const L ax = absOf(r.x), ay = absOf(r.y), az = absOf(r.z);
@@ -80,7 +80,7 @@ TWR_LANE_INLINE CubeCoordL<L> cubeCoordLanes(const Vec3L<L>& r) {
 // One texel of level `level`, at (face, x, y) where x, y may be one step past an edge
 // (-1 or size) but not both: such a texel is read from the neighbouring face. RGB.
 template <typename L>
-TWR_LANE_INLINE Vec3L<L> cubeTexelLanes(const CubeMap& cube, int level, const L& face, const L& x, const L& y) {
+TWR_LANE_INLINE Vec3L<L> cubeTexel(const CubeMap& cube, int level, const L& face, const L& x, const L& y) {
   using S = ScalarOf<L>;
   const CubeMapLevel& lv = cube.levels[static_cast<std::size_t>(level)];
   const CubeEdgeTable& edges = cubeEdgeTable();
@@ -112,7 +112,7 @@ TWR_LANE_INLINE Vec3L<L> lerpFused3(const Vec3L<L>& a, const Vec3L<L>& b, const 
 
 // Seamless bilinear on one level at (face, s, t): RGB.
 template <typename L>
-TWR_LANE_INLINE Vec3L<L> sampleCubeLevelLanes(const CubeMap& cube, int level, const CubeCoordL<L>& c) {
+TWR_LANE_INLINE Vec3L<L> sampleCubeLevel(const CubeMap& cube, int level, const CubeCoordL<L>& c) {
   using S = ScalarOf<L>;
   const int size = cube.levels[static_cast<std::size_t>(level)].size;
   const L zero(S(0)), one(S(1)), sizeL(static_cast<S>(size)), last(static_cast<S>(size - 1));
@@ -124,10 +124,10 @@ TWR_LANE_INLINE Vec3L<L> sampleCubeLevelLanes(const CubeMap& cube, int level, co
   // will do: its weight is 0 below).
   const L y0Read = maxOf(y0, zero), y1Read = minOf(y1, last);
   const auto x0Out = x0 < zero, x1Out = x1 > last, y0Out = y0 < zero, y1Out = y1 > last;
-  const Vec3L<L> t00 = (cubeTexelLanes<L>)(cube, level, c.face, x0, select(x0Out, y0Read, y0));
-  const Vec3L<L> t10 = (cubeTexelLanes<L>)(cube, level, c.face, x1, select(x1Out, y0Read, y0));
-  const Vec3L<L> t01 = (cubeTexelLanes<L>)(cube, level, c.face, x0, select(x0Out, y1Read, y1));
-  const Vec3L<L> t11 = (cubeTexelLanes<L>)(cube, level, c.face, x1, select(x1Out, y1Read, y1));
+  const Vec3L<L> t00 = (cubeTexel<L>)(cube, level, c.face, x0, select(x0Out, y0Read, y0));
+  const Vec3L<L> t10 = (cubeTexel<L>)(cube, level, c.face, x1, select(x1Out, y0Read, y0));
+  const Vec3L<L> t01 = (cubeTexel<L>)(cube, level, c.face, x0, select(x0Out, y1Read, y1));
+  const Vec3L<L> t11 = (cubeTexel<L>)(cube, level, c.face, x1, select(x1Out, y1Read, y1));
   const Vec3L<L> lerped = (lerpFused3<L>)((lerpFused3<L>)(t00, t10, alpha), (lerpFused3<L>)(t01, t11, alpha), beta);
   const auto corner00 = x0Out & y0Out, corner10 = x1Out & y0Out, corner01 = x0Out & y1Out, corner11 = x1Out & y1Out;
   const auto corner = corner00 | corner10 | corner01 | corner11;
@@ -151,7 +151,7 @@ TWR_LANE_INLINE Vec3L<L> sampleCubeLevelLanes(const CubeMap& cube, int level, co
 // lanes that need it (readLevel(l) reads level l in every lane), blended fused. Cubes and the
 // sphere and paraboloid maps (layer_sample-inl.h) share it.
 template <typename L, typename ReadLevel>
-TWR_LANE_INLINE Vec3L<L> blendLevelsLanes(int levelCount, const L& lod, const ReadLevel& readLevel) {
+TWR_LANE_INLINE Vec3L<L> blendLevels(int levelCount, const L& lod, const ReadLevel& readLevel) {
   using S = ScalarOf<L>;
   const int lastLevel = levelCount - 1;
   const L zero(S(0)), lastL(static_cast<S>(lastLevel));
@@ -174,11 +174,11 @@ TWR_LANE_INLINE Vec3L<L> blendLevelsLanes(int levelCount, const L& lod, const Re
 
 // The environment in direction r at an explicit LOD (textureLod with GL_LINEAR_MIPMAP_LINEAR).
 template <typename L>
-TWR_LANE_OUTLINE Vec3L<L> sampleCubeLodLanes(const CubeMap& cube, const Vec3L<L>& r, const L& lod) {
-  const CubeCoordL<L> c = (cubeCoordLanes<L>)(Vec3L<L>((sanitizedCoord<L>)(r.x), (sanitizedCoord<L>)(r.y),
-                                                       (sanitizedCoord<L>)(r.z)));
-  return (blendLevelsLanes<L>)(cube.levelCount(), lod,
-                               [&](int level) { return (sampleCubeLevelLanes<L>)(cube, level, c); });
+TWR_LANE_OUTLINE Vec3L<L> sampleCubeLod(const CubeMap& cube, const Vec3L<L>& r, const L& lod) {
+  const CubeCoordL<L> c = (cubeCoord<L>)(Vec3L<L>((sanitizedCoord<L>)(r.x), (sanitizedCoord<L>)(r.y),
+                                                  (sanitizedCoord<L>)(r.z)));
+  return (blendLevels<L>)(cube.levelCount(), lod,
+                          [&](int level) { return (sampleCubeLevel<L>)(cube, level, c); });
 }
 
 // The LOD of texture(samplerCube, r) from r's differences across the quad (GLSL's fine dFdx and
@@ -187,9 +187,9 @@ TWR_LANE_OUTLINE Vec3L<L> sampleCubeLodLanes(const CubeMap& cube, const Vec3L<L>
 // projected by the quotient rule with ima = 1 / ma (ma signed) and h = 0.5 ima,
 //   q = dma ima,  ds = (dsc - q sc) h,  dt = (dtc - q tc) h            (each step rounded)
 // then, with W the base level's side, rho^2 = max((W dsx)^2 + (W dtx)^2, (W dsy)^2 + (W dty)^2)
-// (0 when not finite) and lod = fastLog2(rho^2) / 2, quadLodLanes' logarithm.
+// (0 when not finite) and lod = fastLog2(rho^2) / 2, quadLod' logarithm.
 template <typename L>
-TWR_LANE_INLINE L cubeLodLanes(const Vec3L<L>& r, const Vec3L<L>& dx, const Vec3L<L>& dy, int size) {
+TWR_LANE_INLINE L cubeLod(const Vec3L<L>& r, const Vec3L<L>& dx, const Vec3L<L>& dy, int size) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), half(S(0.5));
   const L ax = absOf(r.x), ay = absOf(r.y), az = absOf(r.z);
@@ -216,11 +216,11 @@ TWR_LANE_INLINE L cubeLodLanes(const Vec3L<L>& r, const Vec3L<L>& dx, const Vec3
   return (floatExponentOf(rho2) + (floatMantissaOf(rho2) - one)) * half;
 }
 
-// texture(samplerCube, r) with r's quad differences: the LOD above, then sampleCubeLodLanes.
+// texture(samplerCube, r) with r's quad differences: the LOD above, then sampleCubeLod.
 template <typename L>
-TWR_LANE_INLINE Vec3L<L> sampleCubeGradLanes(const CubeMap& cube, const Vec3L<L>& r, const Vec3L<L>& dx,
-                                             const Vec3L<L>& dy) {
-  return (sampleCubeLodLanes<L>)(cube, r, (cubeLodLanes<L>)(r, dx, dy, cube.size()));
+TWR_LANE_INLINE Vec3L<L> sampleCubeGrad(const CubeMap& cube, const Vec3L<L>& r, const Vec3L<L>& dx,
+                                        const Vec3L<L>& dy) {
+  return (sampleCubeLod<L>)(cube, r, (cubeLod<L>)(r, dx, dy, cube.size()));
 }
 
 TWR_LANES_END

@@ -51,31 +51,31 @@ struct GBufferTexelL {
 // colour does not read phong at all (w = 1, C the mix). A material litInGBufferPass is shaded
 // forward into the emission.
 template <typename Features, typename L, typename Maps>
-TWR_LANE_INLINE GBufferTexelL<L> gbufferFragmentLanes(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u,
-                                                      const Maps& maps) {
+TWR_LANE_INLINE GBufferTexelL<L> gbufferFragment(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u,
+                                                 const Maps& maps) {
   using S = ScalarOf<L>;
   constexpr bool kTangentSpace = Features::kSpace == LightingSpace::Tangent;
   const L zero(S(0)), one(S(1));
-  const SurfaceFrameL<L> frame = (surfaceFrameLanes<Features, L>)(f, u, maps, false);
+  const SurfaceFrameL<L> frame = (surfaceFrame<Features, L>)(f, u, maps, false);
   Vec3L<L> nlWorld = frame.nl;
   if constexpr (kTangentSpace) {
     const bool mapped = Features::kHasNormalMap || (Features::kHasHeightMap && u.surfaceDetail == SurfaceDetail::BumpBlinn);
     const Vec3L<L>& m = frame.mappedTangent;
-    nlWorld = mapped ? safeNormalize3<L>(frame.t * m.x + frame.b * m.y + frame.n * m.z) : frame.n;
+    nlWorld = mapped ? safeNormalize<L>(frame.t * m.x + frame.b * m.y + frame.n * m.z) : frame.n;
   }
   GBufferTexelL<L> g{nlWorld,         L(u.shininess), frame.n,    Vec3L<L>(zero),
                      Vec3L<L>(zero),  Vec3L<L>(zero), f.posWorld, L(u.ssrReflect)};
   if constexpr (Features::kHasHeightMap) {
     if (litInGBufferPass(u)) {
-      const Vec4L<L> colour = (shadeFragmentLanes<Features, L>)(f, u, maps, static_cast<std::nullptr_t*>(nullptr));
+      const Vec4L<L> colour = (shadeFragment<Features, L>)(f, u, maps, static_cast<std::nullptr_t*>(nullptr));
       g.emission = Vec3L<L>(colour.x, colour.y, colour.z);
       return g;
     }
   }
-  const MaterialTexelsL<L> texels = (materialTexelsLanes<Features, L>)(f, u, maps, frame.detail);
+  const MaterialTexelsL<L> texels = (materialTexels<Features, L>)(f, u, maps, frame.detail);
   const Vec3L<L> kdAlbedo = Vec3L<L>(u.kd) * texels.albedo;
   const Vec3L<L> ksSpec = Vec3L<L>(u.ks) * texels.specScale;
-  const UnlitTermsL<L> unlit = (unlitTermsLanes<Features, L>)(u, frame, texels.albedo, kdAlbedo);
+  const UnlitTermsL<L> unlit = (unlitTerms<Features, L>)(u, frame, texels.albedo, kdAlbedo);
   if (!(u.environment.cube && u.environment.readsDirections())) {
     g.kdAlbedo = kdAlbedo;
     g.ksSpec = ksSpec;
@@ -84,8 +84,8 @@ TWR_LANE_INLINE GBufferTexelL<L> gbufferFragmentLanes(const FragmentL<L>& f, con
   }
   const Vec3L<L> eyeVec = kTangentSpace ? f.eyeDirTangent : Vec3L<L>(u.eyePosWorld) - f.posWorld;
   const EnvironmentDirectionsL<L> directions =
-      (environmentDirectionsLanes<L>)(u.environment, frame.nl, eyeVec, frame.t, frame.b, frame.n, kTangentSpace);
-  const EnvironmentTermsL<L> env = (environmentLanes<L>)(u.environment, directions, f, Vec3L<L>(zero));
+      (environmentDirections<L>)(u.environment, frame.nl, eyeVec, frame.t, frame.b, frame.n, kTangentSpace);
+  const EnvironmentTermsL<L> env = (environmentMix<L>)(u.environment, directions, f, Vec3L<L>(zero));
   const L w = u.environment.refraction ? one : env.share;
   const Vec3L<L> c = u.environment.refraction ? env.colour : env.reflected;
   const L keep = one - w;
@@ -99,8 +99,8 @@ TWR_LANE_INLINE GBufferTexelL<L> gbufferFragmentLanes(const FragmentL<L>& f, con
 // the pixel centre and depth to NDC, through worldFromClip (columns summed from the left), then
 // divided by w.
 template <typename L>
-TWR_LANE_INLINE Vec3L<L> worldFromWindowLanes(const Mat4T<ScalarOf<L>>& m, const Vec2T<ScalarOf<L>>& viewportSize,
-                                              const L& px, const L& py, const L& depth) {
+TWR_LANE_INLINE Vec3L<L> worldFromWindow(const Mat4T<ScalarOf<L>>& m, const Vec2T<ScalarOf<L>>& viewportSize,
+                                         const L& px, const L& py, const L& depth) {
   using S = ScalarOf<L>;
   const L one(S(1)), two(S(2)), half(S(0.5));
   const L x = (two * (px + half)) / L(viewportSize.x) - one;
@@ -114,12 +114,12 @@ TWR_LANE_INLINE Vec3L<L> worldFromWindowLanes(const Mat4T<ScalarOf<L>>& m, const
 }
 
 // The lighting pass at one pixel (deferred_lighting.frag's main): the G-buffer's surface at
-// g.posWorld (its stored position, or worldFromWindowLanes's) lit by the frame's lights with the forward shading's own loop (world space, no
+// g.posWorld (its stored position, or worldFromWindow's) lit by the frame's lights with the forward shading's own loop (world space, no
 // height field), added to the emission and clamped as the forward colour is.
 struct NoMaps {};
 using DeferredLightingFeatures = ShaderFeatures<false, false, false, LightingSpace::World, false>;
 template <typename L>
-TWR_LANE_INLINE Vec4L<L> deferredLightingLanes(const GBufferTexelL<L>& g, const ShadeUniformsT<ScalarOf<L>>& u) {
+TWR_LANE_INLINE Vec4L<L> deferredLighting(const GBufferTexelL<L>& g, const ShadeUniformsT<ScalarOf<L>>& u) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1));
   SurfaceFrameL<L> frame;
@@ -130,7 +130,7 @@ TWR_LANE_INLINE Vec4L<L> deferredLightingLanes(const GBufferTexelL<L>& g, const 
   frame.normalTexel = Vec4L<L>(zero);
   frame.mappedTangent = Vec3L<L>(zero, zero, one);
   frame.nl = g.nl;
-  const LightSumL<L> lit = (lightSumLanes<DeferredLightingFeatures, L>)(
+  const LightSumL<L> lit = (lightSum<DeferredLightingFeatures, L>)(
       static_cast<const FragmentL<L>*>(nullptr), u, NoMaps{}, g.posWorld, frame, g.kdAlbedo, g.ksSpec, g.shininess,
       static_cast<std::nullptr_t*>(nullptr));
   return clampUnit4<L>(Vec4L<L>(g.emission + lit.sum, one));

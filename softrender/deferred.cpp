@@ -52,12 +52,12 @@ void lightGBufferTeaching(const GBuffer& g, const DeferredUniforms& u, int threa
             if (!(depth < kClearDepth)) continue;  // nothing drawn: the background stays
             const vec3 posWorld =
                 u.positionStored ? vec3(g.position[i])
-                                 : worldFromWindowLanes<float>(u.worldFromClip, u.viewportSize, static_cast<float>(px),
-                                                               static_cast<float>(py), depth);
-            const GBufferTexelL<float> surface{vec3(g.normal[i]),   g.normal[i].w,       vec3(g.geometric[i]),
+                                 : lanes::worldFromWindow<float>(u.worldFromClip, u.viewportSize, static_cast<float>(px),
+                                                                 static_cast<float>(py), depth);
+            const lanes::GBufferTexelL<float> surface{vec3(g.normal[i]),   g.normal[i].w,       vec3(g.geometric[i]),
                                                vec3(g.albedo[i]),   vec3(g.specular[i]), vec3(g.emission[i]),
                                                posWorld,            g.specular[i].w};
-            writeFragment(fb, px, py, deferredLightingLanes<float>(surface, u.lighting), depth,
+            writeFragment(fb, px, py, lanes::deferredLighting<float>(surface, u.lighting), depth,
                           fb.triangleId[i]);
           }
         }

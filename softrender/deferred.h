@@ -43,7 +43,7 @@ bool litInGBufferPass(const ShadeUniformsT<S>& u) {
 }
 
 // The lighting pass on the teaching path, scalar float, over `threads` bands of rows: every
-// pixel whose depth is below the clear depth gets deferredLightingLanes's colour in fb.rgba.
+// pixel whose depth is below the clear depth gets deferredLighting's colour in fb.rgba.
 struct Framebuffer;
 void lightGBufferTeaching(const GBuffer& g, const DeferredUniforms& u, int threads, Framebuffer& fb);
 
@@ -53,10 +53,10 @@ void lightGBufferTeaching(const GBuffer& g, const DeferredUniforms& u, int threa
 
 namespace twr {
 
-// The G-buffer pass's surface of one fragment on the teaching path (gbufferFragmentLanes).
+// The G-buffer pass's surface of one fragment on the teaching path (gbufferFragment).
 template <typename Features, typename T>
-GBufferTexelL<T> gbufferFragment(const FragmentT<T>& f, const ShadeUniformsT<T>& u) {
-  return gbufferFragmentLanes<Features, T>(f, u, TextureMaps{u.diffuseMap, u.normalMap, u.specularMap, u.heightMap, u.horizonMaps});
+lanes::GBufferTexelL<T> gbufferFragment(const FragmentT<T>& f, const ShadeUniformsT<T>& u) {
+  return lanes::gbufferFragment<Features, T>(f, u, TextureMaps{u.diffuseMap, u.normalMap, u.specularMap, u.heightMap, u.horizonMaps});
 }
 
 }  // namespace twr

@@ -83,15 +83,15 @@ void drawClippedTriangle(const LoopItemT<T>& s, const ClipVertexT<T>& v0, const 
   rasterizeTriangle(setup, band.rowBegin, band.rowEnd, [&](int py, Span span) {
     for (int px = span.xBegin; px < span.xEnd; ++px) {
       const T depth =
-          (depthAsStoredLanes<T>)(planeAtLanes<T>(depthPlane, static_cast<T>(px), static_cast<T>(py)), depthFormat);
+          (lanes::depthAsStored<T>)(lanes::planeAt<T>(depthPlane, static_cast<T>(px), static_cast<T>(py)), depthFormat);
       if (!depthTestLess(depth, target.storedDepth(px, py))) continue;  // stage 6, before shading
       FragmentT<T> fragment = interpolateFragment(varyings, px, py, depth);
       if (s.shade.needsQuadDifferences()) {
         // The pixel's 2x2 quad (even column and row): its uv differences give the LOD.
-        setQuadUvDifferencesLanes<T>(uv, static_cast<T>(px & ~1), static_cast<T>(py & ~1), fragment);
+        lanes::setQuadUvDifferences<T>(uv, static_cast<T>(px & ~1), static_cast<T>(py & ~1), fragment);
         if (s.shade.heightMap) {
-          setFineUvDifferencesLanes<T>(uv, static_cast<T>(px & ~1), static_cast<T>(py & ~1),
-                                       static_cast<T>(px), static_cast<T>(py), fragment);
+          lanes::setFineUvDifferences<T>(uv, static_cast<T>(px & ~1), static_cast<T>(py & ~1),
+                                         static_cast<T>(px), static_cast<T>(py), fragment);
         }
       }
       setEnvironmentDifferences<Features>(varyings, px, py, s.shade, fragment);  // only when the material reads it

@@ -12,7 +12,7 @@
 // refracts (the reflected one under total internal reflection), and a direction found in
 // tangent space is brought to world space by the fragment's frame before the cube is read.
 // Each direction is read with texture(): a cube's LOD from its differences across the pixel's
-// 2x2 quad, as GLSL's fine dFdx / dFdy take them (cube_sample-inl.h, cubeLodLanes); a sphere
+// 2x2 quad, as GLSL's fine dFdx / dFdy take them (cube_sample-inl.h, cubeLod); a sphere
 // or paraboloid map's from its coordinate's quad differences (layer_sample-inl.h).
 // Shared source, included plainly and per Highway target (softrender/lanes.h).
 
@@ -57,15 +57,15 @@ struct EnvironmentTermsL {
 // A lighting-space direction in world space: the fragment's frame (t, b, n) in tangent
 // space, itself in world space.
 template <typename L>
-TWR_LANE_INLINE Vec3L<L> worldFromLightingLanes(const Vec3L<L>& d, const Vec3L<L>& t, const Vec3L<L>& b,
-                                                const Vec3L<L>& n, bool tangentSpace) {
+TWR_LANE_INLINE Vec3L<L> worldFromLighting(const Vec3L<L>& d, const Vec3L<L>& t, const Vec3L<L>& b,
+                                           const Vec3L<L>& n, bool tangentSpace) {
   if (!tangentSpace) return d;
   return (t * d.x + b * d.y) + n * d.z;
 }
 
 // Schlick: F0 + (1 - F0) m^5 with m = 1 - max(cos, 0), m^5 as (m^2)^2 m.
 template <typename L>
-TWR_LANE_INLINE L schlickLanes(const L& f0, const L& cosTheta) {
+TWR_LANE_INLINE L schlick(const L& f0, const L& cosTheta) {
   using S = ScalarOf<L>;
   const L one(S(1));
   const L m = one - maxOf(cosTheta, L(S(0)));
@@ -83,17 +83,17 @@ struct EnvironmentDirectionsL {
   Vec3L<L> reflectWorld, refractWorld;
 };
 template <typename L>
-TWR_LANE_INLINE EnvironmentDirectionsL<L> environmentDirectionsLanes(const EnvironmentUniformsT<ScalarOf<L>>& e,
-                                                                     const Vec3L<L>& nl, const Vec3L<L>& vVec,
-                                                                     const Vec3L<L>& t, const Vec3L<L>& b,
-                                                                     const Vec3L<L>& n, bool tangentSpace) {
+TWR_LANE_INLINE EnvironmentDirectionsL<L> environmentDirections(const EnvironmentUniformsT<ScalarOf<L>>& e,
+                                                                const Vec3L<L>& nl, const Vec3L<L>& vVec,
+                                                                const Vec3L<L>& t, const Vec3L<L>& b,
+                                                                const Vec3L<L>& n, bool tangentSpace) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), two(S(2));
   EnvironmentDirectionsL<L> d;
-  const Vec3L<L> v = safeNormalize3<L>(vVec);
+  const Vec3L<L> v = safeNormalize<L>(vVec);
   d.nDotV = dot3<L>(nl, v);
   const Vec3L<L> r = (two * d.nDotV) * nl - v;  // reflect(-v, nl)
-  d.reflectWorld = (worldFromLightingLanes<L>)(r, t, b, n, tangentSpace);
+  d.reflectWorld = (worldFromLighting<L>)(r, t, b, n, tangentSpace);
   d.k = one;
   d.refractWorld = Vec3L<L>(zero);
   if (e.refraction) {
@@ -102,7 +102,7 @@ TWR_LANE_INLINE EnvironmentDirectionsL<L> environmentDirectionsLanes(const Envir
     d.k = one - (eta * eta) * (one - d.nDotV * d.nDotV);
     const L root = sqrtOf(maxOf(d.k, zero));
     const Vec3L<L> refracted = (zero - eta) * v - (root - eta * d.nDotV) * nl;
-    d.refractWorld = (worldFromLightingLanes<L>)(refracted, t, b, n, tangentSpace);
+    d.refractWorld = (worldFromLighting<L>)(refracted, t, b, n, tangentSpace);
   }
   return d;
 }
@@ -111,9 +111,9 @@ TWR_LANE_INLINE EnvironmentDirectionsL<L> environmentDirectionsLanes(const Envir
 // its LOD from the direction's quad differences (FragmentL::reflectDx ...); a prefiltered
 // reflection with textureLod at the shininess's LOD instead.
 template <typename L>
-TWR_LANE_INLINE EnvironmentTermsL<L> environmentLanes(const EnvironmentUniformsT<ScalarOf<L>>& e,
-                                                      const EnvironmentDirectionsL<L>& d, const FragmentL<L>& f,
-                                                      const Vec3L<L>& base) {
+TWR_LANE_INLINE EnvironmentTermsL<L> environmentMix(const EnvironmentUniformsT<ScalarOf<L>>& e,
+                                                    const EnvironmentDirectionsL<L>& d, const FragmentL<L>& f,
+                                                    const Vec3L<L>& base) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), intensity(e.intensity);
   // Built from values, never default-constructed: a Highway mask has no default constructor
@@ -121,23 +121,23 @@ TWR_LANE_INLINE EnvironmentTermsL<L> environmentLanes(const EnvironmentUniformsT
   // The reflection: the environment with texture() (its LOD from the direction's quad
   // differences), or the prefiltered glossy map with textureLod at the shininess's LOD.
   const L reflectLod = e.prefiltered ? L(e.specularLod)
-                                     : (environmentLodLanes<L>)(*e.cube, e.layers, d.reflectWorld, f.reflectDx, f.reflectDy);
+                                     : (environmentReadLod<L>)(*e.cube, e.layers, d.reflectWorld, f.reflectDx, f.reflectDy);
   const Vec3L<L> reflected =
-      (e.prefiltered ? (sampleEnvironmentAtLodLanes<L>)(*e.specularCube, e.specularLayers, d.reflectWorld, reflectLod)
-                     : (sampleEnvironmentAtLodLanes<L>)(*e.cube, e.layers, d.reflectWorld, reflectLod)) *
+      (e.prefiltered ? (sampleEnvironmentAtLod<L>)(*e.specularCube, e.specularLayers, d.reflectWorld, reflectLod)
+                     : (sampleEnvironmentAtLod<L>)(*e.cube, e.layers, d.reflectWorld, reflectLod)) *
       intensity;
   Vec3L<L> transmitted = base;
   const auto totalInternal = e.refraction ? d.k < zero : zero > one;  // zero > one: no lane
   L f0(e.reflectivity);
   if (e.refraction) {
     const L eta(e.eta);
-    const Vec3L<L> through = (sampleEnvironmentLanes<L>)(*e.cube, e.layers, d.refractWorld, f.refractDx, f.refractDy) * intensity;
+    const Vec3L<L> through = (sampleEnvironment<L>)(*e.cube, e.layers, d.refractWorld, f.refractDx, f.refractDy) * intensity;
     transmitted = select3<L>(totalInternal, reflected, through);
     const L ratio = (one - eta) / (one + eta);
     f0 = ratio * ratio;
   }
   L share = zero;
-  if (e.reflects) share = e.schlick ? (schlickLanes<L>)(f0, d.nDotV) : L(e.reflectivity);
+  if (e.reflects) share = e.schlick ? (schlick<L>)(f0, d.nDotV) : L(e.reflectivity);
   const Vec3L<L> colour = transmitted + (reflected - transmitted) * share;
   return EnvironmentTermsL<L>{d.reflectWorld, d.refractWorld, reflected, transmitted, reflectLod, share, totalInternal, colour};
 }
@@ -148,16 +148,16 @@ TWR_LANE_INLINE EnvironmentTermsL<L> environmentLanes(const EnvironmentUniformsT
 //   D = c0 + c1 y + c2 z + c3 x + c4 (x y) + c5 (y z) + c6 (3 z^2 - 1) + c7 (x z) + c8 (x^2 - y^2)
 // left to right and clamped at 0; times the intensity. GLSL: environmentDiffuse.
 template <typename L>
-TWR_LANE_INLINE Vec3L<L> environmentDiffuseLanes(const EnvironmentUniformsT<ScalarOf<L>>& e, const Vec3L<L>& nl,
-                                                 const Vec3L<L>& t, const Vec3L<L>& b, const Vec3L<L>& n,
-                                                 bool tangentSpace) {
+TWR_LANE_INLINE Vec3L<L> environmentDiffuse(const EnvironmentUniformsT<ScalarOf<L>>& e, const Vec3L<L>& nl,
+                                            const Vec3L<L>& t, const Vec3L<L>& b, const Vec3L<L>& n,
+                                            bool tangentSpace) {
   using S = ScalarOf<L>;
   const L zero(S(0)), intensity(e.intensity);
-  const Vec3L<L> w = safeNormalize3<L>((worldFromLightingLanes<L>)(nl, t, b, n, tangentSpace));
+  const Vec3L<L> w = safeNormalize<L>((worldFromLighting<L>)(nl, t, b, n, tangentSpace));
   if (e.diffuse == EnvironmentDiffuse::IrradianceMap) {
     const Vec3L<L> read = e.irradianceLayers
-                              ? (sampleMapLodLanes<L>)(*e.irradianceLayers, (mapCoordLanes<L>)(e.irradianceLayers->kind, w), zero)
-                              : (sampleCubeLodLanes<L>)(*e.irradiance, w, zero);
+                              ? (sampleMapLod<L>)(*e.irradianceLayers, (environmentCoord<L>)(e.irradianceLayers->kind, w), zero)
+                              : (sampleCubeLod<L>)(*e.irradiance, w, zero);
     return read * intensity;
   }
   const auto& c = e.sh9;

@@ -38,7 +38,7 @@ TWR_LANES_BEGIN
 // The colour of face f (0..5, GL order), kCubeFaceViewColours: the positive face bright, the
 // negative dark, red for x, green for y, blue for z.
 template <typename L>
-TWR_LANE_INLINE Vec3L<L> faceColourLanes(const L& face) {
+TWR_LANE_INLINE Vec3L<L> faceColour(const L& face) {
   using S = ScalarOf<L>;
   const auto colourOf = [](int f) {
     const float* c = kCubeFaceViewColours[f];
@@ -50,9 +50,9 @@ TWR_LANE_INLINE Vec3L<L> faceColourLanes(const L& face) {
 }
 
 // The LOD a read at `lod` uses on a chain of `levelCount` levels: clamped to it, 0 when not
-// finite (blendLevelsLanes' rule), so the value is the one the sampler blends at.
+// finite (blendLevels' rule), so the value is the one the sampler blends at.
 template <typename L>
-TWR_LANE_INLINE L clampedLodLanes(const L& lod, int levelCount) {
+TWR_LANE_INLINE L clampedLod(const L& lod, int levelCount) {
   using S = ScalarOf<L>;
   const L zero(S(0));
   return minOf(maxOf(select(isFinite(lod), lod, zero), zero), L(static_cast<S>(levelCount - 1)));
@@ -61,21 +61,21 @@ TWR_LANE_INLINE L clampedLodLanes(const L& lod, int levelCount) {
 // The environment view's colour for direction r read at `lod` (clamped); `kind` is how the map is read
 // (the cube, or a sphere or paraboloid map: the hemisphere then, +Z as face 4, -Z as face 5).
 template <typename L>
-TWR_LANE_INLINE Vec4L<L> environmentViewColourLanes(View view, EnvironmentParameterization kind, const Vec3L<L>& r,
-                                                    const L& lod) {
+TWR_LANE_INLINE Vec4L<L> environmentViewColour(View view, EnvironmentParameterization kind, const Vec3L<L>& r,
+                                               const L& lod) {
   using S = ScalarOf<L>;
   const L one(S(1));
-  if (view == View::ReflectDir) return (vectorAsColourLanes<L>)(safeNormalize3<L>(r));
-  if (view == View::EnvLod) return (heatColourLanes<L>)(lod * L(static_cast<S>(1.0 / kEnvironmentLodViewMax)));
-  const L face = kind == EnvironmentParameterization::Cube ? (cubeCoordLanes<L>)(r).face
+  if (view == View::ReflectDir) return (vectorAsColour<L>)(safeNormalize<L>(r));
+  if (view == View::EnvLod) return (heatColour<L>)(lod * L(static_cast<S>(1.0 / kEnvironmentLodViewMax)));
+  const L face = kind == EnvironmentParameterization::Cube ? (cubeCoord<L>)(r).face
                                                             : select(r.z < L(S(0)), L(S(5)), L(S(4)));
-  return Vec4L<L>((faceColourLanes<L>)(face), one);
+  return Vec4L<L>((faceColour<L>)(face), one);
 }
 
 // A surface that reads no reflection in an environment view: its colour clamped, then a
 // quarter of its luminance (Rec. 709 weights) as grey.
 template <typename L>
-TWR_LANE_INLINE Vec4L<L> dimmedColourLanes(const Vec4L<L>& colour) {
+TWR_LANE_INLINE Vec4L<L> dimmedColour(const Vec4L<L>& colour) {
   using S = ScalarOf<L>;
   const Vec4L<L> c = (clampUnit4<L>)(colour);
   const L grey = L(S(0.25)) * ((L(S(0.2126)) * c.x + L(S(0.7152)) * c.y) + L(S(0.0722)) * c.z);

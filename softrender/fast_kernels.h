@@ -2,7 +2,7 @@
 // every SIMD target (AVX-512, AVX2, SSE4, NEON, scalar) and picked at run time:
 //   1. visibility, per triangle in submission order: each row's covered span (the teaching
 //      rasterizer's coveredSpan), its pixels a vector of lanes at a time: the window depth
-//      from llvmpipe's depth plane (windowDepthLanes), GL_LESS against the depth buffer; a
+//      from llvmpipe's depth plane (windowDepth), GL_LESS against the depth buffer; a
 //      passing pixel takes the triangle's depth and its slot in the bin's slot buffer;
 //   2. shading, once per pixel that ended with a slot, a vector of pixels of a row at a time,
 //      grouped by draw item: the shared sources interpolate-inl.h, shade-inl.h (with
@@ -108,7 +108,7 @@ struct FastKernels {
                    std::uint32_t background, Framebuffer& fb) = nullptr;
 
   // The deferred pipeline's G-buffer pass over rows [rowBegin, rowEnd), as shadeBin but with
-  // the shaded permutation's surface (gbufferFragmentLanes, deferred-inl.h) written into
+  // the shaded permutation's surface (gbufferFragment, deferred-inl.h) written into
   // `surfaces` instead of the colour: every pixel of the rows gets its texel (0 where nothing
   // was drawn) and the background word in colour.
   void (*surfaceBin)(const std::vector<BinTriangle>& triangles, const std::vector<ItemState>& items,
@@ -116,13 +116,13 @@ struct FastKernels {
                      std::uint32_t background, Framebuffer& fb, GBuffer& surfaces) = nullptr;
 
   // The deferred lighting pass over rows [rowBegin, rowEnd): every pixel whose depth is below
-  // the clear depth gets deferredLightingLanes's colour (alpha 255); the others keep theirs.
+  // the clear depth gets deferredLighting's colour (alpha 255); the others keep theirs.
   void (*lightRows)(const GBuffer& surfaces, const DeferredUniforms& u, int rowBegin, int rowEnd, Framebuffer& fb) = nullptr;
 
   // Screen-space reflections over rows [rowBegin, rowEnd) (ssr-inl.h): each pixel with a
   // surface and ssr_reflect > 0 (surfaces.specular.w) marches its mirror ray from its position
   // (the G-buffer's, else rebuilt from depth through worldFromClip); a hit pixel gets
-  // ssrPixelLanes's colour (alpha 255), the others keep theirs. u's buffers must be set.
+  // ssrPixel's colour (alpha 255), the others keep theirs. u's buffers must be set.
   void (*reflectRows)(const GBuffer& surfaces, const SsrUniforms& u, const Mat4T<float>& worldFromClip,
                       bool positionStored, int rowBegin, int rowEnd, Framebuffer& fb) = nullptr;
 

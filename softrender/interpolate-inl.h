@@ -87,7 +87,7 @@ using FragmentL = FragmentT<L>;
 
 // An attribute plane at pixel (px, py): two fused multiply-adds, as llvmpipe evaluates it.
 template <typename L>
-TWR_LANE_INLINE L planeAtLanes(const AttributePlaneL<L>& p, const L& px, const L& py) {
+TWR_LANE_INLINE L planeAt(const AttributePlaneL<L>& p, const L& px, const L& py) {
   return fusedMulAdd(p.dy, py, fusedMulAdd(p.dx, px, p.atOrigin));
 }
 
@@ -96,11 +96,11 @@ TWR_LANE_INLINE L planeAtLanes(const AttributePlaneL<L>& p, const L& px, const L
 // A non-finite result (a plane overflowing float on extreme inputs, or 1/w rounding to 0 at a
 // helper pixel) becomes 0, which is how llvmpipe's sampler reads such a coordinate anyway.
 template <typename L>
-TWR_LANE_INLINE Vec2L<L> uvAtPixelLanes(const UvPlanesL<L>& s, const L& px, const L& py) {
+TWR_LANE_INLINE Vec2L<L> uvAtPixel(const UvPlanesL<L>& s, const L& px, const L& py) {
   using S = ScalarOf<L>;
   const L zero(S(0));
-  const L w = L(S(1)) / planeAtLanes<L>(s.oneOverW, px, py);
-  const L u = planeAtLanes<L>(s.uOverW, px, py) * w, v = planeAtLanes<L>(s.vOverW, px, py) * w;
+  const L w = L(S(1)) / planeAt<L>(s.oneOverW, px, py);
+  const L u = planeAt<L>(s.uOverW, px, py) * w, v = planeAt<L>(s.vOverW, px, py) * w;
   return Vec2L<L>(select(isFinite(u), u, zero), select(isFinite(v), v, zero));
 }
 
@@ -116,7 +116,7 @@ inline constexpr float kDepthUnormMax = 16777215.0f;  // 2^24 - 1
 // float corners draws with GL_ALWAYS and not with GL_LESS), so it becomes 1 here, which never
 // passes either; -inf clamps to 0 and +inf to 1, as llvmpipe clamps them.
 template <typename L>
-TWR_LANE_INLINE L storedDepthLanes(const L& z) {
+TWR_LANE_INLINE L storedDepth(const L& z) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), unormMax(static_cast<S>(kDepthUnormMax));
   const L clamped = minOf(maxOf(z, zero), one);
@@ -129,31 +129,31 @@ TWR_LANE_INLINE L storedDepthLanes(const L& z) {
 // clamped to [0, 1] with every float bit kept. NaN becomes 1, which never passes GL_LESS (as
 // NaN fails it on llvmpipe).
 template <typename L>
-TWR_LANE_INLINE L storedFloatDepthLanes(const L& z) {
+TWR_LANE_INLINE L storedFloatDepth(const L& z) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1));
   return select(isNaN(z), one, minOf(maxOf(z, zero), one));
 }
 
-// The depth a target of `format` stores (framebuffer.h's DepthFormat): storedDepthLanes or
-// storedFloatDepthLanes.
+// The depth a target of `format` stores (framebuffer.h's DepthFormat): storedDepth or
+// storedFloatDepth.
 template <typename L>
-TWR_LANE_INLINE L depthAsStoredLanes(const L& z, DepthFormat format) {
-  return format == DepthFormat::Float32 ? storedFloatDepthLanes<L>(z) : storedDepthLanes<L>(z);
+TWR_LANE_INLINE L depthAsStored(const L& z, DepthFormat format) {
+  return format == DepthFormat::Float32 ? storedFloatDepth<L>(z) : storedDepth<L>(z);
 }
 
 // Window depth at pixel (px, py): the depth plane with two fused multiply-adds, as stored
-// (storedDepthLanes). All the visibility pass needs.
+// (storedDepth). All the visibility pass needs.
 template <typename L>
-TWR_LANE_INLINE L windowDepthLanes(const InterpolationL<L>& s, const WideOf<L>& px, const WideOf<L>& py) {
-  return storedDepthLanes<L>(planeAtLanes<L>(s.depth, toNarrow<L>(px), toNarrow<L>(py)));
+TWR_LANE_INLINE L windowDepth(const InterpolationL<L>& s, const WideOf<L>& px, const WideOf<L>& py) {
+  return storedDepth<L>(planeAt<L>(s.depth, toNarrow<L>(px), toNarrow<L>(py)));
 }
 
-// lambda_i at pixel (px, py), depth as windowDepthLanes, p_i = (lambda_i / w_i) /
+// lambda_i at pixel (px, py), depth as windowDepth, p_i = (lambda_i / w_i) /
 // sum_k (lambda_k / w_k) (the screen weight where the sum is not positive: a centre a hair
 // outside the float triangle), and the uv from its planes.
 template <typename L>
-TWR_LANE_INLINE PixelWeightsL<L> pixelWeightsLanes(const InterpolationL<L>& s, const WideOf<L>& px, const WideOf<L>& py) {
+TWR_LANE_INLINE PixelWeightsL<L> pixelWeights(const InterpolationL<L>& s, const WideOf<L>& px, const WideOf<L>& py) {
   using W = WideOf<L>;
   PixelWeightsL<L> w;
   std::array<W, 3> lambda, perspective;
@@ -168,47 +168,47 @@ TWR_LANE_INLINE PixelWeightsL<L> pixelWeightsLanes(const InterpolationL<L>& s, c
   for (std::size_t i = 0; i < 3; ++i) {
     w.perspective[i] = toNarrow<L>(select(positive, perspective[i] / perspectiveSum, lambda[i]));
   }
-  w.depth = windowDepthLanes<L>(s, px, py);
-  w.uv = uvAtPixelLanes<L>(s.uv, toNarrow<L>(px), toNarrow<L>(py));
+  w.depth = windowDepth<L>(s, px, py);
+  w.uv = uvAtPixel<L>(s.uv, toNarrow<L>(px), toNarrow<L>(py));
   return w;
 }
 
 // Varying k at a pixel: its a/w plane times the reciprocal of the pixel's 1/w.
 template <typename L>
-TWR_LANE_INLINE L varyingAtLanes(const VaryingPlanesL<L>& p, int k, const L& px, const L& py, const L& w) {
-  return planeAtLanes<L>(p.overW[static_cast<std::size_t>(k)], px, py) * w;
+TWR_LANE_INLINE L varyingAt(const VaryingPlanesL<L>& p, int k, const L& px, const L& py, const L& w) {
+  return planeAt<L>(p.overW[static_cast<std::size_t>(k)], px, py) * w;
 }
 template <typename L>
-TWR_LANE_INLINE Vec3L<L> varying3AtLanes(const VaryingPlanesL<L>& p, int k, const L& px, const L& py, const L& w) {
-  return Vec3L<L>(varyingAtLanes<L>(p, k, px, py, w), varyingAtLanes<L>(p, k + 1, px, py, w),
-                  varyingAtLanes<L>(p, k + 2, px, py, w));
+TWR_LANE_INLINE Vec3L<L> varying3At(const VaryingPlanesL<L>& p, int k, const L& px, const L& py, const L& w) {
+  return Vec3L<L>(varyingAt<L>(p, k, px, py, w), varyingAt<L>(p, k + 1, px, py, w),
+                  varyingAt<L>(p, k + 2, px, py, w));
 }
 
 // Every varying at pixel (px, py) from its plane, as llvmpipe's fragment shader reads it; the
-// uv as uvAtPixelLanes (a non-finite coordinate read as 0). Tangent-space light and eye
+// uv as uvAtPixel (a non-finite coordinate read as 0). Tangent-space light and eye
 // directions where the planes hold them (tangent lighting space), zero otherwise.
 template <typename L>
-TWR_LANE_INLINE FragmentL<L> interpolateFragmentLanes(const VaryingPlanesL<L>& p, const L& px, const L& py,
-                                                      const L& depth) {
+TWR_LANE_INLINE FragmentL<L> interpolateFragment(const VaryingPlanesL<L>& p, const L& px, const L& py,
+                                                 const L& depth) {
   using S = ScalarOf<L>;
   const L zero(S(0));
   // A non-finite w (1/w rounding to 0 at a pixel a hair inside an edge of a triangle with
   // extreme depths) would make every varying NaN; it reads as 0, as the uv does.
-  const L reciprocal = L(S(1)) / planeAtLanes<L>(p.oneOverW, px, py);
+  const L reciprocal = L(S(1)) / planeAt<L>(p.oneOverW, px, py);
   const L w = select(isFinite(reciprocal), reciprocal, zero);
   FragmentL<L> f;
-  f.posWorld = varying3AtLanes<L>(p, kVaryingPosWorld, px, py, w);
-  f.nWorld = varying3AtLanes<L>(p, kVaryingNormal, px, py, w);
-  f.tWorld = varying3AtLanes<L>(p, kVaryingTangent, px, py, w);
-  f.bWorld = varying3AtLanes<L>(p, kVaryingBitangent, px, py, w);
-  const L u = varyingAtLanes<L>(p, kVaryingUv, px, py, w), v = varyingAtLanes<L>(p, kVaryingUv + 1, px, py, w);
+  f.posWorld = varying3At<L>(p, kVaryingPosWorld, px, py, w);
+  f.nWorld = varying3At<L>(p, kVaryingNormal, px, py, w);
+  f.tWorld = varying3At<L>(p, kVaryingTangent, px, py, w);
+  f.bWorld = varying3At<L>(p, kVaryingBitangent, px, py, w);
+  const L u = varyingAt<L>(p, kVaryingUv, px, py, w), v = varyingAt<L>(p, kVaryingUv + 1, px, py, w);
   f.uv = Vec2L<L>(select(isFinite(u), u, zero), select(isFinite(v), v, zero));
   const Vec3L<L> zero3(zero);
   const bool tangentLighting = p.count > kVaryingEyeDirTangent;
-  f.eyeDirTangent = tangentLighting ? varying3AtLanes<L>(p, kVaryingEyeDirTangent, px, py, w) : zero3;
+  f.eyeDirTangent = tangentLighting ? varying3At<L>(p, kVaryingEyeDirTangent, px, py, w) : zero3;
   for (int k = 0; k < kMaxLights; ++k) {
     const int at = kVaryingLightDirTangent + 3 * k;
-    f.lightDirTangent[static_cast<std::size_t>(k)] = at < p.count ? varying3AtLanes<L>(p, at, px, py, w) : zero3;
+    f.lightDirTangent[static_cast<std::size_t>(k)] = at < p.count ? varying3At<L>(p, at, px, py, w) : zero3;
   }
   f.depth = depth;
   f.uvDx = Vec2L<L>(zero);
@@ -224,11 +224,11 @@ TWR_LANE_INLINE FragmentL<L> interpolateFragmentLanes(const VaryingPlanesL<L>& p
 // du/dy = uv(x0, y0 + 1) - uv(x0, y0), the same for all four pixels (llvmpipe's per-quad LOD).
 // qx, qy: the quad's first column and row.
 template <typename L>
-TWR_LANE_INLINE void setQuadUvDifferencesLanes(const UvPlanesL<L>& s, const L& qx, const L& qy, FragmentL<L>& f) {
+TWR_LANE_INLINE void setQuadUvDifferences(const UvPlanesL<L>& s, const L& qx, const L& qy, FragmentL<L>& f) {
   using S = ScalarOf<L>;
-  const Vec2L<L> topLeft = uvAtPixelLanes<L>(s, qx, qy);
-  const Vec2L<L> right = uvAtPixelLanes<L>(s, qx + L(S(1)), qy);
-  const Vec2L<L> above = uvAtPixelLanes<L>(s, qx, qy + L(S(1)));
+  const Vec2L<L> topLeft = uvAtPixel<L>(s, qx, qy);
+  const Vec2L<L> right = uvAtPixel<L>(s, qx + L(S(1)), qy);
+  const Vec2L<L> above = uvAtPixel<L>(s, qx, qy + L(S(1)));
   f.uvDx = right - topLeft;
   f.uvDy = above - topLeft;
 }
@@ -238,13 +238,13 @@ TWR_LANE_INLINE void setQuadUvDifferencesLanes(const UvPlanesL<L>& s, const L& q
 // height-field methods read with them (textureGrad), so they differ from the per-quad ones
 // above in the quad's second row and column. qx, qy: the quad's first column and row.
 template <typename L>
-TWR_LANE_INLINE void setFineUvDifferencesLanes(const UvPlanesL<L>& s, const L& qx, const L& qy, const L& px,
-                                               const L& py, FragmentL<L>& f) {
+TWR_LANE_INLINE void setFineUvDifferences(const UvPlanesL<L>& s, const L& qx, const L& qy, const L& px,
+                                          const L& py, FragmentL<L>& f) {
   using S = ScalarOf<L>;
-  const Vec2L<L> left = uvAtPixelLanes<L>(s, qx, py);
-  const Vec2L<L> right = uvAtPixelLanes<L>(s, qx + L(S(1)), py);
-  const Vec2L<L> lower = uvAtPixelLanes<L>(s, px, qy);
-  const Vec2L<L> upper = uvAtPixelLanes<L>(s, px, qy + L(S(1)));
+  const Vec2L<L> left = uvAtPixel<L>(s, qx, py);
+  const Vec2L<L> right = uvAtPixel<L>(s, qx + L(S(1)), py);
+  const Vec2L<L> lower = uvAtPixel<L>(s, px, qy);
+  const Vec2L<L> upper = uvAtPixel<L>(s, px, qy + L(S(1)));
   f.uvDxFine = right - left;
   f.uvDyFine = upper - lower;
 }

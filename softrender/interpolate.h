@@ -112,7 +112,7 @@ struct InterpolationSetupT {
   UvPlanesT<T> uv;             // the texture coordinate, as llvmpipe interpolates it
   // Window depth as llvmpipe interpolates it: its position.z plane, set up like uv's (no 1/w),
   // left non-finite where the float corners are collinear (llvmpipe's fragments then fail the
-  // depth test; storedDepthLanes).
+  // depth test; storedDepth).
   AttributePlaneT<T> depth;
 };
 using InterpolationSetup = InterpolationSetupT<float>;
@@ -156,7 +156,7 @@ template <typename T>
 struct PixelWeightsT {
   std::array<T, 3> screen{};       // lambda_i, sum 1
   std::array<T, 3> perspective{};  // p_i, sum 1
-  T depth = T(0);                  // the depth the test compares and stores (storedDepthLanes)
+  T depth = T(0);                  // the depth the test compares and stores (storedDepth)
   Vec2T<T> uv{T(0)};               // the texture coordinate, from the uv planes
 };
 using PixelWeights = PixelWeightsT<float>;
@@ -176,7 +176,7 @@ struct FragmentT {
   Vec2T<T> uvDxFine{T(0)}, uvDyFine{T(0)};  // GLSL's dFdx / dFdy (fine, per row and column)
   // GLSL's dFdx / dFdy of the environment's reflected and refracted directions (world space),
   // which texture(samplerCube, ...) takes its LOD from: set only for a material that reads the
-  // environment (setEnvironmentDifferencesLanes, shade-inl.h), else 0.
+  // environment (setEnvironmentDifferences, shade-inl.h), else 0.
   Vec3T<T> reflectDx{T(0)}, reflectDy{T(0)}, refractDx{T(0)}, refractDy{T(0)};
   std::array<Vec3T<T>, kMaxLights> lightDirTangent{};
   Vec3T<T> eyeDirTangent{T(0)};
@@ -192,7 +192,7 @@ namespace twr {
 
 template <typename T>
 PixelWeightsT<T> pixelWeights(const InterpolationSetupT<T>& setup, int px, int py) {
-  return pixelWeightsLanes<T>(setup, static_cast<double>(px), static_cast<double>(py));
+  return lanes::pixelWeights<T>(setup, static_cast<double>(px), static_cast<double>(py));
 }
 
 // The varyings at pixel (px, py), from their planes; `depth` is the pixel's window depth
@@ -200,7 +200,7 @@ PixelWeightsT<T> pixelWeights(const InterpolationSetupT<T>& setup, int px, int p
 // the planes hold them (tangent lighting space), else left zero.
 template <typename T>
 FragmentT<T> interpolateFragment(const VaryingPlanesT<T>& planes, int px, int py, T depth) {
-  return interpolateFragmentLanes<T>(planes, static_cast<T>(px), static_cast<T>(py), depth);
+  return lanes::interpolateFragment<T>(planes, static_cast<T>(px), static_cast<T>(py), depth);
 }
 
 }  // namespace twr

@@ -32,7 +32,7 @@ TWR_LANE_INLINE L dot3(const Vec3L<L>& a, const Vec3L<L>& b) {
 
 // glm::length: sqrt(dot(v, v)).
 template <typename L>
-TWR_LANE_INLINE L lengthOf(const Vec3L<L>& v) {
+TWR_LANE_INLINE L length3(const Vec3L<L>& v) {
   return sqrtOf(dot3(v, v));
 }
 
@@ -48,7 +48,7 @@ TWR_LANE_INLINE Vec4L<L> select4(const MaskOf<L>& m, const Vec4L<L>& a, const Ve
 // safeNormalize (scene/conventions.h) per lane: v / |v| when kMinLengthSquared < |v|^2 <
 // infinity, else (0, 0, 1).
 template <typename L>
-TWR_LANE_INLINE Vec3L<L> safeNormalize3(const Vec3L<L>& v) {
+TWR_LANE_INLINE Vec3L<L> safeNormalize(const Vec3L<L>& v) {
   using S = ScalarOf<L>;
   const L lengthSquared = dot3(v, v);
   const MaskOf<L> usable = (lengthSquared > L(static_cast<S>(kMinLengthSquared))) & isFinite(lengthSquared);
@@ -68,7 +68,7 @@ TWR_LANE_INLINE Vec4L<L> clampUnit4(const Vec4L<L>& c) {
 
 // (v + 1) / 2 with alpha 1: how the debug views show a vector.
 template <typename L>
-TWR_LANE_INLINE Vec4L<L> vectorAsColourLanes(const Vec3L<L>& v) {
+TWR_LANE_INLINE Vec4L<L> vectorAsColour(const Vec3L<L>& v) {
   using S = ScalarOf<L>;
   const L one(S(1)), half(S(0.5));
   return Vec4L<L>((v.x + one) * half, (v.y + one) * half, (v.z + one) * half, one);
@@ -78,15 +78,15 @@ TWR_LANE_INLINE Vec4L<L> vectorAsColourLanes(const Vec3L<L>& v) {
 // Each channel is a tent clamp(1.5 - |4 t - centre|, 0, 1): red centred at 3, green at 2,
 // blue at 1.
 template <typename L>
-TWR_LANE_INLINE L heatChannelLanes(const L& t, ScalarOf<L> centre) {
+TWR_LANE_INLINE L heatChannel(const L& t, ScalarOf<L> centre) {
   using S = ScalarOf<L>;
   return minOf(maxOf(L(S(1.5)) - absOf(L(S(4)) * t - L(centre)), L(S(0))), L(S(1)));
 }
 template <typename L>
-TWR_LANE_INLINE Vec4L<L> heatColourLanes(const L& tIn) {
+TWR_LANE_INLINE Vec4L<L> heatColour(const L& tIn) {
   using S = ScalarOf<L>;
   const L t = minOf(maxOf(tIn, L(S(0))), L(S(1)));
-  return Vec4L<L>(heatChannelLanes<L>(t, S(3)), heatChannelLanes<L>(t, S(2)), heatChannelLanes<L>(t, S(1)), L(S(1)));
+  return Vec4L<L>(heatChannel<L>(t, S(3)), heatChannel<L>(t, S(2)), heatChannel<L>(t, S(1)), L(S(1)));
 }
 
 TWR_LANES_END

@@ -16,7 +16,7 @@
 //
 // This header holds the scalar lane types. Each shared "-inl.h" source is included twice
 // over: once plainly into namespace twr (float and double), and once per Highway target into
-// twr::HWY_NAMESPACE by softrender/fast_kernels.cpp (which defines TWR_LANES_HIGHWAY around
+// twr::HWY_NAMESPACE by softrender/fast_kernels-inl.h (which defines TWR_LANES_HIGHWAY around
 // those includes), so that the vector instantiations are compiled with that target's
 // instructions (Highway's foreach_target mechanism; see hwy/foreach_target.h).
 #pragma once
@@ -197,9 +197,13 @@ inline double exp2Integer(double k) {
 }  // namespace twr
 
 // Opening and closing the namespace of a shared "-inl.h" source: plainly `twr` here;
-// fast_kernels.cpp redefines both to twr::HWY_NAMESPACE with the target's attributes.
-#define TWR_LANES_BEGIN namespace twr {
-#define TWR_LANES_END }
+// fast_kernels-inl.h redefines both to twr::HWY_NAMESPACE with the target's attributes.
+#define TWR_LANES_BEGIN \
+  namespace twr {        \
+  namespace lanes {
+#define TWR_LANES_END \
+  }                   \
+  }
 // How the shared sources' functions are declared: plainly `inline` (the teaching path stays
 // easy to step through); per target forced inline, because a vector struct passed to a call
 // goes through memory (lanes_target_begin.h).

@@ -1,6 +1,6 @@
 // The fast path's lane type: LaneF, one Highway vector of floats (one pixel per lane), with
 // the operations softrender/lanes.h lists, so the shared shading source compiles for it
-// exactly as for float. Included once per Highway target by fast_kernels.cpp, inside
+// exactly as for float. Included once per Highway target by fast_kernels-inl.h, inside
 // twr::HWY_NAMESPACE; nothing here is ever compiled for the static target alone.
 //
 // Lane counts: AVX-512 16, AVX2 8, SSE4, NEON and EMU128 4, SCALAR 1. WideOf<LaneF> is LaneW,

@@ -1,5 +1,5 @@
 // Included (repeatedly, no guard) by a translation unit that compiles the shared "-inl.h"
-// sources once per Highway target (fast_kernels.cpp, tests/softrender/test_lanes.cpp): from
+// sources once per Highway target (fast_kernels-inl.h, tests/softrender/test_lanes.cpp): from
 // here on they go into twr::HWY_NAMESPACE with the target's attributes (softrender/lanes.h).
 // softrender/lanes_target_end.h switches back to the plain namespace.
 #define TWR_LANES_HIGHWAY

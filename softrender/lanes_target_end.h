@@ -3,8 +3,12 @@
 #undef TWR_LANES_HIGHWAY
 #undef TWR_LANES_BEGIN
 #undef TWR_LANES_END
-#define TWR_LANES_BEGIN namespace twr {
-#define TWR_LANES_END }
+#define TWR_LANES_BEGIN \
+  namespace twr {        \
+  namespace lanes {
+#define TWR_LANES_END \
+  }                   \
+  }
 #undef TWR_LANE_INLINE
 #define TWR_LANE_INLINE inline
 #undef TWR_LANE_OUTLINE

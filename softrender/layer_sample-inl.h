@@ -6,7 +6,7 @@
 //
 // Unlike a cube (cube_sample-inl.h, fine differences per pixel), a 2D texture takes its LOD
 // once per 2x2 quad from the coordinate's differences at the quad's first pixel, to its right
-// and above (texture_sample-inl.h's quadLodLanes; docs/textures.md): the coordinate here is
+// and above (texture_sample-inl.h's quadLod; docs/textures.md): the coordinate here is
 // computed from the direction, so the caller evaluates it at those three pixels.
 
 #if defined(TWR_LANES_HIGHWAY)
@@ -43,10 +43,10 @@ struct MapCoordL {
 // The formulas of scene/environment.h for a direction r of any length (normalised first, as
 // the sky's direction is not). GLSL: environmentCoord.
 template <typename L>
-TWR_LANE_INLINE MapCoordL<L> mapCoordLanes(EnvironmentParameterization kind, const Vec3L<L>& rIn) {
+TWR_LANE_INLINE MapCoordL<L> environmentCoord(EnvironmentParameterization kind, const Vec3L<L>& rIn) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), two(S(2)), half(S(0.5));
-  const Vec3L<L> r = safeNormalize3<L>(rIn);
+  const Vec3L<L> r = safeNormalize<L>(rIn);
   if (kind == EnvironmentParameterization::Sphere) {
     const L z1 = r.z + one;
     const L m = two * sqrtOf((r.x * r.x + r.y * r.y) + z1 * z1);
@@ -59,7 +59,7 @@ TWR_LANE_INLINE MapCoordL<L> mapCoordLanes(EnvironmentParameterization kind, con
 // Bilinear on one level, clamped to the edge: llvmpipe's u * size - 1/2, its floor and
 // fraction, the footprint's indices clamped to the layer, lerps fused (as the cube's).
 template <typename L>
-TWR_LANE_INLINE Vec3L<L> sampleMapLevelLanes(const ParameterizedMap& map, int level, const MapCoordL<L>& c) {
+TWR_LANE_INLINE Vec3L<L> sampleMapLevel(const ParameterizedMap& map, int level, const MapCoordL<L>& c) {
   using S = ScalarOf<L>;
   const CubeMapLevel& lv = map.levels[static_cast<std::size_t>(level)];
   const L zero(S(0)), one(S(1)), sizeL(static_cast<S>(lv.size)), last(static_cast<S>(lv.size - 1));
@@ -79,20 +79,20 @@ TWR_LANE_INLINE Vec3L<L> sampleMapLevelLanes(const ParameterizedMap& map, int le
 }
 
 // The map at an explicit LOD (textureLod with GL_LINEAR_MIPMAP_LINEAR): the cube's level
-// choice and blend (cube_sample-inl.h, blendLevelsLanes).
+// choice and blend (cube_sample-inl.h, blendLevels).
 template <typename L>
-TWR_LANE_OUTLINE Vec3L<L> sampleMapLodLanes(const ParameterizedMap& map, const MapCoordL<L>& cIn, const L& lod) {
+TWR_LANE_OUTLINE Vec3L<L> sampleMapLod(const ParameterizedMap& map, const MapCoordL<L>& cIn, const L& lod) {
   const MapCoordL<L> c{cIn.layer, (sanitizedCoord<L>)(cIn.u), (sanitizedCoord<L>)(cIn.v)};
-  return (blendLevelsLanes<L>)(map.levelCount(), lod,
-                               [&](int level) { return (sampleMapLevelLanes<L>)(map, level, c); });
+  return (blendLevels<L>)(map.levelCount(), lod,
+                          [&](int level) { return (sampleMapLevel<L>)(map, level, c); });
 }
 
 // texture(sampler2DArray, vec3(uv, layer)) with the coordinate's quad differences (du/dx,
 // dv/dx) and (du/dy, dv/dy): the 2D LOD rule over the base level's side.
 template <typename L>
-TWR_LANE_INLINE L mapLodLanes(const Vec2L<L>& dx, const Vec2L<L>& dy, int size) {
+TWR_LANE_INLINE L mapLod(const Vec2L<L>& dx, const Vec2L<L>& dy, int size) {
   using S = ScalarOf<L>;
-  const L lod = (quadLodLanes<L>)(dx, dy, size, size);
+  const L lod = (quadLod<L>)(dx, dy, size, size);
   return select(isFinite(lod), lod, L(S(0)));
 }
 
@@ -100,36 +100,36 @@ TWR_LANE_INLINE L mapLodLanes(const Vec2L<L>& dx, const Vec2L<L>& dy, int size) 
 // the one to its right and the one above: a cube's fine differences are the caller's; a map's
 // are its coordinate's, (du, dv, 0) in x and y.
 template <typename L>
-TWR_LANE_INLINE void mapDifferencesLanes(EnvironmentParameterization kind, const Vec3L<L>& first,
-                                         const Vec3L<L>& right, const Vec3L<L>& above, Vec3L<L>& dx, Vec3L<L>& dy) {
+TWR_LANE_INLINE void mapDifferences(EnvironmentParameterization kind, const Vec3L<L>& first,
+                                    const Vec3L<L>& right, const Vec3L<L>& above, Vec3L<L>& dx, Vec3L<L>& dy) {
   using S = ScalarOf<L>;
-  const MapCoordL<L> c0 = (mapCoordLanes<L>)(kind, first), cx = (mapCoordLanes<L>)(kind, right),
-                     cy = (mapCoordLanes<L>)(kind, above);
+  const MapCoordL<L> c0 = (environmentCoord<L>)(kind, first), cx = (environmentCoord<L>)(kind, right),
+                     cy = (environmentCoord<L>)(kind, above);
   dx = Vec3L<L>(cx.u - c0.u, cx.v - c0.v, L(S(0)));
   dy = Vec3L<L>(cy.u - c0.u, cy.v - c0.v, L(S(0)));
 }
 
 // What the environment holds in direction r, read with texture(): the cube with r's fine
 // differences, or the sphere or paraboloid map (when `layers` is not null) with its
-// coordinate's quad differences (mapDifferencesLanes), both in dx and dy. First the LOD
+// coordinate's quad differences (mapDifferences), both in dx and dy. First the LOD
 // texture() takes from them:
 template <typename L>
-TWR_LANE_INLINE L environmentLodLanes(const CubeMap& cube, const ParameterizedMap* layers, const Vec3L<L>& r,
-                                      const Vec3L<L>& dx, const Vec3L<L>& dy) {
-  if (!layers) return (cubeLodLanes<L>)(r, dx, dy, cube.size());
-  return (mapLodLanes<L>)(Vec2L<L>(dx.x, dx.y), Vec2L<L>(dy.x, dy.y), layers->size());
+TWR_LANE_INLINE L environmentReadLod(const CubeMap& cube, const ParameterizedMap* layers, const Vec3L<L>& r,
+                                     const Vec3L<L>& dx, const Vec3L<L>& dy) {
+  if (!layers) return (cubeLod<L>)(r, dx, dy, cube.size());
+  return (mapLod<L>)(Vec2L<L>(dx.x, dx.y), Vec2L<L>(dy.x, dy.y), layers->size());
 }
-// The same read at a LOD already found (environmentLodLanes, or textureLod's explicit one).
+// The same read at a LOD already found (environmentReadLod, or textureLod's explicit one).
 template <typename L>
-TWR_LANE_INLINE Vec3L<L> sampleEnvironmentAtLodLanes(const CubeMap& cube, const ParameterizedMap* layers,
-                                                     const Vec3L<L>& r, const L& lod) {
-  if (!layers) return (sampleCubeLodLanes<L>)(cube, r, lod);
-  return (sampleMapLodLanes<L>)(*layers, (mapCoordLanes<L>)(layers->kind, r), lod);
+TWR_LANE_INLINE Vec3L<L> sampleEnvironmentAtLod(const CubeMap& cube, const ParameterizedMap* layers,
+                                                const Vec3L<L>& r, const L& lod) {
+  if (!layers) return (sampleCubeLod<L>)(cube, r, lod);
+  return (sampleMapLod<L>)(*layers, (environmentCoord<L>)(layers->kind, r), lod);
 }
 template <typename L>
-TWR_LANE_INLINE Vec3L<L> sampleEnvironmentLanes(const CubeMap& cube, const ParameterizedMap* layers, const Vec3L<L>& r,
-                                                const Vec3L<L>& dx, const Vec3L<L>& dy) {
-  return (sampleEnvironmentAtLodLanes<L>)(cube, layers, r, (environmentLodLanes<L>)(cube, layers, r, dx, dy));
+TWR_LANE_INLINE Vec3L<L> sampleEnvironment(const CubeMap& cube, const ParameterizedMap* layers, const Vec3L<L>& r,
+                                           const Vec3L<L>& dx, const Vec3L<L>& dy) {
+  return (sampleEnvironmentAtLod<L>)(cube, layers, r, (environmentReadLod<L>)(cube, layers, r, dx, dy));
 }
 
 TWR_LANES_END

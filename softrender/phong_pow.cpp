@@ -9,6 +9,6 @@
 
 namespace twr {
 
-float powPositive(float x, float s) { return phongPow<float>(x, s); }
+float powPositive(float x, float s) { return lanes::phongPow<float>(x, s); }
 
 }  // namespace twr

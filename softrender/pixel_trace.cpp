@@ -126,11 +126,11 @@ void traceTriangle(const DrawItem& item, std::size_t t, const VertexUniforms& ve
     visit.varyings = varyings;
     if (shadeUniforms.needsQuadDifferences()) {
       // The LOD (or the anisotropic ellipse) from the pixel's 2x2 quad, as the renderers take it.
-      setQuadUvDifferencesLanes<float>(interpolation.uv, static_cast<float>(x & ~1), static_cast<float>(yGl & ~1),
-                                       visit.fragment);
+      lanes::setQuadUvDifferences<float>(interpolation.uv, static_cast<float>(x & ~1), static_cast<float>(yGl & ~1),
+                                         visit.fragment);
       if (shadeUniforms.heightMap) {
-        setFineUvDifferencesLanes<float>(interpolation.uv, static_cast<float>(x & ~1), static_cast<float>(yGl & ~1),
-                                         static_cast<float>(x), static_cast<float>(yGl), visit.fragment);
+        lanes::setFineUvDifferences<float>(interpolation.uv, static_cast<float>(x & ~1), static_cast<float>(yGl & ~1),
+                                           static_cast<float>(x), static_cast<float>(yGl), visit.fragment);
       }
     }
     setEnvironmentDifferencesDynamic(key, varyings, x, yGl, shadeUniforms, visit.fragment);
@@ -280,20 +280,20 @@ PixelTrace tracePixel(const Scene& scene, const RenderSettings& requested, int w
   trace.triangleId = output.triangleId[i];
   if (trace.triangleId == kNoTriangle && drawsSky(scene, requested)) {
     const SkyUniformsT<float> sky = makeSkyUniforms(scene, width, height, requested.view);
-    const SkyReadL<float> read = skyReadLanes<float>(sky, static_cast<float>(x), static_cast<float>(trace.yGl));
+    const lanes::SkyReadL<float> read = lanes::skyRead<float>(sky, static_cast<float>(x), static_cast<float>(trace.yGl));
     trace.sky = true;
     trace.skyDirection = read.dir;
     if (sky.layers) {
-      const MapCoordL<float> coord = mapCoordLanes<float>(sky.layers->kind, read.dir);
+      const lanes::MapCoordL<float> coord = lanes::environmentCoord<float>(sky.layers->kind, read.dir);
       trace.skyParameterization = sky.layers->kind;
       trace.skyFace = static_cast<int>(coord.layer);
       trace.skyFaceCoord = vec2(coord.u, coord.v);
-      trace.skyLod = mapLodLanes<float>(vec2(read.dx.x, read.dx.y), vec2(read.dy.x, read.dy.y), sky.layers->size());
+      trace.skyLod = lanes::mapLod<float>(vec2(read.dx.x, read.dx.y), vec2(read.dy.x, read.dy.y), sky.layers->size());
     } else {
-      const CubeCoordL<float> coord = cubeCoordLanes<float>(read.dir);
+      const lanes::CubeCoordL<float> coord = lanes::cubeCoord<float>(read.dir);
       trace.skyFace = static_cast<int>(coord.face);
       trace.skyFaceCoord = vec2(coord.s, coord.t);
-      trace.skyLod = cubeLodLanes<float>(read.dir, read.dx, read.dy, sky.cube->size());
+      trace.skyLod = lanes::cubeLod<float>(read.dir, read.dx, read.dy, sky.cube->size());
     }
   }
   trace.debugLine = output.lineMask[i] != 0;

@@ -93,7 +93,7 @@ template <typename T>
 struct SampleBufferTarget {
   SampleTarget& target;
   T storedDepth(int px, int py) const { return static_cast<T>(target.depth[target.index(px, py)]); }
-  // Every bit of the double sample kept (storedDepthLanes rounds no double to 24 bits either).
+  // Every bit of the double sample kept (storedDepth rounds no double to 24 bits either).
   DepthFormat depthFormat() const { return DepthFormat::Float32; }
   void write(int px, int py, const Vec4T<T>& colour, T depth, std::uint32_t triangleId) {
     const std::size_t i = target.index(px, py);
@@ -214,7 +214,7 @@ class ReferenceRenderer final : public Renderer {
           for (int x = 0; x < width; ++x) {
             const std::size_t i = target.index(x, y);
             if (target.triangleId[i] != kNoTriangle) continue;
-            target.colour[i] = skyColourLanes<double>(sky, x + offsets[pass].x, y + offsets[pass].y);
+            target.colour[i] = lanes::skyColour<double>(sky, x + offsets[pass].x, y + offsets[pass].y);
           }
         }
       }

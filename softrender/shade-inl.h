@@ -41,7 +41,7 @@ TWR_LANES_BEGIN
 // (A_C + A_L d) + (A_Q d) d: the order phong.frag writes it (tests/softrender/test_lanes.cpp
 // shows that an equivalent form, Horner's, rounds differently).
 template <typename L>
-TWR_LANE_INLINE L attenuationLanes(const Vec3T<ScalarOf<L>>& a, L d) {
+TWR_LANE_INLINE L attenuation(const Vec3T<ScalarOf<L>>& a, L d) {
   using S = ScalarOf<L>;
   const L denominator = (L(a.x) + L(a.y) * d) + (L(a.z) * d) * d;
   return L(S(1)) / maxOf(denominator, L(static_cast<S>(kMinAttenuationDenominator)));
@@ -51,10 +51,10 @@ TWR_LANE_INLINE L attenuationLanes(const Vec3T<ScalarOf<L>>& a, L d) {
 // cos angle) written out, the angle between the cone's axis and the way from the light to the
 // point; toLight is the vector from the point to the light.
 template <typename L>
-TWR_LANE_INLINE L spotFactorLanes(const LightUniformT<ScalarOf<L>>& light, const Vec3L<L>& toLight) {
+TWR_LANE_INLINE L spotFactor(const LightUniformT<ScalarOf<L>>& light, const Vec3L<L>& toLight) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1));
-  const L cosAngle = zero - dot3<L>(Vec3L<L>(light.spotAxis), safeNormalize3<L>(toLight));
+  const L cosAngle = zero - dot3<L>(Vec3L<L>(light.spotAxis), safeNormalize<L>(toLight));
   const L x = minOf(maxOf((cosAngle - L(light.spotCosOuter)) / L(light.spotCosRange), zero), one);
   return (x * x) * (L(S(3)) - L(S(2)) * x);
 }
@@ -62,7 +62,7 @@ TWR_LANE_INLINE L spotFactorLanes(const LightUniformT<ScalarOf<L>>& light, const
 // The vector from p to a light: xyz - w p, with the light as lightVectorWorld gives it (w 1 for
 // a point light, 0 for a directional one). phong.frag's toLightWorld.
 template <typename L>
-TWR_LANE_INLINE Vec3L<L> toLightLanes(const LightUniformT<ScalarOf<L>>& light, const Vec3L<L>& p) {
+TWR_LANE_INLINE Vec3L<L> toLightWorld(const LightUniformT<ScalarOf<L>>& light, const Vec3L<L>& p) {
   const L w(light.vectorWorld.w);
   return Vec3L<L>(Vec3T<ScalarOf<L>>(light.vectorWorld)) - w * p;
 }
@@ -76,8 +76,8 @@ inline constexpr std::size_t kDiffuseSlot = 0, kNormalSlot = 1, kSpecularSlot = 
 // transform), or with anisotropy the elliptical filter over the quad's differences. The
 // differences are always the fragment's own (a shifted uv is read with textureGrad in GLSL).
 template <typename L, typename View>
-TWR_LANE_INLINE Vec4L<L> sampleMapLanes(const View& map, const ShadeUniformsT<ScalarOf<L>>& u, std::size_t slot,
-                                        const FragmentL<L>& f, const Vec2L<L>& uvIn, bool shifted) {
+TWR_LANE_INLINE Vec4L<L> sampleMap(const View& map, const ShadeUniformsT<ScalarOf<L>>& u, std::size_t slot,
+                                   const FragmentL<L>& f, const Vec2L<L>& uvIn, bool shifted) {
   using S = ScalarOf<L>;
   Vec2L<L> uv = uvIn, dx = shifted ? f.uvDxFine : f.uvDx, dy = shifted ? f.uvDyFine : f.uvDy;
   if (u.uvTransform[slot]) {
@@ -87,21 +87,21 @@ TWR_LANE_INLINE Vec4L<L> sampleMapLanes(const View& map, const ShadeUniformsT<Sc
     dx = dx * scale;
     dy = dy * scale;
   }
-  if (u.anisotropic) return sampleTextureAnisotropicLanes<L>(map, uv, u.filter, dx, dy);
-  const L lod = usesMipmaps(u.filter) ? quadLodLanes<L>(dx, dy, texLevelWidth(map, 0), texLevelHeight(map, 0)) : L(S(0));
-  return sampleTextureLanes<L>(map, uv, u.filter, lod);
+  if (u.anisotropic) return sampleTextureAnisotropic<L>(map, uv, u.filter, dx, dy);
+  const L lod = usesMipmaps(u.filter) ? quadLod<L>(dx, dy, texLevelWidth(map, 0), texLevelHeight(map, 0)) : L(S(0));
+  return sampleTexture<L>(map, uv, u.filter, lod);
 }
 
 // Self-shadowing of one light by the height field (1 = lit) at the surface detail's uv; lT is
 // the light in tangent space, normalised. Called only when a height map is bound.
 template <typename L, typename Maps>
-TWR_LANE_INLINE L selfShadowLanes(const Maps& maps, const ShadeUniformsT<ScalarOf<L>>& u, const FragmentL<L>& f,
-                                  const SurfaceDetailL<L>& detail, const Vec3L<L>& lT) {
+TWR_LANE_INLINE L selfShadow(const Maps& maps, const ShadeUniformsT<ScalarOf<L>>& u, const FragmentL<L>& f,
+                             const SurfaceDetailL<L>& detail, const Vec3L<L>& lT) {
   using S = ScalarOf<L>;
   if (u.selfShadow == SelfShadow::HeightMarch) {
-    return heightMarchShadowLanes<L>(*maps.height, u, f, detail.uv, detail.height, lT);
+    return heightMarchShadow<L>(*maps.height, u, f, detail.uv, detail.height, lT);
   }
-  if (u.selfShadow == SelfShadow::HorizonMap) return horizonShadowLanes<L>(maps, u, f, detail.uv, lT);
+  if (u.selfShadow == SelfShadow::HorizonMap) return horizonShadow<L>(maps, u, f, detail.uv, lT);
   return L(S(1));
 }
 
@@ -109,8 +109,8 @@ TWR_LANE_INLINE L selfShadowLanes(const Maps& maps, const ShadeUniformsT<ScalarO
 // surface detail (the parallax methods move the uv every map is read at; bump_blinn makes the
 // normal; the rest read the height), the normal map's texel and the normal lighting uses (nl,
 // in the lighting space). The shading and the environment's quad partners
-// (setEnvironmentDifferencesLanes) both take it from here. wantHeight: the height at the
-// shifted uv too (parallaxLanes).
+// (setEnvironmentDifferences) both take it from here. wantHeight: the height at the
+// shifted uv too (parallax).
 template <typename L>
 struct SurfaceFrameL {
   Vec3L<L> n, t, b;
@@ -120,15 +120,15 @@ struct SurfaceFrameL {
   Vec3L<L> nl;
 };
 template <typename Features, typename L, typename Maps>
-TWR_LANE_INLINE SurfaceFrameL<L> surfaceFrameLanes(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u,
-                                                   const Maps& maps, bool wantHeight) {
+TWR_LANE_INLINE SurfaceFrameL<L> surfaceFrame(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u,
+                                              const Maps& maps, bool wantHeight) {
   using S = ScalarOf<L>;
   constexpr bool kTangentSpace = Features::kSpace == LightingSpace::Tangent;
   const L zero(S(0)), one(S(1)), two(S(2));
   SurfaceFrameL<L> s;
-  s.n = safeNormalize3<L>(f.nWorld);
-  s.t = safeNormalize3<L>(f.tWorld);
-  s.b = safeNormalize3<L>(f.bWorld);
+  s.n = safeNormalize<L>(f.nWorld);
+  s.t = safeNormalize<L>(f.tWorld);
+  s.b = safeNormalize<L>(f.bWorld);
   const Vec3L<L>& n = s.n;
   const Vec3L<L>& t = s.t;
   const Vec3L<L>& b = s.b;
@@ -137,11 +137,11 @@ TWR_LANE_INLINE SurfaceFrameL<L> surfaceFrameLanes(const FragmentL<L>& f, const 
   if constexpr (Features::kHasHeightMap) {
     if (shiftsUv(u.surfaceDetail)) {
       const Vec3L<L> eyeVec = kTangentSpace ? f.eyeDirTangent : Vec3L<L>(u.eyePosWorld) - f.posWorld;
-      const Vec3L<L> vT = tangentFromLightingLanes<L>(eyeVec, t, b, n, kTangentSpace);
-      s.detail = parallaxLanes<L>(*maps.height, u, f, vT, wantHeight);
+      const Vec3L<L> vT = tangentFromLighting<L>(eyeVec, t, b, n, kTangentSpace);
+      s.detail = parallax<L>(*maps.height, u, f, vT, wantHeight);
     } else {
-      if (u.surfaceDetail == SurfaceDetail::BumpBlinn) s.detail.bumpTangent = bumpBlinnLanes<L>(*maps.height, u, f);
-      s.detail.height = heightAtLanes<L>(*maps.height, u, f.uv, f);
+      if (u.surfaceDetail == SurfaceDetail::BumpBlinn) s.detail.bumpTangent = bumpBlinn<L>(*maps.height, u, f);
+      s.detail.height = heightAt<L>(*maps.height, u, f.uv, f);
     }
   }
   const bool uvShifted = Features::kHasHeightMap && shiftsUv(u.surfaceDetail);
@@ -150,7 +150,7 @@ TWR_LANE_INLINE SurfaceFrameL<L> surfaceFrameLanes(const FragmentL<L>& f, const 
   s.mappedTangent = Vec3L<L>(zero, zero, one);
   s.normalTexel = Vec4L<L>(zero);
   if constexpr (Features::kHasNormalMap) {
-    s.normalTexel = sampleMapLanes<L>(*maps.normal, u, kNormalSlot, f, s.detail.uv, uvShifted);
+    s.normalTexel = sampleMap<L>(*maps.normal, u, kNormalSlot, f, s.detail.uv, uvShifted);
     Vec3L<L> encoded(s.normalTexel.x, s.normalTexel.y, s.normalTexel.z);
     if (u.normalGreenDown) encoded.y = one - encoded.y;
     Vec3L<L> tangentNormal = two * encoded - one;
@@ -162,7 +162,7 @@ TWR_LANE_INLINE SurfaceFrameL<L> surfaceFrameLanes(const FragmentL<L>& f, const 
       tangentNormal.x = tangentNormal.x * strength;
       tangentNormal.y = tangentNormal.y * strength;
     }
-    s.mappedTangent = safeNormalize3<L>(tangentNormal);
+    s.mappedTangent = safeNormalize<L>(tangentNormal);
   }
   if (bumpNormal) s.mappedTangent = s.detail.bumpTangent;
 
@@ -170,7 +170,7 @@ TWR_LANE_INLINE SurfaceFrameL<L> surfaceFrameLanes(const FragmentL<L>& f, const 
   if constexpr (kTangentSpace) {
     s.nl = s.mappedTangent;
   } else if (Features::kHasNormalMap || bumpNormal) {
-    s.nl = safeNormalize3<L>(t * s.mappedTangent.x + b * s.mappedTangent.y + n * s.mappedTangent.z);
+    s.nl = safeNormalize<L>(t * s.mappedTangent.x + b * s.mappedTangent.y + n * s.mappedTangent.z);
   }
   return s;
 }
@@ -181,26 +181,26 @@ TWR_LANE_INLINE SurfaceFrameL<L> surfaceFrameLanes(const FragmentL<L>& f, const 
 // quad differences of the map's coordinate instead, layer_sample-inl.h). A GPU shades the quad's four pixels
 // together (helper pixels included) and differences the values; here the pixel's row partner
 // and column partner are interpolated from the triangle's planes and their directions found
-// as the shading finds them (surfaceFrameLanes, environmentDirectionsLanes). The pixel itself
+// as the shading finds them (surfaceFrame, environmentDirections). The pixel itself
 // is one end of both differences: three evaluations of the surface per pixel, paid only by a
 // material that reads the environment.
 template <typename Features, typename L, typename Maps>
-TWR_LANE_OUTLINE void setEnvironmentDifferencesLanes(const VaryingPlanesL<L>& planes, const L& px, const L& py,
-                                                     const L& qx, const L& qy, const ShadeUniformsT<ScalarOf<L>>& u,
-                                                     const Maps& maps, FragmentL<L>& f) {
+TWR_LANE_OUTLINE void setEnvironmentDifferences(const VaryingPlanesL<L>& planes, const L& px, const L& py,
+                                                const L& qx, const L& qy, const ShadeUniformsT<ScalarOf<L>>& u,
+                                                const Maps& maps, FragmentL<L>& f) {
   using S = ScalarOf<L>;
   constexpr bool kTangentSpace = Features::kSpace == LightingSpace::Tangent;
   // The diffuse light and a prefiltered reflection are read at an explicit LOD.
   if (!u.environment.readsDifferences()) return;
   const UvPlanesL<L> uvPlanes{planes.overW[kVaryingUv], planes.overW[kVaryingUv + 1], planes.oneOverW};
   const auto directionsAt = [&](const L& x, const L& y) {
-    FragmentL<L> g = interpolateFragmentLanes<L>(planes, x, y, f.depth);
+    FragmentL<L> g = interpolateFragment<L>(planes, x, y, f.depth);
     g.uvDx = f.uvDx;  // the same quad
     g.uvDy = f.uvDy;
-    if (Features::kHasHeightMap) setFineUvDifferencesLanes<L>(uvPlanes, qx, qy, x, y, g);
-    const SurfaceFrameL<L> frame = (surfaceFrameLanes<Features, L>)(g, u, maps, false);
+    if (Features::kHasHeightMap) setFineUvDifferences<L>(uvPlanes, qx, qy, x, y, g);
+    const SurfaceFrameL<L> frame = (surfaceFrame<Features, L>)(g, u, maps, false);
     const Vec3L<L> eyeVec = kTangentSpace ? g.eyeDirTangent : Vec3L<L>(u.eyePosWorld) - g.posWorld;
-    return (environmentDirectionsLanes<L>)(u.environment, frame.nl, eyeVec, frame.t, frame.b, frame.n, kTangentSpace);
+    return (environmentDirections<L>)(u.environment, frame.nl, eyeVec, frame.t, frame.b, frame.n, kTangentSpace);
   };
   const L one(S(1));
   if (u.environment.layers) {
@@ -210,8 +210,8 @@ TWR_LANE_OUTLINE void setEnvironmentDifferencesLanes(const VaryingPlanesL<L>& pl
     const EnvironmentDirectionsL<L> first = directionsAt(qx, qy);
     const EnvironmentDirectionsL<L> right = directionsAt(qx + one, qy);
     const EnvironmentDirectionsL<L> above = directionsAt(qx, qy + one);
-    (mapDifferencesLanes<L>)(kind, first.reflectWorld, right.reflectWorld, above.reflectWorld, f.reflectDx, f.reflectDy);
-    (mapDifferencesLanes<L>)(kind, first.refractWorld, right.refractWorld, above.refractWorld, f.refractDx, f.refractDy);
+    (mapDifferences<L>)(kind, first.reflectWorld, right.reflectWorld, above.reflectWorld, f.reflectDx, f.reflectDy);
+    (mapDifferences<L>)(kind, first.refractWorld, right.refractWorld, above.refractWorld, f.refractDx, f.refractDy);
     return;
   }
   // The partners: the other column of the pixel's row, the other row of its column.
@@ -236,19 +236,19 @@ struct MaterialTexelsL {
   Vec3L<L> albedo, specScale;
 };
 template <typename Features, typename L, typename Maps>
-TWR_LANE_INLINE MaterialTexelsL<L> materialTexelsLanes(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u,
-                                                       const Maps& maps, const SurfaceDetailL<L>& detail) {
+TWR_LANE_INLINE MaterialTexelsL<L> materialTexels(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u,
+                                                  const Maps& maps, const SurfaceDetailL<L>& detail) {
   using S = ScalarOf<L>;
   const L one(S(1));
   // A shifted uv is read with GLSL's dFdx / dFdy (textureGrad), the fine differences.
   const bool uvShifted = Features::kHasHeightMap && shiftsUv(u.surfaceDetail);
   MaterialTexelsL<L> m{Vec3L<L>(one), Vec3L<L>(one)};
   if constexpr (Features::kHasDiffuseMap) {
-    const Vec4L<L> texel = sampleMapLanes<L>(*maps.diffuse, u, kDiffuseSlot, f, detail.uv, uvShifted);
+    const Vec4L<L> texel = sampleMap<L>(*maps.diffuse, u, kDiffuseSlot, f, detail.uv, uvShifted);
     m.albedo = Vec3L<L>(texel.x, texel.y, texel.z);
   }
   if constexpr (Features::kHasSpecularMap) {
-    const Vec4L<L> texel = sampleMapLanes<L>(*maps.specular, u, kSpecularSlot, f, detail.uv, uvShifted);
+    const Vec4L<L> texel = sampleMap<L>(*maps.specular, u, kSpecularSlot, f, detail.uv, uvShifted);
     m.specScale = Vec3L<L>(texel.x, texel.y, texel.z);
   }
   return m;
@@ -257,7 +257,7 @@ TWR_LANE_INLINE MaterialTexelsL<L> materialTexelsLanes(const FragmentL<L>& f, co
 // x^s for the specular term, s one uniform (forward shading) or one per lane (the deferred
 // lighting pass reads it from the G-buffer): the same bits for the same s.
 template <typename L, typename Shininess>
-TWR_LANE_INLINE L specularPowLanes(L x, const Shininess& s) {
+TWR_LANE_INLINE L specularPow(L x, const Shininess& s) {
   if constexpr (std::is_same_v<Shininess, ScalarOf<L>>) {
     return phongPow<L>(x, s);
   } else {
@@ -287,15 +287,15 @@ struct LightSumL {
 // first light's test kept for the shadow views. Its angle is the geometric normal's, in world
 // space. Returns whether it tested. GLSL: lighting.glsl's shadowMapStep.
 template <typename L>
-TWR_LANE_INLINE bool shadowMapStepLanes(const LightUniformT<ScalarOf<L>>& light, const Vec3L<L>& posWorld,
-                                        const Vec3L<L>& n, const Vec3L<L>& toLight, bool wanted, LightSumL<L>& out,
-                                        L& shadow, ShadowTestL<L>& mapTest) {
+TWR_LANE_INLINE bool shadowMapStep(const LightUniformT<ScalarOf<L>>& light, const Vec3L<L>& posWorld,
+                                   const Vec3L<L>& n, const Vec3L<L>& toLight, bool wanted, LightSumL<L>& out,
+                                   L& shadow, ShadowTestL<L>& mapTest) {
   if (light.shadow.depth == nullptr || !wanted) return false;  // no map, or no lane it can matter to
-  mapTest = (shadowTestLanes<L>)(light.shadow, posWorld, n, safeNormalize3<L>(toLight));
+  mapTest = (shadowTest<L>)(light.shadow, posWorld, n, safeNormalize<L>(toLight));
   shadow = shadow * mapTest.visibility;
   if (!out.haveShadowTest) {
     out.firstShadowTest = mapTest;
-    out.firstShadowCosine = dot3<L>(n, safeNormalize3<L>(toLight));
+    out.firstShadowCosine = dot3<L>(n, safeNormalize<L>(toLight));
     out.haveShadowTest = true;
   }
   return true;
@@ -337,10 +337,10 @@ TWR_LANE_INLINE void traceLightStep(LightTerms& lt, const LightStepL<L>& s) {
 }
 
 template <typename Features, typename L, typename Maps, typename Shininess, typename Terms>
-TWR_LANE_INLINE LightSumL<L> lightSumLanes(const FragmentL<L>* f, const ShadeUniformsT<ScalarOf<L>>& u, const Maps& maps,
-                                           const Vec3L<L>& posWorld, const SurfaceFrameL<L>& frame,
-                                           const Vec3L<L>& kdAlbedo, const Vec3L<L>& ksSpec, const Shininess& shininess,
-                                           Terms* terms) {
+TWR_LANE_INLINE LightSumL<L> lightSum(const FragmentL<L>* f, const ShadeUniformsT<ScalarOf<L>>& u, const Maps& maps,
+                                      const Vec3L<L>& posWorld, const SurfaceFrameL<L>& frame,
+                                      const Vec3L<L>& kdAlbedo, const Vec3L<L>& ksSpec, const Shininess& shininess,
+                                      Terms* terms) {
   using S = ScalarOf<L>;
   constexpr bool kTrace = !std::is_same_v<Terms, std::nullptr_t>;
   constexpr bool kTangentSpace = Features::kSpace == LightingSpace::Tangent;
@@ -354,60 +354,60 @@ TWR_LANE_INLINE LightSumL<L> lightSumLanes(const FragmentL<L>* f, const ShadeUni
                    Vec3L<L>(zero), Vec3L<L>(zero)};
   for (int i = 0; i < u.lightCount; ++i) {
     const LightUniformT<S>& light = u.lights[static_cast<std::size_t>(i)];
-    const Vec3L<L> toLight = toLightLanes<L>(light, posWorld);
+    const Vec3L<L> toLight = toLightWorld<L>(light, posWorld);
     // Tangent space reads the vertex stage's vectors (never the deferred pass, whose f is null).
     const Vec3L<L> lVec = kTangentSpace ? f->lightDirTangent[static_cast<std::size_t>(i)] : toLight;
     const Vec3L<L> vVec = kTangentSpace ? f->eyeDirTangent : Vec3L<L>(u.eyePosWorld) - posWorld;
-    const L d = lengthOf<L>(toLight);
-    const Vec3L<L> l = safeNormalize3<L>(lVec);
-    const Vec3L<L> v = safeNormalize3<L>(vVec);
+    const L d = length3<L>(toLight);
+    const Vec3L<L> l = safeNormalize<L>(lVec);
+    const Vec3L<L> v = safeNormalize<L>(vVec);
     const L nDotL = dot3<L>(nl, l);
     const Vec3L<L> r = (two * nDotL) * nl - l;
     const L rDotV = maxOf(dot3<L>(r, v), zero);
-    L attenuation = attenuationLanes<L>(light.attenuation, d);
-    if (light.spot) attenuation = attenuation * spotFactorLanes<L>(light, toLight);
+    L falloff = attenuation<L>(light.attenuation, d);
+    if (light.spot) falloff = falloff * spotFactor<L>(light, toLight);
     L diffuseFactor = maxOf(nDotL, zero);
     L selfShadowValue = one;
     if constexpr (Features::kHasHeightMap) {
       Vec3L<L> lT(zero, zero, one);  // the light in tangent space (emboss and self-shadowing)
-      if (emboss || selfShadowOn) lT = tangentFromLightingLanes<L>(lVec, frame.t, frame.b, n, kTangentSpace);
+      if (emboss || selfShadowOn) lT = tangentFromLighting<L>(lVec, frame.t, frame.b, n, kTangentSpace);
       if (emboss) {
         // Emboss: N'.L ~ N.L + s (h(uv) - h(uv + lT.xy d)) / d, d = one texel: Blinn's first
         // order term along the light, from two height samples; diffuse only.
         const L texel(u.heightTexel.x);
         const L hShifted =
-            heightAtLanes<L>(*maps.height, u, Vec2L<L>(f->uv.x + lT.x * texel, f->uv.y + lT.y * texel), *f);
+            heightAt<L>(*maps.height, u, Vec2L<L>(f->uv.x + lT.x * texel, f->uv.y + lT.y * texel), *f);
         diffuseFactor = maxOf(nDotL + L(u.heightScale) * (frame.detail.height - hShifted) / texel, zero);
       }
-      if (selfShadowOn) selfShadowValue = selfShadowLanes<L>(maps, u, *f, frame.detail, lT);
+      if (selfShadowOn) selfShadowValue = selfShadow<L>(maps, u, *f, frame.detail, lT);
     }
     const Vec3L<L> diffuse = (kdAlbedo * diffuseFactor) * Vec3L<L>(light.diffuse);
     // The specular term only where N.L > 0 (and pow only when some lane needs it).
     const auto lit = nDotL > zero;
     Vec3L<L> specular(zero);
     if (!emboss && anyOf(lit)) {
-      specular = select3<L>(lit, (ksSpec * specularPowLanes<L>(rDotV, shininess)) * Vec3L<L>(light.specular), specular);
+      specular = select3<L>(lit, (ksSpec * specularPow<L>(rDotV, shininess)) * Vec3L<L>(light.specular), specular);
     }
     L shadow = selfShadowValue;
     ShadowTestL<L> mapTest{one, zero, zero, one, zero, zero, zero, zero, zero, zero};
     // A runtime branch per light, never taken by a light without a map (nor its lanes' mask read).
     const bool mapOn = light.shadow.depth != nullptr &&
-                       (shadowMapStepLanes<L>)(light, posWorld, n, toLight,
-                                               kTrace || isShadowView(u.view) || anyOf((diffuseFactor > zero) | lit), out,
-                                               shadow, mapTest);
+                       (shadowMapStep<L>)(light, posWorld, n, toLight,
+                                          kTrace || isShadowView(u.view) || anyOf((diffuseFactor > zero) | lit), out,
+                                          shadow, mapTest);
     if (selfShadowOn || mapOn) {
-      out.sum += ((diffuse + specular) * attenuation) * shadow;
+      out.sum += ((diffuse + specular) * falloff) * shadow;
     } else {
-      out.sum += (diffuse + specular) * attenuation;
+      out.sum += (diffuse + specular) * falloff;
     }
     if (termSums) {
-      out.diffuseSum += (diffuse * attenuation) * shadow;
-      out.specularSum += (specular * attenuation) * shadow;
+      out.diffuseSum += (diffuse * falloff) * shadow;
+      out.specularSum += (specular * falloff) * shadow;
     }
     if constexpr (kTrace) {
       if (terms) {
         traceLightStep<L>(terms->lights[static_cast<std::size_t>(i)],
-                          {lVec, vVec, d, l, v, r, nDotL, rDotV, attenuation, selfShadowValue, mapOn, mapTest, diffuse, specular});
+                          {lVec, vVec, d, l, v, r, nDotL, rDotV, falloff, selfShadowValue, mapOn, mapTest, diffuse, specular});
       }
     }
   }
@@ -416,14 +416,14 @@ TWR_LANE_INLINE LightSumL<L> lightSumLanes(const FragmentL<L>* f, const ShadeUni
 
 // What no light scales, summed first: the ambient term, then the environment's diffuse light
 // added as the lights' diffuse terms are (kd albedo times it). The forward shading adds the
-// lights to it; the deferred pipeline's G-buffer pass stores it (gbufferFragmentLanes).
+// lights to it; the deferred pipeline's G-buffer pass stores it (gbufferFragment).
 template <typename L>
 struct UnlitTermsL {
   Vec3L<L> ambient, environmentDiffuse, unlit;
 };
 template <typename Features, typename L>
-TWR_LANE_INLINE UnlitTermsL<L> unlitTermsLanes(const ShadeUniformsT<ScalarOf<L>>& u, const SurfaceFrameL<L>& frame,
-                                               const Vec3L<L>& albedo, const Vec3L<L>& kdAlbedo) {
+TWR_LANE_INLINE UnlitTermsL<L> unlitTerms(const ShadeUniformsT<ScalarOf<L>>& u, const SurfaceFrameL<L>& frame,
+                                          const Vec3L<L>& albedo, const Vec3L<L>& kdAlbedo) {
   using S = ScalarOf<L>;
   constexpr bool kTangentSpace = Features::kSpace == LightingSpace::Tangent;
   UnlitTermsL<L> out;
@@ -431,7 +431,7 @@ TWR_LANE_INLINE UnlitTermsL<L> unlitTermsLanes(const ShadeUniformsT<ScalarOf<L>>
   out.environmentDiffuse = Vec3L<L>(L(S(0)));
   out.unlit = out.ambient;
   if (u.environment.cube && u.environment.diffuse != EnvironmentDiffuse::None) {
-    out.environmentDiffuse = (environmentDiffuseLanes<L>)(u.environment, frame.nl, frame.t, frame.b, frame.n, kTangentSpace);
+    out.environmentDiffuse = (environmentDiffuse<L>)(u.environment, frame.nl, frame.t, frame.b, frame.n, kTangentSpace);
     out.unlit = out.unlit + kdAlbedo * out.environmentDiffuse;
   }
   return out;
@@ -440,7 +440,7 @@ TWR_LANE_INLINE UnlitTermsL<L> unlitTermsLanes(const ShadeUniformsT<ScalarOf<L>>
 // A Phong-term view's colour (isPhongTermView): the ambient term, or the lights' diffuse or
 // specular terms summed, alpha 1. GLSL: phong.frag's phongTermColour.
 template <typename L>
-TWR_LANE_INLINE Vec4L<L> phongTermColourLanes(View view, const Vec3L<L>& ambientTerm, const LightSumL<L>& lit) {
+TWR_LANE_INLINE Vec4L<L> phongTermColour(View view, const Vec3L<L>& ambientTerm, const LightSumL<L>& lit) {
   const L one(ScalarOf<L>(1));
   if (view == View::Ambient) return Vec4L<L>(ambientTerm, one);
   if (view == View::Diffuse) return Vec4L<L>(lit.diffuseSum, one);
@@ -469,18 +469,18 @@ TWR_LANE_INLINE void traceSurfaceTerms(Terms* terms, const SurfaceFrameL<L>& fra
 // The environment mixed into the Phong colour, or one of its views; an environment view on a
 // surface that reads no reflection is dimmed to grey. GLSL: phong.frag's environmentStep.
 template <typename Features, typename L, typename Terms>
-TWR_LANE_INLINE Vec4L<L> environmentStepLanes(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u,
-                                              const SurfaceFrameL<L>& frame, Vec4L<L> colour, Terms* terms) {
+TWR_LANE_INLINE Vec4L<L> environmentStep(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u,
+                                         const SurfaceFrameL<L>& frame, Vec4L<L> colour, Terms* terms) {
   using S = ScalarOf<L>;
   constexpr bool kTangentSpace = Features::kSpace == LightingSpace::Tangent;
   if (!(u.environment.cube && u.environment.readsDirections())) {
-    return isEnvironmentView(u.view) ? (dimmedColourLanes<L>)(colour) : colour;
+    return isEnvironmentView(u.view) ? (dimmedColour<L>)(colour) : colour;
   }
   const Vec3L<L> eyeVec = kTangentSpace ? f.eyeDirTangent : Vec3L<L>(u.eyePosWorld) - f.posWorld;
   const Vec3L<L> phong(colour.x, colour.y, colour.z);
   const EnvironmentDirectionsL<L> directions =
-      (environmentDirectionsLanes<L>)(u.environment, frame.nl, eyeVec, frame.t, frame.b, frame.n, kTangentSpace);
-  const EnvironmentTermsL<L> env = (environmentLanes<L>)(u.environment, directions, f, phong);
+      (environmentDirections<L>)(u.environment, frame.nl, eyeVec, frame.t, frame.b, frame.n, kTangentSpace);
+  const EnvironmentTermsL<L> env = (environmentMix<L>)(u.environment, directions, f, phong);
   colour = Vec4L<L>(env.colour, L(S(1)));
   if (isEnvironmentView(u.view)) {
     const EnvironmentParameterization kind =
@@ -488,7 +488,7 @@ TWR_LANE_INLINE Vec4L<L> environmentStepLanes(const FragmentL<L>& f, const Shade
     const int levels = u.environment.prefiltered
                            ? u.environment.specularCube->levelCount()
                            : (u.environment.layers ? u.environment.layers->levelCount() : u.environment.cube->levelCount());
-    colour = (environmentViewColourLanes<L>)(u.view, kind, env.reflectWorld, (clampedLodLanes<L>)(env.reflectLod, levels));
+    colour = (environmentViewColour<L>)(u.view, kind, env.reflectWorld, (clampedLod<L>)(env.reflectLod, levels));
   }
   if constexpr (!std::is_same_v<Terms, std::nullptr_t>) {
     if (terms) {
@@ -510,40 +510,40 @@ TWR_LANE_INLINE Vec4L<L> environmentStepLanes(const FragmentL<L>& f, const Shade
 // The shadow views (shadow-inl.h): the first shadowed light's test, or dimmed without one.
 // GLSL: phong.frag's shadowViewStep.
 template <typename L>
-TWR_LANE_INLINE Vec4L<L> shadowViewStepLanes(View view, const LightSumL<L>& lit, const Vec4L<L>& colour) {
+TWR_LANE_INLINE Vec4L<L> shadowViewStep(View view, const LightSumL<L>& lit, const Vec4L<L>& colour) {
   if (!isShadowView(view)) return colour;
-  if (!lit.haveShadowTest) return (dimmedColourLanes<L>)(colour);
-  if (view == View::Shadow) return (shadowViewColourLanes<L>)(lit.firstShadowTest, lit.firstShadowCosine);
-  return (lightDepthColourLanes<L>)(lit.firstShadowTest);
+  if (!lit.haveShadowTest) return (dimmedColour<L>)(colour);
+  if (view == View::Shadow) return (shadowViewColour<L>)(lit.firstShadowTest, lit.firstShadowCosine);
+  return (lightDepthColour<L>)(lit.firstShadowTest);
 }
 
 // The shaded view: the unlit terms, the lights, the environment, then the shadow or Phong-term
 // view in place of the colour. GLSL: phong.frag's shadedColour.
 template <typename Features, typename L, typename Maps, typename Terms>
-TWR_LANE_INLINE Vec4L<L> shadedColourLanes(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u, const Maps& maps,
-                                           const SurfaceFrameL<L>& frame, const MaterialTexelsL<L>& texels,
-                                           Terms* terms) {
+TWR_LANE_INLINE Vec4L<L> shadedColour(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u, const Maps& maps,
+                                      const SurfaceFrameL<L>& frame, const MaterialTexelsL<L>& texels,
+                                      Terms* terms) {
   using S = ScalarOf<L>;
   const Vec3L<L> kdAlbedo = Vec3L<L>(u.kd) * texels.albedo;     // u.kd * albedo, diffuse's first product
   const Vec3L<L> ksSpec = Vec3L<L>(u.ks) * texels.specScale;    // u.ks * specScale, specular's first
-  const UnlitTermsL<L> unlitTerms = (unlitTermsLanes<Features, L>)(u, frame, texels.albedo, kdAlbedo);
-  const LightSumL<L> lit = (lightSumLanes<Features, L>)(&f, u, maps, f.posWorld, frame, kdAlbedo, ksSpec, u.shininess, terms);
-  Vec4L<L> colour(unlitTerms.unlit + lit.sum, L(S(1)));
+  const UnlitTermsL<L> unlit = (unlitTerms<Features, L>)(u, frame, texels.albedo, kdAlbedo);
+  const LightSumL<L> lit = (lightSum<Features, L>)(&f, u, maps, f.posWorld, frame, kdAlbedo, ksSpec, u.shininess, terms);
+  Vec4L<L> colour(unlit.unlit + lit.sum, L(S(1)));
   if constexpr (!std::is_same_v<Terms, std::nullptr_t>) {
     if (terms) {
       if (u.environment.cube) {
         terms->environmentDiffuseOn = u.environment.diffuse != EnvironmentDiffuse::None;
-        terms->environmentDiffuse = unlitTerms.environmentDiffuse;
+        terms->environmentDiffuse = unlit.environmentDiffuse;
       }
-      terms->ambient = unlitTerms.ambient;
+      terms->ambient = unlit.ambient;
       terms->diffuseSum = lit.diffuseSum;
       terms->specularSum = lit.specularSum;
       terms->lightCount = u.lightCount;
     }
   }
-  colour = (environmentStepLanes<Features, L>)(f, u, frame, colour, terms);
-  colour = (shadowViewStepLanes<L>)(u.view, lit, colour);
-  if (isPhongTermView(u.view)) colour = (phongTermColourLanes<L>)(u.view, unlitTerms.ambient, lit);
+  colour = (environmentStep<Features, L>)(f, u, frame, colour, terms);
+  colour = (shadowViewStep<L>)(u.view, lit, colour);
+  if (isPhongTermView(u.view)) colour = (phongTermColour<L>)(u.view, unlit.ambient, lit);
   return colour;
 }
 
@@ -551,32 +551,32 @@ TWR_LANE_INLINE Vec4L<L> shadedColourLanes(const FragmentL<L>& f, const ShadeUni
 // tangent frame; no light gives (0, 0, 0), shown as grey 0.5. GLSL: phong.frag's
 // tangentDirectionColour.
 template <typename Features, typename L>
-TWR_LANE_INLINE Vec4L<L> tangentDirectionColourLanes(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u,
-                                                     const SurfaceFrameL<L>& s, bool toLight) {
+TWR_LANE_INLINE Vec4L<L> tangentDirectionColour(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u,
+                                                const SurfaceFrameL<L>& s, bool toLight) {
   using S = ScalarOf<L>;
   Vec3L<L> dirTangent(L(S(0)));
   if (!toLight || u.lightCount > 0) {
     if constexpr (Features::kSpace == LightingSpace::Tangent) {
-      dirTangent = safeNormalize3<L>(toLight ? f.lightDirTangent[0] : f.eyeDirTangent);
+      dirTangent = safeNormalize<L>(toLight ? f.lightDirTangent[0] : f.eyeDirTangent);
     } else {
-      const Vec3L<L> w = toLight ? toLightLanes<L>(u.lights[0], f.posWorld) : Vec3L<L>(u.eyePosWorld) - f.posWorld;
-      dirTangent = safeNormalize3<L>(Vec3L<L>(dot3<L>(s.t, w), dot3<L>(s.b, w), dot3<L>(s.n, w)));
+      const Vec3L<L> w = toLight ? toLightWorld<L>(u.lights[0], f.posWorld) : Vec3L<L>(u.eyePosWorld) - f.posWorld;
+      dirTangent = safeNormalize<L>(Vec3L<L>(dot3<L>(s.t, w), dot3<L>(s.b, w), dot3<L>(s.n, w)));
     }
   }
-  return vectorAsColourLanes<L>(dirTangent);
+  return vectorAsColour<L>(dirTangent);
 }
 
 // The first light's self-shadowing factor as grey (1 without self-shadowing or lights).
 // GLSL: phong.frag's selfShadowColour.
 template <typename Features, typename L, typename Maps>
-TWR_LANE_INLINE Vec4L<L> selfShadowColourLanes(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u,
-                                               const Maps& maps, const SurfaceFrameL<L>& s) {
+TWR_LANE_INLINE Vec4L<L> selfShadowColour(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u,
+                                          const Maps& maps, const SurfaceFrameL<L>& s) {
   using S = ScalarOf<L>;
   constexpr bool kTangentSpace = Features::kSpace == LightingSpace::Tangent;
   L shadow(S(1));
   if (Features::kHasHeightMap && u.selfShadow != SelfShadow::None && u.lightCount > 0) {
-    const Vec3L<L> lVec0 = kTangentSpace ? f.lightDirTangent[0] : toLightLanes<L>(u.lights[0], f.posWorld);
-    shadow = selfShadowLanes<L>(maps, u, f, s.detail, tangentFromLightingLanes<L>(lVec0, s.t, s.b, s.n, kTangentSpace));
+    const Vec3L<L> lVec0 = kTangentSpace ? f.lightDirTangent[0] : toLightWorld<L>(u.lights[0], f.posWorld);
+    shadow = selfShadow<L>(maps, u, f, s.detail, tangentFromLighting<L>(lVec0, s.t, s.b, s.n, kTangentSpace));
   }
   return Vec4L<L>(shadow, shadow, shadow, L(S(1)));
 }
@@ -584,28 +584,28 @@ TWR_LANE_INLINE Vec4L<L> selfShadowColourLanes(const FragmentL<L>& f, const Shad
 // The debug views, one value of the surface as a colour (docs/shading.md); a branch on
 // the view, the same for every lane. GLSL: phong.frag's debugViewColour, in the same order.
 template <typename Features, typename L, typename Maps>
-TWR_LANE_INLINE Vec4L<L> debugViewColourLanes(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u,
-                                              const Maps& maps, const SurfaceFrameL<L>& s,
-                                              const MaterialTexelsL<L>& m) {
+TWR_LANE_INLINE Vec4L<L> debugViewColour(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u,
+                                         const Maps& maps, const SurfaceFrameL<L>& s,
+                                         const MaterialTexelsL<L>& m) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), half(S(0.5));
   switch (u.view) {
     case View::Albedo: return Vec4L<L>(m.albedo * Vec3L<L>(u.kd), one);
-    case View::Normal: return vectorAsColourLanes<L>(s.n);
-    case View::Tangent: return vectorAsColourLanes<L>(s.t);
-    case View::Bitangent: return vectorAsColourLanes<L>(s.b);
-    case View::MappedNormal: return vectorAsColourLanes<L>(s.nl);
+    case View::Normal: return vectorAsColour<L>(s.n);
+    case View::Tangent: return vectorAsColour<L>(s.t);
+    case View::Bitangent: return vectorAsColour<L>(s.b);
+    case View::MappedNormal: return vectorAsColour<L>(s.nl);
     case View::Uv: return Vec4L<L>(f.uv.x - floorOf(f.uv.x), f.uv.y - floorOf(f.uv.y), zero, one);
     case View::Depth: return Vec4L<L>(f.depth, f.depth, f.depth, one);
-    case View::LightTangent: return (tangentDirectionColourLanes<Features, L>)(f, u, s, true);
-    case View::EyeTangent: return (tangentDirectionColourLanes<Features, L>)(f, u, s, false);
+    case View::LightTangent: return (tangentDirectionColour<Features, L>)(f, u, s, true);
+    case View::EyeTangent: return (tangentDirectionColour<Features, L>)(f, u, s, false);
     case View::Height: return Vec4L<L>(s.detail.height, s.detail.height, s.detail.height, one);
     case View::ParallaxOffset: {
       const L gain(static_cast<S>(kParallaxOffsetViewGain));
       return Vec4L<L>(half + (s.detail.uv.x - f.uv.x) * gain, half + (s.detail.uv.y - f.uv.y) * gain, half, one);
     }
-    case View::ParallaxSteps: return heatColourLanes<L>(s.detail.steps / L(static_cast<S>(u.layerCap + u.refinementSteps)));
-    case View::SelfShadow: return (selfShadowColourLanes<Features, L>)(f, u, maps, s);
+    case View::ParallaxSteps: return heatColour<L>(s.detail.steps / L(static_cast<S>(u.layerCap + u.refinementSteps)));
+    case View::SelfShadow: return (selfShadowColour<Features, L>)(f, u, maps, s);
     default: return Vec4L<L>(zero, zero, zero, one);  // fragmentViewOf leaves no other view here
   }
 }
@@ -616,15 +616,15 @@ TWR_LANE_INLINE Vec4L<L> debugViewColourLanes(const FragmentL<L>& f, const Shade
 // null, receives every intermediate value (the pixel trace; scalar lanes only, nullptr_t
 // otherwise). GLSL: phong.frag's main.
 template <typename Features, typename L, typename Maps, typename Terms>
-TWR_LANE_INLINE Vec4L<L> shadeFragmentLanes(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u, const Maps& maps,
-                                            Terms* terms) {
+TWR_LANE_INLINE Vec4L<L> shadeFragment(const FragmentL<L>& f, const ShadeUniformsT<ScalarOf<L>>& u, const Maps& maps,
+                                       Terms* terms) {
   constexpr bool kTrace = !std::is_same_v<Terms, std::nullptr_t>;
   const bool wantHeight = kTrace || u.view == View::Height || u.selfShadow == SelfShadow::HeightMarch;
-  const SurfaceFrameL<L> frame = (surfaceFrameLanes<Features, L>)(f, u, maps, wantHeight);
-  const MaterialTexelsL<L> texels = (materialTexelsLanes<Features, L>)(f, u, maps, frame.detail);
+  const SurfaceFrameL<L> frame = (surfaceFrame<Features, L>)(f, u, maps, wantHeight);
+  const MaterialTexelsL<L> texels = (materialTexels<Features, L>)(f, u, maps, frame.detail);
   traceSurfaceTerms<L>(terms, frame, texels);
-  Vec4L<L> colour = isShadedView(u.view) ? (shadedColourLanes<Features, L>)(f, u, maps, frame, texels, terms)
-                                         : (debugViewColourLanes<Features, L>)(f, u, maps, frame, texels);
+  Vec4L<L> colour = isShadedView(u.view) ? (shadedColour<Features, L>)(f, u, maps, frame, texels, terms)
+                                         : (debugViewColour<Features, L>)(f, u, maps, frame, texels);
   colour = clampUnit4<L>(colour);
   if constexpr (kTrace) {
     if (terms) terms->colour = colour;

@@ -29,7 +29,7 @@ namespace twr {
 template <typename T>
 struct LightUniformT {
   // lightVectorWorld: (position, 1) for a point light, (towards the light, 0) for a directional
-  // one; the vector to the light from P is xyz - w P (toLightLanes).
+  // one; the vector to the light from P is xyz - w P (toLightWorld).
   Vec4T<T> vectorWorld{T(0)};
   Vec3T<T> diffuse{T(0)};                         // Id
   Vec3T<T> specular{T(0)};                        // Is
@@ -213,19 +213,19 @@ namespace twr {
 // of the pipeline (float, or double for the reference).
 template <typename Features, typename T>
 Vec4T<T> shadeFragment(const FragmentT<T>& f, const ShadeUniformsT<T>& u, std::type_identity_t<ShadeTermsT<T>>* terms) {
-  return shadeFragmentLanes<Features, T>(f, u, TextureMaps{u.diffuseMap, u.normalMap, u.specularMap, u.heightMap, u.horizonMaps},
-                                         terms);
+  return lanes::shadeFragment<Features, T>(f, u, TextureMaps{u.diffuseMap, u.normalMap, u.specularMap, u.heightMap, u.horizonMaps},
+                                           terms);
 }
 
 // The environment's direction differences of the fragment at pixel (px, py) on the triangle
-// whose varyings `planes` holds (setEnvironmentDifferencesLanes, shade-inl.h): for a material
+// whose varyings `planes` holds (setEnvironmentDifferences, shade-inl.h): for a material
 // that reads the environment, in the shaded view; otherwise nothing to do.
 template <typename Features, typename T>
 void setEnvironmentDifferences(const VaryingPlanesT<T>& planes, int px, int py, const ShadeUniformsT<T>& u,
                                FragmentT<T>& f) {
   if (isShadedView(u.view)) {
     if (!u.environment.cube) return;
-    setEnvironmentDifferencesLanes<Features, T>(
+    lanes::setEnvironmentDifferences<Features, T>(
         planes, static_cast<T>(px), static_cast<T>(py), static_cast<T>(px & ~1), static_cast<T>(py & ~1), u,
         TextureMaps{u.diffuseMap, u.normalMap, u.specularMap, u.heightMap, u.horizonMaps}, f);
   }

@@ -53,7 +53,7 @@ struct ShadowMapPointL {
   MaskOf<L> inFront;
 };
 template <typename L>
-TWR_LANE_INLINE ShadowMapPointL<L> shadowMapPointLanes(const ShadowUniformT<ScalarOf<L>>& u, const Vec3L<L>& posWorld) {
+TWR_LANE_INLINE ShadowMapPointL<L> shadowMapPoint(const ShadowUniformT<ScalarOf<L>>& u, const Vec3L<L>& posWorld) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), half(S(0.5));
   ShadowMapPointL<L> p{zero, zero, zero, zero, zero, zero, one > zero};  // inFront: all true
@@ -82,7 +82,7 @@ TWR_LANE_INLINE ShadowMapPointL<L> shadowMapPointLanes(const ShadowUniformT<Scal
     return p;
   }
   const Vec3L<L> d = posWorld - Vec3L<L>(u.lightPosWorld);
-  const CubeCoordL<L> c = (cubeCoordLanes<L>)(d);
+  const CubeCoordL<L> c = (cubeCoord<L>)(d);
   const L ma = maxOf(absOf(d.z), maxOf(absOf(d.x), absOf(d.y)));
   p.s = c.s;
   p.t = c.t;
@@ -94,15 +94,15 @@ TWR_LANE_INLINE ShadowMapPointL<L> shadowMapPointLanes(const ShadowUniformT<Scal
 }
 
 template <typename L>
-TWR_LANE_INLINE ShadowTestL<L> shadowTestLanes(const ShadowUniformT<ScalarOf<L>>& u, const Vec3L<L>& posWorld,
-                                               const Vec3L<L>& n, const Vec3L<L>& l) {
+TWR_LANE_INLINE ShadowTestL<L> shadowTest(const ShadowUniformT<ScalarOf<L>>& u, const Vec3L<L>& posWorld,
+                                          const Vec3L<L>& n, const Vec3L<L>& l) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1));
   const L cosTheta = maxOf(dot3<L>(n, l), L(static_cast<S>(kMinShadowCosine)));
   const L sinTheta = sqrtOf(maxOf(one - cosTheta * cosTheta, zero));
   const L tanTheta = minOf(sinTheta / cosTheta, L(static_cast<S>(kMaxShadowSlopeTangent)));
 
-  const ShadowMapPointL<L> p = (shadowMapPointLanes<L>)(u, posWorld);
+  const ShadowMapPointL<L> p = (shadowMapPoint<L>)(u, posWorld);
   const L &s = p.s, &t = p.t, &z = p.z, &layer = p.layer, &texelWorld = p.texelWorld, &depthPerWorld = p.depthPerWorld;
   // bias = (constant + slope tan(theta) texel (1 + pcf / 2)) depth units per world unit
   const L reach(static_cast<S>(1 + u.pcf / 2));
@@ -143,7 +143,7 @@ TWR_LANE_INLINE ShadowTestL<L> shadowTestLanes(const ShadowUniformT<ScalarOf<L>>
 
 // The `shadow` view's colour of one test; nDotL is the geometric normal's cosine to the light.
 template <typename L>
-TWR_LANE_INLINE Vec4L<L> shadowViewColourLanes(const ShadowTestL<L>& test, const L& nDotL) {
+TWR_LANE_INLINE Vec4L<L> shadowViewColour(const ShadowTestL<L>& test, const L& nDotL) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1));
   const auto colour = [](const float (&c)[3]) { return Vec3L<L>(L(S(c[0])), L(S(c[1])), L(S(c[2]))); };
@@ -160,7 +160,7 @@ TWR_LANE_INLINE Vec4L<L> shadowViewColourLanes(const ShadowTestL<L>& test, const
 // The light_depth view: the map's depth at the fragment's texel as grey (what the light sees
 // there), dark red outside the map.
 template <typename L>
-TWR_LANE_INLINE Vec4L<L> lightDepthColourLanes(const ShadowTestL<L>& test) {
+TWR_LANE_INLINE Vec4L<L> lightDepthColour(const ShadowTestL<L>& test) {
   using S = ScalarOf<L>;
   const Vec3L<L> outside{L(S(kLightDepthOutside[0])), L(S(kLightDepthOutside[1])), L(S(kLightDepthOutside[2]))};
   return Vec4L<L>(select3<L>(test.inside > L(S(0)), Vec3L<L>(test.stored), outside), L(S(1)));

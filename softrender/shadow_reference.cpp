@@ -69,7 +69,7 @@ ShadowVisibility measureShadowVisibility(const Scene& scene, std::size_t lightIn
       if (!(glm::dot(n, l) > 0.0)) continue;  // turned away: unlit either way
       const double start = kShadowRayStart * (1.0 + glm::length(p));
       const double traced = bvh.occluded(p, l, start, distance, id) ? 0.0 : 1.0;
-      const double map = shadowTestLanes<double>(uniform, p, n, l).visibility;
+      const double map = lanes::shadowTest<double>(uniform, p, n, l).visibility;
       v.traced[i] = traced;
       v.map[i] = map;
       ++v.measured;

@@ -28,7 +28,7 @@ TWR_LANES_BEGIN
 
 // The view direction through pixel centre (px + 0.5, py + 0.5), world space, unnormalised.
 template <typename L>
-TWR_LANE_INLINE Vec3L<L> skyDirectionLanes(const SkyUniformsT<ScalarOf<L>>& sky, const L& px, const L& py) {
+TWR_LANE_INLINE Vec3L<L> skyDirection(const SkyUniformsT<ScalarOf<L>>& sky, const L& px, const L& py) {
   using S = ScalarOf<L>;
   const L half(S(0.5)), one(S(1));
   const L ndcX = (px + half) * L(sky.ndcPerPixel.x) - one;
@@ -45,40 +45,40 @@ struct SkyReadL {
   Vec3L<L> dir, dx, dy;
 };
 template <typename L>
-TWR_LANE_INLINE SkyReadL<L> skyReadLanes(const SkyUniformsT<ScalarOf<L>>& sky, const L& px, const L& py) {
+TWR_LANE_INLINE SkyReadL<L> skyRead(const SkyUniformsT<ScalarOf<L>>& sky, const L& px, const L& py) {
   using S = ScalarOf<L>;
   const L one(S(1)), two(S(2)), half(S(0.5));
   const L qx = floorOf(px * half) * two, qy = floorOf(py * half) * two;
   SkyReadL<L> read;
-  read.dir = (skyDirectionLanes<L>)(sky, px, py);
+  read.dir = (skyDirection<L>)(sky, px, py);
   if (sky.layers) {
     // A 2D map: its coordinate's differences at the quad's first pixel (layer_sample-inl.h).
-    (mapDifferencesLanes<L>)(sky.layers->kind, (skyDirectionLanes<L>)(sky, qx, qy),
-                             (skyDirectionLanes<L>)(sky, qx + one, qy), (skyDirectionLanes<L>)(sky, qx, qy + one),
-                             read.dx, read.dy);
+    (mapDifferences<L>)(sky.layers->kind, (skyDirection<L>)(sky, qx, qy),
+                        (skyDirection<L>)(sky, qx + one, qy), (skyDirection<L>)(sky, qx, qy + one),
+                        read.dx, read.dy);
     return read;
   }
-  read.dx = (skyDirectionLanes<L>)(sky, qx + one, py) - (skyDirectionLanes<L>)(sky, qx, py);
-  read.dy = (skyDirectionLanes<L>)(sky, px, qy + one) - (skyDirectionLanes<L>)(sky, px, qy);
+  read.dx = (skyDirection<L>)(sky, qx + one, py) - (skyDirection<L>)(sky, qx, py);
+  read.dy = (skyDirection<L>)(sky, px, qy + one) - (skyDirection<L>)(sky, px, qy);
   return read;
 }
 
 // The sky's colour there: the environment read with texture() (the LOD from the direction's
-// differences, cubeLodLanes) times the intensity, clamped to [0, 1]; in an environment view,
+// differences, cubeLod) times the intensity, clamped to [0, 1]; in an environment view,
 // the view's colour for the direction and that LOD.
 template <typename L>
-TWR_LANE_INLINE Vec3L<L> skyColourLanes(const SkyUniformsT<ScalarOf<L>>& sky, const L& px, const L& py) {
+TWR_LANE_INLINE Vec3L<L> skyColour(const SkyUniformsT<ScalarOf<L>>& sky, const L& px, const L& py) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1));
-  const SkyReadL<L> read = (skyReadLanes<L>)(sky, px, py);
-  const L lod = (environmentLodLanes<L>)(*sky.cube, sky.layers, read.dir, read.dx, read.dy);
+  const SkyReadL<L> read = (skyRead<L>)(sky, px, py);
+  const L lod = (environmentReadLod<L>)(*sky.cube, sky.layers, read.dir, read.dx, read.dy);
   if (sky.view != View::Shaded) {
     const EnvironmentParameterization kind = sky.layers ? sky.layers->kind : EnvironmentParameterization::Cube;
     const int levels = sky.layers ? sky.layers->levelCount() : sky.cube->levelCount();
-    const Vec4L<L> v = (environmentViewColourLanes<L>)(sky.view, kind, read.dir, (clampedLodLanes<L>)(lod, levels));
+    const Vec4L<L> v = (environmentViewColour<L>)(sky.view, kind, read.dir, (clampedLod<L>)(lod, levels));
     return Vec3L<L>(v.x, v.y, v.z);
   }
-  const Vec3L<L> c = (sampleEnvironmentAtLodLanes<L>)(*sky.cube, sky.layers, read.dir, lod) * L(sky.intensity);
+  const Vec3L<L> c = (sampleEnvironmentAtLod<L>)(*sky.cube, sky.layers, read.dir, lod) * L(sky.intensity);
   return Vec3L<L>(minOf(maxOf(c.x, zero), one), minOf(maxOf(c.y, zero), one), minOf(maxOf(c.z, zero), one));
 }
 

@@ -6,7 +6,7 @@
 namespace twr {
 
 vec3 skyColour(const SkyUniformsT<float>& sky, int px, int py) {
-  return skyColourLanes<float>(sky, static_cast<float>(px), static_cast<float>(py));
+  return lanes::skyColour<float>(sky, static_cast<float>(px), static_cast<float>(py));
 }
 
 void drawSkyRows(const SkyUniformsT<float>& sky, Framebuffer& fb, int rowBegin, int rowEnd) {

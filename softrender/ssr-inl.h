@@ -32,7 +32,7 @@ TWR_LANES_BEGIN
 // A world point's eye distance: the clip w of the camera's projection, the row the screen
 // mapping divides by (ssr.frag's distanceOfPoint).
 template <typename L>
-TWR_LANE_INLINE L ssrDistanceOfPointLanes(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& p) {
+TWR_LANE_INLINE L distanceOfPoint(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& p) {
   const auto& m = u.clipFromWorld;
   return ((L(m[0][3]) * p.x + L(m[1][3]) * p.y) + L(m[2][3]) * p.z) + L(m[3][3]);
 }
@@ -48,13 +48,13 @@ struct SsrScreenL {
   L index;
 };
 template <typename L>
-TWR_LANE_INLINE SsrScreenL<L> ssrScreenOfLanes(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& p) {
+TWR_LANE_INLINE SsrScreenL<L> screenOf(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& p) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), half(S(0.5));
   const Mat4T<S>& m = u.clipFromWorld;  // columns summed from the left
   const L x = ((L(m[0][0]) * p.x + L(m[1][0]) * p.y) + L(m[2][0]) * p.z) + L(m[3][0]);
   const L y = ((L(m[0][1]) * p.x + L(m[1][1]) * p.y) + L(m[2][1]) * p.z) + L(m[3][1]);
-  const L w = (ssrDistanceOfPointLanes<L>)(u, p);
+  const L w = (distanceOfPoint<L>)(u, p);
   const L width(u.viewportSize.x), height(u.viewportSize.y);
   const MaskOf<L> front = w > zero;
   const L safeW = select(front, w, one);
@@ -72,7 +72,7 @@ TWR_LANE_INLINE SsrScreenL<L> ssrScreenOfLanes(const SsrUniformsT<ScalarOf<L>>& 
 // A window depth's eye distance, 2 n f / ((f + n) - (2 d - 1) (f - n)), f at the clear depth
 // (ssr.frag's distanceOfDepth): what a frame without stored positions compares against.
 template <typename L>
-TWR_LANE_INLINE L ssrDistanceOfDepthLanes(const SsrUniformsT<ScalarOf<L>>& u, const L& d) {
+TWR_LANE_INLINE L distanceOfDepth(const SsrUniformsT<ScalarOf<L>>& u, const L& d) {
   using S = ScalarOf<L>;
   const L zNdc = L(S(2)) * d - L(S(1));
   return L(u.distanceNumerator) / (L(u.distanceSum) - zNdc * L(u.distanceDifference));
@@ -81,7 +81,7 @@ TWR_LANE_INLINE L ssrDistanceOfDepthLanes(const SsrUniformsT<ScalarOf<L>>& u, co
 // The eye distance of the surface the frame holds at an element (ssr.frag's bufferDistance),
 // from the pass's plane of them (ssrSurfaceDistances).
 template <typename L>
-TWR_LANE_INLINE L ssrBufferDistanceLanes(const SsrUniformsT<ScalarOf<L>>& u, const L& index) {
+TWR_LANE_INLINE L bufferDistance(const SsrUniformsT<ScalarOf<L>>& u, const L& index) {
   return lookupLanes(u.surfaceDistance, index);
 }
 
@@ -135,9 +135,9 @@ struct SsrMarchL {
 // `next` lies behind its; both under the thickness is a hit, placed s1 / (s1 + s2) of the way
 // from `cur` to `next`; otherwise the ray passed behind the surface (behind).
 template <typename L>
-TWR_LANE_INLINE SsrMarchL<L> ssrMarchLanes(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& origin,
-                                           const Vec3L<L>& dir, const MaskOf<L>& active,
-                                           std::vector<SsrMarchStep>* log = nullptr) {
+TWR_LANE_INLINE SsrMarchL<L> march(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& origin,
+                                   const Vec3L<L>& dir, const MaskOf<L>& active,
+                                   std::vector<SsrMarchStep>* log = nullptr) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), half(S(0.5));
   const L thickness(u.thickness), minStep(u.minStep);
@@ -152,21 +152,21 @@ TWR_LANE_INLINE SsrMarchL<L> ssrMarchLanes(const SsrUniformsT<ScalarOf<L>>& u, c
   L stepLength(u.step);
   for (int i = 0; i < u.maxSteps && anyOf(live); ++i) {
     const L tNext = tCur + stepLength;
-    const SsrScreenL<L> sn = (ssrScreenOfLanes<L>)(u, origin + dir * tNext);
+    const SsrScreenL<L> sn = (screenOf<L>)(u, origin + dir * tNext);
     m.steps = select(live, m.steps + one, m.steps);
     m.result = select(live & !sn.onScreen, (ssrResultLane<L>)(SsrResult::OffScreen), m.result);
     live = live & sn.onScreen;
-    const L surfaceNext = (ssrBufferDistanceLanes<L>)(u, sn.index);
+    const L surfaceNext = (bufferDistance<L>)(u, sn.index);
     const MaskOf<L> inFront = live & (sn.w < surfaceNext);
     const MaskOf<L> crossed = live & !(sn.w < surfaceNext);
     const MaskOf<L> decide = adaptive ? crossed & !(stepLength > minStep) : crossed;
     if (anyOf(decide)) {
-      const SsrScreenL<L> sc = (ssrScreenOfLanes<L>)(u, origin + dir * tCur);
-      const L s1 = (ssrBufferDistanceLanes<L>)(u, sc.index) - sc.w;
+      const SsrScreenL<L> sc = (screenOf<L>)(u, origin + dir * tCur);
+      const L s1 = (bufferDistance<L>)(u, sc.index) - sc.w;
       const L s2 = sn.w - surfaceNext;
       const L sum = s1 + s2;
       const L t = select(sum > zero, s1 / select(sum > zero, sum, one), zero);
-      const SsrScreenL<L> sh = (ssrScreenOfLanes<L>)(u, origin + dir * (tCur + stepLength * t));
+      const SsrScreenL<L> sh = (screenOf<L>)(u, origin + dir * (tCur + stepLength * t));
       const MaskOf<L> hit = decide & (s1 < thickness) & (s2 < thickness) & sh.onScreen;
       m.hitIndex = select(hit, sh.index, m.hitIndex);
       m.hitX = select(hit, floorOf(select(sh.onScreen, sh.windowX, zero)), m.hitX);
@@ -202,12 +202,12 @@ struct SsrScreenRayL {
   L lastSample;    // the samples run 1 .. lastSample (0: the line is under a pixel long)
 };
 template <typename L>
-TWR_LANE_INLINE SsrScreenRayL<L> ssrScreenRayLanes(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& origin,
-                                                   const Vec3L<L>& dir) {
+TWR_LANE_INLINE SsrScreenRayL<L> screenRay(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& origin,
+                                           const Vec3L<L>& dir) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1));
   const auto& m = u.clipFromWorld;
-  const SsrScreenL<L> s0 = (ssrScreenOfLanes<L>)(u, origin);
+  const SsrScreenL<L> s0 = (screenOf<L>)(u, origin);
   // The eye distance's change per world unit along the ray (the clip w row, without its offset).
   const L wPerT = (L(m[0][3]) * dir.x + L(m[1][3]) * dir.y) + L(m[2][3]) * dir.z;
   const L nearW(u.nearDistance), farW(u.farDistance);
@@ -215,7 +215,7 @@ TWR_LANE_INLINE SsrScreenRayL<L> ssrScreenRayLanes(const SsrUniformsT<ScalarOf<L
   const L tAway = (farW - s0.w) / select(away, wPerT, one);
   const L tToward = (nearW - s0.w) / select(toward, wPerT, L(S(-1)));
   const L tEnd = minOf(maxOf(select(away, tAway, select(toward, tToward, farW)), zero), farW);
-  const SsrScreenL<L> s1 = (ssrScreenOfLanes<L>)(u, origin + dir * tEnd);
+  const SsrScreenL<L> s1 = (screenOf<L>)(u, origin + dir * tEnd);
   const L dx = s1.windowX - s0.windowX, dy = s1.windowY - s0.windowY;
   const L length = maxOf(absOf(dx), absOf(dy));  // pixels along the major axis
   const MaskOf<L> long1 = length >= one;
@@ -242,8 +242,8 @@ struct SsrSampleL {
   L index;
 };
 template <typename L>
-TWR_LANE_INLINE SsrSampleL<L> ssrSampleLanes(const SsrUniformsT<ScalarOf<L>>& u, const SsrScreenRayL<L>& r,
-                                             const L& j) {
+TWR_LANE_INLINE SsrSampleL<L> sampleAt(const SsrUniformsT<ScalarOf<L>>& u, const SsrScreenRayL<L>& r,
+                                       const L& j) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1));
   const L x = r.x0 + r.stepX * j;
@@ -267,8 +267,8 @@ struct SsrCellL {
   L x, y, left, bottom, right, top, last, levelWidth;
 };
 template <typename L>
-TWR_LANE_INLINE SsrCellL<L> ssrCellOfLanes(const SsrUniformsT<ScalarOf<L>>& u, const SsrScreenRayL<L>& ray, L px, L py,
-                                           L cellSize) {
+TWR_LANE_INLINE SsrCellL<L> cellOf(const SsrUniformsT<ScalarOf<L>>& u, const SsrScreenRayL<L>& ray, L px, L py,
+                                   L cellSize) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1));
   const L width(u.viewportSize.x), height(u.viewportSize.y);
@@ -307,13 +307,13 @@ TWR_LANE_INLINE SsrCellL<L> ssrCellOfLanes(const SsrUniformsT<ScalarOf<L>>& u, c
 // climbs a level; otherwise it descends one and tries again, down to single pixels (and a
 // level-1 cell that could not be skipped is not tried again while the march is inside it).
 template <typename L>
-TWR_LANE_INLINE SsrMarchL<L> ssrScreenMarchLanes(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& origin,
-                                                 const Vec3L<L>& dir, const MaskOf<L>& active,
-                                                 std::vector<SsrMarchStep>* log = nullptr) {
+TWR_LANE_INLINE SsrMarchL<L> screenMarch(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& origin,
+                                         const Vec3L<L>& dir, const MaskOf<L>& active,
+                                         std::vector<SsrMarchStep>* log = nullptr) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), two(S(2)), half(S(0.5));
   const L thickness(u.thickness), topLevel(static_cast<S>(u.hizLevels));
-  const SsrScreenRayL<L> ray = (ssrScreenRayLanes<L>)(u, origin, dir);
+  const SsrScreenRayL<L> ray = (screenRay<L>)(u, origin, dir);
   SsrMarchL<L> m{select(active, (ssrResultLane<L>)(SsrResult::Miss), (ssrResultLane<L>)(SsrResult::NotMarched)),
                  zero, zero, zero, zero, zero};
   MaskOf<L> live = active;
@@ -330,21 +330,21 @@ TWR_LANE_INLINE SsrMarchL<L> ssrScreenMarchLanes(const SsrUniformsT<ScalarOf<L>>
     m.result = select(ended, (ssrResultLane<L>)(SsrResult::Miss), m.result);
     live = live & !ended;
     (ssrRecordWhere<L>)(log, ended, SsrStepKind::Ended, zero, zero, zero, zero, zero, n);
-    const SsrSampleL<L> sn = (ssrSampleLanes<L>)(u, ray, n);
+    const SsrSampleL<L> sn = (sampleAt<L>)(u, ray, n);
     (ssrRecordWhere<L>)(log, live & !sn.onScreen, SsrStepKind::OffScreen, zero, zero, sn.w, zero, zero, n);
     m.result = select(live & !sn.onScreen, (ssrResultLane<L>)(SsrResult::OffScreen), m.result);
     live = live & sn.onScreen;
     const MaskOf<L> atPixel = live & (level == zero);
     const MaskOf<L> atCell = live & (level > zero);
     if (anyOf(atPixel)) {
-      const L surfaceN = (ssrBufferDistanceLanes<L>)(u, sn.index);
+      const L surfaceN = (bufferDistance<L>)(u, sn.index);
       const MaskOf<L> passes = (sn.w < surfaceN) | !(surfaceN < L(u.skyDistance));  // in front, or nothing there
       const MaskOf<L> inFront = atPixel & passes;
       const MaskOf<L> crossed = atPixel & !passes;
       if (anyOf(crossed)) {
         // The ray's nearest point between the last sample and this one, against this pixel's
         // surface: within the thickness behind it, the ray met the surface.
-        const L behindBy = minOf((ssrSampleLanes<L>)(u, ray, j).w, sn.w) - surfaceN;
+        const L behindBy = minOf((sampleAt<L>)(u, ray, j).w, sn.w) - surfaceN;
         const MaskOf<L> hit = crossed & (behindBy < thickness);
         m.hitIndex = select(hit, sn.index, m.hitIndex);
         m.hitX = select(hit, sn.pixelX, m.hitX);
@@ -362,10 +362,10 @@ TWR_LANE_INLINE SsrMarchL<L> ssrScreenMarchLanes(const SsrUniformsT<ScalarOf<L>>
     }
     if (anyOf(atCell)) {
       // The cell holding sample n, its pixel bounds and the ray's last sample inside it.
-      const SsrCellL<L> c = (ssrCellOfLanes<L>)(u, ray, sn.pixelX, sn.pixelY, cellSize);
+      const SsrCellL<L> c = (cellOf<L>)(u, ray, sn.pixelX, sn.pixelY, cellSize);
       const L& last = c.last;
       // Rounding may put the computed last sample a pixel out: then the cell is not used.
-      const SsrSampleL<L> sl = (ssrSampleLanes<L>)(u, ray, last);
+      const SsrSampleL<L> sl = (sampleAt<L>)(u, ray, last);
       const MaskOf<L> fits = atCell & (last >= n) & sl.onScreen & (sl.pixelX >= c.left) & (sl.pixelX < c.right) &
                              (sl.pixelY >= c.bottom) & (sl.pixelY < c.top);
       const L cellIndex = lookupLanes(u.hizOffset.data(), select(atCell, level, zero)) + c.y * c.levelWidth + c.x;
@@ -391,7 +391,7 @@ TWR_LANE_INLINE SsrMarchL<L> ssrScreenMarchLanes(const SsrUniformsT<ScalarOf<L>>
 // (exact: 4 turn and its fraction are exact in a float), then Taylor series of the angle in
 // [0, pi/2) to the 11th and 12th powers, in Horner form (error below 1e-7).
 template <typename L>
-TWR_LANE_INLINE Vec2L<L> ssrCircleLanes(const L& turn) {
+TWR_LANE_INLINE Vec2L<L> circle(const L& turn) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1));
   const L q4 = turn * L(S(4));
@@ -421,8 +421,8 @@ TWR_LANE_INLINE Vec2L<L> ssrCircleLanes(const L& turn) {
 // `weight` is the sample's share of the diffuse light, f cos / pdf with f = albedo / pi taken
 // out as the albedo: uniform (pdf 1 / 2pi) 2 z, cosine (pdf z / pi) 1.
 template <typename L>
-TWR_LANE_INLINE Vec3L<L> ssrHemisphereLanes(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& n,
-                                            const Vec2L<L>& xi, L& weight) {
+TWR_LANE_INLINE Vec3L<L> hemisphere(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& n,
+                                    const Vec2L<L>& xi, L& weight) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), two(S(2));
   const L sign = select(n.z >= zero, one, L(S(-1)));
@@ -430,7 +430,7 @@ TWR_LANE_INLINE Vec3L<L> ssrHemisphereLanes(const SsrUniformsT<ScalarOf<L>>& u, 
   const L b = n.x * n.y * a;
   const Vec3L<L> b1(one + sign * n.x * n.x * a, sign * b, zero - sign * n.x);
   const Vec3L<L> b2(b, sign + n.y * n.y * a, zero - n.y);
-  const Vec2L<L> turn = (ssrCircleLanes<L>)(xi.y);
+  const Vec2L<L> turn = (circle<L>)(xi.y);
   L z, r;
   if (u.distribution == SampleDistribution::Cosine) {
     r = sqrtOf(xi.x);
@@ -441,23 +441,23 @@ TWR_LANE_INLINE Vec3L<L> ssrHemisphereLanes(const SsrUniformsT<ScalarOf<L>>& u, 
     r = sqrtOf(maxOf(zero, one - z * z));
     weight = two * z;
   }
-  return safeNormalize3<L>(b1 * (r * turn.x) + b2 * (r * turn.y) + n * z);
+  return safeNormalize<L>(b1 * (r * turn.x) + b2 * (r * turn.y) + n * z);
 }
 
 // The lit frame's colour at an element.
 template <typename L>
-TWR_LANE_INLINE Vec3L<L> ssrLitAtLanes(const SsrUniformsT<ScalarOf<L>>& u, const L& index) {
+TWR_LANE_INLINE Vec3L<L> ssrLitAt(const SsrUniformsT<ScalarOf<L>>& u, const L& index) {
   return Vec3L<L>(lookupLanes(u.colour[0], index), lookupLanes(u.colour[1], index), lookupLanes(u.colour[2], index));
 }
 
 // The march the settings name.
 template <typename L>
-TWR_LANE_INLINE SsrMarchL<L> ssrMarchOfLanes(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& origin,
-                                             const Vec3L<L>& dir, const MaskOf<L>& active,
-                                             std::vector<SsrMarchStep>* log = nullptr) {
+TWR_LANE_INLINE SsrMarchL<L> marchOf(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& origin,
+                                     const Vec3L<L>& dir, const MaskOf<L>& active,
+                                     std::vector<SsrMarchStep>* log = nullptr) {
   const bool screen = u.march == SsrMarch::DdaScreen || u.march == SsrMarch::Hiz;
-  return screen ? (ssrScreenMarchLanes<L>)(u, origin, dir, active, log)
-                : (ssrMarchLanes<L>)(u, origin, dir, active, log);
+  return screen ? (screenMarch<L>)(u, origin, dir, active, log)
+                : (march<L>)(u, origin, dir, active, log);
 }
 
 // Indirect diffuse light (ssr.frag's indirect; the write-up's EvalIndirectionLight): for each
@@ -470,20 +470,20 @@ struct SsrIndirectL {
   L hits;
 };
 template <typename L>
-TWR_LANE_INLINE SsrIndirectL<L> ssrIndirectLanes(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& nl,
-                                                 const Vec3L<L>& posWorld, const Vec2L<L>* samples,
-                                                 const MaskOf<L>& active) {
+TWR_LANE_INLINE SsrIndirectL<L> indirect(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& nl,
+                                         const Vec3L<L>& posWorld, const Vec2L<L>* samples,
+                                         const MaskOf<L>& active) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1));
   Vec3L<L> sum(zero);
   L hits = zero;
   for (int k = 0; k < u.indirectSamples; ++k) {
     L weight = zero;
-    const Vec3L<L> dir = (ssrHemisphereLanes<L>)(u, nl, samples[k], weight);
-    const SsrMarchL<L> m = (ssrMarchOfLanes<L>)(u, posWorld, dir, active);
+    const Vec3L<L> dir = (hemisphere<L>)(u, nl, samples[k], weight);
+    const SsrMarchL<L> m = (marchOf<L>)(u, posWorld, dir, active);
     const MaskOf<L> hit = m.result == (ssrResultLane<L>)(SsrResult::Hit);
     if (!anyOf(hit)) continue;
-    const Vec3L<L> lit = (ssrLitAtLanes<L>)(u, select(hit, m.hitIndex, zero));
+    const Vec3L<L> lit = (ssrLitAt<L>)(u, select(hit, m.hitIndex, zero));
     sum = select3<L>(hit, sum + lit * weight, sum);
     hits = select(hit, hits + one, hits);
   }
@@ -492,7 +492,7 @@ TWR_LANE_INLINE SsrIndirectL<L> ssrIndirectLanes(const SsrUniformsT<ScalarOf<L>>
 
 // A debug view's colour for a march (ssr.frag's viewColour; isSsrView says what each shows).
 template <typename L>
-TWR_LANE_INLINE Vec3L<L> ssrViewColourLanes(const SsrUniformsT<ScalarOf<L>>& u, const SsrMarchL<L>& m) {
+TWR_LANE_INLINE Vec3L<L> viewColour(const SsrUniformsT<ScalarOf<L>>& u, const SsrMarchL<L>& m) {
   using S = ScalarOf<L>;
   const L zero(S(0)), half(S(0.5));
   const MaskOf<L> hit = m.result == (ssrResultLane<L>)(SsrResult::Hit);
@@ -509,7 +509,7 @@ TWR_LANE_INLINE Vec3L<L> ssrViewColourLanes(const SsrUniformsT<ScalarOf<L>>& u, 
                                               select3<L>(behind, Vec3L<L>(L(S(0.9f)), L(S(0.15f)), L(S(0.15f))), black))));
     }
     case View::SsrSteps: {
-      const Vec4L<L> heat = (heatColourLanes<L>)(m.steps / L(static_cast<S>(u.maxSteps)));
+      const Vec4L<L> heat = (heatColour<L>)(m.steps / L(static_cast<S>(u.maxSteps)));
       return Vec3L<L>(heat.x, heat.y, heat.z);
     }
     case View::SsrUv: {
@@ -518,7 +518,7 @@ TWR_LANE_INLINE Vec3L<L> ssrViewColourLanes(const SsrUniformsT<ScalarOf<L>>& u, 
     }
     default: {  // hiz_level
       if (u.hizLevels == 0) return Vec3L<L>(zero);
-      const Vec4L<L> heat = (heatColourLanes<L>)(m.level / L(static_cast<S>(u.hizLevels)));
+      const Vec4L<L> heat = (heatColour<L>)(m.level / L(static_cast<S>(u.hizLevels)));
       return Vec3L<L>(heat.x, heat.y, heat.z);
     }
   }
@@ -538,39 +538,39 @@ struct SsrPixelL {
   MaskOf<L> changed;
 };
 template <typename L>
-TWR_LANE_INLINE SsrPixelL<L> ssrPixelLanes(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& nl,
-                                           const Vec3L<L>& posWorld, const L& ssrReflect, const Vec3L<L>& albedo,
-                                           const Vec2L<L>* samples, const MaskOf<L>& drawn, Vec3L<L>& colour) {
+TWR_LANE_INLINE SsrPixelL<L> ssrPixel(const SsrUniformsT<ScalarOf<L>>& u, const Vec3L<L>& nl,
+                                      const Vec3L<L>& posWorld, const L& ssrReflect, const Vec3L<L>& albedo,
+                                      const Vec2L<L>* samples, const MaskOf<L>& drawn, Vec3L<L>& colour) {
   using S = ScalarOf<L>;
   const L zero(S(0)), two(S(2));
-  const Vec3L<L> wo = safeNormalize3<L>(Vec3L<L>(u.eyePosWorld) - posWorld);
-  const Vec3L<L> r = safeNormalize3<L>((two * dot3<L>(nl, wo)) * nl - wo);
+  const Vec3L<L> wo = safeNormalize<L>(Vec3L<L>(u.eyePosWorld) - posWorld);
+  const Vec3L<L> r = safeNormalize<L>((two * dot3<L>(nl, wo)) * nl - wo);
   const MaskOf<L> reflects = drawn & (ssrReflect > zero);
   const MaskOf<L> none = zero > zero;
   SsrPixelL<L> p{{(ssrResultLane<L>)(SsrResult::NotMarched), zero, zero, zero, zero, zero}, zero, none};
   if (isSsrView(u.view)) {
     // A debug view: every drawn pixel's mirror ray, its march's value in place of the colour.
-    p.mirror = (ssrMarchOfLanes<L>)(u, posWorld, r, drawn);
+    p.mirror = (marchOf<L>)(u, posWorld, r, drawn);
     p.changed = drawn;
-    colour = select3<L>(drawn, (ssrViewColourLanes<L>)(u, p.mirror), colour);
+    colour = select3<L>(drawn, (viewColour<L>)(u, p.mirror), colour);
     return p;
   }
   Vec3L<L> total = colour;
   if (anyOf(reflects)) {
-    p.mirror = (ssrMarchOfLanes<L>)(u, posWorld, r, reflects);
+    p.mirror = (marchOf<L>)(u, posWorld, r, reflects);
     const MaskOf<L> hit = p.mirror.result == (ssrResultLane<L>)(SsrResult::Hit);
     if (anyOf(hit)) {
-      const Vec3L<L> reflected = (ssrLitAtLanes<L>)(u, select(hit, p.mirror.hitIndex, zero));
+      const Vec3L<L> reflected = (ssrLitAt<L>)(u, select(hit, p.mirror.hitIndex, zero));
       const L k = L(u.reflectStrength) * ssrReflect;
       total = select3<L>(hit, total + reflected * k, total);
       p.changed = hit;
     }
   }
   if (u.indirectSamples > 0 && anyOf(drawn)) {
-    const SsrIndirectL<L> indirect = (ssrIndirectLanes<L>)(u, nl, posWorld, samples, drawn);
-    total = total + albedo * indirect.light;
-    p.indirectHits = indirect.hits;
-    p.changed = p.changed | (indirect.hits > zero);
+    const SsrIndirectL<L> indirectLight = (indirect<L>)(u, nl, posWorld, samples, drawn);
+    total = total + albedo * indirectLight.light;
+    p.indirectHits = indirectLight.hits;
+    p.changed = p.changed | (indirectLight.hits > zero);
   }
   if (anyOf(p.changed)) {
     const Vec4L<L> lit = clampUnit4<L>(Vec4L<L>(total, L(S(1))));

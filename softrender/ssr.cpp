@@ -26,7 +26,7 @@ SsrUniforms makeSsrUniforms(const Scene& scene, const RenderSettings& settings, 
   u.distanceDifference = static_cast<float>(f - n);
   u.nearDistance = static_cast<float>(n);
   u.farDistance = static_cast<float>(f);
-  u.skyDistance = ssrDistanceOfDepthLanes<float>(u, kClearDepth);
+  u.skyDistance = lanes::distanceOfDepth<float>(u, kClearDepth);
   u.eyePosWorld = scene.camera.position;
   const SsrSettings& s = settings.ssr;
   u.march = s.march;
@@ -43,15 +43,15 @@ SsrUniforms makeSsrUniforms(const Scene& scene, const RenderSettings& settings, 
   return u;
 }
 
-std::uint32_t pcgHashOf(std::uint32_t v) {
+std::uint32_t pcgHash(std::uint32_t v) {
   const std::uint32_t state = v * 747796405u + 2891336453u;
   const std::uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
   return (word >> 22u) ^ word;
 }
 
 vec2 ssrRandomPairOf(std::uint32_t x, std::uint32_t y, std::uint32_t k) {
-  const std::uint32_t seed = pcgHashOf(x ^ pcgHashOf(y ^ pcgHashOf(k)));
-  const std::uint32_t second = pcgHashOf(seed);
+  const std::uint32_t seed = pcgHash(x ^ pcgHash(y ^ pcgHash(k)));
+  const std::uint32_t second = pcgHash(seed);
   constexpr float kUnit = 1.0f / 16777216.0f;  // 2^-24: 24 bits, exact in a float
   return vec2(static_cast<float>(seed >> 8u) * kUnit, static_cast<float>(second >> 8u) * kUnit);
 }
@@ -120,8 +120,8 @@ void ssrDistancesOf(const std::vector<float>& depth, int width, int height, cons
   for (std::size_t i = 0; i < pixels; ++i) {
     const bool drawn = depth[i] < kClearDepth;
     planes.surfaceDistance[i] = !drawn         ? far
-                                : positionStored ? ssrDistanceOfPointLanes<float>(u, vec3(g.position[i]))
-                                                 : ssrDistanceOfDepthLanes<float>(u, depth[i]);
+                                : positionStored ? lanes::distanceOfPoint<float>(u, vec3(g.position[i]))
+                                                 : lanes::distanceOfDepth<float>(u, depth[i]);
   }
   planes.hizLevels = 0;
   if (u.march == SsrMarch::Hiz) hizChainOf(planes.surfaceDistance, width, height, planes);
@@ -152,24 +152,24 @@ SsrMarchTrace traceSsrMarch(const Scene& scene, const RenderSettings& settings, 
   const float depth = frame.depth[i];
   trace.marched = depth < kClearDepth;
   if (!trace.marched) return trace;
-  // As reflectTeaching and ssrPixelLanes: the ray's origin and direction (the mirror's, or the
+  // As reflectTeaching and ssrPixel: the ray's origin and direction (the mirror's, or the
   // sample's over the hemisphere from the pixel's random pair).
   const int yGl = height - 1 - yTop;
   const vec3 posWorld = positionStored
                             ? vec3(g.position[i])
-                            : worldFromWindowLanes<float>(worldFromClipOf(u.clipFromWorld), u.viewportSize,
-                                                          static_cast<float>(x), static_cast<float>(yGl), depth);
+                            : lanes::worldFromWindow<float>(worldFromClipOf(u.clipFromWorld), u.viewportSize,
+                                                            static_cast<float>(x), static_cast<float>(yGl), depth);
   const vec3 nl(g.normal[i]);
-  const vec3 wo = safeNormalize3<float>(u.eyePosWorld - posWorld);
-  vec3 r = safeNormalize3<float>((2.0f * dot3<float>(nl, wo)) * nl - wo);
+  const vec3 wo = lanes::safeNormalize<float>(u.eyePosWorld - posWorld);
+  vec3 r = lanes::safeNormalize<float>((2.0f * lanes::dot3<float>(nl, wo)) * nl - wo);
   if (ray != kSsrMirrorRay) {
     const vec2 xi = ssrRandomPairOf(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(yGl),
                                     static_cast<std::uint32_t>(ray));
-    r = ssrHemisphereLanes<float>(u, nl, xi, trace.weight);
+    r = lanes::hemisphere<float>(u, nl, xi, trace.weight);
   }
   trace.origin = posWorld;
   trace.direction = r;
-  ssrMarchOfLanes<float>(u, posWorld, r, true, &trace.steps);
+  lanes::marchOf<float>(u, posWorld, r, true, &trace.steps);
   return trace;
 }
 
@@ -189,17 +189,17 @@ void reflectTeaching(const GBuffer& g, SsrUniforms u, const Mat4T<float>& worldF
             const bool drawn = depth < kClearDepth;
             if (!drawn || !(g.specular[i].w > 0.0f || u.indirectSamples > 0 || isSsrView(u.view))) continue;
             const vec3 posWorld = positionStored ? vec3(g.position[i])
-                                                 : worldFromWindowLanes<float>(worldFromClip, u.viewportSize,
-                                                                               static_cast<float>(px),
-                                                                               static_cast<float>(py), depth);
+                                                 : lanes::worldFromWindow<float>(worldFromClip, u.viewportSize,
+                                                                                 static_cast<float>(px),
+                                                                                 static_cast<float>(py), depth);
             std::array<vec2, kMaxSsrIndirectSamples> samples;
             for (int k = 0; k < u.indirectSamples; ++k) {
               samples[static_cast<std::size_t>(k)] =
                   ssrRandomPairOf(static_cast<std::uint32_t>(px), static_cast<std::uint32_t>(py), static_cast<std::uint32_t>(k));
             }
             vec3 colour(planes.rgb[0][i], planes.rgb[1][i], planes.rgb[2][i]);
-            const SsrPixelL<float> p = ssrPixelLanes<float>(u, vec3(g.normal[i]), posWorld, g.specular[i].w,
-                                                            vec3(g.albedo[i]), samples.data(), drawn, colour);
+            const lanes::SsrPixelL<float> p = lanes::ssrPixel<float>(u, vec3(g.normal[i]), posWorld, g.specular[i].w,
+                                                                     vec3(g.albedo[i]), samples.data(), drawn, colour);
             if (p.changed) writeFragment(fb, px, py, vec4(colour, 1.0f), depth, fb.triangleId[i]);
           }
         }

@@ -62,7 +62,7 @@ struct SsrUniformsT {
   const float* hizCells = nullptr;
   std::array<float, kMaxHizLevels + 1> hizOffset{};  // elements, exact in a float
   // Indirect diffuse light: rays per pixel (0: none) over the hemisphere of the lighting
-  // normal, uniform or cosine-weighted (ssrIndirectLanes).
+  // normal, uniform or cosine-weighted (indirect).
   int indirectSamples = 0;
   SampleDistribution distribution = SampleDistribution::Uniform;
   S indirectScale = S(1);  // 1 / indirectSamples, rounded once (GL gets the same float)
@@ -76,7 +76,7 @@ using SsrUniforms = SsrUniformsT<float>;
 // bottom) as two numbers in [0, 1) with 24 random bits each, the top bits of PCG hashes of the
 // three integers (Jarzynski and Olano, "Hash Functions for GPU Rendering", 2020). The same
 // integer arithmetic as ssr.frag's randomPair, so both renderers send the same rays.
-std::uint32_t pcgHashOf(std::uint32_t v);
+std::uint32_t pcgHash(std::uint32_t v);
 vec2 ssrRandomPairOf(std::uint32_t x, std::uint32_t y, std::uint32_t k);
 
 // The frame's uniforms (the buffers are set by the pass).
@@ -84,8 +84,8 @@ SsrUniforms makeSsrUniforms(const Scene& scene, const RenderSettings& settings, 
 
 // What the march reads of the lit frame: its colour as three float planes (byte / 255), and
 // each element's surface distance. With the G-buffer's position, the distance is the
-// position's own (ssrDistanceOfPointLanes): the same floats on every renderer, so a ray meets
-// a surface at the same step everywhere. Without, the depth's (ssrDistanceOfDepthLanes), which
+// position's own (distanceOfPoint): the same floats on every renderer, so a ray meets
+// a surface at the same step everywhere. Without, the depth's (distanceOfDepth), which
 // rounds as each renderer converts its depth. The clear depth gives the far plane.
 // With the hiz march, the min-distance chain over the surface distances too (hizChainOf).
 struct SsrPlanes {
@@ -121,7 +121,7 @@ void useSsrPlanes(const SsrPlanes& planes, SsrUniforms& u);
 void hizChainOf(const std::vector<float>& surfaceDistance, int width, int height, SsrPlanes& planes);
 
 // The pass on the teaching path, scalar float, over `threads` bands of rows: each drawn pixel
-// of fb with ssr_reflect > 0 is marched and, on a hit, gets ssrPixelLanes's colour.
+// of fb with ssr_reflect > 0 is marched and, on a hit, gets ssrPixel's colour.
 // `positionStored`: the ray starts at the G-buffer's position, else at the one rebuilt from depth
 // with worldFromClip.
 void reflectTeaching(const GBuffer& g, SsrUniforms u, const Mat4T<float>& worldFromClip, bool positionStored,

@@ -5,7 +5,7 @@
 // each one. Shared source, included plainly and per Highway target (softrender/lanes.h).
 //
 // The marching functions are TWR_LANE_OUTLINE: one out-of-line copy per target rather than one
-// inside every kernel (a march inlined into each permutation multiplied fast_kernels.cpp's
+// inside every kernel (a march inlined into each permutation multiplied fast_kernels-inl.h's
 // compile time; the loops, not the call, dominate their cost).
 //
 // Conventions (docs/parallax.md): a height h in [0, 1] is the map's red channel, 1 = top. The
@@ -45,19 +45,19 @@ TWR_LANES_BEGIN
 // A map read at `uv` with explicit uv differences (GLSL's textureGrad): the LOD of the
 // differences when the filter uses mipmaps, or the elliptical filter with anisotropy.
 template <typename L, typename View, typename Texel = Vec4L<L>>
-TWR_LANE_INLINE Texel sampleGradLanes(const View& map, const ShadeUniformsT<ScalarOf<L>>& u, const Vec2L<L>& uv,
-                                      const Vec2L<L>& dx, const Vec2L<L>& dy) {
+TWR_LANE_INLINE Texel sampleGrad(const View& map, const ShadeUniformsT<ScalarOf<L>>& u, const Vec2L<L>& uv,
+                                 const Vec2L<L>& dx, const Vec2L<L>& dy) {
   using S = ScalarOf<L>;
   if (u.anisotropic) {
-    const Vec4L<L> filtered = sampleTextureAnisotropicLanes<L>(map, uv, u.filter, dx, dy);
+    const Vec4L<L> filtered = sampleTextureAnisotropic<L>(map, uv, u.filter, dx, dy);
     if constexpr (std::is_same_v<Texel, L>) {
       return filtered.x;
     } else {
       return filtered;
     }
   }
-  const L lod = usesMipmaps(u.filter) ? quadLodLanes<L>(dx, dy, texLevelWidth(map, 0), texLevelHeight(map, 0)) : L(S(0));
-  return sampleTextureLanes<L, View, Texel>(map, uv, u.filter, lod);
+  const L lod = usesMipmaps(u.filter) ? quadLod<L>(dx, dy, texLevelWidth(map, 0), texLevelHeight(map, 0)) : L(S(0));
+  return sampleTexture<L, View, Texel>(map, uv, u.filter, lod);
 }
 
 // Every height read of one fragment uses the fragment's uv differences, so all share one LOD
@@ -68,14 +68,14 @@ struct HeightReadsL {
   MipLevelsL<L> mips;
 };
 template <typename L, typename View>
-TWR_LANE_INLINE HeightReadsL<L> heightReadsLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
-                                                 const FragmentL<L>& f) {
+TWR_LANE_INLINE HeightReadsL<L> heightReads(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
+                                            const FragmentL<L>& f) {
   using S = ScalarOf<L>;
   const bool mipmapped = usesMipmaps(u.filter) && !u.anisotropic;
-  const L lod = mipmapped ? quadLodLanes<L>(f.uvDxFine, f.uvDyFine, texLevelWidth(heightMap, 0),
-                                            texLevelHeight(heightMap, 0))
+  const L lod = mipmapped ? quadLod<L>(f.uvDxFine, f.uvDyFine, texLevelWidth(heightMap, 0),
+                                       texLevelHeight(heightMap, 0))
                           : L(S(0));
-  return HeightReadsL<L>{(mipLevelsLanes<L>)(heightMap, u.filter, lod)};
+  return HeightReadsL<L>{(mipLevels<L>)(heightMap, u.filter, lod)};
 }
 
 // heightAt: the height in [0, 1] at uv (the red channel alone), with the fragment's uv
@@ -83,13 +83,13 @@ TWR_LANE_INLINE HeightReadsL<L> heightReadsLanes(const View& heightMap, const Sh
 // The general case calls the one out-of-line copy of the read (heightAt is also called from
 // every shading kernel); the compiled case, which only the parallax march takes, is inlined.
 template <typename L, typename View, SamplerCase kCase = SamplerCase::kAny>
-TWR_LANE_INLINE L heightAtLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
-                                const HeightReadsL<L>& reads, const Vec2L<L>& uv, const FragmentL<L>& f) {
+TWR_LANE_INLINE L heightAt(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
+                           const HeightReadsL<L>& reads, const Vec2L<L>& uv, const FragmentL<L>& f) {
   if constexpr (kCase == SamplerCase::kAny) {
-    if (u.anisotropic) return sampleGradLanes<L, View, L>(heightMap, u, uv, f.uvDxFine, f.uvDyFine);
-    return (sampleMipLevelsLanes<L, View, L>)(heightMap, uv, u.filter, reads.mips);
+    if (u.anisotropic) return sampleGrad<L, View, L>(heightMap, u, uv, f.uvDxFine, f.uvDyFine);
+    return (sampleMipLevels<L, View, L>)(heightMap, uv, u.filter, reads.mips);
   } else {
-    return (sampleMipLevelsInlineLanes<L, View, L, kCase>)(heightMap, uv, u.filter, reads.mips);
+    return (sampleMipLevelsInline<L, View, L, kCase>)(heightMap, uv, u.filter, reads.mips);
   }
 }
 // The case a march can compile its reads for (SamplerCase::kRepeatLinearUnorm), or kAny.
@@ -99,24 +99,24 @@ TWR_LANE_INLINE bool readsAsRepeatLinearUnorm(const View& heightMap, const Unifo
 }
 // One read alone.
 template <typename L, typename View>
-TWR_LANE_INLINE L heightAtLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u, const Vec2L<L>& uv,
-                                const FragmentL<L>& f) {
-  return heightAtLanes<L>(heightMap, u, heightReadsLanes<L>(heightMap, u, f), uv, f);
+TWR_LANE_INLINE L heightAt(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u, const Vec2L<L>& uv,
+                           const FragmentL<L>& f) {
+  return heightAt<L>(heightMap, u, heightReads<L>(heightMap, u, f), uv, f);
 }
 
 // A lighting-space direction in the fragment's tangent frame, normalised: tangent space hands
 // the interpolated vector over as it is; world space projects w onto (t, b, n).
 template <typename L>
-TWR_LANE_INLINE Vec3L<L> tangentFromLightingLanes(const Vec3L<L>& w, const Vec3L<L>& t, const Vec3L<L>& b,
-                                                  const Vec3L<L>& n, bool tangentSpace) {
-  if (tangentSpace) return safeNormalize3<L>(w);
-  return safeNormalize3<L>(Vec3L<L>(dot3<L>(t, w), dot3<L>(b, w), dot3<L>(n, w)));
+TWR_LANE_INLINE Vec3L<L> tangentFromLighting(const Vec3L<L>& w, const Vec3L<L>& t, const Vec3L<L>& b,
+                                             const Vec3L<L>& n, bool tangentSpace) {
+  if (tangentSpace) return safeNormalize<L>(w);
+  return safeNormalize<L>(Vec3L<L>(dot3<L>(t, w), dot3<L>(b, w), dot3<L>(n, w)));
 }
 
 // Layers for a march along `dir` (tangent space, normalised): parallaxLayers' min looking
 // straight down, its max at grazing angles, linear in 1 - |dir.z| (not rounded).
 template <typename L>
-TWR_LANE_INLINE L layerCountLanes(const ShadeUniformsT<ScalarOf<L>>& u, const Vec3L<L>& dir) {
+TWR_LANE_INLINE L layerCount(const ShadeUniformsT<ScalarOf<L>>& u, const Vec3L<L>& dir) {
   using S = ScalarOf<L>;
   return L(u.layersMin) + L(u.layersMax - u.layersMin) * (L(S(1)) - absOf(dir.z));
 }
@@ -134,18 +134,18 @@ struct SurfaceDetailL {
 // first order its tangent-space normal is (-s dh/du, -s dh/dv, 1), normalised. The partial
 // derivatives are central differences one level-0 texel (u.heightTexel) either side.
 template <typename L, typename View>
-TWR_LANE_OUTLINE Vec3L<L> bumpBlinnLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u, const FragmentL<L>& f) {
+TWR_LANE_OUTLINE Vec3L<L> bumpBlinn(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u, const FragmentL<L>& f) {
   using S = ScalarOf<L>;
   const L du(u.heightTexel.x), dv(u.heightTexel.y), zero(S(0)), one(S(1)), two(S(2));
-  const HeightReadsL<L> reads = heightReadsLanes<L>(heightMap, u, f);
-  const L hL = heightAtLanes<L>(heightMap, u, reads, Vec2L<L>(f.uv.x - du, f.uv.y), f);
-  const L hR = heightAtLanes<L>(heightMap, u, reads, Vec2L<L>(f.uv.x + du, f.uv.y), f);
-  const L hD = heightAtLanes<L>(heightMap, u, reads, Vec2L<L>(f.uv.x, f.uv.y - dv), f);
-  const L hU = heightAtLanes<L>(heightMap, u, reads, Vec2L<L>(f.uv.x, f.uv.y + dv), f);
+  const HeightReadsL<L> reads = heightReads<L>(heightMap, u, f);
+  const L hL = heightAt<L>(heightMap, u, reads, Vec2L<L>(f.uv.x - du, f.uv.y), f);
+  const L hR = heightAt<L>(heightMap, u, reads, Vec2L<L>(f.uv.x + du, f.uv.y), f);
+  const L hD = heightAt<L>(heightMap, u, reads, Vec2L<L>(f.uv.x, f.uv.y - dv), f);
+  const L hU = heightAt<L>(heightMap, u, reads, Vec2L<L>(f.uv.x, f.uv.y + dv), f);
   const L dhDu = (hR - hL) / (two * du);
   const L dhDv = (hU - hD) / (two * dv);
   const L s(u.heightScale);
-  return safeNormalize3<L>(Vec3L<L>(zero - s * dhDu, zero - s * dhDv, one));
+  return safeNormalize<L>(Vec3L<L>(zero - s * dhDu, zero - s * dhDv, one));
 }
 
 // The steep methods' march: from the fragment's uv, one layer of depth a step along deltaUv
@@ -158,9 +158,9 @@ struct LayerMarchL {
   L depthC, surfaceDepth, prevSurfaceDepth, steps;
 };
 template <typename L, typename View, SamplerCase kCase>
-TWR_LANE_INLINE LayerMarchL<L> layerMarchLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
-                                               const HeightReadsL<L>& reads, const FragmentL<L>& f, L h0,
-                                               const Vec2L<L>& deltaUv, L layerDepth) {
+TWR_LANE_INLINE LayerMarchL<L> layerMarch(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
+                                          const HeightReadsL<L>& reads, const FragmentL<L>& f, L h0,
+                                          const Vec2L<L>& deltaUv, L layerDepth) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1));
   Vec2L<L> uvC = f.uv;
@@ -180,7 +180,7 @@ TWR_LANE_INLINE LayerMarchL<L> layerMarchLanes(const View& heightMap, const Shad
     if (!anyOf(above)) break;
     uvNext = Vec2L<L>(uvNext.x - deltaUv.x, uvNext.y - deltaUv.y);
     depthNext = depthNext + layerDepth;
-    const L surfaceNext = one - heightAtLanes<L, View, kCase>(heightMap, u, reads, uvNext, f);
+    const L surfaceNext = one - heightAt<L, View, kCase>(heightMap, u, reads, uvNext, f);
     prevUv = Vec2L<L>(select(above, uvC.x, prevUv.x), select(above, uvC.y, prevUv.y));
     prevSurfaceDepth = select(above, surfaceDepth, prevSurfaceDepth);
     uvC = Vec2L<L>(select(above, uvNext.x, uvC.x), select(above, uvNext.y, uvC.y));
@@ -196,7 +196,7 @@ TWR_LANE_INLINE LayerMarchL<L> layerMarchLanes(const View& heightMap, const Shad
 // shifted uv for the marching methods (a height march, the height view, the pixel trace); left
 // at 1 otherwise, a read GLSL's compiler drops where nothing uses it.
 template <typename L, typename View, SamplerCase kCase>
-TWR_LANE_INLINE SurfaceDetailL<L> parallaxCaseLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
+TWR_LANE_INLINE SurfaceDetailL<L> parallaxCase(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
                                                    const FragmentL<L>& f, const Vec3L<L>& vT, bool wantHeight) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), half(S(0.5));
@@ -205,8 +205,8 @@ TWR_LANE_INLINE SurfaceDetailL<L> parallaxCaseLanes(const View& heightMap, const
   // A view at or below the tangent plane (interpolated normals at silhouettes) would divide by
   // zero: vz is kept at kMinParallaxViewZ or above, so the shift stays finite there.
   const L vz = maxOf(vT.z, L(static_cast<S>(kMinParallaxViewZ)));
-  const HeightReadsL<L> reads = heightReadsLanes<L>(heightMap, u, f);
-  const L h0 = heightAtLanes<L, View, kCase>(heightMap, u, reads, f.uv, f);
+  const HeightReadsL<L> reads = heightReads<L>(heightMap, u, f);
+  const L h0 = heightAt<L, View, kCase>(heightMap, u, reads, f.uv, f);
   if (u.surfaceDetail == SurfaceDetail::Parallax) {
     // Kaneko et al.: the height at uv, taken as constant along the ray; 1 / vz grows without
     // bound at grazing angles (docs/parallax.md shows it).
@@ -218,11 +218,11 @@ TWR_LANE_INLINE SurfaceDetailL<L> parallaxCaseLanes(const View& heightMap, const
     r.uv = Vec2L<L>(f.uv.x - vT.x * depth, f.uv.y - vT.y * depth);
   } else {
     // Steep parallax: step down layer by layer until the ray is below the height field.
-    const L layers = layerCountLanes<L>(u, vT);
+    const L layers = layerCount<L>(u, vT);
     const L layerDepth = one / layers;
     const L shiftPerLayer = scale / layers;
     const Vec2L<L> deltaUv(vT.x / vz * shiftPerLayer, vT.y / vz * shiftPerLayer);
-    LayerMarchL<L> m = (layerMarchLanes<L, View, kCase>)(heightMap, u, reads, f, h0, deltaUv, layerDepth);
+    LayerMarchL<L> m = (layerMarch<L, View, kCase>)(heightMap, u, reads, f, h0, deltaUv, layerDepth);
     Vec2L<L>& uvC = m.uvC;
     L& depthC = m.depthC;
     L& surfaceDepth = m.surfaceDepth;
@@ -237,7 +237,7 @@ TWR_LANE_INLINE SurfaceDetailL<L> parallaxCaseLanes(const View& heightMap, const
         const auto below = depthC >= surfaceDepth;
         uvC = Vec2L<L>(select(below, uvC.x + du.x, uvC.x - du.x), select(below, uvC.y + du.y, uvC.y - du.y));
         depthC = select(below, depthC - dd, depthC + dd);
-        surfaceDepth = one - heightAtLanes<L, View, kCase>(heightMap, u, reads, uvC, f);
+        surfaceDepth = one - heightAt<L, View, kCase>(heightMap, u, reads, uvC, f);
       }
       steps = steps + L(static_cast<S>(u.refinementSteps));
     } else if (u.surfaceDetail == SurfaceDetail::ParallaxOcclusion) {
@@ -257,19 +257,19 @@ TWR_LANE_INLINE SurfaceDetailL<L> parallaxCaseLanes(const View& heightMap, const
   if (u.surfaceDetail == SurfaceDetail::Parallax || u.surfaceDetail == SurfaceDetail::ParallaxOffsetLimited) {
     r.height = h0;
   } else if (wantHeight) {
-    r.height = heightAtLanes<L, View, kCase>(heightMap, u, reads, r.uv, f);
+    r.height = heightAt<L, View, kCase>(heightMap, u, reads, r.uv, f);
   }
   return r;
 }
 
 // The same, its reads compiled for the height map's sampler state where it is the usual one.
 template <typename L, typename View>
-TWR_LANE_OUTLINE SurfaceDetailL<L> parallaxLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
+TWR_LANE_OUTLINE SurfaceDetailL<L> parallax(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
                                                 const FragmentL<L>& f, const Vec3L<L>& vT, bool wantHeight) {
   if ((readsAsRepeatLinearUnorm)(heightMap, u)) {
-    return parallaxCaseLanes<L, View, SamplerCase::kRepeatLinearUnorm>(heightMap, u, f, vT, wantHeight);
+    return parallaxCase<L, View, SamplerCase::kRepeatLinearUnorm>(heightMap, u, f, vT, wantHeight);
   }
-  return parallaxCaseLanes<L, View, SamplerCase::kAny>(heightMap, u, f, vT, wantHeight);
+  return parallaxCase<L, View, SamplerCase::kAny>(heightMap, u, f, vT, wantHeight);
 }
 
 // Self-shadowing by a march from the shaded point (uvP, depth 1 - hP) up towards the light
@@ -277,17 +277,17 @@ TWR_LANE_OUTLINE SurfaceDetailL<L> parallaxLanes(const View& heightMap, const Sh
 // occludes by how far it lies above, weighted down with the distance along the march; the
 // strongest occluder times kSelfShadowSharpness is the shadow (a soft edge, docs/parallax.md).
 template <typename L, typename View>
-TWR_LANE_OUTLINE L heightMarchShadowLanes(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
+TWR_LANE_OUTLINE L heightMarchShadow(const View& heightMap, const ShadeUniformsT<ScalarOf<L>>& u,
                                          const FragmentL<L>& f, const Vec2L<L>& uvP, const L& hP, const Vec3L<L>& lT) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1));
   const L lz = maxOf(lT.z, L(static_cast<S>(kMinParallaxViewZ)));
-  const L layers = layerCountLanes<L>(u, lT);
+  const L layers = layerCount<L>(u, lT);
   const L startDepth = one - hP;
   const L layerDepth = startDepth / layers;
   const L shiftPerLayer = L(u.heightScale) * startDepth / layers;
   const Vec2L<L> deltaUv(lT.x / lz * shiftPerLayer, lT.y / lz * shiftPerLayer);
-  const HeightReadsL<L> reads = heightReadsLanes<L>(heightMap, u, f);
+  const HeightReadsL<L> reads = heightReads<L>(heightMap, u, f);
   L occlusion = zero;
   Vec2L<L> uvC = uvP;
   L depthC = startDepth;
@@ -299,7 +299,7 @@ TWR_LANE_OUTLINE L heightMarchShadowLanes(const View& heightMap, const ShadeUnif
     if (!anyOf(marching)) break;
     uvC = Vec2L<L>(uvC.x + deltaUv.x, uvC.y + deltaUv.y);
     depthC = depthC - layerDepth;
-    const L surfaceDepth = one - heightAtLanes<L>(heightMap, u, reads, uvC, f);
+    const L surfaceDepth = one - heightAt<L>(heightMap, u, reads, uvC, f);
     const L above = (depthC - surfaceDepth) * (one - index / layers);
     occlusion = select(marching, maxOf(occlusion, above), occlusion);
   }
@@ -313,7 +313,7 @@ TWR_LANE_OUTLINE L heightMarchShadowLanes(const View& heightMap, const ShadeUnif
 // azimuths around it and the weight between them are found without trigonometry; the light
 // is lit by how far its elevation sine lT.z clears the interpolated horizon.
 template <typename L, typename Maps>
-TWR_LANE_OUTLINE L horizonShadowLanes(const Maps& maps, const ShadeUniformsT<ScalarOf<L>>& u, const FragmentL<L>& f,
+TWR_LANE_OUTLINE L horizonShadow(const Maps& maps, const ShadeUniformsT<ScalarOf<L>>& u, const FragmentL<L>& f,
                                      const Vec2L<L>& uvP, const Vec3L<L>& lT) {
   using S = ScalarOf<L>;
   const L zero(S(0)), one(S(1)), two(S(2)), four(S(4)), half(S(0.5));
@@ -321,7 +321,7 @@ TWR_LANE_OUTLINE L horizonShadowLanes(const Maps& maps, const ShadeUniformsT<Sca
   L horizon[kMaxHorizonDirections] = {};
   const int textures = u.horizonDirections / 4;
   for (int k = 0; k < textures; ++k) {
-    const Vec4L<L> texel = sampleGradLanes<L>(*maps.horizon[static_cast<std::size_t>(k)], u, uvP, f.uvDxFine, f.uvDyFine);
+    const Vec4L<L> texel = sampleGrad<L>(*maps.horizon[static_cast<std::size_t>(k)], u, uvP, f.uvDxFine, f.uvDyFine);
     horizon[4 * k + 0] = texel.x;
     horizon[4 * k + 1] = texel.y;
     horizon[4 * k + 2] = texel.z;

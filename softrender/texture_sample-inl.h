@@ -14,7 +14,7 @@
 //       footprint (x0, y0), (x1, y0), (x0, y1), (x1, y1) as Vec4L<L>, where x1 is x0 or the
 //       texel after it (wrapped to 0 at the edge), and y1 likewise
 //   linearFromSrgbByte(L byte)                        the sRGB decode of one byte value
-// plainly a Texture (texture_sample.h), in the fast path a tiled copy (fast_kernels.cpp).
+// plainly a Texture (texture_sample.h), in the fast path a tiled copy (fast_kernels-inl.h).
 
 #if defined(TWR_LANES_HIGHWAY)
 #if defined(TWR_TEXTURE_SAMPLE_INL_TARGET) == defined(HWY_TARGET_TOGGLE)
@@ -73,7 +73,7 @@ TWR_LANE_INLINE L sanitizedCoord(const L& c) {
 //   clamp   i = clamp(trunc(c size), 0, size - 1)
 //   mirror  h = c / 2; i = min(trunc(|2 (h - rint(h))| size), size - 1)
 template <typename L>
-TWR_LANE_INLINE IntOf<L> nearestTexelLanes(const L& c, int size, TextureWrap wrap) {
+TWR_LANE_INLINE IntOf<L> nearestTexel(const L& c, int size, TextureWrap wrap) {
   using S = ScalarOf<L>;
   constexpr S kBelowOne = S(0.99999994f);  // the largest float below 1
   const L zero(S(0)), sizeL(static_cast<S>(size)), last(static_cast<S>(size - 1));
@@ -96,7 +96,7 @@ TWR_LANE_INLINE IntOf<L> nearestTexelLanes(const L& c, int size, TextureWrap wra
 // a power of two takes the fraction first (f = min(c - floor(c), 1 - 2^-24), c' = f size - 0.5,
 // i0 = -1 -> size - 1); mirrored_repeat folds c to |2 (c/2 - rint(c/2))| first.
 template <typename L>
-TWR_LANE_INLINE AxisFootprintL<L> linearAxisLanes(const L& c, int size, TextureWrap wrap) {
+TWR_LANE_INLINE AxisFootprintL<L> linearAxis(const L& c, int size, TextureWrap wrap) {
   using S = ScalarOf<L>;
   constexpr S kBelowOne = S(0.99999994f);  // the largest float below 1
   const L zero(S(0)), one(S(1)), last(static_cast<S>(size - 1)), sizeL(static_cast<S>(size));
@@ -155,7 +155,7 @@ TWR_LANE_INLINE L redValue(const View& texture, const L& byte) {
   return L(linearFromSrgbByte(byte));
 }
 template <typename L, typename Texel, typename View>
-TWR_LANE_INLINE Texel texelLanes(const View& texture, int level, const IntOf<L>& x, const IntOf<L>& y) {
+TWR_LANE_INLINE Texel texel(const View& texture, int level, const IntOf<L>& x, const IntOf<L>& y) {
   if constexpr (std::is_same_v<Texel, L>) {
     return (redValue<L>)(texture, fetchTexelRedByte<L>(texture, level, x, y));
   } else {
@@ -167,16 +167,16 @@ TWR_LANE_INLINE Texel texelLanes(const View& texture, int level, const IntOf<L>&
 // both rows, then along v: a + w (b - a) (llvmpipe fuses each into one FMA; the CPU rounds
 // twice, about one float ULP apart).
 template <typename L, typename View, typename Texel = Vec4L<L>, SamplerCase kCase = SamplerCase::kAny>
-TWR_LANE_INLINE Texel sampleLevelInlineLanes(const View& texture, int level, const Vec2L<L>& uv, bool linear) {
+TWR_LANE_INLINE Texel sampleLevelInline(const View& texture, int level, const Vec2L<L>& uv, bool linear) {
   constexpr bool kFixed = kCase == SamplerCase::kRepeatLinearUnorm;
   const int width = texLevelWidth(texture, level), height = texLevelHeight(texture, level);
   const TextureWrap wrap = kFixed ? TextureWrap::Repeat : texWrap(texture);
   if (!kFixed && !linear) {
-    return (texelLanes<L, Texel>)(texture, level, (nearestTexelLanes<L>)(uv.x, width, wrap),
-                                  (nearestTexelLanes<L>)(uv.y, height, wrap));
+    return (texel<L, Texel>)(texture, level, (nearestTexel<L>)(uv.x, width, wrap),
+                             (nearestTexel<L>)(uv.y, height, wrap));
   }
-  const AxisFootprintL<L> ax = (linearAxisLanes<L>)(uv.x, width, wrap);
-  const AxisFootprintL<L> ay = (linearAxisLanes<L>)(uv.y, height, wrap);
+  const AxisFootprintL<L> ax = (linearAxis<L>)(uv.x, width, wrap);
+  const AxisFootprintL<L> ay = (linearAxis<L>)(uv.y, height, wrap);
   Texel t00, t10, t01, t11;
   if constexpr (std::is_same_v<Texel, L>) {
     // The red channel alone: the view hands the four bytes over together (the fast path reads
@@ -187,10 +187,10 @@ TWR_LANE_INLINE Texel sampleLevelInlineLanes(const View& texture, int level, con
     t01 = (redValue<L, kCase>)(texture, bytes.z);
     t11 = (redValue<L, kCase>)(texture, bytes.w);
   } else {
-    t00 = (texelLanes<L, Texel>)(texture, level, ax.i0, ay.i0);
-    t10 = (texelLanes<L, Texel>)(texture, level, ax.i1, ay.i0);
-    t01 = (texelLanes<L, Texel>)(texture, level, ax.i0, ay.i1);
-    t11 = (texelLanes<L, Texel>)(texture, level, ax.i1, ay.i1);
+    t00 = (texel<L, Texel>)(texture, level, ax.i0, ay.i0);
+    t10 = (texel<L, Texel>)(texture, level, ax.i1, ay.i0);
+    t01 = (texel<L, Texel>)(texture, level, ax.i0, ay.i1);
+    t11 = (texel<L, Texel>)(texture, level, ax.i1, ay.i1);
   }
   const Texel bottomRow = t00 + (t10 - t00) * ax.weight;
   const Texel topRow = t01 + (t11 - t01) * ax.weight;
@@ -199,17 +199,17 @@ TWR_LANE_INLINE Texel sampleLevelInlineLanes(const View& texture, int level, con
 // The same, one out-of-line copy (a colour read, inlined in every kernel, would multiply their
 // compile time).
 template <typename L, typename View, typename Texel = Vec4L<L>>
-TWR_LANE_OUTLINE Texel sampleLevelLanes(const View& texture, int level, const Vec2L<L>& uv, bool linear) {
-  return (sampleLevelInlineLanes<L, View, Texel>)(texture, level, uv, linear);
+TWR_LANE_OUTLINE Texel sampleLevel(const View& texture, int level, const Vec2L<L>& uv, bool linear) {
+  return (sampleLevelInline<L, View, Texel>)(texture, level, uv, linear);
 }
-// A height read (red alone) is inlined into sampleMipLevelsInlineLanes: a march makes dozens
+// A height read (red alone) is inlined into sampleMipLevelsInline: a march makes dozens
 // per pixel, and the levels of a trilinear read then overlap.
 template <typename L, typename View, typename Texel, SamplerCase kCase>
-TWR_LANE_INLINE Texel sampleLevelForLanes(const View& texture, int level, const Vec2L<L>& uv, bool linear) {
+TWR_LANE_INLINE Texel sampleLevelFor(const View& texture, int level, const Vec2L<L>& uv, bool linear) {
   if constexpr (std::is_same_v<Texel, L>) {
-    return (sampleLevelInlineLanes<L, View, Texel, kCase>)(texture, level, uv, linear);
+    return (sampleLevelInline<L, View, Texel, kCase>)(texture, level, uv, linear);
   } else {
-    return (sampleLevelLanes<L, View, Texel>)(texture, level, uv, linear);
+    return (sampleLevel<L, View, Texel>)(texture, level, uv, linear);
   }
 }
 
@@ -228,7 +228,7 @@ struct MipLevelsL {
   int lowest = 0, highest = 0;
 };
 template <typename L, typename View>
-TWR_LANE_INLINE MipLevelsL<L> mipLevelsLanes(const View& texture, TextureFilter filter, const L& lod) {
+TWR_LANE_INLINE MipLevelsL<L> mipLevels(const View& texture, TextureFilter filter, const L& lod) {
   using S = ScalarOf<L>;
   const int last = texLevelCount(texture) - 1;
   const L zero(S(0));
@@ -264,16 +264,16 @@ TWR_LANE_INLINE L selectTexel(const MaskOf<L>& mask, const L& a, const L& b) {
   return select(mask, a, b);
 }
 template <typename L, typename View, typename Texel, SamplerCase kCase>
-TWR_LANE_INLINE void sampleLevelPairLanes(const View& texture, const MipLevelsL<L>& mips, const Vec2L<L>& uv,
-                                          bool linear, Texel& s0, Texel& s1) {
+TWR_LANE_INLINE void sampleLevelPair(const View& texture, const MipLevelsL<L>& mips, const Vec2L<L>& uv,
+                                     bool linear, Texel& s0, Texel& s1) {
   using S = ScalarOf<L>;
-  s0 = (sampleLevelForLanes<L, View, Texel, kCase>)(texture, mips.lowest, uv, linear);
+  s0 = (sampleLevelFor<L, View, Texel, kCase>)(texture, mips.lowest, uv, linear);
   s1 = s0;
   for (int l = mips.lowest + 1; l <= mips.highest; ++l) {
     const L here(static_cast<S>(l));
     const auto first = mips.level0 == here, second = mips.level1 == here;
     if (!anyOf(first | second)) continue;
-    const Texel r = (sampleLevelForLanes<L, View, Texel, kCase>)(texture, l, uv, linear);
+    const Texel r = (sampleLevelFor<L, View, Texel, kCase>)(texture, l, uv, linear);
     s0 = (selectTexel<L>)(first, r, s0);
     s1 = (selectTexel<L>)(second, r, s1);
   }
@@ -284,7 +284,7 @@ TWR_LANE_INLINE void sampleLevelPairLanes(const View& texture, const MipLevelsL<
 // (du/dy W)^2 + (dv/dy H)^2) with W x H the base level, lod = fastLog2(rho^2) / 2 where
 // fastLog2(m 2^e) = e + (m - 1) (exact at powers of two, up to 0.086 below log2 between).
 template <typename L>
-TWR_LANE_INLINE L quadLodLanes(const Vec2L<L>& dUvDx, const Vec2L<L>& dUvDy, int width, int height) {
+TWR_LANE_INLINE L quadLod(const Vec2L<L>& dUvDx, const Vec2L<L>& dUvDy, int width, int height) {
   using S = ScalarOf<L>;
   const L w(static_cast<S>(width)), h(static_cast<S>(height));
   const L a = dUvDx.x * w, b = dUvDy.x * w, c = dUvDx.y * h, d = dUvDy.y * h;
@@ -298,25 +298,25 @@ TWR_LANE_INLINE L quadLodLanes(const Vec2L<L>& dUvDx, const Vec2L<L>& dUvDy, int
 // magnification filters agree for every filter here, so magnification, lod <= 0, is level 0
 // with the same texel filter); *_mipmap_linear blends its two levels as a + f (b - a).
 template <typename L, typename View, typename Texel = Vec4L<L>, SamplerCase kCase = SamplerCase::kAny>
-TWR_LANE_INLINE Texel sampleMipLevelsInlineLanes(const View& texture, const Vec2L<L>& uvIn, TextureFilter filter,
-                                                 const MipLevelsL<L>& mips) {
+TWR_LANE_INLINE Texel sampleMipLevelsInline(const View& texture, const Vec2L<L>& uvIn, TextureFilter filter,
+                                            const MipLevelsL<L>& mips) {
   const Vec2L<L> uv((sanitizedCoord<L>)(uvIn.x), (sanitizedCoord<L>)(uvIn.y));
   Texel s0, s1;
-  (sampleLevelPairLanes<L, View, Texel, kCase>)(texture, mips, uv, texelsLinear(filter), s0, s1);
+  (sampleLevelPair<L, View, Texel, kCase>)(texture, mips, uv, texelsLinear(filter), s0, s1);
   if (!usesMipmaps(filter) || texLevelCount(texture) == 1 || !levelsLinear(filter)) return s0;
   return s0 + (s1 - s0) * mips.fraction;
 }
 template <typename L, typename View, typename Texel = Vec4L<L>>
-TWR_LANE_OUTLINE Texel sampleMipLevelsLanes(const View& texture, const Vec2L<L>& uvIn, TextureFilter filter,
-                                            const MipLevelsL<L>& mips) {
-  return (sampleMipLevelsInlineLanes<L, View, Texel>)(texture, uvIn, filter, mips);
+TWR_LANE_OUTLINE Texel sampleMipLevels(const View& texture, const Vec2L<L>& uvIn, TextureFilter filter,
+                                       const MipLevelsL<L>& mips) {
+  return (sampleMipLevelsInline<L, View, Texel>)(texture, uvIn, filter, mips);
 }
 
-// The filtered RGBA (or red) in [0, 1]. `lod` is the quad's (quadLodLanes); filters without
+// The filtered RGBA (or red) in [0, 1]. `lod` is the quad's (quadLod); filters without
 // mipmaps ignore it.
 template <typename L, typename View, typename Texel = Vec4L<L>>
-TWR_LANE_INLINE Texel sampleTextureLanes(const View& texture, const Vec2L<L>& uv, TextureFilter filter, const L& lod) {
-  return (sampleMipLevelsLanes<L, View, Texel>)(texture, uv, filter, (mipLevelsLanes<L>)(texture, filter, lod));
+TWR_LANE_INLINE Texel sampleTexture(const View& texture, const Vec2L<L>& uv, TextureFilter filter, const L& lod) {
+  return (sampleMipLevels<L, View, Texel>)(texture, uv, filter, (mipLevels<L>)(texture, filter, lod));
 }
 
 // ---- Anisotropic filtering (GL_TEXTURE_MAX_ANISOTROPY > 1), as llvmpipe does it ----
@@ -325,7 +325,7 @@ TWR_LANE_INLINE Texel sampleTextureLanes(const View& texture, const Vec2L<L>& uv
 // of its bounding box is read with GL_NEAREST, weighted by a Gaussian of its distance inside
 // the ellipse (weights 1 .. e^-2 from a 1024-entry table, 0 outside), and the sum divided by
 // the total weight. One level, picked from the *shorter* axis: lod = fastLog2(min(rx, ry)) / 2
-// with rx, ry as quadLodLanes, level = clamp(trunc(lod), 0, last) for a mipmapped filter
+// with rx, ry as quadLod, level = clamp(trunc(lod), 0, last) for a mipmapped filter
 // (level 0 otherwise); the texel filter and the mip filter are otherwise ignored. llvmpipe's
 // clamp of the short axis to long / max_anisotropy compares the short axis with itself and
 // never fires (Mesa 22.3), so every anisotropy above 1 draws the same picture: 2x and 16x are
@@ -344,8 +344,8 @@ struct EwaEllipseL {
   L aScaled, bScaled, cScaled, ddq, texU, texV, u0, v0, u1, v1;
 };
 template <typename L>
-TWR_LANE_INLINE EwaEllipseL<L> ewaEllipseLanes(const Vec2L<L>& uv, const Vec2L<L>& dUvDx, const Vec2L<L>& dUvDy,
-                                               L width0, L height0, ScalarOf<L> scaling, const MaskOf<L>& lanes) {
+TWR_LANE_INLINE EwaEllipseL<L> ewaEllipse(const Vec2L<L>& uv, const Vec2L<L>& dUvDx, const Vec2L<L>& dUvDy,
+                                          L width0, L height0, ScalarOf<L> scaling, const MaskOf<L>& lanes) {
   using S = ScalarOf<L>;
   const L one(S(1)), zero(S(0));
   // The differences in this level's texels: (ux, vx) along a pixel step in x, (uy, vy) in y.
@@ -388,15 +388,15 @@ TWR_LANE_INLINE EwaEllipseL<L> ewaEllipseLanes(const Vec2L<L>& uv, const Vec2L<L
 // The ellipse filter on one level for the lanes in `lanes` (the others compute nothing:
 // their box is empty). width0, height0: level 0's size.
 template <typename L, typename View>
-TWR_LANE_OUTLINE Vec4L<L> sampleEwaLevelLanes(const View& texture, int level, const Vec2L<L>& uv,
-                                              const Vec2L<L>& dUvDx, const Vec2L<L>& dUvDy, const MaskOf<L>& lanes) {
+TWR_LANE_OUTLINE Vec4L<L> sampleEwaLevel(const View& texture, int level, const Vec2L<L>& uv,
+                                         const Vec2L<L>& dUvDx, const Vec2L<L>& dUvDy, const MaskOf<L>& lanes) {
   using S = ScalarOf<L>;
   const TextureWrap wrap = texWrap(texture);
   const int width = texLevelWidth(texture, level), height = texLevelHeight(texture, level);
   const S scaling = S(1) / static_cast<S>(1 << level);  // level 0 texels to this level's
   const L width0(static_cast<S>(texLevelWidth(texture, 0))), height0(static_cast<S>(texLevelHeight(texture, 0)));
   const L one(S(1)), zero(S(0));
-  const EwaEllipseL<L> e = (ewaEllipseLanes<L>)(uv, dUvDx, dUvDy, width0, height0, scaling, lanes);
+  const EwaEllipseL<L> e = (ewaEllipse<L>)(uv, dUvDx, dUvDy, width0, height0, scaling, lanes);
   const L &aScaled = e.aScaled, &bScaled = e.bScaled, &cScaled = e.cScaled, &ddq = e.ddq;
   const L &texU = e.texU, &texV = e.texV, &u0 = e.u0, &v0 = e.v0, &u1 = e.u1, &v1 = e.v1;
   // q = A U^2 + B U V + C V^2 at each texel, stepped along u with dq and ddq.
@@ -428,8 +428,8 @@ TWR_LANE_OUTLINE Vec4L<L> sampleEwaLevelLanes(const View& texture, int level, co
         continue;
       }
       const Vec4L<L> texel = texelValue<L>(
-          texture, fetchTexelBytes<L>(texture, level, (nearestTexelLanes<L>)(u / L(static_cast<S>(width)), width, wrap),
-                                      (nearestTexelLanes<L>)(v / L(static_cast<S>(height)), height, wrap)));
+          texture, fetchTexelBytes<L>(texture, level, (nearestTexel<L>)(u / L(static_cast<S>(width)), width, wrap),
+                                      (nearestTexel<L>)(v / L(static_cast<S>(height)), height, wrap)));
       sum = sum + texel * weight;
       total = total + weight;
       q = q + dq;
@@ -440,13 +440,13 @@ TWR_LANE_OUTLINE Vec4L<L> sampleEwaLevelLanes(const View& texture, int level, co
   const auto empty = total == zero;
   if (!anyOf(empty)) return filtered;
   // No weight at all: llvmpipe falls back to bilinear on the level.
-  return (selectTexel<L>)(empty, (sampleLevelLanes<L>)(texture, level, uv, true), filtered);
+  return (selectTexel<L>)(empty, (sampleLevel<L>)(texture, level, uv, true), filtered);
 }
 
 // The anisotropic sample: each lane's level (see above), each distinct level filtered once.
 template <typename L, typename View>
-TWR_LANE_OUTLINE Vec4L<L> sampleTextureAnisotropicLanes(const View& texture, const Vec2L<L>& uvIn, TextureFilter filter,
-                                                        const Vec2L<L>& dUvDx, const Vec2L<L>& dUvDy) {
+TWR_LANE_OUTLINE Vec4L<L> sampleTextureAnisotropic(const View& texture, const Vec2L<L>& uvIn, TextureFilter filter,
+                                                   const Vec2L<L>& dUvDx, const Vec2L<L>& dUvDy) {
   using S = ScalarOf<L>;
   const Vec2L<L> uv((sanitizedCoord<L>)(uvIn.x), (sanitizedCoord<L>)(uvIn.y));
   const int last = texLevelCount(texture) - 1;
@@ -461,31 +461,31 @@ TWR_LANE_OUTLINE Vec4L<L> sampleTextureAnisotropicLanes(const View& texture, con
     level = minOf(maxOf(truncOf(lod), zero), L(static_cast<S>(last)));
   }
   const int lowest = static_cast<int>(lowestLane(level)), highest = static_cast<int>(highestLane(level));
-  Vec4L<L> result = (sampleEwaLevelLanes<L>)(texture, lowest, uv, dUvDx, dUvDy, level == L(static_cast<S>(lowest)));
+  Vec4L<L> result = (sampleEwaLevel<L>)(texture, lowest, uv, dUvDx, dUvDy, level == L(static_cast<S>(lowest)));
   for (int l = lowest + 1; l <= highest; ++l) {
     const auto here = level == L(static_cast<S>(l));
     if (!anyOf(here)) continue;
-    result = (selectTexel<L>)(here, (sampleEwaLevelLanes<L>)(texture, l, uv, dUvDx, dUvDy, here), result);
+    result = (selectTexel<L>)(here, (sampleEwaLevel<L>)(texture, l, uv, dUvDx, dUvDy, here), result);
   }
   return result;
 }
 
 // The level-0 footprint of a sample (the pixel trace's picture of one texture read).
 template <typename L, typename View>
-TWR_LANE_INLINE FootprintL<L> sampleFootprintLanes(const View& texture, const Vec2L<L>& uvIn, TextureFilter filter) {
+TWR_LANE_INLINE FootprintL<L> sampleFootprint(const View& texture, const Vec2L<L>& uvIn, TextureFilter filter) {
   using S = ScalarOf<L>;
   const Vec2L<L> uv((sanitizedCoord<L>)(uvIn.x), (sanitizedCoord<L>)(uvIn.y));
   const int width = texLevelWidth(texture, 0), height = texLevelHeight(texture, 0);
   const TextureWrap wrap = texWrap(texture);
   FootprintL<L> f;
   if (!texelsLinear(filter)) {
-    f.x0 = f.x1 = (nearestTexelLanes<L>)(uv.x, width, wrap);
-    f.y0 = f.y1 = (nearestTexelLanes<L>)(uv.y, height, wrap);
+    f.x0 = f.x1 = (nearestTexel<L>)(uv.x, width, wrap);
+    f.y0 = f.y1 = (nearestTexel<L>)(uv.y, height, wrap);
     f.alpha = f.beta = L(S(0));
     return f;
   }
-  const AxisFootprintL<L> ax = (linearAxisLanes<L>)(uv.x, width, wrap);
-  const AxisFootprintL<L> ay = (linearAxisLanes<L>)(uv.y, height, wrap);
+  const AxisFootprintL<L> ax = (linearAxis<L>)(uv.x, width, wrap);
+  const AxisFootprintL<L> ay = (linearAxis<L>)(uv.y, height, wrap);
   f.x0 = ax.i0;
   f.x1 = ax.i1;
   f.y0 = ay.i0;

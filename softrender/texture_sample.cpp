@@ -17,7 +17,7 @@ bool hasTexels(const Texture& texture) { return texture.width > 0 && texture.hei
 
 template <typename T>
 int nearestTexelIndex(T coord, int size) {
-  return (nearestTexelLanes<T>)((sanitizedCoord<T>)(coord), size, TextureWrap::Repeat);
+  return (lanes::nearestTexel<T>)((lanes::sanitizedCoord<T>)(coord), size, TextureWrap::Repeat);
 }
 
 const std::array<double, 256>& srgbDecodeTable() {
@@ -54,33 +54,33 @@ Vec4T<T> texelAt(const Texture& texture, int x, int y) {
 
 template <typename T>
 SampleFootprintT<T> sampleFootprint(const Texture& texture, Vec2T<T> uv, TextureFilter filter) {
-  const FootprintL<T> f = sampleFootprintLanes<T>(texture, uv, filter);
+  const lanes::FootprintL<T> f = lanes::sampleFootprint<T>(texture, uv, filter);
   return SampleFootprintT<T>{f.x0, f.y0, f.x1, f.y1, f.alpha, f.beta};
 }
 
 template <typename T>
 Vec4T<T> sampleNearest(const Texture& texture, Vec2T<T> uv) {
   if (!hasTexels(texture)) return Vec4T<T>(T(0));
-  return sampleTextureLanes<T>(texture, uv, TextureFilter::Nearest, T(0));
+  return lanes::sampleTexture<T>(texture, uv, TextureFilter::Nearest, T(0));
 }
 
 template <typename T>
 Vec4T<T> sampleBilinear(const Texture& texture, Vec2T<T> uv) {
   if (!hasTexels(texture)) return Vec4T<T>(T(0));
-  return sampleTextureLanes<T>(texture, uv, TextureFilter::Bilinear, T(0));
+  return lanes::sampleTexture<T>(texture, uv, TextureFilter::Bilinear, T(0));
 }
 
 template <typename T>
 Vec4T<T> sampleTexture(const Texture& texture, Vec2T<T> uv, TextureFilter filter, T lod) {
   if (!hasTexels(texture)) return Vec4T<T>(T(0));
-  return sampleTextureLanes<T>(texture, uv, filter, lod);
+  return lanes::sampleTexture<T>(texture, uv, filter, lod);
 }
 
 template <typename T>
 Vec4T<T> sampleTextureAnisotropic(const Texture& texture, Vec2T<T> uv, TextureFilter filter, Vec2T<T> dUvDx,
                                   Vec2T<T> dUvDy) {
   if (!hasTexels(texture)) return Vec4T<T>(T(0));
-  return sampleTextureAnisotropicLanes<T>(texture, uv, filter, dUvDx, dUvDy);
+  return lanes::sampleTextureAnisotropic<T>(texture, uv, filter, dUvDx, dUvDy);
 }
 
 // The two scalar pipelines: float (matches GL) and double (the reference).

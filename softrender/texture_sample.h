@@ -75,7 +75,7 @@ inline S linearFromSrgbByte(S byte) {
 template <typename T = float>
 Vec4T<T> texelAt(const Texture& texture, int x, int y);  // RGBA in [0, 1], level 0
 
-// The anisotropic filter's weights (texture_sample-inl.h, sampleEwaLevelLanes), as llvmpipe
+// The anisotropic filter's weights (texture_sample-inl.h, sampleEwaLevel), as llvmpipe
 // holds them: exp(-2 i / 1023) in float for i in [0, 1024), printed with six decimals into
 // its source and read back as float (gallivm's aniso_filter_table).
 inline constexpr int kEwaWeightCount = 1024;
@@ -96,7 +96,7 @@ template <typename T = float>
 Vec4T<T> sampleNearest(const Texture& texture, Vec2T<T> uv);
 template <typename T = float>
 Vec4T<T> sampleBilinear(const Texture& texture, Vec2T<T> uv);
-// `lod` as quadLodLanes gives it (ignored by filters without mipmaps).
+// `lod` as quadLod gives it (ignored by filters without mipmaps).
 template <typename T = float>
 Vec4T<T> sampleTexture(const Texture& texture, Vec2T<T> uv, TextureFilter filter, T lod = T(0));
 // With GL_TEXTURE_MAX_ANISOTROPY > 1: the quad's uv differences instead of a LOD.

@@ -39,15 +39,15 @@ CubeMap labelledCube() {
 }
 
 // The environment terms of one fragment with no quad differences (every read at level 0).
-EnvironmentTermsL<float> envAt(const EnvironmentUniformsT<float>& e, const Vec3L<float>& nl, const Vec3L<float>& vVec,
-                               const Vec3L<float>& t, const Vec3L<float>& b, const Vec3L<float>& n, bool tangentSpace,
-                               const Vec3L<float>& base) {
+lanes::EnvironmentTermsL<float> envAt(const EnvironmentUniformsT<float>& e, const Vec3L<float>& nl, const Vec3L<float>& vVec,
+                                      const Vec3L<float>& t, const Vec3L<float>& b, const Vec3L<float>& n, bool tangentSpace,
+                                      const Vec3L<float>& base) {
   const Fragment f;
-  return environmentLanes<float>(e, environmentDirectionsLanes<float>(e, nl, vVec, t, b, n, tangentSpace), f, base);
+  return lanes::environmentMix<float>(e, lanes::environmentDirections<float>(e, nl, vVec, t, b, n, tangentSpace), f, base);
 }
 
 Vec3L<float> sample(const CubeMap& cube, glm::dvec3 r, float lod = 0.0f) {
-  return sampleCubeLodLanes<float>(cube, Vec3L<float>(vec3(r)), lod);
+  return lanes::sampleCubeLod<float>(cube, Vec3L<float>(vec3(r)), lod);
 }
 
 TEST(CubeSample, ATexelCentreReadsThatTexel) {
@@ -64,18 +64,18 @@ TEST(CubeSample, ATexelCentreReadsThatTexel) {
 }
 
 TEST(CubeSample, FaceSelectionFollowsLlvmpipesTieRule) {
-  EXPECT_EQ(cubeCoordLanes<float>(Vec3L<float>(1.0f, 1.0f, 0.3f)).face, 2.0f);   // x = y: y
-  EXPECT_EQ(cubeCoordLanes<float>(Vec3L<float>(1.0f, -1.0f, 0.0f)).face, 3.0f);
-  EXPECT_EQ(cubeCoordLanes<float>(Vec3L<float>(1.0f, 1.0f, 1.0f)).face, 4.0f);   // z wins every tie
-  EXPECT_EQ(cubeCoordLanes<float>(Vec3L<float>(-1.0f, 1.0f, -1.0f)).face, 5.0f);
-  EXPECT_EQ(cubeCoordLanes<float>(Vec3L<float>(0.0f, 0.0f, 0.0f)).face, 4.0f);   // zero: +Z, centre
-  EXPECT_EQ(cubeCoordLanes<float>(Vec3L<float>(0.0f, 0.0f, -0.0f)).face, 5.0f);  // -0: the sign bit
-  EXPECT_EQ(cubeCoordLanes<float>(Vec3L<float>(0.0f, 0.0f, 0.0f)).s, 0.5f);
+  EXPECT_EQ(lanes::cubeCoord<float>(Vec3L<float>(1.0f, 1.0f, 0.3f)).face, 2.0f);   // x = y: y
+  EXPECT_EQ(lanes::cubeCoord<float>(Vec3L<float>(1.0f, -1.0f, 0.0f)).face, 3.0f);
+  EXPECT_EQ(lanes::cubeCoord<float>(Vec3L<float>(1.0f, 1.0f, 1.0f)).face, 4.0f);   // z wins every tie
+  EXPECT_EQ(lanes::cubeCoord<float>(Vec3L<float>(-1.0f, 1.0f, -1.0f)).face, 5.0f);
+  EXPECT_EQ(lanes::cubeCoord<float>(Vec3L<float>(0.0f, 0.0f, 0.0f)).face, 4.0f);   // zero: +Z, centre
+  EXPECT_EQ(lanes::cubeCoord<float>(Vec3L<float>(0.0f, 0.0f, -0.0f)).face, 5.0f);  // -0: the sign bit
+  EXPECT_EQ(lanes::cubeCoord<float>(Vec3L<float>(0.0f, 0.0f, 0.0f)).s, 0.5f);
   // The float path agrees with the double table everywhere off the ties.
   for (int i = 0; i < 1000; ++i) {
     const glm::dvec3 r(std::sin(i * 1.7), std::cos(i * 2.3), std::sin(i * 0.37 + 1.0));
     const CubeCoord exact = cubeCoordFromDirection(r);
-    const CubeCoordL<float> c = cubeCoordLanes<float>(Vec3L<float>(vec3(r)));
+    const lanes::CubeCoordL<float> c = lanes::cubeCoord<float>(Vec3L<float>(vec3(r)));
     EXPECT_EQ(c.face, static_cast<float>(exact.face)) << i;
     EXPECT_NEAR(c.s, exact.s, 1e-6) << i;
     EXPECT_NEAR(c.t, exact.t, 1e-6) << i;
@@ -148,21 +148,21 @@ TEST(CubeSample, TheImplicitLodFollowsTheDirectionsDifferences) {
   constexpr int kSide = 64;
   const Vec3L<float> centre(0.0f, 0.0f, 1.0f), none(0.0f);
   const float texel = 2.0f / kSide;
-  EXPECT_FLOAT_EQ(cubeLodLanes<float>(centre, Vec3L<float>(texel, 0.0f, 0.0f), none, kSide), 0.0f);
-  EXPECT_FLOAT_EQ(cubeLodLanes<float>(centre, Vec3L<float>(2.0f * texel, 0.0f, 0.0f), none, kSide), 1.0f);
-  EXPECT_FLOAT_EQ(cubeLodLanes<float>(centre, none, Vec3L<float>(0.0f, 4.0f * texel, 0.0f), kSide), 2.0f);
+  EXPECT_FLOAT_EQ(lanes::cubeLod<float>(centre, Vec3L<float>(texel, 0.0f, 0.0f), none, kSide), 0.0f);
+  EXPECT_FLOAT_EQ(lanes::cubeLod<float>(centre, Vec3L<float>(2.0f * texel, 0.0f, 0.0f), none, kSide), 1.0f);
+  EXPECT_FLOAT_EQ(lanes::cubeLod<float>(centre, none, Vec3L<float>(0.0f, 4.0f * texel, 0.0f), kSide), 2.0f);
   // The larger of the two axes decides.
-  EXPECT_FLOAT_EQ(cubeLodLanes<float>(centre, Vec3L<float>(texel, 0.0f, 0.0f), Vec3L<float>(0.0f, 8.0f * texel, 0.0f), kSide),
+  EXPECT_FLOAT_EQ(lanes::cubeLod<float>(centre, Vec3L<float>(texel, 0.0f, 0.0f), Vec3L<float>(0.0f, 8.0f * texel, 0.0f), kSide),
                   3.0f);
   // On -X (face 1) the same as on +Z: the face's own axes.
-  EXPECT_FLOAT_EQ(cubeLodLanes<float>(Vec3L<float>(-1.0f, 0.0f, 0.0f), Vec3L<float>(0.0f, 0.0f, 2.0f * texel), none, kSide), 1.0f);
+  EXPECT_FLOAT_EQ(lanes::cubeLod<float>(Vec3L<float>(-1.0f, 0.0f, 0.0f), Vec3L<float>(0.0f, 0.0f, 2.0f * texel), none, kSide), 1.0f);
   // The quotient rule: at s = 0.75 (x = z / 2) a step dz moves s by -x dz / (2 z^2) = -dz / 4,
   // so 4 texel units of z move two texels: lod 1 (at the centre the same step moves none).
-  EXPECT_FLOAT_EQ(cubeLodLanes<float>(Vec3L<float>(0.5f, 0.0f, 1.0f), Vec3L<float>(0.0f, 0.0f, 4.0f * texel), none, kSide),
+  EXPECT_FLOAT_EQ(lanes::cubeLod<float>(Vec3L<float>(0.5f, 0.0f, 1.0f), Vec3L<float>(0.0f, 0.0f, 4.0f * texel), none, kSide),
                   1.0f);
   // No difference, or a non-finite one: the finest level.
-  EXPECT_LT(cubeLodLanes<float>(centre, none, none, kSide), 0.0f);
-  EXPECT_LT(cubeLodLanes<float>(centre, Vec3L<float>(INFINITY, 0.0f, 0.0f), none, kSide), 0.0f);
+  EXPECT_LT(lanes::cubeLod<float>(centre, none, none, kSide), 0.0f);
+  EXPECT_LT(lanes::cubeLod<float>(centre, Vec3L<float>(INFINITY, 0.0f, 0.0f), none, kSide), 0.0f);
 }
 
 // The environment terms by hand: looking straight at a surface, R comes back along the view,
@@ -183,14 +183,14 @@ TEST(EnvironmentTerms, ReflectRefractSchlickAndTotalInternalReflection) {
   e.reflectivity = 0.25f;
   const Vec3L<float> n(0.0f, 0.0f, 1.0f), t(1.0f, 0.0f, 0.0f), b(0.0f, 1.0f, 0.0f), base(10.0f);
   // Head-on: R = +Z (face 4), mixed 1/4 into the base.
-  EnvironmentTermsL<float> head = envAt(e, n, Vec3L<float>(0.0f, 0.0f, 2.0f), t, b, n, false, base);
+  lanes::EnvironmentTermsL<float> head = envAt(e, n, Vec3L<float>(0.0f, 0.0f, 2.0f), t, b, n, false, base);
   EXPECT_EQ(head.reflectWorld, Vec3L<float>(0.0f, 0.0f, 1.0f));
   EXPECT_EQ(head.reflected.x, 4.0f);
   EXPECT_FLOAT_EQ(head.colour.x, 10.0f + (4.0f - 10.0f) * 0.25f);
   // Refraction with eta 1: straight through (-Z, face 5); no Fresnel: the share is reflectivity.
   e.refraction = true;
   e.eta = 1.0f;
-  EnvironmentTermsL<float> through = envAt(e, n, Vec3L<float>(0.0f, 0.0f, 1.0f), t, b, n, false, base);
+  lanes::EnvironmentTermsL<float> through = envAt(e, n, Vec3L<float>(0.0f, 0.0f, 1.0f), t, b, n, false, base);
   EXPECT_EQ(through.refractWorld, Vec3L<float>(0.0f, 0.0f, -1.0f));
   EXPECT_EQ(through.transmitted.x, 5.0f);
   // Schlick with eta 1: F0 = 0, so head-on nothing is reflected; at grazing (V along the
@@ -201,14 +201,14 @@ TEST(EnvironmentTerms, ReflectRefractSchlickAndTotalInternalReflection) {
   // Leaving water (eta 1.33) at 60 degrees from the normal: past the critical angle of 48.8.
   e.eta = 1.33f;
   const float angle = 60.0f * 3.14159265f / 180.0f;
-  EnvironmentTermsL<float> trapped =
+  lanes::EnvironmentTermsL<float> trapped =
       envAt(e, n, Vec3L<float>(std::sin(angle), 0.0f, std::cos(angle)), t, b, n, false, base);
   EXPECT_TRUE(trapped.totalInternal);
   EXPECT_EQ(trapped.transmitted, trapped.reflected);
   // In tangent lighting space the directions are brought to world space by the frame.
   const Vec3L<float> tw(0.0f, 1.0f, 0.0f), bw(0.0f, 0.0f, 1.0f), nw(1.0f, 0.0f, 0.0f);
   e.refraction = false;
-  EnvironmentTermsL<float> tangent = envAt(e, n, Vec3L<float>(0.0f, 0.0f, 1.0f), tw, bw, nw, true, base);
+  lanes::EnvironmentTermsL<float> tangent = envAt(e, n, Vec3L<float>(0.0f, 0.0f, 1.0f), tw, bw, nw, true, base);
   EXPECT_EQ(tangent.reflectWorld, Vec3L<float>(1.0f, 0.0f, 0.0f));
   EXPECT_EQ(tangent.reflected.x, 0.0f);  // face +X
 }
@@ -223,50 +223,50 @@ TEST(MapSample, CoordinatesTexelCentresAndLods) {
     const ParameterizedMap map = parameterizedMapFromCube(cube, kind, 16);
     for (const glm::dvec3& r : {glm::dvec3(0.3, -0.2, 0.9), glm::dvec3(-0.8, 0.5, -0.3), glm::dvec3(0.1, 0.99, 0.05)}) {
       const MapCoord exact = mapCoordFromDirection(kind, r);
-      const MapCoordL<float> c = mapCoordLanes<float>(kind, Vec3L<float>(vec3(r * 2.0)));
+      const lanes::MapCoordL<float> c = lanes::environmentCoord<float>(kind, Vec3L<float>(vec3(r * 2.0)));
       EXPECT_EQ(static_cast<int>(c.layer), exact.layer) << toString(kind);
       EXPECT_NEAR(c.u, exact.u, 1e-6) << toString(kind);
       EXPECT_NEAR(c.v, exact.v, 1e-6) << toString(kind);
     }
     const CubeMapLevel& level0 = map.levels[0];
     for (int layer = 0; layer < map.layers; ++layer) {
-      const MapCoordL<float> centre{static_cast<float>(layer), 5.5f / 16.0f, 9.5f / 16.0f};
-      const Vec3L<float> read = sampleMapLodLanes<float>(map, centre, 0.0f);
+      const lanes::MapCoordL<float> centre{static_cast<float>(layer), 5.5f / 16.0f, 9.5f / 16.0f};
+      const Vec3L<float> read = lanes::sampleMapLod<float>(map, centre, 0.0f);
       EXPECT_EQ(vec3(read.x, read.y, read.z), level0.texel(layer, 5, 9)) << toString(kind) << " layer " << layer;
       // Off the edge: clamped to the edge texel.
-      const Vec3L<float> past = sampleMapLodLanes<float>(map, MapCoordL<float>{static_cast<float>(layer), -0.3f, 1.7f}, 0.0f);
+      const Vec3L<float> past = lanes::sampleMapLod<float>(map, lanes::MapCoordL<float>{static_cast<float>(layer), -0.3f, 1.7f}, 0.0f);
       EXPECT_EQ(vec3(past.x, past.y, past.z), level0.texel(layer, 0, 15));
     }
     // One texel per pixel along u is LOD 0, four texels along v LOD 2 (the larger axis).
-    EXPECT_EQ(mapLodLanes<float>(Vec2L<float>(1.0f / 16.0f, 0.0f), Vec2L<float>(0.0f, 4.0f / 16.0f), 16), 2.0f);
-    EXPECT_EQ(mapLodLanes<float>(Vec2L<float>(1.0f / 16.0f, 0.0f), Vec2L<float>(0.0f, 1.0f / 16.0f), 16), 0.0f);
+    EXPECT_EQ(lanes::mapLod<float>(Vec2L<float>(1.0f / 16.0f, 0.0f), Vec2L<float>(0.0f, 4.0f / 16.0f), 16), 2.0f);
+    EXPECT_EQ(lanes::mapLod<float>(Vec2L<float>(1.0f / 16.0f, 0.0f), Vec2L<float>(0.0f, 1.0f / 16.0f), 16), 0.0f);
     // Half way between levels 1 and 2 at a layer's centre: the two levels' centre values blended.
-    const MapCoordL<float> middle{0.0f, 0.5f, 0.5f};
-    const Vec3L<float> a = sampleMapLodLanes<float>(map, middle, 1.0f), b = sampleMapLodLanes<float>(map, middle, 2.0f);
-    const Vec3L<float> blended = sampleMapLodLanes<float>(map, middle, 1.5f);
+    const lanes::MapCoordL<float> middle{0.0f, 0.5f, 0.5f};
+    const Vec3L<float> a = lanes::sampleMapLod<float>(map, middle, 1.0f), b = lanes::sampleMapLod<float>(map, middle, 2.0f);
+    const Vec3L<float> blended = lanes::sampleMapLod<float>(map, middle, 1.5f);
     EXPECT_NEAR(blended.x, 0.5f * (a.x + b.x), 1e-5f);
     EXPECT_NEAR(blended.y, 0.5f * (a.y + b.y), 1e-5f);
   }
 }
 
-// sampleEnvironmentLanes reads the map when there is one, the cube otherwise; the map's
+// sampleEnvironment reads the map when there is one, the cube otherwise; the map's
 // differences come from the coordinates at the quad's first pixel, its right and above.
 TEST(MapSample, TheEnvironmentReadsTheMapWhenThereIsOne) {
   const CubeMap cube = labelledCube();
   const ParameterizedMap map = parameterizedMapFromCube(cube, EnvironmentParameterization::Sphere, 16);
   const Vec3L<float> r(vec3(0.2f, 0.1f, 0.95f));
   const Vec3L<float> zero(vec3(0.0f));
-  const Vec3L<float> fromCube = sampleEnvironmentLanes<float>(cube, nullptr, r, zero, zero);
-  const Vec3L<float> cubeDirect = sampleCubeLodLanes<float>(cube, r, 0.0f);
+  const Vec3L<float> fromCube = lanes::sampleEnvironment<float>(cube, nullptr, r, zero, zero);
+  const Vec3L<float> cubeDirect = lanes::sampleCubeLod<float>(cube, r, 0.0f);
   EXPECT_EQ(vec3(fromCube.x, fromCube.y, fromCube.z), vec3(cubeDirect.x, cubeDirect.y, cubeDirect.z));
-  const Vec3L<float> fromMap = sampleEnvironmentLanes<float>(cube, &map, r, zero, zero);
-  const Vec3L<float> mapDirect = sampleMapLodLanes<float>(map, mapCoordLanes<float>(map.kind, r), 0.0f);
+  const Vec3L<float> fromMap = lanes::sampleEnvironment<float>(cube, &map, r, zero, zero);
+  const Vec3L<float> mapDirect = lanes::sampleMapLod<float>(map, lanes::environmentCoord<float>(map.kind, r), 0.0f);
   EXPECT_EQ(vec3(fromMap.x, fromMap.y, fromMap.z), vec3(mapDirect.x, mapDirect.y, mapDirect.z));
   Vec3L<float> dx(zero), dy(zero);
   const Vec3L<float> right(vec3(0.25f, 0.1f, 0.95f)), above(vec3(0.2f, 0.2f, 0.95f));
-  mapDifferencesLanes<float>(map.kind, r, right, above, dx, dy);
-  const MapCoordL<float> c0 = mapCoordLanes<float>(map.kind, r), cx = mapCoordLanes<float>(map.kind, right),
-                         cy = mapCoordLanes<float>(map.kind, above);
+  lanes::mapDifferences<float>(map.kind, r, right, above, dx, dy);
+  const lanes::MapCoordL<float> c0 = lanes::environmentCoord<float>(map.kind, r), cx = lanes::environmentCoord<float>(map.kind, right),
+                         cy = lanes::environmentCoord<float>(map.kind, above);
   EXPECT_EQ(dx.x, cx.u - c0.u);
   EXPECT_EQ(dx.y, cx.v - c0.v);
   EXPECT_EQ(dy.y, cy.v - c0.v);

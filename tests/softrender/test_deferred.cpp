@@ -46,7 +46,7 @@ TEST(Deferred, WorldFromWindowRebuildsAProjectedPoint) {
     // A pixel centre's window position: the point itself, moved to the centre it lies in.
     const float px = std::floor((ndc.x * 0.5f + 0.5f) * width), py = std::floor((ndc.y * 0.5f + 0.5f) * height);
     const float depth = ndc.z * 0.5f + 0.5f;
-    const vec3 back = worldFromWindowLanes<float>(worldFromClip, vec2(width, height), px, py, depth);
+    const vec3 back = lanes::worldFromWindow<float>(worldFromClip, vec2(width, height), px, py, depth);
     // The rebuilt point lies on the pixel centre's ray at the point's depth: within a pixel's
     // footprint (under 0.01 world units here) of it.
     EXPECT_LT(glm::length(back - p), 0.01f) << p.x << ", " << p.y << ", " << p.z;
@@ -58,7 +58,7 @@ TEST(Deferred, WorldFromWindowRebuildsAProjectedPoint) {
 TEST(Deferred, PerLaneExponentGivesPhongPowsBits) {
   for (const float s : {0.0f, 1.0f, 8.0f, 32.0f, 700.0f}) {
     for (const float x : {0.0f, 1e-30f, 0.25f, 0.5f, 0.999f, 1.0f, -0.5f, INFINITY}) {
-      const float a = phongPow<float>(x, s), b = phongPowPerLane<float>(x, s);
+      const float a = lanes::phongPow<float>(x, s), b = lanes::phongPowPerLane<float>(x, s);
       EXPECT_EQ(std::memcmp(&a, &b, sizeof a), 0) << x << "^" << s;
     }
   }
@@ -107,8 +107,8 @@ TEST(Deferred, StoredPositionLiesWhereTheDepthSaysItDoes) {
       const std::size_t i = static_cast<std::size_t>(row) * width + static_cast<std::size_t>(px);
       if (!(out.depth[i] < 1.0f)) continue;
       const float py = static_cast<float>(height - 1 - row);  // window rows count from the bottom
-      const vec3 rebuilt = worldFromWindowLanes<float>(worldFromClip, vec2(width, height), static_cast<float>(px), py,
-                                                       out.depth[i]);
+      const vec3 rebuilt = lanes::worldFromWindow<float>(worldFromClip, vec2(width, height), static_cast<float>(px), py,
+                                                         out.depth[i]);
       EXPECT_LT(glm::length(rebuilt - vec3(out.gbuffer->position[i])), 1e-3f) << "pixel " << px << ", " << row;
       ++checked;
     }

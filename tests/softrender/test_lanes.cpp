@@ -97,8 +97,8 @@ std::vector<float> distances() {
 void AttenuationIsTheSharedSourceAndSeesAReordering() {
   const vec3 a(1.0f, 0.09f, 0.032f);  // LearnOpenGL's 50-unit light
   const std::vector<float> d = distances();
-  const auto shared = [&](LaneF x) HWY_ATTR { return attenuationLanes<LaneF>(a, x); };
-  const auto teaching = [&](float x) { return ::twr::attenuationLanes<float>(a, x); };  // the plain (teaching) instantiation
+  const auto shared = [&](LaneF x) HWY_ATTR { return attenuation<LaneF>(a, x); };
+  const auto teaching = [&](float x) { return ::twr::lanes::attenuation<float>(a, x); };  // the plain (teaching) instantiation
   EXPECT_EQ(countDifferences(d, shared, teaching), 0u) << "target " << hwy::TargetName(HWY_TARGET);
   // The same formula in Horner's form: equal in exact arithmetic, not in float.
   const auto horner = [&](LaneF x) HWY_ATTR {
@@ -160,7 +160,7 @@ void PhongPowAndBytesAreTheSharedSource() {
   for (float& v : values) v = x(rng);
   for (const float s : {0.0f, 1.0f, 7.5f, 32.0f, 200.0f}) {
     const auto lanes = [&](LaneF v) HWY_ATTR { return phongPow<LaneF>(v, s); };
-    const auto scalar = [&](float v) { return ::twr::phongPow<float>(v, s); };
+    const auto scalar = [&](float v) { return ::twr::lanes::phongPow<float>(v, s); };
     EXPECT_EQ(countDifferences(values, lanes, scalar), 0u) << "s = " << s;
   }
   const auto lanes = [](LaneF v) HWY_ATTR { return byteValueOf<LaneF>(v); };
@@ -193,8 +193,8 @@ void SamplingIsTheSharedSource() {
               lod[l] = at + l < lodValues.size() ? lodValues[at + l] : 0.0f;
             }
             at += laneCount();
-            const Vec4L<LaneF> texel = sampleTextureLanes<LaneF>(texture, Vec2L<LaneF>(u, LaneF(hn::Load(DF(), v))),
-                                                                 filter, LaneF(hn::Load(DF(), lod)));
+            const Vec4L<LaneF> texel = sampleTexture<LaneF>(texture, Vec2L<LaneF>(u, LaneF(hn::Load(DF(), v))),
+                                                            filter, LaneF(hn::Load(DF(), lod)));
             return channel == 0 ? texel.x : channel == 1 ? texel.y : channel == 2 ? texel.z : texel.w;
           };
           std::size_t scalarAt = 0;

@@ -143,9 +143,9 @@ TEST(Shade, LightAtTheSurfaceIsFinite) {
 }
 
 TEST(Shade, ZeroShininessAndZeroReflectionFollowTheContract) {
-  EXPECT_EQ(phongPow(0.0f, 0.0f), 1.0f);
-  EXPECT_EQ(phongPow(0.0f, 8.0f), 0.0f);
-  EXPECT_NEAR(phongPow(0.5f, 2.0f), 0.25f, kEps);
+  EXPECT_EQ(lanes::phongPow(0.0f, 0.0f), 1.0f);
+  EXPECT_EQ(lanes::phongPow(0.0f, 8.0f), 0.0f);
+  EXPECT_NEAR(lanes::phongPow(0.5f, 2.0f), 0.25f, kEps);
   ShadeUniforms u = uniformsWithLight({2, 0, 2}, {1, 0, 0});
   u.shininess = 0.0f;  // specular = ks * 1 whenever N.L > 0
   ShadeTerms terms;

@@ -209,6 +209,24 @@ TEST(ShadingTwins, EveryListedTwinExistsOnBothSides) {
   }
 }
 
+// The twins carry the GLSL's names (the namespace, not a suffix, tells the lane types apart):
+// a row whose names differ says why in its note (a shader's main(), a step the C++ shares).
+TEST(ShadingTwins, TwinsShareTheGlslNameOrTheRowSaysWhy) {
+  int sameName = 0;
+  for (const TwinRow& row : twinRows()) {
+    if (row.cppName.empty()) continue;  // GL only, checked above
+    const std::string where = "docs/shading.md:" + std::to_string(row.docLine) + ": ";
+    if (row.cppName == row.glslName) {
+      ++sameName;
+      continue;
+    }
+    EXPECT_FALSE(row.note.empty() || row.note.rfind("same name", 0) == 0)
+        << where << row.glslName << " -> " << row.cppName << ": give the C++ twin the GLSL's name, or say why not";
+    EXPECT_EQ(row.cppName.find("Lanes"), std::string::npos) << where << row.cppName << ": a suffix, not the GLSL's name";
+  }
+  EXPECT_GE(sameName, 60) << "most twins share their GLSL function's name";
+}
+
 TEST(ShadingTwins, NoGlslFunctionIsLongerThanAReaderTakesIn) {
   for (const GlslFunction& f : glslFunctions()) {
     EXPECT_LE(f.lineCount, kMaxGlslFunctionLines) << f.file << ":" << f.firstLine << ": " << f.name << " is "
@@ -239,10 +257,10 @@ TEST(ShadingTwins, PhongMainIsTheListOfNamedSteps) {
 // The checks can fail: a renamed C++ twin is missed, and a function nobody listed is found.
 TEST(ShadingTwins, TheDefinitionCheckTellsADefinitionFromACall) {
   const fs::path shade = sourceDir() / "softrender" / "shade-inl.h";
-  EXPECT_TRUE(definesFunction(shade, "surfaceFrameLanes"));
-  EXPECT_FALSE(definesFunction(shade, "surfaceFrameLanesRenamed"));
+  EXPECT_TRUE(definesFunction(shade, "surfaceFrame"));
+  EXPECT_FALSE(definesFunction(shade, "surfaceFrameRenamed"));
   // Called there, defined in environment-inl.h.
-  EXPECT_FALSE(definesFunction(shade, "environmentDiffuseLanes"));
+  EXPECT_FALSE(definesFunction(shade, "environmentDiffuse"));
 }
 
 // The length check counts a definition from its template line to its closing brace, skips

@@ -42,14 +42,14 @@ ShadowMap halfOccludedMap(float near, int pcf, vec2 bias) {
 float worldXOf(int texel) { return (static_cast<float>(texel) + 0.5f) / kSize * 2.0f - 1.0f; }
 
 template <typename T>
-ShadowTestL<T> testAt(const ShadowMap& map, vec3 p, vec3 n = vec3(0, 0, 1), vec3 l = vec3(0, 0, 1)) {
-  return shadowTestLanes<T>(makeShadowUniform<T>(&map), Vec3T<T>(p), Vec3T<T>(n), Vec3T<T>(l));
+lanes::ShadowTestL<T> testAt(const ShadowMap& map, vec3 p, vec3 n = vec3(0, 0, 1), vec3 l = vec3(0, 0, 1)) {
+  return lanes::shadowTest<T>(makeShadowUniform<T>(&map), Vec3T<T>(p), Vec3T<T>(n), Vec3T<T>(l));
 }
 
 TEST(ShadowTest, BehindTheOccluderIsShadowedInFrontIsLit) {
   const ShadowMap map = halfOccludedMap(0.5f, 1, vec2(0.001f, 0.0f));
   const float x = worldXOf(1);
-  const ShadowTestL<float> behind = testAt<float>(map, vec3(x, 0.0f, 0.2f));  // depth 0.6
+  const lanes::ShadowTestL<float> behind = testAt<float>(map, vec3(x, 0.0f, 0.2f));  // depth 0.6
   EXPECT_EQ(behind.visibility, 0.0f);
   EXPECT_FLOAT_EQ(behind.depth, 0.6f);
   EXPECT_EQ(behind.stored, 0.5f);
@@ -94,7 +94,7 @@ TEST(ShadowTest, OutsideTheMapIsLit) {
   const ShadowMap map = halfOccludedMap(0.0f, 3, vec2(0.0f));
   for (const vec3 p : {vec3(1.5f, 0.0f, 0.2f), vec3(-1.01f, 0.0f, 0.2f), vec3(worldXOf(1), 1.2f, 0.2f),
                        vec3(worldXOf(1), 0.0f, 1.5f)}) {
-    const ShadowTestL<float> t = testAt<float>(map, p);
+    const lanes::ShadowTestL<float> t = testAt<float>(map, p);
     EXPECT_EQ(t.visibility, 1.0f) << p.x << " " << p.y << " " << p.z;
     EXPECT_EQ(t.inside, 0.0f);
     EXPECT_EQ(t.stored, 1.0f);
@@ -106,8 +106,8 @@ TEST(ShadowTest, DoubleLanesAgreeWithFloat) {
   for (int i = 0; i < 64; ++i) {
     const vec3 p(-1.0f + 2.0f * static_cast<float>(i) / 63.0f, 0.3f, 0.1f * static_cast<float>(i % 5) - 0.2f);
     const vec3 l = glm::normalize(vec3(0.2f, 0.1f, 1.0f));
-    const ShadowTestL<float> f = testAt<float>(map, p, vec3(0, 0, 1), l);
-    const ShadowTestL<double> d = testAt<double>(map, p, vec3(0, 0, 1), l);
+    const lanes::ShadowTestL<float> f = testAt<float>(map, p, vec3(0, 0, 1), l);
+    const lanes::ShadowTestL<double> d = testAt<double>(map, p, vec3(0, 0, 1), l);
     EXPECT_NEAR(d.visibility, f.visibility, 1e-6) << i;
     EXPECT_NEAR(d.depth, f.depth, 1e-6) << i;
   }
@@ -154,7 +154,7 @@ TEST(ShadowTest, SpotMapCoversTheConeAndNothingBehindTheLight) {
   EXPECT_EQ(testAt<float>(map, vec3(edge, 1.0f, 0.0f), n, n).inside, 1.0f);
   EXPECT_EQ(testAt<float>(map, vec3(beyond, 1.0f, 0.0f), n, n).inside, 0.0f);
   // Behind the light: outside the map (and lit), never projected through it.
-  const ShadowTestL<float> behind = testAt<float>(map, vec3(0.2f, 4.0f, 0.1f), n, n);
+  const lanes::ShadowTestL<float> behind = testAt<float>(map, vec3(0.2f, 4.0f, 0.1f), n, n);
   EXPECT_EQ(behind.inside, 0.0f);
   EXPECT_EQ(behind.visibility, 1.0f);
   // Double lanes read the same texels.

@@ -48,7 +48,7 @@ struct WallView {
     settings.ssr.thickness = 0.1f;
     u = makeSsrUniforms(scene, settings, kSide, kSide);
     const vec4 clip = u.clipFromWorld * vec4(0.0f, 0.0f, -kWall, 1.0f);
-    depth.assign(kSide * kSide, ssrDistanceOfDepthLanes<float>(u, 0.5f * (clip.z / clip.w) + 0.5f));
+    depth.assign(kSide * kSide, lanes::distanceOfDepth<float>(u, 0.5f * (clip.z / clip.w) + 0.5f));
     plane.assign(kSide * kSide, 0.0f);
     u.surfaceDistance = depth.data();
     for (auto& c : u.colour) c = plane.data();
@@ -56,12 +56,12 @@ struct WallView {
 };
 
 template <typename L>
-SsrMarchL<L> marchFrom(const SsrUniformsT<ScalarOf<L>>& u, vec3 origin, vec3 dir) {
-  return ssrMarchLanes<L>(u, Vec3L<L>(origin), Vec3L<L>(glm::normalize(dir)), MaskOf<L>(true));
+lanes::SsrMarchL<L> marchFrom(const SsrUniformsT<ScalarOf<L>>& u, vec3 origin, vec3 dir) {
+  return lanes::march<L>(u, Vec3L<L>(origin), Vec3L<L>(glm::normalize(dir)), MaskOf<L>(true));
 }
 
-SsrMarchL<float> marchScreen(const SsrUniforms& u, vec3 origin, vec3 dir) {
-  return ssrScreenMarchLanes<float>(u, origin, glm::normalize(dir), true);
+lanes::SsrMarchL<float> marchScreen(const SsrUniforms& u, vec3 origin, vec3 dir) {
+  return lanes::screenMarch<float>(u, origin, glm::normalize(dir), true);
 }
 
 template <typename L>
@@ -81,31 +81,31 @@ void expectEveryOutcome() {
   u.thickness = S(view.u.thickness);
   u.surfaceDistance = view.depth.data();
   // The buffer's eye distance is the wall's, rebuilt from its depth.
-  EXPECT_NEAR(double(ssrBufferDistanceLanes<L>(u, L(S(0)))), kWall, 1e-3);
+  EXPECT_NEAR(double(lanes::bufferDistance<L>(u, L(S(0)))), kWall, 1e-3);
   // Straight at the wall from 1 in front of it: twenty steps of 0.05 (one more as the sums
   // round), a hit at the screen's middle.
-  const SsrMarchL<L> hit = marchFrom<L>(u, vec3(0.0f, 0.0f, -9.0f), vec3(0.0f, 0.0f, -1.0f));
-  EXPECT_EQ(hit.result, ssrResultLane<L>(SsrResult::Hit));
+  const lanes::SsrMarchL<L> hit = marchFrom<L>(u, vec3(0.0f, 0.0f, -9.0f), vec3(0.0f, 0.0f, -1.0f));
+  EXPECT_EQ(hit.result, lanes::ssrResultLane<L>(SsrResult::Hit));
   EXPECT_GE(hit.steps, L(S(20)));
   EXPECT_LE(hit.steps, L(S(21)));
   EXPECT_EQ(hit.hitIndex, L(S((kSide / 2 - 1) * kSide + kSide / 2)));  // pixel (4, 4), rows from the top
   // Towards the eye, off the centre: out of the frustum's side before it reaches the eye.
   EXPECT_EQ(marchFrom<L>(u, vec3(0.1f, 0.0f, -1.5f), vec3(0.0f, 0.0f, 1.0f)).result,
-            ssrResultLane<L>(SsrResult::OffScreen));
+            lanes::ssrResultLane<L>(SsrResult::OffScreen));
   // Sideways out of the frustum.
   EXPECT_EQ(marchFrom<L>(u, vec3(4.5f, 0.0f, -5.0f), vec3(1.0f, 0.0f, 0.0f)).result,
-            ssrResultLane<L>(SsrResult::OffScreen));
+            lanes::ssrResultLane<L>(SsrResult::OffScreen));
   // Steps of 3 jump from 2 in front of the wall to 1 behind it: more than the thickness.
   u.step = S(3);
   EXPECT_EQ(marchFrom<L>(u, vec3(0.0f, 0.0f, -2.0f), vec3(0.0f, 0.0f, -1.0f)).result,
-            ssrResultLane<L>(SsrResult::Behind));
+            lanes::ssrResultLane<L>(SsrResult::Behind));
   // adaptive_world halves the step at each overshoot down to 3 / 16, then decides: the crossing
   // at 9.875 to 10.0625 is within a thickness of 0.2 on both sides.
   u.march = SsrMarch::AdaptiveWorld;
   u.minStep = S(3) * S(kSsrAdaptiveMinStepRatio);
   u.thickness = S(0.2);
-  const SsrMarchL<L> adaptive = marchFrom<L>(u, vec3(0.0f, 0.0f, -2.0f), vec3(0.0f, 0.0f, -1.0f));
-  EXPECT_EQ(adaptive.result, ssrResultLane<L>(SsrResult::Hit));
+  const lanes::SsrMarchL<L> adaptive = marchFrom<L>(u, vec3(0.0f, 0.0f, -2.0f), vec3(0.0f, 0.0f, -1.0f));
+  EXPECT_EQ(adaptive.result, lanes::ssrResultLane<L>(SsrResult::Hit));
   EXPECT_EQ(adaptive.steps, L(S(9)));
   // Out of steps before anything: a miss.
   u.march = SsrMarch::LinearWorld;
@@ -113,10 +113,10 @@ void expectEveryOutcome() {
   u.thickness = S(0.1);
   u.maxSteps = 2;
   EXPECT_EQ(marchFrom<L>(u, vec3(0.0f, 0.0f, -5.0f), vec3(0.0f, 0.0f, -1.0f)).result,
-            ssrResultLane<L>(SsrResult::Miss));
+            lanes::ssrResultLane<L>(SsrResult::Miss));
   // A lane not marched stays so.
-  EXPECT_EQ(ssrMarchLanes<L>(u, Vec3L<L>(L(S(0))), Vec3L<L>(L(S(0)), L(S(0)), L(S(-1))), MaskOf<L>(false)).result,
-            ssrResultLane<L>(SsrResult::NotMarched));
+  EXPECT_EQ(lanes::march<L>(u, Vec3L<L>(L(S(0))), Vec3L<L>(L(S(0)), L(S(0)), L(S(-1))), MaskOf<L>(false)).result,
+            lanes::ssrResultLane<L>(SsrResult::NotMarched));
 }
 
 TEST(Ssr, MarchEndsInEachOutcomeFloat) { expectEveryOutcome<float>(); }
@@ -133,24 +133,24 @@ TEST(Ssr, HitAddsTheLitColourThereScaled) {
   // it passes the eye (190 steps of 0.05).
   view.u.maxSteps = 400;
   const vec3 albedo(1.0f);
-  const SsrMarchL<float> back =
-      ssrPixelLanes<float>(view.u, vec3(0.0f, 0.0f, 1.0f), vec3(0.0f, 0.0f, -9.5f), 0.8f, albedo, nullptr, true, colour)
+  const lanes::SsrMarchL<float> back =
+      lanes::ssrPixel<float>(view.u, vec3(0.0f, 0.0f, 1.0f), vec3(0.0f, 0.0f, -9.5f), 0.8f, albedo, nullptr, true, colour)
           .mirror;
-  EXPECT_EQ(back.result, ssrResultLane<float>(SsrResult::OffScreen));
+  EXPECT_EQ(back.result, lanes::ssrResultLane<float>(SsrResult::OffScreen));
   EXPECT_EQ(colour, vec3(0.25f, 0.0f, 0.0f));
   // Tilted up (normal (0, 1, 0.2)): the ray r = 2 (n.wo) n - wo goes on to the wall, rising 0.2
   // by then: pixel (4, 4).
-  const SsrMarchL<float> toWall = ssrPixelLanes<float>(view.u, glm::normalize(vec3(0.0f, 1.0f, 0.2f)),
-                                                       vec3(0.0f, 0.0f, -9.5f), 0.8f, albedo, nullptr, true, colour)
+  const lanes::SsrMarchL<float> toWall = lanes::ssrPixel<float>(view.u, glm::normalize(vec3(0.0f, 1.0f, 0.2f)),
+                                                                vec3(0.0f, 0.0f, -9.5f), 0.8f, albedo, nullptr, true, colour)
                                       .mirror;
-  EXPECT_EQ(toWall.result, ssrResultLane<float>(SsrResult::Hit));
+  EXPECT_EQ(toWall.result, lanes::ssrResultLane<float>(SsrResult::Hit));
   EXPECT_FLOAT_EQ(colour.r, 0.25f + 0.5f * (0.5f * 0.8f));
   EXPECT_EQ(colour.g, 0.0f);
   // ssr_reflect 0: not marched, the colour kept.
   vec3 kept(0.3f);
-  const SsrPixelL<float> none =
-      ssrPixelLanes<float>(view.u, vec3(0.0f, 0.0f, -1.0f), vec3(0.0f, 0.0f, -5.0f), 0.0f, albedo, nullptr, true, kept);
-  EXPECT_EQ(none.mirror.result, ssrResultLane<float>(SsrResult::NotMarched));
+  const lanes::SsrPixelL<float> none =
+      lanes::ssrPixel<float>(view.u, vec3(0.0f, 0.0f, -1.0f), vec3(0.0f, 0.0f, -5.0f), 0.0f, albedo, nullptr, true, kept);
+  EXPECT_EQ(none.mirror.result, lanes::ssrResultLane<float>(SsrResult::NotMarched));
   EXPECT_FALSE(none.changed);
   EXPECT_EQ(kept, vec3(0.3f));
 }
@@ -158,9 +158,9 @@ TEST(Ssr, HitAddsTheLitColourThereScaled) {
 // Known answers (computed apart from this code): GLSL's randomPair runs the same integers,
 // and a change here would change every indirect image.
 TEST(Ssr, PcgHashKnownAnswers) {
-  EXPECT_EQ(pcgHashOf(0u), 129708002u);
-  EXPECT_EQ(pcgHashOf(1u), 2831084092u);
-  EXPECT_EQ(pcgHashOf(12345u), 4099845390u);
+  EXPECT_EQ(pcgHash(0u), 129708002u);
+  EXPECT_EQ(pcgHash(1u), 2831084092u);
+  EXPECT_EQ(pcgHash(12345u), 4099845390u);
   EXPECT_EQ(ssrRandomPairOf(3, 4, 0), vec2(16614390.0f / 16777216.0f, 13960342.0f / 16777216.0f));
 }
 
@@ -191,7 +191,7 @@ TEST(Ssr, RandomPairsAreFixedPerPixelAndSampleAndSpreadOverTheSquare) {
 TEST(Ssr, CircleIsWithinAMillionthOfTheLibrarys) {
   for (int i = 0; i < 4096; ++i) {
     const double turn = i / 4096.0;
-    const vec2 c = ssrCircleLanes<float>(static_cast<float>(turn));
+    const vec2 c = lanes::circle<float>(static_cast<float>(turn));
     EXPECT_NEAR(c.x, std::cos(2.0 * 3.141592653589793 * turn), 1e-6) << turn;
     EXPECT_NEAR(c.y, std::sin(2.0 * 3.141592653589793 * turn), 1e-6) << turn;
   }
@@ -210,7 +210,7 @@ TEST(Ssr, HemisphereSamplesEstimateTheCosineIntegral) {
       constexpr int kSamples = 20000;
       for (int k = 0; k < kSamples; ++k) {
         float weight = 0.0f;
-        const vec3 dir = ssrHemisphereLanes<float>(u, n, ssrRandomPairOf(7, 11, static_cast<std::uint32_t>(k)), weight);
+        const vec3 dir = lanes::hemisphere<float>(u, n, ssrRandomPairOf(7, 11, static_cast<std::uint32_t>(k)), weight);
         ASSERT_NEAR(glm::length(dir), 1.0f, 1e-5f);
         ASSERT_GE(glm::dot(dir, n), -1e-5f);
         weights += weight;
@@ -276,14 +276,14 @@ TEST_P(SsrScreenMarches, EndInEachOutcome) {
   ScreenView view(GetParam());
   const SsrUniforms& u = view.ready();
   // Right and away from 5 in front of the eye: the wall at x = 5, seen at window x 48.
-  const SsrMarchL<float> hit = marchScreen(u, vec3(0.0f, 0.0f, -5.0f), vec3(1.0f, 0.0f, -1.0f));
-  EXPECT_EQ(hit.result, ssrResultLane<float>(SsrResult::Hit));
+  const lanes::SsrMarchL<float> hit = marchScreen(u, vec3(0.0f, 0.0f, -5.0f), vec3(1.0f, 0.0f, -1.0f));
+  EXPECT_EQ(hit.result, lanes::ssrResultLane<float>(SsrResult::Hit));
   const auto [hitX, hitY] = pixelOf(hit.hitIndex, kScreenSide, kScreenSide);
   EXPECT_NEAR(hitX, 48, 1);
   EXPECT_EQ(hitY, 32);
   // Parallel to the wall, to the right: off the screen at pixel 64, 32 samples on.
-  const SsrMarchL<float> off = marchScreen(u, vec3(0.0f, 0.0f, -5.0f), vec3(1.0f, 0.0f, 0.0f));
-  EXPECT_EQ(off.result, ssrResultLane<float>(SsrResult::OffScreen));
+  const lanes::SsrMarchL<float> off = marchScreen(u, vec3(0.0f, 0.0f, -5.0f), vec3(1.0f, 0.0f, 0.0f));
+  EXPECT_EQ(off.result, lanes::ssrResultLane<float>(SsrResult::OffScreen));
   if (GetParam() == SsrMarch::DdaScreen) {
     EXPECT_EQ(off.steps, 32.0f);
   }
@@ -291,10 +291,10 @@ TEST_P(SsrScreenMarches, EndInEachOutcome) {
   ScreenView few(GetParam());
   few.u.maxSteps = 3;
   EXPECT_EQ(marchScreen(few.ready(), vec3(0.0f, 0.0f, -5.0f), vec3(1.0f, 0.0f, -1.0f)).result,
-            ssrResultLane<float>(SsrResult::Miss));
+            lanes::ssrResultLane<float>(SsrResult::Miss));
   // Straight away from the eye: under a pixel on the screen, nothing to march.
   EXPECT_EQ(marchScreen(u, vec3(0.0f, 0.0f, -5.0f), vec3(0.0f, 0.0f, -1.0f)).result,
-            ssrResultLane<float>(SsrResult::Miss));
+            lanes::ssrResultLane<float>(SsrResult::Miss));
 }
 
 TEST_P(SsrScreenMarches, PassBehindANearerSurfaceAndOverTheSky) {
@@ -303,19 +303,19 @@ TEST_P(SsrScreenMarches, PassBehindANearerSurfaceAndOverTheSky) {
   ScreenView pole(GetParam());
   pole.column(40, 6.0f);
   pole.column(41, 6.0f);
-  const SsrMarchL<float> behind = marchScreen(pole.ready(), vec3(0.0f, 0.0f, -5.0f), vec3(1.0f, 0.0f, -1.0f));
-  EXPECT_EQ(behind.result, ssrResultLane<float>(SsrResult::Behind));
+  const lanes::SsrMarchL<float> behind = marchScreen(pole.ready(), vec3(0.0f, 0.0f, -5.0f), vec3(1.0f, 0.0f, -1.0f));
+  EXPECT_EQ(behind.result, lanes::ssrResultLane<float>(SsrResult::Behind));
   // The same pole at 6.7 is met within the thickness.
   ScreenView near(GetParam());
   for (int x = 38; x < 44; ++x) near.column(x, 6.69f);
-  const SsrMarchL<float> met = marchScreen(near.ready(), vec3(0.0f, 0.0f, -5.0f), vec3(1.0f, 0.0f, -1.0f));
-  EXPECT_EQ(met.result, ssrResultLane<float>(SsrResult::Hit));
+  const lanes::SsrMarchL<float> met = marchScreen(near.ready(), vec3(0.0f, 0.0f, -5.0f), vec3(1.0f, 0.0f, -1.0f));
+  EXPECT_EQ(met.result, lanes::ssrResultLane<float>(SsrResult::Hit));
   EXPECT_NEAR(pixelOf(met.hitIndex, kScreenSide, kScreenSide).first, 40, 1);
   // Nothing drawn anywhere (the sky's distance): the ray runs to its end at the far distance.
   ScreenView sky(GetParam());
   sky.plane.assign(sky.plane.size(), sky.u.skyDistance);
   EXPECT_EQ(marchScreen(sky.ready(), vec3(0.0f, 0.0f, -5.0f), vec3(0.2f, 0.0f, -1.0f)).result,
-            ssrResultLane<float>(SsrResult::Miss));
+            lanes::ssrResultLane<float>(SsrResult::Miss));
 }
 INSTANTIATE_TEST_SUITE_P(Marches, SsrScreenMarches, ::testing::Values(SsrMarch::DdaScreen, SsrMarch::Hiz),
                          [](const auto& info) { return std::string(toString(info.param)); });
@@ -384,10 +384,10 @@ TEST(Ssr, HizEndsEveryRayAsDdaDoesInFewerSteps) {
     const vec3 origin((next() - 0.5f) * 4.0f, (next() - 0.5f) * 4.0f, -2.0f - next() * 4.0f);
     const vec3 dir(next() - 0.5f, next() - 0.5f, -next());
     if (glm::length(dir) < 0.1f) continue;
-    const SsrMarchL<float> a = marchScreen(ud, origin, dir);
-    const SsrMarchL<float> b = marchScreen(uh, origin, dir);
+    const lanes::SsrMarchL<float> a = marchScreen(ud, origin, dir);
+    const lanes::SsrMarchL<float> b = marchScreen(uh, origin, dir);
     ASSERT_EQ(a.result, b.result) << "ray " << ray;
-    if (a.result == ssrResultLane<float>(SsrResult::Hit)) {
+    if (a.result == lanes::ssrResultLane<float>(SsrResult::Hit)) {
       ++hits;
       EXPECT_EQ(a.hitIndex, b.hitIndex) << "ray " << ray;
     }
@@ -402,7 +402,7 @@ TEST(Ssr, HizEndsEveryRayAsDdaDoesInFewerSteps) {
 }
 
 // The kind a march's last recorded step must have for its result.
-bool lastStepFits(const SsrMarchL<float>& m, const std::vector<SsrMarchStep>& log) {
+bool lastStepFits(const lanes::SsrMarchL<float>& m, const std::vector<SsrMarchStep>& log) {
   if (log.empty()) return false;
   const SsrStepKind last = log.back().kind;
   switch (static_cast<SsrResult>(static_cast<int>(m.result))) {
@@ -436,12 +436,12 @@ TEST(Ssr, TheRecordedStepsAreTheMarchsOwn) {
       const vec3 origin((next() - 0.5f) * 3.0f, (next() - 0.5f) * 3.0f, -2.0f - next() * 2.0f);
       const vec3 dir = glm::normalize(vec3(next() - 0.5f, next() - 0.5f, -0.2f - next()));
       std::vector<SsrMarchStep> log;
-      const SsrMarchL<float> plain = ssrScreenMarchLanes<float>(*u, origin, dir, true);
-      const SsrMarchL<float> logged = ssrScreenMarchLanes<float>(*u, origin, dir, true, &log);
+      const lanes::SsrMarchL<float> plain = lanes::screenMarch<float>(*u, origin, dir, true);
+      const lanes::SsrMarchL<float> logged = lanes::screenMarch<float>(*u, origin, dir, true, &log);
       ASSERT_EQ(std::memcmp(&plain, &logged, sizeof plain), 0) << "ray " << ray;
       ASSERT_EQ(log.size(), static_cast<std::size_t>(plain.steps)) << "ray " << ray;
       EXPECT_TRUE(lastStepFits(plain, log)) << "ray " << ray << ": " << toString(log.back().kind);
-      if (plain.result == ssrResultLane<float>(SsrResult::Hit)) {
+      if (plain.result == lanes::ssrResultLane<float>(SsrResult::Hit)) {
         ++hits;
         EXPECT_EQ(log.back().pixel, vec2(plain.hitX, plain.hitY)) << "ray " << ray;
         EXPECT_GE(log.back().rayDistance, log.back().surfaceDistance) << "a hit lies behind the surface";
@@ -461,8 +461,8 @@ TEST(Ssr, TheRecordedStepsAreTheMarchsOwn) {
   SsrUniforms u = view.u;
   u.surfaceDistance = view.depth.data();
   std::vector<SsrMarchStep> log;
-  const SsrMarchL<float> hit =
-      ssrMarchLanes<float>(u, vec3(0.0f, 0.0f, -9.0f), vec3(0.0f, 0.0f, -1.0f), true, &log);
+  const lanes::SsrMarchL<float> hit =
+      lanes::march<float>(u, vec3(0.0f, 0.0f, -9.0f), vec3(0.0f, 0.0f, -1.0f), true, &log);
   ASSERT_EQ(log.size(), static_cast<std::size_t>(hit.steps));
   EXPECT_EQ(log.back().kind, SsrStepKind::Hit);
   EXPECT_NEAR(log.front().along, 0.05f, 1e-6f);
@@ -472,8 +472,8 @@ TEST(Ssr, TheRecordedStepsAreTheMarchsOwn) {
   u.minStep = 3.0f * kSsrAdaptiveMinStepRatio;
   u.thickness = 0.2f;
   log.clear();
-  const SsrMarchL<float> adaptive =
-      ssrMarchLanes<float>(u, vec3(0.0f, 0.0f, -2.0f), vec3(0.0f, 0.0f, -1.0f), true, &log);
+  const lanes::SsrMarchL<float> adaptive =
+      lanes::march<float>(u, vec3(0.0f, 0.0f, -2.0f), vec3(0.0f, 0.0f, -1.0f), true, &log);
   ASSERT_EQ(log.size(), static_cast<std::size_t>(adaptive.steps));
   EXPECT_EQ(std::count_if(log.begin(), log.end(), [](const SsrMarchStep& s) { return s.kind == SsrStepKind::Refine; }), 4)
       << "3 halves to 3/16 in four steps";

@@ -112,12 +112,12 @@ Texture noiseTexture(int width, int height) {
 TEST(TextureSample, AMagnifiedOrWholeLodTrilinearReadTakesOneLevel) {
   const Texture t = noiseTexture(16, 16);
   for (float lod : {-3.0f, -0.25f, 0.0f, 1.0f, 2.0f}) {
-    const MipLevelsL<float> m = mipLevelsLanes<float>(t, TextureFilter::Trilinear, lod);
+    const lanes::MipLevelsL<float> m = lanes::mipLevels<float>(t, TextureFilter::Trilinear, lod);
     EXPECT_EQ(m.fraction, 0.0f) << lod;
     EXPECT_EQ(m.level1, m.level0) << lod;
     EXPECT_EQ(m.highest, m.lowest) << lod;  // the second level is never read
   }
-  const MipLevelsL<float> blend = mipLevelsLanes<float>(t, TextureFilter::Trilinear, 1.5f);
+  const lanes::MipLevelsL<float> blend = lanes::mipLevels<float>(t, TextureFilter::Trilinear, 1.5f);
   EXPECT_EQ(blend.level0, 1.0f);
   EXPECT_EQ(blend.level1, 2.0f);
   EXPECT_EQ(blend.fraction, 0.5f);
@@ -134,10 +134,10 @@ TEST(TextureSample, TheMarchsCompiledCaseReadsTheSameBitsAsTheGeneralOne) {
     for (int i = 0; i < 2000; ++i) {
       const vec2 uv(next() * 6.0f - 3.0f, next() * 6.0f - 3.0f);
       const float lod = next() * 7.0f - 2.0f;
-      const MipLevelsL<float> m = mipLevelsLanes<float>(t, filter, lod);
-      const float any = sampleMipLevelsInlineLanes<float, Texture, float, SamplerCase::kAny>(t, uv, filter, m);
+      const lanes::MipLevelsL<float> m = lanes::mipLevels<float>(t, filter, lod);
+      const float any = lanes::sampleMipLevelsInline<float, Texture, float, lanes::SamplerCase::kAny>(t, uv, filter, m);
       const float fixed =
-          sampleMipLevelsInlineLanes<float, Texture, float, SamplerCase::kRepeatLinearUnorm>(t, uv, filter, m);
+          lanes::sampleMipLevelsInline<float, Texture, float, lanes::SamplerCase::kRepeatLinearUnorm>(t, uv, filter, m);
       ASSERT_EQ(std::bit_cast<std::uint32_t>(any), std::bit_cast<std::uint32_t>(fixed))
           << "uv " << uv.x << ", " << uv.y << " lod " << lod;
     }
