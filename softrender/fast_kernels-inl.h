@@ -1,0 +1,651 @@
+// The fast path's kernel bodies, once per Highway target (fast_kernels.h says what they do;
+// fast_kernels.cpp re-includes this file through hwy/foreach_target.h and holds the dispatch).
+// The shading itself is not here: the shared sources (softrender/*-inl.h) are included below
+// into each target's namespace and instantiated with that target's LaneF. What is here is the
+// fast path's own design: the visibility pass, the slot buffer, gathering a vector's
+// triangles, tiled textures, and each kernel's loop over a bin.
+//
+// Highway's per-target include guard: the toggle flips on every pass, so each target's pass
+// compiles the bodies once.
+#if defined(TWR_FAST_KERNELS_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef TWR_FAST_KERNELS_INL_H_
+#undef TWR_FAST_KERNELS_INL_H_
+#else
+#define TWR_FAST_KERNELS_INL_H_
+#endif
+
+#include <hwy/highway.h>
+
+#include "scene/errors.h"
+#include "softrender/cpu_isa_targets.h"
+#include "softrender/deferred.h"
+#include "softrender/fast_kernels.h"
+#include "softrender/raster.h"
+#include "softrender/shade.h"
+#include "softrender/ssr.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <utility>
+
+// The shared sources for this target: in twr::HWY_NAMESPACE, with its attributes.
+#include "softrender/lanes_target_begin.h"
+
+#include "softrender/lanes_hwy-inl.h"
+#include "softrender/lane_math-inl.h"
+#include "softrender/texel_lanes-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace twr {
+namespace HWY_NAMESPACE {
+
+// Most lanes a vector has on any target (AVX-512: 16 floats), for stack buffers.
+// (Unused in the objects that leave this target's kernels to another: clang says so.)
+[[maybe_unused]] constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(float);
+
+// ---- a TiledTexture as texture_sample-inl.h reads it ----
+HWY_INLINE int texLevelCount(const TiledTexture& t) { return static_cast<int>(t.levels.size()); }
+HWY_INLINE int texLevelWidth(const TiledTexture& t, int level) { return t.levels[static_cast<std::size_t>(level)].width; }
+HWY_INLINE int texLevelHeight(const TiledTexture& t, int level) { return t.levels[static_cast<std::size_t>(level)].height; }
+HWY_INLINE TextureWrap texWrap(const TiledTexture& t) { return t.wrap; }
+HWY_INLINE bool texSrgb(const TiledTexture& t) { return t.srgb; }
+
+// The texel words of each lane from the tiled index
+// ((y / 4) blocksPerRow + x / 4) 16 + (y % 4) 4 + x % 4.
+HWY_INLINE auto tiledWords(const std::vector<TexelBlock>& blocks, int blocksPerRow, LaneI x, LaneI y) {
+  const DI di;
+  const auto three = hn::Set(di, kTexelBlockSide - 1);
+  const auto row = hn::Add(hn::Mul(hn::ShiftRight<2>(y.v), hn::Set(di, blocksPerRow * kTexelBlockSide * kTexelBlockSide)),
+                           hn::ShiftLeft<2>(hn::And(y.v, three)));
+  const auto column = hn::Add(hn::ShiftLeft<4>(hn::ShiftRight<2>(x.v)), hn::And(x.v, three));
+  return hn::BitCast(DU(), hn::GatherIndex(di, reinterpret_cast<const std::int32_t*>(blocks.data()), hn::Add(row, column)));
+}
+HWY_INLINE auto tiledTexelWords(const TiledTexture& t, int levelIndex, LaneI x, LaneI y) {
+  const TiledLevel& level = t.levels[static_cast<std::size_t>(levelIndex)];
+  return tiledWords(level.blocks, level.blocksPerRow, x, y);
+}
+// Byte `Shift / 8` of each word, as float lanes.
+template <int Shift, typename Words>
+HWY_INLINE LaneF wordByte(Words words) {
+  const auto bytes = hn::And(hn::ShiftRight<Shift>(words), hn::Set(DU(), 0xFFu));
+  return LaneF(hn::ConvertTo(DF(), hn::BitCast(DI(), bytes)));
+}
+template <typename L>
+HWY_INLINE Vec4L<LaneF> fetchTexelBytes(const TiledTexture& t, int levelIndex, LaneI x, LaneI y) {
+  static_assert(std::is_same_v<L, LaneF>);
+  const auto words = tiledTexelWords(t, levelIndex, x, y);
+  return Vec4L<LaneF>(wordByte<0>(words), wordByte<8>(words), wordByte<16>(words), wordByte<24>(words));
+}
+template <typename L>
+HWY_INLINE LaneF fetchTexelRedByte(const TiledTexture& t, int levelIndex, LaneI x, LaneI y) {
+  static_assert(std::is_same_v<L, LaneF>);
+  return wordByte<0>(tiledTexelWords(t, levelIndex, x, y));
+}
+
+// The four red bytes of a bilinear footprint: one gather from the footprint words where the
+// texture has them (a height map), four from the tiled texels otherwise. x1 is x0 or the next
+// texel (wrapped), y1 likewise (texture_sample-inl.h's linearAxis).
+template <typename L>
+HWY_INLINE Vec4L<LaneF> fetchRedFootprintBytes(const TiledTexture& t, int levelIndex, LaneI x0, LaneI x1, LaneI y0,
+                                               LaneI y1) {
+  static_assert(std::is_same_v<L, LaneF>);
+  if (t.redFootprints.empty()) {
+    return Vec4L<LaneF>(fetchTexelRedByte<L>(t, levelIndex, x0, y0), fetchTexelRedByte<L>(t, levelIndex, x1, y0),
+                        fetchTexelRedByte<L>(t, levelIndex, x0, y1), fetchTexelRedByte<L>(t, levelIndex, x1, y1));
+  }
+  const RedFootprintLevel& level = t.redFootprints[static_cast<std::size_t>(levelIndex)];
+  const auto words = tiledWords(level.blocks, level.blocksPerRow, x0, y0);
+  const LaneF b00 = wordByte<0>(words), b10 = wordByte<8>(words), b01 = wordByte<16>(words), b11 = wordByte<24>(words);
+  // Repeat reads exactly the word's footprint (on a side of one texel, x1 = x0 = 0, and so is
+  // the word's neighbour).
+  if (t.wrap == TextureWrap::Repeat) return Vec4L<LaneF>(b00, b10, b01, b11);
+  // Where a clamped or mirrored read stays on its texel (x1 == x0), it takes the word's own
+  // column again; likewise for rows.
+  const auto sameX = hn::RebindMask(DF(), hn::Eq(x1.v, x0.v));
+  const auto sameY = hn::RebindMask(DF(), hn::Eq(y1.v, y0.v));
+  const LaneF t10(hn::IfThenElse(sameX, b00.v, b10.v));
+  const LaneF t01(hn::IfThenElse(sameY, b00.v, b01.v));
+  const LaneF t11(hn::IfThenElse(sameX, t01.v, hn::IfThenElse(sameY, t10.v, b11.v)));
+  return Vec4L<LaneF>(b00, t10, t01, t11);
+}
+
+// The sRGB decode of byte values, from texture_sample.h's table (doubles rounded to float).
+HWY_INLINE LaneF linearFromSrgbByte(LaneF byte) {
+  static const std::array<float, 256> table = [] {
+    std::array<float, 256> t{};
+    for (std::size_t c = 0; c < t.size(); ++c) t[c] = static_cast<float>(srgbDecodeTable()[c]);
+    return t;
+  }();
+  return {hn::GatherIndex(DF(), table.data(), hn::ConvertTo(DI(), byte.v))};
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace twr
+HWY_AFTER_NAMESPACE();
+
+#include "softrender/output_merge-inl.h"
+#include "softrender/shade-inl.h"
+#include "softrender/deferred-inl.h"
+#include "softrender/ssr-inl.h"
+
+#if defined(TWR_FAST_KERNEL_TARGETS) && (HWY_TARGET & (TWR_FAST_KERNEL_TARGETS)) && (HWY_TARGET & (TWR_KERNEL_TARGETS))
+HWY_BEFORE_NAMESPACE();
+namespace twr {
+namespace HWY_NAMESPACE {
+namespace {
+
+// Lanes [0, count) on, the rest off.
+HWY_INLINE LaneMask firstLanes(std::size_t count) { return {hn::FirstN(DF(), count)}; }
+// The lanes whose bit is set in `bits` (bit l = lane l).
+HWY_INLINE LaneMask lanesOf(std::uint64_t bits) {
+  HWY_ALIGN std::int32_t flags[kMaxLanes];
+  for (std::size_t l = 0; l < laneCount(); ++l) flags[l] = static_cast<std::int32_t>((bits >> l) & 1u);
+  return {hn::RebindMask(DF(), hn::Ne(hn::Load(DI(), flags), hn::Zero(DI())))};
+}
+// x, x + 1, ... as float lanes (pixel indices are exact in float).
+HWY_INLINE LaneF pixelColumnsF(int x) { return LaneF(hn::Iota(DF(), static_cast<float>(x))); }
+
+HWY_INLINE AttributePlaneL<LaneF> broadcastPlane(const AttributePlaneT<float>& p) {
+  return {LaneF(p.atOrigin), LaneF(p.dx), LaneF(p.dy)};
+}
+
+// ---- pass 1: visibility ----
+std::uint64_t Visibility(const TriangleSetup& setup, const std::array<WindowVertex, 3>& window, std::uint32_t slot,
+                         int rowBegin, int rowEnd, Framebuffer& fb, std::uint32_t* slots, AttributePlaneT<float>& depthPlane,
+                         bool& covered) {
+  const int yFirst = std::max(setup.y0, rowBegin);
+  const int yLast = std::min(setup.y1, rowEnd - 1);
+  if (yFirst > yLast || setup.x0 > setup.x1) return 0;
+  const DF df;
+  const DU du;
+  const std::size_t lanes = laneCount();
+  const std::size_t width = static_cast<std::size_t>(fb.width);
+  AttributePlaneL<LaneF> plane{};  // set on the first covered row (zeroed: GCC 12 for aarch64 cannot see that)
+  const auto slotLanes = hn::Set(du, slot);
+  std::uint64_t passed = 0;
+  for (int py = yFirst; py <= yLast; ++py) {
+    const Span span = coveredSpan(setup, py);
+    if (span.xBegin >= span.xEnd) continue;
+    if (!covered) {
+      depthPlane = makeDepthPlane<float>(window, setup);
+      covered = true;
+      plane = broadcastPlane(depthPlane);
+    }
+    const LaneF pyF(static_cast<float>(py));
+    float* depthRow = &fb.depth[fb.index(0, py)];
+    std::uint32_t* slotRow = slots + static_cast<std::size_t>(py - rowBegin) * width;
+    for (int x = span.xBegin; x < span.xEnd; x += static_cast<int>(lanes)) {
+      const std::size_t count = std::min(lanes, static_cast<std::size_t>(span.xEnd - x));
+      const LaneF depth = (depthAsStored<LaneF>)(planeAt<LaneF>(plane, pixelColumnsF(x), pyF), fb.depthFormat);
+      // GL_LESS against the stored depth; a vector past the row's end goes through a buffer.
+      HWY_ALIGN float depthBuffer[kMaxLanes];
+      HWY_ALIGN std::uint32_t slotBuffer[kMaxLanes];
+      const bool whole = count == lanes;
+      float* depthAt = whole ? depthRow + x : depthBuffer;
+      std::uint32_t* slotAt = whole ? slotRow + x : slotBuffer;
+      if (!whole) {
+        std::memcpy(depthBuffer, depthRow + x, count * sizeof(float));
+        std::memcpy(slotBuffer, slotRow + x, count * sizeof(std::uint32_t));
+      }
+      const LaneMask pass = firstLanes(count) & (depth < LaneF(hn::LoadU(df, depthAt)));
+      if (!anyOf(pass)) continue;
+      hn::BlendedStore(depth.v, pass.m, df, depthAt);
+      hn::BlendedStore(slotLanes, hn::RebindMask(du, pass.m), du, slotAt);
+      if (!whole) {
+        std::memcpy(depthRow + x, depthBuffer, count * sizeof(float));
+        std::memcpy(slotRow + x, slotBuffer, count * sizeof(std::uint32_t));
+      }
+      passed += hn::CountTrue(df, pass.m);
+    }
+  }
+  return passed;
+}
+
+// ---- pass 2: shading ----
+// One draw item's lanes of a row segment starting at pixel (x, py).
+struct Segment {
+  const std::vector<BinTriangle>* triangles;
+  const std::uint32_t* slots;  // per lane (kNoSlot for lanes of no triangle)
+  std::uint64_t bits;          // this item's lanes
+  int x, py;
+};
+
+// Every lane on one triangle: its planes broadcast, written in place (the planes are 4 KB, and
+// only `count` of them are in use).
+HWY_INLINE void broadcastVaryingPlanes(const VaryingPlanesT<float>& t, VaryingPlanesL<LaneF>& p) {
+  p.count = t.count;
+  p.oneOverW = broadcastPlane(t.oneOverW);
+  for (int k = 0; k < t.count; ++k) p.overW[static_cast<std::size_t>(k)] = broadcastPlane(t.overW[static_cast<std::size_t>(k)]);
+}
+
+#if HWY_TARGET != HWY_SCALAR
+// The quad and fine uv differences (interpolate-inl.h) of a segment whose lanes all lie on one
+// triangle: its lanes are side by side from an even column, so a quad's left and right pixels
+// are neighbouring lanes. The segment's row and the quad's other row are evaluated once each
+// (two divisions instead of seven); the rest is lanes duplicated from them, the same bits as
+// evaluating each neighbour on that triangle's planes.
+HWY_INLINE void setUvDifferencesOfOneTriangle(const UvPlanesL<LaneF>& uv, LaneF px, int py, bool fine,
+                                              FragmentL<LaneF>& f) {
+  const bool evenRow = (py & 1) == 0;
+  const Vec2L<LaneF> own = uvAtPixel<LaneF>(uv, px, LaneF(static_cast<float>(py)));
+  const Vec2L<LaneF> other = uvAtPixel<LaneF>(uv, px, LaneF(static_cast<float>(evenRow ? py + 1 : py - 1)));
+  const Vec2L<LaneF>& lower = evenRow ? own : other;  // the quad's rows (GL rows: the even one is lower)
+  const Vec2L<LaneF>& upper = evenRow ? other : own;
+  const auto even = [](const Vec2L<LaneF>& v) HWY_ATTR {
+    return Vec2L<LaneF>(LaneF(hn::DupEven(v.x.v)), LaneF(hn::DupEven(v.y.v)));
+  };
+  const auto odd = [](const Vec2L<LaneF>& v) HWY_ATTR {
+    return Vec2L<LaneF>(LaneF(hn::DupOdd(v.x.v)), LaneF(hn::DupOdd(v.y.v)));
+  };
+  const Vec2L<LaneF> topLeft = even(lower);
+  f.uvDx = odd(lower) - topLeft;
+  f.uvDy = even(upper) - topLeft;
+  if (fine) {
+    f.uvDxFine = odd(own) - even(own);
+    f.uvDyFine = upper - lower;
+  }
+}
+#endif
+
+// The fragments of a segment's lanes: their triangles' planes (broadcast when all lanes share
+// one, gathered lane by lane otherwise) evaluated at the lanes' pixels, with the quad
+// differences the permutation reads.
+template <typename Features>
+HWY_INLINE FragmentL<LaneF> SegmentFragment(const Segment& s, const ItemState& item, const ItemMaps& maps) {
+  const DF df;
+  const std::size_t lanes = laneCount();
+  const bool tangent = Features::kSpace == LightingSpace::Tangent;
+  const int lightCount = item.shade.lightCount;
+  const std::vector<BinTriangle>& triangles = *s.triangles;
+
+  // The first lane's triangle stands in for lanes of other items, so every lane computes
+  // with sane numbers; their results are discarded by the mask.
+  const std::size_t firstLane = static_cast<std::size_t>(__builtin_ctzll(s.bits));
+  const std::uint32_t firstSlot = s.slots[firstLane];
+  bool oneTriangle = true;
+  for (std::size_t l = 0; l < lanes; ++l) {
+    if (((s.bits >> l) & 1u) != 0 && s.slots[l] != firstSlot) oneTriangle = false;
+  }
+
+  VaryingPlanesL<LaneF> planes;
+  AttributePlaneL<LaneF> depthPlane;
+  const int count = varyingCount(tangent, lightCount);
+  if (oneTriangle) {
+    const BinTriangle& t = triangles[firstSlot];
+    broadcastVaryingPlanes(t.varyings, planes);
+    depthPlane = broadcastPlane(t.depth);
+  } else {
+    // Lanes on several triangles: each plane transposed into columns, [plane][atOrigin, dx,
+    // dy][lane]; plane 0 is the depth, 1 is 1/w, 2 + k varying k.
+    constexpr int kDepthColumn = 0, kOneOverWColumn = 1, kFirstVaryingColumn = 2;
+    HWY_ALIGN float columns[kFirstVaryingColumn + kMaxVaryings][3][kMaxLanes];
+    for (std::size_t l = 0; l < lanes; ++l) {
+      const BinTriangle& t = triangles[((s.bits >> l) & 1u) != 0 ? s.slots[l] : firstSlot];
+      const auto put = [&](int column, const AttributePlaneT<float>& p) {
+        columns[column][0][l] = p.atOrigin;
+        columns[column][1][l] = p.dx;
+        columns[column][2][l] = p.dy;
+      };
+      put(kDepthColumn, t.depth);
+      put(kOneOverWColumn, t.varyings.oneOverW);
+      for (int k = 0; k < count; ++k) put(kFirstVaryingColumn + k, t.varyings.overW[static_cast<std::size_t>(k)]);
+    }
+    const auto planeOfColumn = [&](int column) HWY_ATTR {
+      return AttributePlaneL<LaneF>{LaneF(hn::Load(df, columns[column][0])), LaneF(hn::Load(df, columns[column][1])),
+                                    LaneF(hn::Load(df, columns[column][2]))};
+    };
+    depthPlane = planeOfColumn(kDepthColumn);
+    planes.oneOverW = planeOfColumn(kOneOverWColumn);
+    planes.count = count;
+    for (int k = 0; k < count; ++k) planes.overW[static_cast<std::size_t>(k)] = planeOfColumn(kFirstVaryingColumn + k);
+  }
+
+  const LaneF px = pixelColumnsF(s.x), py(static_cast<float>(s.py));
+  const LaneF depth = storedDepth<LaneF>(planeAt<LaneF>(depthPlane, px, py));
+  FragmentL<LaneF> fragment = interpolateFragment<LaneF>(planes, px, py, depth);
+  if (item.shade.needsQuadDifferences()) {
+    // Each lane's 2x2 quad: the even column and row at or below it (exact in float).
+    const UvPlanesL<LaneF> uv{planes.overW[kVaryingUv], planes.overW[kVaryingUv + 1], planes.oneOverW};
+#if HWY_TARGET != HWY_SCALAR
+    if (oneTriangle) {
+      setUvDifferencesOfOneTriangle(uv, px, s.py, item.shade.heightMap != nullptr, fragment);
+    } else
+#endif
+    {
+      const LaneF quadColumns = floorOf(px * LaneF(0.5f)) * LaneF(2.0f);
+      const LaneF quadRow(static_cast<float>(s.py - (s.py & 1)));
+      setQuadUvDifferences<LaneF>(uv, quadColumns, quadRow, fragment);
+      if (item.shade.heightMap) setFineUvDifferences<LaneF>(uv, quadColumns, quadRow, px, py, fragment);
+    }
+  }
+  // A material that reads the environment, in a view that shows it: its directions' quad
+  // differences (shade-inl.h).
+  if (isShadedView(item.shade.view) && item.shade.environment.cube) {
+    const LaneF quadColumns = floorOf(px * LaneF(0.5f)) * LaneF(2.0f);
+    const LaneF quadRow(static_cast<float>(s.py - (s.py & 1)));
+    setEnvironmentDifferences<Features, LaneF>(planes, px, py, quadColumns, quadRow, item.shade, maps, fragment);
+  }
+  (void)df;
+  return fragment;
+}
+
+// Output merge: each lane's colour as its RGBA8 word, alpha 255 (geometry drawn).
+HWY_INLINE auto rgbaWordsOf(const Vec4L<LaneF>& colour) {
+  const DI di;
+  const DU du;
+  const auto byteOf = [&](LaneF c) HWY_ATTR { return hn::BitCast(du, hn::ConvertTo(di, byteValueOf<LaneF>(c).v)); };
+  return hn::Or(hn::Or(byteOf(colour.x), hn::ShiftLeft<8>(byteOf(colour.y))),
+                hn::Or(hn::ShiftLeft<16>(byteOf(colour.z)), hn::Set(du, 0xFF000000u)));
+}
+
+template <typename Features>
+void ShadeSegment(const Segment& s, const ItemState& item, const ItemMaps& maps, std::uint32_t* rgbaOut) {
+  const FragmentL<LaneF> fragment = SegmentFragment<Features>(s, item, maps);
+  const Vec4L<LaneF> colour =
+      shadeFragment<Features, LaneF>(fragment, item.shade, maps, static_cast<std::nullptr_t*>(nullptr));
+
+  hn::BlendedStore(rgbaWordsOf(colour), hn::RebindMask(DU(), lanesOf(s.bits).m), DU(), rgbaOut);
+}
+
+// The deferred pipeline's G-buffer pass for a segment: the surface (gbufferFragment) of
+// this item's lanes into `channels` (deferred.h's targets in order, four floats of normal then
+// three each of geometric, albedo, specular, emission and position, then the specular's w),
+// the other lanes left as they were.
+inline constexpr int kSurfaceChannels = 20;
+inline constexpr int kPositionChannel = 16;  // the first of the position's three
+inline constexpr int kSsrReflectChannel = 19;
+template <typename Features>
+void SurfaceSegment(const Segment& s, const ItemState& item, const ItemMaps& maps, float (*channels)[kMaxLanes]) {
+  const DF df;
+  const FragmentL<LaneF> fragment = SegmentFragment<Features>(s, item, maps);
+  const GBufferTexelL<LaneF> g = gbufferFragment<Features, LaneF>(fragment, item.shade, maps);
+  const LaneF values[kSurfaceChannels] = {g.nl.x,       g.nl.y,       g.nl.z,       g.shininess,
+                                          g.n.x,        g.n.y,        g.n.z,        g.kdAlbedo.x,
+                                          g.kdAlbedo.y, g.kdAlbedo.z, g.ksSpec.x,   g.ksSpec.y,
+                                          g.ksSpec.z,   g.emission.x, g.emission.y, g.emission.z,
+                                          g.posWorld.x, g.posWorld.y, g.posWorld.z, g.ssrReflect};
+  const auto mask = lanesOf(s.bits).m;
+  for (int c = 0; c < kSurfaceChannels; ++c) hn::BlendedStore(values[c].v, mask, df, channels[c]);
+}
+
+using SegmentKernel = void (*)(const Segment&, const ItemState&, const ItemMaps&, std::uint32_t*);
+
+// The kernel of a shader permutation (withShaderFeatures, shade.h): one per combination of
+// maps and lighting space, the view a branch inside it, as on the teaching path.
+SegmentKernel kernelFor(const ShaderKey& key) {
+  SegmentKernel kernel = nullptr;
+  withShaderFeatures(key, [&]<typename Features>() { kernel = &ShadeSegment<Features>; });
+  return kernel;
+}
+using SurfaceKernel = void (*)(const Segment&, const ItemState&, const ItemMaps&, float (*)[kMaxLanes]);
+SurfaceKernel surfaceKernelFor(const ShaderKey& key) {
+  SurfaceKernel kernel = nullptr;
+  withShaderFeatures(key, [&]<typename Features>() { kernel = &SurfaceSegment<Features>; });
+  return kernel;
+}
+
+// Both shading passes of a bin: every pixel of rows [rowBegin, rowEnd) gets its triangle id
+// and, without `surfaces`, its colour (the background word where nothing was drawn); with
+// `surfaces`, the background word and its G-buffer texel (0 where nothing was drawn).
+void ShadeRows(const std::vector<BinTriangle>& triangles, const std::vector<ItemState>& items,
+               const std::vector<ItemMaps>& maps, const std::uint32_t* slots, int rowBegin, int rowEnd,
+               std::uint32_t background, Framebuffer& fb, GBuffer* surfaces) {
+  const std::size_t lanes = laneCount();
+  const std::size_t width = static_cast<std::size_t>(fb.width);
+  std::vector<SegmentKernel> kernels(items.size());
+  std::vector<SurfaceKernel> surfaceKernels(items.size());
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    if (surfaces) {
+      surfaceKernels[k] = surfaceKernelFor(items[k].shaderKey);
+    } else {
+      kernels[k] = kernelFor(items[k].shaderKey);
+    }
+  }
+  HWY_ALIGN std::uint32_t slotLanes[kMaxLanes];
+  HWY_ALIGN std::uint32_t itemLanes[kMaxLanes];
+  HWY_ALIGN std::uint32_t rgbaLanes[kMaxLanes];
+  HWY_ALIGN std::uint32_t idLanes[kMaxLanes];
+  HWY_ALIGN float channels[kSurfaceChannels][kMaxLanes];
+  for (int py = rowBegin; py < rowEnd; ++py) {
+    const std::uint32_t* row = slots + static_cast<std::size_t>(py - rowBegin) * width;
+    for (std::size_t x = 0; x < width; x += lanes) {
+      const std::size_t inRow = std::min(lanes, width - x);
+      std::uint64_t remaining = 0;
+      for (std::size_t l = 0; l < lanes; ++l) {
+        slotLanes[l] = l < inRow ? row[x + l] : kNoSlot;
+        rgbaLanes[l] = background;
+        if (slotLanes[l] == kNoSlot) {
+          idLanes[l] = kNoTriangle;
+        } else {
+          const BinTriangle& t = triangles[slotLanes[l]];
+          itemLanes[l] = t.item;
+          idLanes[l] = t.triangleId;
+          remaining |= std::uint64_t{1} << l;
+        }
+      }
+      if (surfaces) {
+        for (auto& channel : channels) std::fill(channel, channel + lanes, 0.0f);
+      }
+      // One pass per draw item present in the segment (usually one).
+      while (remaining != 0) {
+        const std::uint32_t item = itemLanes[__builtin_ctzll(remaining)];
+        std::uint64_t bits = 0;
+        for (std::size_t l = 0; l < lanes; ++l) {
+          if (((remaining >> l) & 1u) != 0 && itemLanes[l] == item) bits |= std::uint64_t{1} << l;
+        }
+        remaining &= ~bits;
+        const Segment segment{&triangles, slotLanes, bits, static_cast<int>(x), py};
+        if (surfaces) {
+          surfaceKernels[item](segment, items[item], maps[item], channels);
+        } else {
+          kernels[item](segment, items[item], maps[item], rgbaLanes);
+        }
+      }
+      const std::size_t origin = fb.index(static_cast<int>(x), py);
+      std::memcpy(&fb.rgba[4 * origin], rgbaLanes, inRow * sizeof(std::uint32_t));
+      std::memcpy(&fb.triangleId[origin], idLanes, inRow * sizeof(std::uint32_t));
+      if (surfaces) {
+        for (std::size_t l = 0; l < inRow; ++l) {
+          const float w = slotLanes[l] == kNoSlot ? 0.0f : 1.0f;  // nothing drawn: every target 0
+          const auto at = [&](int c) { return channels[c][l]; };
+          surfaces->normal[origin + l] = vec4(at(0), at(1), at(2), at(3));
+          surfaces->geometric[origin + l] = vec4(at(4), at(5), at(6), w);
+          surfaces->albedo[origin + l] = vec4(at(7), at(8), at(9), w);
+          surfaces->specular[origin + l] = vec4(at(10), at(11), at(12), at(kSsrReflectChannel));
+          surfaces->emission[origin + l] = vec4(at(13), at(14), at(15), w);
+          if (!surfaces->position.empty()) surfaces->position[origin + l] = vec4(at(16), at(17), at(18), w);
+        }
+      }
+    }
+  }
+}
+
+void ShadeBin(const std::vector<BinTriangle>& triangles, const std::vector<ItemState>& items,
+              const std::vector<ItemMaps>& maps, const std::uint32_t* slots, int rowBegin, int rowEnd,
+              std::uint32_t background, Framebuffer& fb) {
+  ShadeRows(triangles, items, maps, slots, rowBegin, rowEnd, background, fb, nullptr);
+}
+
+void SurfaceBin(const std::vector<BinTriangle>& triangles, const std::vector<ItemState>& items,
+                const std::vector<ItemMaps>& maps, const std::uint32_t* slots, int rowBegin, int rowEnd,
+                std::uint32_t background, Framebuffer& fb, GBuffer& surfaces) {
+  ShadeRows(triangles, items, maps, slots, rowBegin, rowEnd, background, fb, &surfaces);
+}
+
+// The lighting pass over rows [rowBegin, rowEnd): a vector of pixels of a row at a time, the
+// G-buffer's texels gathered into lanes, deferredLighting where the depth is below the
+// clear depth; the other pixels keep their colour.
+void LightRows(const GBuffer& g, const DeferredUniforms& u, int rowBegin, int rowEnd, Framebuffer& fb) {
+  const DF df;
+  const DU du;
+  const std::size_t lanes = laneCount();
+  const std::size_t width = static_cast<std::size_t>(fb.width);
+  HWY_ALIGN float channels[kSurfaceChannels + 1][kMaxLanes];  // the surface, then the depth
+  const vec4 noPosition(0.0f);
+  for (int py = rowBegin; py < rowEnd; ++py) {
+    for (std::size_t x = 0; x < width; x += lanes) {
+      const std::size_t inRow = std::min(lanes, width - x);
+      const std::size_t origin = fb.index(static_cast<int>(x), py);
+      std::uint64_t bits = 0;
+      for (std::size_t l = 0; l < lanes; ++l) {
+        const bool drawn = l < inRow && fb.depth[origin + l] < kClearDepth;
+        if (drawn) bits |= std::uint64_t{1} << l;
+        const std::size_t i = drawn ? origin + l : origin;  // a sane texel for lanes not written
+        const vec4 &n = g.normal[i], &m = g.geometric[i], &a = g.albedo[i], &sp = g.specular[i], &e = g.emission[i];
+        const vec4& p = u.positionStored ? g.position[i] : noPosition;
+        const float values[kSurfaceChannels + 1] = {n.x, n.y, n.z, n.w, m.x, m.y, m.z, a.x,  a.y,  a.z,        sp.x,
+                                                    sp.y, sp.z, e.x, e.y, e.z, p.x, p.y, p.z, sp.w, fb.depth[i]};
+        for (int c = 0; c <= kSurfaceChannels; ++c) channels[c][l] = values[c];
+      }
+      if (bits == 0) continue;
+      const auto lane = [&](int c) HWY_ATTR { return LaneF(hn::Load(df, channels[c])); };
+      const LaneF px = pixelColumnsF(static_cast<int>(x)), pyLanes(static_cast<float>(py));
+      const Vec3L<LaneF> posWorld =
+          u.positionStored
+              ? Vec3L<LaneF>(lane(kPositionChannel), lane(kPositionChannel + 1), lane(kPositionChannel + 2))
+              : worldFromWindow<LaneF>(u.worldFromClip, u.viewportSize, px, pyLanes, lane(kSurfaceChannels));
+      const GBufferTexelL<LaneF> surface{Vec3L<LaneF>(lane(0), lane(1), lane(2)),    lane(3),
+                                         Vec3L<LaneF>(lane(4), lane(5), lane(6)),    Vec3L<LaneF>(lane(7), lane(8), lane(9)),
+                                         Vec3L<LaneF>(lane(10), lane(11), lane(12)), Vec3L<LaneF>(lane(13), lane(14), lane(15)),
+                                         posWorld,                                   lane(kSsrReflectChannel)};
+      const Vec4L<LaneF> colour = deferredLighting<LaneF>(surface, u.lighting);
+      HWY_ALIGN std::uint32_t words[kMaxLanes];
+      hn::Store(rgbaWordsOf(colour), du, words);
+      for (std::size_t l = 0; l < inRow; ++l) {
+        if (((bits >> l) & 1u) != 0) std::memcpy(&fb.rgba[4 * (origin + l)], &words[l], sizeof(std::uint32_t));
+      }
+    }
+  }
+}
+
+// Screen-space reflections over rows [rowBegin, rowEnd): a vector of pixels of a row at a time,
+// gathered from the G-buffer, with each pixel's indirect random pairs, through ssrPixel
+// where a surface reflects or indirect light is on; the pixels it changed get their new colour,
+// the others keep theirs.
+void ReflectRows(const GBuffer& g, const SsrUniforms& u, const Mat4T<float>& worldFromClip, bool positionStored,
+                 int rowBegin, int rowEnd, Framebuffer& fb) {
+  const DF df;
+  const DU du;
+  const std::size_t lanes = laneCount();
+  const std::size_t width = static_cast<std::size_t>(fb.width);
+  // normal xyz, position xyz, ssr_reflect, depth, own colour rgb, albedo rgb
+  constexpr int kChannels = 14;
+  constexpr int kReflect = 6, kDepth = 7, kColour = 8, kAlbedo = 11;
+  HWY_ALIGN float channels[kChannels][kMaxLanes];
+  HWY_ALIGN float random[2 * kMaxSsrIndirectSamples][kMaxLanes];  // per sample: xi.x, xi.y
+  Vec2L<LaneF> samples[kMaxSsrIndirectSamples];
+  const vec4 noPosition(0.0f);
+  const bool everyPixel = u.indirectSamples > 0 || isSsrView(u.view);  // not only the reflecting ones
+  for (int py = rowBegin; py < rowEnd; ++py) {
+    for (std::size_t x = 0; x < width; x += lanes) {
+      const std::size_t inRow = std::min(lanes, width - x);
+      const std::size_t origin = fb.index(static_cast<int>(x), py);
+      std::uint64_t bits = 0;
+      for (std::size_t l = 0; l < lanes; ++l) {
+        const bool drawn = l < inRow && fb.depth[origin + l] < kClearDepth;
+        const bool marched = drawn && (g.specular[origin + l].w > 0.0f || everyPixel);
+        if (marched) bits |= std::uint64_t{1} << l;
+        const std::size_t i = marched ? origin + l : origin;  // a sane texel for lanes not marched
+        const vec4& n = g.normal[i];
+        const vec4& p = positionStored ? g.position[i] : noPosition;
+        const vec4& a = g.albedo[i];
+        const float values[kChannels] = {n.x, n.y, n.z, p.x, p.y, p.z, g.specular[i].w, fb.depth[i],
+                                         u.colour[0][i], u.colour[1][i], u.colour[2][i], a.x, a.y, a.z};
+        for (int c = 0; c < kChannels; ++c) channels[c][l] = values[c];
+        if (!marched) channels[kReflect][l] = 0.0f;  // ssr_reflect 0: no mirror ray
+        if (!marched) channels[kDepth][l] = kClearDepth;  // nothing drawn: no indirect rays
+        for (int k = 0; k < u.indirectSamples; ++k) {
+          const vec2 xi = ssrRandomPairOf(static_cast<std::uint32_t>(x + l), static_cast<std::uint32_t>(py),
+                                          static_cast<std::uint32_t>(k));
+          random[2 * k][l] = xi.x;
+          random[2 * k + 1][l] = xi.y;
+        }
+      }
+      if (bits == 0) continue;
+      const auto lane = [&](int c) HWY_ATTR { return LaneF(hn::Load(df, channels[c])); };
+      for (int k = 0; k < u.indirectSamples; ++k) {
+        samples[k] = Vec2L<LaneF>(LaneF(hn::Load(df, random[2 * k])), LaneF(hn::Load(df, random[2 * k + 1])));
+      }
+      const LaneF px = pixelColumnsF(static_cast<int>(x)), pyLanes(static_cast<float>(py));
+      const Vec3L<LaneF> posWorld =
+          positionStored ? Vec3L<LaneF>(lane(3), lane(4), lane(5))
+                         : worldFromWindow<LaneF>(worldFromClip, u.viewportSize, px, pyLanes, lane(kDepth));
+      Vec3L<LaneF> colour(lane(kColour), lane(kColour + 1), lane(kColour + 2));
+      const SsrPixelL<LaneF> p = (ssrPixel<LaneF>)(
+          u, Vec3L<LaneF>(lane(0), lane(1), lane(2)), posWorld, lane(kReflect),
+          Vec3L<LaneF>(lane(kAlbedo), lane(kAlbedo + 1), lane(kAlbedo + 2)), samples, lane(kDepth) < LaneF(kClearDepth),
+          colour);
+      if (!anyOf(p.changed)) continue;
+      HWY_ALIGN float changed[kMaxLanes];
+      hn::Store(select(p.changed, LaneF(1.0f), LaneF(0.0f)).v, df, changed);
+      HWY_ALIGN std::uint32_t words[kMaxLanes];
+      hn::Store(rgbaWordsOf(Vec4L<LaneF>(colour, LaneF(1.0f))), du, words);
+      for (std::size_t l = 0; l < inRow; ++l) {
+        if (((bits >> l) & 1u) != 0 && changed[l] != 0.0f) {
+          std::memcpy(&fb.rgba[4 * (origin + l)], &words[l], sizeof(std::uint32_t));
+        }
+      }
+    }
+  }
+}
+
+void PhongPow(const float* x, float s, float* out, std::size_t count) {
+  const std::size_t lanes = laneCount();
+  HWY_ALIGN float in[kMaxLanes];
+  HWY_ALIGN float result[kMaxLanes];
+  for (std::size_t i = 0; i < count; i += lanes) {
+    const std::size_t n = std::min(lanes, count - i);
+    for (std::size_t l = 0; l < lanes; ++l) in[l] = l < n ? x[i + l] : 1.0f;
+    hn::Store(phongPow<LaneF>(LaneF(hn::Load(DF(), in)), s).v, DF(), result);
+    std::memcpy(out + i, result, n * sizeof(float));
+  }
+}
+
+CpuIsa isaOfThisTarget() {
+#if HWY_TARGET == HWY_AVX3
+  return CpuIsa::Avx512;
+#elif HWY_TARGET == HWY_AVX2
+  return CpuIsa::Avx2;
+#elif HWY_TARGET == HWY_SSE4
+  return CpuIsa::Sse4;
+#elif HWY_TARGET == HWY_NEON
+  return CpuIsa::Neon;
+#else
+  return CpuIsa::Scalar;
+#endif
+}
+
+}  // namespace
+
+FastKernels GetKernels() {
+  FastKernels k;
+  k.isa = isaOfThisTarget();
+  k.lanes = static_cast<int>(laneCount());
+  k.visibility = &Visibility;
+  k.shadeBin = &ShadeBin;
+  k.surfaceBin = &SurfaceBin;
+  k.lightRows = &LightRows;
+  k.reflectRows = &ReflectRows;
+  k.phongPow = &PhongPow;
+  return k;
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace twr
+HWY_AFTER_NAMESPACE();
+#else
+// This target's kernels are in another object (its fast_kernels_<group>.cpp).
+HWY_BEFORE_NAMESPACE();
+namespace twr {
+namespace HWY_NAMESPACE {
+FastKernels GetKernels();
+}  // namespace HWY_NAMESPACE
+}  // namespace twr
+HWY_AFTER_NAMESPACE();
+#endif
+
+#include "softrender/lanes_target_end.h"
+
+#endif  // the per-target include guard
