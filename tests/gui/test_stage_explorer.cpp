@@ -429,7 +429,8 @@ TEST(ExplorerViewCache, KeepsAViewUntilWhatItWasMadeFromChanges) {
   // A frame of another edit: rebuilt, and its triangle ids are not used for this trace.
   EXPECT_NE(cache.viewOf(trace, 7, frame, 8, position), perspective);
   EXPECT_EQ(cache.viewsMade(), 3);
-  // A new trace of the same pixel at a reused address cannot be mistaken for the old one.
+  // Another trace object of the same pixel is a new key: the cache holds the trace it was made
+  // from, not its address.
   const auto again = std::make_shared<const PixelTrace>(traced().trace);
   EXPECT_NE(cache.viewOf(again, 7, frame, 8, position), nullptr);
   EXPECT_EQ(cache.viewsMade(), 4);
