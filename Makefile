@@ -91,14 +91,13 @@ SANITIZE_NO_LEAKS := EglContext\.|EglSceneSuite\.|GlWindow\.|GlWindowCore\.|$(SA
 # The same tracer crash now and then ends a command-line test's child that drew with OSMesa
 # ("Tracer caught signal 11", exit 134; in one CI run on both tries of CliBench's --gl-precise
 # test, which passes in other runs). A known fault of the sanitizer runtime up to LLVM 16
-# (Debian 12 has clang 14): its __tls_get_addr interceptor takes a dynamic TLS block (Mesa's,
-# loaded with dlopen) that happens to start 16 bytes into a page for glibc 2.19's block header
-# and reads the two words before it as a block to scan. So the presets set
+# (Debian 12 has clang 14) in its __tls_get_addr interceptor, which the leak check's tracer
+# trips over on the dynamic TLS of libraries loaded with dlopen (Mesa's). So the presets set
 # intercept_tls_get_addr=0 (CMakePresets.json), and run a failed test once more, so a test
 # passes only by passing, and a real report fails it twice.
 
 # SANITIZE_SCENE_SUITE=scenes runs compare's scene suite as each shipped scene once at its own
-# settings (CI: the sweeps over filters, sizes, biases and pipelines, 685 cases, take half an
+# settings (CI: the sweeps over filters, sizes, biases and pipelines, 700 cases, take half an
 # hour under ASan; make test runs them all); the default runs every case.
 SANITIZE_SCENE_SUITE ?= all
 SANITIZE_SCENES := $(subst $(eval) ,|,$(strip $(basename $(notdir $(wildcard assets/scenes/*.json)))))
