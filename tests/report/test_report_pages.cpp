@@ -5,11 +5,11 @@
 #include "report/html.h"
 #include "report/reading.h"
 #include "scene/errors.h"
+#include "scene/read_file.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -17,11 +17,10 @@
 namespace twr::report {
 namespace {
 
+// A page or table the test wrote, read whole (a missing one is an InputError naming it).
 std::string readFile(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  constexpr std::uintmax_t kMaxBytes = 1u << 20;  // bytes; the made-up report is a few KiB
+  return readFileCapped(path.string(), kMaxBytes, "report page");
 }
 
 // Cells of one CSV line, double-quoted cells holding commas and "" for a quote.
