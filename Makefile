@@ -19,12 +19,19 @@ WERROR ?= $(if $(filter-out false 0,$(CI)),ON,OFF)
 
 .PHONY: all deps configure build run test sanitize cross-aarch64 clean assets
 
+# A build folder configured by an older checkout with another generator: CMake refuses to
+# switch generators in place, so its cache goes (the objects are rebuilt by the new one).
+forget_other_generator = @if [ -f $(1)/CMakeCache.txt ] && ! grep -qx 'CMAKE_GENERATOR:INTERNAL=Ninja' $(1)/CMakeCache.txt; then \
+	  echo "$(1)/ was configured with another generator: reconfiguring it for Ninja"; \
+	  rm -rf $(1)/CMakeCache.txt $(1)/CMakeFiles; fi
+
 all: build
 
 deps:
 	@./scripts/install-deps.sh
 
 configure: deps
+	$(call forget_other_generator,build)
 	@cmake --preset default -DTWINRASTER_WERROR=$(WERROR) >/dev/null
 
 build: configure
@@ -107,6 +114,7 @@ SANITIZE_SUITE_SKIP := $(if $(filter scenes,$(SANITIZE_SCENE_SUITE)),|^Scenes/Sc
 SANITIZE_SUITE_WANTED := $(and $(filter scenes,$(SANITIZE_SCENE_SUITE)),$(if $(SANITIZE_MODULES),$(filter compare,$(SANITIZE_MODULES)),all))
 
 sanitize: deps
+	$(call forget_other_generator,build-sanitize)
 	@cmake --preset sanitize -DTWINRASTER_WERROR=$(WERROR) -DTWINRASTER_KERNEL_TARGETS=$(SANITIZE_KERNEL_TARGETS) >/dev/null
 	@cmake --build --preset sanitize -j $(JOBS) $(addprefix --target ,$(SANITIZE_TARGETS))
 	@ctest --preset sanitize -E '$(SANITIZE_SKIP)|$(SANITIZE_NO_LEAKS)$(SANITIZE_SUITE_SKIP)' $(SANITIZE_LABELS)

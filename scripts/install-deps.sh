@@ -5,7 +5,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config
+  build-essential cmake pkg-config ninja-build   # the presets build with Ninja (Makefile says why)
   libglfw3-dev libglm-dev python3-glad libimgui-dev libosmesa6-dev
   libegl-dev libegl-mesa0    # EGL headers, and Mesa's EGL (surfaceless llvmpipe) opened at run time
   libtinyobjloader-dev libstb-dev nlohmann-json3-dev libcli11-dev
