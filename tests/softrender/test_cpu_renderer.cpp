@@ -150,12 +150,16 @@ TEST(CpuRenderer, EveryViewOfEveryAssetSceneIsFinite) {
     SCOPED_TRACE(entry.path().string());
     const Scene scene = loadSceneFile(entry.path().string());
     ++scenes;
+    // One renderer per scene, as the app keeps one while the view changes: its textures are
+    // tiled once, not once per view (a fresh renderer per view made this test a minute long,
+    // most of it spent allocating and tiling the same textures again).
+    const auto renderer = makeCpuRenderer();
     for (View view : kAllViews) {
       for (LightingSpace space : {LightingSpace::World, LightingSpace::Tangent}) {
         RenderSettings s = scene.settings;
         s.view = view;
         s.lightingSpace = space;
-        const RenderOutput out = render(scene, s, 40, 30);
+        const RenderOutput out = renderer->render(scene, s, 40, 30);
         expectConsistentBuffers(out);
       }
     }
