@@ -129,8 +129,7 @@ class CpuRenderer final : public Renderer {
           RenderStats passStats;
           if (fast_) {
             if (shadowTarget_.width != size) {
-              shadowTarget_ = fast_->allocateFramebuffer(size, size);
-              shadowTarget_.depthFormat = DepthFormat::Float32;  // makeShadowFramebuffer's
+              shadowTarget_ = fast_->allocateDepthTarget(size, size);
             }
             fast_->draw(passItems, scene.output.background, shadowTarget_, passStats, true);
           } else {

@@ -66,6 +66,15 @@ Framebuffer FastPipeline::allocateFramebuffer(int width, int height) {
   return fb;
 }
 
+Framebuffer FastPipeline::allocateDepthTarget(int width, int height) {
+  Framebuffer fb;
+  fb.width = width;
+  fb.height = height;
+  fb.depthFormat = DepthFormat::Float32;
+  fb.depth.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+  return fb;
+}
+
 void FastPipeline::prepareMaps(const std::vector<ItemState>& items) {
   ++frame_;
   maps_.assign(items.size(), ItemMaps{});
