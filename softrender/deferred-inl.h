@@ -117,7 +117,7 @@ TWR_LANE_INLINE Vec3L<L> worldFromWindow(const Mat4T<ScalarOf<L>>& m, const Vec2
 // g.posWorld (its stored position, or worldFromWindow's) lit by the frame's lights with the forward shading's own loop (world space, no
 // height field), added to the emission and clamped as the forward colour is.
 struct NoMaps {};
-using DeferredLightingFeatures = ShaderFeatures<false, false, false, LightingSpace::World, false>;
+using DeferredLightingFeatures = ShaderFeatures<false, LightingSpace::World, false>;
 template <typename L>
 TWR_LANE_INLINE Vec4L<L> deferredLighting(const GBufferTexelL<L>& g, const ShadeUniformsT<ScalarOf<L>>& u) {
   using S = ScalarOf<L>;

@@ -230,7 +230,9 @@ TWR_LANE_OUTLINE void setEnvironmentDifferences(const VaryingPlanesL<L>& planes,
 }
 
 // The material's own texels at the surface detail's uv: the diffuse map's albedo and the
-// specular map's scale (1 without the map). phong.frag's albedo and specScale.
+// specular map's scale (1 without the map, or where the view reads no such map). phong.frag's
+// albedo and specScale, whose #ifdefs are a uniform branch here: one kernel for a material
+// with and without the maps.
 template <typename L>
 struct MaterialTexelsL {
   Vec3L<L> albedo, specScale;
@@ -243,11 +245,11 @@ TWR_LANE_INLINE MaterialTexelsL<L> materialTexels(const FragmentL<L>& f, const S
   // A shifted uv is read with GLSL's dFdx / dFdy (textureGrad), the fine differences.
   const bool uvShifted = Features::kHasHeightMap && shiftsUv(u.surfaceDetail);
   MaterialTexelsL<L> m{Vec3L<L>(one), Vec3L<L>(one)};
-  if constexpr (Features::kHasDiffuseMap) {
+  if (maps.diffuse != nullptr && viewReadsDiffuseMap(u.view)) {
     const Vec4L<L> texel = sampleMap<L>(*maps.diffuse, u, kDiffuseSlot, f, detail.uv, uvShifted);
     m.albedo = Vec3L<L>(texel.x, texel.y, texel.z);
   }
-  if constexpr (Features::kHasSpecularMap) {
+  if (maps.specular != nullptr && viewReadsSpecularMap(u.view)) {
     const Vec4L<L> texel = sampleMap<L>(*maps.specular, u, kSpecularSlot, f, detail.uv, uvShifted);
     m.specScale = Vec3L<L>(texel.x, texel.y, texel.z);
   }

@@ -170,20 +170,29 @@ Vec4T<T> vectorAsColour(Vec3T<T> v) {
   return Vec4T<T>((v + T(1)) * T(0.5), T(1));
 }
 
-// The compile-time feature set of one shader permutation: what changes the hot loop (the maps
-// it reads, the lighting space). The view is not one (ShadeUniformsT::view): a debug view
-// costs a branch per vector of fragments, not a kernel per view (and the varyings a kernel of
-// its own would have dropped: docs/performance.md, "Debug views at run time").
+// The compile-time feature set of one shader permutation: what changes the hot loop (the
+// normal and height maps, which change how the surface frame is built; the lighting space).
+// The view is not one (ShadeUniformsT::view): a debug view costs a branch per vector of
+// fragments, not a kernel per view (and the varyings a kernel of its own would have dropped:
+// docs/performance.md, "Debug views at run time"). Nor are the diffuse and specular maps:
+// each is one texture read or none, a uniform branch per vector (materialTexels), and as
+// template parameters they made four times the kernels for the same speed
+// (docs/performance.md, "The material's colour maps at run time").
 // HeightMap: the material's surface detail reads its height map (surface_detail-inl.h); the
 // method itself is a uniform (one branch per draw item), as each adds a loop, not a variant.
-template <bool DiffuseMap, bool NormalMap, bool SpecularMap, LightingSpace Space, bool HeightMap = false>
+template <bool NormalMap, LightingSpace Space, bool HeightMap = false>
 struct ShaderFeatures {
   static constexpr bool kHasHeightMap = HeightMap;
-  static constexpr bool kHasDiffuseMap = DiffuseMap;
   static constexpr bool kHasNormalMap = NormalMap;
-  static constexpr bool kHasSpecularMap = SpecularMap;
   static constexpr LightingSpace kSpace = Space;
 };
+
+// Whether a view reads the material's diffuse or specular map: the shaded view and what draws
+// as it (the environment, shadow, Phong-term and reflection views) read both; albedo and
+// mip_level the diffuse map alone.
+constexpr bool viewDrawsAsShaded(View v) { return isShadedView(v) || isSsrView(v); }
+constexpr bool viewReadsDiffuseMap(View v) { return viewDrawsAsShaded(v) || v == View::Albedo || v == View::MipLevel; }
+constexpr bool viewReadsSpecularMap(View v) { return viewDrawsAsShaded(v); }
 
 // The view a fragment shows for the frame's view: the reflection views draw a shaded frame the
 // reflection pass then writes over (isSsrView); mip_level draws as albedo, its maps swapped for
@@ -247,7 +256,9 @@ constexpr bool viewReadsLightingSpace(View v) {
   return v == View::Shaded || v == View::MappedNormal || v == View::LightTangent || v == View::EyeTangent;
 }
 inline ShaderKey canonicalShaderKey(ShaderKey key) {
-  if (isShadedView(key.view) || isSsrView(key.view)) {
+  key.diffuseMap = key.diffuseMap && viewReadsDiffuseMap(key.view);
+  key.specularMap = key.specularMap && viewReadsSpecularMap(key.view);
+  if (viewDrawsAsShaded(key.view)) {
     // The environment, shadow and Phong-term views read what the shaded view reads; the
     // reflection views draw a shaded frame the reflection pass then writes over.
     key.view = View::Shaded;
@@ -255,17 +266,13 @@ inline ShaderKey canonicalShaderKey(ShaderKey key) {
   switch (key.view) {
     case View::Shaded: break;
     case View::Albedo:
-    case View::MipLevel:
-      key.normalMap = key.specularMap = false;
-      break;
-    case View::MappedNormal: key.diffuseMap = key.specularMap = false; break;
+    case View::MipLevel: key.normalMap = false; break;
+    case View::MappedNormal: break;
     case View::Height:
     case View::ParallaxOffset:
     case View::ParallaxSteps:
-    case View::SelfShadow:
-      key.diffuseMap = key.normalMap = key.specularMap = false;
-      break;
-    default: key.diffuseMap = key.normalMap = key.specularMap = key.heightMap = false; break;
+    case View::SelfShadow: key.normalMap = false; break;
+    default: key.normalMap = key.heightMap = false; break;
   }
   if (!key.heightMap && !viewReadsLightingSpace(key.view)) key.space = LightingSpace::World;
   return key;
@@ -286,31 +293,23 @@ ShaderKey shaderKeyFor(const ShadeUniformsT<T>& uniforms, const RenderSettings& 
 // Calls body.template operator()<ShaderFeatures<...>>() for the permutation `key` names: the
 // one runtime branch per draw item, so nothing per pixel is dispatched at run time. The
 // features a view does not read are off (canonicalShaderKey), so a debug view runs the
-// permutation of fewer maps: 2^5 permutations in all, whatever the view.
+// permutation of fewer maps: 2^3 permutations in all, whatever the view.
 template <typename Body>
 void withShaderFeatures(const ShaderKey& keyIn, Body&& body) {
   const ShaderKey key = canonicalShaderKey(keyIn);
-  auto withSpace = [&]<bool D, bool N, bool S, bool H>() {
+  auto withSpace = [&]<bool N, bool H>() {
     if (key.space == LightingSpace::Tangent) {
-      body.template operator()<ShaderFeatures<D, N, S, LightingSpace::Tangent, H>>();
+      body.template operator()<ShaderFeatures<N, LightingSpace::Tangent, H>>();
     } else {
-      body.template operator()<ShaderFeatures<D, N, S, LightingSpace::World, H>>();
+      body.template operator()<ShaderFeatures<N, LightingSpace::World, H>>();
     }
   };
-  auto withHeight = [&]<bool D, bool N, bool S>() {
-    if (key.heightMap) return withSpace.template operator()<D, N, S, true>();
-    withSpace.template operator()<D, N, S, false>();
+  auto withHeight = [&]<bool N>() {
+    if (key.heightMap) return withSpace.template operator()<N, true>();
+    withSpace.template operator()<N, false>();
   };
-  auto withDiffuse = [&]<bool N, bool S>() {
-    if (key.diffuseMap) return withHeight.template operator()<true, N, S>();
-    withHeight.template operator()<false, N, S>();
-  };
-  auto withNormal = [&]<bool S>() {
-    if (key.normalMap) return withDiffuse.template operator()<true, S>();
-    withDiffuse.template operator()<false, S>();
-  };
-  if (key.specularMap) return withNormal.template operator()<true>();
-  withNormal.template operator()<false>();
+  if (key.normalMap) return withHeight.template operator()<true>();
+  withHeight.template operator()<false>();
 }
 
 // Shades with the permutation `key` names (one runtime dispatch; for single fragments such

@@ -12,7 +12,7 @@ namespace {
 
 constexpr float kEps = 1e-5f;
 
-using PlainShaded = ShaderFeatures<false, false, false, LightingSpace::World>;
+using PlainShaded = ShaderFeatures<false, LightingSpace::World>;
 
 // Surface at the origin facing +z, eye on +z.
 Fragment surfaceFragment() {
@@ -183,11 +183,11 @@ TEST(Shade, NormalMapTiltsTheNormalAlongTheTangentFrame) {
   ShadeUniforms u = uniformsWithLight({0, 0, 2}, {1, 0, 0});
   u.normalMap = &map;
   ShadeTerms terms;
-  shadeFragment<ShaderFeatures<false, true, false, LightingSpace::World>>(surfaceFragment(), u, &terms);
+  shadeFragment<ShaderFeatures<true, LightingSpace::World>>(surfaceFragment(), u, &terms);
   EXPECT_NEAR(terms.nl.x, 1.0f, 1e-4f);
   EXPECT_NEAR(terms.lights[0].nDotL, terms.nl.z, kEps);
   // Tangent lighting space: Nl is the mapped vector itself.
-  shadeFragment<ShaderFeatures<false, true, false, LightingSpace::Tangent>>(surfaceFragment(), u, &terms);
+  shadeFragment<ShaderFeatures<true, LightingSpace::Tangent>>(surfaceFragment(), u, &terms);
   EXPECT_NEAR(terms.nl.x, terms.mappedTangent.x, kEps);
   EXPECT_NEAR(terms.mappedTangent.x, 1.0f, 1e-4f);
 }
@@ -197,7 +197,7 @@ TEST(Shade, TangentSpaceUsesTheInterpolatedDirections) {
   f.lightDirTangent[0] = vec3(0, 0, 3);  // straight above in tangent space
   f.eyeDirTangent = vec3(0, 0, 7);
   ShadeUniforms u = uniformsWithLight({0, 0, 2}, {1, 0, 0});  // d = 2 from posWorld, If = 1
-  const vec4 c = shadeFragment<ShaderFeatures<false, false, false, LightingSpace::Tangent>>(f, u, nullptr);
+  const vec4 c = shadeFragment<ShaderFeatures<false, LightingSpace::Tangent>>(f, u, nullptr);
   EXPECT_NEAR(c.r, 0.1f + 0.5f + 0.25f, kEps);
 }
 
@@ -209,7 +209,7 @@ TEST(Shade, DiffuseAndSpecularMapsScaleTheirTerms) {
   ShadeUniforms u = uniformsWithLight({0, 0, 2}, {1, 0, 0});
   u.diffuseMap = &albedo;
   u.specularMap = &spec;
-  const vec4 c = shadeFragment<ShaderFeatures<true, false, true, LightingSpace::World>>(surfaceFragment(), u, nullptr);
+  const vec4 c = shadeFragment<ShaderFeatures<false, LightingSpace::World>>(surfaceFragment(), u, nullptr);
   // r: 0.2*1*0.5 + 0.5*1 + 0.25*0 = 0.6; g: 0 + 0 + 0.25*1 = 0.25; b: 0.2*0.2*0.5 + 0.5*0.2 = 0.12.
   EXPECT_NEAR(c.r, 0.6f, kEps);
   EXPECT_NEAR(c.g, 0.25f, kEps);
