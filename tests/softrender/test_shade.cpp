@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace twr {
 namespace {
@@ -214,6 +215,47 @@ TEST(Shade, DiffuseAndSpecularMapsScaleTheirTerms) {
   EXPECT_NEAR(c.r, 0.6f, kEps);
   EXPECT_NEAR(c.g, 0.25f, kEps);
   EXPECT_NEAR(c.b, 0.12f, kEps);
+}
+
+// The diffuse and specular maps are read at run time (materialTexels), so what the key's
+// canonical form drops for a view must also be left unread by the shading itself: the trace
+// of a view shows exactly the texels that view reads.
+TEST(Shade, AViewReadsOnlyTheColourMapsItShows) {
+  Texture albedo, spec;
+  albedo.width = albedo.height = spec.width = spec.height = 1;
+  albedo.rgba = {255, 0, 255, 255};  // (1, 0, 1): bytes 0 and 255 read back exactly
+  spec.rgba = {0, 255, 0, 255};      // (0, 1, 0)
+  ShadeUniforms u = uniformsWithLight({0, 0, 2}, {1, 0, 0});
+  u.diffuseMap = &albedo;
+  u.specularMap = &spec;
+  const auto texelsIn = [&](View view) {
+    u.view = view;
+    ShadeTerms terms;
+    shadeFragment<PlainShaded>(surfaceFragment(), u, &terms);
+    return std::pair(terms.albedo, terms.specScale);
+  };
+  const vec3 white(1.0f), mappedAlbedo(1, 0, 1), mappedSpec(0, 1, 0);
+  for (View view : {View::Shaded, View::Shadow, View::Specular, View::ReflectDir}) {
+    SCOPED_TRACE(toString(view));
+    EXPECT_EQ(texelsIn(view), std::pair(mappedAlbedo, mappedSpec));
+  }
+  for (View view : {View::Albedo, View::MipLevel}) {
+    SCOPED_TRACE(toString(view));
+    EXPECT_EQ(texelsIn(view), std::pair(mappedAlbedo, white));
+  }
+  for (View view : {View::Normal, View::MappedNormal, View::Uv, View::Height, View::SelfShadow}) {
+    SCOPED_TRACE(toString(view));
+    EXPECT_EQ(texelsIn(view), std::pair(white, white));
+  }
+  // And the key agrees, so equal pictures share one kernel.
+  ShaderKey key;
+  key.diffuseMap = key.specularMap = true;
+  key.view = View::Albedo;
+  EXPECT_TRUE(canonicalShaderKey(key).diffuseMap);
+  EXPECT_FALSE(canonicalShaderKey(key).specularMap);
+  key.view = View::Normal;
+  EXPECT_FALSE(canonicalShaderKey(key).diffuseMap);
+  EXPECT_FALSE(canonicalShaderKey(key).specularMap);
 }
 
 TEST(Shade, PhongTermViewsShowEachTermAloneSummedOverTheLights) {
