@@ -298,13 +298,13 @@ constexpr int kSkyEquirectWidth = 1024;           // texels; height is half
 constexpr double kSkyGridStepDeg = 30.0;          // grid spacing, degrees
 constexpr double kSkyGridHalfWidthDeg = 0.35;     // half a grid line, degrees
 constexpr double kSunHalfAngleDeg = 4.0;          // the sun's disc radius, degrees
+using twr::kPi;
 constexpr double kSunDirection[3] = {0.45, 0.55, -0.70};  // towards the sun (normalised below)
 constexpr double kHorizonColour[3] = {0.86, 0.90, 0.95};
 constexpr double kZenithColour[3] = {0.16, 0.36, 0.78};
 constexpr double kSunColour[3] = {1.0, 0.92, 0.62};
 constexpr double kGroundColours[2][3] = {{0.30, 0.26, 0.20}, {0.52, 0.47, 0.36}};
 constexpr double kGroundDepth = 1.0;  // the ground plane lies this far below the eye (y = -1)
-constexpr double kPi = std::numbers::pi;
 constexpr double kSunEdgeSharpness = 4.0;       // the disc's rim goes from 0 to 1 over a quarter of it
 constexpr double kHazeRisePerUnitY = 6.0;       // the ground fades into haze within y > -1/6
 constexpr double kHazeStrength = 0.8;           // how far towards the horizon colour the haze goes

@@ -20,6 +20,8 @@ constexpr int kVertexBytes = 16;
 constexpr int kVerticesPerQuad = 4;
 // Generous upper bound on quads per glyph (the densest glyphs use fewer than 20).
 constexpr int kMaxQuadsPerGlyph = 32;
+constexpr int kTileLabelScaleStepPx = 160;  // tile width per step of caption text scale
+constexpr int kMaxTileLabelScale = 3;
 
 std::string printable(std::string_view text) {
   std::string out(text);
@@ -48,6 +50,12 @@ void fillRect(Image& image, int x0, int y0, int x1, int y1, Rgb8 colour) {
   for (int y = y0; y < y1; ++y) {
     for (int x = x0; x < x1; ++x) setPixel(image, x, y, colour);
   }
+}
+
+int tileLabelScale(int tileWidth) { return std::clamp(tileWidth / kTileLabelScaleStepPx, 1, kMaxTileLabelScale); }
+
+int tileLabelHeight(int tileWidth) {
+  return (kFontGlyphHeightUnits + 2 * kTileLabelPadUnits) * tileLabelScale(tileWidth);
 }
 
 int textWidth(std::string_view text, int scale) {

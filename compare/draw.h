@@ -16,6 +16,14 @@ namespace twr {
 inline constexpr int kFontGlyphHeightUnits = 10;
 inline constexpr int kFontLineHeightUnits = 12;
 
+// The caption band above an image tile (the side by side, the montage): its text at
+// tileLabelScale, kTileLabelPadUnits font units of padding above and below it.
+inline constexpr int kTileLabelPadUnits = 3;
+// Text scale of a tile's caption: one step per 160 pixels of tile width, from 1 to 3.
+int tileLabelScale(int tileWidth);
+// Height of a tile's caption band in pixels.
+int tileLabelHeight(int tileWidth);
+
 void fillRect(Image& image, int x0, int y0, int x1, int y1, Rgb8 colour);
 void setPixel(Image& image, int x, int y, Rgb8 colour);
 

@@ -10,14 +10,6 @@ namespace {
 
 constexpr std::uint8_t kOpaque = 255;  // alpha of a wholly covered pixel
 
-bool lineAt(const RenderOutput& output, std::size_t i) { return !output.lineMask.empty() && output.lineMask[i] != 0; }
-
-void checkLength(std::size_t actual, std::size_t expected, bool mayBeEmpty, const std::string& what) {
-  if (actual == expected || (mayBeEmpty && actual == 0)) return;
-  throw InputError("interior comparison: " + what + " buffer has " + std::to_string(actual) + " entries, expected " +
-                   (mayBeEmpty ? "0 or " : "") + std::to_string(expected));
-}
-
 }  // namespace
 
 InteriorSplit splitInterior(const RenderOutput& approx, const RenderOutput& reference) {
@@ -28,12 +20,8 @@ InteriorSplit splitInterior(const RenderOutput& approx, const RenderOutput& refe
                      std::to_string(reference.height) + ", expected the same non-empty size");
   }
   const std::size_t pixelCount = static_cast<std::size_t>(approx.width) * static_cast<std::size_t>(approx.height);
-  for (const RenderOutput* side : {&approx, &reference}) {
-    const std::string name = side == &approx ? "approximation" : "reference";
-    checkLength(side->rgba.size(), 4 * pixelCount, false, name + " rgba");
-    checkLength(side->triangleId.size(), pixelCount, true, name + " triangleId");
-    checkLength(side->lineMask.size(), pixelCount, true, name + " lineMask");
-  }
+  checkOutputBuffers("interior comparison", approx, "approximation", pixelCount);
+  checkOutputBuffers("interior comparison", reference, "reference", pixelCount);
   InteriorSplit split;
   split.width = approx.width;
   split.height = approx.height;

@@ -22,9 +22,10 @@ std::string sizeText(const RenderOutput& output) {
 }
 
 // `what` names the buffer ("CPU depth"); optional buffers may be empty.
-void checkLength(std::size_t actual, std::size_t expected, bool mayBeEmpty, const std::string& what) {
+void checkLength(const std::string& context, std::size_t actual, std::size_t expected, bool mayBeEmpty,
+                 const std::string& what) {
   if (actual == expected || (mayBeEmpty && actual == 0)) return;
-  throw InputError("compare: " + what + " buffer has " + std::to_string(actual) + " entries, expected " +
+  throw InputError(context + ": " + what + " buffer has " + std::to_string(actual) + " entries, expected " +
                    (mayBeEmpty ? "0 or " : "") + std::to_string(expected));
 }
 
@@ -46,18 +47,19 @@ void validate(const RenderOutput& cpu, const RenderOutput& gl, const CompareOpti
                      std::to_string(kMaxImageSide) + "]");
   }
   const std::size_t pixelCount = static_cast<std::size_t>(cpu.width) * cpu.height;
-  for (const auto* side : {&cpu, &gl}) {
-    const std::string name = side == &cpu ? "CPU" : "GL";
-    checkLength(side->rgba.size(), pixelCount * kRgbaChannels, false, name + " rgba");
-    checkLength(side->depth.size(), pixelCount, true, name + " depth");
-    checkLength(side->triangleId.size(), pixelCount, true, name + " triangleId");
-    checkLength(side->lineMask.size(), pixelCount, true, name + " lineMask");
-  }
+  checkOutputBuffers("compare", cpu, "CPU", pixelCount);
+  checkOutputBuffers("compare", gl, "GL", pixelCount);
 }
 
-bool lineAt(const RenderOutput& output, std::size_t i) { return !output.lineMask.empty() && output.lineMask[i] != 0; }
-
 }  // namespace
+
+void checkOutputBuffers(const std::string& context, const RenderOutput& out, const std::string& name,
+                        std::size_t pixelCount) {
+  checkLength(context, out.rgba.size(), pixelCount * kRgbaChannels, false, name + " rgba");
+  checkLength(context, out.depth.size(), pixelCount, true, name + " depth");
+  checkLength(context, out.triangleId.size(), pixelCount, true, name + " triangleId");
+  checkLength(context, out.lineMask.size(), pixelCount, true, name + " lineMask");
+}
 
 double CompareMetrics::over1Pct() const {
   return bothCovered == 0 ? 0.0 : kPercent * static_cast<double>(over1) / static_cast<double>(bothCovered);

@@ -18,6 +18,7 @@
 #include "scene/renderer.h"
 
 #include <cstdint>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -132,6 +133,12 @@ struct CompareResult {
 // Throws InputError when the two outputs differ in size, are empty, or a buffer has the wrong
 // length (rgba must be width * height * 4; depth, triangleId and lineMask width * height or
 // empty, where empty means "not available").
+// Throws InputError ("<context>: <name> depth buffer has N entries, expected 0 or M") unless
+// `out` holds four rgba bytes per pixel of `pixelCount` and one depth, triangle id and line
+// mask entry per pixel, or none (those three are optional).
+void checkOutputBuffers(const std::string& context, const RenderOutput& out, const std::string& name,
+                        std::size_t pixelCount);
+
 CompareResult compareDetailed(const RenderOutput& cpu, const RenderOutput& gl, const CompareOptions& options = {});
 CompareMetrics compare(const RenderOutput& cpu, const RenderOutput& gl, const CompareOptions& options = {});
 

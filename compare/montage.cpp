@@ -11,22 +11,17 @@ namespace twr {
 
 namespace {
 
-constexpr int kLabelPadUnits = 3;     // font units above and below the label, as the side-by-side
-constexpr int kLabelScaleStepPx = 160;  // one text scale step per this many pixels of tile width
-constexpr int kMaxLabelScale = 3;
-constexpr int kMaxGapPx = 64;
-
-int labelScale(int width) { return std::clamp(width / kLabelScaleStepPx, 1, kMaxLabelScale); }
+constexpr int kMaxMontageGapPx = 64;
 
 }  // namespace
 
-int montageLabelHeight(int tileWidth) { return (kFontGlyphHeightUnits + 2 * kLabelPadUnits) * labelScale(tileWidth); }
+int montageLabelHeight(int tileWidth) { return tileLabelHeight(tileWidth); }
 
 Image makeMontage(const std::vector<MontageTile>& tiles, const MontageOptions& options) {
   if (tiles.empty()) throw InputError("montage: no tiles");
   if (options.columns < 1) throw InputError("montage: columns must be >= 1");
-  if (options.gapPx < 0 || options.gapPx > kMaxGapPx) {
-    throw InputError("montage: gap must be in [0, " + std::to_string(kMaxGapPx) + "] pixels");
+  if (options.gapPx < 0 || options.gapPx > kMaxMontageGapPx) {
+    throw InputError("montage: gap must be in [0, " + std::to_string(kMaxMontageGapPx) + "] pixels");
   }
   const int w = tiles.front().image.width, h = tiles.front().image.height;
   for (const MontageTile& t : tiles) {
@@ -50,12 +45,12 @@ Image makeMontage(const std::vector<MontageTile>& tiles, const MontageOptions& o
   }
   Image canvas = makeImage(static_cast<int>(canvasWidth), static_cast<int>(canvasHeight));
   fillRect(canvas, 0, 0, canvas.width, canvas.height, kColourPanel);
-  const int scale = labelScale(w);
+  const int scale = tileLabelScale(w);
   for (int i = 0; i < count; ++i) {
     const int x0 = (i % columns) * (w + options.gapPx);
     const int y0 = (i / columns) * (label + h + options.gapPx);
     const MontageTile& t = tiles[static_cast<std::size_t>(i)];
-    drawText(canvas, x0 + std::max(0, (w - textWidth(t.label, scale)) / 2), y0 + kLabelPadUnits * scale, t.label,
+    drawText(canvas, x0 + std::max(0, (w - textWidth(t.label, scale)) / 2), y0 + kTileLabelPadUnits * scale, t.label,
              kColourWhite, scale);
     for (int y = 0; y < h; ++y) {
       std::copy_n(t.image.pixel(0, y), static_cast<std::size_t>(w) * 4, canvas.pixel(x0, y0 + label + y));

@@ -10,11 +10,7 @@
 namespace twr {
 namespace {
 
-constexpr int kLabelPadUnits = 3;  // font units above and below the label text
-// Label text scale: one step per this many pixels of image width, at least 1, at most 3.
-constexpr int kLabelScaleStepPx = 160;
-constexpr int kMaxLabelScale = 3;
-constexpr int kMaxGapPx = 1024;
+constexpr int kMaxSideBySideGapPx = 1024;
 constexpr int kAlphaOpaque = 255;
 
 void checkOutput(const RenderOutput& output, const char* name) {
@@ -35,8 +31,6 @@ void checkOutput(const RenderOutput& output, const char* name) {
     }
   }
 }
-
-int labelScale(int width) { return std::clamp(width / kLabelScaleStepPx, 1, kMaxLabelScale); }
 
 void blit(Image& canvas, const Image& source, int x0, int y0) {
   for (int y = 0; y < source.height; ++y) {
@@ -81,7 +75,7 @@ Image viewImage(const RenderOutput& output, BackgroundMode mode) {
 
 int sideBySideLabelHeight(int width, const SideBySideOptions& options) {
   if (!options.labels) return 0;
-  return (kFontGlyphHeightUnits + 2 * kLabelPadUnits) * labelScale(width);
+  return tileLabelHeight(width);
 }
 
 Image makeSideBySide(const RenderOutput& cpu, const RenderOutput& gl, const SideBySideOptions& options) {
@@ -92,9 +86,9 @@ Image makeSideBySide(const RenderOutput& cpu, const RenderOutput& gl, const Side
                      " but GL output is " + std::to_string(gl.width) + "x" + std::to_string(gl.height) +
                      ", expected the same size");
   }
-  if (options.gapPx < 0 || options.gapPx > kMaxGapPx) {
+  if (options.gapPx < 0 || options.gapPx > kMaxSideBySideGapPx) {
     throw InputError("compare: side-by-side gap is " + std::to_string(options.gapPx) + " pixels, expected [0, " +
-                     std::to_string(kMaxGapPx) + "]");
+                     std::to_string(kMaxSideBySideGapPx) + "]");
   }
   const int width = cpu.width;
   const int labelHeight = sideBySideLabelHeight(width, options);
@@ -103,8 +97,8 @@ Image makeSideBySide(const RenderOutput& cpu, const RenderOutput& gl, const Side
   blit(canvas, viewImage(cpu, options.background), 0, labelHeight);
   blit(canvas, viewImage(gl, options.background), width + options.gapPx, labelHeight);
   if (options.labels) {
-    const int scale = labelScale(width);
-    const int textY = kLabelPadUnits * scale;
+    const int scale = tileLabelScale(width);
+    const int textY = kTileLabelPadUnits * scale;
     const int rightX0 = width + options.gapPx;
     drawText(canvas, (width - textWidth("CPU", scale)) / 2, textY, "CPU", kColourWhite, scale);
     drawText(canvas, rightX0 + (width - textWidth("GL", scale)) / 2, textY, "GL", kColourWhite, scale);

@@ -12,8 +12,6 @@
 namespace twr::report {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kTwoPi = 2.0 * kPi;
 // makeSphere's handedness: B = -cross(N, T) everywhere (see scene/primitives.cpp).
 constexpr double kSphereHandedness = -1.0;

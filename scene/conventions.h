@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 
 namespace twr {
 
@@ -25,6 +26,8 @@ using glm::ivec2;
 using glm::vec2;
 using glm::vec3;
 using glm::vec4;
+
+inline constexpr double kPi = std::numbers::pi;  // radians in half a turn
 
 // Fixed-point precision of snapped window coordinates, as llvmpipe: 8 fractional bits,
 // so one pixel is 256 sub-pixel units.

@@ -11,8 +11,6 @@
 namespace twr {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 // Side of the sphere or paraboloid map the irradiance cube is turned into (texels): a layer
 // spans 180 to 360 degrees where a cube face spans 90, so twice the cube's side.
 constexpr int kIrradianceMapSize = 2 * kIrradianceCubeSize;
@@ -23,30 +21,6 @@ const CubeMapLevel& sourceLevel(const CubeMap& cube, int side) {
     if (level.size <= side) return level;
   }
   return cube.levels.back();
-}
-
-// Every texel of a level as a direction, its solid angle and its radiance.
-struct SourceTexels {
-  std::vector<glm::dvec3> direction, radiance;
-  std::vector<double> solidAngle;
-};
-SourceTexels sourceTexels(const CubeMapLevel& level) {
-  SourceTexels s;
-  const std::size_t count = level.r.size();
-  s.direction.reserve(count);
-  s.radiance.reserve(count);
-  s.solidAngle.reserve(count);
-  for (int face = 0; face < kCubeFaces; ++face) {
-    for (int y = 0; y < level.size; ++y) {
-      for (int x = 0; x < level.size; ++x) {
-        const std::size_t i = level.index(face, x, y);
-        s.direction.push_back(cubeTexelDirection(face, x, y, level.size));
-        s.radiance.emplace_back(level.r[i], level.g[i], level.b[i]);
-        s.solidAngle.push_back(cubeTexelSolidAngle(x, y, level.size));
-      }
-    }
-  }
-  return s;
 }
 
 // The area on the unit sphere of the part of a face z = 1 between (0, 0) and (x, y) (the
@@ -84,8 +58,27 @@ double cubeTexelSolidAngle(int x, int y, int size) {
   return areaToOrigin(x1, y1) - areaToOrigin(x0, y1) - areaToOrigin(x1, y0) + areaToOrigin(x0, y0);
 }
 
+CubeLevelTexels cubeLevelTexels(const CubeMapLevel& level) {
+  CubeLevelTexels s;
+  s.side = level.size;
+  const std::size_t count = level.r.size();
+  s.direction.reserve(count);
+  s.radiance.reserve(count);
+  s.solidAngle.reserve(count);
+  for (int face = 0; face < kCubeFaces; ++face) {
+    for (int y = 0; y < level.size; ++y) {
+      for (int x = 0; x < level.size; ++x) {
+        s.direction.push_back(cubeTexelDirection(face, x, y, level.size));
+        s.radiance.emplace_back(level.texel(face, x, y));
+        s.solidAngle.push_back(cubeTexelSolidAngle(x, y, level.size));
+      }
+    }
+  }
+  return s;
+}
+
 CubeMap irradianceCubeFromCube(const CubeMap& cube, int size) {
-  const SourceTexels source = sourceTexels(sourceLevel(cube, kIrradianceSourceSize));
+  const CubeLevelTexels source = cubeLevelTexels(sourceLevel(cube, kIrradianceSourceSize));
   CubeMap out;
   out.source = cube.source + " (irradiance)";
   CubeMapLevel level;
@@ -122,7 +115,7 @@ CubeMap irradianceCubeFromCube(const CubeMap& cube, int size) {
 }
 
 Sh9Irradiance sh9IrradianceFromCube(const CubeMap& cube) {
-  const SourceTexels source = sourceTexels(sourceLevel(cube, kIrradianceSourceSize));
+  const CubeLevelTexels source = cubeLevelTexels(sourceLevel(cube, kIrradianceSourceSize));
   std::array<glm::dvec3, 9> projection{};  // L_lm without Y's constants
   for (std::size_t j = 0; j < source.direction.size(); ++j) {
     const std::array<double, 9> p = shPolynomials(source.direction[j]);

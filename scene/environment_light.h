@@ -21,6 +21,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 namespace twr {
 
@@ -41,6 +42,16 @@ glm::dvec3 cubeTexelDirection(int face, int x, int y, int size);
 // The solid angle of texel (x, y) of any face of a cube of side `size` (steradians, exact:
 // the projected area of the texel's square on the unit sphere; the six faces sum to 4 pi).
 double cubeTexelSolidAngle(int x, int y, int size);
+
+// Every texel of a cube level in face order ((face * side + y) * side + x): its direction,
+// its exact solid angle and its radiance, in double (what the sums over the sphere read: the
+// irradiance here, the prefiltered reflection in environment_specular.h).
+struct CubeLevelTexels {
+  int side = 0;
+  std::vector<glm::dvec3> direction, radiance;
+  std::vector<double> solidAngle;
+};
+CubeLevelTexels cubeLevelTexels(const CubeMapLevel& level);
 
 // The irradiance cube of side `size` (one level): each texel D at its centre's direction.
 CubeMap irradianceCubeFromCube(const CubeMap& cube, int size = kIrradianceCubeSize);

@@ -12,29 +12,6 @@
 namespace twr {
 namespace {
 
-// A source level's texels in face order ((face * side + y) * side + x): direction, radiance
-// and exact solid angle.
-struct SourceTexels {
-  int side = 0;
-  std::vector<glm::dvec3> direction, radiance;
-  std::vector<double> solidAngle;
-};
-
-SourceTexels sourceTexels(const CubeMapLevel& level) {
-  SourceTexels s;
-  s.side = level.size;
-  for (int face = 0; face < kCubeFaces; ++face) {
-    for (int y = 0; y < level.size; ++y) {
-      for (int x = 0; x < level.size; ++x) {
-        s.direction.push_back(cubeTexelDirection(face, x, y, level.size));
-        s.radiance.emplace_back(level.texel(face, x, y));
-        s.solidAngle.push_back(cubeTexelSolidAngle(x, y, level.size));
-      }
-    }
-  }
-  return s;
-}
-
 // d projected onto face f's plane, GL's table (scene/environment.h): (s, t) and the signed
 // major component, positive on the face's side.
 struct FaceProjection {
@@ -128,7 +105,7 @@ double lobeWeight(double c, int side) {
 
 // One level of the prefiltered cube: every texel the lobe-weighted mean of `source` around
 // its centre's direction, rows shared out over the machine's cores.
-CubeMapLevel convolvedLevel(const SourceTexels& source, int side) {
+CubeMapLevel convolvedLevel(const CubeLevelTexels& source, int side) {
   const double exponent = specularExponentOfSide(side);
   CubeMapLevel out;
   out.size = side;
@@ -192,7 +169,7 @@ CubeMap specularCubeFromCube(const CubeMap& cube) {
   out.source = cube.source + " (prefiltered specular)";
   const int top = cube.size();
   for (int side = std::min(top, kSpecularCubeMaxSize); side >= 1; side /= 2) {
-    const SourceTexels source = sourceTexels(levelAtMost(cube, std::min(top, std::max(2 * side, kSpecularMinSourceSize))));
+    const CubeLevelTexels source = cubeLevelTexels(levelAtMost(cube, std::min(top, std::max(2 * side, kSpecularMinSourceSize))));
     out.levels.push_back(convolvedLevel(source, side));
   }
   return out;

@@ -10,7 +10,6 @@ namespace {
 
 // Frisvad's switch to a fixed frame: below this n.z the formula is not used (his constant).
 constexpr float kFrisvadMinusZThreshold = -0.9999999f;
-constexpr double kPi = 3.14159265358979323846;
 // Golden angle, radians: successive Fibonacci-sphere points turn by it.
 const double kGoldenAngle = kPi * (3.0 - std::sqrt(5.0));
 // Smallest angle from an axis the near-axis directions use, radians.

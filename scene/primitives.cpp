@@ -13,8 +13,6 @@
 namespace twr {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kTwoPi = 2.0 * kPi;
 
 // Fewest segments that still enclose a volume (inclusive lower bounds).

@@ -90,9 +90,11 @@ struct CapturedFaces {
 inline bool coveredAt(const RenderOutput& out, std::size_t i) {
   return out.triangleId.empty() ? out.rgba[i * 4 + 3] != 0 : out.triangleId[i] != kNoTriangle;
 }
+// Whether a TBN debug line was drawn at pixel i (false for an output without a line mask).
+inline bool lineAt(const RenderOutput& out, std::size_t i) { return !out.lineMask.empty() && out.lineMask[i] != 0; }
 // Whether anything was drawn at pixel i: a triangle or a TBN debug line.
 inline bool drawnAt(const RenderOutput& out, std::size_t i) {
-  return coveredAt(out, i) || (!out.lineMask.empty() && out.lineMask[i] != 0);
+  return coveredAt(out, i) || lineAt(out, i);
 }
 
 class Renderer {

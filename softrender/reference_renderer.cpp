@@ -37,8 +37,6 @@ namespace twr {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 glm::dmat4 localFromNodeTrsDouble(const Node& node) {
   const glm::dmat4 identity(1.0);
   const glm::dvec3 rotateRad = glm::dvec3(node.rotateDeg) * (kPi / 180.0);

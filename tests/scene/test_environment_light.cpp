@@ -15,8 +15,6 @@
 namespace twr {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 // The irradiance cube in direction n (level 0, bilinear), as both renderers read it.
 glm::dvec3 irradianceAt(const CubeMap& irradiance, const glm::dvec3& n) { return cubeBilinear(irradiance, n); }
 

@@ -21,7 +21,6 @@ namespace {
 
 constexpr float kUnitTolerance = 1e-5f;     // |length - 1| of a stored unit vector
 constexpr float kOrthoTolerance = 1e-5f;    // |dot| of two stored perpendicular unit vectors
-constexpr double kPi = 3.14159265358979323846;
 
 bool isFinite(vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
