@@ -462,7 +462,7 @@ void runBench(BenchArgs args) {
   }
 }
 
-const bool registered = registerCommand(50, [](CLI::App& app) {
+const bool benchRegistered = registerCommand(50, [](CLI::App& app) {
   auto args = std::make_shared<BenchArgs>();
   CLI::App* cmd = app.add_subcommand(
       "bench",

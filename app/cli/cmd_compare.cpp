@@ -499,7 +499,7 @@ void runCompare(CompareArgs& args) {
   exitCode() = violations.empty() ? kExitOk : kExitThreshold;
 }
 
-const bool registered = registerCommand(30, [](CLI::App& app) {
+const bool compareRegistered = registerCommand(30, [](CLI::App& app) {
   auto args = std::make_shared<CompareArgs>();
   CLI::App* cmd = app.add_subcommand(
       "compare",

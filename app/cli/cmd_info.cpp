@@ -94,7 +94,7 @@ struct InfoRequest {
   bool gl = false;
 };
 
-const bool registered = registerCommand(10, [](CLI::App& app) {
+const bool infoRegistered = registerCommand(10, [](CLI::App& app) {
   auto request = std::make_shared<InfoRequest>();
   CLI::App* cmd = app.add_subcommand(
       "info",

@@ -62,7 +62,7 @@ void runRender(const RenderArgs& args) {
   std::cout << "wrote " << args.outPath << " (" << width << "x" << height << ", " << rendererName << ")\n";
 }
 
-const bool registered = registerCommand(20, [](CLI::App& app) {
+const bool renderRegistered = registerCommand(20, [](CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand("render", "Render a scene with one backend into a PNG (top row first)");
   addRenderOptions(*cmd, args->request);

@@ -93,7 +93,7 @@ void runReport(const ReportArgs& args) {
   std::cout << "wrote " << html << "\n      " << csv << "\n";
 }
 
-const bool registered = registerCommand(60, [](CLI::App& app) {
+const bool reportRegistered = registerCommand(60, [](CLI::App& app) {
   auto args = std::make_shared<ReportArgs>();
   CLI::App* cmd = app.add_subcommand(
       "report",

@@ -91,7 +91,7 @@ void runSuiteCommand(const SuiteArgs& args) {
   exitCode() = suiteExitCode(cases);
 }
 
-const bool registered = registerCommand(35, [](CLI::App& app) {
+const bool suiteRegistered = registerCommand(35, [](CLI::App& app) {
   auto args = std::make_shared<SuiteArgs>();
   CLI::App* cmd = app.add_subcommand(
       "suite",

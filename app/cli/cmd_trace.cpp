@@ -168,7 +168,7 @@ void runTrace(const TraceArgs& args) {
   }
 }
 
-const bool registered = registerCommand(40, [](CLI::App& app) {
+const bool traceRegistered = registerCommand(40, [](CLI::App& app) {
   auto args = std::make_shared<TraceArgs>();
   CLI::App* cmd = app.add_subcommand(
       "trace",
