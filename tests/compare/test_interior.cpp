@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 namespace twr {
 namespace {
 
@@ -83,6 +85,20 @@ TEST(Interior, RefusesMismatchedOutputs) {
   shortIds.triangleId.resize(3);
   EXPECT_THROW(splitInterior(shortIds, makeSolidOutput(2, 2, 0, 0, 0)), InputError);
   EXPECT_THROW(splitInterior(RenderOutput{}, RenderOutput{}), InputError);
+  // Depth is optional (empty), but when present it has one entry per pixel, as compare() asks.
+  RenderOutput shortDepth = makeSolidOutput(2, 2, 0, 0, 0);
+  shortDepth.depth.resize(3);
+  try {
+    splitInterior(makeSolidOutput(2, 2, 0, 0, 0), shortDepth);
+    ADD_FAILURE() << "a depth buffer of 3 entries for 4 pixels was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("interior comparison: reference depth buffer has 3 entries, expected 0 or 4"),
+              std::string::npos)
+        << e.what();
+  }
+  RenderOutput noDepth = makeSolidOutput(2, 2, 0, 0, 0);
+  noDepth.depth.clear();
+  EXPECT_NO_THROW(splitInterior(noDepth, makeSolidOutput(2, 2, 0, 0, 0)));
 }
 
 }  // namespace
