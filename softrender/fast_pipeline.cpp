@@ -170,10 +170,12 @@ void FastPipeline::emit(const ItemState& s, std::uint32_t item, std::uint32_t tr
     return;
   }
   ++out.stats.trianglesProduced;
-  if (setup.x0 > setup.x1 || setup.y0 > setup.y1) return;  // wholly in the guard band
+  // Wholly in the guard band, or (most of a million-triangle mesh at 720p) between pixel centres.
+  const PixelBox box = pixelCentreBox(setup);
+  if (box.empty()) return;
   const std::uint32_t index = static_cast<std::uint32_t>(out.triangles.size());
   out.triangles.push_back(RasterTriangle{v, varyings, triangleId, item});
-  for (int bin = setup.y0 / kBinRows; bin <= setup.y1 / kBinRows; ++bin) {
+  for (int bin = box.y0 / kBinRows; bin <= box.y1 / kBinRows; ++bin) {
     out.bins[static_cast<std::size_t>(bin)].push_back(index);
   }
 }

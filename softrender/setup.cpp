@@ -68,17 +68,20 @@ SetupResult setupTriangle(const std::array<WindowVertexT<T>, 3>& window, CullMod
 
 SetupResult setupSnappedTriangle(const std::array<std::int32_t, 3>& xFixed, const std::array<std::int32_t, 3>& yFixed,
                                  CullMode cull, FrontFace frontFace, const Viewport& viewport, TriangleSetup& out) {
-  out = TriangleSetup{};
+  // Every field is assigned below, none through a whole-struct temporary: on a million small
+  // triangles a frame, zeroing and copying TriangleSetup cost more than the setup itself.
   out.xFixed = xFixed;
   out.yFixed = yFixed;
-  const std::int64_t x0 = out.xFixed[0], x1 = out.xFixed[1], x2 = out.xFixed[2];
-  const std::int64_t y0 = out.yFixed[0], y1 = out.yFixed[1], y2 = out.yFixed[2];
+  out.corner = {0, 1, 2};
+  const std::int64_t x0 = xFixed[0], x1 = xFixed[1], x2 = xFixed[2];
+  const std::int64_t y0 = yFixed[0], y1 = yFixed[1], y2 = yFixed[2];
   // Twice the signed area, positive for counter-clockwise in GL window coordinates (y up).
   const std::int64_t doubleAreaCcw = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
-  if (doubleAreaCcw == 0) return SetupResult::ZeroArea;
-
   const bool counterClockwise = doubleAreaCcw > 0;
-  out.frontFacing = (frontFace == FrontFace::Ccw) == counterClockwise;
+  out.frontFacing = doubleAreaCcw == 0 || (frontFace == FrontFace::Ccw) == counterClockwise;
+  out.doubleAreaFixed = 0;
+  out.x0 = 0, out.x1 = -1, out.y0 = 0, out.y1 = -1;  // empty until accepted
+  if (doubleAreaCcw == 0) return SetupResult::ZeroArea;
   if (cull == CullMode::Back && !out.frontFacing) return SetupResult::CulledBack;
   if (cull == CullMode::Front && out.frontFacing) return SetupResult::CulledFront;
 
@@ -128,6 +131,17 @@ template SetupResult setupTriangle<float>(const std::array<WindowVertexT<float>,
                                           const Viewport&, TriangleSetup&);
 template SetupResult setupTriangle<double>(const std::array<WindowVertexT<double>, 3>&, CullMode, FrontFace,
                                            const Viewport&, TriangleSetup&);
+
+PixelBox pixelCentreBox(const TriangleSetup& setup) {
+  // Centre px sits at 256 px: the first at or after min X, the last at or before max X.
+  const auto firstCentre = [](std::int32_t fixed) { return pixelFloor(fixed + (kSubpixelScale - 1)); };
+  const std::int32_t minX = std::min({setup.xFixed[0], setup.xFixed[1], setup.xFixed[2]});
+  const std::int32_t maxX = std::max({setup.xFixed[0], setup.xFixed[1], setup.xFixed[2]});
+  const std::int32_t minY = std::min({setup.yFixed[0], setup.yFixed[1], setup.yFixed[2]});
+  const std::int32_t maxY = std::max({setup.yFixed[0], setup.yFixed[1], setup.yFixed[2]});
+  return PixelBox{std::max(setup.x0, firstCentre(minX)), std::min(setup.x1, pixelFloor(maxX)),
+                  std::max(setup.y0, firstCentre(minY)), std::min(setup.y1, pixelFloor(maxY))};
+}
 
 const char* toString(SetupResult result) {
   switch (result) {

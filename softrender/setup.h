@@ -94,7 +94,8 @@ struct TriangleSetup {
 
 // Snaps, orders clockwise, culls and builds the edge functions. Front faces are those
 // counter-clockwise (FrontFace::Ccw) or clockwise (Cw) in GL window coordinates, decided on
-// the snapped positions like llvmpipe; zero snapped area is always rejected.
+// the snapped positions like llvmpipe; zero snapped area is always rejected. A rejected
+// triangle's `out` holds its corners, frontFacing and an empty box; its edges are not built.
 template <typename T = float>
 SetupResult setupTriangle(const std::array<WindowVertexT<T>, 3>& window, CullMode cull, FrontFace frontFace,
                           const Viewport& viewport, TriangleSetup& out);
@@ -103,6 +104,18 @@ SetupResult setupTriangle(const std::array<WindowVertexT<T>, 3>& window, CullMod
 // each window x and y, in triangle order). The fast path snaps each vertex once and calls it.
 SetupResult setupSnappedTriangle(const std::array<std::int32_t, 3>& xFixed, const std::array<std::int32_t, 3>& yFixed,
                                  CullMode cull, FrontFace frontFace, const Viewport& viewport, TriangleSetup& out);
+
+// Pixels (inclusive), like TriangleSetup's box; empty when x0 > x1 or y0 > y1.
+struct PixelBox {
+  int x0 = 0, x1 = -1, y0 = 0, y1 = -1;
+  bool empty() const { return x0 > x1 || y0 > y1; }
+};
+
+// The pixels of an accepted triangle's box whose centres lie within its snapped corners' extent
+// (a covered centre lies in the closed triangle, so in that extent): the only ones it can
+// cover. Tighter than the box, which holds every pixel the extent touches; empty for a small
+// triangle that falls between pixel centres, which covers nothing.
+PixelBox pixelCentreBox(const TriangleSetup& setup);
 
 const char* toString(SetupResult result);
 

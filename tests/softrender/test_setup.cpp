@@ -113,6 +113,52 @@ TEST(Setup, EdgeValuesAreTwiceTheAreaTowardsThePixel) {
   EXPECT_FALSE(coversPixel(s, 1, 1));  // on the hypotenuse: a right edge, not owned
 }
 
+// The fast path bins a triangle by the pixels whose centres its corners' extent holds: every
+// covered pixel must be among them, and a sliver between centres gives none.
+TEST(Setup, PixelCentreBoxHoldsEveryCoveredPixel) {
+  const Viewport vp{12, 12};
+  std::uint32_t state = 12345u;
+  const auto next = [&] {  // a small LCG: the same triangles on every run
+    state = state * 1664525u + 1013904223u;
+    return static_cast<float>(state >> 8) / static_cast<float>(1u << 24);
+  };
+  int covering = 0, emptyBoxes = 0;
+  for (int n = 0; n < 4000; ++n) {
+    // Corners within a 3 px square (sometimes exactly on centres), so most boxes are small.
+    const float ox = 1.0f + 8.0f * next(), oy = 1.0f + 8.0f * next();
+    std::array<WindowVertex, 3> w{};
+    for (WindowVertex& v : w) {
+      v = win(ox + 3.0f * next(), oy + 3.0f * next());
+      if (n % 5 == 0) v = win(std::floor(v.x) + 0.5f, std::floor(v.y) + 0.5f);
+    }
+    TriangleSetup s;
+    if (setupTriangle(w, CullMode::None, FrontFace::Ccw, vp, s) != SetupResult::Ready) continue;
+    const PixelBox box = pixelCentreBox(s);
+    EXPECT_GE(box.x0, s.x0);
+    EXPECT_LE(box.x1, s.x1);
+    EXPECT_GE(box.y0, s.y0);
+    EXPECT_LE(box.y1, s.y1);
+    bool any = false;
+    for (int y = 0; y < vp.height; ++y) {
+      for (int x = 0; x < vp.width; ++x) {
+        if (!coversPixel(s, x, y)) continue;
+        any = true;
+        EXPECT_TRUE(x >= box.x0 && x <= box.x1 && y >= box.y0 && y <= box.y1) << "triangle " << n << " pixel " << x << "," << y;
+      }
+    }
+    covering += any ? 1 : 0;
+    emptyBoxes += box.empty() ? 1 : 0;
+  }
+  EXPECT_GT(covering, 1000);   // the property was checked on many covered pixels
+  EXPECT_GT(emptyBoxes, 100);  // and the box does reject slivers
+  // A triangle inside one pixel, between its centre and its neighbours': nothing to bin.
+  TriangleSetup tiny;
+  ASSERT_EQ(setupTriangle({win(3.6f, 3.6f), win(4.4f, 3.6f), win(3.6f, 4.4f)}, CullMode::None, FrontFace::Ccw, vp, tiny),
+            SetupResult::Ready);
+  EXPECT_FALSE(tiny.x0 > tiny.x1 || tiny.y0 > tiny.y1);  // llvmpipe's box holds pixel 3
+  EXPECT_TRUE(pixelCentreBox(tiny).empty());
+}
+
 TEST(Setup, WindowPositionStaysFiniteNearWZero) {
   const Viewport vp{64, 64};
   // Depth clamp lets z / w grow without bound near w = 0: clamped to kMaxNdcDepth, so window z
