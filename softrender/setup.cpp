@@ -17,6 +17,14 @@ constexpr double kPixelCentreOffset = 0.5;
 // Floor division of 24.8 fixed point by 256 (an arithmetic shift rounds towards -infinity).
 int pixelFloor(std::int32_t fixed) { return static_cast<int>(fixed >> kSubpixelBits); }
 
+// fmin(fmax(v, -bound), bound), NaN to -bound as fmax does, written as compares so that it
+// compiles to a few instructions instead of two libm calls (it runs twice per vertex).
+template <typename T>
+T clampedTo(T v, T bound) {
+  if (!(v >= -bound)) return -bound;
+  return v > bound ? bound : v;
+}
+
 }  // namespace
 
 template <typename T>
@@ -33,7 +41,7 @@ WindowVertexT<T> windowFromClip(const Vec4T<T>& posClip, const Viewport& viewpor
   // The clipper bounds x / w and y / w (frustum or guard band), but with depth clamp (near or
   // far off) z / w is unbounded near w = 0; a finite bound keeps window z finite. Setup clamps
   // each fragment's depth to [0, 1], so no pixel can tell.
-  const T zNdc = std::fmin(std::fmax(posClip.z * out.invW, -static_cast<T>(kMaxNdcDepth)), static_cast<T>(kMaxNdcDepth));
+  const T zNdc = clampedTo(posClip.z * out.invW, static_cast<T>(kMaxNdcDepth));
   if (fusedMultiplyAdd) {
     out.x = std::fma(xNdc, halfWidth, halfWidth);
     out.y = std::fma(yNdc, halfHeight, halfHeight);
@@ -48,9 +56,8 @@ WindowVertexT<T> windowFromClip(const Vec4T<T>& posClip, const Viewport& viewpor
 
 template <typename T>
 std::int32_t snapToSubpixel(T windowCoord) {
-  // fmax/fmin also map NaN to the bound, so nothing undefined reaches the conversion.
-  const T maxCoord = static_cast<T>(kMaxWindowCoord);
-  const T bounded = std::fmin(std::fmax(windowCoord, -maxCoord), maxCoord);
+  // NaN goes to the bound too, so nothing undefined reaches the conversion.
+  const T bounded = clampedTo(windowCoord, static_cast<T>(kMaxWindowCoord));
   return static_cast<std::int32_t>(
       std::lrint((bounded - static_cast<T>(kPixelCentreOffset)) * static_cast<T>(kSubpixelScale)));
 }
