@@ -53,15 +53,19 @@ VertexUniformsT<T> makeVertexUniforms(const Mat4T<T>& worldFromModel, const Mat4
 
 template <typename T>
 ClipVertexT<T> runVertexStage(const Vertex& vertex, const VertexUniformsT<T>& u) {
-  ClipVertexT<T> out;
-  out.posWorld = Vec3T<T>(transformPoint(u.worldFromModel, Vec3T<T>(vertex.posModel)));
-  out.posClip = transformPoint(u.clipFromWorld, out.posWorld);
-  out.nWorld = transformVector(u.normalFromModel, Vec3T<T>(vertex.nModel));
-  out.tWorld = transformVector(u.tangentFromModel, Vec3T<T>(vertex.tangentModel));
+  // Computed in locals, then stored: read back from `out`, each would wait for its store.
+  const Vec3T<T> posWorld(transformPoint(u.worldFromModel, Vec3T<T>(vertex.posModel)));
+  const Vec3T<T> nWorld = transformVector(u.normalFromModel, Vec3T<T>(vertex.nModel));
+  const Vec3T<T> tWorld = transformVector(u.tangentFromModel, Vec3T<T>(vertex.tangentModel));
   // A mirroring transform reverses the handedness of the (T, B, N) frame, so the sign that
   // rebuilds B from N and T flips with it.
   const T sign = static_cast<T>(vertex.tangentModel.w) * u.mirrorSign;
-  out.bWorld = sign * glm::cross(out.nWorld, out.tWorld);
+  ClipVertexT<T> out;
+  out.posWorld = posWorld;
+  out.posClip = transformPoint(u.clipFromWorld, posWorld);
+  out.nWorld = nWorld;
+  out.tWorld = tWorld;
+  out.bWorld = sign * glm::cross(nWorld, tWorld);
   out.uv = Vec2T<T>(vertex.uv);
 
   if (u.tangentLighting) {
