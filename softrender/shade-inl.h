@@ -267,6 +267,17 @@ TWR_LANE_INLINE L specularPow(L x, const Shininess& s) {
   }
 }
 
+// Whether x^s is 0 at x = 0 for every lane: a uniform exponent above 0 (a per-lane one is not
+// looked into). Lets lightSum skip pow where no lit lane faces the reflection.
+template <typename S>
+TWR_LANE_INLINE bool exponentAboveZero(const S& s) {
+  if constexpr (std::is_arithmetic_v<S>) {
+    return s > S(0);
+  } else {
+    return false;
+  }
+}
+
 // The frame's lights at one surface point: shaders/lighting.glsl's lightSum, the loop the
 // forward shading and the deferred lighting pass share. `frame` gives n (the interpolated
 // normal: the shadow maps' slope), nl (the normal lighting uses, in the lighting space) and,
@@ -384,10 +395,12 @@ TWR_LANE_INLINE LightSumL<L> lightSum(const FragmentL<L>* f, const ShadeUniforms
       if (selfShadowOn) selfShadowValue = selfShadow<L>(maps, u, *f, frame.detail, lT);
     }
     const Vec3L<L> diffuse = (kdAlbedo * diffuseFactor) * Vec3L<L>(light.diffuse);
-    // The specular term only where N.L > 0 (and pow only when some lane needs it).
+    // The specular term only where N.L > 0, and pow only when some lane needs it: a lit lane
+    // that faces the reflection (R.V > 0), or any lit lane when the exponent may be 0 (0^0 = 1).
     const auto lit = nDotL > zero;
+    const auto litFacing = lit & (rDotV > zero);  // named: masks combine with &, never &&
     Vec3L<L> specular(zero);
-    if (!emboss && anyOf(lit)) {
+    if (!emboss && anyOf(lit) && (!exponentAboveZero(shininess) || anyOf(litFacing))) {
       specular = select3<L>(lit, (ksSpec * specularPow<L>(rDotV, shininess)) * Vec3L<L>(light.specular), specular);
     }
     L shadow = selfShadowValue;
