@@ -233,6 +233,22 @@ HWY_INLINE hn::Vec<DW> sumRoundedToOddHalf(hn::Vec<DW> p, hn::Vec<DW> c) {
   const auto adjust = hn::And(hn::RebindMask(du, inexact), even);
   return hn::BitCast(dw, hn::IfThenElse(adjust, stepped, bits));
 }
+// Lanes where rounding the double sum s (the exact a b + c rounded to double) to float may
+// differ from rounding the exact value: s exactly halfway between two normal floats (bit 28 of
+// the 52-bit fraction set, the 28 below it clear), or s in the float subnormals' range, whose
+// halfway points lie elsewhere. Anywhere else the exact value and s are on the same side of
+// every halfway point, so one more rounding gives the correctly rounded float.
+HWY_INLINE hn::Mask<DW> mayRoundTwiceHalf(hn::Vec<DW> s) {
+  const DW dw;
+  const DW64 du;
+  constexpr std::uint64_t kDroppedBits = (std::uint64_t{1} << 29) - 1;  // double fraction bits float drops
+  constexpr std::uint64_t kHalfway = std::uint64_t{1} << 28;
+  constexpr double kSmallestNormalFloat = 1.17549435082228750797e-38;  // FLT_MIN
+  const auto halfway = hn::Eq(hn::And(hn::BitCast(du, s), hn::Set(du, kDroppedBits)), hn::Set(du, kHalfway));
+  const auto magnitude = hn::Abs(s);
+  const auto subnormal = hn::And(hn::Lt(magnitude, hn::Set(dw, kSmallestNormalFloat)), hn::Gt(magnitude, hn::Zero(dw)));
+  return hn::Or(hn::RebindMask(dw, halfway), subnormal);
+}
 #endif
 HWY_INLINE LaneF fusedMulAdd(LaneF a, LaneF b, LaneF c) {
 #if HWY_NATIVE_FMA
@@ -240,9 +256,14 @@ HWY_INLINE LaneF fusedMulAdd(LaneF a, LaneF b, LaneF c) {
 #else
   const LaneW p = toWide(a) * toWide(b);
   const LaneW cw = toWide(c);
+  // Usually the plain double sum rounds to the right float; rounding to odd only where it may not.
 #if HWY_TARGET == HWY_SCALAR
+  const LaneW sum(hn::Add(p.lo, cw.lo));
+  if (hn::AllFalse(DW(), mayRoundTwiceHalf(sum.lo))) return toNarrowLanes(sum);
   return toNarrowLanes(LaneW(sumRoundedToOddHalf(p.lo, cw.lo)));
 #else
+  const LaneW sum(hn::Add(p.lo, cw.lo), hn::Add(p.hi, cw.hi));
+  if (hn::AllFalse(DW(), hn::Or(mayRoundTwiceHalf(sum.lo), mayRoundTwiceHalf(sum.hi)))) return toNarrowLanes(sum);
   return toNarrowLanes(LaneW(sumRoundedToOddHalf(p.lo, cw.lo), sumRoundedToOddHalf(p.hi, cw.hi)));
 #endif
 #endif

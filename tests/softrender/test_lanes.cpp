@@ -22,6 +22,7 @@
 #include <hwy/tests/hwy_gtest.h>
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -110,25 +111,53 @@ void AttenuationIsTheSharedSourceAndSeesAReordering() {
 }
 
 // fusedMulAdd, the uv planes' one rounding: std::fma's bits on every target, those with FMA
-// instructions and those that compute it in double rounded to odd. The inputs include
-// products landing exactly on a float rounding tie plus a tiny c, where rounding the double
-// sum again to float (double rounding) picks the wrong neighbour: proven below.
+// instructions and those that compute it in double (rounded to odd where the plain double sum
+// may round twice). The inputs include products landing exactly on a float rounding tie plus a
+// tiny c, where rounding the double sum again to float (double rounding) picks the wrong
+// neighbour: proven below; and results among the float subnormals. They come in runs of 64:
+// ordinary values alone (whole vectors take the plain double sum), ties alone, subnormals
+// alone, and ties and ordinary values in alternate lanes.
 void FusedMulAddIsStdFmaOnEveryTarget() {
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> any(-1000.0f, 1000.0f);
+  std::uniform_real_distribution<float> tiny(-4e-20f, 4e-20f);
   std::uniform_int_distribution<std::uint32_t> bits13(4096, 8191);
   std::vector<float> as, bs, cs;
-  for (int i = 0; i < 20000; ++i) {
-    if (i % 2 == 0) {
-      as.push_back(any(rng));
-      bs.push_back(any(rng));
-      cs.push_back(i % 4 == 0 ? any(rng) : -as.back() * bs.back());  // also near-total cancellation
-    } else {
-      // Two 13-bit integers: a 25- or 26-bit product, often exactly halfway between floats;
-      // c a tiny nudge either way decides the rounding.
-      as.push_back(static_cast<float>(bits13(rng)));
-      bs.push_back(static_cast<float>(bits13(rng)) * 0.5f);
-      cs.push_back((i % 4 == 1 ? 1.0f : -1.0f) * 1e-20f);
+  const auto ordinary = [&](int i) {
+    as.push_back(any(rng));
+    bs.push_back(any(rng));
+    cs.push_back(i % 4 == 0 ? any(rng) : -as.back() * bs.back());  // also near-total cancellation
+  };
+  const auto tie = [&](int i) {
+    // Two 13-bit integers: a 25- or 26-bit product, often exactly halfway between floats;
+    // c a tiny nudge either way decides the rounding.
+    as.push_back(static_cast<float>(bits13(rng)));
+    bs.push_back(static_cast<float>(bits13(rng)) * 0.5f);
+    cs.push_back((i % 4 == 1 ? 1.0f : -1.0f) * 1e-20f);
+  };
+  std::uniform_int_distribution<std::uint32_t> oddSteps(0, (1u << 20) - 1);
+  const auto subnormal = [&](int i) {
+    // Results below FLT_MIN (1.2e-38), where float's halfway points are not a normal float's.
+    if (i % 2 == 0) {  // random: c is 0 or of the same order as the product
+      as.push_back(tiny(rng));
+      bs.push_back(tiny(rng));
+      cs.push_back(i % 4 == 0 ? 0.0f : std::ldexp(tiny(rng), -100));
+      return;
+    }
+    // A tie in the subnormals: c = k 2^-149 with k odd, a b = 2^-150 (1 - 2^-46), so the exact
+    // sum lies just below c's halfway point to the next subnormal and rounds down to c, while
+    // the double sum rounds onto the halfway point, and again to float, to the even k + 1.
+    const float sign = i % 4 == 1 ? 1.0f : -1.0f;
+    as.push_back(sign * std::ldexp(1.0f + 0x1p-23f, -75));
+    bs.push_back(std::ldexp(1.0f - 0x1p-23f, -75));
+    cs.push_back(sign * std::ldexp(static_cast<float>(2 * oddSteps(rng) + 1), -149));
+  };
+  for (int i = 0; i < 32000; ++i) {
+    switch ((i / 64) % 4) {
+      case 0: ordinary(i); break;
+      case 1: tie(i); break;
+      case 2: subnormal(i); break;
+      default: i % 2 == 0 ? ordinary(i) : tie(i); break;
     }
   }
   HWY_ALIGN float a[kMaxLanes], b[kMaxLanes], c[kMaxLanes], out[kMaxLanes];
