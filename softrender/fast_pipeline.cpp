@@ -133,6 +133,7 @@ void FastPipeline::runVertexStage(const std::vector<ItemState>& items) {
     const std::size_t count = s.item->mesh->vertices.size();
     ItemVertices& out = vertices_[k];
     out.vertices.resize(count);
+    out.corners.resize(count);
     out.varyings.resize(count * static_cast<std::size_t>(varyingCount(s.tangentLighting, s.shade.lightCount)));
     out.posClip.resize(count);
     out.clipDistances.resize(count * static_cast<std::size_t>(s.clip.userPlaneCount));
@@ -154,6 +155,7 @@ void FastPipeline::runVertexStage(const std::vector<ItemState>& items) {
       v.xFixed = snapToSubpixel(v.window.x);
       v.yFixed = snapToSubpixel(v.window.y);
       v.outcode = finitePosition(clip.posClip) ? outcode(clip, s.clip) : kClipNonFiniteBit;
+      out.corners[i] = SnappedCorner{v.xFixed, v.yFixed, v.outcode};
       storeVaryings(clip, s.tangentLighting, s.shade.lightCount, &out.varyings[i * stride]);
       out.posClip[i] = clip.posClip;
       for (std::size_t j = 0; j < planes; ++j) out.clipDistances[i * planes + j] = clip.clipDistance[j];
@@ -162,10 +164,12 @@ void FastPipeline::runVertexStage(const std::vector<ItemState>& items) {
 }
 
 void FastPipeline::emit(const ItemState& s, std::uint32_t item, std::uint32_t triangleId,
-                        std::array<const FastVertex*, 3> v, std::array<const float*, 3> varyings, FrontEnd& out) {
+                        const std::array<SnappedCorner, 3>& corners, std::array<const FastVertex*, 3> v,
+                        std::array<const float*, 3> varyings, FrontEnd& out) {
   TriangleSetup setup;
-  if (setupSnappedTriangle({v[0]->xFixed, v[1]->xFixed, v[2]->xFixed}, {v[0]->yFixed, v[1]->yFixed, v[2]->yFixed},
-                           s.cull, s.frontFace, s.viewport, setup) != SetupResult::Ready) {
+  if (setupSnappedTriangle({corners[0].xFixed, corners[1].xFixed, corners[2].xFixed},
+                           {corners[0].yFixed, corners[1].yFixed, corners[2].yFixed}, s.cull, s.frontFace, s.viewport,
+                           setup) != SetupResult::Ready) {
     ++out.stats.trianglesCulled;
     return;
   }
@@ -212,7 +216,11 @@ void FastPipeline::clipAndEmit(const ItemState& s, std::size_t k, std::uint32_t 
     const auto at = [&](std::size_t i) -> const ClippedVertex& {
       return out.clipped[base + static_cast<std::size_t>(corner[i])];
     };
-    emit(s, item, triangleId, {&at(0).vertex, &at(1).vertex, &at(2).vertex},
+    const auto snapped = [&](std::size_t i) {
+      const FastVertex& v = at(i).vertex;
+      return SnappedCorner{v.xFixed, v.yFixed, v.outcode};
+    };
+    emit(s, item, triangleId, {snapped(0), snapped(1), snapped(2)}, {&at(0).vertex, &at(1).vertex, &at(2).vertex},
          {at(0).varyings.data(), at(1).varyings.data(), at(2).varyings.data()}, out);
   }
 }
@@ -233,12 +241,12 @@ void FastPipeline::frontEndRange(const std::vector<ItemState>& items, std::size_
       const std::size_t t = g - first;
       ++out.stats.trianglesIn;
       const std::array<std::uint32_t, 3> indices = {mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]};
-      const FastVertex& a = source.vertices[indices[0]];
-      const FastVertex& b = source.vertices[indices[1]];
-      const FastVertex& c = source.vertices[indices[2]];
+      const std::array<SnappedCorner, 3> corners{source.corners[indices[0]], source.corners[indices[1]],
+                                                 source.corners[indices[2]]};
       const std::uint32_t triangleId = s.item->firstTriangleId + static_cast<std::uint32_t>(t);
-      if ((a.outcode | b.outcode | c.outcode) == 0) {  // inside every plane: no clipping
-        emit(s, item, triangleId, {&a, &b, &c},
+      if ((corners[0].outcode | corners[1].outcode | corners[2].outcode) == 0) {  // inside every plane: no clipping
+        emit(s, item, triangleId, corners,
+             {&source.vertices[indices[0]], &source.vertices[indices[1]], &source.vertices[indices[2]]},
              {&source.varyings[indices[0] * stride], &source.varyings[indices[1] * stride],
               &source.varyings[indices[2] * stride]},
              out);

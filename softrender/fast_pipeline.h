@@ -47,6 +47,13 @@ struct FastVertex {
   std::uint32_t outcode = 0;            // planes it is outside of, or kClipNonFiniteBit
 };
 
+// What the front end reads of a vertex, kept apart from the rest (12 bytes instead of
+// FastVertex's 28): a million-triangle frame's front end streams it once per corner.
+struct SnappedCorner {
+  std::int32_t xFixed = 0, yFixed = 0;
+  std::uint32_t outcode = 0;
+};
+
 class FastPipeline {
  public:
   // Throws InputError for a target this CPU cannot run.
@@ -86,6 +93,7 @@ class FastPipeline {
   // One item's vertex stage output, one entry per mesh vertex (capacity kept across frames).
   struct ItemVertices {
     std::vector<FastVertex> vertices;
+    std::vector<SnappedCorner> corners;  // the same vertices' snapped position and outcode
     std::vector<float> varyings;       // varyingCount floats per vertex
     std::vector<vec4> posClip;         // for rebuilding a ClipVertex to clip
     std::vector<float> clipDistances;  // userPlaneCount floats per vertex
@@ -135,8 +143,8 @@ class FastPipeline {
   void frontEndRange(const std::vector<ItemState>& items, std::size_t begin, std::size_t end, FrontEnd& out);
   void clipAndEmit(const ItemState& s, std::size_t k, std::uint32_t item, std::uint32_t triangleId,
                    const std::array<std::uint32_t, 3>& indices, FrontEnd& out);
-  void emit(const ItemState& s, std::uint32_t item, std::uint32_t triangleId, std::array<const FastVertex*, 3> v,
-            std::array<const float*, 3> varyings, FrontEnd& out);
+  void emit(const ItemState& s, std::uint32_t item, std::uint32_t triangleId, const std::array<SnappedCorner, 3>& corners,
+            std::array<const FastVertex*, 3> v, std::array<const float*, 3> varyings, FrontEnd& out);
   std::uint64_t drawBin(const std::vector<ItemState>& items, int bin, std::uint32_t background, Framebuffer& fb,
                         BackEnd& scratch, bool depthOnly, GBuffer* surfaces);
 
