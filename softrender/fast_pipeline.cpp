@@ -154,8 +154,8 @@ void FastPipeline::runVertexStage(const std::vector<ItemState>& items) {
       v.window = windowFromClip(clip, s.viewport);
       v.xFixed = snapToSubpixel(v.window.x);
       v.yFixed = snapToSubpixel(v.window.y);
-      v.outcode = finitePosition(clip.posClip) ? outcode(clip, s.clip) : kClipNonFiniteBit;
-      out.corners[i] = SnappedCorner{v.xFixed, v.yFixed, v.outcode};
+      out.corners[i] = SnappedCorner{v.xFixed, v.yFixed,
+                                     finitePosition(clip.posClip) ? outcode(clip, s.clip) : kClipNonFiniteBit};
       storeVaryings(clip, s.tangentLighting, s.shade.lightCount, &out.varyings[i * stride]);
       out.posClip[i] = clip.posClip;
       for (std::size_t j = 0; j < planes; ++j) out.clipDistances[i * planes + j] = clip.clipDistance[j];
@@ -164,12 +164,10 @@ void FastPipeline::runVertexStage(const std::vector<ItemState>& items) {
 }
 
 void FastPipeline::emit(const ItemState& s, std::uint32_t item, std::uint32_t triangleId,
-                        const std::array<SnappedCorner, 3>& corners, std::array<const FastVertex*, 3> v,
-                        std::array<const float*, 3> varyings, FrontEnd& out) {
+                        const std::array<std::int32_t, 3>& xFixed, const std::array<std::int32_t, 3>& yFixed,
+                        std::array<const FastVertex*, 3> v, std::array<const float*, 3> varyings, FrontEnd& out) {
   TriangleSetup setup;
-  if (setupSnappedTriangle({corners[0].xFixed, corners[1].xFixed, corners[2].xFixed},
-                           {corners[0].yFixed, corners[1].yFixed, corners[2].yFixed}, s.cull, s.frontFace, s.viewport,
-                           setup) != SetupResult::Ready) {
+  if (setupSnappedTriangle(xFixed, yFixed, s.cull, s.frontFace, s.viewport, setup) != SetupResult::Ready) {
     ++out.stats.trianglesCulled;
     return;
   }
@@ -216,11 +214,8 @@ void FastPipeline::clipAndEmit(const ItemState& s, std::size_t k, std::uint32_t 
     const auto at = [&](std::size_t i) -> const ClippedVertex& {
       return out.clipped[base + static_cast<std::size_t>(corner[i])];
     };
-    const auto snapped = [&](std::size_t i) {
-      const FastVertex& v = at(i).vertex;
-      return SnappedCorner{v.xFixed, v.yFixed, v.outcode};
-    };
-    emit(s, item, triangleId, {snapped(0), snapped(1), snapped(2)}, {&at(0).vertex, &at(1).vertex, &at(2).vertex},
+    emit(s, item, triangleId, {at(0).vertex.xFixed, at(1).vertex.xFixed, at(2).vertex.xFixed},
+         {at(0).vertex.yFixed, at(1).vertex.yFixed, at(2).vertex.yFixed}, {&at(0).vertex, &at(1).vertex, &at(2).vertex},
          {at(0).varyings.data(), at(1).varyings.data(), at(2).varyings.data()}, out);
   }
 }
@@ -241,11 +236,11 @@ void FastPipeline::frontEndRange(const std::vector<ItemState>& items, std::size_
       const std::size_t t = g - first;
       ++out.stats.trianglesIn;
       const std::array<std::uint32_t, 3> indices = {mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]};
-      const std::array<SnappedCorner, 3> corners{source.corners[indices[0]], source.corners[indices[1]],
-                                                 source.corners[indices[2]]};
+      const SnappedCorner &a = source.corners[indices[0]], &b = source.corners[indices[1]],
+                          &c = source.corners[indices[2]];
       const std::uint32_t triangleId = s.item->firstTriangleId + static_cast<std::uint32_t>(t);
-      if ((corners[0].outcode | corners[1].outcode | corners[2].outcode) == 0) {  // inside every plane: no clipping
-        emit(s, item, triangleId, corners,
+      if ((a.outcode | b.outcode | c.outcode) == 0) {  // inside every plane: no clipping
+        emit(s, item, triangleId, {a.xFixed, b.xFixed, c.xFixed}, {a.yFixed, b.yFixed, c.yFixed},
              {&source.vertices[indices[0]], &source.vertices[indices[1]], &source.vertices[indices[2]]},
              {&source.varyings[indices[0] * stride], &source.varyings[indices[1] * stride],
               &source.varyings[indices[2] * stride]},

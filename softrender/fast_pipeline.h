@@ -40,18 +40,17 @@ namespace twr {
 // Rows per bin of the back end (a multiple of the SIMD kernel's 4-row blocks).
 inline constexpr int kBinRows = 32;
 
-// What setup and the clipper's quick test need of a vertex.
+// What the back end's setup and interpolation read of a vertex.
 struct FastVertex {
   WindowVertex window;                  // windowFromClip (fused multiply-add for stage outputs)
   std::int32_t xFixed = 0, yFixed = 0;  // snapToSubpixel of window x and y (1/256 px)
-  std::uint32_t outcode = 0;            // planes it is outside of, or kClipNonFiniteBit
 };
 
-// What the front end reads of a vertex, kept apart from the rest (12 bytes instead of
-// FastVertex's 28): a million-triangle frame's front end streams it once per corner.
+// What the front end reads of a vertex (12 bytes, in an array of its own: a million-triangle
+// frame's front end streams it once per corner): the snapped position again, and the outcode.
 struct SnappedCorner {
-  std::int32_t xFixed = 0, yFixed = 0;
-  std::uint32_t outcode = 0;
+  std::int32_t xFixed = 0, yFixed = 0;  // as FastVertex's
+  std::uint32_t outcode = 0;            // planes it is outside of, or kClipNonFiniteBit
 };
 
 class FastPipeline {
@@ -143,8 +142,9 @@ class FastPipeline {
   void frontEndRange(const std::vector<ItemState>& items, std::size_t begin, std::size_t end, FrontEnd& out);
   void clipAndEmit(const ItemState& s, std::size_t k, std::uint32_t item, std::uint32_t triangleId,
                    const std::array<std::uint32_t, 3>& indices, FrontEnd& out);
-  void emit(const ItemState& s, std::uint32_t item, std::uint32_t triangleId, const std::array<SnappedCorner, 3>& corners,
-            std::array<const FastVertex*, 3> v, std::array<const float*, 3> varyings, FrontEnd& out);
+  void emit(const ItemState& s, std::uint32_t item, std::uint32_t triangleId, const std::array<std::int32_t, 3>& xFixed,
+            const std::array<std::int32_t, 3>& yFixed, std::array<const FastVertex*, 3> v,
+            std::array<const float*, 3> varyings, FrontEnd& out);
   std::uint64_t drawBin(const std::vector<ItemState>& items, int bin, std::uint32_t background, Framebuffer& fb,
                         BackEnd& scratch, bool depthOnly, GBuffer* surfaces);
 
