@@ -120,6 +120,7 @@ inline bool isNaN(S a) {
   return a != a;
 }
 inline bool anyOf(bool mask) { return mask; }
+inline bool allOf(bool mask) { return mask; }
 template <ScalarLane S>
 inline S absOf(S a) {
   return std::fabs(a);

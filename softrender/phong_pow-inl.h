@@ -53,6 +53,33 @@ TWR_LANE_INLINE W powPositiveWide(W x, W s) {
   return p * exp2Integer(k);
 }
 
+// x^n for a whole n in [1, kMaxWholeExponent] (phong_pow.h): binary powering in double, the
+// power squared for each bit of n and multiplied in where the bit is set, lowest bit first.
+template <typename W>
+TWR_LANE_INLINE W powWholeWide(W x, unsigned n) {
+  W result(1.0), power = x;
+  for (;;) {
+    if ((n & 1u) != 0) result = result * power;
+    n >>= 1;
+    if (n == 0) return result;
+    power = power * power;
+  }
+}
+// The same with one n per lane (whole, in [1, kMaxWholeExponent]): every lane gets
+// powWholeWide's products in its order (its squarings past its last bit are never used).
+template <typename W>
+TWR_LANE_INLINE W powWholeWidePerLane(W x, W n) {
+  W result(1.0), power = x;
+  for (int bit = 0; bit < phongpow::kWholeExponentBits; ++bit) {
+    const W half = floorOf(n * W(0.5));
+    const auto set = n - half * W(2.0) > W(0.5);  // the lowest bit of n, exactly
+    result = select(set, result * power, result);
+    n = half;
+    power = power * power;
+  }
+  return result;
+}
+
 // pow(x, s) for the Phong term: 0^s = 0 for s > 0 and 0^0 = 1 (both renderers agree on it),
 // +inf^s = +inf for s > 0. Float lanes: powPositiveWide, rounded once to float. The reference
 // (double) uses libm's pow: it is the ground truth, not a twin of the float bits.
@@ -68,7 +95,9 @@ TWR_LANE_INLINE L phongPow(L x, ScalarOf<L> s) {
     const auto infinite = positive & !(x < L(infinity));
     // Lanes not computed hold 1, so nothing below sees a zero, a NaN or an infinity.
     const L finiteX = select(positive & !infinite, x, L(S(1)));
-    const L powered = toNarrow<L>(powPositiveWide(toWide(finiteX), wideSplat<L>(static_cast<double>(s))));
+    const L powered = phongpow::isWholeExponent(static_cast<double>(s))
+                          ? toNarrow<L>(powWholeWide(toWide(finiteX), static_cast<unsigned>(s)))
+                          : toNarrow<L>(powPositiveWide(toWide(finiteX), wideSplat<L>(static_cast<double>(s))));
     const L zeroCase(s > S(0) ? S(0) : S(1));
     const L infCase(s > S(0) ? infinity : S(1));
     return select(infinite, infCase, select(positive, powered, zeroCase));
@@ -85,7 +114,16 @@ TWR_LANE_INLINE L phongPowPerLane(L x, L s) {
   const auto positive = x > zero;
   const auto infinite = positive & !(x < L(infinity));
   const L finiteX = select(positive & !infinite, x, one);
-  const L powered = toNarrow<L>(powPositiveWide(toWide(finiteX), toWide(s)));
+  // Each lane by phongPow's method for its own s: whole exponents by powering, the rest by the
+  // series, each computed only where some lane needs it.
+  const L whole = floorOf(s);
+  const auto byPowering = (s > L(S(0.5))) & !(s < whole) & !(s > whole) &
+                          !(s > L(static_cast<S>(phongpow::kMaxWholeExponent)));
+  const L poweredWhole =
+      anyOf(byPowering) ? toNarrow<L>(powWholeWidePerLane(toWide(finiteX), toWide(select(byPowering, s, one)))) : one;
+  const L powered = allOf(byPowering)
+                        ? poweredWhole
+                        : select(byPowering, poweredWhole, toNarrow<L>(powPositiveWide(toWide(finiteX), toWide(s))));
   const auto sPositive = s > zero;
   const L zeroCase = select(sPositive, zero, one);
   const L infCase = select(sPositive, L(infinity), one);

@@ -1,5 +1,6 @@
-// The Phong exponent x^s of the float pipeline, computed as 2^(s log2 x) in double with every
-// operation written out (no libm call), written once over the lane type in phong_pow-inl.h
+// The Phong exponent x^s of the float pipeline, computed in double with every operation written
+// out (no libm call): a whole s up to kMaxWholeExponent by binary powering (below), any other
+// as 2^(s log2 x), written once over the lane type in phong_pow-inl.h
 // so the SIMD fast path repeats the same operations lane by lane and gets the same bits. The result is the
 // exactly rounded float of a value accurate to about 1e-15 relative, so it equals libm's
 // powf except where powf itself is off by an ulp; GLSL leaves pow's precision to the driver.
@@ -26,6 +27,16 @@ inline constexpr double kSqrt2 = 1.41421356237309504880168872421;
 inline constexpr int kLog2Terms = 8;
 // Terms up to (f ln 2)^10 / 10!: the first left out is below 3e-13 (relative) for |f| <= 1/2.
 inline constexpr int kExp2Terms = 11;
+// Whole exponents from 1 to this are computed by binary powering (x^n by squarings and
+// products in double): up to 2 kWholeExponentBits roundings of relative 2^-53, each at most
+// doubled by the squarings after it, so x^n is within 2n 2^-53 <= 2^-44 (relative) of the
+// true value, far below half an ulp of float (2^-24) as the series is; eight squarings and
+// products instead of the series' 20 terms and a division. A Phong exponent is usually whole.
+inline constexpr int kWholeExponentBits = 8;
+inline constexpr double kMaxWholeExponent = 255.0;
+constexpr bool isWholeExponent(double s) {
+  return s >= 1.0 && s <= kMaxWholeExponent && s == static_cast<double>(static_cast<int>(s));
+}
 // |y| above this gives 0 or infinity in float anyway (2^-150 rounds to 0, 2^128 overflows);
 // clamping keeps 2^k a normal double.
 inline constexpr double kMaxExponent = 160.0;

@@ -56,7 +56,7 @@ TEST(Deferred, WorldFromWindowRebuildsAProjectedPoint) {
 }
 
 TEST(Deferred, PerLaneExponentGivesPhongPowsBits) {
-  for (const float s : {0.0f, 1.0f, 8.0f, 32.0f, 700.0f}) {
+  for (const float s : {0.0f, 1.0f, 8.0f, 32.0f, 255.0f, 7.5f, 700.0f}) {
     for (const float x : {0.0f, 1e-30f, 0.25f, 0.5f, 0.999f, 1.0f, -0.5f, INFINITY}) {
       const float a = lanes::phongPow<float>(x, s), b = lanes::phongPowPerLane<float>(x, s);
       EXPECT_EQ(std::memcmp(&a, &b, sizeof a), 0) << x << "^" << s;

@@ -621,7 +621,7 @@ TEST_P(FastPath, PowPositiveIsWithinOneUlpOfLibm) {
   expectTargetInUse(GetParam());
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> base(0.0f, 1.05f);
-  for (float s : {0.0f, 0.5f, 1.0f, 2.0f, 7.3f, 32.0f, 128.0f, 1000.0f, 1.0e5f}) {
+  for (float s : {0.0f, 0.5f, 1.0f, 2.0f, 3.0f, 7.3f, 32.0f, 128.0f, 255.0f, 256.0f, 1000.0f, 1.0e5f}) {
     for (int i = 0; i < 20000; ++i) {
       const float x = base(rng);
       if (!(x > 0.0f)) continue;
@@ -654,7 +654,7 @@ TEST_P(FastPath, SimdPowIsTheScalarPowBitForBit) {
   x[3] = std::numeric_limits<float>::denorm_min();
   x[4] = 1.0f;
   x[5] = 1.0e-30f;
-  for (float s : {0.0f, 0.25f, 1.0f, 3.0f, 32.0f, 77.7f, 4096.0f, 1.0e30f}) {
+  for (float s : {0.0f, 0.25f, 1.0f, 3.0f, 32.0f, 77.7f, 255.0f, 4096.0f, 1.0e30f}) {
     std::vector<float> simd(x.size());
     fastKernelsFor(CpuIsa::Auto).phongPow(x.data(), s, simd.data(), x.size());
     for (std::size_t i = 0; i < x.size(); ++i) {

@@ -21,9 +21,11 @@
 #include <gtest/gtest.h>
 #include <hwy/tests/hwy_gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <random>
 #include <vector>
 
@@ -197,6 +199,29 @@ void PhongPowAndBytesAreTheSharedSource() {
   EXPECT_EQ(countDifferences(values, lanes, scalar), 0u);
 }
 
+// One exponent per lane (the deferred pass): each lane gets phongPow's bits for its own s, in
+// vectors that mix whole exponents (binary powering) with the rest (the series).
+void PerLanePhongPowMixesBothMethods() {
+  std::mt19937 rng(6);
+  std::uniform_real_distribution<float> x(-0.1f, 1.1f);
+  const float exponents[] = {0.0f, 1.0f, 3.0f, 7.5f, 32.0f, 255.0f, 256.0f, 0.5f, 1.0e5f};
+  HWY_ALIGN float xs[kMaxLanes], ss[kMaxLanes], out[kMaxLanes];
+  std::size_t differences = 0, at = 0;
+  for (int round = 0; round < 4000; ++round) {
+    for (std::size_t l = 0; l < laneCount(); ++l, ++at) {
+      xs[l] = x(rng);
+      ss[l] = exponents[(at + static_cast<std::size_t>(round / 100)) % std::size(exponents)];
+    }
+    if (round % 3 == 0) std::fill(ss, ss + laneCount(), 32.0f);  // every lane whole
+    hn::Store(phongPowPerLane<LaneF>(LaneF(hn::Load(DF(), xs)), LaneF(hn::Load(DF(), ss))).v, DF(), out);
+    for (std::size_t l = 0; l < laneCount(); ++l) {
+      const float expected = ::twr::lanes::phongPow<float>(xs[l], ss[l]);
+      if (std::bit_cast<std::uint32_t>(out[l]) != std::bit_cast<std::uint32_t>(expected)) ++differences;
+    }
+  }
+  EXPECT_EQ(differences, 0u) << "target " << hwy::TargetName(HWY_TARGET);
+}
+
 void SamplingIsTheSharedSource() {
   Texture texture;
   texture.width = 5;  // not a power of two
@@ -255,6 +280,7 @@ HWY_BEFORE_TEST(SharedSource);
 HWY_EXPORT_AND_TEST_P(SharedSource, AttenuationIsTheSharedSourceAndSeesAReordering);
 HWY_EXPORT_AND_TEST_P(SharedSource, PhongPowAndBytesAreTheSharedSource);
 HWY_EXPORT_AND_TEST_P(SharedSource, FusedMulAddIsStdFmaOnEveryTarget);
+HWY_EXPORT_AND_TEST_P(SharedSource, PerLanePhongPowMixesBothMethods);
 HWY_EXPORT_AND_TEST_P(SharedSource, SamplingIsTheSharedSource);
 }  // namespace
 }  // namespace twr
