@@ -102,17 +102,22 @@ LightSum lightSum(vec3 posWorld, vec3 n, vec3 t, vec3 b, vec3 nl, vec3 kdAlbedo,
   result.diffuseSum = vec3(0.0);
   result.specularSum = vec3(0.0);
 #endif
+  if (lightCount == 0) return result;
+  // The way to the eye, the same for every light.
+#ifdef LIGHTING_TANGENT
+  vec3 vVec = eyeDir;
+#else
+  vec3 vVec = eyePosWorld - posWorld;
+#endif
+  vec3 v = safeNormalize(vVec);
   for (int i = 0; i < lightCount; ++i) {
 #ifdef LIGHTING_TANGENT
     vec3 lVec = lightDirs[i];
-    vec3 vVec = eyeDir;
 #else
     vec3 lVec = toLightWorld(lights[i], posWorld);
-    vec3 vVec = eyePosWorld - posWorld;
 #endif
     float d = length3(toLightWorld(lights[i], posWorld));  // always from posWorld, both spaces
     vec3 l = safeNormalize(lVec);
-    vec3 v = safeNormalize(vVec);
     float nDotL = dot3(nl, l);
     vec3 r = 2.0 * nDotL * nl - l;
     float rDotV = max(dot3(r, v), 0.0);

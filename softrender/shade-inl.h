@@ -365,15 +365,16 @@ TWR_LANE_INLINE LightSumL<L> lightSum(const FragmentL<L>* f, const ShadeUniforms
   const bool termSums = isPhongTermView(u.view);
   LightSumL<L> out{Vec3L<L>(zero), ShadowTestL<L>{one, zero, zero, one, zero, zero, zero, zero, zero, zero}, zero, false,
                    Vec3L<L>(zero), Vec3L<L>(zero)};
+  if (u.lightCount == 0) return out;
+  // The way to the eye, for every light. Tangent space: the vertex stage's (f is not null).
+  const Vec3L<L> vVec = kTangentSpace ? f->eyeDirTangent : Vec3L<L>(u.eyePosWorld) - posWorld;
+  const Vec3L<L> v = safeNormalize<L>(vVec);
   for (int i = 0; i < u.lightCount; ++i) {
     const LightUniformT<S>& light = u.lights[static_cast<std::size_t>(i)];
     const Vec3L<L> toLight = toLightWorld<L>(light, posWorld);
-    // Tangent space reads the vertex stage's vectors (never the deferred pass, whose f is null).
     const Vec3L<L> lVec = kTangentSpace ? f->lightDirTangent[static_cast<std::size_t>(i)] : toLight;
-    const Vec3L<L> vVec = kTangentSpace ? f->eyeDirTangent : Vec3L<L>(u.eyePosWorld) - posWorld;
     const L d = length3<L>(toLight);
     const Vec3L<L> l = safeNormalize<L>(lVec);
-    const Vec3L<L> v = safeNormalize<L>(vVec);
     const L nDotL = dot3<L>(nl, l);
     const Vec3L<L> r = (two * nDotL) * nl - l;
     const L rDotV = maxOf(dot3<L>(r, v), zero);
