@@ -25,9 +25,12 @@
 #include "softrender/ssr.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <limits>
+#include <type_traits>
 #include <utility>
 
 // The shared sources for this target: in twr::HWY_NAMESPACE, with its attributes.
@@ -138,11 +141,25 @@ namespace {
 
 // Lanes [0, count) on, the rest off.
 HWY_INLINE LaneMask firstLanes(std::size_t count) { return {hn::FirstN(DF(), count)}; }
-// The lanes whose bit is set in `bits` (bit l = lane l).
+// The lanes whose bit is set in `bits` (bit l = lane l: a little-endian word's bytes are
+// Highway's mask bytes in order).
+static_assert(std::endian::native == std::endian::little);
 HWY_INLINE LaneMask lanesOf(std::uint64_t bits) {
-  HWY_ALIGN std::int32_t flags[kMaxLanes];
-  for (std::size_t l = 0; l < laneCount(); ++l) flags[l] = static_cast<std::int32_t>((bits >> l) & 1u);
-  return {hn::RebindMask(DF(), hn::Ne(hn::Load(DI(), flags), hn::Zero(DI())))};
+  std::uint8_t bytes[sizeof bits];
+  std::memcpy(bytes, &bits, sizeof bits);
+  return {hn::LoadMaskBits(DF(), bytes)};
+}
+// The bits of a mask's lanes (bit l = lane l), lanesOf's inverse.
+HWY_INLINE std::uint64_t bitsOf(hn::Mask<DU> mask) {
+  std::uint8_t bytes[sizeof(std::uint64_t)] = {};
+  hn::StoreMaskBits(DU(), mask, bytes);
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, bytes, sizeof bits);
+  return bits;
+}
+// The lanes of `lanes` (bits) whose word in `words` (one per lane) equals `value`.
+HWY_INLINE std::uint64_t lanesHolding(const std::uint32_t* words, std::uint32_t value, std::uint64_t lanes) {
+  return lanes & bitsOf(hn::Eq(hn::LoadU(DU(), words), hn::Set(DU(), value)));
 }
 // x, x + 1, ... as float lanes (pixel indices are exact in float).
 HWY_INLINE LaneF pixelColumnsF(int x) { return LaneF(hn::Iota(DF(), static_cast<float>(x))); }
@@ -220,6 +237,86 @@ HWY_INLINE void broadcastVaryingPlanes(const VaryingPlanesT<float>& t, VaryingPl
   for (int k = 0; k < t.count; ++k) p.overW[static_cast<std::size_t>(k)] = broadcastPlane(t.overW[static_cast<std::size_t>(k)]);
 }
 
+// The triangles a segment's lanes lie on, when there are few: each one's slot and lanes (the
+// first is the first lane's); `few` false when there are more than kMaxBlendedTriangles.
+// A few are blended into vectors plane by plane, more are transposed through memory.
+inline constexpr int kMaxBlendedTriangles = 4;
+struct SegmentTriangles {
+  std::uint32_t slots[kMaxBlendedTriangles];
+  std::uint64_t bits[kMaxBlendedTriangles];
+  int count = 0;
+  bool few = true;
+};
+HWY_INLINE SegmentTriangles segmentTriangles(const Segment& s) {
+  SegmentTriangles d;
+  for (std::uint64_t remaining = s.bits; remaining != 0;) {
+    if (d.count == kMaxBlendedTriangles) {
+      d.few = false;
+      return d;
+    }
+    const std::uint32_t slot = s.slots[__builtin_ctzll(remaining)];
+    d.slots[d.count] = slot;
+    d.bits[d.count] = lanesHolding(s.slots, slot, remaining);
+    remaining &= ~d.bits[d.count];
+    ++d.count;
+  }
+  return d;
+}
+HWY_INLINE void blendPlane(const LaneMask& mask, const AttributePlaneT<float>& t, AttributePlaneL<LaneF>& p) {
+  p.atOrigin = select(mask, LaneF(t.atOrigin), p.atOrigin);
+  p.dx = select(mask, LaneF(t.dx), p.dx);
+  p.dy = select(mask, LaneF(t.dy), p.dy);
+}
+
+// The planes of a segment's lanes on a few triangles: the first triangle's in every lane (it
+// stands in for lanes of other items, so every lane computes with sane numbers; the mask
+// discards their results), each other triangle's blended into its lanes.
+HWY_INLINE void blendedPlanes(const std::vector<BinTriangle>& triangles, const SegmentTriangles& distinct,
+                              VaryingPlanesL<LaneF>& planes, AttributePlaneL<LaneF>& depthPlane) {
+  const BinTriangle& first = triangles[distinct.slots[0]];
+  broadcastVaryingPlanes(first.varyings, planes);
+  depthPlane = broadcastPlane(first.depth);
+  for (int j = 1; j < distinct.count; ++j) {
+    const BinTriangle& t = triangles[distinct.slots[j]];
+    const LaneMask mask = lanesOf(distinct.bits[j]);
+    blendPlane(mask, t.depth, depthPlane);
+    blendPlane(mask, t.varyings.oneOverW, planes.oneOverW);
+    for (int k = 0; k < planes.count; ++k) {
+      blendPlane(mask, t.varyings.overW[static_cast<std::size_t>(k)], planes.overW[static_cast<std::size_t>(k)]);
+    }
+  }
+}
+
+// The same for lanes on many triangles: each plane transposed into columns through memory,
+// [plane][atOrigin, dx, dy][lane]; plane 0 is the depth, 1 is 1/w, 2 + k varying k.
+HWY_INLINE void transposedPlanes(const Segment& s, int count, VaryingPlanesL<LaneF>& planes,
+                                 AttributePlaneL<LaneF>& depthPlane) {
+  const DF df;
+  const std::vector<BinTriangle>& triangles = *s.triangles;
+  const std::uint32_t firstSlot = s.slots[__builtin_ctzll(s.bits)];
+  constexpr int kDepthColumn = 0, kOneOverWColumn = 1, kFirstVaryingColumn = 2;
+  HWY_ALIGN float columns[kFirstVaryingColumn + kMaxVaryings][3][kMaxLanes];
+  for (std::size_t l = 0; l < laneCount(); ++l) {
+    const BinTriangle& t = triangles[((s.bits >> l) & 1u) != 0 ? s.slots[l] : firstSlot];
+    const auto put = [&](int column, const AttributePlaneT<float>& p) {
+      columns[column][0][l] = p.atOrigin;
+      columns[column][1][l] = p.dx;
+      columns[column][2][l] = p.dy;
+    };
+    put(kDepthColumn, t.depth);
+    put(kOneOverWColumn, t.varyings.oneOverW);
+    for (int k = 0; k < count; ++k) put(kFirstVaryingColumn + k, t.varyings.overW[static_cast<std::size_t>(k)]);
+  }
+  const auto planeOfColumn = [&](int column) HWY_ATTR {
+    return AttributePlaneL<LaneF>{LaneF(hn::Load(df, columns[column][0])), LaneF(hn::Load(df, columns[column][1])),
+                                  LaneF(hn::Load(df, columns[column][2]))};
+  };
+  depthPlane = planeOfColumn(kDepthColumn);
+  planes.oneOverW = planeOfColumn(kOneOverWColumn);
+  planes.count = count;
+  for (int k = 0; k < count; ++k) planes.overW[static_cast<std::size_t>(k)] = planeOfColumn(kFirstVaryingColumn + k);
+}
+
 #if HWY_TARGET != HWY_SCALAR
 // The quad and fine uv differences (interpolate-inl.h) of a segment whose lanes all lie on one
 // triangle: its lanes are side by side from an even column, so a quad's left and right pixels
@@ -254,52 +351,18 @@ HWY_INLINE void setUvDifferencesOfOneTriangle(const UvPlanesL<LaneF>& uv, LaneF 
 // differences the permutation reads.
 template <typename Features>
 HWY_INLINE FragmentL<LaneF> SegmentFragment(const Segment& s, const ItemState& item, const ItemMaps& maps) {
-  const DF df;
-  const std::size_t lanes = laneCount();
   const bool tangent = Features::kSpace == LightingSpace::Tangent;
   const int lightCount = item.shade.lightCount;
   const std::vector<BinTriangle>& triangles = *s.triangles;
 
-  // The first lane's triangle stands in for lanes of other items, so every lane computes
-  // with sane numbers; their results are discarded by the mask.
-  const std::size_t firstLane = static_cast<std::size_t>(__builtin_ctzll(s.bits));
-  const std::uint32_t firstSlot = s.slots[firstLane];
-  bool oneTriangle = true;
-  for (std::size_t l = 0; l < lanes; ++l) {
-    if (((s.bits >> l) & 1u) != 0 && s.slots[l] != firstSlot) oneTriangle = false;
-  }
-
+  const SegmentTriangles distinct = segmentTriangles(s);
+  [[maybe_unused]] const bool oneTriangle = distinct.few && distinct.count == 1;  // (the scalar target has one lane)
   VaryingPlanesL<LaneF> planes;
   AttributePlaneL<LaneF> depthPlane;
-  const int count = varyingCount(tangent, lightCount);
-  if (oneTriangle) {
-    const BinTriangle& t = triangles[firstSlot];
-    broadcastVaryingPlanes(t.varyings, planes);
-    depthPlane = broadcastPlane(t.depth);
+  if (distinct.few) {
+    blendedPlanes(triangles, distinct, planes, depthPlane);
   } else {
-    // Lanes on several triangles: each plane transposed into columns, [plane][atOrigin, dx,
-    // dy][lane]; plane 0 is the depth, 1 is 1/w, 2 + k varying k.
-    constexpr int kDepthColumn = 0, kOneOverWColumn = 1, kFirstVaryingColumn = 2;
-    HWY_ALIGN float columns[kFirstVaryingColumn + kMaxVaryings][3][kMaxLanes];
-    for (std::size_t l = 0; l < lanes; ++l) {
-      const BinTriangle& t = triangles[((s.bits >> l) & 1u) != 0 ? s.slots[l] : firstSlot];
-      const auto put = [&](int column, const AttributePlaneT<float>& p) {
-        columns[column][0][l] = p.atOrigin;
-        columns[column][1][l] = p.dx;
-        columns[column][2][l] = p.dy;
-      };
-      put(kDepthColumn, t.depth);
-      put(kOneOverWColumn, t.varyings.oneOverW);
-      for (int k = 0; k < count; ++k) put(kFirstVaryingColumn + k, t.varyings.overW[static_cast<std::size_t>(k)]);
-    }
-    const auto planeOfColumn = [&](int column) HWY_ATTR {
-      return AttributePlaneL<LaneF>{LaneF(hn::Load(df, columns[column][0])), LaneF(hn::Load(df, columns[column][1])),
-                                    LaneF(hn::Load(df, columns[column][2]))};
-    };
-    depthPlane = planeOfColumn(kDepthColumn);
-    planes.oneOverW = planeOfColumn(kOneOverWColumn);
-    planes.count = count;
-    for (int k = 0; k < count; ++k) planes.overW[static_cast<std::size_t>(k)] = planeOfColumn(kFirstVaryingColumn + k);
+    transposedPlanes(s, varyingCount(tangent, lightCount), planes, depthPlane);
   }
 
   const LaneF px = pixelColumnsF(s.x), py(static_cast<float>(s.py));
@@ -327,7 +390,6 @@ HWY_INLINE FragmentL<LaneF> SegmentFragment(const Segment& s, const ItemState& i
     const LaneF quadRow(static_cast<float>(s.py - (s.py & 1)));
     setEnvironmentDifferences<Features, LaneF>(planes, px, py, quadColumns, quadRow, item.shade, maps, fragment);
   }
-  (void)df;
   return fragment;
 }
 
@@ -386,6 +448,56 @@ SurfaceKernel surfaceKernelFor(const ShaderKey& key) {
   return kernel;
 }
 
+// The first `count` lanes of an aligned buffer to `to`: a whole vector as one store (a
+// variable-length memcpy compiles to `rep movs`, whose start-up costs more than the copy).
+HWY_INLINE void copyLanes(const std::uint32_t* from, std::uint32_t* to, std::size_t count) {
+  if (count == laneCount()) {
+    hn::StoreU(hn::Load(DU(), from), DU(), to);
+  } else {
+    std::memcpy(to, from, count * sizeof(std::uint32_t));
+  }
+}
+
+// A row segment's lanes: each one's slot (kNoSlot past the row's end), and for the lanes a
+// triangle holds, its draw item and triangle id (kNoTriangle elsewhere). Returns the bits of
+// the lanes a triangle holds. The words are gathered from the bin's triangles by slot.
+HWY_INLINE std::uint64_t segmentLanes(const std::vector<BinTriangle>& triangles, const std::uint32_t* rowSlots,
+                                      std::size_t inRow, std::uint32_t* slotLanes, std::uint32_t* itemLanes,
+                                      std::uint32_t* idLanes) {
+  const DU du;
+  const DI di;
+  if (inRow == laneCount()) {
+    hn::Store(hn::LoadU(du, rowSlots), du, slotLanes);
+  } else {
+    std::fill(slotLanes, slotLanes + laneCount(), kNoSlot);
+    std::memcpy(slotLanes, rowSlots, inRow * sizeof(std::uint32_t));
+  }
+  const auto slots = hn::Load(du, slotLanes);
+  const auto drawn = hn::Ne(slots, hn::Set(du, kNoSlot));
+  const std::uint64_t bits = bitsOf(drawn);
+  hn::Store(hn::Set(du, kNoTriangle), du, idLanes);
+  if (bits == 0) return 0;
+  static_assert(std::is_standard_layout_v<BinTriangle> && sizeof(BinTriangle) % sizeof(std::uint32_t) == 0);
+  constexpr std::size_t kWords = sizeof(BinTriangle) / sizeof(std::uint32_t);
+  if (triangles.size() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()) / kWords) {
+    for (std::size_t l = 0; l < laneCount(); ++l) {  // word indices past int32: lane by lane
+      if (((bits >> l) & 1u) == 0) continue;
+      itemLanes[l] = triangles[slotLanes[l]].item;
+      idLanes[l] = triangles[slotLanes[l]].triangleId;
+    }
+    return bits;
+  }
+  // Lanes of no triangle read slot 0's words (the bin has triangles) and keep kNoTriangle.
+  const auto index = hn::BitCast(di, hn::Mul(hn::IfThenElseZero(drawn, slots), hn::Set(du, static_cast<std::uint32_t>(kWords))));
+  const auto* base = reinterpret_cast<const std::int32_t*>(triangles.data());
+  constexpr std::size_t kItemWord = offsetof(BinTriangle, item) / sizeof(std::uint32_t);
+  constexpr std::size_t kIdWord = offsetof(BinTriangle, triangleId) / sizeof(std::uint32_t);
+  hn::Store(hn::BitCast(du, hn::GatherIndex(di, base + kItemWord, index)), du, itemLanes);
+  hn::Store(hn::IfThenElse(drawn, hn::BitCast(du, hn::GatherIndex(di, base + kIdWord, index)), hn::Set(du, kNoTriangle)),
+            du, idLanes);
+  return bits;
+}
+
 // Both shading passes of a bin: every pixel of rows [rowBegin, rowEnd) gets its triangle id
 // and, without `surfaces`, its colour (the background word where nothing was drawn); with
 // `surfaces`, the background word and its G-buffer texel (0 where nothing was drawn).
@@ -412,29 +524,15 @@ void ShadeRows(const std::vector<BinTriangle>& triangles, const std::vector<Item
     const std::uint32_t* row = slots + static_cast<std::size_t>(py - rowBegin) * width;
     for (std::size_t x = 0; x < width; x += lanes) {
       const std::size_t inRow = std::min(lanes, width - x);
-      std::uint64_t remaining = 0;
-      for (std::size_t l = 0; l < lanes; ++l) {
-        slotLanes[l] = l < inRow ? row[x + l] : kNoSlot;
-        rgbaLanes[l] = background;
-        if (slotLanes[l] == kNoSlot) {
-          idLanes[l] = kNoTriangle;
-        } else {
-          const BinTriangle& t = triangles[slotLanes[l]];
-          itemLanes[l] = t.item;
-          idLanes[l] = t.triangleId;
-          remaining |= std::uint64_t{1} << l;
-        }
-      }
+      std::uint64_t remaining = segmentLanes(triangles, row + x, inRow, slotLanes, itemLanes, idLanes);
+      hn::Store(hn::Set(DU(), background), DU(), rgbaLanes);
       if (surfaces) {
         for (auto& channel : channels) std::fill(channel, channel + lanes, 0.0f);
       }
       // One pass per draw item present in the segment (usually one).
       while (remaining != 0) {
         const std::uint32_t item = itemLanes[__builtin_ctzll(remaining)];
-        std::uint64_t bits = 0;
-        for (std::size_t l = 0; l < lanes; ++l) {
-          if (((remaining >> l) & 1u) != 0 && itemLanes[l] == item) bits |= std::uint64_t{1} << l;
-        }
+        const std::uint64_t bits = lanesHolding(itemLanes, item, remaining);
         remaining &= ~bits;
         const Segment segment{&triangles, slotLanes, bits, static_cast<int>(x), py};
         if (surfaces) {
@@ -444,8 +542,8 @@ void ShadeRows(const std::vector<BinTriangle>& triangles, const std::vector<Item
         }
       }
       const std::size_t origin = fb.index(static_cast<int>(x), py);
-      std::memcpy(&fb.rgba[4 * origin], rgbaLanes, inRow * sizeof(std::uint32_t));
-      std::memcpy(&fb.triangleId[origin], idLanes, inRow * sizeof(std::uint32_t));
+      copyLanes(rgbaLanes, reinterpret_cast<std::uint32_t*>(&fb.rgba[4 * origin]), inRow);
+      copyLanes(idLanes, &fb.triangleId[origin], inRow);
       if (surfaces) {
         for (std::size_t l = 0; l < inRow; ++l) {
           const float w = slotLanes[l] == kNoSlot ? 0.0f : 1.0f;  // nothing drawn: every target 0
