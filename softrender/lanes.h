@@ -211,3 +211,6 @@ inline double exp2Integer(double k) {
 #define TWR_LANE_INLINE inline
 // ... and a large one many kernels call (softrender/lanes_target_begin.h).
 #define TWR_LANE_OUTLINE inline
+// Whether a colour read (one mip level of a map) is inlined into its caller
+// (softrender/lanes_target_begin.h): not plainly.
+#define TWR_LANES_INLINE_COLOUR_READS 0

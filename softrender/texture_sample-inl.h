@@ -203,10 +203,11 @@ TWR_LANE_OUTLINE Texel sampleLevel(const View& texture, int level, const Vec2L<L
   return (sampleLevelInline<L, View, Texel>)(texture, level, uv, linear);
 }
 // A height read (red alone) is inlined into sampleMipLevelsInline: a march makes dozens
-// per pixel, and the levels of a trilinear read then overlap.
+// per pixel, and the levels of a trilinear read then overlap. A colour read is, where
+// TWR_LANES_INLINE_COLOUR_READS says (softrender/lanes_target_begin.h).
 template <typename L, typename View, typename Texel, SamplerCase kCase>
 TWR_LANE_INLINE Texel sampleLevelFor(const View& texture, int level, const Vec2L<L>& uv, bool linear) {
-  if constexpr (std::is_same_v<Texel, L>) {
+  if constexpr (std::is_same_v<Texel, L> || TWR_LANES_INLINE_COLOUR_READS) {
     return (sampleLevelInline<L, View, Texel, kCase>)(texture, level, uv, linear);
   } else {
     return (sampleLevel<L, View, Texel>)(texture, level, uv, linear);
@@ -316,7 +317,11 @@ TWR_LANE_OUTLINE Texel sampleMipLevels(const View& texture, const Vec2L<L>& uvIn
 // mipmaps ignore it.
 template <typename L, typename View, typename Texel = Vec4L<L>>
 TWR_LANE_INLINE Texel sampleTexture(const View& texture, const Vec2L<L>& uv, TextureFilter filter, const L& lod) {
-  return (sampleMipLevels<L, View, Texel>)(texture, uv, filter, (mipLevels<L>)(texture, filter, lod));
+  if constexpr (TWR_LANES_INLINE_COLOUR_READS) {
+    return (sampleMipLevelsInline<L, View, Texel>)(texture, uv, filter, (mipLevels<L>)(texture, filter, lod));
+  } else {
+    return (sampleMipLevels<L, View, Texel>)(texture, uv, filter, (mipLevels<L>)(texture, filter, lod));
+  }
 }
 
 // ---- Anisotropic filtering (GL_TEXTURE_MAX_ANISOTROPY > 1), as llvmpipe does it ----
