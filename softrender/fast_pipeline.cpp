@@ -163,11 +163,14 @@ void FastPipeline::runVertexStage(const std::vector<ItemState>& items) {
   });
 }
 
-void FastPipeline::emit(const ItemState& s, std::uint32_t item, std::uint32_t triangleId,
+// Inlined into its two callers: called, its arrays went through the stack, stored as scalars
+// and copied as vectors, and each copy waited for the stores (about 15 cycles a triangle).
+[[gnu::always_inline]] inline void FastPipeline::emit(const ItemState& s, std::uint32_t item, std::uint32_t triangleId,
                         const std::array<std::int32_t, 3>& xFixed, const std::array<std::int32_t, 3>& yFixed,
                         std::array<const FastVertex*, 3> v, std::array<const float*, 3> varyings, FrontEnd& out) {
   TriangleSetup setup;
-  if (setupSnappedTriangle(xFixed, yFixed, s.cull, s.frontFace, s.viewport, setup) != SetupResult::Ready) {
+  if (setupSnappedCorners(xFixed[0], yFixed[0], xFixed[1], yFixed[1], xFixed[2], yFixed[2], s.cull, s.frontFace,
+                          s.viewport, setup) != SetupResult::Ready) {
     ++out.stats.trianglesCulled;
     return;
   }
@@ -176,7 +179,13 @@ void FastPipeline::emit(const ItemState& s, std::uint32_t item, std::uint32_t tr
   const PixelBox box = pixelCentreBox(setup);
   if (box.empty()) return;
   const std::uint32_t index = static_cast<std::uint32_t>(out.triangles.size());
-  out.triangles.push_back(RasterTriangle{v, varyings, triangleId, item});
+  // Stored field by field: a whole temporary would be stored in pieces and read back in wider
+  // loads that wait for the stores.
+  RasterTriangle& triangle = out.triangles.emplace_back();
+  triangle.v = v;
+  triangle.varyings = varyings;
+  triangle.triangleId = triangleId;
+  triangle.item = item;
   for (int bin = box.y0 / kBinRows; bin <= box.y1 / kBinRows; ++bin) {
     out.bins[static_cast<std::size_t>(bin)].push_back(index);
   }

@@ -75,13 +75,20 @@ SetupResult setupTriangle(const std::array<WindowVertexT<T>, 3>& window, CullMod
 
 SetupResult setupSnappedTriangle(const std::array<std::int32_t, 3>& xFixed, const std::array<std::int32_t, 3>& yFixed,
                                  CullMode cull, FrontFace frontFace, const Viewport& viewport, TriangleSetup& out) {
+  return setupSnappedCorners(xFixed[0], yFixed[0], xFixed[1], yFixed[1], xFixed[2], yFixed[2], cull, frontFace, viewport,
+                             out);
+}
+
+SetupResult setupSnappedCorners(std::int32_t xa, std::int32_t ya, std::int32_t xb, std::int32_t yb, std::int32_t xc,
+                                std::int32_t yc, CullMode cull, FrontFace frontFace, const Viewport& viewport,
+                                TriangleSetup& out) {
   // Every field is assigned below, none through a whole-struct temporary: on a million small
   // triangles a frame, zeroing and copying TriangleSetup cost more than the setup itself.
-  out.xFixed = xFixed;
-  out.yFixed = yFixed;
+  out.xFixed = {xa, xb, xc};
+  out.yFixed = {ya, yb, yc};
   out.corner = {0, 1, 2};
-  const std::int64_t x0 = xFixed[0], x1 = xFixed[1], x2 = xFixed[2];
-  const std::int64_t y0 = yFixed[0], y1 = yFixed[1], y2 = yFixed[2];
+  const std::int64_t x0 = xa, x1 = xb, x2 = xc;
+  const std::int64_t y0 = ya, y1 = yb, y2 = yc;
   // Twice the signed area, positive for counter-clockwise in GL window coordinates (y up).
   const std::int64_t doubleAreaCcw = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
   const bool counterClockwise = doubleAreaCcw > 0;

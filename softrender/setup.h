@@ -104,6 +104,13 @@ SetupResult setupTriangle(const std::array<WindowVertexT<T>, 3>& window, CullMod
 // each window x and y, in triangle order). The fast path snaps each vertex once and calls it.
 SetupResult setupSnappedTriangle(const std::array<std::int32_t, 3>& xFixed, const std::array<std::int32_t, 3>& yFixed,
                                  CullMode cull, FrontFace frontFace, const Viewport& viewport, TriangleSetup& out);
+// The same with each corner's coordinates as a value (xa, ya the first corner's): the front
+// end's loop passes them in registers, since arrays it had just stored one by one would be
+// read back in wider loads that wait for the stores (store forwarding fails), a million
+// times a frame.
+SetupResult setupSnappedCorners(std::int32_t xa, std::int32_t ya, std::int32_t xb, std::int32_t yb, std::int32_t xc,
+                                std::int32_t yc, CullMode cull, FrontFace frontFace, const Viewport& viewport,
+                                TriangleSetup& out);
 
 // Pixels (inclusive), like TriangleSetup's box; empty when x0 > x1 or y0 > y1.
 struct PixelBox {
