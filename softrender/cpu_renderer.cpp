@@ -150,7 +150,7 @@ class CpuRenderer final : public Renderer {
     std::vector<ItemState> items;
     items.reserve(drawItems.size());
     for (const DrawItem& item : drawItems) {
-      validateIndices(item);
+      if (options_.path == CpuPath::Teaching) validateIndices(item);  // the fast path's front end checks them
       items.push_back(makeItemState(item, clipFromWorld, scene, drawSettings, width, height));
       setShadowUniforms(items.back().shade, shadows);
     }

@@ -29,14 +29,23 @@ void validateImageSize(int width, int height, const char* renderer) {
   }
 }
 
+void throwIndexError(const DrawItem& item, std::size_t i) {
+  throw InputError("node '" + item.nodeName + "': mesh index " + std::to_string(i) + " is " +
+                   std::to_string(item.mesh->indices[i]) + ", expected < vertex count " +
+                   std::to_string(item.mesh->vertices.size()));
+}
+
 void validateIndices(const DrawItem& item) {
   const std::size_t vertexCount = item.mesh->vertices.size();
   for (std::size_t i = 0; i < item.mesh->indices.size(); ++i) {
-    if (item.mesh->indices[i] >= vertexCount) {
-      throw InputError("node '" + item.nodeName + "': mesh index " + std::to_string(i) + " is " +
-                       std::to_string(item.mesh->indices[i]) + ", expected < vertex count " +
-                       std::to_string(vertexCount));
-    }
+    if (item.mesh->indices[i] >= vertexCount) throwIndexError(item, i);
+  }
+}
+
+void validateTrailingIndices(const DrawItem& item) {
+  const std::size_t vertexCount = item.mesh->vertices.size();
+  for (std::size_t i = 3 * item.mesh->triangleCount(); i < item.mesh->indices.size(); ++i) {
+    if (item.mesh->indices[i] >= vertexCount) throwIndexError(item, i);
   }
 }
 

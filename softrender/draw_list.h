@@ -33,5 +33,11 @@ void validateImageSize(int width, int height, const char* renderer = "cpu render
 
 // Throws InputError naming the node and the first index at or past the vertex count.
 void validateIndices(const DrawItem& item);
+// The InputError validateIndices throws for index position i.
+[[noreturn]] void throwIndexError(const DrawItem& item, std::size_t i);
+// validateIndices for the indices past the last whole triangle (a count that is not a multiple
+// of three), which no triangle reads; the fast path checks the others as its front end reads
+// them (a second pass over a million-triangle mesh cost a serial 2 ms a frame).
+void validateTrailingIndices(const DrawItem& item);
 
 }  // namespace twr

@@ -241,10 +241,17 @@ void FastPipeline::frontEndRange(const std::vector<ItemState>& items, std::size_
     const ItemVertices& source = vertices_[k];
     const std::size_t stride = static_cast<std::size_t>(varyingCount(s.tangentLighting, s.shade.lightCount));
     const std::uint32_t item = static_cast<std::uint32_t>(k);
+    const std::size_t vertexCount = mesh.vertices.size();
     for (std::size_t g = from; g < to; ++g) {
       const std::size_t t = g - first;
       ++out.stats.trianglesIn;
       const std::array<std::uint32_t, 3> indices = {mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]};
+      if (indices[0] >= vertexCount || indices[1] >= vertexCount || indices[2] >= vertexCount) {
+        // Not drawn: the range stops at its first bad index, which runFrontEnd reports.
+        out.badItem = k;
+        out.badIndex = 3 * t + (indices[0] >= vertexCount ? 0 : indices[1] >= vertexCount ? 1 : 2);
+        return;
+      }
       const SnappedCorner &a = source.corners[indices[0]], &b = source.corners[indices[1]],
                           &c = source.corners[indices[2]];
       const std::uint32_t triangleId = s.item->firstTriangleId + static_cast<std::uint32_t>(t);
@@ -264,7 +271,10 @@ void FastPipeline::frontEndRange(const std::vector<ItemState>& items, std::size_
 
 void FastPipeline::runFrontEnd(const std::vector<ItemState>& items, int binCount) {
   std::size_t total = 0;
-  for (const ItemState& s : items) total += s.item->mesh->triangleCount();
+  for (const ItemState& s : items) {
+    validateTrailingIndices(*s.item);  // the triangles' indices are checked as they are read
+    total += s.item->mesh->triangleCount();
+  }
   const std::size_t threads = frontEnds_.size();
   pool_.run(static_cast<int>(threads), [&](int task, int) {
     FrontEnd& out = frontEnds_[static_cast<std::size_t>(task)];
@@ -273,10 +283,15 @@ void FastPipeline::runFrontEnd(const std::vector<ItemState>& items, int binCount
     out.bins.resize(static_cast<std::size_t>(binCount));
     for (std::vector<std::uint32_t>& bin : out.bins) bin.clear();
     out.stats = RenderStats{};
+    out.badItem = kNoBadIndex;
     // Contiguous ranges, so thread order is submission order.
     const std::size_t t = static_cast<std::size_t>(task);
     frontEndRange(items, total * t / threads, total * (t + 1) / threads, out);
   });
+  // The first bad index in submission order: the earliest range's.
+  for (const FrontEnd& frontEnd : frontEnds_) {
+    if (frontEnd.badItem != kNoBadIndex) throwIndexError(*items[frontEnd.badItem].item, frontEnd.badIndex);
+  }
 }
 
 std::uint64_t FastPipeline::drawBin(const std::vector<ItemState>& items, int bin, std::uint32_t background,

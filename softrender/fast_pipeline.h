@@ -71,8 +71,9 @@ class FastPipeline {
   Framebuffer allocateDepthTarget(int width, int height);
 
   // Clears `fb` to `background` (as makeFramebuffer) and draws every item's triangles into it,
-  // adding the counts to `stats`. `items` are in submission order; validateIndices must have
-  // passed for each. depthOnly: the visibility pass alone (a shadow pass): depth is written,
+  // adding the counts to `stats`. `items` are in submission order; an index at or past its
+  // mesh's vertex count throws validateIndices's InputError (checked as the front end reads
+  // the indices, before any is used). depthOnly: the visibility pass alone (a shadow pass): depth is written,
   // colour and triangle ids are left as they were, nothing is shaded. `surfaces` (the deferred
   // pipeline's G-buffer pass, sized as fb): each pixel's surface is written there instead of
   // its colour (kernels' surfaceBin); colour gets the background.
@@ -116,7 +117,11 @@ class FastPipeline {
     std::vector<std::vector<std::uint32_t>> bins;  // per bin: indices into triangles
     RenderStats stats;
     ClipPolygon polygon, scratch;
+    // The first index in this front end's range at or past its vertex count: the item and the
+    // index's position (badItem kNoBadIndex when every index is in range).
+    std::size_t badItem = kNoBadIndex, badIndex = 0;
   };
+  static constexpr std::size_t kNoBadIndex = static_cast<std::size_t>(-1);
   // One back-end thread's scratch space for the bin it is drawing.
   struct BackEnd {
     std::vector<BinTriangle> triangles;

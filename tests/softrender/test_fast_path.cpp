@@ -665,6 +665,38 @@ TEST_P(FastPath, SimdPowIsTheScalarPowBitForBit) {
   }
 }
 
+// An index past the vertex count: the fast path checks the indices as its front end reads
+// them, and must throw the teaching path's error (the first bad index, whichever thread's
+// range holds it), for a triangle's index and for one past the last whole triangle.
+TEST_P(FastPath, BadIndicesThrowTheTeachingPathsError) {
+  expectTargetInUse(GetParam());
+  Scene scene = loadSceneFile(kScenes + "/default.json");
+  const std::size_t sphere = 1;  // the scene's second node, most of its triangles
+  ASSERT_EQ(scene.nodes[sphere].name, "ball");
+  const std::size_t mesh = static_cast<std::size_t>(scene.nodes[sphere].meshIndex);
+  const std::size_t count = scene.meshes[mesh].indices.size();
+  const auto errorOf = [&](const Scene& broken, const CpuOptions& options) {
+    try {
+      makeCpuRenderer(options)->render(broken, broken.settings, 64, 48);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::vector<std::vector<std::size_t>> cases = {{5}, {count - 1}, {count - 2, count / 2 + 1}, {count}};
+  for (const std::vector<std::size_t>& bad : cases) {
+    Scene broken = scene;
+    std::vector<std::uint32_t>& indices = broken.meshes[mesh].indices;
+    if (bad[0] == count) indices.push_back(0);  // a trailing index, past the last whole triangle
+    for (const std::size_t i : bad) indices[i] = 1000000;
+    const std::string expected = errorOf(broken, teaching());
+    ASSERT_NE(expected.find("mesh index " + std::to_string(*std::min_element(bad.begin(), bad.end()))),
+              std::string::npos)
+        << expected;
+    for (const int threads : {1, 2, 3}) EXPECT_EQ(errorOf(broken, fastSimd(threads)), expected) << threads << " threads";
+  }
+}
+
 TEST_P(FastPath, PathNames) {
   expectTargetInUse(GetParam());
   EXPECT_EQ(cpuPathName(teaching()), "teaching");
