@@ -21,20 +21,6 @@ bool finitePosition(const vec4& p) {
   return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
 }
 
-// The inverse of storeVaryings (interpolate.h): the ClipVertex's varyings (everything else left as the vertex
-// stage leaves unused fields, zero).
-void loadVaryings(const float* in, bool tangentLighting, int lightCount, ClipVertex& v) {
-  const auto get = [&](int at) { return vec3(in[at], in[at + 1], in[at + 2]); };
-  v.posWorld = get(kVaryingPosWorld);
-  v.nWorld = get(kVaryingNormal);
-  v.tWorld = get(kVaryingTangent);
-  v.bWorld = get(kVaryingBitangent);
-  v.uv = vec2(in[kVaryingUv], in[kVaryingUv + 1]);
-  if (!tangentLighting) return;
-  v.eyeDirTangent = get(kVaryingEyeDirTangent);
-  for (int i = 0; i < lightCount; ++i) v.lightDirTangent[static_cast<std::size_t>(i)] = get(kVaryingLightDirTangent + 3 * i);
-}
-
 // Rows [rowBegin, rowEnd) of the depth buffer to kClearDepth.
 void clearDepthRows(int rowBegin, int rowEnd, Framebuffer& fb) {
   for (int py = rowBegin; py < rowEnd; ++py) {
@@ -135,8 +121,6 @@ void FastPipeline::runVertexStage(const std::vector<ItemState>& items) {
     out.vertices.resize(count);
     out.corners.resize(count);
     out.varyings.resize(count * static_cast<std::size_t>(varyingCount(s.tangentLighting, s.shade.lightCount)));
-    out.posClip.resize(count);
-    out.clipDistances.resize(count * static_cast<std::size_t>(s.clip.userPlaneCount));
     for (std::size_t begin = 0; begin < count; begin += kVerticesPerTask) {
       chunks.push_back({k, begin, std::min(count, begin + kVerticesPerTask)});
     }
@@ -147,7 +131,6 @@ void FastPipeline::runVertexStage(const std::vector<ItemState>& items) {
     const std::vector<Vertex>& meshVertices = s.item->mesh->vertices;
     ItemVertices& out = vertices_[chunk.item];
     const std::size_t stride = static_cast<std::size_t>(varyingCount(s.tangentLighting, s.shade.lightCount));
-    const std::size_t planes = static_cast<std::size_t>(s.clip.userPlaneCount);
     for (std::size_t i = chunk.begin; i < chunk.end; ++i) {
       const ClipVertex clip = twr::runVertexStage(meshVertices[i], s.vertexUniforms);
       FastVertex& v = out.vertices[i];
@@ -157,8 +140,6 @@ void FastPipeline::runVertexStage(const std::vector<ItemState>& items) {
       out.corners[i] = SnappedCorner{v.xFixed, v.yFixed,
                                      finitePosition(clip.posClip) ? outcode(clip, s.clip) : kClipNonFiniteBit};
       storeVaryings(clip, s.tangentLighting, s.shade.lightCount, &out.varyings[i * stride]);
-      out.posClip[i] = clip.posClip;
-      for (std::size_t j = 0; j < planes; ++j) out.clipDistances[i * planes + j] = clip.clipDistance[j];
     }
   });
 }
@@ -191,19 +172,14 @@ void FastPipeline::runVertexStage(const std::vector<ItemState>& items) {
   }
 }
 
-void FastPipeline::clipAndEmit(const ItemState& s, std::size_t k, std::uint32_t item, std::uint32_t triangleId,
+void FastPipeline::clipAndEmit(const ItemState& s, std::uint32_t item, std::uint32_t triangleId,
                                const std::array<std::uint32_t, 3>& indices, FrontEnd& out) {
-  // The three vertices as the vertex stage returned them, for the teaching clipper.
-  const ItemVertices& source = vertices_[k];
-  const std::size_t stride = static_cast<std::size_t>(varyingCount(s.tangentLighting, s.shade.lightCount));
-  const std::size_t planes = static_cast<std::size_t>(s.clip.userPlaneCount);
+  // The three vertices as the vertex stage returned them, for the teaching clipper: run again
+  // (the same function of the same inputs, so the same bits) rather than kept for every vertex
+  // of every frame for the few triangles that cross a plane.
+  const std::vector<Vertex>& meshVertices = s.item->mesh->vertices;
   std::array<ClipVertex, 3> corners;
-  for (std::size_t c = 0; c < 3; ++c) {
-    const std::size_t i = indices[c];
-    corners[c].posClip = source.posClip[i];
-    loadVaryings(&source.varyings[i * stride], s.tangentLighting, s.shade.lightCount, corners[c]);
-    for (std::size_t j = 0; j < planes; ++j) corners[c].clipDistance[j] = source.clipDistances[i * planes + j];
-  }
+  for (std::size_t c = 0; c < 3; ++c) corners[c] = twr::runVertexStage(meshVertices[indices[c]], s.vertexUniforms);
   const bool clipped = clipTriangle(corners[0], corners[1], corners[2], s.clip, out.polygon, out.scratch) != 0;
   if (clipped) ++out.stats.trianglesClipped;
   // The clipped polygon's vertices (original ones copied, new ones from the clipper) with their
@@ -262,7 +238,7 @@ void FastPipeline::frontEndRange(const std::vector<ItemState>& items, std::size_
               &source.varyings[indices[2] * stride]},
              out);
       } else {
-        clipAndEmit(s, k, item, triangleId, indices, out);
+        clipAndEmit(s, item, triangleId, indices, out);
       }
     }
     first += count;

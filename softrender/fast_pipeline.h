@@ -94,9 +94,7 @@ class FastPipeline {
   struct ItemVertices {
     std::vector<FastVertex> vertices;
     std::vector<SnappedCorner> corners;  // the same vertices' snapped position and outcode
-    std::vector<float> varyings;       // varyingCount floats per vertex
-    std::vector<vec4> posClip;         // for rebuilding a ClipVertex to clip
-    std::vector<float> clipDistances;  // userPlaneCount floats per vertex
+    std::vector<float> varyings;         // varyingCount floats per vertex
   };
   // A vertex the clipper made (or copied into a clipped polygon).
   struct ClippedVertex {
@@ -145,7 +143,7 @@ class FastPipeline {
   void runVertexStage(const std::vector<ItemState>& items);
   void runFrontEnd(const std::vector<ItemState>& items, int binCount);
   void frontEndRange(const std::vector<ItemState>& items, std::size_t begin, std::size_t end, FrontEnd& out);
-  void clipAndEmit(const ItemState& s, std::size_t k, std::uint32_t item, std::uint32_t triangleId,
+  void clipAndEmit(const ItemState& s, std::uint32_t item, std::uint32_t triangleId,
                    const std::array<std::uint32_t, 3>& indices, FrontEnd& out);
   void emit(const ItemState& s, std::uint32_t item, std::uint32_t triangleId, const std::array<std::int32_t, 3>& xFixed,
             const std::array<std::int32_t, 3>& yFixed, std::array<const FastVertex*, 3> v,
