@@ -35,18 +35,20 @@ void throwIndexError(const DrawItem& item, std::size_t i) {
                    std::to_string(item.mesh->vertices.size()));
 }
 
-void validateIndices(const DrawItem& item) {
+namespace {
+
+// The indices from position `first` on.
+void validateIndicesFrom(const DrawItem& item, std::size_t first) {
   const std::size_t vertexCount = item.mesh->vertices.size();
-  for (std::size_t i = 0; i < item.mesh->indices.size(); ++i) {
+  for (std::size_t i = first; i < item.mesh->indices.size(); ++i) {
     if (item.mesh->indices[i] >= vertexCount) throwIndexError(item, i);
   }
 }
 
-void validateTrailingIndices(const DrawItem& item) {
-  const std::size_t vertexCount = item.mesh->vertices.size();
-  for (std::size_t i = 3 * item.mesh->triangleCount(); i < item.mesh->indices.size(); ++i) {
-    if (item.mesh->indices[i] >= vertexCount) throwIndexError(item, i);
-  }
-}
+}  // namespace
+
+void validateIndices(const DrawItem& item) { validateIndicesFrom(item, 0); }
+
+void validateTrailingIndices(const DrawItem& item) { validateIndicesFrom(item, 3 * item.mesh->triangleCount()); }
 
 }  // namespace twr

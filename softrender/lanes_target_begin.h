@@ -36,8 +36,8 @@
 #define TWR_LANE_OUTLINE HWY_NOINLINE
 // A colour read (one mip level of an RGBA map) inlined into the kernels on the SIMD targets:
 // out of line, the call spills every live vector and returns its four through memory. The
-// default frame on AVX-512 about 5 % faster; each SIMD target's kernel object takes about three
-// times as long to compile (AVX-512 24 -> 77 s), so the scalar target keeps one copy.
+// default frame on AVX-512 about 4 % faster; each SIMD target's kernel object takes about three
+// times as long to compile (AVX-512 24 -> 78 s), so the scalar target keeps one copy.
 #undef TWR_LANES_INLINE_COLOUR_READS
 #if defined(__OPTIMIZE__) && !defined(TWR_LANES_SANITIZED) && HWY_TARGET != HWY_SCALAR
 #define TWR_LANES_INLINE_COLOUR_READS 1

@@ -104,6 +104,15 @@ TWR_LANE_INLINE L phongPow(L x, ScalarOf<L> s) {
   }
 }
 
+// The lanes whose exponent phongPow raises by powering: phongpow::isWholeExponent lane by lane.
+template <typename L>
+TWR_LANE_INLINE MaskOf<L> wholeExponentLanes(const L& s) {
+  using S = ScalarOf<L>;
+  const L whole = floorOf(s);
+  const auto inRange = (s >= L(S(1))) & (s <= L(static_cast<S>(phongpow::kMaxWholeExponent)));  // NaN: not
+  return inRange & !(s < whole) & !(s > whole);
+}
+
 // phongPow with one exponent per lane (the deferred lighting pass reads the shininess from the
 // G-buffer): the same operations, so a lane gets phongPow's bits for its own s. Float lanes only.
 template <typename L>
@@ -116,9 +125,7 @@ TWR_LANE_INLINE L phongPowPerLane(L x, L s) {
   const L finiteX = select(positive & !infinite, x, one);
   // Each lane by phongPow's method for its own s: whole exponents by powering, the rest by the
   // series, each computed only where some lane needs it.
-  const L whole = floorOf(s);
-  const auto byPowering = (s > L(S(0.5))) & !(s < whole) & !(s > whole) &
-                          !(s > L(static_cast<S>(phongpow::kMaxWholeExponent)));
+  const auto byPowering = wholeExponentLanes<L>(s);
   const L poweredWhole =
       anyOf(byPowering) ? toNarrow<L>(powWholeWidePerLane(toWide(finiteX), toWide(select(byPowering, s, one)))) : one;
   const L powered = allOf(byPowering)

@@ -34,6 +34,7 @@ inline constexpr int kExp2Terms = 11;
 // products instead of the series' 20 terms and a division. A Phong exponent is usually whole.
 inline constexpr int kWholeExponentBits = 8;
 inline constexpr double kMaxWholeExponent = 255.0;
+static_assert(kMaxWholeExponent == (1 << kWholeExponentBits) - 1, "every whole exponent fits the bits powered");
 constexpr bool isWholeExponent(double s) {
   return s >= 1.0 && s <= kMaxWholeExponent && s == static_cast<double>(static_cast<int>(s));
 }

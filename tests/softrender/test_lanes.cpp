@@ -26,6 +26,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iterator>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -222,6 +223,44 @@ void PerLanePhongPowMixesBothMethods() {
   EXPECT_EQ(differences, 0u) << "target " << hwy::TargetName(HWY_TARGET);
 }
 
+// What the float results above cannot show (both methods nearly always round to the same
+// float): which lanes take the powering (phongpow::isWholeExponent's, lane by lane, NaN and the
+// range's ends included), and that per-lane powering multiplies in powWholeWide's order (the
+// double results bit for bit).
+void PerLanePoweringIsTheUniformOne() {
+  const float exponents[] = {std::nanf(""), -3.0f, 0.0f, 0.999f, 1.0f, 2.0f, 3.0f, 7.5f, 32.0f, 100.0f,
+                             254.5f, 255.0f, 256.0f, 1.0e5f, std::numeric_limits<float>::infinity()};
+  HWY_ALIGN float ss[kMaxLanes];
+  HWY_ALIGN std::int32_t picked[kMaxLanes];
+  for (std::size_t first = 0; first < std::size(exponents); ++first) {
+    for (std::size_t l = 0; l < laneCount(); ++l) ss[l] = exponents[(first + l) % std::size(exponents)];
+    const MaskOf<LaneF> whole = wholeExponentLanes<LaneF>(LaneF(hn::Load(DF(), ss)));
+    hn::Store(hn::VecFromMask(DI(), hn::RebindMask(DI(), whole.m)), DI(), picked);
+    for (std::size_t l = 0; l < laneCount(); ++l) {
+      EXPECT_EQ(picked[l] != 0, phongpow::isWholeExponent(static_cast<double>(ss[l]))) << "s = " << ss[l];
+    }
+  }
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<float> x(0.0f, 1.1f);
+  std::uniform_int_distribution<int> n(1, static_cast<int>(phongpow::kMaxWholeExponent));
+  HWY_ALIGN float xs[kMaxLanes], ns[kMaxLanes];
+  HWY_ALIGN double wide[kMaxLanes];
+  std::size_t differences = 0;
+  for (int round = 0; round < 2000; ++round) {
+    for (std::size_t l = 0; l < laneCount(); ++l) xs[l] = x(rng), ns[l] = static_cast<float>(n(rng));
+    const LaneW powered = powWholeWidePerLane(toWide(LaneF(hn::Load(DF(), xs))), toWide(LaneF(hn::Load(DF(), ns))));
+    hn::Store(powered.lo, DW(), wide);
+#if HWY_TARGET != HWY_SCALAR
+    hn::Store(powered.hi, DW(), wide + hn::Lanes(DW()));
+#endif
+    for (std::size_t l = 0; l < laneCount(); ++l) {
+      const double expected = ::twr::lanes::powWholeWide<double>(xs[l], static_cast<unsigned>(ns[l]));
+      if (std::bit_cast<std::uint64_t>(wide[l]) != std::bit_cast<std::uint64_t>(expected)) ++differences;
+    }
+  }
+  EXPECT_EQ(differences, 0u) << "target " << hwy::TargetName(HWY_TARGET);
+}
+
 void SamplingIsTheSharedSource() {
   Texture texture;
   texture.width = 5;  // not a power of two
@@ -281,6 +320,7 @@ HWY_EXPORT_AND_TEST_P(SharedSource, AttenuationIsTheSharedSourceAndSeesAReorderi
 HWY_EXPORT_AND_TEST_P(SharedSource, PhongPowAndBytesAreTheSharedSource);
 HWY_EXPORT_AND_TEST_P(SharedSource, FusedMulAddIsStdFmaOnEveryTarget);
 HWY_EXPORT_AND_TEST_P(SharedSource, PerLanePhongPowMixesBothMethods);
+HWY_EXPORT_AND_TEST_P(SharedSource, PerLanePoweringIsTheUniformOne);
 HWY_EXPORT_AND_TEST_P(SharedSource, SamplingIsTheSharedSource);
 }  // namespace
 }  // namespace twr
