@@ -224,6 +224,7 @@ std::uint64_t Visibility(const TriangleSetup& setup, const std::array<WindowVert
 // One draw item's lanes of a row segment starting at pixel (x, py).
 struct Segment {
   const std::vector<BinTriangle>* triangles;
+  const std::uint64_t* exactSumPlanes;  // per triangle, or null (fast_kernels.h)
   const std::uint32_t* slots;  // per lane (kNoSlot for lanes of no triangle)
   std::uint64_t bits;          // this item's lanes
   int x, py;
@@ -271,8 +272,9 @@ HWY_INLINE void blendPlane(const LaneMask& mask, const AttributePlaneT<float>& t
 // The planes of a segment's lanes on a few triangles: the first triangle's in every lane (it
 // stands in for lanes of other items, so every lane computes with sane numbers; the mask
 // discards their results), each other triangle's blended into its lanes.
-HWY_INLINE void blendedPlanes(const std::vector<BinTriangle>& triangles, const SegmentTriangles& distinct,
-                              VaryingPlanesL<LaneF>& planes, AttributePlaneL<LaneF>& depthPlane) {
+HWY_INLINE void blendedPlanes(const std::vector<BinTriangle>& triangles, [[maybe_unused]] const std::uint64_t* exactSumPlanes,
+                              const SegmentTriangles& distinct, VaryingPlanesL<LaneF>& planes,
+                              AttributePlaneL<LaneF>& depthPlane) {
   const BinTriangle& first = triangles[distinct.slots[0]];
   broadcastVaryingPlanes(first.varyings, planes);
   depthPlane = broadcastPlane(first.depth);
@@ -285,6 +287,20 @@ HWY_INLINE void blendedPlanes(const std::vector<BinTriangle>& triangles, const S
       blendPlane(mask, t.varyings.overW[static_cast<std::size_t>(k)], planes.overW[static_cast<std::size_t>(k)]);
     }
   }
+#if !HWY_NATIVE_FMA
+  std::uint64_t exactSums = 0;
+  if (exactSumPlanes) {
+    exactSums = ~std::uint64_t{0};
+    for (int j = 0; j < distinct.count; ++j) exactSums &= exactSumPlanes[distinct.slots[j]];
+  }
+  // A plane takes planeAt's short way where it does on every triangle of the segment.
+  const auto exact = [&](int bit) { return ((exactSums >> bit) & 1u) != 0; };
+  depthPlane.sumsExactInDouble = exact(kExactSumDepthBit);
+  planes.oneOverW.sumsExactInDouble = exact(kExactSumOneOverWBit);
+  for (int k = 0; k < planes.count; ++k) {
+    planes.overW[static_cast<std::size_t>(k)].sumsExactInDouble = exact(kExactSumFirstVaryingBit + k);
+  }
+#endif
 }
 
 // The same for lanes on many triangles: each plane transposed into columns through memory,
@@ -360,7 +376,7 @@ HWY_INLINE FragmentL<LaneF> SegmentFragment(const Segment& s, const ItemState& i
   VaryingPlanesL<LaneF> planes;
   AttributePlaneL<LaneF> depthPlane;
   if (distinct.few) {
-    blendedPlanes(triangles, distinct, planes, depthPlane);
+    blendedPlanes(triangles, s.exactSumPlanes, distinct, planes, depthPlane);
   } else {
     transposedPlanes(s, varyingCount(tangent, lightCount), planes, depthPlane);
   }
@@ -501,7 +517,8 @@ HWY_INLINE std::uint64_t segmentLanes(const std::vector<BinTriangle>& triangles,
 // Both shading passes of a bin: every pixel of rows [rowBegin, rowEnd) gets its triangle id
 // and, without `surfaces`, its colour (the background word where nothing was drawn); with
 // `surfaces`, the background word and its G-buffer texel (0 where nothing was drawn).
-void ShadeRows(const std::vector<BinTriangle>& triangles, const std::vector<ItemState>& items,
+void ShadeRows(const std::vector<BinTriangle>& triangles, const std::uint64_t* exactSumPlanes,
+               const std::vector<ItemState>& items,
                const std::vector<ItemMaps>& maps, const std::uint32_t* slots, int rowBegin, int rowEnd,
                std::uint32_t background, Framebuffer& fb, GBuffer* surfaces) {
   const std::size_t lanes = laneCount();
@@ -534,7 +551,7 @@ void ShadeRows(const std::vector<BinTriangle>& triangles, const std::vector<Item
         const std::uint32_t item = itemLanes[__builtin_ctzll(remaining)];
         const std::uint64_t bits = lanesHolding(itemLanes, item, remaining);
         remaining &= ~bits;
-        const Segment segment{&triangles, slotLanes, bits, static_cast<int>(x), py};
+        const Segment segment{&triangles, exactSumPlanes, slotLanes, bits, static_cast<int>(x), py};
         if (surfaces) {
           surfaceKernels[item](segment, items[item], maps[item], channels);
         } else {
@@ -560,16 +577,18 @@ void ShadeRows(const std::vector<BinTriangle>& triangles, const std::vector<Item
   }
 }
 
-void ShadeBin(const std::vector<BinTriangle>& triangles, const std::vector<ItemState>& items,
+void ShadeBin(const std::vector<BinTriangle>& triangles, const std::uint64_t* exactSumPlanes,
+              const std::vector<ItemState>& items,
               const std::vector<ItemMaps>& maps, const std::uint32_t* slots, int rowBegin, int rowEnd,
               std::uint32_t background, Framebuffer& fb) {
-  ShadeRows(triangles, items, maps, slots, rowBegin, rowEnd, background, fb, nullptr);
+  ShadeRows(triangles, exactSumPlanes, items, maps, slots, rowBegin, rowEnd, background, fb, nullptr);
 }
 
-void SurfaceBin(const std::vector<BinTriangle>& triangles, const std::vector<ItemState>& items,
+void SurfaceBin(const std::vector<BinTriangle>& triangles, const std::uint64_t* exactSumPlanes,
+                const std::vector<ItemState>& items,
                 const std::vector<ItemMaps>& maps, const std::uint32_t* slots, int rowBegin, int rowEnd,
                 std::uint32_t background, Framebuffer& fb, GBuffer& surfaces) {
-  ShadeRows(triangles, items, maps, slots, rowBegin, rowEnd, background, fb, &surfaces);
+  ShadeRows(triangles, exactSumPlanes, items, maps, slots, rowBegin, rowEnd, background, fb, &surfaces);
 }
 
 // The lighting pass over rows [rowBegin, rowEnd): a vector of pixels of a row at a time, the
@@ -721,6 +740,11 @@ FastKernels GetKernels() {
   FastKernels k;
   k.isa = isaOfThisTarget();
   k.lanes = static_cast<int>(laneCount());
+#if HWY_NATIVE_FMA
+  k.fusesMultiplyAdds = true;
+#else
+  k.fusesMultiplyAdds = false;
+#endif
   k.visibility = &Visibility;
   k.shadeBin = &ShadeBin;
   k.surfaceBin = &SurfaceBin;

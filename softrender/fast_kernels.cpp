@@ -76,6 +76,17 @@ FastKernels fastKernelsFor(CpuIsa isa) {
   throw InputError("cpu renderer: --cpu-isa " + std::string(toString(isa)) + ": no kernels compiled for it");
 }
 
+std::uint64_t exactSumPlaneBits(const BinTriangle& t) {
+  const auto bit = [](const AttributePlaneT<float>& p, int at) {
+    return planeSumsExactInDouble(p) ? std::uint64_t{1} << at : std::uint64_t{0};
+  };
+  std::uint64_t bits = bit(t.depth, kExactSumDepthBit) | bit(t.varyings.oneOverW, kExactSumOneOverWBit);
+  for (int k = 0; k < t.varyings.count; ++k) {
+    bits |= bit(t.varyings.overW[static_cast<std::size_t>(k)], kExactSumFirstVaryingBit + k);
+  }
+  return bits;
+}
+
 std::vector<RedFootprintLevel> makeRedFootprints(const Texture& texture) {
   std::vector<RedFootprintLevel> out;
   for (int l = 0; l < texture.levelCount(); ++l) {

@@ -43,6 +43,15 @@ struct BinTriangle {
   std::uint32_t triangleId = 0;
   std::uint32_t item = 0;  // index into the frame's ItemState list
 };
+// For targets without fused multiply-adds (FastKernels::fusesMultiplyAdds false), the planes of
+// a binned triangle that planeSumsExactInDouble holds for: bit 0 the depth, bit 1 1/w, bit 2 + k
+// varying k. Kept beside the triangles, not in them, so the other targets' bins stay as they were.
+inline constexpr int kExactSumDepthBit = 0;
+inline constexpr int kExactSumOneOverWBit = 1;
+inline constexpr int kExactSumFirstVaryingBit = 2;
+static_assert(kExactSumFirstVaryingBit + kMaxVaryings <= 64);
+// Those bits of a triangle's planes.
+std::uint64_t exactSumPlaneBits(const BinTriangle& t);
 
 // A texture as the kernels read it: the RGBA8 texels of each 4 x 4 block of texels stored
 // together in one 64-byte block (one cache line), blocks in rows, sides padded up to multiples
@@ -91,6 +100,7 @@ struct ItemMaps {
 struct FastKernels {
   CpuIsa isa = CpuIsa::Scalar;  // the target they were compiled for
   int lanes = 1;                // floats per vector on it
+  bool fusesMultiplyAdds = true;  // false: fusedMulAdd is emulated, exactSumPlaneBits helps
 
   // Visibility pass for one triangle over rows [rowBegin, rowEnd) (exclusive end). `slots`
   // holds the bin's rows: pixel (px, py) at (py - rowBegin) * fb.width + px. On the first
@@ -103,7 +113,10 @@ struct FastKernels {
   // Shading pass over rows [rowBegin, rowEnd), writing colour and triangle id of every pixel:
   // for a pixel with a slot, triangles[slot] shaded with items[triangles[slot].item] and that
   // item's tiled maps; for one without, the background word and kNoTriangle.
-  void (*shadeBin)(const std::vector<BinTriangle>& triangles, const std::vector<ItemState>& items,
+  // exactSumPlanes: exactSumPlaneBits of each triangle where the target does not fuse
+  // multiply-adds, else null.
+  void (*shadeBin)(const std::vector<BinTriangle>& triangles, const std::uint64_t* exactSumPlanes,
+                   const std::vector<ItemState>& items,
                    const std::vector<ItemMaps>& maps, const std::uint32_t* slots, int rowBegin, int rowEnd,
                    std::uint32_t background, Framebuffer& fb) = nullptr;
 
@@ -111,7 +124,8 @@ struct FastKernels {
   // the shaded permutation's surface (gbufferFragment, deferred-inl.h) written into
   // `surfaces` instead of the colour: every pixel of the rows gets its texel (0 where nothing
   // was drawn) and the background word in colour.
-  void (*surfaceBin)(const std::vector<BinTriangle>& triangles, const std::vector<ItemState>& items,
+  void (*surfaceBin)(const std::vector<BinTriangle>& triangles, const std::uint64_t* exactSumPlanes,
+                     const std::vector<ItemState>& items,
                      const std::vector<ItemMaps>& maps, const std::uint32_t* slots, int rowBegin, int rowEnd,
                      std::uint32_t background, Framebuffer& fb, GBuffer& surfaces) = nullptr;
 

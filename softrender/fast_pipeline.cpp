@@ -277,6 +277,7 @@ std::uint64_t FastPipeline::drawBin(const std::vector<ItemState>& items, int bin
   const int rowEnd = std::min(fb.height, rowBegin + kBinRows);
   clearDepthRows(rowBegin, rowEnd, fb);  // colour and ids: the shading pass writes every pixel
   scratch.triangles.clear();
+  scratch.exactSumPlanes.clear();
   scratch.slots.assign(static_cast<std::size_t>(rowEnd - rowBegin) * static_cast<std::size_t>(fb.width), kNoSlot);
   std::uint64_t passed = 0;
   for (const FrontEnd& frontEnd : frontEnds_) {
@@ -290,7 +291,9 @@ std::uint64_t FastPipeline::drawBin(const std::vector<ItemState>& items, int bin
       AttributePlaneT<float> depth;
       bool covered = false;
       const std::array<WindowVertex, 3> window{r.v[0]->window, r.v[1]->window, r.v[2]->window};
-      passed += kernels_.visibility(setup, window, slot, rowBegin, rowEnd, fb, scratch.slots.data(), depth, covered);
+      const std::uint64_t passedHere =
+          kernels_.visibility(setup, window, slot, rowBegin, rowEnd, fb, scratch.slots.data(), depth, covered);
+      passed += passedHere;
       if (!covered || depthOnly) continue;  // no pixel holds this slot, or nothing is shaded
       BinTriangle& t = scratch.triangles.emplace_back();
       t.varyings = makeVaryingPlanes<float>(window, r.varyings, varyingCount(s.tangentLighting, s.shade.lightCount), setup,
@@ -298,13 +301,19 @@ std::uint64_t FastPipeline::drawBin(const std::vector<ItemState>& items, int bin
       t.depth = depth;
       t.triangleId = r.triangleId;
       t.item = r.item;
+      if (!kernels_.fusesMultiplyAdds) {
+        scratch.exactSumPlanes.push_back(passedHere >= kExactSumMinPixels ? exactSumPlaneBits(t) : 0);
+      }
     }
   }
   if (depthOnly) return passed;
+  const std::uint64_t* exactSumPlanes = kernels_.fusesMultiplyAdds ? nullptr : scratch.exactSumPlanes.data();
   if (surfaces) {
-    kernels_.surfaceBin(scratch.triangles, items, maps_, scratch.slots.data(), rowBegin, rowEnd, background, fb, *surfaces);
+    kernels_.surfaceBin(scratch.triangles, exactSumPlanes, items, maps_, scratch.slots.data(), rowBegin, rowEnd,
+                        background, fb, *surfaces);
   } else {
-    kernels_.shadeBin(scratch.triangles, items, maps_, scratch.slots.data(), rowBegin, rowEnd, background, fb);
+    kernels_.shadeBin(scratch.triangles, exactSumPlanes, items, maps_, scratch.slots.data(), rowBegin, rowEnd,
+                      background, fb);
   }
   return passed;
 }

@@ -39,6 +39,11 @@ namespace twr {
 
 // Rows per bin of the back end (a multiple of the SIMD kernel's 4-row blocks).
 inline constexpr int kBinRows = 32;
+// Pixels a triangle must pass the depth test at in a bin before a target without fused
+// multiply-adds checks its planes for planeAt's short way (exactSumPlaneBits): an
+// estimate of where the check's integer work meets what the pixels save, not tuned. Checking
+// every triangle (then with a libm call a coefficient) made bench_1m's SSE4 frame 55 -> 60 ms.
+inline constexpr std::uint64_t kExactSumMinPixels = 8;
 
 // What the back end's setup and interpolation read of a vertex.
 struct FastVertex {
@@ -123,6 +128,7 @@ class FastPipeline {
   // One back-end thread's scratch space for the bin it is drawing.
   struct BackEnd {
     std::vector<BinTriangle> triangles;
+    std::vector<std::uint64_t> exactSumPlanes;  // exactSumPlaneBits per triangle, without fused multiply-adds only
     std::vector<std::uint32_t> slots;  // kBinRows x width, kNoSlot where nothing passed
   };
 

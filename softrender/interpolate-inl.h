@@ -32,6 +32,9 @@ TWR_LANES_BEGIN
 template <typename L>
 struct AttributePlaneL {
   L atOrigin, dx, dy;
+#if !HWY_NATIVE_FMA
+  bool sumsExactInDouble = false;  // in every lane (planeSumsExactInDouble): planeAt's short way
+#endif
 };
 template <typename L>
 struct UvPlanesL {
@@ -88,6 +91,10 @@ using FragmentL = FragmentT<L>;
 // An attribute plane at pixel (px, py): two fused multiply-adds, as llvmpipe evaluates it.
 template <typename L>
 TWR_LANE_INLINE L planeAt(const AttributePlaneL<L>& p, const L& px, const L& py) {
+#if defined(TWR_LANES_HIGHWAY) && !HWY_NATIVE_FMA
+  // Without fused multiply-add instructions, a plane shown exact in double skips the emulation's check.
+  if (p.sumsExactInDouble) return fusedMulAddsOfExactSums(p.dy, py, p.dx, px, p.atOrigin);
+#endif
   return fusedMulAdd(p.dy, py, fusedMulAdd(p.dx, px, p.atOrigin));
 }
 

@@ -1,6 +1,10 @@
 #include "softrender/interpolate.h"
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 namespace twr {
 
@@ -135,6 +139,31 @@ InterpolationSetupT<T> makeInterpolationSetup(const std::array<WindowVertexT<T>,
     }
   }
   return out;
+}
+
+bool planeSumsExactInDouble(const AttributePlaneT<float>& p) {
+  constexpr int kPixelIndexBits = 15;     // px, py <= 2^15
+  constexpr int kFloatFractionBits = 23;  // ulp(c) = 2^(e(c) - 23)
+  constexpr int kFloatExponentBias = 127;
+  constexpr std::uint32_t kExponentField = 0xFFu, kMagnitudeBits = 0x7FFFFFFFu;
+  constexpr int kDoubleSignificandBits = 53;
+  constexpr int kSumHeadroomBits = 3;  // a + dx px + dy py below 2^(M + 3)
+  int highest = std::numeric_limits<int>::min(), lowestUlp = std::numeric_limits<int>::max();
+  // e(c) from the exponent field (it runs per triangle: no libm call); a subnormal's ulp is
+  // 2^-149, as the smallest normal's.
+  const auto take = [&](float c, int indexBits) {
+    const std::uint32_t bits = std::bit_cast<std::uint32_t>(c);
+    if ((bits & kMagnitudeBits) == 0) return true;  // +-0
+    const int field = static_cast<int>((bits >> kFloatFractionBits) & kExponentField);
+    if (field == static_cast<int>(kExponentField)) return false;  // infinity, NaN
+    const int e = std::max(field, 1) - kFloatExponentBias;
+    highest = std::max(highest, e + indexBits);
+    lowestUlp = std::min(lowestUlp, e - kFloatFractionBits);
+    return true;
+  };
+  if (!take(p.atOrigin, 0) || !take(p.dx, kPixelIndexBits) || !take(p.dy, kPixelIndexBits)) return false;
+  if (lowestUlp == std::numeric_limits<int>::max()) return true;  // the zero plane
+  return highest + kSumHeadroomBits - lowestUlp <= kDoubleSignificandBits;
 }
 
 // The two pipelines: float (matches GL) and double (the reference).

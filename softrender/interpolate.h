@@ -51,6 +51,16 @@ template <typename T>
 struct AttributePlaneT {
   T atOrigin = T(0), dx = T(0), dy = T(0);
 };
+// Whether a target without fused multiply-add instructions may evaluate the float plane as two
+// double sums, each rounded once to float: true when a + dx px, and that sum rounded to float
+// plus dy py, are exact in double for every pixel index px, py in [0, 2^15] (an image is at most
+// 2^14 wide), so each rounding is the fused multiply-add's only one. A finite nonzero
+// coefficient c is a multiple of its ulp 2^(e(c) - 23) below 2^(e(c) + 1): both sums are
+// multiples of the smallest ulp, 2^G, below 2^(M + 3) with M = max(e(a), e(dx) + 15,
+// e(dy) + 15), which is M + 3 - G bits, exact when at most 53. False for a non-finite
+// coefficient.
+bool planeSumsExactInDouble(const AttributePlaneT<float>& p);
+
 // The texture coordinate's three planes (see above).
 template <typename T>
 struct UvPlanesT {

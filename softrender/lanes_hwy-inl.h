@@ -269,6 +269,17 @@ HWY_INLINE LaneF fusedMulAdd(LaneF a, LaneF b, LaneF c) {
 #endif
 }
 
+#if !HWY_NATIVE_FMA
+// fusedMulAdd(a1, b1, fusedMulAdd(a2, b2, c)) for an attribute plane whose two sums are exact
+// in double (planeSumsExactInDouble, interpolate.h), b1 and b2 pixel indices (integers in
+// [0, 2^15]): each product is exact in double (24 + 16 bits), each sum exact by that check, so
+// the one rounding of each sum to float is std::fma's, with no double-rounding check.
+HWY_INLINE LaneF fusedMulAddsOfExactSums(LaneF a1, LaneF b1, LaneF a2, LaneF b2, LaneF c) {
+  const LaneF inner = toNarrowLanes(toWide(a2) * toWide(b2) + toWide(c));
+  return toNarrowLanes(toWide(a1) * toWide(b1) + toWide(inner));
+}
+#endif
+
 // Bit-level helpers of lanes.h's mantissaOf / exponentOf / exp2Integer, lane by lane (each
 // exact, so the same bits as the scalar versions).
 HWY_INLINE hn::Vec<DW> mantissaOfHalf(hn::Vec<DW> x) {

@@ -3,7 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
 
 namespace twr {
 namespace {
@@ -200,6 +204,65 @@ TEST(Interpolate, CollinearFloatPositionsFallBackToTheSnappedOnes) {
   v2.posWorld = vec3(7, 8, 9);
   const Fragment f = interpolateFragment(makeVaryingPlanes(w, v0, v1, v2, false, 0, snapped), 4, 4, p.depth);
   EXPECT_EQ(f.posWorld, vec3(1, 2, 3));
+}
+
+// planeSumsExactInDouble, which lets targets without fused multiply-adds evaluate a plane as
+// two double sums rounded once each: where it holds, both sums are exact (Knuth's two-sum
+// error is 0) and the result is std::fma's, at pixel indices up to 2^15 and on random planes
+// whose coefficients lie from 2^-40 apart to 2^40 apart; where it fails, some sum is inexact
+// (the check rejects what it should), and a non-finite coefficient fails it.
+TEST(Interpolate, PlaneSumsExactInDoubleHoldsOnlyWhereBothSumsAreExact) {
+  std::mt19937 rng(42);
+  std::uniform_int_distribution<std::uint32_t> mantissa(1u << 23, (1u << 24) - 1);
+  std::uniform_int_distribution<int> exponent(-20, 20), spread(-20, 40), coin(0, 7);
+  std::uniform_int_distribution<int> pixel(0, 1 << 15);
+  const auto coefficient = [&](int e) {
+    if (coin(rng) == 0) return 0.0f;
+    const float sign = coin(rng) % 2 == 0 ? 1.0f : -1.0f;
+    return sign * std::ldexp(static_cast<float>(mantissa(rng)), e - 23);
+  };
+  const auto exactSum = [](double p, double c) {
+    const double s = p + c, cPart = s - p, pPart = s - cPart;
+    return (p - pPart) + (c - cPart) == 0.0;
+  };
+  int accepted = 0, rejected = 0, rejectedInexact = 0, wrongBits = 0, acceptedInexact = 0;
+  for (int plane = 0; plane < 20000; ++plane) {
+    const int e = exponent(rng);
+    const AttributePlaneT<float> p{coefficient(e), coefficient(e - spread(rng)), coefficient(e - spread(rng))};
+    const bool exact = planeSumsExactInDouble(p);
+    bool allSumsExact = true;
+    for (int k = 0; k < 16; ++k) {
+      const int px = k == 0 ? 0 : k == 1 ? 1 << 15 : pixel(rng), py = k == 2 ? 1 << 15 : k == 3 ? 0 : pixel(rng);
+      const double inner = static_cast<double>(p.dx) * px + static_cast<double>(p.atOrigin);
+      const float innerFloat = static_cast<float>(inner);
+      const double outer = static_cast<double>(p.dy) * py + static_cast<double>(innerFloat);
+      allSumsExact = allSumsExact && exactSum(static_cast<double>(p.dx) * px, p.atOrigin) &&
+                     exactSum(static_cast<double>(p.dy) * py, innerFloat);
+      const float expected = std::fma(p.dy, static_cast<float>(py), std::fma(p.dx, static_cast<float>(px), p.atOrigin));
+      if (exact && std::bit_cast<std::uint32_t>(static_cast<float>(outer)) != std::bit_cast<std::uint32_t>(expected)) {
+        ++wrongBits;
+      }
+    }
+    if (exact) {
+      ++accepted;
+      if (!allSumsExact) ++acceptedInexact;
+    } else {
+      ++rejected;
+      if (!allSumsExact) ++rejectedInexact;
+    }
+  }
+  EXPECT_EQ(wrongBits, 0);
+  EXPECT_EQ(acceptedInexact, 0);
+  EXPECT_GT(accepted, 5000);
+  EXPECT_GT(rejected, 1000);
+  EXPECT_GT(rejectedInexact, rejected / 2) << "the check rejects planes whose sums are exact";
+
+  const float inf = std::numeric_limits<float>::infinity();
+  EXPECT_TRUE(planeSumsExactInDouble({0.0f, 0.0f, 0.0f}));
+  EXPECT_TRUE(planeSumsExactInDouble({0.5f, 1e-3f, -2e-3f}));
+  EXPECT_FALSE(planeSumsExactInDouble({1.0f, 1e-12f, 0.0f}));  // a gradient far below the value
+  EXPECT_FALSE(planeSumsExactInDouble({inf, 0.0f, 0.0f}));
+  EXPECT_FALSE(planeSumsExactInDouble({0.0f, std::numeric_limits<float>::quiet_NaN(), 0.0f}));
 }
 
 }  // namespace

@@ -36,6 +36,7 @@
 #include "softrender/texel_lanes-inl.h"
 #include "softrender/output_merge-inl.h"
 #include "softrender/phong_pow-inl.h"
+#include "softrender/interpolate-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace twr {
@@ -185,6 +186,40 @@ void FusedMulAddIsStdFmaOnEveryTarget() {
   EXPECT_GT(doubleRoundingMisses, 100u) << "no input where double rounding fails: the test could not see it";
 }
 
+// planeAt, two fused multiply-adds: std::fma's bits on every target, for planes that take the
+// short way of targets without fused multiply-adds (planeSumsExactInDouble) and planes that do
+// not, at pixel indices from 0 to 2^15.
+void PlaneAtIsStdFmaOnEveryTarget() {
+  std::mt19937 rng(23);
+  std::uniform_int_distribution<std::uint32_t> mantissa(1u << 23, (1u << 24) - 1);
+  std::uniform_int_distribution<int> exponent(-20, 20), spread(-20, 40), pixel(0, 1 << 15);
+  const auto coefficient = [&](int e) {
+    const float sign = mantissa(rng) % 2 == 0 ? 1.0f : -1.0f;
+    return sign * std::ldexp(static_cast<float>(mantissa(rng)), e - 23);
+  };
+  HWY_ALIGN float px[kMaxLanes], out[kMaxLanes];
+  std::size_t differences = 0, exactPlanes = 0, otherPlanes = 0;
+  for (int plane = 0; plane < 4000; ++plane) {
+    const int e = exponent(rng);
+    const AttributePlaneT<float> t{coefficient(e), coefficient(e - spread(rng)), coefficient(e - spread(rng))};
+    AttributePlaneL<LaneF> p{LaneF(t.atOrigin), LaneF(t.dx), LaneF(t.dy)};
+#if !HWY_NATIVE_FMA
+    p.sumsExactInDouble = planeSumsExactInDouble(t);
+#endif
+    ++(planeSumsExactInDouble(t) ? exactPlanes : otherPlanes);
+    const float py = static_cast<float>(plane % 3 == 0 ? 1 << 15 : pixel(rng));
+    for (std::size_t l = 0; l < laneCount(); ++l) px[l] = static_cast<float>(l == 0 ? 0 : pixel(rng));
+    hn::Store(planeAt<LaneF>(p, LaneF(hn::Load(DF(), px)), LaneF(py)).v, DF(), out);
+    for (std::size_t l = 0; l < laneCount(); ++l) {
+      const float expected = std::fma(t.dy, py, std::fma(t.dx, px[l], t.atOrigin));
+      if (std::bit_cast<std::uint32_t>(out[l]) != std::bit_cast<std::uint32_t>(expected)) ++differences;
+    }
+  }
+  EXPECT_EQ(differences, 0u) << "target " << hwy::TargetName(HWY_TARGET);
+  EXPECT_GT(exactPlanes, 500u);
+  EXPECT_GT(otherPlanes, 500u);
+}
+
 void PhongPowAndBytesAreTheSharedSource() {
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> x(-0.1f, 1.1f);
@@ -319,6 +354,7 @@ HWY_BEFORE_TEST(SharedSource);
 HWY_EXPORT_AND_TEST_P(SharedSource, AttenuationIsTheSharedSourceAndSeesAReordering);
 HWY_EXPORT_AND_TEST_P(SharedSource, PhongPowAndBytesAreTheSharedSource);
 HWY_EXPORT_AND_TEST_P(SharedSource, FusedMulAddIsStdFmaOnEveryTarget);
+HWY_EXPORT_AND_TEST_P(SharedSource, PlaneAtIsStdFmaOnEveryTarget);
 HWY_EXPORT_AND_TEST_P(SharedSource, PerLanePhongPowMixesBothMethods);
 HWY_EXPORT_AND_TEST_P(SharedSource, PerLanePoweringIsTheUniformOne);
 HWY_EXPORT_AND_TEST_P(SharedSource, SamplingIsTheSharedSource);
