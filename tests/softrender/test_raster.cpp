@@ -69,6 +69,34 @@ TEST(Raster, SpansEqualThePerPixelEdgeTest) {
   }
 }
 
+// Small triangles, whose narrow boxes coveredSpan scans pixel by pixel (the wider ones divide):
+// the same pixels as the edge functions evaluated directly, on boxes from one pixel to nine wide.
+TEST(Raster, SpansOfSmallTrianglesEqualThePerPixelEdgeTest) {
+  const Viewport vp{40, 30};
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> centreX(2.0f, 38.0f), centreY(2.0f, 28.0f), size(0.3f, 8.0f), unit(-0.5f, 0.5f);
+  int narrow = 0, wide = 0;
+  for (int t = 0; t < 4000; ++t) {
+    const float cx = centreX(rng), cy = centreY(rng), r = size(rng);
+    TriangleSetup s;
+    if (setupTriangle({win(cx + r * unit(rng), cy + r * unit(rng)), win(cx + r * unit(rng), cy + r * unit(rng)),
+                       win(cx + r * unit(rng), cy + r * unit(rng))},
+                      CullMode::None, FrontFace::Ccw, vp, s) != SetupResult::Ready)
+      continue;
+    ++(s.x1 - s.x0 < 4 ? narrow : wide);
+    for (int py = s.y0; py <= s.y1; ++py) {
+      const Span span = coveredSpan(s, py);
+      for (int px = s.x0 - 1; px <= s.x1 + 1; ++px) {
+        bool inside = px >= 0 && px < vp.width;
+        for (const EdgeFunction& e : s.edges) inside = inside && e.at(px, py) > 0;
+        ASSERT_EQ(px >= span.xBegin && px < span.xEnd, inside) << "triangle " << t << " pixel " << px << "," << py;
+      }
+    }
+  }
+  EXPECT_GT(narrow, 500);
+  EXPECT_GT(wide, 500);
+}
+
 TEST(Raster, RowRangeLimitsTheRows) {
   const Viewport vp{10, 10};
   TriangleSetup s;
