@@ -41,8 +41,9 @@ namespace twr {
 inline constexpr int kBinRows = 32;
 // Pixels a triangle must pass the depth test at in a bin before a target without fused
 // multiply-adds checks its planes for planeAt's short way (exactSumPlaneBits): an
-// estimate of where the check's integer work meets what the pixels save, not tuned. Checking
-// every triangle (then with a libm call a coefficient) made bench_1m's SSE4 frame 55 -> 60 ms.
+// estimate of where the check's integer work meets what the pixels save, not tuned. A first
+// version checked every triangle, with a libm call a coefficient: bench_1m's SSE4 frame went
+// 55 -> 60 ms.
 inline constexpr std::uint64_t kExactSumMinPixels = 8;
 
 // What the back end's setup and interpolation read of a vertex.
