@@ -40,10 +40,9 @@ namespace twr {
 // Rows per bin of the back end (a multiple of the SIMD kernel's 4-row blocks).
 inline constexpr int kBinRows = 32;
 // Pixels a triangle must pass the depth test at in a bin before a target without fused
-// multiply-adds checks its planes for planeAt's short way (exactSumPlaneBits): an
-// estimate of where the check's integer work meets what the pixels save, not tuned. A first
-// version checked every triangle, with a libm call a coefficient: bench_1m's SSE4 frame went
-// 55 -> 60 ms.
+// multiply-adds checks its planes for planeAt's short way (exactSumPlaneBits): an estimate,
+// not tuned, of where the check's integer work meets what the pixels save; a million small
+// triangles would pay for checks they gain little from (docs/performance.md).
 inline constexpr std::uint64_t kExactSumMinPixels = 8;
 
 // What the back end's setup and interpolation read of a vertex.

@@ -1,5 +1,7 @@
 #include "softrender/interpolate.h"
 
+#include "scene/image.h"
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -142,7 +144,10 @@ InterpolationSetupT<T> makeInterpolationSetup(const std::array<WindowVertexT<T>,
 }
 
 bool planeSumsExactInDouble(const AttributePlaneT<float>& p) {
-  constexpr int kPixelIndexBits = 15;     // px, py <= 2^15
+  constexpr int kPixelIndexBits = 15;  // px, py <= 2^15
+  // Pixel indices, a vector's lanes past a row's end and a quad's neighbours included, stay
+  // below twice the largest image side.
+  static_assert(2 * kMaxImageSide <= 1 << kPixelIndexBits);
   constexpr int kFloatFractionBits = 23;  // ulp(c) = 2^(e(c) - 23)
   constexpr int kFloatExponentBias = 127;
   constexpr std::uint32_t kExponentField = 0xFFu, kMagnitudeBits = 0x7FFFFFFFu;
