@@ -1,7 +1,8 @@
 // Whole frames: the CPU pipeline's teaching path, its fast path on the scalar Highway target
 // and on the best one this CPU runs (auto), and llvmpipe, on the default scene and the OBJ
 // scene (a house whose MTL gives the walls all three maps and the roof a normal map) at 720p;
-// the default scene in debug colour views.
+// the default scene in debug colour views; and the fast path with an untimed llvmpipe frame before
+// each of its frames, as `twinraster bench` alternates them.
 // `twinraster bench` is the side-by-side measurement the docs quote; this one isolates each
 // variant (and runs under perf or callgrind without the other backend in the profile).
 #include "glrender/gl_renderer.h"
@@ -10,7 +11,9 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cstdint>
 #include <cstdlib>
+#include <functional>
 #include <string>
 
 namespace {
@@ -31,10 +34,19 @@ const Scene& sceneNamed(const std::string& name) {
   return millionScene;
 }
 
-void runFrames(benchmark::State& state, Renderer& renderer, const Scene& scene, const RenderSettings& settings) {
+// Each frame drawn into the last one's buffers (Renderer::renderInto, as `twinraster bench`).
+// `between`, if any, runs untimed before each frame.
+void runFrames(benchmark::State& state, Renderer& renderer, const Scene& scene, const RenderSettings& settings,
+               const std::function<void()>& between = {}) {
   std::uint64_t shaded = 0;
+  RenderOutput out;
   for (auto _ : state) {
-    const RenderOutput out = renderer.render(scene, settings, kWidth, kHeight);
+    if (between) {
+      state.PauseTiming();
+      between();
+      state.ResumeTiming();
+    }
+    renderer.renderInto(scene, settings, kWidth, kHeight, out);
     shaded = out.stats.pixelsShaded;
     benchmark::DoNotOptimize(out.rgba.data());
   }
@@ -51,6 +63,21 @@ void BM_CpuFrame(benchmark::State& state, std::string file, CpuPath path, bool b
       makeCpuRenderer(CpuOptions{static_cast<int>(state.range(0)), path, best ? CpuIsa::Auto : CpuIsa::Scalar});
   const Scene& scene = sceneNamed(file);
   runFrames(state, *renderer, scene, scene.settings);
+}
+
+// The same with a lean llvmpipe frame of the scene drawn (untimed) before each, as `twinraster
+// bench` alternates them: the CPU frame then finds its textures, buffers and code evicted from
+// the caches by llvmpipe's. LP_NUM_THREADS as for BM_GlFrame.
+void BM_CpuFrameAfterGl(benchmark::State& state, std::string file) {
+  const auto renderer = makeCpuRenderer(CpuOptions{static_cast<int>(state.range(0)), CpuPath::Fast, CpuIsa::Auto});
+  GlOptions options;
+  options.fastSampling = true;
+  options.frame = GlFrame::Lean;
+  const auto gl = makeGlRenderer(options);
+  const Scene& scene = sceneNamed(file);
+  RenderOutput glOut;
+  runFrames(state, *renderer, scene, scene.settings,
+            [&] { gl->renderInto(scene, scene.settings, kWidth, kHeight, glOut); });
 }
 
 // The default scene in one debug colour view (what the GUI shows beside the lit image).
@@ -85,6 +112,10 @@ BENCHMARK_CAPTURE(BM_CpuFrame, obj_fast_auto, std::string("obj"), CpuPath::Fast,
     ->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_CpuFrame, 1m_fast_auto, std::string("1m"), CpuPath::Fast, true)
     ->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_CpuFrameAfterGl, default_fast_auto, std::string("default"))
+    ->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_CpuFrameAfterGl, 1m_fast_auto, std::string("1m"))
+    ->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_CpuViewFrame, albedo_teaching, View::Albedo, CpuPath::Teaching, false)
     ->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_CpuViewFrame, albedo_fast_auto, View::Albedo, CpuPath::Fast, true)

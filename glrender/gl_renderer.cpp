@@ -244,6 +244,11 @@ class GlRenderer final : public Renderer {
   RenderOutput render(const Scene& scene, const RenderSettings& settings, int width, int height) override {
     return draw(scene, settings, width, height, std::nullopt);
   }
+  // The attachments read back into out's buffers (glReadPixels into memory already mapped).
+  void renderInto(const Scene& scene, const RenderSettings& settings, int width, int height,
+                  RenderOutput& out) override {
+    out = draw(scene, settings, width, height, std::nullopt, imageBuffersOf(std::move(out)));
+  }
 
   RenderOutput renderPixel(const Scene& scene, const RenderSettings& settings, int width, int height, int x,
                            int yTop) {
@@ -337,11 +342,12 @@ class GlRenderer final : public Renderer {
 
   // A frame, or with `onlyPixel` (x, y in GL window coordinates) the same draws under a
   // one-pixel scissor and that pixel read back as a 1 x 1 output.
+  // `buffers`: image buffers to read back into (renderInto).
   RenderOutput draw(const Scene& scene, const RenderSettings& settings, int width, int height,
-                    const std::optional<std::array<int, 2>>& onlyPixel) {
+                    const std::optional<std::array<int, 2>>& onlyPixel, RenderOutput buffers = {}) {
     if (needsEnvironmentCapture(scene)) {  // drawn by this renderer itself (full frames), then the frame with it
       const CapturedEnvironment captured = captureEnvironment(scene, settings, *this);
-      RenderOutput out = draw(captured.scene, settings, width, height, onlyPixel);
+      RenderOutput out = draw(captured.scene, settings, width, height, onlyPixel, std::move(buffers));
       attachCapture(out, captured);
       return out;
     }
@@ -431,7 +437,7 @@ class GlRenderer final : public Renderer {
     glFinish();
     const auto drawn = std::chrono::steady_clock::now();
 
-    RenderOutput out;
+    RenderOutput out = std::move(buffers);
     if (onlyPixel) {
       device.targets.readPixel((*onlyPixel)[0], (*onlyPixel)[1], out);
       glDisable(GL_SCISSOR_TEST);

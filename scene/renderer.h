@@ -9,6 +9,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace twr {
@@ -97,6 +98,17 @@ inline bool drawnAt(const RenderOutput& out, std::size_t i) {
   return coveredAt(out, i) || lineAt(out, i);
 }
 
+// out's four image buffers alone (rgba, depth, triangleId, lineMask), moved out for a renderer
+// to draw the next frame into (Renderer::renderInto); the rest of the output is left behind.
+inline RenderOutput imageBuffersOf(RenderOutput&& out) {
+  RenderOutput buffers;
+  buffers.rgba = std::move(out.rgba);
+  buffers.depth = std::move(out.depth);
+  buffers.triangleId = std::move(out.triangleId);
+  buffers.lineMask = std::move(out.lineMask);
+  return buffers;
+}
+
 class Renderer {
  public:
   virtual ~Renderer() = default;
@@ -104,6 +116,13 @@ class Renderer {
   // Renders `scene` with `settings` (usually scene.settings) at width x height.
   // Throws InputError for inputs it cannot draw.
   virtual RenderOutput render(const Scene& scene, const RenderSettings& settings, int width, int height) = 0;
+  // The same into `out`, whose contents it replaces: a renderer may draw into out's buffers
+  // where they already have the frame's size, as a GL application keeps its framebuffer from
+  // frame to frame, instead of allocating and clearing new ones (a loop over frames calls this).
+  virtual void renderInto(const Scene& scene, const RenderSettings& settings, int width, int height,
+                          RenderOutput& out) {
+    out = render(scene, settings, width, height);
+  }
 };
 
 }  // namespace twr

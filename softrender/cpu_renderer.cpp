@@ -97,9 +97,24 @@ class CpuRenderer final : public Renderer {
   std::string name() const override { return "cpu"; }
 
   RenderOutput render(const Scene& scene, const RenderSettings& settings, int width, int height) override {
+    return renderReusing(scene, settings, width, height, {});
+  }
+  void renderInto(const Scene& scene, const RenderSettings& settings, int width, int height,
+                  RenderOutput& out) override {
+    Framebuffer reuse;
+    reuse.rgba = std::move(out.rgba);
+    reuse.depth = std::move(out.depth);
+    reuse.triangleId = std::move(out.triangleId);
+    reuse.lineMask = std::move(out.lineMask);
+    out = renderReusing(scene, settings, width, height, std::move(reuse));
+  }
+
+ private:
+  RenderOutput renderReusing(const Scene& scene, const RenderSettings& settings, int width, int height,
+                             Framebuffer reuse) {
     if (needsEnvironmentCapture(scene)) {  // drawn by this renderer itself, then the frame with it
       const CapturedEnvironment captured = captureEnvironment(scene, settings, *this);
-      RenderOutput out = render(captured.scene, settings, width, height);
+      RenderOutput out = renderReusing(captured.scene, settings, width, height, std::move(reuse));
       attachCapture(out, captured);
       return out;
     }
@@ -141,7 +156,7 @@ class CpuRenderer final : public Renderer {
         shadowMilliseconds, &shadowPool_);
     stats.shadowMilliseconds = shadowMilliseconds;
 
-    Framebuffer fb = fast_ ? fast_->allocateFramebuffer(width, height)  // draw() clears it bin by bin
+    Framebuffer fb = fast_ ? fast_->allocateFramebuffer(width, height, std::move(reuse))  // draw() clears it bin by bin
                            : makeFramebuffer(width, height, scene.output.background);
     const mat4 clipFromWorld = clipFromWorldFor(scene.camera, width, height);
     std::vector<DrawItem> drawItems = flattenScene(scene);
@@ -223,7 +238,6 @@ class CpuRenderer final : public Renderer {
     return out;
   }
 
- private:
   CpuOptions options_;
   std::unique_ptr<FastPipeline> fast_;  // made on the first fast render, kept for its threads and buffers
   Framebuffer shadowTarget_;            // the shadow pass's layers are drawn here, kept across frames

@@ -66,9 +66,11 @@ class FastPipeline {
   // The target whose kernels draw.
   CpuIsa isa() const { return kernels_.isa; }
 
-  // A framebuffer of that size whose buffers are allocated in parallel and left zero: draw()
-  // clears each bin's rows itself, just before drawing them (while they are in cache).
-  Framebuffer allocateFramebuffer(int width, int height);
+  // A framebuffer of that size whose buffers are allocated in parallel: draw() clears each
+  // bin's rows itself, just before drawing them (while they are in cache). `reuse`'s buffers
+  // are kept where they have the frame's size (a frame drawn into the last one's memory
+  // neither allocates nor zeroes 12 MB at 1280 x 720); the others are allocated, zeroed.
+  Framebuffer allocateFramebuffer(int width, int height, Framebuffer reuse = {});
   // The same for a depth-only pass (draw's depthOnly: a shadow map): the depth buffer alone,
   // 32-bit float as makeShadowFramebuffer stores it. Colour, ids and line mask stay empty, as
   // that pass never touches them (at 2048 x 2048 they were 36 MB allocated and cleared for
@@ -130,6 +132,7 @@ class FastPipeline {
     std::vector<BinTriangle> triangles;
     std::vector<std::uint64_t> exactSumPlanes;  // exactSumPlaneBits per triangle, without fused multiply-adds only
     std::vector<std::uint32_t> slots;  // kBinRows x width, kNoSlot where nothing passed
+    std::vector<float> clearDepthRow;  // a row of kClearDepth, copied over each row a bin clears
   };
 
   // A texture's tiled copy, kept while frames use it and for kUnusedFramesKept frames after

@@ -1,8 +1,9 @@
 // `twinraster bench SCENE [--frames N] [--width W --height H] [--json] [--threads T] [--gl-precise]
 // [--cpu-path P] [--cpu-isa I] [--all-isas]`: times the CPU pipeline and llvmpipe in one
 // process, frame by frame alternating, after a warm-up, and reports the median and spread of
-// each and their ratio. Each time is the wall time of one Renderer::render() call: for GL
-// that includes glFinish and the read-back into the RenderOutput, for the CPU the same
+// each and their ratio. Each time is the wall time of one Renderer::renderInto() call into the
+// renderer's previous output (its buffers reused, as an application keeps its framebuffer): for
+// GL that includes glFinish and the read-back into the RenderOutput, for the CPU the same
 // buffers; neither includes writing a PNG.
 //
 // Two llvmpipe frames, interleaved with the CPU frames:
@@ -127,7 +128,7 @@ struct FrameTime {
 FrameTime renderTimed(Renderer& renderer, const Scene& scene, int width, int height, RenderOutput& out) {
   const double processStart = processCpuMilliseconds();
   const auto start = Clock::now();
-  out = renderer.render(scene, scene.settings, width, height);
+  renderer.renderInto(scene, scene.settings, width, height, out);
   const double wall = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   return {wall, processCpuMilliseconds() - processStart, out.stats.readbackMilliseconds};
 }
@@ -318,6 +319,7 @@ struct IsaRun {
   CpuIsa isa = CpuIsa::Auto;
   std::unique_ptr<Renderer> renderer;
   std::vector<double> ms, processMs;
+  RenderOutput out;  // this target's frames, each drawn into the last one's buffers
 };
 
 void runBench(BenchArgs args) {
@@ -352,16 +354,16 @@ void runBench(BenchArgs args) {
       options.threads = threads;
       options.path = CpuPath::Fast;
       options.isa = isa;
-      isaRuns.push_back({isa, makeCpuRenderer(options), {}, {}});
+      isaRuns.push_back({isa, makeCpuRenderer(options), {}, {}, {}});
     }
   }
 
-  RenderOutput cpuOut, glOut, glLeanOut, isaOut;
+  RenderOutput cpuOut, glOut, glLeanOut;
   for (int i = 0; i < args.warmup; ++i) {
     renderTimed(*cpu, scene, width, height, cpuOut);
     renderTimed(*gl, scene, width, height, glOut);
     renderTimed(*glLean, scene, width, height, glLeanOut);
-    for (IsaRun& run : isaRuns) renderTimed(*run.renderer, scene, width, height, isaOut);
+    for (IsaRun& run : isaRuns) renderTimed(*run.renderer, scene, width, height, run.out);
   }
   std::vector<double> cpuMs, glMs, cpuProcessMs, glProcessMs, glReadbackMs, glDrawMs;
   std::vector<double> glLeanMs, glLeanProcessMs, glLeanReadbackMs;
@@ -381,7 +383,7 @@ void runBench(BenchArgs args) {
     glLeanProcessMs.push_back(l.processMs);
     glLeanReadbackMs.push_back(l.readbackMs);
     for (IsaRun& run : isaRuns) {
-      const FrameTime t = renderTimed(*run.renderer, scene, width, height, isaOut);
+      const FrameTime t = renderTimed(*run.renderer, scene, width, height, run.out);
       run.ms.push_back(t.wallMs);
       run.processMs.push_back(t.processMs);
     }

@@ -51,6 +51,31 @@ void expectSameColour(const Scene& scene, const RenderSettings& settings, int wi
   }
 }
 
+// renderInto reads back into the buffers it is handed, whatever they held: the same output as
+// render, for both frames, with buffers of the frame's size and of another.
+TEST(GlLeanFrame, RenderIntoAUsedOutputEqualsRender) {
+  const Scene scene = loadSceneFile(kScenes + "default.json");
+  for (const GlFrame frame : {GlFrame::Full, GlFrame::Lean}) {
+    const std::unique_ptr<Renderer> renderer = makeRenderer(frame);
+    const RenderOutput fresh = renderer->render(scene, scene.settings, 160, 90);
+    ASSERT_GT(gltest::coveredCount(fresh), 0u) << "a blank image proves nothing";
+    for (const int side : {160, 40}) {  // the frame's width, and buffers that must grow
+      RenderOutput used;
+      used.rgba.assign(static_cast<std::size_t>(side) * 90 * 4, 0xA5);
+      used.depth.assign(static_cast<std::size_t>(side) * 90, 0.25f);
+      used.triangleId.assign(static_cast<std::size_t>(side) * 90, 7u);
+      used.lineMask.assign(static_cast<std::size_t>(side) * 90, 1);
+      renderer->renderInto(scene, scene.settings, 160, 90, used);
+      EXPECT_EQ(used.width, 160);
+      EXPECT_EQ(used.rgba, fresh.rgba) << "buffers of width " << side;
+      EXPECT_EQ(used.depth, fresh.depth) << "buffers of width " << side;
+      EXPECT_EQ(used.triangleId, fresh.triangleId) << "buffers of width " << side;
+      EXPECT_EQ(used.lineMask, fresh.lineMask) << "buffers of width " << side;
+      EXPECT_EQ(used.stats.trianglesIn, fresh.stats.trianglesIn);
+    }
+  }
+}
+
 TEST(GlLeanFrame, DefaultSceneColourEqualsTheFullFrame) {
   const Scene scene = loadSceneFile(kScenes + "default.json");
   expectSameColour(scene, scene.settings, 320, 180, "default.json");

@@ -38,6 +38,7 @@
 #include <ostream>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 namespace twr {
@@ -107,6 +108,16 @@ void expectPathsAgree(const Scene& scene, const RenderSettings& settings, int wi
   expectIdentical(reference, makeCpuRenderer(fastSimd(2))->render(scene, settings, width, height), what + ", simd");
   expectIdentical(reference, makeCpuRenderer(fastSimd(3))->render(scene, settings, width, height),
                   what + ", 3 threads");
+  // Into an earlier output of the frame's size whose every buffer holds garbage (renderInto
+  // keeps buffers of the right size and writes them over): no pixel may keep a stale value.
+  RenderOutput used;
+  used.rgba.assign(reference.rgba.size(), 0xA5);
+  used.depth.assign(reference.depth.size(), 0.25f);
+  used.triangleId.assign(reference.triangleId.size(), 7u);
+  used.lineMask.assign(reference.lineMask.size(), 1);
+  used.stats.pixelsShaded = 12345;
+  makeCpuRenderer(fastSimd(2))->renderInto(scene, settings, width, height, used);
+  expectIdentical(reference, used, what + ", into a used output");
 }
 
 std::vector<std::string> suiteScenes() {
@@ -283,6 +294,14 @@ TEST_P(FastPath, ThreadCountDoesNotChangeAnything) {
   const auto renderer = makeCpuRenderer(fastSimd(2));
   renderer->render(scene, scene.settings, 97, 31);
   expectIdentical(one, renderer->render(scene, scene.settings, 320, 200), "second frame of a reused renderer");
+  // Frames drawn into the last one's output, at sizes that grow and shrink its buffers.
+  RenderOutput out;
+  for (const auto& [width, height] : {std::pair{97, 31}, std::pair{320, 200}, std::pair{640, 400}, std::pair{320, 200}}) {
+    renderer->renderInto(scene, scene.settings, width, height, out);
+    ASSERT_EQ(out.width, width);
+    ASSERT_EQ(out.rgba.size(), static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
+  }
+  expectIdentical(one, out, "into the output of larger and smaller frames");
 }
 
 // A material with every map, on textures of odd sizes (the kernel's non-power-of-two wrap).
