@@ -135,6 +135,18 @@ class CpuRenderer final : public Renderer {
     if (options_.path == CpuPath::Fast && !fast_) {
       fast_ = std::make_unique<FastPipeline>(options_.threads, resolveCpuIsa(options_.isa));
     }
+    // The fast path's workers awake for the frame's draws, asleep after it (also on a throw).
+    struct FrameWorkers {
+      FastPipeline* fast;
+      explicit FrameWorkers(FastPipeline* f) : fast(f) {
+        if (fast) fast->frameBegins();
+      }
+      ~FrameWorkers() {
+        if (fast) fast->frameEnds();
+      }
+      FrameWorkers(const FrameWorkers&) = delete;
+      FrameWorkers& operator=(const FrameWorkers&) = delete;
+    } frameWorkers(fast_.get());
     // The shadow pass first (shadow_pass.h), with the traversal the frame uses; its statistics
     // are its own, not the frame's.
     double shadowMilliseconds = 0.0;

@@ -66,6 +66,11 @@ class FastPipeline {
   // The target whose kernels draw.
   CpuIsa isa() const { return kernels_.isa; }
 
+  // A frame's draws are coming: the workers wake now, while the caller prepares them, and wait
+  // for them spinning (WorkerPool::wake). frameEnds(): they sleep again.
+  void frameBegins() { pool_.wake(); }
+  void frameEnds() { pool_.rest(); }
+
   // A framebuffer of that size whose buffers are allocated in parallel: draw() clears each
   // bin's rows itself, just before drawing them (while they are in cache). `reuse`'s buffers
   // are kept where they have the frame's size (a frame drawn into the last one's memory

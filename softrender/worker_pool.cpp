@@ -4,6 +4,24 @@
 
 namespace twr {
 
+namespace {
+
+std::int64_t steadyNanoseconds() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
+// One iteration of a spin: tells the core (and a hypervisor) that this thread is waiting.
+void spinPause() {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_ia32_pause();
+#elif defined(__aarch64__)
+  asm volatile("yield");
+#endif
+}
+
+}  // namespace
+
 WorkerPool::WorkerPool(int threads) {
   const int workers = std::max(threads, 1) - 1;
   for (int i = 0; i < workers; ++i) workers_.emplace_back(&WorkerPool::workerLoop, this, i + 1);
@@ -13,10 +31,34 @@ WorkerPool::~WorkerPool() {
   {
     const std::lock_guard lock(mutex_);
     stopping_ = true;
+    stoppingFlag_.store(true, std::memory_order_relaxed);
   }
   wake_.notify_all();
   for (std::thread& worker : workers_) worker.join();
 }
+
+bool WorkerPool::spinning() const {
+  return steadyNanoseconds() < spinUntil_.load(std::memory_order_relaxed);
+}
+
+void WorkerPool::spinFor(std::chrono::nanoseconds duration) {
+  const std::int64_t until = steadyNanoseconds() + duration.count();
+  std::int64_t current = spinUntil_.load(std::memory_order_relaxed);
+  while (current < until && !spinUntil_.compare_exchange_weak(current, until, std::memory_order_relaxed)) {
+  }
+}
+
+void WorkerPool::wake() {
+  if (workers_.empty()) return;
+  {
+    // Under the lock: a worker about to sleep either sees the new deadline or is notified.
+    const std::lock_guard lock(mutex_);
+    spinFor(kWakeSpin);
+  }
+  wake_.notify_all();
+}
+
+void WorkerPool::rest() { spinUntil_.store(0, std::memory_order_relaxed); }
 
 void WorkerPool::run(int taskCount, const std::function<void(int task, int thread)>& job) {
   if (taskCount <= 0) return;
@@ -25,16 +67,24 @@ void WorkerPool::run(int taskCount, const std::function<void(int task, int threa
     job_ = &job;
     taskCount_ = taskCount;
     nextTask_ = 0;
-    busyWorkers_ = static_cast<int>(workers_.size());
     error_ = nullptr;
-    ++generation_;
+    generation_.fetch_add(1, std::memory_order_release);
   }
-  wake_.notify_all();
+  if (!workers_.empty()) wake_.notify_all();
   work(0);
-  std::unique_lock lock(mutex_);
-  done_.wait(lock, [this] { return busyWorkers_ == 0; });
-  job_ = nullptr;
-  if (error_) std::rethrow_exception(error_);
+  // Every task is handed out; wait for the workers still inside one, spinning a while first.
+  const std::int64_t spinEnd =
+      steadyNanoseconds() + std::chrono::duration_cast<std::chrono::nanoseconds>(kSpinAfterRun).count();
+  while (activeWorkers_.load(std::memory_order_acquire) != 0 && steadyNanoseconds() < spinEnd) spinPause();
+  std::exception_ptr error;
+  {
+    std::unique_lock lock(mutex_);
+    done_.wait(lock, [this] { return activeWorkers_.load(std::memory_order_relaxed) == 0; });
+    job_ = nullptr;
+    error = error_;
+  }
+  spinFor(kSpinAfterRun);
+  if (error) std::rethrow_exception(error);
 }
 
 void WorkerPool::work(int thread) {
@@ -55,21 +105,38 @@ void WorkerPool::work(int thread) {
   }
 }
 
+void WorkerPool::waitForRun(std::uint64_t seen) {
+  for (;;) {
+    while (spinning()) {
+      if (generation_.load(std::memory_order_acquire) != seen || stoppingFlag_.load(std::memory_order_relaxed)) return;
+      spinPause();
+    }
+    std::unique_lock lock(mutex_);
+    wake_.wait(lock, [&] { return stopping_ || generation_.load(std::memory_order_relaxed) != seen || spinning(); });
+    if (stopping_ || generation_.load(std::memory_order_relaxed) != seen) return;
+    // Woken by wake(): spin again.
+  }
+}
+
 void WorkerPool::workerLoop(int thread) {
   std::uint64_t seen = 0;
   for (;;) {
-    {
-      std::unique_lock lock(mutex_);
-      wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
-      if (stopping_) return;
-      seen = generation_;
-    }
-    work(thread);
+    waitForRun(seen);
     {
       const std::lock_guard lock(mutex_);
-      --busyWorkers_;
+      if (stopping_) return;
+      seen = generation_.load(std::memory_order_relaxed);
+      // The caller may have taken every task while this worker woke: it does not wait for it.
+      if (nextTask_ >= taskCount_) continue;
+      activeWorkers_.fetch_add(1, std::memory_order_relaxed);
     }
-    done_.notify_one();
+    work(thread);
+    bool last = false;
+    {
+      const std::lock_guard lock(mutex_);
+      last = activeWorkers_.fetch_sub(1, std::memory_order_release) == 1;
+    }
+    if (last) done_.notify_one();
   }
 }
 
