@@ -69,10 +69,23 @@ HWY_INLINE auto tiledTexelWords(const TiledTexture& t, int levelIndex, LaneI x, 
   const TiledLevel& level = t.levels[static_cast<std::size_t>(levelIndex)];
   return tiledWords(level.blocks, level.blocksPerRow, x, y);
 }
-// Byte `Shift / 8` of each word, as float lanes.
+// Byte `Shift / 8` of each word, as float lanes. On the vector targets a byte shuffle moves it
+// to the word's low byte and zeroes the rest: one shuffle instead of a shift and a mask, which
+// x86 runs on the port the float arithmetic needs (a 512-bit shift on port 0 alone).
 template <int Shift, typename Words>
 HWY_INLINE LaneF wordByte(Words words) {
+#if HWY_TARGET == HWY_SCALAR
   const auto bytes = hn::And(hn::ShiftRight<Shift>(words), hn::Set(DU(), 0xFFu));
+#else
+  static_assert(Shift % 8 == 0 && Shift < 32);
+  constexpr std::uint8_t b = Shift / 8, z = 0x80;  // z: a zero byte
+  // The word of lane i is bytes 4 (i % 4) to 4 (i % 4) + 3 of its 16-byte block.
+  alignas(16) static constexpr std::uint8_t kIndices[16] = {b,     z, z, z, b + 4,  z, z, z,
+                                                            b + 8, z, z, z, b + 12, z, z, z};
+  const hn::Repartition<std::uint8_t, DU> d8;
+  const auto bytes =
+      hn::BitCast(DU(), hn::TableLookupBytesOr0(hn::BitCast(d8, words), hn::LoadDup128(d8, kIndices)));
+#endif
   return LaneF(hn::ConvertTo(DF(), hn::BitCast(DI(), bytes)));
 }
 template <typename L>
@@ -170,8 +183,7 @@ HWY_INLINE AttributePlaneL<LaneF> broadcastPlane(const AttributePlaneT<float>& p
 
 // ---- pass 1: visibility ----
 std::uint64_t Visibility(const TriangleSetup& setup, const std::array<WindowVertex, 3>& window, std::uint32_t slot,
-                         int rowBegin, int rowEnd, Framebuffer& fb, std::uint32_t* slots, AttributePlaneT<float>& depthPlane,
-                         bool& covered) {
+                         int rowBegin, int rowEnd, Framebuffer& fb, std::uint32_t* slots, bool& covered) {
   const int yFirst = std::max(setup.y0, rowBegin);
   const int yLast = std::min(setup.y1, rowEnd - 1);
   if (yFirst > yLast || setup.x0 > setup.x1) return 0;
@@ -186,9 +198,8 @@ std::uint64_t Visibility(const TriangleSetup& setup, const std::array<WindowVert
     const Span span = coveredSpan(setup, py);
     if (span.xBegin >= span.xEnd) continue;
     if (!covered) {
-      depthPlane = makeDepthPlane<float>(window, setup);
       covered = true;
-      plane = broadcastPlane(depthPlane);
+      plane = broadcastPlane(makeDepthPlane<float>(window, setup));
     }
     const LaneF pyF(static_cast<float>(py));
     float* depthRow = &fb.depth[fb.index(0, py)];
@@ -226,6 +237,9 @@ struct Segment {
   const std::vector<BinTriangle>* triangles;
   const std::uint64_t* exactSumPlanes;  // per triangle, or null (fast_kernels.h)
   const std::uint32_t* slots;  // per lane (kNoSlot for lanes of no triangle)
+  // Per lane, the depth buffer's value: where a triangle holds the pixel, the visibility pass
+  // stored its depth plane there (storedDepth), so the fragment's depth is read, not evaluated.
+  const float* depths;
   std::uint64_t bits;          // this item's lanes
   int x, py;
 };
@@ -273,15 +287,12 @@ HWY_INLINE void blendPlane(const LaneMask& mask, const AttributePlaneT<float>& t
 // stands in for lanes of other items, so every lane computes with sane numbers; the mask
 // discards their results), each other triangle's blended into its lanes.
 HWY_INLINE void blendedPlanes(const std::vector<BinTriangle>& triangles, [[maybe_unused]] const std::uint64_t* exactSumPlanes,
-                              const SegmentTriangles& distinct, VaryingPlanesL<LaneF>& planes,
-                              AttributePlaneL<LaneF>& depthPlane) {
+                              const SegmentTriangles& distinct, VaryingPlanesL<LaneF>& planes) {
   const BinTriangle& first = triangles[distinct.slots[0]];
   broadcastVaryingPlanes(first.varyings, planes);
-  depthPlane = broadcastPlane(first.depth);
   for (int j = 1; j < distinct.count; ++j) {
     const BinTriangle& t = triangles[distinct.slots[j]];
     const LaneMask mask = lanesOf(distinct.bits[j]);
-    blendPlane(mask, t.depth, depthPlane);
     blendPlane(mask, t.varyings.oneOverW, planes.oneOverW);
     for (int k = 0; k < planes.count; ++k) {
       blendPlane(mask, t.varyings.overW[static_cast<std::size_t>(k)], planes.overW[static_cast<std::size_t>(k)]);
@@ -295,7 +306,6 @@ HWY_INLINE void blendedPlanes(const std::vector<BinTriangle>& triangles, [[maybe
   }
   // A plane takes planeAt's short way where it does on every triangle of the segment.
   const auto exact = [&](int bit) { return ((exactSums >> bit) & 1u) != 0; };
-  depthPlane.sumsExactInDouble = exact(kExactSumDepthBit);
   planes.oneOverW.sumsExactInDouble = exact(kExactSumOneOverWBit);
   for (int k = 0; k < planes.count; ++k) {
     planes.overW[static_cast<std::size_t>(k)].sumsExactInDouble = exact(kExactSumFirstVaryingBit + k);
@@ -304,13 +314,12 @@ HWY_INLINE void blendedPlanes(const std::vector<BinTriangle>& triangles, [[maybe
 }
 
 // The same for lanes on many triangles: each plane transposed into columns through memory,
-// [plane][atOrigin, dx, dy][lane]; plane 0 is the depth, 1 is 1/w, 2 + k varying k.
-HWY_INLINE void transposedPlanes(const Segment& s, int count, VaryingPlanesL<LaneF>& planes,
-                                 AttributePlaneL<LaneF>& depthPlane) {
+// [plane][atOrigin, dx, dy][lane]; plane 0 is 1/w, 1 + k varying k.
+HWY_INLINE void transposedPlanes(const Segment& s, int count, VaryingPlanesL<LaneF>& planes) {
   const DF df;
   const std::vector<BinTriangle>& triangles = *s.triangles;
   const std::uint32_t firstSlot = s.slots[__builtin_ctzll(s.bits)];
-  constexpr int kDepthColumn = 0, kOneOverWColumn = 1, kFirstVaryingColumn = 2;
+  constexpr int kOneOverWColumn = 0, kFirstVaryingColumn = 1;
   HWY_ALIGN float columns[kFirstVaryingColumn + kMaxVaryings][3][kMaxLanes];
   for (std::size_t l = 0; l < laneCount(); ++l) {
     const BinTriangle& t = triangles[((s.bits >> l) & 1u) != 0 ? s.slots[l] : firstSlot];
@@ -319,7 +328,6 @@ HWY_INLINE void transposedPlanes(const Segment& s, int count, VaryingPlanesL<Lan
       columns[column][1][l] = p.dx;
       columns[column][2][l] = p.dy;
     };
-    put(kDepthColumn, t.depth);
     put(kOneOverWColumn, t.varyings.oneOverW);
     for (int k = 0; k < count; ++k) put(kFirstVaryingColumn + k, t.varyings.overW[static_cast<std::size_t>(k)]);
   }
@@ -327,7 +335,6 @@ HWY_INLINE void transposedPlanes(const Segment& s, int count, VaryingPlanesL<Lan
     return AttributePlaneL<LaneF>{LaneF(hn::Load(df, columns[column][0])), LaneF(hn::Load(df, columns[column][1])),
                                   LaneF(hn::Load(df, columns[column][2]))};
   };
-  depthPlane = planeOfColumn(kDepthColumn);
   planes.oneOverW = planeOfColumn(kOneOverWColumn);
   planes.count = count;
   for (int k = 0; k < count; ++k) planes.overW[static_cast<std::size_t>(k)] = planeOfColumn(kFirstVaryingColumn + k);
@@ -365,6 +372,9 @@ HWY_INLINE void setUvDifferencesOfOneTriangle(const UvPlanesL<LaneF>& uv, LaneF 
 // The fragments of a segment's lanes: their triangles' planes (broadcast when all lanes share
 // one, gathered lane by lane otherwise) evaluated at the lanes' pixels, with the quad
 // differences the permutation reads.
+// The fragments of a segment's lanes: their triangles' planes (broadcast when all lanes share
+// one, gathered lane by lane otherwise) evaluated at the lanes' pixels, with the quad
+// differences the permutation reads.
 template <typename Features>
 HWY_INLINE FragmentL<LaneF> SegmentFragment(const Segment& s, const ItemState& item, const ItemMaps& maps) {
   const bool tangent = Features::kSpace == LightingSpace::Tangent;
@@ -374,15 +384,14 @@ HWY_INLINE FragmentL<LaneF> SegmentFragment(const Segment& s, const ItemState& i
   const SegmentTriangles distinct = segmentTriangles(s);
   [[maybe_unused]] const bool oneTriangle = distinct.few && distinct.count == 1;  // (the scalar target has one lane)
   VaryingPlanesL<LaneF> planes;
-  AttributePlaneL<LaneF> depthPlane;
   if (distinct.few) {
-    blendedPlanes(triangles, s.exactSumPlanes, distinct, planes, depthPlane);
+    blendedPlanes(triangles, s.exactSumPlanes, distinct, planes);
   } else {
-    transposedPlanes(s, varyingCount(tangent, lightCount), planes, depthPlane);
+    transposedPlanes(s, varyingCount(tangent, lightCount), planes);
   }
 
   const LaneF px = pixelColumnsF(s.x), py(static_cast<float>(s.py));
-  const LaneF depth = storedDepth<LaneF>(planeAt<LaneF>(depthPlane, px, py));
+  const LaneF depth(hn::Load(DF(), s.depths));
   FragmentL<LaneF> fragment = interpolateFragment<LaneF>(planes, px, py, depth);
   if (item.shade.needsQuadDifferences()) {
     // Each lane's 2x2 quad: the even column and row at or below it (exact in float).
@@ -474,6 +483,17 @@ HWY_INLINE void copyLanes(const std::uint32_t* from, std::uint32_t* to, std::siz
   }
 }
 
+// `count` depths from `from` into an aligned buffer of a vector's lanes (those past `count`:
+// the clear depth, a finite value no lane of the segment uses).
+HWY_INLINE void loadDepthLanes(const float* from, float* to, std::size_t count) {
+  if (count == laneCount()) {
+    hn::Store(hn::LoadU(DF(), from), DF(), to);
+  } else {
+    std::fill(to, to + laneCount(), kClearDepth);
+    std::memcpy(to, from, count * sizeof(float));
+  }
+}
+
 // A row segment's lanes: each one's slot (kNoSlot past the row's end), and for the lanes a
 // triangle holds, its draw item and triangle id (kNoTriangle elsewhere). Returns the bits of
 // the lanes a triangle holds. The words are gathered from the bin's triangles by slot.
@@ -493,6 +513,14 @@ HWY_INLINE std::uint64_t segmentLanes(const std::vector<BinTriangle>& triangles,
   const std::uint64_t bits = bitsOf(drawn);
   hn::Store(hn::Set(du, kNoTriangle), du, idLanes);
   if (bits == 0) return 0;
+  // Every drawn lane on one triangle (the usual case): its words read once, not gathered.
+  const std::uint32_t firstSlot = slotLanes[__builtin_ctzll(bits)];
+  if (lanesHolding(slotLanes, firstSlot, bits) == bits) {
+    const BinTriangle& t = triangles[firstSlot];
+    hn::Store(hn::Set(du, t.item), du, itemLanes);
+    hn::Store(hn::IfThenElse(drawn, hn::Set(du, t.triangleId), hn::Set(du, kNoTriangle)), du, idLanes);
+    return bits;
+  }
   static_assert(std::is_standard_layout_v<BinTriangle> && sizeof(BinTriangle) % sizeof(std::uint32_t) == 0);
   constexpr std::size_t kWords = sizeof(BinTriangle) / sizeof(std::uint32_t);
   if (triangles.size() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()) / kWords) {
@@ -536,12 +564,15 @@ void ShadeRows(const std::vector<BinTriangle>& triangles, const std::uint64_t* e
   HWY_ALIGN std::uint32_t itemLanes[kMaxLanes];
   HWY_ALIGN std::uint32_t rgbaLanes[kMaxLanes];
   HWY_ALIGN std::uint32_t idLanes[kMaxLanes];
+  HWY_ALIGN float depthLanes[kMaxLanes];
   HWY_ALIGN float channels[kSurfaceChannels][kMaxLanes];
   for (int py = rowBegin; py < rowEnd; ++py) {
     const std::uint32_t* row = slots + static_cast<std::size_t>(py - rowBegin) * width;
     for (std::size_t x = 0; x < width; x += lanes) {
       const std::size_t inRow = std::min(lanes, width - x);
       std::uint64_t remaining = segmentLanes(triangles, row + x, inRow, slotLanes, itemLanes, idLanes);
+      const std::size_t origin = fb.index(static_cast<int>(x), py);
+      if (remaining != 0) loadDepthLanes(&fb.depth[origin], depthLanes, inRow);
       hn::Store(hn::Set(DU(), background), DU(), rgbaLanes);
       if (surfaces) {
         for (auto& channel : channels) std::fill(channel, channel + lanes, 0.0f);
@@ -551,14 +582,13 @@ void ShadeRows(const std::vector<BinTriangle>& triangles, const std::uint64_t* e
         const std::uint32_t item = itemLanes[__builtin_ctzll(remaining)];
         const std::uint64_t bits = lanesHolding(itemLanes, item, remaining);
         remaining &= ~bits;
-        const Segment segment{&triangles, exactSumPlanes, slotLanes, bits, static_cast<int>(x), py};
+        const Segment segment{&triangles, exactSumPlanes, slotLanes, depthLanes, bits, static_cast<int>(x), py};
         if (surfaces) {
           surfaceKernels[item](segment, items[item], maps[item], channels);
         } else {
           kernels[item](segment, items[item], maps[item], rgbaLanes);
         }
       }
-      const std::size_t origin = fb.index(static_cast<int>(x), py);
       copyLanes(rgbaLanes, reinterpret_cast<std::uint32_t*>(&fb.rgba[4 * origin]), inRow);
       copyLanes(idLanes, &fb.triangleId[origin], inRow);
       if (surfaces) {

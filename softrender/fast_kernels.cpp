@@ -80,7 +80,7 @@ std::uint64_t exactSumPlaneBits(const BinTriangle& t) {
   const auto bit = [](const AttributePlaneT<float>& p, int at) {
     return planeSumsExactInDouble(p) ? std::uint64_t{1} << at : std::uint64_t{0};
   };
-  std::uint64_t bits = bit(t.depth, kExactSumDepthBit) | bit(t.varyings.oneOverW, kExactSumOneOverWBit);
+  std::uint64_t bits = bit(t.varyings.oneOverW, kExactSumOneOverWBit);
   for (int k = 0; k < t.varyings.count; ++k) {
     bits |= bit(t.varyings.overW[static_cast<std::size_t>(k)], kExactSumFirstVaryingBit + k);
   }

@@ -37,18 +37,18 @@ namespace twr {
 inline constexpr std::uint32_t kNoSlot = 0xFFFFFFFFu;
 
 // One triangle of a bin as the shading pass reads it: its planes, as llvmpipe interpolates.
+// (Its depth the shading reads from the depth buffer: at a pixel the triangle holds, the
+// visibility pass stored the depth of this triangle's plane there.)
 struct BinTriangle {
   VaryingPlanesT<float> varyings;  // every varying's a/w plane and the 1/w plane
-  AttributePlaneT<float> depth;    // the window depth plane
   std::uint32_t triangleId = 0;
   std::uint32_t item = 0;  // index into the frame's ItemState list
 };
 // For targets without fused multiply-adds (FastKernels::fusesMultiplyAdds false), the planes of
-// a binned triangle that planeSumsExactInDouble holds for: bit 0 the depth, bit 1 1/w, bit 2 + k
-// varying k. Kept beside the triangles, not in them, so the other targets' bins stay as they were.
-inline constexpr int kExactSumDepthBit = 0;
-inline constexpr int kExactSumOneOverWBit = 1;
-inline constexpr int kExactSumFirstVaryingBit = 2;
+// a binned triangle that planeSumsExactInDouble holds for: bit 0 1/w, bit 1 + k varying k. Kept
+// beside the triangles, not in them, so the other targets' bins stay as they were.
+inline constexpr int kExactSumOneOverWBit = 0;
+inline constexpr int kExactSumFirstVaryingBit = 1;
 static_assert(kExactSumFirstVaryingBit + kMaxVaryings <= 64);
 // Those bits of a triangle's planes.
 std::uint64_t exactSumPlaneBits(const BinTriangle& t);
@@ -103,12 +103,12 @@ struct FastKernels {
   bool fusesMultiplyAdds = true;  // false: fusedMulAdd is emulated, exactSumPlaneBits helps
 
   // Visibility pass for one triangle over rows [rowBegin, rowEnd) (exclusive end). `slots`
-  // holds the bin's rows: pixel (px, py) at (py - rowBegin) * fb.width + px. On the first
-  // covered pixel it computes `depth` = makeDepthPlane(window, setup) and sets `covered`;
-  // returns how many pixels passed the depth test.
+  // holds the bin's rows: pixel (px, py) at (py - rowBegin) * fb.width + px. Sets `covered`
+  // if the triangle covers a pixel of these rows (its depth plane, makeDepthPlane(window,
+  // setup), is made there); returns how many pixels passed the depth test.
   std::uint64_t (*visibility)(const TriangleSetup& setup, const std::array<WindowVertex, 3>& window,
                               std::uint32_t slot, int rowBegin, int rowEnd, Framebuffer& fb, std::uint32_t* slots,
-                              AttributePlaneT<float>& depth, bool& covered) = nullptr;
+                              bool& covered) = nullptr;
 
   // Shading pass over rows [rowBegin, rowEnd), writing colour and triangle id of every pixel:
   // for a pixel with a slot, triangles[slot] shaded with items[triangles[slot].item] and that

@@ -302,17 +302,15 @@ std::uint64_t FastPipeline::drawBin(const std::vector<ItemState>& items, int bin
       setupSnappedCorners(r.v[0]->xFixed, r.v[0]->yFixed, r.v[1]->xFixed, r.v[1]->yFixed, r.v[2]->xFixed, r.v[2]->yFixed,
                           s.cull, s.frontFace, s.viewport, setup);
       const std::uint32_t slot = static_cast<std::uint32_t>(scratch.triangles.size());
-      AttributePlaneT<float> depth;
       bool covered = false;
       const std::array<WindowVertex, 3> window{r.v[0]->window, r.v[1]->window, r.v[2]->window};
       const std::uint64_t passedHere =
-          kernels_.visibility(setup, window, slot, rowBegin, rowEnd, fb, scratch.slots.data(), depth, covered);
+          kernels_.visibility(setup, window, slot, rowBegin, rowEnd, fb, scratch.slots.data(), covered);
       passed += passedHere;
       if (!covered || depthOnly) continue;  // no pixel holds this slot, or nothing is shaded
       BinTriangle& t = scratch.triangles.emplace_back();
       t.varyings = makeVaryingPlanes<float>(window, r.varyings, varyingCount(s.tangentLighting, s.shade.lightCount), setup,
                                             s.interpolation);
-      t.depth = depth;
       t.triangleId = r.triangleId;
       t.item = r.item;
       if (!kernels_.fusesMultiplyAdds) {
