@@ -254,8 +254,11 @@ HWY_INLINE void broadcastVaryingPlanes(const VaryingPlanesT<float>& t, VaryingPl
 
 // The triangles a segment's lanes lie on, when there are few: each one's slot and lanes (the
 // first is the first lane's); `few` false when there are more than kMaxBlendedTriangles.
-// A few are blended into vectors plane by plane, more are transposed through memory.
-inline constexpr int kMaxBlendedTriangles = 4;
+// A few are blended into vectors plane by plane, more are transposed through memory, a scalar
+// store per plane coefficient and lane. Up to 8 (AVX2's lanes: it never transposes) blending
+// is the cheaper: on AVX-512, the default frame on two threads took 7.27 ms with 4, 7.21 with 8
+// (bench_frame, five alternated rounds), and no less with 16.
+inline constexpr int kMaxBlendedTriangles = 8;
 struct SegmentTriangles {
   std::uint32_t slots[kMaxBlendedTriangles];
   std::uint64_t bits[kMaxBlendedTriangles];
