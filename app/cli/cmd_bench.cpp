@@ -471,8 +471,9 @@ const bool benchRegistered = registerCommand(50, [](CLI::App& app) {
       "Time the CPU pipeline against llvmpipe in one process: frames alternate between the backends after a "
       "warm-up; prints the median and spread of each, ratio_cpu_over_gl (glrender's full frame: colour, depth, "
       "triangle ids, line mask, all read back) and ratio_cpu_over_gl_lean (the same draws into colour + depth, "
-      "the colour read back: the frame an OpenGL user draws). Both use the same thread count; llvmpipe samples "
-      "textures in its default (fast) mode. Prints cpu_isa, the fast path's target actually run.");
+      "the colour read back: the frame an OpenGL user draws). Each renderer draws every frame into its previous "
+      "output, whose buffers it reuses, as an application keeps its framebuffer. Both use the same thread count; "
+      "llvmpipe samples textures in its default (fast) mode. Prints cpu_isa, the fast path's target actually run.");
   addRenderOptions(*cmd, args->request);
   cmd->add_option("--frames,-n", args->frames, "Timed frames per backend")->capture_default_str();
   cmd->add_option("--warmup", args->warmup, "Untimed frames per backend first (shader compilation, caches)")
