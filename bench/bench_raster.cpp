@@ -76,10 +76,9 @@ void BM_Visibility(benchmark::State& state) {
     state.ResumeTiming();
     std::uint32_t slot = 0;
     for (const SetUpTriangle& t : acceptedTriangles()) {
-      AttributePlaneT<float> depth;
       bool covered = false;
       passed += static_cast<std::int64_t>(
-          kernels.visibility(t.setup, t.window, slot++, 0, benchstage::kHeight, fb, slots.data(), depth, covered));
+          kernels.visibility(t.setup, t.window, slot++, 0, benchstage::kHeight, fb, slots.data(), covered));
     }
   }
   state.SetItemsProcessed(passed);
