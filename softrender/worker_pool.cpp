@@ -24,6 +24,7 @@ void spinPause() {
 
 WorkerPool::WorkerPool(int threads) {
   const int workers = std::max(threads, 1) - 1;
+  spinAllowed_ = static_cast<unsigned>(workers + 1) <= std::max(std::thread::hardware_concurrency(), 1u);
   for (int i = 0; i < workers; ++i) workers_.emplace_back(&WorkerPool::workerLoop, this, i + 1);
 }
 
@@ -42,6 +43,7 @@ bool WorkerPool::spinning() const {
 }
 
 void WorkerPool::spinFor(std::chrono::nanoseconds duration) {
+  if (!spinAllowed_) return;
   const std::int64_t until = steadyNanoseconds() + duration.count();
   std::int64_t current = spinUntil_.load(std::memory_order_relaxed);
   while (current < until && !spinUntil_.compare_exchange_weak(current, until, std::memory_order_relaxed)) {
@@ -74,7 +76,8 @@ void WorkerPool::run(int taskCount, const std::function<void(int task, int threa
   work(0);
   // Every task is handed out; wait for the workers still inside one, spinning a while first.
   const std::int64_t spinEnd =
-      steadyNanoseconds() + std::chrono::duration_cast<std::chrono::nanoseconds>(kSpinAfterRun).count();
+      spinAllowed_ ? steadyNanoseconds() + std::chrono::duration_cast<std::chrono::nanoseconds>(kSpinAfterRun).count()
+                   : 0;
   while (activeWorkers_.load(std::memory_order_acquire) != 0 && steadyNanoseconds() < spinEnd) spinPause();
   std::exception_ptr error;
   {

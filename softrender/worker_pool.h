@@ -6,6 +6,8 @@
 // run a moment ago and over 500 us after 20 ms of sleep, when its virtual CPU had halted. A
 // frame makes several runs (vertex stage, front end, bins), so a worker waits for the next run
 // spinning, for kSpinAfterRun after a run and from wake() until rest(), and sleeps otherwise.
+// A pool with more threads than the machine has CPUs never spins: its spinning workers would
+// take the CPUs from the ones working.
 #pragma once
 
 #include <atomic>
@@ -67,6 +69,7 @@ class WorkerPool {
   std::atomic<bool> stoppingFlag_{false};
   // Until when workers spin (steady_clock, nanoseconds since its epoch; 0: sleep).
   std::atomic<std::int64_t> spinUntil_{0};
+  bool spinAllowed_ = false;  // no more threads than online CPUs
 };
 
 }  // namespace twr

@@ -1,5 +1,6 @@
 // The fast path's worker pool (softrender/worker_pool.h): every task of a run runs exactly once
-// on a valid thread, whether the workers spin or sleep between runs; a job's exception reaches
+// on a valid thread, whether the workers spin or sleep between runs (and with more threads than
+// CPUs, where they only sleep); a job's exception reaches
 // the caller and leaves the pool usable; a pool is destroyed cleanly in any state.
 #include "softrender/worker_pool.h"
 
@@ -34,11 +35,11 @@ TEST(WorkerPool, EveryTaskRunsOnceForAnyThreadAndTaskCount) {
   }
 }
 
-// Thousands of tiny runs back to back (the workers spinning between them, often waking after
-// the caller has taken every task), then runs between which they fall asleep, woken by wake()
-// or by the run itself.
+// Thousands of tiny runs back to back (the worker spinning between them, often waking after
+// the caller has taken every task), then runs between which it falls asleep, woken by wake()
+// or by the run itself. Two threads: a pool with more threads than CPUs does not spin.
 TEST(WorkerPool, RunsBackToBackAndAfterSleepingWorkers) {
-  WorkerPool pool(3);
+  WorkerPool pool(2);
   for (int i = 0; i < 5000; ++i) expectEveryTaskOnce(pool, 1 + i % 5);
   pool.rest();
   for (int i = 0; i < 3; ++i) {
@@ -75,15 +76,15 @@ TEST(WorkerPool, AJobsExceptionReachesTheCallerAndThePoolGoesOn) {
 TEST(WorkerPool, DestroyedWhileSpinningAsleepOrNeverUsed) {
   { WorkerPool unused(3); }
   {
-    WorkerPool spinning(3);
+    WorkerPool spinning(2);
     spinning.wake();
   }
   {
-    WorkerPool afterRun(3);
+    WorkerPool afterRun(2);
     expectEveryTaskOnce(afterRun, 5);  // destroyed within the spin after a run
   }
   {
-    WorkerPool asleep(3);
+    WorkerPool asleep(2);
     expectEveryTaskOnce(asleep, 5);
     asleep.rest();
   }
