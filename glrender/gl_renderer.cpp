@@ -247,7 +247,9 @@ class GlRenderer final : public Renderer {
   // The attachments read back into out's buffers (glReadPixels into memory already mapped).
   void renderInto(const Scene& scene, const RenderSettings& settings, int width, int height,
                   RenderOutput& out) override {
-    out = draw(scene, settings, width, height, std::nullopt, imageBuffersOf(std::move(out)));
+    RenderOutput buffers = imageBuffersOf(std::move(out));
+    out = RenderOutput{};  // nothing of the last frame is left if this one throws
+    out = draw(scene, settings, width, height, std::nullopt, std::move(buffers));
   }
 
   RenderOutput renderPixel(const Scene& scene, const RenderSettings& settings, int width, int height, int x,

@@ -119,8 +119,10 @@ class Renderer {
   // The same into `out`, whose contents it replaces: a renderer may draw into out's buffers
   // where they already have the frame's size, as a GL application keeps its framebuffer from
   // frame to frame, instead of allocating and clearing new ones (a loop over frames calls this).
+  // After a throw, `out` is empty.
   virtual void renderInto(const Scene& scene, const RenderSettings& settings, int width, int height,
                           RenderOutput& out) {
+    out = RenderOutput{};
     out = render(scene, settings, width, height);
   }
 };

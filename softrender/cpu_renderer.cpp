@@ -106,6 +106,7 @@ class CpuRenderer final : public Renderer {
     reuse.depth = std::move(out.depth);
     reuse.triangleId = std::move(out.triangleId);
     reuse.lineMask = std::move(out.lineMask);
+    out = RenderOutput{};  // nothing of the last frame is left if this one throws
     out = renderReusing(scene, settings, width, height, std::move(reuse));
   }
 

@@ -4,6 +4,7 @@
 // does (the mode is fixed per process by the first context).
 #include "gl_test_scenes.h"
 #include "glrender/gl_renderer.h"
+#include "scene/errors.h"
 #include "scene/scene_file.h"
 
 #include <gtest/gtest.h>
@@ -73,6 +74,11 @@ TEST(GlLeanFrame, RenderIntoAUsedOutputEqualsRender) {
       EXPECT_EQ(used.lineMask, fresh.lineMask) << "buffers of width " << side;
       EXPECT_EQ(used.stats.trianglesIn, fresh.stats.trianglesIn);
     }
+    // A frame that throws leaves the output empty, not holding the last one.
+    RenderOutput last = fresh;
+    EXPECT_THROW(renderer->renderInto(scene, scene.settings, 0, 90, last), InputError);
+    EXPECT_EQ(last.width, 0);
+    EXPECT_TRUE(last.rgba.empty() && last.depth.empty());
   }
 }
 

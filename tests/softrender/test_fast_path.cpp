@@ -302,6 +302,10 @@ TEST_P(FastPath, ThreadCountDoesNotChangeAnything) {
     ASSERT_EQ(out.rgba.size(), static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
   }
   expectIdentical(one, out, "into the output of larger and smaller frames");
+  // A frame that throws leaves the output empty, not holding half of the last one.
+  EXPECT_THROW(renderer->renderInto(scene, scene.settings, 0, 200, out), InputError);
+  EXPECT_EQ(out.width, 0);
+  EXPECT_TRUE(out.rgba.empty() && out.depth.empty() && out.triangleId.empty() && out.lineMask.empty());
 }
 
 // A material with every map, on textures of odd sizes (the kernel's non-power-of-two wrap).
