@@ -101,11 +101,7 @@ class CpuRenderer final : public Renderer {
   }
   void renderInto(const Scene& scene, const RenderSettings& settings, int width, int height,
                   RenderOutput& out) override {
-    Framebuffer reuse;
-    reuse.rgba = std::move(out.rgba);
-    reuse.depth = std::move(out.depth);
-    reuse.triangleId = std::move(out.triangleId);
-    reuse.lineMask = std::move(out.lineMask);
+    Framebuffer reuse = framebufferFrom(std::move(out));
     out = RenderOutput{};  // nothing of the last frame is left if this one throws
     out = renderReusing(scene, settings, width, height, std::move(reuse));
   }

@@ -53,4 +53,13 @@ RenderOutput toRenderOutput(Framebuffer&& fb) {
   return out;
 }
 
+Framebuffer framebufferFrom(RenderOutput&& out) {
+  Framebuffer fb;
+  fb.rgba = std::move(out.rgba);
+  fb.depth = std::move(out.depth);
+  fb.triangleId = std::move(out.triangleId);
+  fb.lineMask = std::move(out.lineMask);
+  return fb;
+}
+
 }  // namespace twr

@@ -55,5 +55,8 @@ Framebuffer makeFramebuffer(int width, int height, vec4 background);
 
 // The buffers, top row first, as RenderOutput promises (moved out of `framebuffer`).
 RenderOutput toRenderOutput(Framebuffer&& framebuffer);
+// The inverse: an output's four buffers (moved out of `out`), for the next frame to be drawn
+// into (Renderer::renderInto). Sizes are the caller's to check; the rest of `out` stays.
+Framebuffer framebufferFrom(RenderOutput&& out);
 
 }  // namespace twr

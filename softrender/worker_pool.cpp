@@ -31,8 +31,7 @@ WorkerPool::WorkerPool(int threads) {
 WorkerPool::~WorkerPool() {
   {
     const std::lock_guard lock(mutex_);
-    stopping_ = true;
-    stoppingFlag_.store(true, std::memory_order_relaxed);
+    stopping_.store(true, std::memory_order_relaxed);
   }
   wake_.notify_all();
   for (std::thread& worker : workers_) worker.join();
@@ -111,7 +110,7 @@ void WorkerPool::work(int thread) {
 void WorkerPool::waitForRun(std::uint64_t seen) {
   for (;;) {
     while (spinning()) {
-      if (generation_.load(std::memory_order_acquire) != seen || stoppingFlag_.load(std::memory_order_relaxed)) return;
+      if (generation_.load(std::memory_order_acquire) != seen || stopping_.load(std::memory_order_relaxed)) return;
       spinPause();
     }
     std::unique_lock lock(mutex_);

@@ -58,15 +58,14 @@ class WorkerPool {
   std::vector<std::thread> workers_;
   std::mutex mutex_;
   std::condition_variable wake_, done_;
-  const std::function<void(int, int)>* job_ = nullptr;  // guarded by mutex_, as are the next four
+  const std::function<void(int, int)>* job_ = nullptr;  // guarded by mutex_, as are the next three
   int taskCount_ = 0;
   int nextTask_ = 0;
-  bool stopping_ = false;
   std::exception_ptr error_;
   // Changed under mutex_, also read without it by spinning threads.
   std::atomic<std::uint64_t> generation_{0};  // bumped per run, so a worker joins each run once
   std::atomic<int> activeWorkers_{0};         // workers inside the current run's tasks
-  std::atomic<bool> stoppingFlag_{false};
+  std::atomic<bool> stopping_{false};
   // Until when workers spin (steady_clock, nanoseconds since its epoch; 0: sleep).
   std::atomic<std::int64_t> spinUntil_{0};
   bool spinAllowed_ = false;  // no more threads than online CPUs
