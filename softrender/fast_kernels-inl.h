@@ -146,6 +146,7 @@ HWY_AFTER_NAMESPACE();
 #include "softrender/shade-inl.h"
 #include "softrender/deferred-inl.h"
 #include "softrender/ssr-inl.h"
+#include "softrender/vertex_stage-inl.h"
 
 #if defined(TWR_FAST_KERNEL_TARGETS) && (HWY_TARGET & (TWR_FAST_KERNEL_TARGETS)) && (HWY_TARGET & (TWR_KERNEL_TARGETS))
 HWY_BEFORE_NAMESPACE();
@@ -763,6 +764,128 @@ void PhongPow(const float* x, float s, float* out, std::size_t count) {
   }
 }
 
+// ---- the vertex stage, a vector of vertices at a time ----
+static_assert(std::is_standard_layout_v<Vertex> && sizeof(Vertex) == 12 * sizeof(float));
+inline constexpr int kVertexFloats = 12;  // posModel, nModel, tangentModel, uv (scene/mesh.h)
+
+// setup.cpp's clampedTo per lane: fmin(fmax(v, -bound), bound), NaN to -bound.
+HWY_INLINE LaneF clampedTo(LaneF v, float bound) {
+  return select(v >= LaneF(-bound), select(v > LaneF(bound), LaneF(bound), v), LaneF(-bound));
+}
+
+// setup.cpp's windowFromClip for a vertex from the vertex stage (fused multiply-adds).
+HWY_INLINE Vec4L<LaneF> windowFromClipLanes(const Vec4L<LaneF>& posClip, const Viewport& viewport) {
+  const LaneF halfWidth(0.5f * static_cast<float>(viewport.width)), halfHeight(0.5f * static_cast<float>(viewport.height));
+  const LaneF halfDepthRange(0.5f);
+  const LaneF invW = select(posClip.w >= LaneF(std::numeric_limits<float>::min()), LaneF(1.0f) / posClip.w,
+                            LaneF(1.0f) / LaneF(kMinClipW));
+  const LaneF xNdc = posClip.x * invW, yNdc = posClip.y * invW;
+  const LaneF zNdc = clampedTo(posClip.z * invW, kMaxNdcDepth);
+  return Vec4L<LaneF>(fusedMulAdd(xNdc, halfWidth, halfWidth), fusedMulAdd(yNdc, halfHeight, halfHeight),
+                      fusedMulAdd(zNdc, halfDepthRange, halfDepthRange), invW);
+}
+
+// setup.cpp's snapToSubpixel per lane (NearestInt rounds halves to even, as lrint).
+HWY_INLINE hn::Vec<DI> snapToSubpixelLanes(LaneF windowCoord) {
+  const LaneF bounded = clampedTo(windowCoord, kMaxWindowCoord);
+  return hn::NearestInt(((bounded - LaneF(0.5f)) * LaneF(static_cast<float>(kSubpixelScale))).v);
+}
+
+// clip.cpp's outcode per lane: kClipNonFiniteBit where a clip coordinate or user distance is
+// beyond kMaxClipCoordinate (or not finite), else a bit for each active plane the vertex is
+// outside of, each distance as clipDistanceTo writes it.
+HWY_INLINE hn::Vec<DU> outcodeLanes(const VertexOutL<LaneF>& v, const ClipConfig& config) {
+  const DU du;
+  const Vec4L<LaneF>& p = v.posClip;
+  const LaneF range(kMaxClipCoordinate);
+  LaneMask usable = (absOf(p.x) <= range) & (absOf(p.y) <= range) & (absOf(p.z) <= range) & (absOf(p.w) <= range);
+  for (int j = 0; j < config.userPlaneCount; ++j) usable = usable & (absOf(v.clipDistance[static_cast<std::size_t>(j)]) <= range);
+  auto code = hn::Zero(du);
+  const auto outside = [&](int plane, LaneF distance) HWY_ATTR {
+    code = hn::Or(code, hn::IfThenElseZero(hn::RebindMask(du, (distance < LaneF(0.0f)).m), hn::Set(du, 1u << plane)));
+  };
+  const LaneF gx = LaneF(config.guardBandX) * p.w, gy = LaneF(config.guardBandY) * p.w;
+  outside(kClipPlaneRight, (config.frustum.right ? p.w : gx) - p.x);
+  outside(kClipPlaneLeft, (config.frustum.left ? p.w : gx) + p.x);
+  outside(kClipPlaneTop, (config.frustum.top ? p.w : gy) - p.y);
+  outside(kClipPlaneBottom, (config.frustum.bottom ? p.w : gy) + p.y);
+  if (config.frustum.near) outside(kClipPlaneNear, p.w + p.z);
+  if (config.frustum.far) outside(kClipPlaneFar, p.w - p.z);
+  for (int j = 0; j < config.userPlaneCount; ++j) outside(kClipPlaneUser0 + j, v.clipDistance[static_cast<std::size_t>(j)]);
+  if (!config.frustum.near) outside(kClipPlaneMinW, p.w - LaneF(kMinClipW));
+  return hn::IfThenElse(hn::RebindMask(du, usable.m), code, hn::Set(du, kClipNonFiniteBit));
+}
+
+// The vertices' fields per lane, gathered from the array (a vector past `count` repeats the
+// last vertex).
+HWY_INLINE VertexInL<LaneF> vertexLanes(const Vertex* vertices, std::size_t count) {
+  const DI di;
+  HWY_ALIGN static constexpr std::array<std::int32_t, kMaxLanes> kIndices = [] {
+    std::array<std::int32_t, kMaxLanes> indices{};
+    for (std::size_t l = 0; l < kMaxLanes; ++l) indices[l] = static_cast<std::int32_t>(l);
+    return indices;
+  }();
+  const auto index = hn::Mul(hn::Min(hn::Load(di, kIndices.data()), hn::Set(di, static_cast<std::int32_t>(count - 1))),
+                             hn::Set(di, kVertexFloats));
+  const float* base = reinterpret_cast<const float*>(vertices);
+  const auto field = [&](int k) HWY_ATTR { return LaneF(hn::GatherIndex(DF(), base + k, index)); };
+  return VertexInL<LaneF>{Vec3L<LaneF>(field(0), field(1), field(2)), Vec3L<LaneF>(field(3), field(4), field(5)),
+                          Vec4L<LaneF>(field(6), field(7), field(8), field(9)), Vec2L<LaneF>(field(10), field(11))};
+}
+
+void VertexRange(const Vertex* vertices, std::size_t count, const VertexUniforms& u, const Viewport& viewport,
+                 const ClipConfig& clip, FastVertex* out, SnappedCorner* corners, float* varyings, std::size_t stride) {
+  const DF df;
+  const DI di;
+  const DU du;
+  const std::size_t lanes = laneCount();
+  // Lanes stored per column, then written vertex by vertex: storeVaryings' layout first.
+  constexpr int kWindow = kMaxVaryings, kFixedX = kWindow + 4, kFixedY = kFixedX + 1, kOutcode = kFixedY + 1;
+  HWY_ALIGN float columns[kOutcode + 1][kMaxLanes];
+  const auto put = [&](int column, LaneF value) HWY_ATTR { hn::Store(value.v, df, columns[column]); };
+  const auto put3 = [&](int column, const Vec3L<LaneF>& value) HWY_ATTR {
+    put(column, value.x);
+    put(column + 1, value.y);
+    put(column + 2, value.z);
+  };
+  for (std::size_t first = 0; first < count; first += lanes) {
+    const std::size_t n = std::min(lanes, count - first);
+    const VertexOutL<LaneF> v = vertexStage<LaneF>(vertexLanes(vertices + first, n), u);
+    const Vec4L<LaneF> window = windowFromClipLanes(v.posClip, viewport);
+    put3(kVaryingPosWorld, v.posWorld);
+    put3(kVaryingNormal, v.nWorld);
+    put3(kVaryingTangent, v.tWorld);
+    put3(kVaryingBitangent, v.bWorld);
+    put(kVaryingUv, v.uv.x);
+    put(kVaryingUv + 1, v.uv.y);
+    if (u.tangentLighting) {
+      put3(kVaryingEyeDirTangent, v.eyeDirTangent);
+      for (int i = 0; i < u.lightCount; ++i) put3(kVaryingLightDirTangent + 3 * i, v.lightDirTangent[static_cast<std::size_t>(i)]);
+    }
+    put(kWindow, window.x);
+    put(kWindow + 1, window.y);
+    put(kWindow + 2, window.z);
+    put(kWindow + 3, window.w);
+    hn::Store(snapToSubpixelLanes(window.x), di, reinterpret_cast<std::int32_t*>(columns[kFixedX]));
+    hn::Store(snapToSubpixelLanes(window.y), di, reinterpret_cast<std::int32_t*>(columns[kFixedY]));
+    hn::Store(outcodeLanes(v, clip), du, reinterpret_cast<std::uint32_t*>(columns[kOutcode]));
+    const auto word = [&](int column, std::size_t l) {
+      std::uint32_t bits;
+      std::memcpy(&bits, &columns[column][l], sizeof bits);
+      return bits;
+    };
+    for (std::size_t l = 0; l < n; ++l) {
+      FastVertex& f = out[first + l];
+      f.window = WindowVertex{columns[kWindow][l], columns[kWindow + 1][l], columns[kWindow + 2][l], columns[kWindow + 3][l]};
+      f.xFixed = static_cast<std::int32_t>(word(kFixedX, l));
+      f.yFixed = static_cast<std::int32_t>(word(kFixedY, l));
+      corners[first + l] = SnappedCorner{f.xFixed, f.yFixed, word(kOutcode, l)};
+      float* to = varyings + (first + l) * stride;
+      for (std::size_t c = 0; c < stride; ++c) to[c] = columns[c][l];
+    }
+  }
+}
+
 CpuIsa isaOfThisTarget() {
 #if HWY_TARGET == HWY_AVX3
   return CpuIsa::Avx512;
@@ -794,6 +917,7 @@ FastKernels GetKernels() {
   k.lightRows = &LightRows;
   k.reflectRows = &ReflectRows;
   k.phongPow = &PhongPow;
+  k.vertexRange = &VertexRange;
   return k;
 }
 

@@ -23,6 +23,8 @@
 #include "softrender/framebuffer.h"
 #include "softrender/interpolate.h"
 #include "softrender/setup.h"
+#include "softrender/clip.h"
+#include "softrender/vertex.h"
 
 #include <array>
 #include <cstddef>
@@ -97,6 +99,19 @@ struct ItemMaps {
 };
 
 // One target's kernels.
+// What the back end's setup and interpolation read of a vertex.
+struct FastVertex {
+  WindowVertex window;                  // windowFromClip (fused multiply-add for stage outputs)
+  std::int32_t xFixed = 0, yFixed = 0;  // snapToSubpixel of window x and y (1/256 px)
+};
+
+// What the front end reads of a vertex (12 bytes, in an array of its own: a million-triangle
+// frame's front end streams it once per corner): the snapped position again, and the outcode.
+struct SnappedCorner {
+  std::int32_t xFixed = 0, yFixed = 0;  // as FastVertex's
+  std::uint32_t outcode = 0;            // planes it is outside of, or kClipNonFiniteBit
+};
+
 struct FastKernels {
   CpuIsa isa = CpuIsa::Scalar;  // the target they were compiled for
   int lanes = 1;                // floats per vector on it
@@ -139,6 +154,15 @@ struct FastKernels {
   // ssrPixel's colour (alpha 255), the others keep theirs. u's buffers must be set.
   void (*reflectRows)(const GBuffer& surfaces, const SsrUniforms& u, const Mat4T<float>& worldFromClip,
                       bool positionStored, int rowBegin, int rowEnd, Framebuffer& fb) = nullptr;
+
+  // The vertex stage (vertex_stage-inl.h) of vertices[0, count), a vector of vertices at a
+  // time: each one's window position (windowFromClip, fused multiply-adds) and snapped
+  // corner into out[i] and corners[i] (its outcode under `clip`, or kClipNonFiniteBit for a
+  // clip position that is not finite), its varyings (storeVaryings, stride floats) from
+  // varyings + i * stride. The same bits as those functions one vertex at a time.
+  void (*vertexRange)(const Vertex* vertices, std::size_t count, const VertexUniforms& u, const Viewport& viewport,
+                      const ClipConfig& clip, FastVertex* out, SnappedCorner* corners, float* varyings,
+                      std::size_t stride) = nullptr;
 
   // phongPow of x[0, count) with this target's vectors, into out (for the tests: the same
   // bits as powPositive).

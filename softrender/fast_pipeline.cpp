@@ -17,10 +17,6 @@ namespace {
 // to balance two threads on a 2,000-vertex mesh.
 constexpr std::size_t kVerticesPerTask = 1024;
 
-bool finitePosition(const vec4& p) {
-  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
-}
-
 // Rows [rowBegin, rowEnd) of the depth buffer to kClearDepth and of the line mask to 0. The
 // depth rows are copies of `clearDepthRow` (fb.width entries): memcpy stores whole vectors,
 // where a fill loop at -O2 stores one float at a time (4 % of a default frame's samples).
@@ -138,19 +134,11 @@ void FastPipeline::runVertexStage(const std::vector<ItemState>& items) {
   pool_.run(static_cast<int>(chunks.size()), [&](int task, int) {
     const Chunk& chunk = chunks[static_cast<std::size_t>(task)];
     const ItemState& s = items[chunk.item];
-    const std::vector<Vertex>& meshVertices = s.item->mesh->vertices;
     ItemVertices& out = vertices_[chunk.item];
     const std::size_t stride = static_cast<std::size_t>(varyingCount(s.tangentLighting, s.shade.lightCount));
-    for (std::size_t i = chunk.begin; i < chunk.end; ++i) {
-      const ClipVertex clip = twr::runVertexStage(meshVertices[i], s.vertexUniforms);
-      FastVertex& v = out.vertices[i];
-      v.window = windowFromClip(clip, s.viewport);
-      v.xFixed = snapToSubpixel(v.window.x);
-      v.yFixed = snapToSubpixel(v.window.y);
-      out.corners[i] = SnappedCorner{v.xFixed, v.yFixed,
-                                     finitePosition(clip.posClip) ? outcode(clip, s.clip) : kClipNonFiniteBit};
-      storeVaryings(clip, s.tangentLighting, s.shade.lightCount, &out.varyings[i * stride]);
-    }
+    kernels_.vertexRange(&s.item->mesh->vertices[chunk.begin], chunk.end - chunk.begin, s.vertexUniforms, s.viewport,
+                         s.clip, &out.vertices[chunk.begin], &out.corners[chunk.begin],
+                         &out.varyings[chunk.begin * stride], stride);
   });
 }
 

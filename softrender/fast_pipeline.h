@@ -45,19 +45,6 @@ inline constexpr int kBinRows = 32;
 // triangles would pay for checks they gain little from (docs/performance.md).
 inline constexpr std::uint64_t kExactSumMinPixels = 8;
 
-// What the back end's setup and interpolation read of a vertex.
-struct FastVertex {
-  WindowVertex window;                  // windowFromClip (fused multiply-add for stage outputs)
-  std::int32_t xFixed = 0, yFixed = 0;  // snapToSubpixel of window x and y (1/256 px)
-};
-
-// What the front end reads of a vertex (12 bytes, in an array of its own: a million-triangle
-// frame's front end streams it once per corner): the snapped position again, and the outcode.
-struct SnappedCorner {
-  std::int32_t xFixed = 0, yFixed = 0;  // as FastVertex's
-  std::uint32_t outcode = 0;            // planes it is outside of, or kClipNonFiniteBit
-};
-
 class FastPipeline {
  public:
   // Throws InputError for a target this CPU cannot run.

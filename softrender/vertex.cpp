@@ -53,39 +53,22 @@ VertexUniformsT<T> makeVertexUniforms(const Mat4T<T>& worldFromModel, const Mat4
 
 template <typename T>
 ClipVertexT<T> runVertexStage(const Vertex& vertex, const VertexUniformsT<T>& u) {
-  // Computed in locals, then stored: read back from `out`, each would wait for its store.
-  const Vec3T<T> posWorld(transformPoint(u.worldFromModel, Vec3T<T>(vertex.posModel)));
-  const Vec3T<T> nWorld = transformVector(u.normalFromModel, Vec3T<T>(vertex.nModel));
-  const Vec3T<T> tWorld = transformVector(u.tangentFromModel, Vec3T<T>(vertex.tangentModel));
-  // A mirroring transform reverses the handedness of the (T, B, N) frame, so the sign that
-  // rebuilds B from N and T flips with it.
-  const T sign = static_cast<T>(vertex.tangentModel.w) * u.mirrorSign;
+  const lanes::VertexInL<T> in{Vec3T<T>(vertex.posModel), Vec3T<T>(vertex.nModel), Vec4T<T>(vertex.tangentModel),
+                               Vec2T<T>(vertex.uv)};
+  const lanes::VertexOutL<T> stage = lanes::vertexStage<T>(in, u);
   ClipVertexT<T> out;
-  out.posWorld = posWorld;
-  out.posClip = transformPoint(u.clipFromWorld, posWorld);
-  out.nWorld = nWorld;
-  out.tWorld = tWorld;
-  out.bWorld = sign * glm::cross(nWorld, tWorld);
-  out.uv = Vec2T<T>(vertex.uv);
-
+  out.posClip = stage.posClip;
+  out.posWorld = stage.posWorld;
+  out.nWorld = stage.nWorld;
+  out.tWorld = stage.tWorld;
+  out.bWorld = stage.bWorld;
+  out.uv = stage.uv;
   if (u.tangentLighting) {
-    // The tutorial's vertex shader: light and eye directions in the vertex's tangent frame,
-    // left unnormalised so that linear interpolation is the tutorial's behaviour.
-    const Vec3T<T> t = safeNormalize(out.tWorld);
-    const Vec3T<T> b = safeNormalize(out.bWorld);
-    const Vec3T<T> n = safeNormalize(out.nWorld);
-    for (int i = 0; i < u.lightCount; ++i) {
-      const Vec4T<T>& light = u.lightVectorWorld[static_cast<std::size_t>(i)];
-      const Vec3T<T> lw = Vec3T<T>(light) - light.w * out.posWorld;  // xyz - w P: point or directional
-      out.lightDirTangent[static_cast<std::size_t>(i)] = Vec3T<T>(glm::dot(t, lw), glm::dot(b, lw), glm::dot(n, lw));
-    }
-    const Vec3T<T> ew = u.eyePosWorld - out.posWorld;
-    out.eyeDirTangent = Vec3T<T>(glm::dot(t, ew), glm::dot(b, ew), glm::dot(n, ew));
+    out.lightDirTangent = stage.lightDirTangent;
+    out.eyeDirTangent = stage.eyeDirTangent;
   }
-
   for (int j = 0; j < u.userClipPlaneCount; ++j) {
-    out.clipDistance[static_cast<std::size_t>(j)] =
-        clipDistanceFrom(u.userClipPlanes[static_cast<std::size_t>(j)], out.posWorld);
+    out.clipDistance[static_cast<std::size_t>(j)] = stage.clipDistance[static_cast<std::size_t>(j)];
   }
   return out;
 }

@@ -54,28 +54,6 @@ struct ClipVertexT {
 };
 using ClipVertex = ClipVertexT<float>;
 
-// m * vec4(p, 1) summed column by column from the left, ((c0 x + c1 y) + c2 z) + c3, the
-// order a GLSL compiler evaluates mat4 * vec4 in, so both renderers round alike.
-template <typename T>
-Vec4T<T> transformPoint(const Mat4T<T>& m, Vec3T<T> p) {
-  return m[0] * p.x + m[1] * p.y + m[2] * p.z + m[3];
-}
-// m * v, columns summed from the left like transformPoint.
-template <typename T>
-Vec3T<T> transformVector(const Mat3T<T>& m, Vec3T<T> v) {
-  return m[0] * v.x + m[1] * v.y + m[2] * v.z;
-}
-
-// gl_ClipDistance = dot(plane, vec4(p, 1)) summed in the order llvmpipe's compiled shader
-// sums it: from the last component, ((c z + d) + b y) + a x (a probe of 4,096 random planes
-// and points matched this order bit for bit, and no other; glm::dot's pairwise sum missed a
-// third). Geometry lying on a plane has distances of a few ULPs either side of 0, so the
-// order decides which vertices are inside.
-template <typename T>
-T clipDistanceFrom(const Vec4T<T>& plane, const Vec3T<T>& p) {
-  return ((plane.z * p.z + plane.w) + plane.y * p.y) + plane.x * p.x;
-}
-
 // Inverse transpose of the upper 3x3; for a singular matrix the cofactor matrix (the same
 // directions up to scale, never Inf or NaN).
 template <typename T>
@@ -93,5 +71,26 @@ VertexUniformsT<T> makeVertexUniforms(const Mat4T<T>& worldFromModel, const Mat4
 // Runs the vertex stage on one vertex.
 template <typename T>
 ClipVertexT<T> runVertexStage(const Vertex& vertex, const VertexUniformsT<T>& uniforms);
+
+}  // namespace twr
+
+// The stage itself, over any lane type (plainly: twr::lanes).
+#include "softrender/vertex_stage-inl.h"
+
+namespace twr {
+
+// The shared source's transforms for one vertex (vertex_stage-inl.h has the order of operations).
+template <typename T>
+Vec4T<T> transformPoint(const Mat4T<T>& m, Vec3T<T> p) {
+  return lanes::transformPoint<T>(m, p);
+}
+template <typename T>
+Vec3T<T> transformVector(const Mat3T<T>& m, Vec3T<T> v) {
+  return lanes::transformVector<T>(m, v);
+}
+template <typename T>
+T clipDistanceFrom(const Vec4T<T>& plane, const Vec3T<T>& p) {
+  return lanes::clipDistanceFrom<T>(plane, p);
+}
 
 }  // namespace twr

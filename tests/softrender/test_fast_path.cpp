@@ -7,17 +7,20 @@
 // crossing w = 0). Every test runs once per Highway target this CPU supports (Highway's
 // per-target test mechanism: hwy::TestWithParamTarget makes that target the one dynamic
 // dispatch picks), and checks that the target it asked for is the one that drew.
+#include "softrender/clip.h"
 #include "softrender/cpu_renderer.h"
 #include "softrender/cpu_isa_targets.h"
 #include "softrender/fast_kernels.h"
 #include "softrender/phong_pow.h"
 #include "softrender/shade.h"
+#include "softrender/vertex.h"
 
 #include "scene/errors.h"
 #include "scene/primitives.h"
 #include "scene/scene_file.h"
 #include "tests/sanitizers.h"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 #include <hwy/targets.h>
 #include <hwy/tests/hwy_gtest.h>
@@ -684,6 +687,92 @@ TEST_P(FastPath, SimdPowIsTheScalarPowBitForBit) {
       const float scalar = lanes::phongPow(x[i], s);
       ASSERT_EQ(std::bit_cast<std::uint32_t>(simd[i]), std::bit_cast<std::uint32_t>(scalar))
           << x[i] << "^" << s << ": " << simd[i] << " vs " << scalar;
+    }
+  }
+}
+
+// The vertex stage a vector of vertices at a time is the scalar stage (runVertexStage,
+// windowFromClip, snapToSubpixel, outcode, storeVaryings) bit for bit: for a mirroring model
+// matrix, both lighting spaces, user clip planes, the frustum's planes on and off, and vertices
+// anywhere (behind the eye, at w = 0, huge, infinite, NaN), a count that no vector width divides.
+TEST_P(FastPath, VertexRangeIsTheScalarVertexStageBitForBit) {
+  expectTargetInUse(GetParam());
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  std::uniform_real_distribution<float> exponent(-40.0f, 40.0f);
+  std::vector<Vertex> vertices(1003);
+  for (Vertex& v : vertices) {
+    const float scale = std::pow(2.0f, exponent(rng) < 30.0f ? unit(rng) * 4.0f : exponent(rng));
+    v.posModel = vec3(unit(rng), unit(rng), unit(rng)) * scale;
+    v.nModel = vec3(unit(rng), unit(rng), unit(rng));
+    v.tangentModel = vec4(unit(rng), unit(rng), unit(rng), unit(rng) < 0.0f ? -1.0f : 1.0f);
+    v.uv = vec2(unit(rng), unit(rng)) * 8.0f;
+  }
+  const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+  const std::vector<vec3> odd = {vec3(0.0f), vec3(0.3f, 1.7f, 4.4f), vec3(0.3f, 1.7f, 4.5f), vec3(1e30f, 0.0f, 0.0f),
+                                 vec3(inf, 0.0f, 0.0f), vec3(0.0f, nan, 0.0f), vec3(-1e-30f, 2e-38f, 1e-40f),
+                                 vec3(0.3f, 1.7f, 4.4f - 1e-6f)};
+  for (std::size_t i = 0; i < odd.size(); ++i) vertices[10 * i].posModel = odd[i];
+  vertices[1].nModel = vec3(0.0f);
+  vertices[2].tangentModel = vec4(nan, 0.0f, 0.0f, 1.0f);
+
+  Scene scene;
+  scene.camera.position = vec3(0.3f, 1.7f, 4.4f);
+  scene.lights.resize(2);
+  scene.lights[0].posWorld = vec3(3.5f, 1.8f, 2.5f);
+  scene.lights[1].type = LightType::Directional;
+  scene.lights[1].directionWorld = glm::normalize(vec3(-0.3f, -1.0f, 0.2f));
+  const mat4 worldFromModel =
+      glm::scale(glm::rotate(glm::translate(mat4(1.0f), vec3(-1.0f, 0.8f, 0.2f)), 0.6f, vec3(0.2f, 1.0f, 0.1f)),
+                 vec3(1.5f, -0.75f, 1.25f));
+  const Viewport viewport{1280, 720};
+  for (const bool tangentLighting : {false, true}) {
+    for (const int userPlanes : {0, 2}) {
+      RenderSettings settings;
+      settings.lightingSpace = tangentLighting ? LightingSpace::Tangent : LightingSpace::World;
+      settings.userClipPlanes = {vec4(0.3f, -1.0f, 0.2f, 0.9f), vec4(-0.7f, 0.1f, 0.5f, 0.1f)};
+      settings.userClipPlanes.resize(static_cast<std::size_t>(userPlanes));
+      const VertexUniforms u =
+          makeVertexUniforms(worldFromModel, clipFromWorldFor(scene.camera, viewport.width, viewport.height), scene, settings);
+      ASSERT_LT(u.mirrorSign, 0.0f);
+      ClipSwitches frustum;
+      frustum.near = !tangentLighting;
+      frustum.left = frustum.top = userPlanes == 0;
+      const ClipConfig clip = makeClipConfig(frustum, userPlanes, viewport.width, viewport.height);
+      const std::size_t stride = static_cast<std::size_t>(varyingCount(tangentLighting, u.lightCount));
+      std::vector<FastVertex> out(vertices.size());
+      std::vector<SnappedCorner> corners(vertices.size());
+      std::vector<float> varyings(vertices.size() * stride);
+      fastKernelsFor(CpuIsa::Auto)
+          .vertexRange(vertices.data(), vertices.size(), u, viewport, clip, out.data(), corners.data(), varyings.data(), stride);
+      std::vector<float> expected(stride);
+      const auto bits = [](float x) { return std::bit_cast<std::uint32_t>(x); };
+      std::size_t inside = 0, outside = 0, unusable = 0;  // the outcodes' kinds, all exercised
+      for (const SnappedCorner& c : corners) {
+        (c.outcode == 0 ? inside : c.outcode == kClipNonFiniteBit ? unusable : outside) += 1;
+      }
+      EXPECT_GT(inside, 100u);
+      EXPECT_GT(outside, 100u);
+      EXPECT_GT(unusable, 2u);
+      for (std::size_t i = 0; i < vertices.size(); ++i) {
+        const ClipVertex v = runVertexStage(vertices[i], u);
+        const WindowVertex w = windowFromClip(v, viewport);
+        const bool finite = std::isfinite(v.posClip.x) && std::isfinite(v.posClip.y) && std::isfinite(v.posClip.z) &&
+                            std::isfinite(v.posClip.w);
+        SCOPED_TRACE(::testing::Message() << "vertex " << i << ", tangent lighting " << tangentLighting << ", "
+                                          << userPlanes << " user planes");
+        EXPECT_EQ(bits(out[i].window.x), bits(w.x));
+        EXPECT_EQ(bits(out[i].window.y), bits(w.y));
+        EXPECT_EQ(bits(out[i].window.z), bits(w.z));
+        EXPECT_EQ(bits(out[i].window.invW), bits(w.invW));
+        EXPECT_EQ(out[i].xFixed, snapToSubpixel(w.x));
+        EXPECT_EQ(out[i].yFixed, snapToSubpixel(w.y));
+        EXPECT_EQ(corners[i].xFixed, out[i].xFixed);
+        EXPECT_EQ(corners[i].yFixed, out[i].yFixed);
+        EXPECT_EQ(corners[i].outcode, finite ? outcode(v, clip) : kClipNonFiniteBit);
+        storeVaryings(v, tangentLighting, u.lightCount, expected.data());
+        for (std::size_t c = 0; c < stride; ++c) ASSERT_EQ(bits(varyings[i * stride + c]), bits(expected[c])) << "varying " << c;
+      }
     }
   }
 }
