@@ -2,9 +2,9 @@
 // shading source"). A lane type L is one of
 //   float    the teaching path: one pixel at a time, easy to step through;
 //   double   the reference renderer: the same operations in double precision;
-//   LaneF    the fast path: a Highway vector of floats, one pixel per lane, compiled once
+//   LaneF    the fast path: a Highway vector of floats, one pixel (or vertex) per lane, compiled once
 //            per SIMD target (softrender/lanes_hwy-inl.h).
-// The shared sources (phong_pow-inl.h, texture_sample-inl.h, interpolate-inl.h,
+// The shared sources (vertex_stage-inl.h, phong_pow-inl.h, texture_sample-inl.h, interpolate-inl.h,
 // output_merge-inl.h, shade-inl.h) use only what every lane type provides:
 //   + - * / on L, comparisons giving MaskOf<L>, & | ! on masks, select(mask, a, b),
 //   maxOf / minOf (written as selects, so every target treats NaN alike), sqrtOf, floorOf,
