@@ -776,7 +776,7 @@ HWY_INLINE LaneF clampedTo(LaneF v, float bound) {
 // setup.cpp's windowFromClip for a vertex from the vertex stage (fused multiply-adds).
 HWY_INLINE Vec4L<LaneF> windowFromClipLanes(const Vec4L<LaneF>& posClip, const Viewport& viewport) {
   const LaneF halfWidth(0.5f * static_cast<float>(viewport.width)), halfHeight(0.5f * static_cast<float>(viewport.height));
-  const LaneF halfDepthRange(0.5f);
+  const LaneF halfDepthRange(0.5f);  // glDepthRange(0, 1): scale and offset 0.5
   const LaneF invW = select(posClip.w >= LaneF(std::numeric_limits<float>::min()), LaneF(1.0f) / posClip.w,
                             LaneF(1.0f) / LaneF(kMinClipW));
   const LaneF xNdc = posClip.x * invW, yNdc = posClip.y * invW;
@@ -788,7 +788,8 @@ HWY_INLINE Vec4L<LaneF> windowFromClipLanes(const Vec4L<LaneF>& posClip, const V
 // setup.cpp's snapToSubpixel per lane (NearestInt rounds halves to even, as lrint).
 HWY_INLINE hn::Vec<DI> snapToSubpixelLanes(LaneF windowCoord) {
   const LaneF bounded = clampedTo(windowCoord, kMaxWindowCoord);
-  return hn::NearestInt(((bounded - LaneF(0.5f)) * LaneF(static_cast<float>(kSubpixelScale))).v);
+  return hn::NearestInt(
+      ((bounded - LaneF(static_cast<float>(kPixelCentreOffset))) * LaneF(static_cast<float>(kSubpixelScale))).v);
 }
 
 // clip.cpp's outcode per lane: kClipNonFiniteBit where a clip coordinate or user distance is

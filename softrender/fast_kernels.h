@@ -98,7 +98,6 @@ struct ItemMaps {
   std::array<const TiledTexture*, kMaxHorizonDirections / 4> horizon{};
 };
 
-// One target's kernels.
 // What the back end's setup and interpolation read of a vertex.
 struct FastVertex {
   WindowVertex window;                  // windowFromClip (fused multiply-add for stage outputs)
@@ -112,6 +111,7 @@ struct SnappedCorner {
   std::uint32_t outcode = 0;            // planes it is outside of, or kClipNonFiniteBit
 };
 
+// One target's kernels.
 struct FastKernels {
   CpuIsa isa = CpuIsa::Scalar;  // the target they were compiled for
   int lanes = 1;                // floats per vector on it

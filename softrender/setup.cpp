@@ -11,9 +11,6 @@ namespace twr {
 
 namespace {
 
-// Pixel centres sit at +0.5; removing it before snapping puts them on integer multiples of 256.
-constexpr double kPixelCentreOffset = 0.5;
-
 // Floor division of 24.8 fixed point by 256 (an arithmetic shift rounds towards -infinity).
 int pixelFloor(std::int32_t fixed) { return static_cast<int>(fixed >> kSubpixelBits); }
 

@@ -53,6 +53,10 @@ using WindowVertex = WindowVertexT<float>;
 // Largest |window coordinate| setup snaps (pixels, inclusive); see the range note above.
 inline constexpr float kMaxWindowCoord = 65536.0f;
 
+// Pixel centres sit at +0.5 (pixels); removing it before snapping puts them on integer
+// multiples of 256.
+inline constexpr double kPixelCentreOffset = 0.5;
+
 // Largest |z / w| (inclusive, NDC units) windowFromClip passes on; beyond it z / w is clamped.
 // Only depth-clamped geometry within about 1e-30 of w = 0 gets there (float overflows at 3.4e38).
 inline constexpr float kMaxNdcDepth = 1e30f;
