@@ -98,14 +98,21 @@ inline bool drawnAt(const RenderOutput& out, std::size_t i) {
   return coveredAt(out, i) || lineAt(out, i);
 }
 
-// out's four image buffers alone (rgba, depth, triangleId, lineMask), moved out for a renderer
-// to draw the next frame into (Renderer::renderInto); the rest of the output is left behind.
+// The four image buffers (rgba, depth, triangleId, lineMask) moved from one holder to another:
+// a RenderOutput, or a renderer's framebuffer that names them alike.
+template <typename From, typename To>
+void moveImageBuffers(From& from, To& to) {
+  to.rgba = std::move(from.rgba);
+  to.depth = std::move(from.depth);
+  to.triangleId = std::move(from.triangleId);
+  to.lineMask = std::move(from.lineMask);
+}
+
+// out's four image buffers alone, moved out for a renderer to draw the next frame into
+// (Renderer::renderInto); the rest of the output is left behind.
 inline RenderOutput imageBuffersOf(RenderOutput&& out) {
   RenderOutput buffers;
-  buffers.rgba = std::move(out.rgba);
-  buffers.depth = std::move(out.depth);
-  buffers.triangleId = std::move(out.triangleId);
-  buffers.lineMask = std::move(out.lineMask);
+  moveImageBuffers(out, buffers);
   return buffers;
 }
 

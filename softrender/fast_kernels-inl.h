@@ -176,16 +176,20 @@ HWY_INLINE std::uint64_t bitsOf(hn::Mask<DU> mask) {
 HWY_INLINE std::uint64_t lanesHolding(const std::uint32_t* words, std::uint32_t value, std::uint64_t lanes) {
   return lanes & bitsOf(hn::Eq(hn::LoadU(DU(), words), hn::Set(DU(), value)));
 }
-// x, x + 1, ... as float lanes (pixel indices are exact in float): x plus a constant 0, 1, ...
-// (Highway's Iota stores the lanes one by one and loads them back as a vector, a load the
-// store buffer cannot forward; 3.5 % of the AVX2 kernel's samples sat on it).
-HWY_INLINE LaneF pixelColumnsF(int x) {
-  HWY_ALIGN static constexpr std::array<float, kMaxLanes> kLaneIndices = [] {
-    std::array<float, kMaxLanes> indices{};
-    for (std::size_t l = 0; l < kMaxLanes; ++l) indices[l] = static_cast<float>(l);
+// 0, 1, 2, ... per lane, loaded from a constant (Highway's Iota stores the lanes one by one and
+// loads them back as a vector, a load the store buffer cannot forward; 3.5 % of the AVX2
+// kernel's samples sat on it when the pixel columns were made with it).
+HWY_INLINE hn::Vec<DI> laneIndices() {
+  HWY_ALIGN static constexpr std::array<std::int32_t, kMaxLanes> kIndices = [] {
+    std::array<std::int32_t, kMaxLanes> indices{};
+    for (std::size_t l = 0; l < kMaxLanes; ++l) indices[l] = static_cast<std::int32_t>(l);
     return indices;
   }();
-  return LaneF(hn::Add(hn::Set(DF(), static_cast<float>(x)), hn::Load(DF(), kLaneIndices.data())));
+  return hn::Load(DI(), kIndices.data());
+}
+// x, x + 1, ... as float lanes (pixel indices are exact in float).
+HWY_INLINE LaneF pixelColumnsF(int x) {
+  return LaneF(hn::Add(hn::Set(DF(), static_cast<float>(x)), hn::ConvertTo(DF(), laneIndices())));
 }
 
 HWY_INLINE AttributePlaneL<LaneF> broadcastPlane(const AttributePlaneT<float>& p) {
@@ -821,13 +825,8 @@ HWY_INLINE hn::Vec<DU> outcodeLanes(const VertexOutL<LaneF>& v, const ClipConfig
 // last vertex).
 HWY_INLINE VertexInL<LaneF> vertexLanes(const Vertex* vertices, std::size_t count) {
   const DI di;
-  HWY_ALIGN static constexpr std::array<std::int32_t, kMaxLanes> kIndices = [] {
-    std::array<std::int32_t, kMaxLanes> indices{};
-    for (std::size_t l = 0; l < kMaxLanes; ++l) indices[l] = static_cast<std::int32_t>(l);
-    return indices;
-  }();
-  const auto index = hn::Mul(hn::Min(hn::Load(di, kIndices.data()), hn::Set(di, static_cast<std::int32_t>(count - 1))),
-                             hn::Set(di, kVertexFloats));
+  const auto index =
+      hn::Mul(hn::Min(laneIndices(), hn::Set(di, static_cast<std::int32_t>(count - 1))), hn::Set(di, kVertexFloats));
   const float* base = reinterpret_cast<const float*>(vertices);
   const auto field = [&](int k) HWY_ATTR { return LaneF(hn::GatherIndex(DF(), base + k, index)); };
   return VertexInL<LaneF>{Vec3L<LaneF>(field(0), field(1), field(2)), Vec3L<LaneF>(field(3), field(4), field(5)),

@@ -46,19 +46,13 @@ RenderOutput toRenderOutput(Framebuffer&& fb) {
   RenderOutput out;
   out.width = fb.width;
   out.height = fb.height;
-  out.rgba = std::move(fb.rgba);
-  out.depth = std::move(fb.depth);
-  out.triangleId = std::move(fb.triangleId);
-  out.lineMask = std::move(fb.lineMask);
+  moveImageBuffers(fb, out);
   return out;
 }
 
 Framebuffer framebufferFrom(RenderOutput&& out) {
   Framebuffer fb;
-  fb.rgba = std::move(out.rgba);
-  fb.depth = std::move(out.depth);
-  fb.triangleId = std::move(out.triangleId);
-  fb.lineMask = std::move(out.lineMask);
+  moveImageBuffers(out, fb);
   return fb;
 }
 
